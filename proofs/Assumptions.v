@@ -1,0 +1,102 @@
+(** * Assumptions.v — prints the axioms every claimed Theorem depends on.
+    Run by [make check-assumptions] (see check_assumptions.sh), which fails
+    unless every Theorem in the sources is listed here and each depends only
+    on the standard library axioms of the real numbers. *)
+
+From PhongApprox Require Import Span Duff Euler Derivative Symmetry Adaptive Angular.
+
+(** Span.v *)
+Check eq_2_p_is_linear.
+Print Assumptions eq_2_p_is_linear.
+Check eq_3_q_is_quadratic.
+Print Assumptions eq_3_q_is_quadratic.
+Check eq_3_e_is_one.
+Print Assumptions eq_3_e_is_one.
+Check eq_10_q_is_one_on_edges.
+Print Assumptions eq_10_q_is_one_on_edges.
+Check eq_4_phong_exact_on_edges.
+Print Assumptions eq_4_phong_exact_on_edges.
+Check eq_18_na_k_is_minus_nb_k.
+Print Assumptions eq_18_na_k_is_minus_nb_k.
+Check eq_19_dqb_via_nb.
+Print Assumptions eq_19_dqb_via_nb.
+Check eq_20_n_k2_is_2k_nb.
+Print Assumptions eq_20_n_k2_is_2k_nb.
+Check eq_21_dqb_is_2k_nb.
+Print Assumptions eq_21_dqb_is_2k_nb.
+Check eq_22_dqb_is_minus_dqa.
+Print Assumptions eq_22_dqb_is_minus_dqa.
+Check eq_11_ds_closed_form.
+Print Assumptions eq_11_ds_closed_form.
+
+(** Duff.v *)
+Check eq_5_7_duff_recurrence_exact.
+Print Assumptions eq_5_7_duff_recurrence_exact.
+Check eq_7_duff_dq0_and_d2q.
+Print Assumptions eq_7_duff_dq0_and_d2q.
+Check eq_5_7_duff_computes_phong.
+Print Assumptions eq_5_7_duff_computes_phong.
+
+(** Euler.v *)
+Check eq_13_slope_closed_form.
+Print Assumptions eq_13_slope_closed_form.
+Check eq_14_euler_closed_form.
+Print Assumptions eq_14_euler_closed_form.
+Check eq_14_arithmetic_series.
+Print Assumptions eq_14_arithmetic_series.
+Check eq_14_euler_end_value.
+Print Assumptions eq_14_euler_end_value.
+Check eq_17_corrected_euler_starts_at_pa.
+Print Assumptions eq_17_corrected_euler_starts_at_pa.
+Check eq_17_corrected_euler_ends_at_pb.
+Print Assumptions eq_17_corrected_euler_ends_at_pb.
+Check eq_16_17_corrected_is_euler_minus_linear_error.
+Print Assumptions eq_16_17_corrected_is_euler_minus_linear_error.
+Check eq_15_euler_misses_pb.
+Print Assumptions eq_15_euler_misses_pb.
+
+(** Derivative.v *)
+Check eq_9_derivative.
+Print Assumptions eq_9_derivative.
+Check eq_10_11_dp_dq_at_edges.
+Print Assumptions eq_10_11_dp_dq_at_edges.
+Check eq_10_11_edge_derivatives.
+Print Assumptions eq_10_11_edge_derivatives.
+
+(** Symmetry.v *)
+Check sec_4_q_is_symmetric.
+Print Assumptions sec_4_q_is_symmetric.
+Check sec_4_dq_zero_at_middle.
+Print Assumptions sec_4_dq_zero_at_middle.
+Check sec_4_q_minimum_at_middle.
+Print Assumptions sec_4_q_minimum_at_middle.
+Check sec_4_symmetric_phong_equals_phong.
+Print Assumptions sec_4_symmetric_phong_equals_phong.
+Check sec_4_duff_q_is_symmetric.
+Print Assumptions sec_4_duff_q_is_symmetric.
+
+(** Adaptive.v *)
+Check eq_23_m_is_half_n_minus_1.
+Print Assumptions eq_23_m_is_half_n_minus_1.
+Check eq_23_truncated_step_is_ceil_half.
+Print Assumptions eq_23_truncated_step_is_ceil_half.
+Check eq_24_gouraud_minus_corrected_euler.
+Print Assumptions eq_24_gouraud_minus_corrected_euler.
+Check eq_24_delta_closed_form.
+Print Assumptions eq_24_delta_closed_form.
+Check eq_24_delta_is_max_difference.
+Print Assumptions eq_24_delta_is_max_difference.
+Check eq_24_delta_test_does_not_imply_same_levels.
+Print Assumptions eq_24_delta_test_does_not_imply_same_levels.
+Check eq_24_delta_test_fails_on_concrete_span.
+Print Assumptions eq_24_delta_test_fails_on_concrete_span.
+Check eq_24_large_delta_implies_different_levels.
+Print Assumptions eq_24_large_delta_implies_different_levels.
+
+(** Angular.v *)
+Check mortensen_equal_angles_counterexample.
+Print Assumptions mortensen_equal_angles_counterexample.
+Check mortensen_angle_not_linear.
+Print Assumptions mortensen_angle_not_linear.
+Check mortensen_unequal_angles_counterexample.
+Print Assumptions mortensen_unequal_angles_counterexample.

@@ -1,0 +1,115 @@
+//! Angular interpolation along the span (the second source, Mortensen 1995): the
+//! angle `α = acos(N·L)` interpolated linearly between the edges, its cosine taken
+//! back per pixel, exactly or from a table.
+//!
+//! Proved: `proofs/Angular.v`, `mortensen_equal_angles_counterexample` (the angle does
+//! *not* change linearly along the span in general, so this is an approximation).
+//! Tested: `tests/claims.rs::mortensen_equal_angles_counterexample`,
+//! `tests/methods.rs`.
+
+use crate::error::SpanError;
+use crate::scalar::{Real, Scalar};
+use crate::span::Span;
+
+/// `v` clamped to `[−1, 1]` (float dot products of unit vectors can leave it).
+fn clamp_unit<T: Scalar>(v: &T) -> T {
+    let one = T::one();
+    if *v > one {
+        one
+    } else if *v < -one.clone() {
+        -one
+    } else {
+        v.clone()
+    }
+}
+
+/// The edge angles `α_a = acos(p_a)`, `α_b = acos(p_b)` and the step `(α_b − α_a)/n`.
+fn angles<T: Real>(span: &Span<T>) -> (T, T) {
+    let alpha_a = clamp_unit(&span.p_a).acos();
+    let alpha_b = clamp_unit(&span.p_b).acos();
+    let d_alpha = (alpha_b - alpha_a.clone()) / span.n_s.clone();
+    (alpha_a, d_alpha)
+}
+
+/// Fills `out[i]` with `cos(α_a + i·(α_b − α_a)/n)`, `α = acos(N·L)` at the edges.
+///
+/// Exact at both edges; between them it follows the cosine of a linear angle, which
+/// is not Phong's `p/√q` unless `L` lies in the plane of `N_a` and `N_b` (and then
+/// only approximately, since Phong's normalized linear interpolation does not move
+/// at a constant angular speed). Angles run over `[0°, 180°]`, so `N·L < 0` is kept.
+///
+/// # Errors
+/// [`SpanError::OutputLength`] if `out.len() ≠ n + 1`.
+pub fn shade<T: Real>(span: &Span<T>, out: &mut [T]) -> Result<(), SpanError> {
+    span.check_output(out)?;
+    let (mut alpha, d_alpha) = angles(span);
+    for o in out.iter_mut() {
+        *o = alpha.cos();
+        alpha = alpha + d_alpha.clone();
+    }
+    Ok(())
+}
+
+/// A cosine table over `[0°, 90°]` as the second source uses: entry `j` holds
+/// `cos(j · 90°/(size − 1))`; the source's byte-sized angles give `size = 256`.
+#[derive(Clone, Debug)]
+pub struct CosTable<T> {
+    /// `cos` at the table's angles.
+    pub values: Vec<T>,
+    /// `(size − 1)/(π/2)`: table index per radian.
+    pub per_radian: T,
+}
+
+impl<T: Real> CosTable<T> {
+    /// A table with `size ≥ 2` entries.
+    ///
+    /// # Errors
+    /// [`SpanError::Parameter`] when `size < 2` or `size > 2^24`.
+    pub fn new(size: u32) -> Result<Self, SpanError> {
+        if !(2..=1 << 24).contains(&size) {
+            return Err(SpanError::Parameter(format!(
+                "table size must be between 2 and 16777216 (got {size})"
+            )));
+        }
+        let last = T::from_i64(i64::from(size) - 1);
+        let step = T::frac_pi_2() / last.clone();
+        let values = (0..size)
+            .map(|j| (T::from_i64(i64::from(j)) * step.clone()).cos())
+            .collect();
+        Ok(CosTable {
+            values,
+            per_radian: last / T::frac_pi_2(),
+        })
+    }
+
+    /// `cos(α)` looked up at the nearest table angle; angles past 90° (light behind
+    /// the surface) give the last entry, `cos 90° = 0`, as the source's 0–90° range
+    /// implies, and negative angles the first.
+    pub fn lookup(&self, alpha: &T) -> T {
+        let last = self.values.len() - 1;
+        let pos = alpha.clone() * self.per_radian.clone();
+        let half = T::one() / T::from_i64(2);
+        let j = (pos + half).floor_i64().clamp(0, last as i64) as usize;
+        self.values[j].clone()
+    }
+}
+
+/// [`shade`] with the cosine read from `table` (the second source's byte table when
+/// `table` has 256 entries): the angle is interpolated exactly, then rounded to the
+/// nearest table angle.
+///
+/// # Errors
+/// [`SpanError::OutputLength`] if `out.len() ≠ n + 1`.
+pub fn shade_table<T: Real>(
+    span: &Span<T>,
+    table: &CosTable<T>,
+    out: &mut [T],
+) -> Result<(), SpanError> {
+    span.check_output(out)?;
+    let (mut alpha, d_alpha) = angles(span);
+    for o in out.iter_mut() {
+        *o = table.lookup(&alpha);
+        alpha = alpha + d_alpha.clone();
+    }
+    Ok(())
+}

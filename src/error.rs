@@ -1,0 +1,71 @@
+//! The typed errors of span set-up and shading.
+
+use std::fmt;
+use thiserror::Error;
+
+/// Which input vector an error is about.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Input {
+    /// The normal at the left edge, `N_a`.
+    Na,
+    /// The normal at the right edge, `N_b`.
+    Nb,
+    /// The light vector `L` (or the half vector `H` for specular).
+    L,
+}
+
+impl fmt::Display for Input {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            Input::Na => "Na",
+            Input::Nb => "Nb",
+            Input::L => "L",
+        })
+    }
+}
+
+/// Why a span could not be set up or shaded.
+#[derive(Clone, Debug, PartialEq, Error)]
+pub enum SpanError {
+    /// A component is NaN or infinite.
+    #[error("{input}: component {component} is not finite")]
+    NonFinite {
+        /// The vector.
+        input: Input,
+        /// Its component index, 0 = x, 1 = y, 2 = z.
+        component: usize,
+    },
+    /// The vector is zero.
+    #[error("{input}: the vector is zero")]
+    ZeroVector {
+        /// The vector.
+        input: Input,
+    },
+    /// The vector is not of unit length within the scalar's tolerance.
+    #[error("{input}: not a unit vector (length² = {length_squared}, allowed |length² − 1| ≤ {tolerance}); normalize it first")]
+    NotUnit {
+        /// The vector.
+        input: Input,
+        /// Its squared length, rounded to `f64`.
+        length_squared: f64,
+        /// The tolerance on `|length² − 1|`, rounded to `f64`.
+        tolerance: f64,
+    },
+    /// `N_b = −N_a`: the interpolated normal passes through zero.
+    #[error("Na and Nb are opposite: the interpolated normal passes through zero")]
+    Opposite,
+    /// `n = 0`: a span needs at least one step.
+    #[error("n must be at least 1 (got 0)")]
+    ZeroSteps,
+    /// The output slice does not hold `n + 1` values.
+    #[error("output holds {got} values, the span has {expected} pixels (n + 1)")]
+    OutputLength {
+        /// `n + 1`.
+        expected: usize,
+        /// The slice's length.
+        got: usize,
+    },
+    /// A method parameter is out of range.
+    #[error("{0}")]
+    Parameter(String),
+}

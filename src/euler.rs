@@ -1,0 +1,34 @@
+//! Euler shading (eqs. 12–13): the derivative of `p/√q` interpolated linearly
+//! between its edge values and integrated one pixel at a time.
+//!
+//! Proved: `proofs/Euler.v`, `eq_14_euler_closed_form`.
+//! Tested: `tests/claims.rs::eq_14_euler_closed_form`.
+
+use crate::error::SpanError;
+use crate::scalar::Scalar;
+use crate::span::Span;
+
+/// Fills `out[i]` with `p_i` of the recurrence `p_{i+1} = p_i + s_i` (eq. 12),
+/// `s_{i+1} = s_i + ds` (eq. 13), `p_0 = p_a`, `s_0 = di_a`. Two additions per pixel.
+///
+/// Starts exactly at `p_a` but ends at `p_n = p_a + n·di_a + (n² − n)/2·ds`
+/// (eq. 14), not at `p_b`: the error `ε = p_n − p_b` is what
+/// [`crate::corrected_euler`] removes.
+///
+/// # Errors
+/// [`SpanError::OutputLength`] if `out.len() ≠ n + 1`.
+pub fn shade<T: Scalar>(span: &Span<T>, out: &mut [T]) -> Result<(), SpanError> {
+    span.check_output(out)?;
+    recurrence(span.p_a.clone(), span.di_a.clone(), &span.ds, out);
+    Ok(())
+}
+
+/// `p_{i+1} = p_i + s_i`, `s_{i+1} = s_i + ds` from `(p_0, s_0)`, written to `out`.
+/// Shared by Euler (`s_0 = di_a`) and corrected Euler (`s_0 = t_0`).
+pub(crate) fn recurrence<T: Scalar>(mut p: T, mut s: T, ds: &T, out: &mut [T]) {
+    for o in out.iter_mut() {
+        *o = p.clone();
+        p = p + s.clone();
+        s = s + ds.clone();
+    }
+}

@@ -1,0 +1,69 @@
+//! # phong-approx
+//!
+//! A verified numerical reference for scan-line approximations of Phong shading, after
+//! A. Hast, T. Barrera and E. Bengtsson, *Approximated Phong Shading by using the Euler
+//! Method*, and Z. Mortensen's 1995 text on linear interpolation of angles.
+//!
+//! Every recurrence is written once, generic over [`Scalar`], and runs on `f32`, `f64`,
+//! exact rationals ([`num_rational::BigRational`]) and, with the `mpfr` feature, MPFR
+//! floats: the exact run is the reference for the float run.
+//!
+//! | method | module | equations |
+//! |---|---|---|
+//! | Phong, exact per pixel | [`phong`] | eq. 4 |
+//! | Duff's forward differences | [`duff`] | eqs. 5–7 |
+//! | symmetric (half-square-root) Phong | [`symmetric_phong`] | §4 |
+//! | Gouraud / fence along the span | [`gouraud`] | §1, eq. 23 |
+//! | Euler | [`euler`] | eqs. 12–14 |
+//! | corrected Euler | [`corrected_euler`] | eqs. 15–17 |
+//! | adaptive Gouraud test | [`adaptive`] | eqs. 23–24 |
+//! | angular interpolation | [`angular`] | second source |
+//! | specular `(N·H)^s` | [`specular`] | eq. 1, §6.1 |
+//! | 8-bit levels | [`quantize`] | §6 |
+//!
+//! The set-up of a scan line (k, A, B, C, D, E, p_a, p_b, dq_a, dq_b, di_a, di_b, ds,
+//! p_n, ε, dε, t_0, d_p) lives in [`Span`].
+//!
+//! The derivation of every claim, with links to its Coq proof (`proofs/`) and its
+//! property test (`tests/claims.rs`), is in
+//! [`docs/derivations.md`](https://github.com/phong-approx/phong-approx/blob/main/docs/derivations.md);
+//! the places where the sources are wrong or ambiguous are in `docs/errata.md`.
+//!
+//! ```
+//! use phong_approx::{reference::unit::unit_from_ints, Method, Span};
+//! // Exact unit normals 2·atan(1/3)·… apart, light straight on, 8 steps.
+//! let na = unit_from_ints(1, 0, 3);
+//! let nb = unit_from_ints(-1, 0, 3);
+//! let l = unit_from_ints(0, 0, 1);
+//! let span = Span::new(na, nb, l, 8).unwrap();
+//! let v = Method::CorrectedEuler.values(&span).unwrap();
+//! // Corrected Euler is exact at both edges (eqs. 15–17).
+//! assert_eq!(v[0], span.p_a);
+//! assert_eq!(v[8], span.p_b);
+//! ```
+
+#![warn(missing_docs)]
+
+pub mod adaptive;
+pub mod angular;
+pub mod corrected_euler;
+pub mod duff;
+pub mod error;
+pub mod euler;
+pub mod gouraud;
+pub mod method;
+pub mod phong;
+pub mod quantize;
+pub mod reference;
+pub mod scalar;
+pub mod span;
+pub mod specular;
+pub mod symmetric_phong;
+pub mod vector;
+
+pub use error::{Input, SpanError};
+pub use method::Method;
+pub use num_rational::BigRational;
+pub use scalar::{Real, Scalar};
+pub use span::Span;
+pub use vector::Vec3;

@@ -1,0 +1,214 @@
+//! Square root, arc cosine and cosine of rationals, to a fixed absolute accuracy.
+//!
+//! The results are irrational, so they cannot be exact; they are computed in
+//! fixed point with [`BITS`] + 64 fractional bits and returned as rationals whose
+//! absolute error is below 2^-[`BITS`]. This is what [`crate::scalar::Real`] means
+//! for [`BigRational`]: the field-operation recurrences stay exact, and the one
+//! square root (or cosine) per pixel is accurate far beyond any float.
+
+use num_bigint::BigInt;
+use num_integer::Integer;
+use num_rational::BigRational;
+use num_traits::{One, Signed, Zero};
+use std::sync::OnceLock;
+
+/// Accuracy of the results: absolute error below 2^-BITS.
+pub const BITS: u32 = 256;
+
+/// Working fractional bits (64 guard bits).
+const W: u32 = BITS + 64;
+
+fn one_fx() -> BigInt {
+    BigInt::one() << W
+}
+
+/// `x` in fixed point (floor of `x · 2^W`).
+fn to_fx(x: &BigRational) -> BigInt {
+    (x.numer() << W).div_floor(x.denom())
+}
+
+/// A fixed-point value back to a rational, keeping [`BITS`] + 8 fractional bits
+/// (the last guard bits are noise, and fewer bits keep the rationals small).
+fn from_fx(v: &BigInt) -> BigRational {
+    let keep = BITS + 8;
+    let shift = W - keep;
+    let r: BigInt = (v + (BigInt::one() << (shift - 1))) >> shift;
+    BigRational::new(r, BigInt::one() << keep)
+}
+
+/// `a·b` in fixed point, truncated toward zero (a plain `>>` floors, and a negative
+/// series term would then never reach zero).
+fn mul_fx(a: &BigInt, b: &BigInt) -> BigInt {
+    let p = a * b;
+    if p.is_negative() {
+        -((-p) >> W)
+    } else {
+        p >> W
+    }
+}
+
+fn div_fx(a: &BigInt, b: &BigInt) -> BigInt {
+    (a << W).div_floor(b)
+}
+
+fn sqrt_fx(a: &BigInt) -> BigInt {
+    if a.is_negative() {
+        return BigInt::zero();
+    }
+    (a << W).sqrt()
+}
+
+/// `√x` for `x ≥ 0` (negative `x` gives 0), absolute error below 2^-BITS·max(1, √x).
+pub fn sqrt(x: &BigRational) -> BigRational {
+    if !x.is_positive() {
+        return BigRational::zero();
+    }
+    // √(a/b) = √(a·b) / b, with a·b scaled by 2^(2W).
+    let ab: BigInt = (x.numer() * x.denom()) << (2 * W);
+    let s = ab.sqrt();
+    // s / (b · 2^W), rounded to BITS + 8 bits.
+    let v = (s << W).div_floor(&(x.denom() << W));
+    from_fx(&v)
+}
+
+/// atan(y) for |y| ≤ 1 in fixed point.
+fn atan_fx(y: &BigInt) -> BigInt {
+    // Halve the angle until |y| < 2^-8: atan(y) = 2·atan(y / (1 + √(1 + y²))).
+    let mut y = y.clone();
+    let mut doublings = 0u32;
+    let small = one_fx() >> 8;
+    while y.abs() > small {
+        let r = sqrt_fx(&(one_fx() + mul_fx(&y, &y)));
+        y = div_fx(&y, &(one_fx() + r));
+        doublings += 1;
+    }
+    // Taylor series y − y³/3 + y⁵/5 − …
+    let y2 = mul_fx(&y, &y);
+    let mut term = y.clone();
+    let mut sum = BigInt::zero();
+    let mut k = 0u64;
+    while !term.is_zero() {
+        let t = &term / BigInt::from(2 * k + 1);
+        if k % 2 == 0 {
+            sum += t;
+        } else {
+            sum -= t;
+        }
+        term = mul_fx(&term, &y2);
+        k += 1;
+    }
+    sum << doublings
+}
+
+fn pi_fx() -> &'static BigInt {
+    static PI: OnceLock<BigInt> = OnceLock::new();
+    PI.get_or_init(|| {
+        // Machin: π = 16·atan(1/5) − 4·atan(1/239).
+        let a = atan_fx(&(one_fx() / 5));
+        let b = atan_fx(&(one_fx() / 239));
+        a * 16 - b * 4
+    })
+}
+
+/// π/2 to 2^-BITS.
+pub fn frac_pi_2() -> BigRational {
+    from_fx(&(pi_fx() >> 1))
+}
+
+/// acos(x) in [0, π] for −1 ≤ x ≤ 1 (clamped outside), absolute error below 2^-BITS.
+pub fn acos(x: &BigRational) -> BigRational {
+    let one = BigRational::one();
+    if *x >= one {
+        return BigRational::zero();
+    }
+    if *x <= -one.clone() {
+        return from_fx(pi_fx());
+    }
+    let xf = to_fx(x);
+    let sf = sqrt_fx(&(one_fx() - mul_fx(&xf, &xf))); // √(1 − x²)
+    let half = BigRational::new(1.into(), 2.into());
+    let v = if x.abs() * x.abs() <= half {
+        // acos = π/2 − atan(x / √(1 − x²)), argument in [−1, 1].
+        (pi_fx() >> 1) - atan_fx(&div_fx(&xf, &sf))
+    } else if x.is_positive() {
+        atan_fx(&div_fx(&sf, &xf))
+    } else {
+        pi_fx() - atan_fx(&div_fx(&sf, &(-xf)))
+    };
+    from_fx(&v)
+}
+
+/// cos(x) for |x| ≤ 2^20, absolute error below 2^-BITS.
+///
+/// # Panics
+/// Never for the arguments the crate passes (angles in [−2π, 2π]); larger
+/// arguments are reduced by halving and lose about one bit per halving.
+pub fn cos(x: &BigRational) -> BigRational {
+    let mut xf = to_fx(x).abs();
+    // Reduce |x| below 1/2 by halving; undo with cos 2a = 2cos²a − 1.
+    let mut halvings = 0u32;
+    let half = one_fx() >> 1;
+    while xf > half {
+        xf >>= 1;
+        halvings += 1;
+    }
+    let x2 = mul_fx(&xf, &xf);
+    let mut term = one_fx();
+    let mut sum = BigInt::zero();
+    let mut k = 0u64;
+    while !term.is_zero() {
+        if k % 2 == 0 {
+            sum += &term;
+        } else {
+            sum -= &term;
+        }
+        term = mul_fx(&term, &x2) / BigInt::from((2 * k + 1) * (2 * k + 2));
+        k += 1;
+    }
+    for _ in 0..halvings {
+        sum = mul_fx(&sum, &sum) * 2 - one_fx();
+    }
+    from_fx(&sum)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use num_traits::ToPrimitive;
+
+    fn q(n: i64, d: i64) -> BigRational {
+        BigRational::new(n.into(), d.into())
+    }
+
+    fn close(a: &BigRational, b: f64, tol: f64) -> bool {
+        (a.to_f64().unwrap() - b).abs() <= tol
+    }
+
+    #[test]
+    fn agrees_with_libm_to_double_precision() {
+        for &(n, d) in &[(0, 1), (1, 7), (1, 2), (-1, 3), (99, 100), (-999, 1000), (3, 5)] {
+            let x = q(n, d);
+            let xf = n as f64 / d as f64;
+            assert!(close(&acos(&x), xf.acos(), 4e-16), "acos({n}/{d})");
+            assert!(close(&cos(&x), xf.cos(), 4e-16), "cos({n}/{d})");
+            assert!(close(&cos(&(q(7, 2) * x.clone())), (3.5 * xf).cos(), 4e-16));
+        }
+        assert!(close(&sqrt(&q(2, 1)), 2f64.sqrt(), 4e-16));
+        assert!(close(&frac_pi_2(), std::f64::consts::FRAC_PI_2, 4e-16));
+    }
+
+    #[test]
+    fn identities_hold_to_2_pow_minus_250() {
+        let tol = BigRational::new(1.into(), BigInt::one() << 250);
+        for &(n, d) in &[(1, 7), (-5, 6), (7, 10), (-1, 100), (1, 1_000_000)] {
+            let x = q(n, d);
+            let back = cos(&acos(&x));
+            assert!((back - x.clone()).abs() < tol, "cos(acos({n}/{d}))");
+            let s = sqrt(&(x.clone() * x.clone()));
+            assert!((s - x.abs()).abs() < tol, "sqrt(x²) for {n}/{d}");
+        }
+        // cos(π/2) = 0 and acos(0) = π/2.
+        assert!(cos(&frac_pi_2()).abs() < tol);
+        assert!((acos(&BigRational::zero()) - frac_pi_2()).abs() < tol);
+    }
+}

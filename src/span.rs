@@ -1,0 +1,275 @@
+//! The scan line: every set-up quantity of the paper, computed once.
+//!
+//! A span runs from the left edge normal `N_a` to the right edge normal `N_b` in
+//! `n ≥ 1` steps; its pixels are `i = 0..=n` (`n + 1` values) with the interpolated
+//! normal `N(i) = N_a + i·k`, `k = (N_b − N_a)/n`. Every method reads its set-up
+//! from a [`Span`]; none recomputes it.
+//!
+//! Derivations: `docs/derivations.md`. Proofs: `proofs/Span.v`, `proofs/Euler.v`.
+//! Tests: `tests/claims.rs`.
+
+use crate::error::{Input, SpanError};
+use crate::scalar::{Real, Scalar};
+use crate::vector::Vec3;
+
+/// The set-up of one scan line in the paper's notation (eqs. 2–3, 10–11, 14–17, 23).
+///
+/// Built by [`Span::new`], which checks that `N_a`, `N_b` and `L` are finite, non-zero
+/// and of unit length (exactly for rationals, within [`Scalar::unit_tolerance`] for
+/// floats), that `N_b ≠ −N_a` and that `n ≥ 1`. Unit edge normals are what make
+/// `E = 1` (eq. 3) and `dq_b = −dq_a` (eq. 22) true; [`Span::normalized`] normalizes
+/// the inputs first, and [`Span::with_tolerance`] accepts a caller's tolerance (for
+/// measuring float inputs against an exact run on the same, not-quite-unit, values).
+///
+/// Fields are the paper's quantities with the paper's names.
+#[derive(Clone, Debug)]
+pub struct Span<T> {
+    /// Normal at the left edge, `N_a` (pixel 0).
+    pub na: Vec3<T>,
+    /// Normal at the right edge, `N_b` (pixel n).
+    pub nb: Vec3<T>,
+    /// Unit light vector `L` (or half vector `H` for specular).
+    pub l: Vec3<T>,
+    /// Number of steps `n = x_2 − x_1 ≥ 1`; the span has `n + 1` pixels.
+    pub n: u32,
+    /// `n` as a scalar.
+    pub n_s: T,
+    /// `k = (N_b − N_a)/n`, the normal's step per pixel (§2.1).
+    pub k: Vec3<T>,
+    /// `A = k·L` (eq. 2), the slope of `p`.
+    pub a: T,
+    /// `B = N_a·L` (eq. 2).
+    pub b: T,
+    /// `C = k·k` (eq. 3).
+    pub c: T,
+    /// `D = 2 k·N_a` (eq. 3).
+    pub d: T,
+    /// `E = N_a·N_a` (eq. 3); 1 for a unit `N_a`.
+    pub e: T,
+    /// `p_a = N_a·L`, the exact intensity at the left edge (eq. 10).
+    pub p_a: T,
+    /// `p_b = N_b·L`, the exact intensity at the right edge (eq. 11).
+    pub p_b: T,
+    /// `dq_a = D`, the slope of `q` at the left edge (eq. 10).
+    pub dq_a: T,
+    /// `dq_b = 2nC + D`, the slope of `q` at the right edge (eq. 11); equals `−dq_a`
+    /// for unit edge normals (eq. 22), but is computed from its definition.
+    pub dq_b: T,
+    /// `di_a = A − p_a/2 · dq_a`, the derivative of `p/√q` at the left edge (eq. 10).
+    pub di_a: T,
+    /// `di_b = A − p_b/2 · dq_b`, the derivative of `p/√q` at the right edge (eq. 11).
+    pub di_b: T,
+    /// `ds = (di_b − di_a)/n`, the step of the interpolated derivative (§3).
+    pub ds: T,
+    /// `p_n = p_a + n·di_a + (n² − n)/2 · ds`, where plain Euler ends (eq. 14).
+    pub p_n: T,
+    /// `ε = p_n − p_b`, plain Euler's error at the right edge (eq. 15).
+    pub eps: T,
+    /// `dε = ε/n`, the correction per step (eq. 17; the text prints `ε/N`).
+    pub d_eps: T,
+    /// `t_0 = di_a − dε`, the corrected start slope (eq. 17).
+    pub t0: T,
+    /// `dp = (p_b − p_a)/n`, the Gouraud (fence) slope along the span (eq. 23's `d_p`;
+    /// not the `dp = A` of §2.1).
+    pub dp: T,
+}
+
+fn check_vector<T: Scalar>(v: &Vec3<T>, input: Input, tol: &T) -> Result<(), SpanError> {
+    for (component, c) in v.components().into_iter().enumerate() {
+        if !c.is_finite() {
+            return Err(SpanError::NonFinite { input, component });
+        }
+    }
+    let len2 = v.length_squared();
+    if len2.is_zero() || !len2.is_finite() {
+        // A non-finite square (overflow) is as unusable as zero.
+        return Err(if len2.is_zero() {
+            SpanError::ZeroVector { input }
+        } else {
+            SpanError::NotUnit {
+                input,
+                length_squared: len2.to_f64(),
+                tolerance: tol.to_f64(),
+            }
+        });
+    }
+    if (len2.clone() - T::one()).abs() > *tol {
+        return Err(SpanError::NotUnit {
+            input,
+            length_squared: len2.to_f64(),
+            tolerance: tol.to_f64(),
+        });
+    }
+    Ok(())
+}
+
+impl<T: Scalar> Span<T> {
+    /// Sets up the span from unit `N_a`, `N_b`, `L` and `n ≥ 1` steps.
+    ///
+    /// # Errors
+    /// [`SpanError`] naming the input that is non-finite, zero, not unit, or `n = 0`,
+    /// or [`SpanError::Opposite`] when `N_b = −N_a`.
+    pub fn new(na: Vec3<T>, nb: Vec3<T>, l: Vec3<T>, n: u32) -> Result<Self, SpanError> {
+        Self::with_tolerance(na, nb, l, n, &T::unit_tolerance())
+    }
+
+    /// [`Span::new`] with a caller's tolerance on `|v·v − 1|` for the three vectors.
+    ///
+    /// # Errors
+    /// As [`Span::new`].
+    pub fn with_tolerance(
+        na: Vec3<T>,
+        nb: Vec3<T>,
+        l: Vec3<T>,
+        n: u32,
+        tol: &T,
+    ) -> Result<Self, SpanError> {
+        check_vector(&na, Input::Na, tol)?;
+        check_vector(&nb, Input::Nb, tol)?;
+        check_vector(&l, Input::L, tol)?;
+        if n == 0 {
+            return Err(SpanError::ZeroSteps);
+        }
+        if na.add(&nb).length_squared().is_zero() {
+            return Err(SpanError::Opposite);
+        }
+        Ok(Self::setup(na, nb, l, n))
+    }
+
+    /// The set-up formulas, in the order the paper gives them.
+    fn setup(na: Vec3<T>, nb: Vec3<T>, l: Vec3<T>, n: u32) -> Self {
+        let one = T::one();
+        let two = one.clone() + one.clone();
+        let n_s = T::from_i64(i64::from(n));
+        // §2.1: N = k x + m with k = (N_b − N_a)/n, m = N_a.
+        let k = nb.sub(&na).div(&n_s);
+        // Eq. 2: p = A x + B.
+        let a = k.dot(&l);
+        let b = na.dot(&l);
+        // Eq. 3: q = C x² + D x + E.
+        let c = k.dot(&k);
+        let d = two.clone() * k.dot(&na);
+        let e = na.dot(&na);
+        // Eqs. 10–11: edge intensities, slopes of q and derivatives of p/√q (q = 1).
+        let p_a = b.clone();
+        let p_b = nb.dot(&l);
+        let dq_a = d.clone();
+        let dq_b = two.clone() * n_s.clone() * c.clone() + d.clone();
+        let di_a = a.clone() - p_a.clone() / two.clone() * dq_a.clone();
+        let di_b = a.clone() - p_b.clone() / two.clone() * dq_b.clone();
+        // §3: s_0 = di_a, ds = (di_b − di_a)/n.
+        let ds = (di_b.clone() - di_a.clone()) / n_s.clone();
+        // Eq. 14: where plain Euler ends.
+        let tri = T::from_i64(i64::from(n) * (i64::from(n) - 1) / 2);
+        let p_n = p_a.clone() + n_s.clone() * di_a.clone() + tri * ds.clone();
+        // Eqs. 15, 17: ε, dε = ε/n, t_0.
+        let eps = p_n.clone() - p_b.clone();
+        let d_eps = eps.clone() / n_s.clone();
+        let t0 = di_a.clone() - d_eps.clone();
+        // Eq. 23's d_p: the Gouraud slope along the span.
+        let dp = (p_b.clone() - p_a.clone()) / n_s.clone();
+        Span {
+            na,
+            nb,
+            l,
+            n,
+            n_s,
+            k,
+            a,
+            b,
+            c,
+            d,
+            e,
+            p_a,
+            p_b,
+            dq_a,
+            dq_b,
+            di_a,
+            di_b,
+            ds,
+            p_n,
+            eps,
+            d_eps,
+            t0,
+            dp,
+        }
+    }
+
+    /// Number of pixels, `n + 1`.
+    pub fn len(&self) -> usize {
+        self.n as usize + 1
+    }
+
+    /// Always `false`: a span has at least two pixels.
+    pub fn is_empty(&self) -> bool {
+        false
+    }
+
+    /// `p(i) = A·i + B = N(i)·L` (eq. 2), the unnormalized dot product at pixel `i`.
+    pub fn p_at(&self, i: u32) -> T {
+        self.a.clone() * T::from_i64(i64::from(i)) + self.b.clone()
+    }
+
+    /// `q(i) = C·i² + D·i + E = N(i)·N(i)` (eq. 3).
+    pub fn q_at(&self, i: u32) -> T {
+        let x = T::from_i64(i64::from(i));
+        (self.c.clone() * x.clone() + self.d.clone()) * x + self.e.clone()
+    }
+
+    /// The interpolated normal `N(i) = N_a + i·k` (§2.1).
+    pub fn normal_at(&self, i: u32) -> Vec3<T> {
+        self.na.add(&self.k.scale(&T::from_i64(i64::from(i))))
+    }
+
+    /// Checks that `out` holds exactly `n + 1` values.
+    ///
+    /// # Errors
+    /// [`SpanError::OutputLength`] otherwise.
+    pub fn check_output(&self, out: &[T]) -> Result<(), SpanError> {
+        if out.len() == self.len() {
+            Ok(())
+        } else {
+            Err(SpanError::OutputLength {
+                expected: self.len(),
+                got: out.len(),
+            })
+        }
+    }
+
+    /// The same span with its inputs converted to another scalar type (exactly for
+    /// exact targets, rounded to nearest for floats) and the set-up recomputed there,
+    /// without the unit-length check (rounded unit vectors are not exactly unit).
+    pub fn cast<U: Scalar>(&self) -> Option<Span<U>> {
+        Some(Span::<U>::setup(
+            self.na.cast()?,
+            self.nb.cast()?,
+            self.l.cast()?,
+            self.n,
+        ))
+    }
+}
+
+impl<T: Real> Span<T> {
+    /// Normalizes `N_a`, `N_b` and `L`, then sets up the span.
+    ///
+    /// # Errors
+    /// As [`Span::new`], except that non-unit lengths are accepted.
+    pub fn normalized(na: Vec3<T>, nb: Vec3<T>, l: Vec3<T>, n: u32) -> Result<Self, SpanError> {
+        let big = T::from_i64(1 << 20);
+        for (v, input) in [(&na, Input::Na), (&nb, Input::Nb), (&l, Input::L)] {
+            // Only finiteness and non-zero length are checked here.
+            match check_vector(v, input, &big) {
+                Err(SpanError::NotUnit { .. }) | Ok(()) => {}
+                Err(e) => return Err(e),
+            }
+        }
+        // Exact types normalize through a 2^-256-accurate square root, so the result
+        // is unit only to about that accuracy: accept 2^-240 there.
+        let mut tol = T::unit_tolerance();
+        if tol.is_zero() {
+            tol = T::one() / T::from_i64(1 << 60) / T::from_i64(1 << 60) / T::from_i64(1 << 60)
+                / T::from_i64(1 << 60);
+        }
+        Self::with_tolerance(na.normalize(), nb.normalize(), l.normalize(), n, &tol)
+    }
+}

@@ -1,0 +1,53 @@
+//! Specular highlights (eq. 1, §6.1): any span method applied to `N·H`, then the
+//! power `s`; and the full intensity `I = K_d·max(0, N·L) + K_s·max(0, N·H)^s`.
+//!
+//! Where clamping happens: the recurrences themselves are unclamped (they approximate
+//! `N·L/|N|`, which is negative where the light is behind the surface). The clamp
+//! `max(0, ·)` is applied here, before the power and in eq. 1, and the 8-bit
+//! quantiser ([`crate::quantize::level`]) clamps to `[0, 1]` last.
+
+use crate::error::SpanError;
+use crate::method::Method;
+use crate::scalar::{Real, Scalar};
+use crate::span::Span;
+
+/// `max(0, v)^s`, by repeated squaring (field operations only: exact for rationals).
+pub fn power<T: Scalar>(v: &T, s: u32) -> T {
+    let mut base = if *v < T::zero() { T::zero() } else { v.clone() };
+    let mut acc = T::one();
+    let mut e = s;
+    while e > 0 {
+        if e & 1 == 1 {
+            acc = acc * base.clone();
+        }
+        e >>= 1;
+        if e > 0 {
+            base = base.clone() * base;
+        }
+    }
+    acc
+}
+
+/// Fills `out[i]` with `max(0, v_i)^s`, where `v` is `method` run on `span_h` — a span
+/// whose light vector is the unit half vector `H` (§6.1: the same recurrences for
+/// `N·H`).
+///
+/// # Errors
+/// As the method's `shade`.
+pub fn shade<T: Real>(
+    method: &Method,
+    span_h: &Span<T>,
+    s: u32,
+    out: &mut [T],
+) -> Result<(), SpanError> {
+    method.shade(span_h, out)?;
+    for o in out.iter_mut() {
+        *o = power(o, s);
+    }
+    Ok(())
+}
+
+/// Eq. 1: `I = K_d·max(0, N·L) + K_s·max(0, N·H)^s` from the two dot products.
+pub fn intensity<T: Scalar>(kd: &T, ks: &T, s: u32, n_dot_l: &T, n_dot_h: &T) -> T {
+    kd.clone() * power(n_dot_l, 1) + ks.clone() * power(n_dot_h, s)
+}

@@ -58,10 +58,16 @@ fn sqrt_fx(a: &BigInt) -> BigInt {
     (a << W).sqrt()
 }
 
-/// `√x` for `x ≥ 0` (negative `x` gives 0), absolute error below 2^-BITS·max(1, √x).
+/// `√x` for `x ≥ 0` (negative `x` gives 0): exact when `x` is the square of a
+/// rational, otherwise with absolute error below 2^-BITS·max(1, √x).
 pub fn sqrt(x: &BigRational) -> BigRational {
     if !x.is_positive() {
         return BigRational::zero();
+    }
+    // A reduced fraction is a square exactly when its numerator and denominator are.
+    let (rn, rd) = (x.numer().sqrt(), x.denom().sqrt());
+    if &(&rn * &rn) == x.numer() && &(&rd * &rd) == x.denom() {
+        return BigRational::new(rn, rd);
     }
     // √(a/b) = √(a·b) / b, with a·b scaled by 2^(2W).
     let ab: BigInt = (x.numer() * x.denom()) << (2 * W);
@@ -194,6 +200,8 @@ mod tests {
             assert!(close(&cos(&(q(7, 2) * x.clone())), (3.5 * xf).cos(), 4e-16));
         }
         assert!(close(&sqrt(&q(2, 1)), 2f64.sqrt(), 4e-16));
+        assert_eq!(sqrt(&q(16, 25)), q(4, 5));
+        assert_eq!(sqrt(&q(1, 1)), q(1, 1));
         assert!(close(&frac_pi_2(), std::f64::consts::FRAC_PI_2, 4e-16));
     }
 

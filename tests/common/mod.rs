@@ -1,0 +1,149 @@
+//! Shared generators for the claim tests: exact unit normals from small integers, so
+//! that a failing case prints (and shrinks to) a few small numbers.
+#![allow(dead_code)]
+
+use phong_approx::reference::unit::unit_from_ints;
+use phong_approx::{BigRational, Span, Vec3};
+use proptest::prelude::*;
+
+/// Exact rationals.
+pub type Q = BigRational;
+
+/// `n/d` as a rational.
+pub fn q(n: i64, d: i64) -> Q {
+    BigRational::new(n.into(), d.into())
+}
+
+/// Stereographic parameters `(a/d, b/d)` of an exact unit vector.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Stereo(pub i64, pub i64, pub i64);
+
+impl Stereo {
+    /// The exact unit vector.
+    pub fn unit(self) -> Vec3<Q> {
+        unit_from_ints(self.0, self.1, self.2)
+    }
+}
+
+/// A span given by its exact inputs.
+#[derive(Clone, Debug)]
+pub struct Case {
+    /// Why the case is there (edge cases) or "random".
+    pub why: &'static str,
+    /// `N_a`.
+    pub na: Stereo,
+    /// `N_b`.
+    pub nb: Stereo,
+    /// `L`.
+    pub l: Stereo,
+    /// Steps.
+    pub n: u32,
+}
+
+impl Case {
+    /// The exact span, or `None` when `N_b = −N_a`.
+    pub fn span(&self) -> Option<Span<Q>> {
+        Span::new(self.na.unit(), self.nb.unit(), self.l.unit(), self.n).ok()
+    }
+}
+
+/// Parameters of a random exact unit vector.
+pub fn arb_stereo() -> impl Strategy<Value = Stereo> {
+    (-40i64..=40, -40i64..=40, 1i64..=24).prop_map(|(a, b, d)| Stereo(a, b, d))
+}
+
+/// A random span: either two unrelated normals, or (as a torus produces) two nearby
+/// normals; light anywhere; 1 to 64 steps.
+pub fn arb_case() -> impl Strategy<Value = Case> {
+    let far = (arb_stereo(), arb_stereo());
+    let near = (arb_stereo(), -3i64..=3, -3i64..=3).prop_map(|(s, da, db)| {
+        let d = s.2 * 8;
+        (Stereo(s.0 * 8, s.1 * 8, d), Stereo(s.0 * 8 + da, s.1 * 8 + db, d))
+    });
+    (prop_oneof![far, near], arb_stereo(), 1u32..=64).prop_map(|((na, nb), l, n)| Case {
+        why: "random",
+        na,
+        nb,
+        l,
+        n,
+    })
+}
+
+/// Edge cases enumerated on purpose: n = 1 and 2, N_a = N_b, normals 170° apart,
+/// N·L < 0 on part of the span, grazing light, n = 4096.
+pub fn edge_cases() -> Vec<Case> {
+    let up = Stereo(0, 0, 1); // (0, 0, 1)
+    let tilt = Stereo(1, 0, 3); // (3/5, 0, 4/5)
+    let tilt_back = Stereo(-1, 0, 3); // (−3/5, 0, 4/5)
+    // tan(85°) ≈ 11.430: (2u, 0, 1 − u²)/(1 + u²) is 170.0° from (0, 0, 1).
+    let far = Stereo(11430, 0, 1000);
+    let side = Stereo(1, 0, 1); // (1, 0, 0)
+    let light_oblique = Stereo(2, 1, 5);
+    let mut v = vec![
+        Case { why: "n = 1", na: up, nb: tilt, l: light_oblique, n: 1 },
+        Case { why: "n = 2, equal edge angles", na: tilt, nb: tilt_back, l: up, n: 2 },
+        Case { why: "Na = Nb", na: tilt, nb: tilt, l: light_oblique, n: 7 },
+        Case { why: "normals 170° apart", na: up, nb: far, l: light_oblique, n: 33 },
+        Case { why: "normals 170° apart, even n", na: up, nb: far, l: up, n: 64 },
+        Case { why: "N·L < 0 on part of the span", na: up, nb: side, l: Stereo(-1, 0, 2), n: 9 },
+        Case { why: "grazing light", na: up, nb: tilt, l: Stereo(999, 0, 1000), n: 12 },
+        Case { why: "light = Na", na: tilt, nb: Stereo(1, 1, 4), l: tilt, n: 5 },
+        Case { why: "n = 4096", na: up, nb: tilt, l: light_oblique, n: 4096 },
+        Case { why: "n = 4096, 170° apart", na: up, nb: far, l: light_oblique, n: 4096 },
+    ];
+    v.push(Case { why: "90° apart, light between", na: up, nb: side, l: Stereo(1, 0, 2), n: 16 });
+    v
+}
+
+/// Runs `check` on every edge case, then on `cases` random ones; a failure panics
+/// with the case (its exact inputs) and the message.
+pub fn for_all_spans(cases: u32, check: impl Fn(&Case, &Span<Q>) -> Result<(), String>) {
+    for c in edge_cases() {
+        let span = c.span().expect("edge cases are valid spans");
+        if let Err(e) = check(&c, &span) {
+            panic!("edge case '{}' failed: {e}\ninputs: {c:?}", c.why);
+        }
+    }
+    let config = ProptestConfig {
+        cases,
+        failure_persistence: Some(Box::new(
+            proptest::test_runner::FileFailurePersistence::Direct(
+                "proptest-regressions/claims.txt",
+            ),
+        )),
+        ..ProptestConfig::default()
+    };
+    let mut runner = proptest::test_runner::TestRunner::new(config);
+    let result = runner.run(&arb_case(), |c| {
+        let Some(span) = c.span() else {
+            return Ok(());
+        };
+        check(&c, &span).map_err(|e| TestCaseError::fail(format!("{e}\ninputs: {c:?}")))
+    });
+    if let Err(e) = result {
+        panic!("{e}");
+    }
+}
+
+/// `Ok` if `a == b`, else a message naming both.
+pub fn eq(what: &str, a: &Q, b: &Q) -> Result<(), String> {
+    if a == b {
+        Ok(())
+    } else {
+        Err(format!("{what}: {a} ≠ {b}"))
+    }
+}
+
+/// `Ok` if `cond`, else `msg`.
+pub fn ensure(cond: bool, msg: impl FnOnce() -> String) -> Result<(), String> {
+    if cond {
+        Ok(())
+    } else {
+        Err(msg())
+    }
+}
+
+/// `i` as a rational.
+pub fn qi(i: u32) -> Q {
+    q(i64::from(i), 1)
+}

@@ -59,6 +59,7 @@ pub mod scalar;
 pub mod span;
 pub mod specular;
 pub mod symmetric_phong;
+pub mod tolerance;
 pub mod vector;
 
 pub use error::{Input, SpanError};

@@ -57,6 +57,8 @@ pub struct Decision<T> {
 /// Gouraud. In exact arithmetic `m = (n − 1)/2` always lies in `[0, n)`; float
 /// rounding can move it, so the step is clamped to `0..=n` (and a non-finite `m`, from
 /// a tiny `ds`, is clamped too).
+///
+/// Claims: `eq_23_m_is_half_n_minus_1`, `eq_23_truncated_step_is_ceil_half`, `eq_24_delta_is_max_difference`, `eq_24_delta_test_fails_on_concrete_span`, `eq_24_large_delta_implies_different_levels` (proofs/Adaptive.v; tests/claims.rs).
 pub fn decide<T: Scalar>(span: &Span<T>, kd: &T) -> Decision<T> {
     let ds = &span.ds;
     if ds.is_zero() {
@@ -95,9 +97,16 @@ pub fn decide<T: Scalar>(span: &Span<T>, kd: &T) -> Decision<T> {
 
 /// Eq. 24 at step `j`: `j·d_p − (j·t_0 + (j² − j)/2 · ds)`, the difference between
 /// Gouraud and corrected Euler after `j` steps.
+///
+/// Proved: `eq_24_delta_closed_form` (`δ = ds/2 · j(n − j)` at `j = ⌈n/2⌉`),
+/// `eq_24_delta_is_max_difference`. Tested: `tests/claims.rs`, same names.
+///
+/// Claims: `eq_24_delta_closed_form` (proofs/Adaptive.v; tests/claims.rs).
 pub fn delta_at<T: Scalar>(span: &Span<T>, j: u32) -> T {
     let js = T::from_i64(i64::from(j));
-    let tri = T::from_i64(i64::from(j) * (i64::from(j) - 1) / 2);
+    // (j² − j)/2 in 128 bits: exact for every u32 j.
+    let tri =
+        T::from_i64(((i128::from(j) * (i128::from(j) - 1)) / 2).min(i128::from(i64::MAX)) as i64);
     js.clone() * span.dp.clone() - (js * span.t0.clone() + tri * span.ds.clone())
 }
 

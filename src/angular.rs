@@ -2,8 +2,9 @@
 //! angle `α = acos(N·L)` interpolated linearly between the edges, its cosine taken
 //! back per pixel, exactly or from a table.
 //!
-//! Proved: `proofs/Angular.v`, `mortensen_equal_angles_counterexample` (the angle does
-//! *not* change linearly along the span in general, so this is an approximation).
+//! Proved: `proofs/Angular.v`, `mortensen_equal_angles_counterexample`,
+//! `mortensen_angle_not_linear`, `mortensen_unequal_angles_counterexample` (the angle
+//! does *not* change linearly along the span, so this is an approximation).
 //! Tested: `tests/claims.rs::mortensen_equal_angles_counterexample`,
 //! `tests/methods.rs`.
 
@@ -33,13 +34,18 @@ fn angles<T: Real>(span: &Span<T>) -> (T, T) {
 
 /// Fills `out[i]` with `cos(α_a + i·(α_b − α_a)/n)`, `α = acos(N·L)` at the edges.
 ///
-/// Exact at both edges; between them it follows the cosine of a linear angle, which
-/// is not Phong's `p/√q` unless `L` lies in the plane of `N_a` and `N_b` (and then
-/// only approximately, since Phong's normalized linear interpolation does not move
-/// at a constant angular speed). Angles run over `[0°, 180°]`, so `N·L < 0` is kept.
+/// Exact at both edges only: between them it follows the cosine of a linear angle,
+/// while the angle between Phong's normalized interpolated normal and `L` is not
+/// linear in `i` — not when the edge angles are equal
+/// (`mortensen_equal_angles_counterexample`), and not even when `L` lies in the
+/// plane of `N_a` and `N_b` (`mortensen_unequal_angles_counterexample`: the
+/// interpolated normal does not turn at a constant angular speed). Angles run over
+/// `[0°, 180°]`, so `N·L < 0` is kept.
 ///
 /// # Errors
 /// [`SpanError::OutputLength`] if `out.len() ≠ n + 1`.
+///
+/// Claims: `mortensen_equal_angles_counterexample`, `mortensen_angle_not_linear`, `mortensen_unequal_angles_counterexample` (proofs/Angular.v; tests/claims.rs).
 pub fn shade<T: Real>(span: &Span<T>, out: &mut [T]) -> Result<(), SpanError> {
     span.check_output(out)?;
     let (mut alpha, d_alpha) = angles(span);

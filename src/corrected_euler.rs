@@ -19,6 +19,8 @@ use crate::span::Span;
 ///
 /// # Errors
 /// [`SpanError::OutputLength`] if `out.len() ≠ n + 1`.
+///
+/// Claims: `eq_16_17_corrected_is_euler_minus_linear_error`, `eq_17_corrected_euler_starts_at_pa`, `eq_17_corrected_euler_ends_at_pb` (proofs/Euler.v; tests/claims.rs).
 pub fn shade<T: Scalar>(span: &Span<T>, out: &mut [T]) -> Result<(), SpanError> {
     span.check_output(out)?;
     crate::euler::recurrence(span.p_a.clone(), span.t0.clone(), &span.ds, out);

@@ -18,6 +18,8 @@ use crate::span::Span;
 ///
 /// # Errors
 /// [`SpanError::OutputLength`] if `out.len() ≠ n + 1`.
+///
+/// Claims: `eq_5_7_duff_computes_phong` (proofs/Duff.v; tests/claims.rs).
 pub fn shade<T: Real>(span: &Span<T>, out: &mut [T]) -> Result<(), SpanError> {
     span.check_output(out)?;
     let mut pq = Recurrence::new(span);
@@ -30,6 +32,8 @@ pub fn shade<T: Real>(span: &Span<T>, out: &mut [T]) -> Result<(), SpanError> {
 
 /// The state of Duff's recurrence (eqs. 5–7): `p_i`, `q_i`, `dq_i`.
 #[derive(Clone, Debug)]
+///
+/// Claims: `eq_5_7_duff_recurrence_exact`, `sec_4_dq_zero_at_middle` (proofs/Duff.v, proofs/Symmetry.v; tests/claims.rs).
 pub struct Recurrence<T> {
     /// `p_i`.
     pub p: T,
@@ -45,6 +49,8 @@ pub struct Recurrence<T> {
 
 impl<T: Scalar> Recurrence<T> {
     /// The initial state `p_0 = B`, `q_0 = E`, `dq_0 = C + D`, `d²q = 2C` (§2.1).
+    ///
+    /// Claims: `eq_7_duff_dq0_and_d2q` (proofs/Duff.v; tests/claims.rs).
     pub fn new(span: &Span<T>) -> Self {
         Recurrence {
             p: span.b.clone(),

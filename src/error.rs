@@ -57,6 +57,14 @@ pub enum SpanError {
     /// `n = 0`: a span needs at least one step.
     #[error("n must be at least 1 (got 0)")]
     ZeroSteps,
+    /// `n` above [`crate::span::MAX_STEPS`] (2^24, where `f32` stops counting exactly).
+    #[error("n must be at most {max} (got {got})")]
+    TooManySteps {
+        /// The limit.
+        max: u32,
+        /// The `n` given.
+        got: u32,
+    },
     /// The output slice does not hold `n + 1` values.
     #[error("output holds {got} values, the span has {expected} pixels (n + 1)")]
     OutputLength {

@@ -16,6 +16,8 @@ use crate::span::Span;
 ///
 /// # Errors
 /// [`SpanError::OutputLength`] if `out.len() ≠ n + 1`.
+///
+/// Claims: `eq_24_gouraud_minus_corrected_euler` (proofs/Adaptive.v; tests/claims.rs).
 pub fn shade<T: Scalar>(span: &Span<T>, out: &mut [T]) -> Result<(), SpanError> {
     span.check_output(out)?;
     let mut g = span.p_a.clone();

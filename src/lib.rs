@@ -31,7 +31,8 @@
 //!
 //! ```
 //! use phong_approx::{reference::unit::unit_from_ints, Method, Span};
-//! // Exact unit normals 2·atan(1/3)·… apart, light straight on, 8 steps.
+//! // Exact unit normals (3/5, 0, 4/5) and (−3/5, 0, 4/5), 4·atan(1/3) ≈ 73.7° apart,
+//! // light straight on, 8 steps.
 //! let na = unit_from_ints(1, 0, 3);
 //! let nb = unit_from_ints(-1, 0, 3);
 //! let l = unit_from_ints(0, 0, 1);
@@ -52,6 +53,7 @@ pub mod error;
 pub mod euler;
 pub mod gouraud;
 pub mod method;
+pub mod parse;
 pub mod phong;
 pub mod quantize;
 pub mod reference;

@@ -1,1 +1,42 @@
-fn main() {}
+//! The `phong-approx` command line.
+//!
+//! - `phong-approx span`: one scan line by one method in one number type.
+//!
+//! Bad input prints one line on stderr naming the argument and the problem and exits
+//! with code 2.
+
+mod cli;
+
+use clap::{Parser, Subcommand};
+use std::process::ExitCode;
+
+/// A verified reference for scan-line Phong-shading approximations.
+#[derive(Parser, Debug)]
+#[command(name = "phong-approx", version, about, long_about = None)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Shade one scan line with one method and print its values and 8-bit levels.
+    Span(cli::span::SpanArgs),
+}
+
+fn main() -> ExitCode {
+    let cli = match Cli::try_parse() {
+        Ok(c) => c,
+        Err(e) => return cli::clap_error(e),
+    };
+    let result = match cli.command {
+        Command::Span(args) => cli::span::run(&args),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("phong-approx: {e}");
+            ExitCode::from(e.code())
+        }
+    }
+}

@@ -15,6 +15,8 @@ use crate::span::Span;
 ///
 /// # Errors
 /// [`SpanError::OutputLength`] if `out.len() ≠ n + 1`.
+///
+/// Claims: `eq_4_phong_exact_on_edges` (proofs/Span.v; tests/claims.rs).
 pub fn shade<T: Real>(span: &Span<T>, out: &mut [T]) -> Result<(), SpanError> {
     span.check_output(out)?;
     for (i, o) in out.iter_mut().enumerate() {

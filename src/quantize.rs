@@ -6,6 +6,8 @@ use crate::scalar::Scalar;
 /// with 255 and then truncate it"). For floats the product `255·v` is rounded first,
 /// as an implementation in that type would; for the exact level of an irrational
 /// Phong value use [`crate::reference::level::phong_level_exact`].
+///
+/// Claims: `eq_24_delta_test_does_not_imply_same_levels` (proofs/Adaptive.v; tests/claims.rs).
 pub fn level<T: Scalar>(v: &T) -> u8 {
     if *v <= T::zero() {
         return 0;

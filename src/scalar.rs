@@ -260,11 +260,8 @@ impl Scalar for BigRational {
 
     fn floor_i64(&self) -> i64 {
         let f = self.floor().to_integer();
-        f.to_i64().unwrap_or(if f.is_negative() {
-            i64::MIN
-        } else {
-            i64::MAX
-        })
+        f.to_i64()
+            .unwrap_or(if f.is_negative() { i64::MIN } else { i64::MAX })
     }
 
     fn unit_tolerance() -> Self {

@@ -12,6 +12,10 @@ use crate::error::{Input, SpanError};
 use crate::scalar::{Real, Scalar};
 use crate::vector::Vec3;
 
+/// The largest `n` a span accepts: 2^24, the last integer up to which `f32` counts
+/// exactly (and far beyond any scan line).
+pub const MAX_STEPS: u32 = 1 << 24;
+
 /// The set-up of one scan line in the paper's notation (eqs. 2–3, 10–11, 14–17, 23).
 ///
 /// Built by [`Span::new`], which checks that `N_a`, `N_b` and `L` are finite, non-zero
@@ -35,35 +39,55 @@ pub struct Span<T> {
     /// `n` as a scalar.
     pub n_s: T,
     /// `k = (N_b − N_a)/n`, the normal's step per pixel (§2.1).
+    ///
+    /// Claims: `eq_18_na_k_is_minus_nb_k` (proofs/Span.v; tests/claims.rs).
     pub k: Vec3<T>,
     /// `A = k·L` (eq. 2), the slope of `p`.
     pub a: T,
     /// `B = N_a·L` (eq. 2).
     pub b: T,
     /// `C = k·k` (eq. 3).
+    ///
+    /// Claims: `eq_20_n_k2_is_2k_nb` (proofs/Span.v; tests/claims.rs).
     pub c: T,
     /// `D = 2 k·N_a` (eq. 3).
     pub d: T,
     /// `E = N_a·N_a` (eq. 3); 1 for a unit `N_a`.
+    ///
+    /// Claims: `eq_3_e_is_one` (proofs/Span.v; tests/claims.rs).
     pub e: T,
     /// `p_a = N_a·L`, the exact intensity at the left edge (eq. 10).
     pub p_a: T,
     /// `p_b = N_b·L`, the exact intensity at the right edge (eq. 11).
     pub p_b: T,
     /// `dq_a = D`, the slope of `q` at the left edge (eq. 10).
+    ///
+    /// Claims: `eq_10_11_dp_dq_at_edges` (proofs/Derivative.v; tests/claims.rs).
     pub dq_a: T,
     /// `dq_b = 2nC + D`, the slope of `q` at the right edge (eq. 11); equals `−dq_a`
     /// for unit edge normals (eq. 22), but is computed from its definition.
+    ///
+    /// Claims: `eq_19_dqb_via_nb`, `eq_21_dqb_is_2k_nb`, `eq_22_dqb_is_minus_dqa` (proofs/Span.v; tests/claims.rs).
     pub dq_b: T,
     /// `di_a = A − p_a/2 · dq_a`, the derivative of `p/√q` at the left edge (eq. 10).
+    ///
+    /// Claims: `eq_9_derivative` (proofs/Derivative.v; tests/claims.rs).
     pub di_a: T,
     /// `di_b = A − p_b/2 · dq_b`, the derivative of `p/√q` at the right edge (eq. 11).
+    ///
+    /// Claims: `eq_10_11_edge_derivatives` (proofs/Derivative.v; tests/claims.rs).
     pub di_b: T,
     /// `ds = (di_b − di_a)/n`, the step of the interpolated derivative (§3).
+    ///
+    /// Claims: `eq_11_ds_closed_form` (proofs/Span.v; tests/claims.rs).
     pub ds: T,
     /// `p_n = p_a + n·di_a + (n² − n)/2 · ds`, where plain Euler ends (eq. 14).
+    ///
+    /// Claims: `eq_14_arithmetic_series`, `eq_14_euler_end_value` (proofs/Euler.v; tests/claims.rs).
     pub p_n: T,
     /// `ε = p_n − p_b`, plain Euler's error at the right edge (eq. 15).
+    ///
+    /// Claims: `eq_15_euler_misses_pb` (proofs/Euler.v; tests/claims.rs).
     pub eps: T,
     /// `dε = ε/n`, the correction per step (eq. 17; the text prints `ε/N`).
     pub d_eps: T,
@@ -129,6 +153,12 @@ impl<T: Scalar> Span<T> {
         check_vector(&l, Input::L, tol)?;
         if n == 0 {
             return Err(SpanError::ZeroSteps);
+        }
+        if n > MAX_STEPS {
+            return Err(SpanError::TooManySteps {
+                max: MAX_STEPS,
+                got: n,
+            });
         }
         if na.add(&nb).length_squared().is_zero() {
             return Err(SpanError::Opposite);
@@ -206,11 +236,15 @@ impl<T: Scalar> Span<T> {
     }
 
     /// `p(i) = A·i + B = N(i)·L` (eq. 2), the unnormalized dot product at pixel `i`.
+    ///
+    /// Claims: `eq_2_p_is_linear` (proofs/Span.v; tests/claims.rs).
     pub fn p_at(&self, i: u32) -> T {
         self.a.clone() * T::from_i64(i64::from(i)) + self.b.clone()
     }
 
     /// `q(i) = C·i² + D·i + E = N(i)·N(i)` (eq. 3).
+    ///
+    /// Claims: `eq_3_q_is_quadratic`, `eq_10_q_is_one_on_edges`, `sec_4_q_minimum_at_middle` (proofs/Span.v, proofs/Symmetry.v; tests/claims.rs).
     pub fn q_at(&self, i: u32) -> T {
         let x = T::from_i64(i64::from(i));
         (self.c.clone() * x.clone() + self.d.clone()) * x + self.e.clone()
@@ -240,6 +274,7 @@ impl<T: Scalar> Span<T> {
     /// exact targets, rounded to nearest for floats) and the set-up recomputed there,
     /// without the unit-length check (rounded unit vectors are not exactly unit).
     pub fn cast<U: Scalar>(&self) -> Option<Span<U>> {
+        // `self` was built by a constructor, so `1 ≤ n ≤ MAX_STEPS` holds.
         Some(Span::<U>::setup(
             self.na.cast()?,
             self.nb.cast()?,
@@ -267,7 +302,10 @@ impl<T: Real> Span<T> {
         // is unit only to about that accuracy: accept 2^-240 there.
         let mut tol = T::unit_tolerance();
         if tol.is_zero() {
-            tol = T::one() / T::from_i64(1 << 60) / T::from_i64(1 << 60) / T::from_i64(1 << 60)
+            tol = T::one()
+                / T::from_i64(1 << 60)
+                / T::from_i64(1 << 60)
+                / T::from_i64(1 << 60)
                 / T::from_i64(1 << 60);
         }
         Self::with_tolerance(na.normalize(), nb.normalize(), l.normalize(), n, &tol)

@@ -11,11 +11,11 @@ use crate::method::Method;
 use crate::scalar::{Real, Scalar};
 use crate::span::Span;
 
-/// `max(0, v)^s`, by repeated squaring (field operations only: exact for rationals).
-pub fn power<T: Scalar>(v: &T, s: u32) -> T {
+/// `max(0, v)^shininess`, by repeated squaring (field operations only: exact for rationals).
+pub fn power<T: Scalar>(v: &T, shininess: u32) -> T {
     let mut base = if *v < T::zero() { T::zero() } else { v.clone() };
     let mut acc = T::one();
-    let mut e = s;
+    let mut e = shininess;
     while e > 0 {
         if e & 1 == 1 {
             acc = acc * base.clone();
@@ -28,7 +28,7 @@ pub fn power<T: Scalar>(v: &T, s: u32) -> T {
     acc
 }
 
-/// Fills `out[i]` with `max(0, v_i)^s`, where `v` is `method` run on `span_h` — a span
+/// Fills `out[i]` with `max(0, v_i)^shininess`, where `v` is `method` run on `span_h` — a span
 /// whose light vector is the unit half vector `H` (§6.1: the same recurrences for
 /// `N·H`).
 ///
@@ -37,17 +37,20 @@ pub fn power<T: Scalar>(v: &T, s: u32) -> T {
 pub fn shade<T: Real>(
     method: &Method,
     span_h: &Span<T>,
-    s: u32,
+    shininess: u32,
     out: &mut [T],
 ) -> Result<(), SpanError> {
     method.shade(span_h, out)?;
     for o in out.iter_mut() {
-        *o = power(o, s);
+        *o = power(o, shininess);
     }
     Ok(())
 }
 
-/// Eq. 1: `I = K_d·max(0, N·L) + K_s·max(0, N·H)^s` from the two dot products.
-pub fn intensity<T: Scalar>(kd: &T, ks: &T, s: u32, n_dot_l: &T, n_dot_h: &T) -> T {
-    kd.clone() * power(n_dot_l, 1) + ks.clone() * power(n_dot_h, s)
+/// Eq. 1: `I = K_d·max(0, N·L) + K_s·max(0, N·H)^shininess` from the two dot
+/// products.
+///
+/// The shininess is the paper's `n` in eq. 1 (not the span length).
+pub fn intensity<T: Scalar>(kd: &T, ks: &T, shininess: u32, n_dot_l: &T, n_dot_h: &T) -> T {
+    kd.clone() * power(n_dot_l, 1) + ks.clone() * power(n_dot_h, shininess)
 }

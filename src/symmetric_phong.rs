@@ -19,6 +19,8 @@ use crate::span::Span;
 ///
 /// # Errors
 /// [`SpanError::OutputLength`] if `out.len() ≠ n + 1`.
+///
+/// Claims: `sec_4_q_is_symmetric`, `sec_4_symmetric_phong_equals_phong`, `sec_4_duff_q_is_symmetric` (proofs/Symmetry.v; tests/claims.rs).
 pub fn shade<T: Real>(span: &Span<T>, out: &mut [T]) -> Result<(), SpanError> {
     span.check_output(out)?;
     let n = span.n as usize;

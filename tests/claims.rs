@@ -42,7 +42,11 @@ fn two_pow(e: i32) -> Q {
 fn eq_2_p_is_linear() {
     for_all_spans(CASES, |_, s| {
         for i in 0..=s.n {
-            eq(&format!("N({i})·L vs A·i + B"), &s.normal_at(i).dot(&s.l), &s.p_at(i))?;
+            eq(
+                &format!("N({i})·L vs A·i + B"),
+                &s.normal_at(i).dot(&s.l),
+                &s.p_at(i),
+            )?;
         }
         let x = q(1, 3);
         let nx = s.na.add(&s.k.scale(&x));
@@ -55,7 +59,11 @@ fn eq_3_q_is_quadratic() {
     for_all_spans(CASES, |_, s| {
         for i in 0..=s.n {
             let ni = s.normal_at(i);
-            eq(&format!("N({i})·N({i}) vs q({i})"), &ni.length_squared(), &s.q_at(i))?;
+            eq(
+                &format!("N({i})·N({i}) vs q({i})"),
+                &ni.length_squared(),
+                &s.q_at(i),
+            )?;
         }
         let x = q(-5, 7);
         let nx = s.na.add(&s.k.scale(&x));
@@ -94,7 +102,11 @@ fn eq_5_7_duff_recurrence_exact() {
         let mut r = Recurrence::new(s);
         for i in 0..=s.n {
             let x = qi(i);
-            eq(&format!("p_{i}"), &r.p, &(s.a.clone() * x.clone() + s.b.clone()))?;
+            eq(
+                &format!("p_{i}"),
+                &r.p,
+                &(s.a.clone() * x.clone() + s.b.clone()),
+            )?;
             eq(&format!("q_{i}"), &r.q, &s.q_at(i))?;
             let dq = s.c.clone() * (qi(2 * i) + Q::one()) + s.d.clone();
             eq(&format!("dq_{i}"), &r.dq, &dq)?;
@@ -107,7 +119,11 @@ fn eq_5_7_duff_recurrence_exact() {
 #[test]
 fn eq_7_duff_dq0_and_d2q() {
     for_all_spans(CASES, |_, s| {
-        eq("q(1) − q(0)", &(s.q_at(1) - s.q_at(0)), &(s.c.clone() + s.d.clone()))?;
+        eq(
+            "q(1) − q(0)",
+            &(s.q_at(1) - s.q_at(0)),
+            &(s.c.clone() + s.d.clone()),
+        )?;
         for i in 0..s.n.saturating_sub(1) {
             let second = s.q_at(i + 2) - s.q_at(i + 1) * q(2, 1) + s.q_at(i);
             eq(&format!("Δ²q at {i}"), &second, &(s.c.clone() * q(2, 1)))?;
@@ -217,7 +233,11 @@ fn eq_13_slope_closed_form() {
         let v = values(Method::Euler, s);
         for i in 0..s.n as usize {
             let si = s.di_a.clone() + qi(i as u32) * s.ds.clone();
-            eq(&format!("p_{} − p_{i}", i + 1), &(v[i + 1].clone() - v[i].clone()), &si)?;
+            eq(
+                &format!("p_{} − p_{i}", i + 1),
+                &(v[i + 1].clone() - v[i].clone()),
+                &si,
+            )?;
         }
         Ok(())
     });
@@ -246,7 +266,11 @@ fn eq_14_arithmetic_series() {
             sum = sum + qi(j) * s.ds.clone();
         }
         let n = qi(s.n);
-        eq("Σ j·ds", &sum, &((n.clone() * n.clone() - n) / q(2, 1) * s.ds.clone()))
+        eq(
+            "Σ j·ds",
+            &sum,
+            &((n.clone() * n.clone() - n) / q(2, 1) * s.ds.clone()),
+        )
     });
 }
 
@@ -297,7 +321,9 @@ fn eq_16_17_corrected_is_euler_minus_linear_error() {
 
 #[test]
 fn eq_17_corrected_euler_starts_at_pa() {
-    for_all_spans(CASES, |_, s| eq("p_0", &values(Method::CorrectedEuler, s)[0], &s.p_a));
+    for_all_spans(CASES, |_, s| {
+        eq("p_0", &values(Method::CorrectedEuler, s)[0], &s.p_a)
+    });
 }
 
 #[test]
@@ -338,7 +364,9 @@ fn eq_20_n_k2_is_2k_nb() {
 
 #[test]
 fn eq_21_dqb_is_2k_nb() {
-    for_all_spans(CASES, |_, s| eq("dq_b", &s.dq_b, &(q(2, 1) * s.k.dot(&s.nb))));
+    for_all_spans(CASES, |_, s| {
+        eq("dq_b", &s.dq_b, &(q(2, 1) * s.k.dot(&s.nb)))
+    });
 }
 
 #[test]
@@ -360,7 +388,11 @@ fn eq_11_ds_closed_form() {
 fn sec_4_q_is_symmetric() {
     for_all_spans(CASES, |_, s| {
         for i in 0..=s.n {
-            eq(&format!("q({i}) vs q(n − {i})"), &s.q_at(i), &s.q_at(s.n - i))?;
+            eq(
+                &format!("q({i}) vs q(n − {i})"),
+                &s.q_at(i),
+                &s.q_at(s.n - i),
+            )?;
         }
         let qx = |x: Q| (s.c.clone() * x.clone() + s.d.clone()) * x + s.e.clone();
         let x = q(1, 7);
@@ -373,9 +405,17 @@ fn sec_4_dq_zero_at_middle() {
     for_all_spans(CASES, |_, s| {
         let n = qi(s.n);
         let two = q(2, 1);
-        eq("q'(n/2)", &(two.clone() * s.c.clone() * n.clone() / two.clone() + s.d.clone()), &Q::zero())?;
+        eq(
+            "q'(n/2)",
+            &(two.clone() * s.c.clone() * n.clone() / two.clone() + s.d.clone()),
+            &Q::zero(),
+        )?;
         let mid = (n - Q::one()) / two.clone();
-        eq("dq at (n−1)/2", &(s.c.clone() * (two * mid + Q::one()) + s.d.clone()), &Q::zero())
+        eq(
+            "dq at (n−1)/2",
+            &(s.c.clone() * (two * mid + Q::one()) + s.d.clone()),
+            &Q::zero(),
+        )
     });
 }
 
@@ -387,7 +427,8 @@ fn sec_4_q_minimum_at_middle() {
         let qmid = qx(half.clone());
         for i in 0..=s.n {
             let x = qi(i);
-            let vertex = qmid.clone() + s.c.clone() * (x.clone() - half.clone()) * (x - half.clone());
+            let vertex =
+                qmid.clone() + s.c.clone() * (x.clone() - half.clone()) * (x - half.clone());
             eq(&format!("q({i}) vertex form"), &s.q_at(i), &vertex)?;
             ensure(qmid <= s.q_at(i), || format!("q(n/2) > q({i})"))?;
         }
@@ -405,7 +446,11 @@ fn sec_4_duff_q_is_symmetric() {
             r.step();
         }
         for i in 0..=s.n as usize {
-            eq(&format!("Duff q_{i} vs q_(n−{i})"), &qs[i], &qs[s.n as usize - i])?;
+            eq(
+                &format!("Duff q_{i} vs q_(n−{i})"),
+                &qs[i],
+                &qs[s.n as usize - i],
+            )?;
         }
         Ok(())
     });
@@ -441,7 +486,9 @@ fn eq_23_truncated_step_is_ceil_half() {
     for_all_spans(CASES, |_, s| {
         let d = adaptive::decide(s, &Q::one());
         match d.step {
-            Some(step) => ensure(step == s.n.div_ceil(2), || format!("step {step} for n = {}", s.n)),
+            Some(step) => ensure(step == s.n.div_ceil(2), || {
+                format!("step {step} for n = {}", s.n)
+            }),
             None => ensure(s.ds.is_zero(), || "step is None but ds ≠ 0".into()),
         }
     });
@@ -454,7 +501,11 @@ fn eq_24_gouraud_minus_corrected_euler() {
         let c = values(Method::CorrectedEuler, s);
         for i in 0..=s.n {
             let want = s.ds.clone() / q(2, 1) * qi(i) * (qi(s.n) - qi(i));
-            eq(&format!("G − CE at {i}"), &(g[i as usize].clone() - c[i as usize].clone()), &want)?;
+            eq(
+                &format!("G − CE at {i}"),
+                &(g[i as usize].clone() - c[i as usize].clone()),
+                &want,
+            )?;
         }
         Ok(())
     });
@@ -510,7 +561,12 @@ fn eq_24_delta_test_fails_on_concrete_span() {
     .unwrap();
     assert_eq!(s.nb.y, q(8, 17));
     let d = adaptive::decide(&s, &Q::one());
-    assert_eq!(d.choice, Choice::Gouraud, "|δ·255| = {}", d.delta.clone() * q(255, 1));
+    assert_eq!(
+        d.choice,
+        Choice::Gouraud,
+        "|δ·255| = {}",
+        d.delta.clone() * q(255, 1)
+    );
     assert_eq!((d.delta.clone() * q(255, 1)).abs(), q(36465, 57800));
     let g = values(Method::Gouraud, &s);
     let c = values(Method::CorrectedEuler, &s);
@@ -549,7 +605,13 @@ fn eq_24_large_delta_implies_different_levels() {
 // ---- the second source: angles are not linear -------------------------------------
 
 fn mortensen_span() -> Span<Q> {
-    Span::new(Stereo(1, 0, 3).unit(), Stereo(-1, 0, 3).unit(), Stereo(0, 0, 1).unit(), 2).unwrap()
+    Span::new(
+        Stereo(1, 0, 3).unit(),
+        Stereo(-1, 0, 3).unit(),
+        Stereo(0, 0, 1).unit(),
+        2,
+    )
+    .unwrap()
 }
 
 #[test]
@@ -559,7 +621,11 @@ fn mortensen_equal_angles_counterexample() {
     let tol = two_pow(-250);
     let ang = values(Method::Angular, &s);
     for a in &ang {
-        assert!((a.clone() - q(4, 5)).abs() < tol, "angular value {} ≠ 4/5", a.to_f64());
+        assert!(
+            (a.clone() - q(4, 5)).abs() < tol,
+            "angular value {} ≠ 4/5",
+            a.to_f64()
+        );
     }
     let phong = values(Method::Phong, &s);
     assert_eq!(phong[1], Q::one());
@@ -579,8 +645,13 @@ fn mortensen_angle_not_linear() {
 #[test]
 fn mortensen_unequal_angles_counterexample() {
     // Na = L = (0, 0, 1), Nb = (1, 0, 0), n = 3.
-    let s = Span::new(Stereo(0, 0, 1).unit(), Stereo(1, 0, 1).unit(), Stereo(0, 0, 1).unit(), 3)
-        .unwrap();
+    let s = Span::new(
+        Stereo(0, 0, 1).unit(),
+        Stereo(1, 0, 1).unit(),
+        Stereo(0, 0, 1).unit(),
+        3,
+    )
+    .unwrap();
     let ang = values(Method::Angular, &s);
     let phong = values(Method::Phong, &s);
     let tol = two_pow(-250);

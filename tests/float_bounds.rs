@@ -110,8 +110,17 @@ fn check_claims<T: Real>() {
         // eq. 17: corrected Euler ends at p_b within the corrected-Euler bound.
         let ce = Method::CorrectedEuler.values(&s).unwrap();
         let b = bound(Method::CorrectedEuler, s.n, 1.0, u);
-        assert!((f(&ce[s.n as usize]) - f(&s.p_b)).abs() <= b, "eq. 17 end: {}", ctx());
-        assert_eq!(f(&ce[0]), f(&s.p_a), "eq. 17 start is exact in floats: {}", ctx());
+        assert!(
+            (f(&ce[s.n as usize]) - f(&s.p_b)).abs() <= b,
+            "eq. 17 end: {}",
+            ctx()
+        );
+        assert_eq!(
+            f(&ce[0]),
+            f(&s.p_a),
+            "eq. 17 start is exact in floats: {}",
+            ctx()
+        );
 
         // eq. 14: Euler's last value vs the closed form, both in T.
         let eu = Method::Euler.values(&s).unwrap();
@@ -140,9 +149,17 @@ fn check_claims<T: Real>() {
         let b_sym = bound(Method::SymmetricPhong, s.n, qm, u) + bound(Method::Phong, s.n, qm, u);
         for i in 0..=s.n {
             let (a, z) = (f(&s.q_at(i)), f(&s.q_at(s.n - i)));
-            assert!((a - z).abs() <= 16.0 * u * (1.0 + n * n * f(&s.c)), "§4 q at {i}: {}", ctx());
+            assert!(
+                (a - z).abs() <= 16.0 * u * (1.0 + n * n * f(&s.c)),
+                "§4 q at {i}: {}",
+                ctx()
+            );
             let (x, y) = (f(&sym[i as usize]), f(&ph[i as usize]));
-            assert!((x - y).abs() <= b_sym, "§4 symmetric Phong at {i}: {x} vs {y}: {}", ctx());
+            assert!(
+                (x - y).abs() <= b_sym,
+                "§4 symmetric Phong at {i}: {x} vs {y}: {}",
+                ctx()
+            );
         }
 
         // eq. 23: m = (n − 1)/2 up to rounding. ε = p_n − p_b is computed from terms
@@ -186,13 +203,19 @@ fn bounds_are_tight_enough_to_fail() {
     // level at n = 4096: that is a property of the method, see the tolerance docs.)
     for m in Method::ALL {
         let b = bound(m, 4096, 0.5, f32::EPSILON as f64 / 2.0);
-        let limit = if matches!(m, Method::AngularTable(_)) { 0.0062 + 1.0 / 255.0 } else { 1.0 / 255.0 };
+        let limit = if matches!(m, Method::AngularTable(_)) {
+            0.0062 + 1.0 / 255.0
+        } else {
+            1.0 / 255.0
+        };
         assert!(b < limit, "{m}: bound {b} at n = 4096 in f32");
     }
     // And the float run of a span is close to the exact run in relative terms.
     let c = &edge_cases()[0];
     let s = c.span().unwrap();
-    let v32 = Method::CorrectedEuler.values(&s.cast::<f32>().unwrap()).unwrap();
+    let v32 = Method::CorrectedEuler
+        .values(&s.cast::<f32>().unwrap())
+        .unwrap();
     let vq = Method::CorrectedEuler.values(&s).unwrap();
     assert_relative_eq!(v32[1] as f64, vq[1].to_f64(), max_relative = 1e-6);
 }

@@ -185,6 +185,9 @@ mod tests {
         });
         assert_eq!(precision(), DEFAULT_PRECISION);
         let h = Mpfr::from_rational(&BigRational::new(1.into(), 2.into()));
-        assert_eq!(h.to_rational().unwrap(), BigRational::new(1.into(), 2.into()));
+        assert_eq!(
+            h.to_rational().unwrap(),
+            BigRational::new(1.into(), 2.into())
+        );
     }
 }

@@ -192,7 +192,15 @@ mod tests {
 
     #[test]
     fn agrees_with_libm_to_double_precision() {
-        for &(n, d) in &[(0, 1), (1, 7), (1, 2), (-1, 3), (99, 100), (-999, 1000), (3, 5)] {
+        for &(n, d) in &[
+            (0, 1),
+            (1, 7),
+            (1, 2),
+            (-1, 3),
+            (99, 100),
+            (-999, 1000),
+            (3, 5),
+        ] {
             let x = q(n, d);
             let xf = n as f64 / d as f64;
             assert!(close(&acos(&x), xf.acos(), 4e-16), "acos({n}/{d})");

@@ -15,11 +15,7 @@ pub fn unit_from_stereo(u: &BigRational, v: &BigRational) -> Vec3<BigRational> {
     let two = &one + &one;
     let r2 = u * u + v * v;
     let den = &one + &r2;
-    Vec3::new(
-        &two * u / &den,
-        &two * v / &den,
-        (&one - &r2) / &den,
-    )
+    Vec3::new(&two * u / &den, &two * v / &den, (&one - &r2) / &den)
 }
 
 /// [`unit_from_stereo`] with integer parameters over a common denominator:

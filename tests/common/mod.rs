@@ -58,7 +58,10 @@ pub fn arb_case() -> impl Strategy<Value = Case> {
     let far = (arb_stereo(), arb_stereo());
     let near = (arb_stereo(), -3i64..=3, -3i64..=3).prop_map(|(s, da, db)| {
         let d = s.2 * 8;
-        (Stereo(s.0 * 8, s.1 * 8, d), Stereo(s.0 * 8 + da, s.1 * 8 + db, d))
+        (
+            Stereo(s.0 * 8, s.1 * 8, d),
+            Stereo(s.0 * 8 + da, s.1 * 8 + db, d),
+        )
     });
     (prop_oneof![far, near], arb_stereo(), 1u32..=64).prop_map(|((na, nb), l, n)| Case {
         why: "random",
@@ -75,23 +78,89 @@ pub fn edge_cases() -> Vec<Case> {
     let up = Stereo(0, 0, 1); // (0, 0, 1)
     let tilt = Stereo(1, 0, 3); // (3/5, 0, 4/5)
     let tilt_back = Stereo(-1, 0, 3); // (−3/5, 0, 4/5)
-    // tan(85°) ≈ 11.430: (2u, 0, 1 − u²)/(1 + u²) is 170.0° from (0, 0, 1).
+                                      // tan(85°) ≈ 11.430: (2u, 0, 1 − u²)/(1 + u²) is 170.0° from (0, 0, 1).
     let far = Stereo(11430, 0, 1000);
     let side = Stereo(1, 0, 1); // (1, 0, 0)
     let light_oblique = Stereo(2, 1, 5);
     let mut v = vec![
-        Case { why: "n = 1", na: up, nb: tilt, l: light_oblique, n: 1 },
-        Case { why: "n = 2, equal edge angles", na: tilt, nb: tilt_back, l: up, n: 2 },
-        Case { why: "Na = Nb", na: tilt, nb: tilt, l: light_oblique, n: 7 },
-        Case { why: "normals 170° apart", na: up, nb: far, l: light_oblique, n: 33 },
-        Case { why: "normals 170° apart, even n", na: up, nb: far, l: up, n: 64 },
-        Case { why: "N·L < 0 on part of the span", na: up, nb: side, l: Stereo(-1, 0, 2), n: 9 },
-        Case { why: "grazing light", na: up, nb: tilt, l: Stereo(999, 0, 1000), n: 12 },
-        Case { why: "light = Na", na: tilt, nb: Stereo(1, 1, 4), l: tilt, n: 5 },
-        Case { why: "n = 4096", na: up, nb: tilt, l: light_oblique, n: 4096 },
-        Case { why: "n = 4096, 170° apart", na: up, nb: far, l: light_oblique, n: 4096 },
+        Case {
+            why: "n = 1",
+            na: up,
+            nb: tilt,
+            l: light_oblique,
+            n: 1,
+        },
+        Case {
+            why: "n = 2, equal edge angles",
+            na: tilt,
+            nb: tilt_back,
+            l: up,
+            n: 2,
+        },
+        Case {
+            why: "Na = Nb",
+            na: tilt,
+            nb: tilt,
+            l: light_oblique,
+            n: 7,
+        },
+        Case {
+            why: "normals 170° apart",
+            na: up,
+            nb: far,
+            l: light_oblique,
+            n: 33,
+        },
+        Case {
+            why: "normals 170° apart, even n",
+            na: up,
+            nb: far,
+            l: up,
+            n: 64,
+        },
+        Case {
+            why: "N·L < 0 on part of the span",
+            na: up,
+            nb: side,
+            l: Stereo(-1, 0, 2),
+            n: 9,
+        },
+        Case {
+            why: "grazing light",
+            na: up,
+            nb: tilt,
+            l: Stereo(999, 0, 1000),
+            n: 12,
+        },
+        Case {
+            why: "light = Na",
+            na: tilt,
+            nb: Stereo(1, 1, 4),
+            l: tilt,
+            n: 5,
+        },
+        Case {
+            why: "n = 4096",
+            na: up,
+            nb: tilt,
+            l: light_oblique,
+            n: 4096,
+        },
+        Case {
+            why: "n = 4096, 170° apart",
+            na: up,
+            nb: far,
+            l: light_oblique,
+            n: 4096,
+        },
     ];
-    v.push(Case { why: "90° apart, light between", na: up, nb: side, l: Stereo(1, 0, 2), n: 16 });
+    v.push(Case {
+        why: "90° apart, light between",
+        na: up,
+        nb: side,
+        l: Stereo(1, 0, 2),
+        n: 16,
+    });
     v
 }
 

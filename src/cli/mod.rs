@@ -1,0 +1,70 @@
+//! Sub-commands of the CLI and their shared error type.
+
+pub mod span;
+
+use std::fmt;
+use std::process::ExitCode;
+
+/// A CLI failure: one line naming what was wrong, and the exit code.
+#[derive(Debug)]
+pub struct CliError {
+    /// The message, e.g. `--na: component 2 'x' is not a number …`.
+    pub message: String,
+    /// 2 for bad input, 1 for a failed check.
+    pub code: u8,
+}
+
+impl CliError {
+    /// Bad input (exit code 2) about `arg`.
+    pub fn arg(arg: &str, problem: impl fmt::Display) -> Self {
+        CliError {
+            message: format!("{arg}: {problem}"),
+            code: 2,
+        }
+    }
+
+    /// The exit code.
+    pub fn code(&self) -> u8 {
+        self.code
+    }
+}
+
+impl fmt::Display for CliError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.message)
+    }
+}
+
+/// Prints clap's error as one line (help and version as clap prints them) and exits
+/// with 2 for errors, 0 for help/version.
+pub fn clap_error(e: clap::Error) -> ExitCode {
+    use clap::error::ErrorKind;
+    match e.kind() {
+        ErrorKind::DisplayHelp
+        | ErrorKind::DisplayVersion
+        | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
+            let _ = e.print();
+            if e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
+                ExitCode::from(2)
+            } else {
+                ExitCode::SUCCESS
+            }
+        }
+        _ => {
+            let text = e.render().to_string();
+            let line: Vec<&str> = text
+                .lines()
+                .map(str::trim)
+                .filter(|l| {
+                    !l.is_empty()
+                        && !l.starts_with("Usage:")
+                        && !l.starts_with("For more information")
+                })
+                .collect();
+            let line = line.join(" ");
+            let line = line.strip_prefix("error: ").unwrap_or(&line);
+            eprintln!("phong-approx: {line}");
+            ExitCode::from(2)
+        }
+    }
+}

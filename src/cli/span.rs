@@ -1,0 +1,346 @@
+//! `phong-approx span`: one scan line, one method, one number type.
+
+use super::CliError;
+use clap::Args;
+use phong_approx::adaptive::{self, Decision};
+use phong_approx::angular::CosTable;
+use phong_approx::parse::{parse_rational, parse_vec3};
+use phong_approx::quantize::level;
+use phong_approx::reference::level::phong_level_exact;
+use phong_approx::{BigRational, Input, Method, Real, Span, SpanError, Vec3};
+use serde_json::{json, Value};
+
+/// Arguments of `phong-approx span`.
+#[derive(Args, Debug)]
+pub struct SpanArgs {
+    /// phong, duff, symmetric-phong, gouraud, euler, corrected-euler, adaptive or angular.
+    #[arg(long, value_name = "NAME")]
+    pub method: String,
+    /// Unit normal at the left edge, N_a: three decimals or fractions, e.g. 0.6,0,0.8.
+    #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true)]
+    pub na: String,
+    /// Unit normal at the right edge, N_b.
+    #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true)]
+    pub nb: String,
+    /// Unit light vector L (or half vector H).
+    #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true)]
+    pub light: String,
+    /// Number of steps n ≥ 1; the span has n + 1 pixels.
+    #[arg(long, value_name = "N", allow_hyphen_values = true)]
+    pub steps: String,
+    /// Number type: f32, f64, exact (rationals) or mpfr (needs the `mpfr` feature).
+    #[arg(long, value_name = "TYPE", default_value = "f64")]
+    pub scalar: String,
+    /// Output: json or table.
+    #[arg(long, value_name = "FORMAT", default_value = "json")]
+    pub format: String,
+    /// Normalize N_a, N_b and L first instead of requiring unit vectors (for exact,
+    /// the result is unit to 2^-256, not exactly).
+    #[arg(long)]
+    pub normalize: bool,
+    /// Diffuse coefficient K_d of the adaptive test |δ·255·K_d| < 1 (eq. 24).
+    #[arg(
+        long,
+        value_name = "KD",
+        default_value = "1",
+        allow_hyphen_values = true
+    )]
+    pub kd: String,
+    /// For `angular`: read the cosine from a table of this many entries over 0–90°
+    /// (the second source uses 256) instead of computing it.
+    #[arg(long, value_name = "SIZE")]
+    pub table_size: Option<String>,
+    /// MPFR precision in bits (for --scalar mpfr).
+    #[arg(long, value_name = "BITS", default_value = "256")]
+    pub precision: String,
+    /// Significant digits printed for exact and mpfr values (at least 25 by default).
+    #[arg(long, value_name = "D", default_value = "30")]
+    pub digits: String,
+}
+
+/// Which number type to run in.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum ScalarKind {
+    F32,
+    F64,
+    Exact,
+    Mpfr,
+}
+
+/// The parsed, checked request.
+struct Request {
+    method: Method,
+    na: Vec3<BigRational>,
+    nb: Vec3<BigRational>,
+    l: Vec3<BigRational>,
+    n: u32,
+    kd: BigRational,
+    normalize: bool,
+    digits: usize,
+}
+
+/// What a run produced, formatted.
+struct Outcome {
+    values: Vec<String>,
+    /// For the exact scalar and the methods that use only field operations: each
+    /// value as an exact fraction.
+    fractions: Option<Vec<String>>,
+    levels: Vec<u8>,
+    adaptive: Option<(String, Option<String>, Option<u32>, &'static str)>,
+}
+
+fn parse_u32(arg: &str, s: &str, lo: u32, hi: u32, what: &str) -> Result<u32, CliError> {
+    let v: u64 = s
+        .trim()
+        .parse()
+        .map_err(|_| CliError::arg(arg, format!("'{s}' is not a whole number")))?;
+    if v < u64::from(lo) || v > u64::from(hi) {
+        return Err(CliError::arg(
+            arg,
+            format!("{what} must be between {lo} and {hi} (got {v})"),
+        ));
+    }
+    Ok(v as u32)
+}
+
+fn parse_request(a: &SpanArgs) -> Result<(Request, ScalarKind, bool, u32), CliError> {
+    let mut method: Method = a.method.parse().map_err(|e| CliError::arg("--method", e))?;
+    let scalar = match a.scalar.as_str() {
+        "f32" => ScalarKind::F32,
+        "f64" => ScalarKind::F64,
+        "exact" => ScalarKind::Exact,
+        "mpfr" => ScalarKind::Mpfr,
+        other => {
+            return Err(CliError::arg(
+                "--scalar",
+                format!("unknown scalar '{other}' (expected f32, f64, exact or mpfr)"),
+            ))
+        }
+    };
+    let json = match a.format.as_str() {
+        "json" => true,
+        "table" => false,
+        other => {
+            return Err(CliError::arg(
+                "--format",
+                format!("unknown format '{other}' (expected json or table)"),
+            ))
+        }
+    };
+    let vec = |arg: &str, s: &str| parse_vec3(s).map_err(|e| CliError::arg(arg, e));
+    let na = vec("--na", &a.na)?;
+    let nb = vec("--nb", &a.nb)?;
+    let l = vec("--light", &a.light)?;
+    let n = parse_u32("--steps", &a.steps, 1, 1 << 24, "n")?;
+    let kd = parse_rational(&a.kd).map_err(|e| CliError::arg("--kd", e))?;
+    if let Some(t) = &a.table_size {
+        if method != Method::Angular {
+            return Err(CliError::arg(
+                "--table-size",
+                "only the angular method uses a table",
+            ));
+        }
+        method = Method::AngularTable(parse_u32("--table-size", t, 2, 1 << 24, "the table size")?);
+    }
+    let precision = parse_u32("--precision", &a.precision, 2, 1 << 20, "the precision")?;
+    let digits = parse_u32("--digits", &a.digits, 1, 10_000, "the number of digits")? as usize;
+    if scalar == ScalarKind::Mpfr && !cfg!(feature = "mpfr") {
+        return Err(CliError::arg(
+            "--scalar",
+            "mpfr is not in this build; rebuild with `--features mpfr` (needs m4 and a C compiler), e.g. `cargo run --features mpfr -- span ...`",
+        ));
+    }
+    let req = Request {
+        method,
+        na,
+        nb,
+        l,
+        n,
+        kd,
+        normalize: a.normalize,
+        digits,
+    };
+    Ok((req, scalar, json, precision))
+}
+
+fn span_error(e: SpanError, normalize: bool) -> CliError {
+    let arg = |i: Input| match i {
+        Input::Na => "--na",
+        Input::Nb => "--nb",
+        Input::L => "--light",
+    };
+    match e {
+        SpanError::NonFinite { input, component } => CliError::arg(
+            arg(input),
+            format!("component {} is not finite in this number type", component + 1),
+        ),
+        SpanError::ZeroVector { input } => CliError::arg(arg(input), "the vector is zero"),
+        SpanError::NotUnit {
+            input,
+            length_squared,
+            tolerance,
+        } => CliError::arg(
+            arg(input),
+            format!(
+                "not a unit vector (length² = {length_squared}, allowed |length² − 1| ≤ {tolerance:e}){}",
+                if normalize { "" } else { "; pass --normalize to normalize it" }
+            ),
+        ),
+        SpanError::Opposite => CliError::arg("--nb", "Nb = −Na: the interpolated normal passes through zero"),
+        SpanError::ZeroSteps => CliError::arg("--steps", "n must be at least 1"),
+        SpanError::TooManySteps { max, got } => {
+            CliError::arg("--steps", format!("n must be at most {max} (got {got})"))
+        }
+        other => CliError::arg("span", other),
+    }
+}
+
+/// Runs the request in `T`.
+fn compute<T: Real>(r: &Request) -> Result<(Span<T>, Vec<T>, Option<Decision<T>>), CliError> {
+    let conv = |v: &Vec3<BigRational>| v.cast::<T>().expect("rationals are finite");
+    let (na, nb, l) = (conv(&r.na), conv(&r.nb), conv(&r.l));
+    let span = if r.normalize {
+        Span::normalized(na, nb, l, r.n)
+    } else {
+        Span::new(na, nb, l, r.n)
+    }
+    .map_err(|e| span_error(e, r.normalize))?;
+    let mut out = vec![T::zero(); span.len()];
+    let decision = match r.method {
+        Method::Adaptive => Some(
+            adaptive::shade(&span, &T::from_rational(&r.kd), &mut out)
+                .map_err(|e| CliError::arg("span", e))?,
+        ),
+        Method::AngularTable(size) => {
+            let table = CosTable::new(size).map_err(|e| CliError::arg("--table-size", e))?;
+            phong_approx::angular::shade_table(&span, &table, &mut out)
+                .map_err(|e| CliError::arg("span", e))?;
+            None
+        }
+        m => {
+            m.shade(&span, &mut out)
+                .map_err(|e| CliError::arg("span", e))?;
+            None
+        }
+    };
+    Ok((span, out, decision))
+}
+
+fn outcome<T: Real>(
+    r: &Request,
+    span: &Span<T>,
+    values: &[T],
+    decision: Option<Decision<T>>,
+    levels: Option<Vec<u8>>,
+) -> Outcome {
+    let fmt = |v: &T| v.to_decimal(r.digits);
+    Outcome {
+        values: values.iter().map(fmt).collect(),
+        fractions: None,
+        levels: levels.unwrap_or_else(|| values.iter().map(level).collect()),
+        adaptive: decision.map(|d| {
+            let _ = span;
+            (
+                fmt(&d.delta),
+                d.m.as_ref().map(fmt),
+                d.step,
+                d.choice.name(),
+            )
+        }),
+    }
+}
+
+fn run_typed<T: Real>(r: &Request) -> Result<Outcome, CliError> {
+    let (span, values, decision) = compute::<T>(r)?;
+    Ok(outcome(r, &span, &values, decision, None))
+}
+
+fn run_exact(r: &Request) -> Result<Outcome, CliError> {
+    let (span, values, decision) = compute::<BigRational>(r)?;
+    // Phong-valued methods: decide the exact level of p/√q with rationals only.
+    let levels = match r.method {
+        Method::Phong | Method::Duff | Method::SymmetricPhong if !r.normalize => Some(
+            (0..=span.n)
+                .map(|i| phong_level_exact(&span.p_at(i), &span.q_at(i)).unwrap_or(0))
+                .collect(),
+        ),
+        _ => None,
+    };
+    let mut o = outcome(r, &span, &values, decision, levels);
+    if r.method.is_rational() {
+        o.fractions = Some(values.iter().map(ToString::to_string).collect());
+    }
+    Ok(o)
+}
+
+#[cfg(feature = "mpfr")]
+fn run_mpfr(r: &Request, precision: u32) -> Result<Outcome, CliError> {
+    use phong_approx::reference::mpfr::{with_precision, Mpfr};
+    with_precision(precision, || run_typed::<Mpfr>(r))
+}
+
+#[cfg(not(feature = "mpfr"))]
+fn run_mpfr(_r: &Request, _precision: u32) -> Result<Outcome, CliError> {
+    unreachable!("parse_request rejects mpfr without the feature")
+}
+
+/// Runs `phong-approx span`.
+///
+/// # Errors
+/// A [`CliError`] naming the bad argument (exit code 2).
+pub fn run(a: &SpanArgs) -> Result<(), CliError> {
+    let (r, scalar, json, precision) = parse_request(a)?;
+    let o = match scalar {
+        ScalarKind::F32 => run_typed::<f32>(&r)?,
+        ScalarKind::F64 => run_typed::<f64>(&r)?,
+        ScalarKind::Exact => run_exact(&r)?,
+        ScalarKind::Mpfr => run_mpfr(&r, precision)?,
+    };
+    let scalar_name = match scalar {
+        ScalarKind::F32 => "f32",
+        ScalarKind::F64 => "f64",
+        ScalarKind::Exact => "exact",
+        ScalarKind::Mpfr => "mpfr",
+    };
+    if json {
+        let mut obj = json!({
+            "method": r.method.name(),
+            "scalar": scalar_name,
+            "steps": r.n,
+            "values": o.values,
+            "levels": o.levels,
+        });
+        if let Some(f) = &o.fractions {
+            obj["fractions"] = json!(f);
+        }
+        if let Method::AngularTable(size) = r.method {
+            obj["table_size"] = json!(size);
+        }
+        if scalar == ScalarKind::Mpfr {
+            obj["precision"] = json!(precision);
+        }
+        if let Some((delta, m, step, decision)) = &o.adaptive {
+            obj["delta"] = json!(delta);
+            obj["m"] = m.as_ref().map_or(Value::Null, |m| json!(m));
+            obj["step"] = step.map_or(Value::Null, |s| json!(s));
+            obj["decision"] = json!(decision);
+        }
+        println!(
+            "{}",
+            serde_json::to_string_pretty(&obj).expect("plain JSON")
+        );
+    } else {
+        println!("method {} · scalar {} · n = {}", r.method, scalar_name, r.n);
+        if let Some((delta, m, step, decision)) = &o.adaptive {
+            let m = m.as_deref().unwrap_or("none (ds = 0)");
+            let step = step.map_or("none".to_string(), |s| s.to_string());
+            println!("eq. 23 m = {m} · step = {step} · eq. 24 δ = {delta} · decision: {decision}");
+        }
+        let width = o.values.iter().map(String::len).max().unwrap_or(5).max(5);
+        println!("{:>6}  {:<width$}  level", "i", "value");
+        for (i, (v, l)) in o.values.iter().zip(&o.levels).enumerate() {
+            println!("{i:>6}  {v:<width$}  {l:>5}");
+        }
+    }
+    Ok(())
+}

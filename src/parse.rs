@@ -1,0 +1,169 @@
+//! Reading numbers exactly: decimals (`0.6`, `-1e-3`) and fractions (`2/3`) become
+//! exact rationals, so the exact scalar sees exactly what was typed and the float
+//! scalars get the nearest float to it.
+
+use crate::vector::Vec3;
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use num_traits::Zero;
+use thiserror::Error;
+
+/// Why a number or vector could not be read.
+#[derive(Clone, Debug, PartialEq, Eq, Error)]
+pub enum ParseError {
+    /// Not a decimal or fraction.
+    #[error("'{0}' is not a number (write a decimal like 0.6 or -1e-3, or a fraction like 2/3)")]
+    NotANumber(String),
+    /// A fraction with denominator zero.
+    #[error("'{0}' has a zero denominator")]
+    ZeroDenominator(String),
+    /// An exponent too large to be meant.
+    #[error("'{0}' has an exponent outside ±1000")]
+    ExponentRange(String),
+    /// Not three comma-separated components.
+    #[error("expected three components x,y,z, got {0}")]
+    Arity(usize),
+    /// A component failed to parse.
+    #[error("component {index} {source}")]
+    Component {
+        /// 1-based component index.
+        index: usize,
+        /// What was wrong with it.
+        source: Box<ParseError>,
+    },
+}
+
+/// Parses a decimal (`0.6`, `-1e-3`, `+2.`, `.5E2`) or a fraction of two decimals
+/// (`2/3`, `1/1e3`) exactly.
+///
+/// # Errors
+/// [`ParseError`] for anything else, a zero denominator, or `|exponent| > 1000`
+/// (`inf` and `nan` are not numbers here).
+pub fn parse_rational(s: &str) -> Result<BigRational, ParseError> {
+    let t = s.trim();
+    if let Some((a, b)) = t.split_once('/') {
+        let num = parse_decimal(a.trim()).ok_or_else(|| ParseError::NotANumber(s.to_string()))?;
+        let den = parse_decimal(b.trim()).ok_or_else(|| ParseError::NotANumber(s.to_string()))?;
+        let (num, den) = (num?, den?);
+        if den.is_zero() {
+            return Err(ParseError::ZeroDenominator(s.to_string()));
+        }
+        return Ok(num / den);
+    }
+    parse_decimal(t).ok_or_else(|| ParseError::NotANumber(s.to_string()))?
+}
+
+/// `None` when `t` is not of decimal form; `Some(Err)` for an absurd exponent.
+fn parse_decimal(t: &str) -> Option<Result<BigRational, ParseError>> {
+    let (neg, body) = match t.as_bytes().first()? {
+        b'-' => (true, &t[1..]),
+        b'+' => (false, &t[1..]),
+        _ => (false, t),
+    };
+    let (mant, exp) = match body.find(['e', 'E']) {
+        Some(p) => (&body[..p], Some(&body[p + 1..])),
+        None => (body, None),
+    };
+    let (int, frac) = mant.split_once('.').unwrap_or((mant, ""));
+    if int.is_empty() && frac.is_empty() {
+        return None;
+    }
+    if !int.bytes().chain(frac.bytes()).all(|c| c.is_ascii_digit()) {
+        return None;
+    }
+    let mut e: i64 = match exp {
+        None => 0,
+        Some(x) => {
+            let digits = x.strip_prefix(['+', '-']).unwrap_or(x);
+            if digits.is_empty() || !digits.bytes().all(|c| c.is_ascii_digit()) {
+                return None;
+            }
+            match x.parse::<i64>() {
+                Ok(v) if v.abs() <= 1000 => v,
+                _ => return Some(Err(ParseError::ExponentRange(t.to_string()))),
+            }
+        }
+    };
+    e -= frac.len() as i64;
+    let digits = format!("{int}{frac}");
+    let m: BigInt = digits.parse().ok()?;
+    let ten = BigInt::from(10);
+    let mut v = BigRational::from_integer(m);
+    if e >= 0 {
+        v *= BigRational::from_integer(ten.pow(e as u32));
+    } else {
+        v /= BigRational::from_integer(ten.pow((-e) as u32));
+    }
+    if neg {
+        v = -v;
+    }
+    Some(Ok(v))
+}
+
+/// Parses `x,y,z` into an exact vector.
+///
+/// # Errors
+/// [`ParseError::Arity`] unless there are exactly three components, or
+/// [`ParseError::Component`] naming the first bad one.
+pub fn parse_vec3(s: &str) -> Result<Vec3<BigRational>, ParseError> {
+    let parts: Vec<&str> = s.split(',').collect();
+    if parts.len() != 3 {
+        return Err(ParseError::Arity(if s.trim().is_empty() {
+            0
+        } else {
+            parts.len()
+        }));
+    }
+    let mut c = parts.iter().enumerate().map(|(i, p)| {
+        parse_rational(p).map_err(|e| ParseError::Component {
+            index: i + 1,
+            source: Box::new(e),
+        })
+    });
+    let x = c.next().expect("three")?;
+    let y = c.next().expect("three")?;
+    let z = c.next().expect("three")?;
+    Ok(Vec3::new(x, y, z))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn q(n: i64, d: i64) -> BigRational {
+        BigRational::new(n.into(), d.into())
+    }
+
+    #[test]
+    fn decimals_and_fractions_are_exact() {
+        assert_eq!(parse_rational("0.6").unwrap(), q(3, 5));
+        assert_eq!(parse_rational("-1e-3").unwrap(), q(-1, 1000));
+        assert_eq!(parse_rational("2/3").unwrap(), q(2, 3));
+        assert_eq!(parse_rational(" .5E2 ").unwrap(), q(50, 1));
+        assert_eq!(parse_rational("+2.").unwrap(), q(2, 1));
+        assert_eq!(parse_rational("1/1e3").unwrap(), q(1, 1000));
+        assert_eq!(parse_rational("-0.125/0.5").unwrap(), q(-1, 4));
+    }
+
+    #[test]
+    fn bad_numbers_are_named() {
+        for bad in [
+            "", "abc", "1..2", "nan", "inf", "1e", "e5", "--1", "1/2/3", "0x10", "1,5",
+        ] {
+            assert!(parse_rational(bad).is_err(), "{bad:?} parsed");
+        }
+        assert_eq!(
+            parse_rational("1/0"),
+            Err(ParseError::ZeroDenominator("1/0".into()))
+        );
+        assert!(matches!(
+            parse_rational("1e99999"),
+            Err(ParseError::ExponentRange(_))
+        ));
+        assert_eq!(parse_vec3("1,2"), Err(ParseError::Arity(2)));
+        assert!(matches!(
+            parse_vec3("1,x,2"),
+            Err(ParseError::Component { index: 2, .. })
+        ));
+    }
+}

@@ -1,0 +1,467 @@
+//! `phong-approx span` end to end: output shape, values checked against independent
+//! closed forms computed here in rationals (not by the recurrences under test), and
+//! one clear line with exit code 2 for every kind of bad input.
+
+use num_bigint::BigInt;
+use num_rational::BigRational as Q;
+use num_traits::{One, Signed, ToPrimitive, Zero};
+use serde_json::Value;
+use std::process::Command;
+
+fn bin() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_phong-approx"))
+}
+
+fn q(n: i64, d: i64) -> Q {
+    Q::new(n.into(), d.into())
+}
+
+/// Parses the CLI's decimal strings exactly (they are plain decimals).
+fn dec(s: &str) -> Q {
+    phong_approx::parse::parse_rational(s).expect("decimal")
+}
+
+fn run_json(args: &[&str]) -> Value {
+    let out = bin().args(args).output().unwrap();
+    assert!(
+        out.status.success(),
+        "{args:?} failed: {}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    serde_json::from_slice(&out.stdout).expect("JSON")
+}
+
+fn values(v: &Value) -> Vec<Q> {
+    v["values"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| dec(x.as_str().unwrap()))
+        .collect()
+}
+
+fn levels(v: &Value) -> Vec<u64> {
+    v["levels"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_u64().unwrap())
+        .collect()
+}
+
+/// The span used below: Na = (0, 3/5, 4/5), Nb = (2/7, 3/7, 6/7), L = (2/3, 1/3, 2/3),
+/// all exactly unit.
+const NA: &str = "0,3/5,4/5";
+const NB: &str = "2/7,3/7,6/7";
+const L: &str = "2/3,1/3,2/3";
+
+struct Ref {
+    pa: Q,
+    pb: Q,
+    a: Q,
+    c: Q,
+    d: Q,
+}
+
+/// The set-up written out by hand from the paper's definitions.
+fn reference(n: i64) -> Ref {
+    let na = [q(0, 1), q(3, 5), q(4, 5)];
+    let nb = [q(2, 7), q(3, 7), q(6, 7)];
+    let l = [q(2, 3), q(1, 3), q(2, 3)];
+    let dot = |x: &[Q; 3], y: &[Q; 3]| {
+        x[0].clone() * y[0].clone() + x[1].clone() * y[1].clone() + x[2].clone() * y[2].clone()
+    };
+    let k: [Q; 3] = std::array::from_fn(|j| (nb[j].clone() - na[j].clone()) / q(n, 1));
+    Ref {
+        pa: dot(&na, &l),
+        pb: dot(&nb, &l),
+        a: dot(&k, &l),
+        c: dot(&k, &k),
+        d: q(2, 1) * dot(&k, &na),
+    }
+}
+
+fn span_args<'a>(method: &'a str, steps: &'a str, scalar: &'a str) -> Vec<&'a str> {
+    vec![
+        "span", "--method", method, "--na", NA, "--nb", NB, "--light", L, "--steps", steps,
+        "--scalar", scalar,
+    ]
+}
+
+/// |a − b| ≤ 10^-e.
+fn close(a: &Q, b: &Q, e: u32) -> bool {
+    (a.clone() - b.clone()).abs() <= Q::new(BigInt::one(), BigInt::from(10).pow(e))
+}
+
+#[test]
+fn json_shape() {
+    let v = run_json(&span_args("gouraud", "5", "exact"));
+    assert_eq!(v["method"], "gouraud");
+    assert_eq!(v["scalar"], "exact");
+    assert_eq!(v["steps"], 5);
+    assert_eq!(v["values"].as_array().unwrap().len(), 6);
+    assert_eq!(v["levels"].as_array().unwrap().len(), 6);
+    for s in v["values"].as_array().unwrap() {
+        let digits = s
+            .as_str()
+            .unwrap()
+            .chars()
+            .filter(char::is_ascii_digit)
+            .count();
+        assert!(digits >= 25, "{s} has fewer than 25 digits");
+    }
+}
+
+#[test]
+fn exact_gouraud_euler_and_corrected_euler_match_closed_forms() {
+    let n = 9;
+    let r = reference(n);
+    let ni = q(n, 1);
+    // di_a from eq. 10, ds from the closed form D(p_a + p_b)/(2n).
+    let di_a = r.a.clone() - r.pa.clone() / q(2, 1) * r.d.clone();
+    let ds = r.d.clone() * (r.pa.clone() + r.pb.clone()) / (q(2, 1) * ni.clone());
+    let g = values(&run_json(&span_args("gouraud", "9", "exact")));
+    let e = values(&run_json(&span_args("euler", "9", "exact")));
+    let c = values(&run_json(&span_args("corrected-euler", "9", "exact")));
+    for i in 0..=n {
+        let x = q(i, 1);
+        let gi = r.pa.clone() + x.clone() * (r.pb.clone() - r.pa.clone()) / ni.clone();
+        let ei = r.pa.clone()
+            + x.clone() * di_a.clone()
+            + (x.clone() * x.clone() - x.clone()) / q(2, 1) * ds.clone();
+        let ci = gi.clone() - ds.clone() / q(2, 1) * x.clone() * (ni.clone() - x.clone());
+        assert!(close(&g[i as usize], &gi, 29), "gouraud {i}");
+        assert!(close(&e[i as usize], &ei, 29), "euler {i}");
+        assert!(close(&c[i as usize], &ci, 29), "corrected euler {i}");
+    }
+    // The exact fractions: corrected Euler is p_a and p_b at the edges (eq. 17), and
+    // every value is the closed form exactly.
+    let v = run_json(&span_args("corrected-euler", "9", "exact"));
+    let fr: Vec<Q> = v["fractions"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_str().unwrap().parse::<Q>().unwrap())
+        .collect();
+    assert_eq!(fr[0], r.pa);
+    assert_eq!(fr[n as usize], r.pb);
+    for i in 0..=n {
+        let x = q(i, 1);
+        let gi = r.pa.clone() + x.clone() * (r.pb.clone() - r.pa.clone()) / ni.clone();
+        assert_eq!(
+            fr[i as usize],
+            gi - ds.clone() / q(2, 1) * x.clone() * (ni.clone() - x)
+        );
+    }
+    assert!(run_json(&span_args("phong", "9", "exact"))
+        .get("fractions")
+        .is_none());
+}
+
+#[test]
+fn exact_phong_duff_symmetric_match_p_over_sqrt_q() {
+    let n = 7;
+    let r = reference(n);
+    for method in ["phong", "duff", "symmetric-phong"] {
+        let v = run_json(&span_args(method, "7", "exact"));
+        let vals = values(&v);
+        let lv = levels(&v);
+        for i in 0..=n {
+            let x = q(i, 1);
+            let p = r.a.clone() * x.clone() + r.pa.clone();
+            let qq = (r.c.clone() * x.clone() + r.d.clone()) * x.clone() + Q::one();
+            // The printed value v (30 digits) satisfies (v ∓ 1e-29)² ≶ p²/q, same sign as p.
+            let eps = Q::new(BigInt::one(), BigInt::from(10).pow(29));
+            let target = p.clone() * p.clone() / qq.clone();
+            let val = vals[i as usize].clone();
+            assert_eq!(val.is_negative(), p.is_negative(), "{method} {i} sign");
+            let (lo, hi) = (val.abs() - eps.clone(), val.abs() + eps.clone());
+            assert!(
+                lo.clone() * lo <= target && target <= hi.clone() * hi,
+                "{method} pixel {i}"
+            );
+            // Level: ℓ/255 ≤ p/√q < (ℓ + 1)/255, decided by squares here as well.
+            let l = lv[i as usize] as i64;
+            if p.is_positive() {
+                let lq = q(l, 255);
+                let l1 = q(l + 1, 255);
+                assert!(lq.clone() * lq * qq.clone() <= p.clone() * p.clone() || l == 0);
+                assert!(
+                    l == 255 || p.clone() * p.clone() < l1.clone() * l1 * qq.clone(),
+                    "{method} level {i}"
+                );
+            } else {
+                assert_eq!(l, 0);
+            }
+        }
+    }
+}
+
+#[test]
+fn adaptive_reports_delta_m_and_decision() {
+    // The span of the eq. 24 counterexample: |δ·255| ≈ 0.63 → Gouraud.
+    let v = run_json(&[
+        "span",
+        "--method",
+        "adaptive",
+        "--na",
+        "0,3/5,4/5",
+        "--nb",
+        "0,8/17,15/17",
+        "--light",
+        "0,0,1",
+        "--steps",
+        "2",
+        "--scalar",
+        "exact",
+    ]);
+    assert_eq!(v["decision"], "gouraud");
+    assert_eq!(dec(v["m"].as_str().unwrap()), q(1, 2));
+    assert_eq!(v["step"], 1);
+    // δ = ds/2 · 1 · 1 with ds = D(p_a + p_b)/(2n): D = 2k·Na, k = (Nb − Na)/2.
+    let k = [
+        q(0, 1),
+        (q(8, 17) - q(3, 5)) / q(2, 1),
+        (q(15, 17) - q(4, 5)) / q(2, 1),
+    ];
+    let d = q(2, 1) * (k[1].clone() * q(3, 5) + k[2].clone() * q(4, 5));
+    let ds = d * (q(4, 5) + q(15, 17)) / q(4, 1);
+    assert!(close(
+        &dec(v["delta"].as_str().unwrap()),
+        &(ds / q(2, 1)),
+        29
+    ));
+    // K_d scales the test: with K_d = 2, |δ·255·K_d| > 1 → corrected Euler.
+    let v2 = run_json(&[
+        "span",
+        "--method",
+        "adaptive",
+        "--na",
+        "0,3/5,4/5",
+        "--nb",
+        "0,8/17,15/17",
+        "--light",
+        "0,0,1",
+        "--steps",
+        "2",
+        "--scalar",
+        "exact",
+        "--kd",
+        "2",
+    ]);
+    assert_eq!(v2["decision"], "corrected-euler");
+}
+
+#[test]
+fn every_method_and_float_scalar_answers_close_to_exact() {
+    for method in [
+        "phong",
+        "duff",
+        "symmetric-phong",
+        "gouraud",
+        "euler",
+        "corrected-euler",
+        "adaptive",
+        "angular",
+    ] {
+        let exact = values(&run_json(&span_args(method, "12", "exact")));
+        for (scalar, tol) in [("f32", 1e-5), ("f64", 1e-13)] {
+            let v = values(&run_json(&span_args(method, "12", scalar)));
+            for (a, b) in v.iter().zip(&exact) {
+                let d = (a.clone() - b.clone()).abs().to_f64().unwrap();
+                assert!(d <= tol, "{method} {scalar}: {d}");
+            }
+        }
+    }
+}
+
+#[test]
+fn angular_matches_cosine_of_interpolated_angle() {
+    let n = 6;
+    let r = reference(n);
+    let v = values(&run_json(&span_args("angular", "6", "exact")));
+    let (aa, ab) = (r.pa.to_f64().unwrap().acos(), r.pb.to_f64().unwrap().acos());
+    for i in 0..=n {
+        let want = (aa + (ab - aa) * i as f64 / n as f64).cos();
+        assert!(
+            (v[i as usize].to_f64().unwrap() - want).abs() < 1e-14,
+            "pixel {i}"
+        );
+    }
+    // With the 256-entry table every value is the cosine of a multiple of 90°/255.
+    let t = values(&run_json(&[
+        "span",
+        "--method",
+        "angular",
+        "--na",
+        NA,
+        "--nb",
+        NB,
+        "--light",
+        L,
+        "--steps",
+        "6",
+        "--scalar",
+        "f64",
+        "--table-size",
+        "256",
+    ]));
+    for x in t {
+        let j = x.to_f64().unwrap().acos() / (std::f64::consts::FRAC_PI_2 / 255.0);
+        assert!((j - j.round()).abs() < 1e-6, "{j} is not a table angle");
+    }
+}
+
+#[test]
+fn table_format_lists_pixels() {
+    let out = bin()
+        .args(span_args("corrected-euler", "3", "f64"))
+        .args(["--format", "table"])
+        .output()
+        .unwrap();
+    assert!(out.status.success());
+    let text = String::from_utf8(out.stdout).unwrap();
+    assert!(text.starts_with("method corrected-euler · scalar f64 · n = 3"));
+    assert_eq!(text.lines().count(), 2 + 4);
+}
+
+#[test]
+fn normalize_accepts_non_unit_inputs() {
+    let v = run_json(&[
+        "span",
+        "--method",
+        "phong",
+        "--na",
+        "0,3,4",
+        "--nb",
+        "0,0,2",
+        "--light",
+        "0,0,5",
+        "--steps",
+        "2",
+        "--scalar",
+        "f64",
+        "--normalize",
+    ]);
+    let vals = values(&v);
+    assert!(close(&vals[0], &q(4, 5), 15));
+    assert!(close(&vals[2], &Q::one(), 15));
+}
+
+/// Runs with `extra` replacing the named defaults; expects exit 2 and one stderr line
+/// containing `needle`.
+fn bad(extra: &[(&str, &str)], needle: &str) {
+    let mut args: Vec<(String, String)> = [
+        ("--method", "corrected-euler"),
+        ("--na", NA),
+        ("--nb", NB),
+        ("--light", L),
+        ("--steps", "4"),
+    ]
+    .iter()
+    .map(|(a, b)| (a.to_string(), b.to_string()))
+    .collect();
+    for (k, v) in extra {
+        match args.iter_mut().find(|(a, _)| a == k) {
+            Some(slot) => slot.1 = v.to_string(),
+            None => args.push((k.to_string(), v.to_string())),
+        }
+    }
+    let mut cmd = bin();
+    cmd.arg("span");
+    for (k, v) in &args {
+        cmd.arg(format!("{k}={v}"));
+    }
+    let out = cmd.output().unwrap();
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{extra:?}: {err}");
+    assert_eq!(
+        err.trim_end().lines().count(),
+        1,
+        "{extra:?}: not one line: {err}"
+    );
+    assert!(err.contains(needle), "{extra:?}: '{err}' lacks '{needle}'");
+    assert!(!err.contains("panicked"), "{extra:?}: {err}");
+    assert!(out.stdout.is_empty());
+}
+
+#[test]
+fn bad_input_gets_one_line_and_exit_2() {
+    bad(
+        &[("--na", "0.6,x,0.8")],
+        "--na: component 2 'x' is not a number",
+    );
+    bad(
+        &[("--na", "0.6,0")],
+        "--na: expected three components x,y,z, got 2",
+    );
+    bad(
+        &[("--nb", "1,2,3,4")],
+        "--nb: expected three components x,y,z, got 4",
+    );
+    bad(&[("--light", "0,0,0")], "--light: the vector is zero");
+    bad(&[("--na", "1,1,1")], "--na: not a unit vector");
+    bad(&[("--na", "1,1,1")], "--normalize");
+    bad(&[("--nb", "0,-3/5,-4/5")], "Nb = −Na");
+    bad(&[("--steps", "0")], "--steps: n must be between 1");
+    bad(&[("--steps", "-3")], "--steps: '-3' is not a whole number");
+    bad(
+        &[("--steps", "abc")],
+        "--steps: 'abc' is not a whole number",
+    );
+    bad(
+        &[("--method", "bishop")],
+        "--method: unknown method 'bishop'",
+    );
+    bad(&[("--scalar", "f16")], "--scalar: unknown scalar 'f16'");
+    bad(&[("--format", "xml")], "--format: unknown format 'xml'");
+    bad(
+        &[("--na", "1/0,0,1")],
+        "--na: component 1 '1/0' has a zero denominator",
+    );
+    bad(
+        &[("--na", "nan,0,1")],
+        "--na: component 1 'nan' is not a number",
+    );
+    bad(&[("--na", "1e999999,0,1")], "exponent");
+    bad(&[("--light", "1e300,0,0"), ("--scalar", "f32")], "--light:");
+    bad(&[("--kd", "one")], "--kd:");
+    bad(
+        &[("--table-size", "256")],
+        "--table-size: only the angular method",
+    );
+    bad(
+        &[("--method", "angular"), ("--table-size", "1")],
+        "--table-size: the table size must be between 2",
+    );
+    bad(&[("--precision", "0")], "--precision:");
+    bad(&[("--bogus", "1")], "--bogus");
+    if !cfg!(feature = "mpfr") {
+        bad(&[("--scalar", "mpfr")], "--features mpfr");
+    }
+    // Missing required arguments: clap's message, folded to one line.
+    let out = bin().args(["span", "--method", "phong"]).output().unwrap();
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+    assert!(err.contains("--na"), "{err}");
+}
+
+#[test]
+fn huge_steps_are_refused_not_allocated() {
+    bad(
+        &[("--steps", "99999999999")],
+        "--steps: n must be between 1 and 16777216",
+    );
+}
+
+#[test]
+fn zero_is_printed_plainly() {
+    // N·L = 0 at the left edge.
+    let v = run_json(&[
+        "span", "--method", "gouraud", "--na", "1,0,0", "--nb", "0,0,1", "--light", "0,0,1",
+        "--steps", "2", "--scalar", "exact",
+    ]);
+    assert_eq!(v["values"][0], "0");
+    assert!(Q::zero() < dec(v["values"][1].as_str().unwrap()));
+}

@@ -81,7 +81,7 @@ pub fn decide<T: Scalar>(span: &Span<T>, kd: &T) -> Decision<T> {
     };
     let step = trunc.saturating_add(1).clamp(0, i64::from(span.n)) as u32;
     let delta = delta_at(span, step);
-    let level = (delta.clone() * T::from_i64(255) * kd.clone()).abs();
+    let level = (delta.clone() * T::from_i64(255) * kd.clone()).magnitude();
     let choice = if level < T::one() {
         Choice::Gouraud
     } else {

@@ -60,8 +60,8 @@ pub trait Scalar:
     /// The largest integer ≤ `self`, saturated to the `i64` range.
     fn floor_i64(&self) -> i64;
 
-    /// `|self|`.
-    fn abs(&self) -> Self {
+    /// `|self|` (named so as not to clash with num-traits' `Signed::abs`).
+    fn magnitude(&self) -> Self {
         if *self < Self::zero() {
             -self.clone()
         } else {
@@ -161,8 +161,8 @@ macro_rules! impl_float_scalar {
 
 // Tolerances: 2^-17 (≈ 64 ulp of 1.0) for f32, 2^-40 (≈ 8192 ulp) for f64, so that
 // normals typed as 7 or 13 significant decimals are accepted.
-impl_float_scalar!(f32, "f32", 7.62939453125e-6);
-impl_float_scalar!(f64, "f64", 9.094947017729282e-13);
+impl_float_scalar!(f32, "f32", 1.0 / 131_072.0);
+impl_float_scalar!(f64, "f64", 1.0 / 1_099_511_627_776.0);
 
 /// Rounds an exact rational to the nearest float of type `T`, ties to even.
 ///
@@ -176,7 +176,7 @@ fn nearest_float<T: FloatBits>(x: &BigRational) -> T {
     }
     let mut best = approx;
     let mut best_err = dist(x, best);
-    for cand in [approx.next_down(), approx.next_up()] {
+    for cand in [approx.step_down(), approx.step_up()] {
         if !cand.finite() {
             continue;
         }
@@ -197,8 +197,8 @@ fn dist<T: FloatBits>(x: &BigRational, f: T) -> BigRational {
 trait FloatBits: Copy {
     fn from_f64_lossy(v: f64) -> Self;
     fn finite(self) -> bool;
-    fn next_up(self) -> Self;
-    fn next_down(self) -> Self;
+    fn step_up(self) -> Self;
+    fn step_down(self) -> Self;
     fn is_even(self) -> bool;
     fn exact(self) -> BigRational;
 }
@@ -212,15 +212,15 @@ macro_rules! impl_float_bits {
             fn finite(self) -> bool {
                 self.is_finite()
             }
-            fn next_up(self) -> Self {
+            fn step_up(self) -> Self {
                 if self == 0.0 {
                     return $t::from_bits(1);
                 }
                 let b = self.to_bits();
                 $t::from_bits(if self > 0.0 { b + 1 } else { b - 1 })
             }
-            fn next_down(self) -> Self {
-                -(-self).next_up()
+            fn step_down(self) -> Self {
+                -(-self).step_up()
             }
             fn is_even(self) -> bool {
                 self.to_bits() & 1 == 0

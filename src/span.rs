@@ -117,7 +117,7 @@ fn check_vector<T: Scalar>(v: &Vec3<T>, input: Input, tol: &T) -> Result<(), Spa
             }
         });
     }
-    if (len2.clone() - T::one()).abs() > *tol {
+    if (len2.clone() - T::one()).magnitude() > *tol {
         return Err(SpanError::NotUnit {
             input,
             length_squared: len2.to_f64(),

@@ -263,7 +263,7 @@ fn eq_14_arithmetic_series() {
     for_all_spans(CASES, |_, s| {
         let mut sum = Q::zero();
         for j in 0..s.n {
-            sum = sum + qi(j) * s.ds.clone();
+            sum += qi(j) * s.ds.clone();
         }
         let n = qi(s.n);
         eq(

@@ -195,8 +195,11 @@ fn span_error(e: SpanError, normalize: bool) -> CliError {
     }
 }
 
+/// A run's span, values and (for `adaptive`) decision.
+type Computed<T> = (Span<T>, Vec<T>, Option<Decision<T>>);
+
 /// Runs the request in `T`.
-fn compute<T: Real>(r: &Request) -> Result<(Span<T>, Vec<T>, Option<Decision<T>>), CliError> {
+fn compute<T: Real>(r: &Request) -> Result<Computed<T>, CliError> {
     let conv = |v: &Vec3<BigRational>| v.cast::<T>().expect("rationals are finite");
     let (na, nb, l) = (conv(&r.na), conv(&r.nb), conv(&r.l));
     let span = if r.normalize {
@@ -228,7 +231,6 @@ fn compute<T: Real>(r: &Request) -> Result<(Span<T>, Vec<T>, Option<Decision<T>>
 
 fn outcome<T: Real>(
     r: &Request,
-    span: &Span<T>,
     values: &[T],
     decision: Option<Decision<T>>,
     levels: Option<Vec<u8>>,
@@ -239,7 +241,6 @@ fn outcome<T: Real>(
         fractions: None,
         levels: levels.unwrap_or_else(|| values.iter().map(level).collect()),
         adaptive: decision.map(|d| {
-            let _ = span;
             (
                 fmt(&d.delta),
                 d.m.as_ref().map(fmt),
@@ -251,8 +252,8 @@ fn outcome<T: Real>(
 }
 
 fn run_typed<T: Real>(r: &Request) -> Result<Outcome, CliError> {
-    let (span, values, decision) = compute::<T>(r)?;
-    Ok(outcome(r, &span, &values, decision, None))
+    let (_, values, decision) = compute::<T>(r)?;
+    Ok(outcome(r, &values, decision, None))
 }
 
 fn run_exact(r: &Request) -> Result<Outcome, CliError> {
@@ -266,7 +267,7 @@ fn run_exact(r: &Request) -> Result<Outcome, CliError> {
         ),
         _ => None,
     };
-    let mut o = outcome(r, &span, &values, decision, levels);
+    let mut o = outcome(r, &values, decision, levels);
     if r.method.is_rational() {
         o.fractions = Some(values.iter().map(ToString::to_string).collect());
     }

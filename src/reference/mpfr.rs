@@ -180,7 +180,7 @@ mod tests {
             let m = Mpfr::from_rational(&x);
             assert_eq!(m.0.prec(), 300);
             let back = m.to_rational().unwrap();
-            let err = (back - x.clone()).abs();
+            let err = Signed::abs(&(back - x.clone()));
             assert!(err < BigRational::new(1.into(), BigInt::from(2).pow(295)));
         });
         assert_eq!(precision(), DEFAULT_PRECISION);

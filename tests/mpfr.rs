@@ -1,0 +1,120 @@
+//! The MPFR references (feature `mpfr`): the same generic recurrences at 256 bits
+//! agree with the exact rational run, and the MPFR Phong value gives the exact 8-bit
+//! level decided with rationals.
+#![cfg(feature = "mpfr")]
+
+mod common;
+
+use common::*;
+use num_traits::Signed;
+use phong_approx::quantize::level;
+use phong_approx::reference::level::phong_level_exact;
+use phong_approx::reference::mpfr::{with_precision, Mpfr};
+use phong_approx::{Method, Scalar};
+
+fn close(a: &Mpfr, b: &Q, bits: i32) -> bool {
+    let d = (a.to_rational().unwrap() - b.clone()).abs();
+    d <= Q::new(1.into(), num_bigint::BigInt::from(2).pow(bits as u32))
+}
+
+#[test]
+fn recurrences_in_mpfr_agree_with_exact() {
+    with_precision(256, || {
+        for_all_spans(32, |c, s| {
+            let m = s.cast::<Mpfr>().unwrap();
+            for method in Method::ALL {
+                let got = method.values(&m).unwrap();
+                let want = method.values(s).unwrap();
+                // The table variant may pick a neighbouring entry only at an exact
+                // tie; the others agree to far below 2^-200.
+                for (i, (g, w)) in got.iter().zip(&want).enumerate() {
+                    if !close(g, w, 200) && !matches!(method, Method::AngularTable(_)) {
+                        return Err(format!(
+                            "{method} pixel {i}: {} vs {}",
+                            g.to_f64(),
+                            w.to_f64()
+                        ));
+                    }
+                }
+            }
+            let _ = c;
+            Ok(())
+        });
+    });
+}
+
+#[test]
+fn mpfr_phong_levels_are_the_exact_levels() {
+    with_precision(256, || {
+        for_all_spans(32, |_, s| {
+            let m = s.cast::<Mpfr>().unwrap();
+            let v = Method::Phong.values(&m).unwrap();
+            for i in 0..=s.n {
+                let exact = phong_level_exact(&s.p_at(i), &s.q_at(i)).unwrap();
+                let got = level(&v[i as usize]);
+                // Only a value within 2^-250 of a level boundary could differ; the
+                // exact decision is authoritative and must match otherwise.
+                if got != exact {
+                    return Err(format!("pixel {i}: mpfr level {got}, exact {exact}"));
+                }
+            }
+            Ok(())
+        });
+    });
+}
+
+#[test]
+fn precision_is_respected() {
+    let s = edge_cases()[3].span().unwrap();
+    let lo = with_precision(64, || {
+        Method::Phong.values(&s.cast::<Mpfr>().unwrap()).unwrap()
+    });
+    let hi = with_precision(512, || {
+        Method::Phong.values(&s.cast::<Mpfr>().unwrap()).unwrap()
+    });
+    assert_eq!(lo[5].0.prec(), 64);
+    assert_eq!(hi[5].0.prec(), 512);
+    let exact = Method::Phong.values(&s).unwrap();
+    assert!(close(&hi[5], &exact[5], 250));
+    assert!(
+        !close(&lo[5], &exact[5], 80),
+        "64 bits cannot be 2^-80-accurate here"
+    );
+}
+
+#[test]
+fn cli_mpfr_agrees_with_exact() {
+    let run = |scalar: &str| {
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_phong-approx"))
+            .args([
+                "span",
+                "--method",
+                "phong",
+                "--na",
+                "0,3/5,4/5",
+                "--nb",
+                "2/7,3/7,6/7",
+                "--light",
+                "2/3,1/3,2/3",
+                "--steps",
+                "8",
+                "--scalar",
+                scalar,
+                "--precision",
+                "300",
+            ])
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        serde_json::from_slice::<serde_json::Value>(&out.stdout).unwrap()
+    };
+    let m = run("mpfr");
+    let e = run("exact");
+    assert_eq!(m["precision"], 300);
+    assert_eq!(m["values"], e["values"]);
+    assert_eq!(m["levels"], e["levels"]);
+}

@@ -56,6 +56,7 @@ pub mod method;
 pub mod parse;
 pub mod phong;
 pub mod quantize;
+pub mod raster;
 pub mod reference;
 pub mod scalar;
 pub mod span;

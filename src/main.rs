@@ -1,6 +1,7 @@
 //! The `phong-approx` command line.
 //!
 //! - `phong-approx span`: one scan line by one method in one number type.
+//! - `phong-approx reproduce`: the paper's Tables 1–2 and Figures 1–5.
 //!
 //! Bad input prints one line on stderr naming the argument and the problem and exits
 //! with code 2.
@@ -22,6 +23,8 @@ struct Cli {
 enum Command {
     /// Shade one scan line with one method and print its values and 8-bit levels.
     Span(cli::span::SpanArgs),
+    /// Reproduce the paper's Tables 1–2 and Figures 1–5 on rotating tori.
+    Reproduce(cli::reproduce::ReproduceArgs),
 }
 
 fn main() -> ExitCode {
@@ -31,6 +34,7 @@ fn main() -> ExitCode {
     };
     let result = match cli.command {
         Command::Span(args) => cli::span::run(&args),
+        Command::Reproduce(args) => cli::reproduce::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -1,5 +1,6 @@
 //! Sub-commands of the CLI and their shared error type.
 
+pub mod reproduce;
 pub mod span;
 
 use std::fmt;

@@ -1,0 +1,442 @@
+//! `phong-approx reproduce`: the paper's Tables 1–2 and Figures 1–5, end to end.
+
+use super::CliError;
+use clap::Args;
+use indicatif::{ProgressBar, ProgressStyle};
+use phong_approx::raster::experiment::{Experiment, TorusResult, PAPER_TABLE_1, PAPER_TABLE_2};
+use phong_approx::raster::mesh::NormalMode;
+use phong_approx::raster::pictures::{difference_image, line_plot, save_png, shaded_image, Look};
+use phong_approx::raster::render::{render, Column, RenderOptions, Scene};
+use phong_approx::{Method, Span, Vec3};
+use std::fmt::Write as _;
+use std::fs;
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+
+/// Arguments of `phong-approx reproduce`.
+#[derive(Args, Debug)]
+pub struct ReproduceArgs {
+    /// Frames per torus (the paper: 200).
+    #[arg(
+        long,
+        value_name = "N",
+        default_value = "200",
+        allow_hyphen_values = true
+    )]
+    pub frames: String,
+    /// Output folder for the CSVs and pictures.
+    #[arg(long, value_name = "DIR", default_value = "out")]
+    pub out: PathBuf,
+    /// Image size in pixels.
+    #[arg(long, value_name = "WxH", default_value = "225x225")]
+    pub size: String,
+    /// Major and tube radius of the torus.
+    #[arg(long, value_name = "R,r", default_value = "1,0.4")]
+    pub radii: String,
+    /// Vertex normals: analytic (the torus's own) or averaged (from the faces).
+    #[arg(long, value_name = "MODE", default_value = "analytic")]
+    pub normals: String,
+    /// Frames of the 800-polygon torus also evaluated in exact rationals.
+    #[arg(long, value_name = "K", default_value = "1")]
+    pub exact_frames: String,
+}
+
+fn parse_whole(arg: &str, s: &str, lo: u32, hi: u32) -> Result<u32, CliError> {
+    let v: i64 = s
+        .trim()
+        .parse()
+        .map_err(|_| CliError::arg(arg, format!("'{s}' is not a whole number")))?;
+    if v < i64::from(lo) || v > i64::from(hi) {
+        return Err(CliError::arg(
+            arg,
+            format!("must be between {lo} and {hi} (got {v})"),
+        ));
+    }
+    Ok(v as u32)
+}
+
+fn parse_size(s: &str) -> Result<(u32, u32), CliError> {
+    let bad = || CliError::arg("--size", format!("'{s}' is not WxH, e.g. 200x200"));
+    let (w, h) = s.split_once(['x', 'X']).ok_or_else(bad)?;
+    let w: u32 = w.trim().parse().map_err(|_| bad())?;
+    let h: u32 = h.trim().parse().map_err(|_| bad())?;
+    if !(16..=4096).contains(&w) || !(16..=4096).contains(&h) {
+        return Err(CliError::arg(
+            "--size",
+            format!("{w}x{h} is out of range: width and height must be between 16 and 4096"),
+        ));
+    }
+    Ok((w, h))
+}
+
+fn parse_radii(s: &str) -> Result<(f32, f32), CliError> {
+    let bad = |why: &str| CliError::arg("--radii", format!("'{s}': {why}"));
+    let (a, b) = s
+        .split_once(',')
+        .ok_or_else(|| bad("expected R,r, e.g. 1,0.4"))?;
+    let big: f32 = a.trim().parse().map_err(|_| bad("R is not a number"))?;
+    let small: f32 = b.trim().parse().map_err(|_| bad("r is not a number"))?;
+    if !(big.is_finite() && small.is_finite() && small > 0.0 && big > small) {
+        return Err(bad("need 0 < r < R"));
+    }
+    Ok((big, small))
+}
+
+fn prepare_out(dir: &Path) -> Result<(), CliError> {
+    let name = dir.display().to_string();
+    fs::create_dir_all(dir)
+        .map_err(|e| CliError::arg("--out", format!("cannot create {name}: {e}")))?;
+    let probe = dir.join(".write-test");
+    fs::write(&probe, b"")
+        .map_err(|e| CliError::arg("--out", format!("cannot write in {name}: {e}")))?;
+    let _ = fs::remove_file(probe);
+    Ok(())
+}
+
+fn io_err(path: &Path, e: impl std::fmt::Display) -> CliError {
+    CliError {
+        message: format!("{}: {e}", path.display()),
+        code: 2,
+    }
+}
+
+/// Runs `phong-approx reproduce`.
+///
+/// # Errors
+/// A [`CliError`] naming the bad argument or the file that could not be written.
+pub fn run(a: &ReproduceArgs) -> Result<(), CliError> {
+    let frames = parse_whole("--frames", &a.frames, 1, 100_000)?;
+    let size = parse_size(&a.size)?;
+    let radii = parse_radii(&a.radii)?;
+    let normals = match a.normals.as_str() {
+        "analytic" => NormalMode::Analytic,
+        "averaged" => NormalMode::Averaged,
+        o => {
+            return Err(CliError::arg(
+                "--normals",
+                format!("unknown mode '{o}' (expected analytic or averaged)"),
+            ))
+        }
+    };
+    let exact_frames = parse_whole("--exact-frames", &a.exact_frames, 0, frames)?;
+    prepare_out(&a.out)?;
+    let exp = Experiment {
+        frames,
+        size,
+        radii,
+        normals,
+        exact_frames,
+    };
+    let started = Instant::now();
+    let bar = ProgressBar::new(u64::from(frames) * 4);
+    bar.set_style(
+        ProgressStyle::with_template("{spinner} rendering {pos}/{len} frames [{bar:40}] {elapsed}")
+            .expect("template")
+            .progress_chars("=> "),
+    );
+    let results = exp.run(&|| bar.inc(1));
+    bar.finish_and_clear();
+    let report = report(&exp, &results, started.elapsed().as_secs_f64());
+    print!("{report}");
+    let write = |name: &str, text: &str| {
+        let p = a.out.join(name);
+        fs::write(&p, text).map_err(|e| io_err(&p, e))
+    };
+    write("tables.md", &report)?;
+    write("table1.csv", &table1_csv(&results))?;
+    write("table2.csv", &table2_csv(&results))?;
+    pictures(&exp, &a.out)?;
+    println!(
+        "\nWrote tables.md, table1.csv, table2.csv and the figures to {}",
+        a.out.display()
+    );
+    Ok(())
+}
+
+/// The Markdown report: scene, Table 2 beside the paper's, all methods, Table 1.
+fn report(exp: &Experiment, results: &[TorusResult], secs: f64) -> String {
+    let scene = exp.scene();
+    let mut s = String::new();
+    let px: u64 = results.iter().map(|r| r.stats.pixels).sum();
+    let frames: u64 = results.iter().map(|r| r.stats.frames).sum();
+    let _ = writeln!(
+        s,
+        "# Tables 1 and 2 of Hast, Barrera & Bengtsson, reproduced\n"
+    );
+    let _ = writeln!(
+        s,
+        "Scene: tori R = {}, r = {}, {} normals; {}×{} pixels, orthographic, {:.1} px per unit; light {:?}; K_d = {}; rotation {}°, {}°, {}° per frame about x, y, z; {} frames per torus; {:.0} visible pixels per frame on average; f32 arithmetic; {:.1} s.\n",
+        exp.radii.0,
+        exp.radii.1,
+        match exp.normals {
+            NormalMode::Analytic => "analytic",
+            NormalMode::Averaged => "face-averaged",
+        },
+        scene.width,
+        scene.height,
+        scene.scale,
+        [scene.light.x, scene.light.y, scene.light.z].map(|v| (v * 1e4).round() / 1e4),
+        scene.kd,
+        scene.rates_deg.x,
+        scene.rates_deg.y,
+        scene.rates_deg.z,
+        exp.frames,
+        px as f64 / frames.max(1) as f64,
+        secs
+    );
+    let col = |c: Column| Column::ALL.iter().position(|x| *x == c).expect("column");
+    let g = col(Column::Span(Method::Gouraud));
+    let gv = col(Column::VertexGouraud);
+    let e = col(Column::Span(Method::Euler));
+    let ce = col(Column::Span(Method::CorrectedEuler));
+    let _ = writeln!(
+        s,
+        "## Table 2: deviation from Phong in 8-bit levels (mean / max), ours beside the paper's\n"
+    );
+    let _ = writeln!(s, "| polygons | Gouraud (paper) | Gouraud, span | Gouraud, vertex | Euler (paper) | Euler | Corr. Euler (paper) | Corr. Euler |");
+    let _ = writeln!(s, "|---:|---:|---:|---:|---:|---:|---:|---:|");
+    for (r, p) in results.iter().zip(PAPER_TABLE_2) {
+        let d = &r.stats.deviation;
+        let f = |i: usize| format!("{:.3} / {}", d[i].mean(), d[i].max);
+        let _ = writeln!(
+            s,
+            "| {} | {:.2} / {} | {} | {} | {:.2} / {} | {} | {:.3} / {} | {} |",
+            r.polygons,
+            p.1,
+            p.2,
+            f(g),
+            f(gv),
+            p.3,
+            p.4,
+            f(e),
+            p.5,
+            p.6,
+            f(ce)
+        );
+    }
+    let _ = writeln!(
+        s,
+        "\n## Table 2, every method (mean / max deviation from Phong, 8-bit levels)\n"
+    );
+    let mut head = String::from("| polygons |");
+    let mut rule = String::from("|---:|");
+    for c in Column::ALL.iter().skip(1) {
+        let _ = write!(head, " {} |", c.label());
+        rule.push_str("---:|");
+    }
+    let _ = writeln!(s, "{head}\n{rule}");
+    for r in results {
+        let mut line = format!("| {} |", r.polygons);
+        for d in r.stats.deviation.iter().skip(1) {
+            let _ = write!(line, " {:.3} / {} |", d.mean(), d.max);
+        }
+        let _ = writeln!(s, "{line}");
+    }
+    let _ = writeln!(s, "\n## Table 1: scan lines on which Gouraud gives the same 8-bit levels as corrected Euler\n");
+    let _ = writeln!(s, "| polygons | paper | ours: Gouraud = corr. Euler | δ test (eq. 24) says Gouraud | … but levels differ | δ test says corr. Euler, levels equal | Gouraud = Phong | rows | 1-pixel rows |");
+    let _ = writeln!(s, "|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
+    for (r, p) in results.iter().zip(PAPER_TABLE_1) {
+        let t = &r.stats.rows;
+        let pc = |k: u64| 100.0 * k as f64 / t.rows.max(1) as f64;
+        let _ = writeln!(
+            s,
+            "| {} | {:.1} % | {:.1} % | {:.1} % | {:.2} % | {:.2} % | {:.1} % | {} | {} |",
+            r.polygons,
+            p.1,
+            pc(t.gouraud_eq_corrected),
+            pc(t.predicted_gouraud),
+            pc(t.predicted_gouraud_but_differ),
+            pc(t.predicted_corrected_but_same),
+            pc(t.gouraud_eq_phong),
+            t.rows,
+            t.single_pixel_rows
+        );
+    }
+    if let Some(r) = results.iter().find(|r| r.stats.exact.is_some()) {
+        let x = r.stats.exact.as_ref().expect("checked");
+        let _ = writeln!(
+            s,
+            "\n## Exact mode: the {}-polygon torus, first {} frame(s), every span also in exact rationals\n",
+            r.polygons, exp.exact_frames
+        );
+        let _ = writeln!(s, "| method | span pixels | f32 level ≠ exact level | of which within rounding of a level boundary |");
+        let _ = writeln!(s, "|---|---:|---:|---:|");
+        for (c, col) in Column::ALL.iter().enumerate() {
+            if *col == Column::VertexGouraud || x.mismatches.is_empty() {
+                continue;
+            }
+            let _ = writeln!(
+                s,
+                "| {} | {} | {} | {} |",
+                col.label(),
+                x.pixels,
+                x.mismatches[c],
+                x.explained[c]
+            );
+        }
+    }
+    s
+}
+
+fn table1_csv(results: &[TorusResult]) -> String {
+    let mut s = String::from("polygons,paper_percent,rows,single_pixel_rows,gouraud_eq_corrected,gouraud_eq_phong,predicted_gouraud,predicted_gouraud_but_differ,predicted_corrected_but_same\n");
+    for (r, p) in results.iter().zip(PAPER_TABLE_1) {
+        let t = &r.stats.rows;
+        let _ = writeln!(
+            s,
+            "{},{},{},{},{},{},{},{},{}",
+            r.polygons,
+            p.1,
+            t.rows,
+            t.single_pixel_rows,
+            t.gouraud_eq_corrected,
+            t.gouraud_eq_phong,
+            t.predicted_gouraud,
+            t.predicted_gouraud_but_differ,
+            t.predicted_corrected_but_same
+        );
+    }
+    s
+}
+
+fn table2_csv(results: &[TorusResult]) -> String {
+    let mut s = String::from("polygons,method,pixels,mean_deviation,max_deviation\n");
+    for r in results {
+        for (c, d) in Column::ALL.iter().zip(&r.stats.deviation) {
+            let _ = writeln!(
+                s,
+                "{},{},{},{:.6},{}",
+                r.polygons,
+                c.label(),
+                d.pixels,
+                d.mean(),
+                d.max
+            );
+        }
+    }
+    s
+}
+
+/// Figures 4–5 (the 800-polygon torus by corrected Euler and by Phong, with
+/// highlights), the difference heat maps, and Figures 1–3 (one scan line, normals
+/// 60° apart).
+fn pictures(exp: &Experiment, out: &Path) -> Result<(), CliError> {
+    let big = Experiment {
+        size: (400, 400),
+        ..exp.clone()
+    };
+    let scene = big.scene();
+    let mesh = big.mesh(40, 20);
+    let frame = render(
+        &mesh,
+        &scene,
+        37,
+        RenderOptions {
+            exact: false,
+            specular: true,
+        },
+    );
+    let look = Look::default();
+    let save = |img: &image::RgbImage, name: &str| {
+        let p = out.join(name);
+        save_png(img, &p).map_err(|e| io_err(&p, e))
+    };
+    save(
+        &shaded_image(&frame, Column::Span(Method::CorrectedEuler), look),
+        "fig4_torus800_corrected_euler.png",
+    )?;
+    save(
+        &shaded_image(&frame, Column::Span(Method::Phong), look),
+        "fig5_torus800_phong.png",
+    )?;
+    let diffuse = Look { ks: 0.0, ..look };
+    save(
+        &shaded_image(&frame, Column::Span(Method::Gouraud), diffuse),
+        "torus800_gouraud_diffuse.png",
+    )?;
+    let phong = Column::Span(Method::Phong);
+    save(
+        &difference_image(&frame, Column::Span(Method::CorrectedEuler), phong),
+        "diff_torus800_corrected_euler.png",
+    )?;
+    save(
+        &difference_image(&frame, Column::Span(Method::Gouraud), phong),
+        "diff_torus800_gouraud.png",
+    )?;
+    save(
+        &difference_image(&frame, Column::Span(Method::Euler), phong),
+        "diff_torus800_euler.png",
+    )?;
+    scanline_figures(&scene, out)
+}
+
+/// The span of Figures 1–3: unit normals 60° apart in the x–z plane, the scene's
+/// light, 100 steps.
+pub fn figure_span(scene: &Scene) -> Span<f64> {
+    let a = 30f64.to_radians();
+    let na = Vec3::new(-a.sin(), 0.0, a.cos());
+    let nb = Vec3::new(a.sin(), 0.0, a.cos());
+    let l = Vec3::new(
+        f64::from(scene.light.x),
+        f64::from(scene.light.y),
+        f64::from(scene.light.z),
+    );
+    Span::normalized(na, nb, l, 100).expect("a valid span")
+}
+
+fn scanline_figures(scene: &Scene, out: &Path) -> Result<(), CliError> {
+    let span = figure_span(scene);
+    let phong = Method::Phong.values(&span).expect("span");
+    let curve = |m: Method| -> Vec<f64> {
+        let v = m.values(&span).expect("span");
+        phong.iter().zip(&v).map(|(p, x)| 255.0 * (p - x)).collect()
+    };
+    let figs = [
+        (
+            "fig1_phong_minus_gouraud.svg",
+            "Figure 1: Phong − Gouraud, normals 60° apart",
+            Method::Gouraud,
+            "Phong − Gouraud",
+        ),
+        (
+            "fig2_phong_minus_euler.svg",
+            "Figure 2: Phong − Euler, normals 60° apart",
+            Method::Euler,
+            "Phong − Euler",
+        ),
+        (
+            "fig3_phong_minus_corrected_euler.svg",
+            "Figure 3: Phong − corrected Euler, normals 60° apart",
+            Method::CorrectedEuler,
+            "Phong − corrected Euler",
+        ),
+    ];
+    for (file, title, m, label) in figs {
+        let p = out.join(file);
+        line_plot(&p, title, "difference (8-bit levels)", &[(label, curve(m))])
+            .map_err(|e| io_err(&p, e))?;
+    }
+    let p = out.join("fig0_curves.svg");
+    let as_levels = |v: Vec<f64>| v.into_iter().map(|x| 255.0 * x).collect::<Vec<_>>();
+    line_plot(
+        &p,
+        "One scan line, normals 60° apart",
+        "intensity (8-bit levels)",
+        &[
+            ("Phong", as_levels(phong.clone())),
+            (
+                "Gouraud",
+                as_levels(Method::Gouraud.values(&span).expect("span")),
+            ),
+            (
+                "Euler",
+                as_levels(Method::Euler.values(&span).expect("span")),
+            ),
+            (
+                "corrected Euler",
+                as_levels(Method::CorrectedEuler.values(&span).expect("span")),
+            ),
+        ],
+    )
+    .map_err(|e| io_err(&p, e))
+}

@@ -25,9 +25,9 @@
 //! p_n, ε, dε, t_0, d_p) lives in [`Span`].
 //!
 //! The derivation of every claim, with links to its Coq proof (`proofs/`) and its
-//! property test (`tests/claims.rs`), is in
-//! [`docs/derivations.md`](https://github.com/phong-approx/phong-approx/blob/main/docs/derivations.md);
-//! the places where the sources are wrong or ambiguous are in `docs/errata.md`.
+//! property test (`tests/claims.rs`), is in [`derivations`] (the crate's
+//! `docs/derivations.md`); the places where the sources are wrong or ambiguous are in
+//! [`errata`] (`docs/errata.md`).
 //!
 //! ```
 //! use phong_approx::{reference::unit::unit_from_ints, Method, Span};
@@ -46,6 +46,13 @@
 #![warn(missing_docs)]
 
 pub mod adaptive;
+
+#[doc = include_str!("../docs/derivations.md")]
+pub mod derivations {}
+
+#[doc = include_str!("../docs/errata.md")]
+pub mod errata {}
+
 pub mod angular;
 pub mod corrected_euler;
 pub mod duff;

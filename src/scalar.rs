@@ -3,7 +3,7 @@
 //! Every recurrence of the paper uses only the field operations (+, −, ×, ÷), so it
 //! is written once, bounded by [`Scalar`], and runs unchanged on `f32`, `f64`,
 //! exact rationals ([`BigRational`]) and, with the `mpfr` feature, MPFR floats
-//! ([`crate::reference::mpfr::Mpfr`]). The exact run *is* the reference for the
+//! (`reference::mpfr::Mpfr`). The exact run *is* the reference for the
 //! float run.
 //!
 //! The few methods that need more than a field — the square root of Phong and Duff,

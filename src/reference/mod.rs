@@ -1,6 +1,6 @@
 //! Exact and high-precision references.
 //!
-//! - [`unit`]: exact rational points on the unit sphere, so that the paper's
+//! - [`unit`](mod@unit): exact rational points on the unit sphere, so that the paper's
 //!   identities (which need unit edge normals) can be tested with no tolerance.
 //! - [`level`]: the exact 8-bit level of the Phong value `p/√q`, decided with
 //!   rationals only.

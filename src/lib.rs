@@ -54,6 +54,7 @@ pub mod derivations {}
 pub mod errata {}
 
 pub mod angular;
+pub mod conformance;
 pub mod corrected_euler;
 pub mod duff;
 pub mod error;

@@ -2,6 +2,7 @@
 //!
 //! - `phong-approx span`: one scan line by one method in one number type.
 //! - `phong-approx reproduce`: the paper's Tables 1–2 and Figures 1–5.
+//! - `phong-approx vectors` / `check`: the conformance kit.
 //!
 //! Bad input prints one line on stderr naming the argument and the problem and exits
 //! with code 2.
@@ -25,6 +26,10 @@ enum Command {
     Span(cli::span::SpanArgs),
     /// Reproduce the paper's Tables 1–2 and Figures 1–5 on rotating tori.
     Reproduce(cli::reproduce::ReproduceArgs),
+    /// Write the conformance test vectors (JSON and CSV) from the exact references.
+    Vectors(cli::vectors::VectorsArgs),
+    /// Check an implementation's results against a vector file (exit 0 pass, 1 fail).
+    Check(cli::check::CheckArgs),
 }
 
 fn main() -> ExitCode {
@@ -35,6 +40,8 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::Span(args) => cli::span::run(&args),
         Command::Reproduce(args) => cli::reproduce::run(&args),
+        Command::Vectors(args) => cli::vectors::run(&args),
+        Command::Check(args) => cli::check::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

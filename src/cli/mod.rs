@@ -1,7 +1,9 @@
 //! Sub-commands of the CLI and their shared error type.
 
+pub mod check;
 pub mod reproduce;
 pub mod span;
+pub mod vectors;
 
 use std::fmt;
 use std::process::ExitCode;

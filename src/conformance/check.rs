@@ -1,0 +1,454 @@
+//! Checking an implementation's results against a vector file.
+//!
+//! Results are CSV rows `case,pixel,value` (an optional header `case,pixel,value`,
+//! blank lines and `#` comments allowed), or JSON
+//! `{"cases": [{"id": "...", "values": [v0, v1, …]}]}` with numbers or decimal
+//! strings. Every case of the vector file must be present with every pixel `0..=n`
+//! exactly once.
+
+use super::vectors::{Case, Expected, VectorFile};
+use crate::method::Method;
+use crate::quantize::level;
+use std::collections::HashMap;
+use std::fmt;
+
+/// The largest results file read (bigger ones are refused before reading).
+pub const MAX_RESULTS_BYTES: u64 = 256 << 20;
+
+/// A problem with an input file: the file, the line (0 when not tied to one) and what.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct InputError {
+    /// The file's name as given.
+    pub file: String,
+    /// 1-based line, or 0.
+    pub line: usize,
+    /// What is wrong.
+    pub message: String,
+}
+
+impl fmt::Display for InputError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if self.line > 0 {
+            write!(f, "{}:{}: {}", self.file, self.line, self.message)
+        } else {
+            write!(f, "{}: {}", self.file, self.message)
+        }
+    }
+}
+
+impl std::error::Error for InputError {}
+
+/// How close a result must be.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Tolerance {
+    /// At most this many 8-bit levels from the expected level.
+    Levels(u32),
+    /// At most this far from the expected value.
+    Abs(f64),
+    /// At most this many `f32` ulps (of the expected value) from it.
+    Ulps(f64),
+    /// The crate's documented float bound for the method, case and precision
+    /// (`src/tolerance.rs`): `f32` (u = 2^-24) or `f64` (u = 2^-53).
+    Default {
+        /// The unit roundoff of the implementation's arithmetic.
+        u: f64,
+    },
+}
+
+impl Tolerance {
+    /// Parses `levels=N`, `abs=X` or `ulps=N`.
+    ///
+    /// # Errors
+    /// A message saying what was expected.
+    pub fn parse(s: &str) -> Result<Tolerance, String> {
+        let (k, v) = s
+            .split_once('=')
+            .ok_or_else(|| format!("'{s}' is not levels=N, abs=X or ulps=N"))?;
+        let num: f64 = v
+            .trim()
+            .parse()
+            .map_err(|_| format!("'{v}' is not a number"))?;
+        if !(num.is_finite() && num >= 0.0) {
+            return Err(format!("'{v}' must be a finite number ≥ 0"));
+        }
+        match k.trim() {
+            "levels" if num.fract() == 0.0 && num <= 255.0 => Ok(Tolerance::Levels(num as u32)),
+            "levels" => Err(format!(
+                "levels must be a whole number from 0 to 255 (got {v})"
+            )),
+            "abs" => Ok(Tolerance::Abs(num)),
+            "ulps" => Ok(Tolerance::Ulps(num)),
+            other => Err(format!(
+                "unknown tolerance '{other}' (expected levels, abs or ulps)"
+            )),
+        }
+    }
+}
+
+/// The results read from a file: per case id, the value at each pixel.
+pub type Results = HashMap<String, Vec<f64>>;
+
+fn err(file: &str, line: usize, message: impl Into<String>) -> InputError {
+    InputError {
+        file: file.to_string(),
+        line,
+        message: message.into(),
+    }
+}
+
+/// The number of pixels each case of `vectors` needs, by id.
+fn sizes(vectors: &VectorFile, specular: bool) -> HashMap<&str, usize> {
+    vectors
+        .cases
+        .iter()
+        .filter(|c| !specular || c.specular.is_some())
+        .map(|c| (c.id.as_str(), c.n as usize + 1))
+        .collect()
+}
+
+fn parse_value(file: &str, line: usize, s: &str) -> Result<f64, InputError> {
+    let t = s.trim();
+    let v: f64 = t
+        .parse()
+        .map_err(|_| err(file, line, format!("value '{t}' is not a number")))?;
+    if !v.is_finite() {
+        return Err(err(file, line, format!("value '{t}' is not finite")));
+    }
+    Ok(v)
+}
+
+/// Checks that every needed case and pixel is present.
+fn complete(
+    file: &str,
+    vectors: &VectorFile,
+    specular: bool,
+    got: &HashMap<String, Vec<Option<f64>>>,
+) -> Result<Results, InputError> {
+    let mut out = Results::new();
+    for c in vectors
+        .cases
+        .iter()
+        .filter(|c| !specular || c.specular.is_some())
+    {
+        let Some(v) = got.get(&c.id) else {
+            return Err(err(
+                file,
+                0,
+                format!(
+                    "at end of file: case {} is missing (every case of the vector file is needed)",
+                    c.id
+                ),
+            ));
+        };
+        let mut vals = Vec::with_capacity(v.len());
+        for (i, x) in v.iter().enumerate() {
+            match x {
+                Some(x) => vals.push(*x),
+                None => {
+                    return Err(err(
+                        file,
+                        0,
+                        format!("at end of file: case {} has no value for pixel {i}", c.id),
+                    ))
+                }
+            }
+        }
+        out.insert(c.id.clone(), vals);
+    }
+    Ok(out)
+}
+
+/// Parses CSV results (see the module docs).
+///
+/// # Errors
+/// An [`InputError`] naming the line: a missing or extra column, a non-number, an
+/// unknown case id, a pixel out of range, a duplicate row, an empty file, or (at the
+/// end) a missing case or pixel.
+pub fn parse_results_csv(
+    text: &str,
+    file: &str,
+    vectors: &VectorFile,
+    specular: bool,
+) -> Result<Results, InputError> {
+    let need = sizes(vectors, specular);
+    let mut got: HashMap<String, Vec<Option<f64>>> = HashMap::new();
+    let mut first_line: HashMap<(String, usize), usize> = HashMap::new();
+    let mut rows = 0usize;
+    for (k, raw) in text.lines().enumerate() {
+        let line = k + 1;
+        let t = raw.trim();
+        if t.is_empty() || t.starts_with('#') {
+            continue;
+        }
+        let cols: Vec<&str> = t.split(',').map(str::trim).collect();
+        if rows == 0
+            && cols.first().is_some_and(|c| {
+                c.eq_ignore_ascii_case("case") || c.eq_ignore_ascii_case("case_id")
+            })
+        {
+            if cols.len() != 3 {
+                return Err(err(
+                    file,
+                    line,
+                    format!(
+                        "the header has {} columns, expected case,pixel,value",
+                        cols.len()
+                    ),
+                ));
+            }
+            rows += 1;
+            continue;
+        }
+        rows += 1;
+        if cols.len() != 3 {
+            return Err(err(
+                file,
+                line,
+                format!(
+                    "expected 3 columns (case,pixel,value), found {}",
+                    cols.len()
+                ),
+            ));
+        }
+        let (id, px, val) = (cols[0], cols[1], cols[2]);
+        let Some(&len) = need.get(id) else {
+            return Err(err(file, line, format!("unknown case id '{id}'")));
+        };
+        let pixel: usize = px
+            .parse()
+            .map_err(|_| err(file, line, format!("pixel '{px}' is not a whole number")))?;
+        if pixel >= len {
+            return Err(err(
+                file,
+                line,
+                format!(
+                    "pixel {pixel} is out of range for case {id} (pixels 0..={})",
+                    len - 1
+                ),
+            ));
+        }
+        let v = parse_value(file, line, val)?;
+        if let Some(prev) = first_line.insert((id.to_string(), pixel), line) {
+            return Err(err(
+                file,
+                line,
+                format!("duplicate row for case {id} pixel {pixel} (first at line {prev})"),
+            ));
+        }
+        got.entry(id.to_string()).or_insert_with(|| vec![None; len])[pixel] = Some(v);
+    }
+    if got.is_empty() {
+        return Err(err(file, 1, "the file holds no results"));
+    }
+    complete(file, vectors, specular, &got)
+}
+
+#[derive(serde::Deserialize)]
+struct JsonResults {
+    cases: Vec<JsonCase>,
+}
+
+#[derive(serde::Deserialize)]
+struct JsonCase {
+    id: String,
+    values: Vec<serde_json::Value>,
+}
+
+/// Parses JSON results (see the module docs).
+///
+/// # Errors
+/// An [`InputError`]: malformed JSON (with its line), an unknown or duplicate case id,
+/// a wrong number of values, a non-number, or a missing case.
+pub fn parse_results_json(
+    text: &str,
+    file: &str,
+    vectors: &VectorFile,
+    specular: bool,
+) -> Result<Results, InputError> {
+    if text.trim().is_empty() {
+        return Err(err(file, 1, "the file holds no results"));
+    }
+    let r: JsonResults = serde_json::from_str(text)
+        .map_err(|e| err(file, e.line(), format!("not a results file: {e}")))?;
+    let need = sizes(vectors, specular);
+    let mut got: HashMap<String, Vec<Option<f64>>> = HashMap::new();
+    for (k, c) in r.cases.iter().enumerate() {
+        let at = format!("cases[{k}]");
+        let Some(&len) = need.get(c.id.as_str()) else {
+            return Err(err(file, 0, format!("{at}: unknown case id '{}'", c.id)));
+        };
+        if c.values.len() != len {
+            return Err(err(
+                file,
+                0,
+                format!(
+                    "{at}: case {} needs {len} values, found {}",
+                    c.id,
+                    c.values.len()
+                ),
+            ));
+        }
+        let mut vals = Vec::with_capacity(len);
+        for (i, v) in c.values.iter().enumerate() {
+            let x = match v {
+                serde_json::Value::Number(n) => n.as_f64(),
+                serde_json::Value::String(s) => s.trim().parse::<f64>().ok(),
+                _ => None,
+            }
+            .filter(|x| x.is_finite())
+            .ok_or_else(|| {
+                err(
+                    file,
+                    0,
+                    format!("{at}: value {i} of case {} is not a finite number", c.id),
+                )
+            })?;
+            vals.push(Some(x));
+        }
+        if got.insert(c.id.clone(), vals).is_some() {
+            return Err(err(file, 0, format!("{at}: duplicate case id '{}'", c.id)));
+        }
+    }
+    complete(file, vectors, specular, &got)
+}
+
+/// Parses results by content: JSON when the first non-blank character is `{`.
+///
+/// # Errors
+/// As [`parse_results_csv`] / [`parse_results_json`].
+pub fn parse_results(
+    text: &str,
+    file: &str,
+    vectors: &VectorFile,
+    specular: bool,
+) -> Result<Results, InputError> {
+    if text.trim_start().starts_with('{') {
+        parse_results_json(text, file, vectors, specular)
+    } else {
+        parse_results_csv(text, file, vectors, specular)
+    }
+}
+
+/// The spacing of `f32` numbers at `x` (its ulp).
+pub fn f32_ulp(x: f64) -> f64 {
+    let a = (x.abs() as f32).max(f32::MIN_POSITIVE);
+    let b = f32::from_bits(a.to_bits() + 1);
+    f64::from(b) - f64::from(a)
+}
+
+/// The comparison of one case.
+#[derive(Clone, Debug, PartialEq)]
+pub struct CaseReport {
+    /// Case id.
+    pub id: String,
+    /// Pixels.
+    pub pixels: usize,
+    /// Largest |level − expected level|.
+    pub max_levels: u32,
+    /// Mean |level − expected level|.
+    pub mean_levels: f64,
+    /// Largest |value − expected|.
+    pub max_abs: f64,
+    /// Largest |value − expected| in `f32` ulps of the expected value.
+    pub max_ulps: f64,
+    /// The pixel where the tolerance is exceeded most (relative to it), if any.
+    pub worst_pixel: usize,
+    /// The tolerance applied (as an absolute value, or levels).
+    pub allowed: String,
+    /// Whether every pixel is within the tolerance.
+    pub pass: bool,
+}
+
+/// Compares `results` with the vector file's expectations for `method`.
+///
+/// # Errors
+/// A message when the method is not in the file.
+pub fn check(
+    vectors: &VectorFile,
+    results: &Results,
+    method: Method,
+    method_key: &str,
+    tol: Tolerance,
+    specular: bool,
+) -> Result<Vec<CaseReport>, String> {
+    let mut reports = Vec::new();
+    for c in &vectors.cases {
+        let exp: &Expected = if specular {
+            let Some(sp) = &c.specular else { continue };
+            sp.expected.get(method_key)
+        } else {
+            c.expected.get(method_key)
+        }
+        .ok_or_else(|| format!("the vector file has no method '{method_key}'"))?;
+        let got = &results[&c.id];
+        reports.push(case_report(c, exp, got, method, tol, specular));
+    }
+    Ok(reports)
+}
+
+fn case_report(
+    c: &Case,
+    exp: &Expected,
+    got: &[f64],
+    method: Method,
+    tol: Tolerance,
+    specular: bool,
+) -> CaseReport {
+    let allowed_abs = match tol {
+        Tolerance::Abs(x) => Some(x),
+        Tolerance::Default { u } => {
+            // Specular raises the value to the power s: its error grows by up to s×.
+            let s = if specular {
+                c.specular.as_ref().map_or(1.0, |sp| f64::from(sp.s.max(1)))
+            } else {
+                1.0
+            };
+            Some(crate::tolerance::bound(method, c.n, c.q_min, u) * s)
+        }
+        _ => None,
+    };
+    let (mut max_levels, mut sum_levels, mut max_abs, mut max_ulps) = (0u32, 0u64, 0f64, 0f64);
+    let (mut worst, mut worst_excess, mut pass) = (0usize, f64::NEG_INFINITY, true);
+    for (i, (&g, (ev, &el))) in got
+        .iter()
+        .zip(exp.values.iter().zip(&exp.levels))
+        .enumerate()
+    {
+        let e: f64 = ev.parse().unwrap_or(f64::NAN);
+        let d = (g - e).abs();
+        let dl = u32::from(level(&g).abs_diff(el));
+        let du = d / f32_ulp(e);
+        max_levels = max_levels.max(dl);
+        sum_levels += u64::from(dl);
+        max_abs = max_abs.max(d);
+        max_ulps = max_ulps.max(du);
+        let excess = match tol {
+            Tolerance::Levels(n) => f64::from(dl) - f64::from(n),
+            Tolerance::Ulps(n) => du - n,
+            _ => d - allowed_abs.unwrap_or(0.0),
+        };
+        if excess > 0.0 || d.is_nan() {
+            pass = false;
+        }
+        if excess > worst_excess {
+            worst_excess = excess;
+            worst = i;
+        }
+    }
+    let allowed = match tol {
+        Tolerance::Levels(n) => format!("{n} levels"),
+        Tolerance::Ulps(n) => format!("{n} ulps"),
+        _ => format!("{:.3e}", allowed_abs.unwrap_or(0.0)),
+    };
+    CaseReport {
+        id: c.id.clone(),
+        pixels: got.len(),
+        max_levels,
+        mean_levels: sum_levels as f64 / got.len().max(1) as f64,
+        max_abs,
+        max_ulps,
+        worst_pixel: worst,
+        allowed,
+        pass,
+    }
+}

@@ -1,0 +1,547 @@
+//! Test vectors: scan-line cases with exact inputs and the exact expected values of
+//! every method, for other implementations to test against.
+
+use crate::adaptive;
+use crate::method::Method;
+use crate::quantize::level;
+use crate::reference::level::phong_level_exact;
+use crate::reference::unit::unit_from_stereo;
+use crate::scalar::Scalar;
+use crate::span::Span;
+use crate::specular::power;
+use crate::vector::Vec3;
+use num_bigint::BigInt;
+use num_rational::BigRational;
+use serde::{Deserialize, Serialize};
+
+/// Version of the vector format (semantic: a major change breaks readers).
+pub const FORMAT_VERSION: &str = "1.0.0";
+
+/// Significant digits of the expected values.
+pub const DIGITS: usize = 30;
+
+/// The methods every case carries expected values for.
+pub const METHODS: [Method; 9] = Method::ALL;
+
+/// The name of a method in the vector files (`angular-table256` for the tabled one).
+pub fn method_key(m: Method) -> String {
+    match m {
+        Method::AngularTable(n) => format!("angular-table{n}"),
+        m => m.name().to_string(),
+    }
+}
+
+/// A vector as exact fractions and as the nearest `f32` and `f64`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct VectorInput {
+    /// Exact components as fractions, e.g. `"3/5"`.
+    pub exact: [String; 3],
+    /// Nearest `f32` to each component (shortest round-trip decimal).
+    pub f32: [String; 3],
+    /// Nearest `f64` to each component.
+    pub f64: [String; 3],
+}
+
+/// The expected output of one method on one case.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Expected {
+    /// Values at pixels `0..=n` as decimal strings with [`DIGITS`] significant digits.
+    pub values: Vec<String>,
+    /// The exact 8-bit levels `floor(255·clamp(v, 0, 1))`.
+    pub levels: Vec<u8>,
+}
+
+/// The specular part of a case: a half vector and a shininess.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct SpecularCase {
+    /// The unit half vector `H`.
+    pub h: VectorInput,
+    /// The shininess `s`.
+    pub s: u32,
+    /// Per method: `max(0, method(N·H))^s`.
+    pub expected: std::collections::BTreeMap<String, Expected>,
+}
+
+/// One scan-line case.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Case {
+    /// A stable id, e.g. `edge-007`.
+    pub id: String,
+    /// Why the case is there.
+    pub comment: String,
+    /// `N_a`.
+    pub na: VectorInput,
+    /// `N_b`.
+    pub nb: VectorInput,
+    /// `L`.
+    pub l: VectorInput,
+    /// Steps `n`; the span has `n + 1` pixels.
+    pub n: u32,
+    /// The smallest `q_i` of the span (to scale float tolerances; see
+    /// `src/tolerance.rs`).
+    pub q_min: f64,
+    /// The adaptive test's `δ` (eq. 24) and decision with `K_d = 1`.
+    pub delta: String,
+    /// `"gouraud"` or `"corrected-euler"`.
+    pub decision: String,
+    /// Per method: expected values and levels.
+    pub expected: std::collections::BTreeMap<String, Expected>,
+    /// Specular expectations, for some cases.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub specular: Option<SpecularCase>,
+}
+
+/// A vector file.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct VectorFile {
+    /// [`FORMAT_VERSION`].
+    pub version: String,
+    /// `phong-approx <crate version>`.
+    pub generator: String,
+    /// The set: `typical`, `edge` or `paper`.
+    pub set: String,
+    /// Notes on how the values were computed.
+    pub notes: String,
+    /// The method keys present in every case.
+    pub methods: Vec<String>,
+    /// Number of cases.
+    pub number_of_cases: usize,
+    /// The cases.
+    pub cases: Vec<Case>,
+}
+
+/// The sets there are.
+pub const SETS: [&str; 3] = ["typical", "edge", "paper"];
+
+fn fraction(x: &BigRational) -> String {
+    x.to_string()
+}
+
+fn input(v: &Vec3<BigRational>) -> VectorInput {
+    let c = [&v.x, &v.y, &v.z];
+    VectorInput {
+        exact: c.map(fraction),
+        f32: c.map(|x| format!("{:?}", f32::from_rational(x))),
+        f64: c.map(|x| format!("{:?}", f64::from_rational(x))),
+    }
+}
+
+/// The exact expectations of `method` on `span` (values to [`DIGITS`] digits; levels
+/// decided exactly for the Phong-valued methods).
+fn expected(method: Method, span: &Span<BigRational>) -> Expected {
+    let values = method.values(span).expect("valid span");
+    let levels = match method {
+        Method::Phong | Method::Duff | Method::SymmetricPhong => (0..=span.n)
+            .map(|i| phong_level_exact(&span.p_at(i), &span.q_at(i)).expect("q > 0"))
+            .collect(),
+        _ => values.iter().map(level).collect(),
+    };
+    Expected {
+        values: values.iter().map(|v| v.to_decimal(DIGITS)).collect(),
+        levels,
+    }
+}
+
+/// A case from exact unit inputs.
+fn make_case(
+    id: String,
+    comment: &str,
+    na: Vec3<BigRational>,
+    nb: Vec3<BigRational>,
+    l: Vec3<BigRational>,
+    n: u32,
+    h: Option<(Vec3<BigRational>, u32)>,
+) -> Case {
+    let span =
+        Span::new(na.clone(), nb.clone(), l.clone(), n).expect("vector cases are valid spans");
+    let q_min = (0..=n)
+        .map(|i| span.q_at(i).to_f64())
+        .fold(f64::INFINITY, f64::min);
+    let d = adaptive::decide(&span, &BigRational::from_i64(1));
+    let expected = METHODS
+        .iter()
+        .map(|&m| (method_key(m), self::expected(m, &span)))
+        .collect();
+    let specular = h.map(|(h, s)| {
+        let span_h = Span::new(na.clone(), nb.clone(), h.clone(), n).expect("valid half vector");
+        let expected = METHODS
+            .iter()
+            .map(|&m| {
+                let v: Vec<BigRational> = m
+                    .values(&span_h)
+                    .expect("valid")
+                    .iter()
+                    .map(|x| power(x, s))
+                    .collect();
+                let e = Expected {
+                    values: v.iter().map(|x| x.to_decimal(DIGITS)).collect(),
+                    levels: v.iter().map(level).collect(),
+                };
+                (method_key(m), e)
+            })
+            .collect();
+        SpecularCase {
+            h: input(&h),
+            s,
+            expected,
+        }
+    });
+    Case {
+        id,
+        comment: comment.to_string(),
+        na: input(&na),
+        nb: input(&nb),
+        l: input(&l),
+        n,
+        q_min,
+        delta: d.delta.to_decimal(DIGITS),
+        decision: d.choice.name().to_string(),
+        expected,
+        specular,
+    }
+}
+
+fn q(n: i64, d: i64) -> BigRational {
+    BigRational::new(BigInt::from(n), BigInt::from(d))
+}
+
+fn stereo(a: i64, b: i64, d: i64) -> Vec3<BigRational> {
+    unit_from_stereo(&q(a, d), &q(b, d))
+}
+
+/// The half vector `normalize(L + V)` for `V = (0, 0, 1)`, made exactly unit by
+/// stereographic projection of its direction's rational approximation.
+fn half_vector(l: &Vec3<BigRational>) -> Vec3<BigRational> {
+    // Stereographic parameters of H = (L + V)/|L + V| are (h_x, h_y)/(1 + h_z); round
+    // them to 1/10^6 so that H is an exact rational unit vector close to the true one.
+    let (x, y, z) = (l.x.to_f64(), l.y.to_f64(), l.z.to_f64() + 1.0);
+    let len = (x * x + y * y + z * z).sqrt();
+    let (hx, hy, hz) = (x / len, y / len, z / len);
+    let r = |t: f64| (t / (1.0 + hz) * 1e6).round() as i64;
+    stereo(r(hx), r(hy), 1_000_000)
+}
+
+/// splitmix64: a tiny deterministic generator so the typical set never changes.
+struct Rng(u64);
+
+impl Rng {
+    fn next(&mut self) -> u64 {
+        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = self.0;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        z ^ (z >> 31)
+    }
+    fn range(&mut self, lo: i64, hi: i64) -> i64 {
+        lo + (self.next() % (hi - lo + 1) as u64) as i64
+    }
+}
+
+/// The `typical` set: spans like a torus produces — unit normals a few degrees apart,
+/// a light anywhere in front, 2 to 64 steps.
+fn typical() -> Vec<Case> {
+    let mut rng = Rng(0x5EED_0001);
+    let mut cases = Vec::new();
+    for k in 0..40 {
+        let d = 1000;
+        let (a, b) = (rng.range(-900, 900), rng.range(-900, 900));
+        let (da, db) = (rng.range(-60, 60), rng.range(-60, 60));
+        let na = stereo(a, b, d);
+        let nb = stereo(a + da, b + db, d);
+        let l = stereo(rng.range(-700, 700), rng.range(-700, 700), d);
+        let n = [2u32, 3, 5, 8, 13, 21, 34, 64][k % 8];
+        let h = (k % 4 == 0).then(|| (half_vector(&l), [10u32, 50, 200][k % 3]));
+        let comment = "torus-like span: nearby unit normals, light in front";
+        cases.push(make_case(
+            format!("typical-{:03}", k + 1),
+            comment,
+            na,
+            nb,
+            l,
+            n,
+            h,
+        ));
+    }
+    cases
+}
+
+/// An edge case: comment, `N_a`, `N_b`, `L`, `n`.
+type EdgeCase = (
+    &'static str,
+    Vec3<BigRational>,
+    Vec3<BigRational>,
+    Vec3<BigRational>,
+    u32,
+);
+
+/// The `edge` set: the cases an implementation most often gets wrong.
+fn edge() -> Vec<Case> {
+    let up = stereo(0, 0, 1);
+    let tilt = stereo(1, 0, 3); // (3/5, 0, 4/5)
+    let tilt_back = stereo(-1, 0, 3); // (−3/5, 0, 4/5)
+    let side = stereo(1, 0, 1); // (1, 0, 0)
+    let oblique = stereo(2, 1, 5);
+    let far = stereo(11430, 0, 1000); // 170.0° from +z
+    let list: Vec<EdgeCase> = vec![
+        (
+            "n = 1: only the two exact edge values",
+            up.clone(),
+            tilt.clone(),
+            oblique.clone(),
+            1,
+        ),
+        (
+            "n = 2: one interior pixel",
+            up.clone(),
+            tilt.clone(),
+            oblique.clone(),
+            2,
+        ),
+        (
+            "n = 2, equal edge angles: angular interpolation is constant, Phong is not",
+            tilt.clone(),
+            tilt_back.clone(),
+            up.clone(),
+            2,
+        ),
+        (
+            "Na = Nb: every method is constant and exact",
+            tilt.clone(),
+            tilt.clone(),
+            oblique.clone(),
+            7,
+        ),
+        (
+            "normals 170° apart: q_min ≈ 0.0076, Euler far off",
+            up.clone(),
+            far.clone(),
+            oblique.clone(),
+            33,
+        ),
+        (
+            "normals 170° apart, even n, light on the axis",
+            up.clone(),
+            far.clone(),
+            up.clone(),
+            64,
+        ),
+        (
+            "N·L crosses zero inside the span (negative values, level 0)",
+            up.clone(),
+            side.clone(),
+            stereo(-1, 0, 2),
+            9,
+        ),
+        (
+            "90° apart, light between: N·L ≥ 0 with a maximum inside",
+            up.clone(),
+            side.clone(),
+            stereo(1, 0, 2),
+            16,
+        ),
+        (
+            "grazing light: N·L ≈ 0.001 at one edge",
+            up.clone(),
+            tilt.clone(),
+            stereo(999, 0, 1000),
+            12,
+        ),
+        (
+            "light behind the surface: every level 0, |δ·255| ≥ 1",
+            tilt.clone(),
+            tilt_back.clone(),
+            stereo(0, 0, 1).scale(&q(-1, 1)),
+            2,
+        ),
+        (
+            "the eq. 24 counterexample: |δ·255| < 1 yet levels 214 vs 215",
+            stereo(0, 1, 3),
+            stereo(0, 1, 4),
+            up.clone(),
+            2,
+        ),
+        (
+            "tiny components: Na within 2e-9 of +z",
+            stereo(1, 0, 1_000_000_000),
+            tilt.clone(),
+            oblique.clone(),
+            10,
+        ),
+        (
+            "components near ±1 with huge denominators",
+            stereo(999_999_999, 7, 1_000_000),
+            stereo(999_999_000, -3, 1_000_000),
+            stereo(-5, 1_000_000, 1_000_000),
+            20,
+        ),
+        (
+            "n = 4096: long span, float accumulation",
+            up.clone(),
+            tilt.clone(),
+            oblique.clone(),
+            4096,
+        ),
+        (
+            "n = 4096, normals 170° apart",
+            up.clone(),
+            far.clone(),
+            oblique.clone(),
+            4096,
+        ),
+    ];
+    list.into_iter()
+        .enumerate()
+        .map(|(k, (c, na, nb, l, n))| {
+            make_case(format!("edge-{:03}", k + 1), c, na, nb, l, n, None)
+        })
+        .collect()
+}
+
+/// The `paper` set: the spans behind Figures 1–3 — unit normals 60° apart in the x–z
+/// plane (exact rational approximations, 60.0000° to 10^-4), the reproduction's light,
+/// and the same with specular highlights.
+fn paper() -> Vec<Case> {
+    // tan(15°) = 2 − √3 ≈ 0.267949: stereographic parameters of (∓sin 30°, 0, cos 30°).
+    let na = stereo(-267_949, 0, 1_000_000);
+    let nb = stereo(267_949, 0, 1_000_000);
+    // normalize(−1, 1, 2): stereographic parameters (−0.224745, 0.224745).
+    let l = stereo(-224_745, 224_745, 1_000_000);
+    let l_plane = stereo(-100_000, 0, 1_000_000); // light in the plane of the normals
+    let h = half_vector(&l);
+    vec![
+        make_case(
+            "paper-001".into(),
+            "Figures 1–3: normals 60° apart, 100 steps, the reproduction's light",
+            na.clone(),
+            nb.clone(),
+            l.clone(),
+            100,
+            Some((h.clone(), 30)),
+        ),
+        make_case(
+            "paper-002".into(),
+            "Figures 1–3 with the light in the plane of the normals",
+            na.clone(),
+            nb.clone(),
+            l_plane,
+            100,
+            None,
+        ),
+        make_case(
+            "paper-003".into(),
+            "normals 60° apart, 10 steps",
+            na.clone(),
+            nb.clone(),
+            l.clone(),
+            10,
+            Some((h, 50)),
+        ),
+        make_case(
+            "paper-004".into(),
+            "normals 60° apart, 1000 steps",
+            na,
+            nb,
+            l,
+            1000,
+            None,
+        ),
+    ]
+}
+
+/// Generates the vector file of `set`.
+///
+/// # Errors
+/// The unknown set's name.
+pub fn generate(set: &str) -> Result<VectorFile, String> {
+    let cases = match set {
+        "typical" => typical(),
+        "edge" => edge(),
+        "paper" => paper(),
+        other => {
+            return Err(format!(
+                "unknown set '{other}' (expected typical, edge or paper)"
+            ))
+        }
+    };
+    Ok(VectorFile {
+        version: FORMAT_VERSION.to_string(),
+        generator: format!("phong-approx {}", env!("CARGO_PKG_VERSION")),
+        set: set.to_string(),
+        notes: "Inputs are exact rational unit vectors (inverse stereographic projection). Expected values are computed exactly in rationals; \
+                Phong-valued methods (phong, duff, symmetric-phong) and angular ones use square roots, arc cosines and cosines accurate to 2^-256, \
+                and are printed to 30 significant digits. Levels are floor(255*clamp(v,0,1)), decided exactly (for p/sqrt(q) by comparing squares). \
+                Recurrences are unclamped; specular values are max(0, v)^s."
+            .to_string(),
+        methods: METHODS.iter().map(|&m| method_key(m)).collect(),
+        number_of_cases: cases.len(),
+        cases,
+    })
+}
+
+/// The CSV twin of a vector file: one row per case, method and pixel:
+/// `set,case,method,kind,n,pixel,value,level` (`kind` is `diffuse` or `specular`).
+pub fn to_csv(file: &VectorFile) -> String {
+    let mut s = String::from("set,case,method,kind,n,pixel,value,level\n");
+    for c in &file.cases {
+        let mut emit = |kind: &str, exp: &std::collections::BTreeMap<String, Expected>| {
+            for (m, e) in exp {
+                for (i, (v, l)) in e.values.iter().zip(&e.levels).enumerate() {
+                    s.push_str(&format!(
+                        "{},{},{},{},{},{},{},{}\n",
+                        file.set, c.id, m, kind, c.n, i, v, l
+                    ));
+                }
+            }
+        };
+        emit("diffuse", &c.expected);
+        if let Some(sp) = &c.specular {
+            emit("specular", &sp.expected);
+        }
+    }
+    s
+}
+
+/// The inputs of every case as CSV: `case,n,na_x,na_y,na_z,nb_x,…,l_z,h_x,h_y,h_z,s`
+/// with exact fractions (empty H and s where a case has no specular part).
+pub fn inputs_csv(file: &VectorFile) -> String {
+    let mut s = String::from("case,n,na_x,na_y,na_z,nb_x,nb_y,nb_z,l_x,l_y,l_z,h_x,h_y,h_z,s\n");
+    for c in &file.cases {
+        let (h, sh) = match &c.specular {
+            Some(sp) => (sp.h.exact.join(","), sp.s.to_string()),
+            None => (",,".to_string(), String::new()),
+        };
+        s.push_str(&format!(
+            "{},{},{},{},{},{},{}\n",
+            c.id,
+            c.n,
+            c.na.exact.join(","),
+            c.nb.exact.join(","),
+            c.l.exact.join(","),
+            h,
+            sh
+        ));
+    }
+    s
+}
+
+/// `true` when every value parses and the levels agree with the values (a reader's
+/// sanity check of a file).
+pub fn self_consistent(file: &VectorFile) -> bool {
+    file.cases.iter().all(|c| {
+        c.expected.values().all(|e| {
+            e.values.len() == c.n as usize + 1
+                && e.values
+                    .iter()
+                    .zip(&e.levels)
+                    .all(|(v, &l)| match crate::parse::parse_rational(v) {
+                        Ok(x) => level(&x).abs_diff(l) <= 1,
+                        Err(_) => false,
+                    })
+        })
+    })
+}
+
+/// Real-valued helper for the checker: the value as `f64`.
+pub fn value_f64(s: &str) -> Option<f64> {
+    crate::parse::parse_rational(s).ok().map(|x| x.to_f64())
+}

@@ -1,0 +1,454 @@
+//! The conformance kit: the committed vectors are what the code generates, the
+//! checker passes this crate's own float results and fails wrong ones (naming the
+//! case), and every kind of malformed input gets one line naming file, line and
+//! problem.
+
+use phong_approx::conformance::check::{check, parse_results, Tolerance};
+use phong_approx::conformance::vectors::{
+    generate, inputs_csv, method_key, to_csv, Case, VectorFile, METHODS, SETS,
+};
+use phong_approx::parse::parse_rational;
+use phong_approx::{Method, Real, Scalar, Span, Vec3};
+use std::path::{Path, PathBuf};
+use std::process::Command;
+use std::sync::OnceLock;
+
+fn root() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// The committed files, read once.
+fn committed(set: &str) -> &'static VectorFile {
+    static FILES: OnceLock<Vec<VectorFile>> = OnceLock::new();
+    let files = FILES.get_or_init(|| {
+        SETS.iter()
+            .map(|s| {
+                let text =
+                    std::fs::read_to_string(root().join(format!("vectors/{s}.json"))).unwrap();
+                serde_json::from_str(&text).unwrap()
+            })
+            .collect()
+    });
+    &files[SETS.iter().position(|s| *s == set).unwrap()]
+}
+
+#[test]
+fn committed_vectors_are_what_the_code_generates() {
+    for set in SETS {
+        let file = generate(set).unwrap();
+        let json = serde_json::to_string_pretty(&file).unwrap() + "\n";
+        let read = |ext: &str| {
+            std::fs::read_to_string(root().join(format!("vectors/{set}{ext}"))).unwrap()
+        };
+        assert!(
+            read(".json") == json,
+            "vectors/{set}.json is stale: run `cargo run --release -- vectors --out vectors`"
+        );
+        assert!(read(".csv") == to_csv(&file), "vectors/{set}.csv is stale");
+        assert!(
+            read("-inputs.csv") == inputs_csv(&file),
+            "vectors/{set}-inputs.csv is stale"
+        );
+    }
+}
+
+#[test]
+fn files_follow_the_schema() {
+    let schema: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(root().join("vectors/schema.json")).unwrap())
+            .unwrap();
+    for set in SETS {
+        let v: serde_json::Value = serde_json::from_str(
+            &std::fs::read_to_string(root().join(format!("vectors/{set}.json"))).unwrap(),
+        )
+        .unwrap();
+        check_against(&schema, &v, &schema, set);
+        let f = committed(set);
+        assert_eq!(f.number_of_cases, f.cases.len());
+        let mut ids: Vec<&str> = f.cases.iter().map(|c| c.id.as_str()).collect();
+        ids.sort_unstable();
+        ids.dedup();
+        assert_eq!(ids.len(), f.cases.len(), "{set}: duplicate ids");
+        for c in &f.cases {
+            assert!(!c.comment.is_empty());
+            for e in c.expected.values() {
+                assert_eq!(e.values.len(), c.n as usize + 1, "{}", c.id);
+                for s in &e.values {
+                    let digits = s
+                        .trim_start_matches('-')
+                        .chars()
+                        .take_while(|ch| *ch != 'e')
+                        .filter(char::is_ascii_digit)
+                        .count();
+                    assert!(
+                        s == "0" || digits >= 25,
+                        "{}: '{s}' has {digits} digits",
+                        c.id
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// A small JSON Schema checker for the keywords the committed schema uses: type,
+/// required, properties, items, minItems, maxItems, pattern (prefix form), minimum,
+/// enum, $ref (local), additionalProperties (false or schema).
+fn check_against(
+    node: &serde_json::Value,
+    v: &serde_json::Value,
+    root: &serde_json::Value,
+    at: &str,
+) {
+    use serde_json::Value;
+    if let Some(r) = node.get("$ref").and_then(Value::as_str) {
+        let mut target = root;
+        for part in r.trim_start_matches("#/").split('/') {
+            target = &target[part];
+        }
+        return check_against(target, v, root, at);
+    }
+    if let Some(t) = node.get("type").and_then(Value::as_str) {
+        let ok = match t {
+            "object" => v.is_object(),
+            "array" => v.is_array(),
+            "string" => v.is_string(),
+            "integer" => v.is_u64() || v.is_i64(),
+            "number" => v.is_number(),
+            _ => true,
+        };
+        assert!(ok, "{at}: expected {t}, got {v}");
+    }
+    if let Some(e) = node.get("enum").and_then(Value::as_array) {
+        assert!(e.contains(v), "{at}: {v} not in {e:?}");
+    }
+    if let Some(m) = node.get("minimum").and_then(Value::as_f64) {
+        assert!(v.as_f64().unwrap() >= m, "{at}: {v} < {m}");
+    }
+    if let Some(req) = node.get("required").and_then(Value::as_array) {
+        for k in req {
+            assert!(v.get(k.as_str().unwrap()).is_some(), "{at}: missing {k}");
+        }
+    }
+    if let (Some(props), Some(obj)) = (
+        node.get("properties").and_then(Value::as_object),
+        v.as_object(),
+    ) {
+        for (k, val) in obj {
+            match props.get(k) {
+                Some(p) => check_against(p, val, root, &format!("{at}.{k}")),
+                None => match node.get("additionalProperties") {
+                    Some(Value::Bool(false)) => panic!("{at}: unexpected property {k}"),
+                    Some(s @ Value::Object(_)) => check_against(s, val, root, &format!("{at}.{k}")),
+                    _ => {}
+                },
+            }
+        }
+    } else if let (Some(s @ Value::Object(_)), Some(obj)) =
+        (node.get("additionalProperties"), v.as_object())
+    {
+        for (k, val) in obj {
+            check_against(s, val, root, &format!("{at}.{k}"));
+        }
+    }
+    if let (Some(items), Some(arr)) = (node.get("items"), v.as_array()) {
+        if let Some(n) = node.get("minItems").and_then(Value::as_u64) {
+            assert!(arr.len() as u64 >= n, "{at}: fewer than {n} items");
+        }
+        if let Some(n) = node.get("maxItems").and_then(Value::as_u64) {
+            assert!(arr.len() as u64 <= n, "{at}: more than {n} items");
+        }
+        for (i, x) in arr.iter().enumerate() {
+            check_against(items, x, root, &format!("{at}[{i}]"));
+        }
+    }
+}
+
+fn vec_of<T: Scalar>(v: &[String; 3]) -> Vec3<T> {
+    let c = |s: &String| T::from_rational(&parse_rational(s).unwrap());
+    Vec3::new(c(&v[0]), c(&v[1]), c(&v[2]))
+}
+
+/// This crate's own results for `method` in `T`, from the nearest-`T` inputs of each
+/// case (as another implementation would read them).
+fn own_results<T: Real>(file: &VectorFile, method: Method, specular: bool) -> String {
+    let mut s = String::from("case,pixel,value\n");
+    for c in &file.cases {
+        let l = match (&c.specular, specular) {
+            (Some(sp), true) => &sp.h.exact,
+            (None, true) => continue,
+            _ => &c.l.exact,
+        };
+        let span = Span::new(
+            vec_of::<T>(&c.na.exact),
+            vec_of::<T>(&c.nb.exact),
+            vec_of::<T>(l),
+            c.n,
+        )
+        .unwrap();
+        let mut v = method.values(&span).unwrap();
+        if let (true, Some(sp)) = (specular, &c.specular) {
+            v = v
+                .iter()
+                .map(|x| phong_approx::specular::power(x, sp.s))
+                .collect();
+        }
+        for (i, x) in v.iter().enumerate() {
+            s.push_str(&format!("{},{i},{}\n", c.id, x.to_decimal(9)));
+        }
+    }
+    s
+}
+
+fn passes(file: &VectorFile, method: Method, text: &str, u: f64, specular: bool) -> Vec<String> {
+    let results = parse_results(text, "own", file, specular).unwrap();
+    check(
+        file,
+        &results,
+        method,
+        &method_key(method),
+        Tolerance::Default { u },
+        specular,
+    )
+    .unwrap()
+    .into_iter()
+    .filter(|r| !r.pass)
+    .map(|r| format!("{} max |Δ| {:e} > {}", r.id, r.max_abs, r.allowed))
+    .collect()
+}
+
+#[test]
+fn own_f32_and_f64_results_pass_every_method_and_set() {
+    for set in SETS {
+        let file = committed(set);
+        for m in METHODS {
+            let f32_fails = passes(
+                file,
+                m,
+                &own_results::<f32>(file, m, false),
+                f64::from(f32::EPSILON) / 2.0,
+                false,
+            );
+            assert!(f32_fails.is_empty(), "{set} {m} f32: {f32_fails:?}");
+            let f64_fails = passes(
+                file,
+                m,
+                &own_results::<f64>(file, m, false),
+                f64::EPSILON / 2.0,
+                false,
+            );
+            assert!(f64_fails.is_empty(), "{set} {m} f64: {f64_fails:?}");
+        }
+    }
+}
+
+#[test]
+fn own_specular_results_pass() {
+    for set in ["typical", "paper"] {
+        let file = committed(set);
+        for m in [Method::Phong, Method::CorrectedEuler, Method::Gouraud] {
+            let fails = passes(
+                file,
+                m,
+                &own_results::<f64>(file, m, true),
+                f64::EPSILON / 2.0,
+                true,
+            );
+            assert!(fails.is_empty(), "{set} {m} specular: {fails:?}");
+        }
+    }
+}
+
+fn bin() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_phong-approx"))
+}
+
+fn tmp(name: &str, text: &str) -> PathBuf {
+    let p = std::env::temp_dir().join(format!("phong-approx-conf-{}-{name}", std::process::id()));
+    std::fs::write(&p, text).unwrap();
+    p
+}
+
+fn run_check(vectors: &str, results: &Path, extra: &[&str]) -> (i32, String, String) {
+    let out = bin()
+        .args(["check", "--vectors", vectors, "--results"])
+        .arg(results)
+        .args(extra)
+        .output()
+        .unwrap();
+    (
+        out.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        String::from_utf8_lossy(&out.stderr).into_owned(),
+    )
+}
+
+fn typical_path() -> String {
+    root().join("vectors/typical.json").display().to_string()
+}
+
+#[test]
+fn check_cli_passes_own_results_and_fails_a_perturbed_one() {
+    let file = committed("typical");
+    let good = own_results::<f32>(file, Method::CorrectedEuler, false);
+    let p = tmp("good.csv", &good);
+    let (code, out, err) = run_check(&typical_path(), &p, &[]);
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(out.contains("overall:"), "{out}");
+    // Perturb one value of typical-007 by two levels.
+    let bad: String = good
+        .lines()
+        .map(|l| {
+            if l.starts_with("typical-007,3,") {
+                let v: f64 = l.rsplit(',').next().unwrap().parse().unwrap();
+                format!("typical-007,3,{}\n", v + 2.0 / 255.0)
+            } else {
+                format!("{l}\n")
+            }
+        })
+        .collect();
+    let p = tmp("bad.csv", &bad);
+    let (code, out, err) = run_check(&typical_path(), &p, &[]);
+    assert_eq!(code, 1, "{out}{err}");
+    assert!(err.contains("typical-007"), "{err}");
+    assert!(
+        out.contains("| typical-007 |") && out.contains("FAIL"),
+        "{out}"
+    );
+    assert!(out.contains("worst case typical-007 (pixel 3)"), "{out}");
+    // A levels tolerance of 2 lets it through; 1 does not.
+    assert_eq!(
+        run_check(&typical_path(), &p, &["--tolerance", "levels=2"]).0,
+        0
+    );
+    assert_eq!(
+        run_check(&typical_path(), &p, &["--tolerance", "levels=1"]).0,
+        1
+    );
+    // JSON results of the same values pass too.
+    let mut cases = serde_json::Map::new();
+    for l in good.lines().skip(1) {
+        let f: Vec<&str> = l.split(',').collect();
+        cases
+            .entry(f[0])
+            .or_insert_with(|| serde_json::json!([]))
+            .as_array_mut()
+            .unwrap()
+            .push(serde_json::json!(f[2]));
+    }
+    let json = serde_json::json!({ "cases": cases.into_iter().map(|(id, v)| serde_json::json!({"id": id, "values": v})).collect::<Vec<_>>() });
+    let p = tmp("good.json", &json.to_string());
+    assert_eq!(run_check(&typical_path(), &p, &[]).0, 0);
+}
+
+fn malformed(text: &str, needle: &str) {
+    let p = tmp("m.csv", text);
+    let (code, out, err) = run_check(&typical_path(), &p, &[]);
+    assert_eq!(code, 2, "{needle}: {out}{err}");
+    assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+    assert!(
+        err.contains(&p.display().to_string()),
+        "file not named: {err}"
+    );
+    assert!(err.contains(needle), "'{err}' lacks '{needle}'");
+    assert!(!err.contains("panicked"));
+}
+
+#[test]
+fn malformed_results_get_one_line_naming_file_line_and_problem() {
+    let file = committed("typical");
+    let good = own_results::<f32>(file, Method::CorrectedEuler, false);
+    let lines: Vec<&str> = good.lines().collect();
+    let with = |k: usize, replacement: &str| {
+        let mut v: Vec<String> = lines.iter().map(|s| s.to_string()).collect();
+        v[k] = replacement.to_string();
+        v.join("\n")
+    };
+    malformed(
+        &with(3, "typical-001,2"),
+        ":4: expected 3 columns (case,pixel,value), found 2",
+    );
+    malformed(&with(3, "typical-001,2,0.5,9"), ":4: expected 3 columns");
+    malformed(
+        &with(3, "typical-001,2,abc"),
+        ":4: value 'abc' is not a number",
+    );
+    malformed(
+        &with(3, "typical-001,2,NaN"),
+        ":4: value 'NaN' is not finite",
+    );
+    malformed(
+        &with(3, "typical-001,two,0.5"),
+        ":4: pixel 'two' is not a whole number",
+    );
+    malformed(
+        &with(3, "nosuch-001,2,0.5"),
+        ":4: unknown case id 'nosuch-001'",
+    );
+    malformed(
+        &with(3, "typical-001,99,0.5"),
+        ":4: pixel 99 is out of range for case typical-001",
+    );
+    malformed(
+        &with(3, "typical-001,1,0.5"),
+        ":4: duplicate row for case typical-001 pixel 1 (first at line 3)",
+    );
+    // typical-001 has n = 2: dropping pixel 2 leaves it missing.
+    malformed(
+        &with(3, "# dropped"),
+        "at end of file: case typical-001 has no value for pixel 2",
+    );
+    // Header, typical-001 (n = 2) and typical-002 (n = 3): typical-003 is missing.
+    malformed(
+        &lines[..8].join("\n"),
+        "at end of file: case typical-003 is missing",
+    );
+    malformed("", ":1: the file holds no results");
+    malformed("case,pixel,value\n", ":1: the file holds no results");
+    malformed("{\"cases\": [", "not a results file");
+    malformed("\u{1}\u{2}garbage,,", ":1: unknown case id");
+    malformed("\u{1}\u{2}garbage", ":1: expected 3 columns");
+    // A file over the size limit is refused before it is read.
+    let big =
+        std::env::temp_dir().join(format!("phong-approx-conf-{}-big.csv", std::process::id()));
+    let f = std::fs::File::create(&big).unwrap();
+    f.set_len(phong_approx::conformance::check::MAX_RESULTS_BYTES + 1)
+        .unwrap();
+    let (code, _, err) = run_check(&typical_path(), &big, &[]);
+    assert_eq!(code, 2);
+    assert!(err.contains("larger than 256 MiB"), "{err}");
+    let _ = std::fs::remove_file(big);
+    // Bad arguments.
+    let p = tmp("ok.csv", &good);
+    for (args, needle) in [
+        (vec!["--tolerance", "levels=x"], "--tolerance:"),
+        (vec!["--tolerance", "rel=1"], "unknown tolerance 'rel'"),
+        (vec!["--method", "bishop"], "--method: unknown method"),
+        (vec!["--precision", "f16"], "--precision: unknown precision"),
+    ] {
+        let (code, _, err) = run_check(&typical_path(), &p, &args);
+        assert_eq!(code, 2, "{args:?}");
+        assert!(err.contains(needle), "{args:?}: {err}");
+    }
+    let (code, _, err) = run_check("/nonexistent/vectors.json", &p, &[]);
+    assert_eq!(code, 2);
+    assert!(
+        err.contains("--vectors: /nonexistent/vectors.json"),
+        "{err}"
+    );
+}
+
+#[test]
+fn every_case_states_why_it_is_there() {
+    let edge = committed("edge");
+    let has = |pred: &dyn Fn(&Case) -> bool| edge.cases.iter().any(pred);
+    assert!(has(&|c| c.n == 1) && has(&|c| c.n == 2) && has(&|c| c.n == 4096));
+    assert!(has(&|c| c.na == c.nb));
+    assert!(has(&|c| c.q_min < 0.01), "normals 170° apart");
+    assert!(has(&|c| c.expected["phong"].levels.contains(&0)
+        && c.expected["phong"].levels.iter().any(|&l| l > 0)));
+    assert!(committed("paper")
+        .cases
+        .iter()
+        .all(|c| c.comment.contains("60°") || c.comment.contains("Figures 1–3")));
+}

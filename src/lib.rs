@@ -59,6 +59,7 @@ pub mod corrected_euler;
 pub mod duff;
 pub mod error;
 pub mod euler;
+pub mod fast;
 pub mod gouraud;
 pub mod method;
 pub mod parse;

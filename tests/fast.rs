@@ -1,0 +1,150 @@
+//! The fast kernels of `src/fast.rs` against the exact run (within the bounds of
+//! `src/tolerance.rs`) and against their recurrence twins, in `f32` and `f64`, on the
+//! edge cases and random spans; and the 4-ulp claim of the Phong kernels.
+
+mod common;
+
+use common::*;
+use phong_approx::fast::{phong_rsqrt_f32, FastSpan};
+use phong_approx::tolerance::bound;
+use phong_approx::{Method, Real, Scalar, Span};
+
+fn q_min(s: &Span<Q>) -> f64 {
+    (0..=s.n)
+        .map(|i| s.q_at(i).to_f64())
+        .fold(f64::INFINITY, f64::min)
+}
+
+fn err<T: Scalar>(a: &T, b: &Q) -> f64 {
+    (a.to_rational().unwrap() - b.clone()).to_f64().abs()
+}
+
+macro_rules! kernel_tests {
+    ($name:ident, $f:ident) => {
+        #[test]
+        fn $name() {
+            for_all_spans(64, |c, s| {
+                let fs = s.cast::<$f>().unwrap();
+                let fast = FastSpan::<$f>::from_span(&fs);
+                let u = <$f as Scalar>::unit_roundoff();
+                let qm = q_min(s);
+                let mut out = vec![0 as $f; s.len()];
+                type Kernel = fn(&FastSpan<$f>, &mut [$f]);
+                let kernels: [(Method, Kernel); 5] = [
+                    (Method::CorrectedEuler, FastSpan::<$f>::corrected_euler),
+                    (Method::Euler, FastSpan::<$f>::euler),
+                    (Method::Gouraud, FastSpan::<$f>::gouraud),
+                    (Method::Phong, FastSpan::<$f>::phong),
+                    (Method::SymmetricPhong, FastSpan::<$f>::symmetric_phong),
+                ];
+                for (m, kernel) in kernels {
+                    kernel(&fast, &mut out);
+                    let exact = m.values(s).unwrap();
+                    let twin = m.values(&fs).unwrap();
+                    // Euler's values grow with n·di_a: scale its bound by the span's
+                    // magnitude as the claim tests do.
+                    let scale = if m == Method::Euler {
+                        1.0 + f64::from(s.n) * s.di_a.to_f64().abs()
+                            + f64::from(s.n).powi(2) * s.ds.to_f64().abs()
+                    } else {
+                        1.0
+                    };
+                    let b = bound(m, s.n, qm, u) * scale;
+                    for i in 0..s.len() {
+                        let e = err(&out[i], &exact[i]);
+                        ensure(e <= b, || {
+                            format!(
+                                "{} fast {m} pixel {i}: error {e:e} > {b:e} ({})",
+                                stringify!($f),
+                                c.why
+                            )
+                        })?;
+                        let d = (f64::from(out[i]) - f64::from(twin[i])).abs();
+                        ensure(d <= 2.0 * b, || {
+                            format!(
+                                "{} fast {m} vs its recurrence twin at {i}: {d:e}",
+                                stringify!($f)
+                            )
+                        })?;
+                    }
+                }
+                Ok(())
+            });
+        }
+    };
+}
+
+kernel_tests!(fast_kernels_match_exact_and_twins_f32, f32);
+kernel_tests!(fast_kernels_match_exact_and_twins_f64, f64);
+
+/// `p/√q` exactly (to 2^-256) from the `f32` set-up's own coefficients, and the size
+/// of the terms that make it (`(|A|·i + |B|)/√q`), whose ulp is the unit of the claim.
+fn phong_from_setup(f: &FastSpan<f32>, i: u32) -> (Q, f64) {
+    let r = |x: f32| <f32 as Scalar>::to_rational(&x).unwrap();
+    let x = qi(i);
+    let p = r(f.a) * x.clone() + r(f.b);
+    let qq = (r(f.c) * x.clone() + r(f.d)) * x + r(f.e);
+    let v = p / qq.clone().sqrt();
+    let xf = f64::from(i);
+    let qf = qq.to_f64();
+    // κ = (|C|i² + |D|i + |E|)/q: how much q's own evaluation cancels (1 for close
+    // normals, about 260 for normals 170° apart).
+    let kappa =
+        (f64::from(f.c.abs()) * xf * xf + f64::from(f.d.abs()) * xf + f64::from(f.e.abs())) / qf;
+    let mag = (f64::from(f.a.abs()) * xf + f64::from(f.b.abs())) / qf.sqrt() * kappa;
+    (v, mag)
+}
+
+fn f32_ulp(x: f64) -> f64 {
+    let a = (x.abs() as f32).max(f32::MIN_POSITIVE);
+    f64::from(f32::from_bits(a.to_bits() + 1)) - f64::from(a)
+}
+
+#[test]
+fn phong_kernels_are_within_4_ulps() {
+    for_all_spans(64, |c, s| {
+        let fast = FastSpan::<f32>::from_span(&s.cast::<f32>().unwrap());
+        let mut a = vec![0f32; s.len()];
+        let mut b = vec![0f32; s.len()];
+        fast.phong(&mut a);
+        phong_rsqrt_f32(&fast, &mut b);
+        for i in 0..s.len() {
+            let (v, mag) = phong_from_setup(&fast, i as u32);
+            let ulp = f32_ulp(mag.max(v.to_f64().abs()));
+            for (name, got) in [("sqrt", a[i]), ("rsqrt", b[i])] {
+                let e = err(&got, &v) / ulp;
+                ensure(e <= 4.0, || {
+                    format!("{name} Phong pixel {i}: {e:.2} ulps ({})", c.why)
+                })?;
+            }
+        }
+        Ok(())
+    });
+}
+
+#[test]
+fn short_spans_and_leftovers() {
+    // Every length from 1 to 19 (all remainders of 4- and 8-wide chunks), and the
+    // extra room in `out` is left alone.
+    let s = Span::new(
+        Stereo(0, 0, 1).unit(),
+        Stereo(1, 0, 3).unit(),
+        Stereo(2, 1, 5).unit(),
+        1,
+    )
+    .unwrap();
+    for n in 1..20u32 {
+        let mut s2 = s.clone();
+        s2 = Span::new(s2.na, s2.nb, s2.l, n).unwrap();
+        let f = FastSpan::<f32>::from_span(&s2.cast::<f32>().unwrap());
+        let mut out = vec![-7.0f32; n as usize + 4];
+        phong_rsqrt_f32(&f, &mut out);
+        assert!(out[n as usize + 1..].iter().all(|&v| v == -7.0), "n = {n}");
+        let exact = Method::Phong.values(&s2).unwrap();
+        for i in 0..=n as usize {
+            assert!(err(&out[i], &exact[i]) < 1e-5, "n = {n}, pixel {i}");
+        }
+        f.corrected_euler(&mut out);
+        assert_eq!(out[0], f.b);
+    }
+}

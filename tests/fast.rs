@@ -30,8 +30,14 @@ macro_rules! kernel_tests {
                 let qm = q_min(s);
                 let mut out = vec![0 as $f; s.len()];
                 type Kernel = fn(&FastSpan<$f>, &mut [$f]);
-                let kernels: [(Method, Kernel); 5] = [
+                let kernels: [(Method, Kernel); 8] = [
                     (Method::CorrectedEuler, FastSpan::<$f>::corrected_euler),
+                    (
+                        Method::CorrectedEuler,
+                        FastSpan::<$f>::corrected_euler_serial,
+                    ),
+                    (Method::Gouraud, FastSpan::<$f>::gouraud_serial),
+                    (Method::Duff, FastSpan::<$f>::duff_serial),
                     (Method::Euler, FastSpan::<$f>::euler),
                     (Method::Gouraud, FastSpan::<$f>::gouraud),
                     (Method::Phong, FastSpan::<$f>::phong),

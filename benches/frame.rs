@@ -1,0 +1,118 @@
+//! The frame benchmark: the 800-polygon torus at the default size (225×225), shaded
+//! by one method at a time with the fast kernels, in visible pixels per second —
+//! single-threaded (one frame) and with rayon (eight frames in parallel).
+
+use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use phong_approx::fast::{phong_rsqrt_f32, FastSpan};
+use phong_approx::quantize::level;
+use phong_approx::raster::experiment::Experiment;
+use phong_approx::raster::mesh::Mesh;
+use phong_approx::raster::render::Scene;
+use phong_approx::raster::scan::{rows, ScreenVertex};
+use rayon::prelude::*;
+use std::time::Duration;
+
+type Kernel = fn(&FastSpan<f32>, &mut [f32]);
+
+/// Renders frame `f` with `kernel`: culling, scan conversion, per-row set-up, the
+/// kernel, 8-bit quantization and a depth test. Returns the visible pixel count.
+fn frame(mesh: &Mesh, scene: &Scene, f: u32, kernel: Kernel) -> u64 {
+    let (w, h) = (scene.width, scene.height);
+    let rot = scene.rotation(f);
+    let (cx, cy) = (w as f32 / 2.0, h as f32 / 2.0);
+    let verts: Vec<ScreenVertex> = mesh
+        .positions
+        .iter()
+        .zip(&mesh.normals)
+        .map(|(p, n)| {
+            let (p, n) = (rot * *p, rot * *n);
+            ScreenVertex {
+                x: cx + scene.scale * p.x,
+                y: cy - scene.scale * p.y,
+                z: p.z,
+                normal: n,
+                intensity: 0.0,
+            }
+        })
+        .collect();
+    let mut depth = vec![f32::NEG_INFINITY; (w * h) as usize];
+    let mut image = vec![0u8; (w * h) as usize];
+    let mut span = vec![0f32; w as usize + 1];
+    let l = scene.light.to_array();
+    for q in &mesh.quads {
+        let p: Vec<glam::Vec3> = q
+            .iter()
+            .map(|&i| rot * mesh.positions[i as usize])
+            .collect();
+        if (p[2] - p[0]).cross(p[3] - p[1]).z <= 0.0 {
+            continue;
+        }
+        let poly: Vec<ScreenVertex> = q.iter().map(|&i| verts[i as usize]).collect();
+        rows(&poly, w, h, |row| {
+            let n = (row.x_last - row.x_first) as u32;
+            let na = row.left.normal.normalize().to_array();
+            let nb = row.right.normal.normalize().to_array();
+            if n == 0 {
+                span[0] = na[0] * l[0] + na[1] * l[1] + na[2] * l[2];
+            } else {
+                kernel(&FastSpan::<f32>::new(na, nb, l, n), &mut span);
+            }
+            for (i, x) in (row.x_first..=row.x_last).enumerate() {
+                let idx = (row.y as u32 * w + x as u32) as usize;
+                let t = if n == 0 { 0.0 } else { i as f32 / n as f32 };
+                let z = row.left.z + t * (row.right.z - row.left.z);
+                if z > depth[idx] {
+                    depth[idx] = z;
+                    image[idx] = level(&span[i]);
+                }
+            }
+        });
+    }
+    black_box(&image);
+    depth.iter().filter(|d| d.is_finite()).count() as u64
+}
+
+fn frames(c: &mut Criterion) {
+    let exp = Experiment::default();
+    let scene = exp.scene();
+    let mesh = exp.mesh(40, 20);
+    let kernels: [(&str, Kernel); 7] = [
+        ("gouraud_fast", FastSpan::<f32>::gouraud),
+        (
+            "corrected_euler_serial",
+            FastSpan::<f32>::corrected_euler_serial,
+        ),
+        ("corrected_euler_fast", FastSpan::<f32>::corrected_euler),
+        ("duff_serial", FastSpan::<f32>::duff_serial),
+        ("phong_fast", FastSpan::<f32>::phong),
+        ("phong_rsqrt_simd", phong_rsqrt_f32),
+        ("symmetric_phong_fast", FastSpan::<f32>::symmetric_phong),
+    ];
+    let mut g = c.benchmark_group("frame_torus800_225");
+    g.warm_up_time(Duration::from_millis(500))
+        .measurement_time(Duration::from_secs(2))
+        .sample_size(20);
+    let px_one = frame(&mesh, &scene, 17, kernels[0].1);
+    let px_eight: u64 = (0..8)
+        .map(|f| frame(&mesh, &scene, 17 + f, kernels[0].1))
+        .sum();
+    for (name, k) in kernels {
+        g.throughput(Throughput::Elements(px_one));
+        g.bench_function(BenchmarkId::new("single", name), |b| {
+            b.iter(|| frame(&mesh, &scene, 17, k))
+        });
+        g.throughput(Throughput::Elements(px_eight));
+        g.bench_function(BenchmarkId::new("rayon8", name), |b| {
+            b.iter(|| {
+                (0..8u32)
+                    .into_par_iter()
+                    .map(|f| frame(&mesh, &scene, 17 + f, k))
+                    .sum::<u64>()
+            })
+        });
+    }
+    g.finish();
+}
+
+criterion_group!(benches, frames);
+criterion_main!(benches);

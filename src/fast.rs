@@ -111,9 +111,7 @@ macro_rules! fast_impl {
             #[inline]
             pub fn gouraud(&self, out: &mut [$f]) {
                 let (p0, dp) = (self.b, self.dp);
-                for (i, o) in out[..=self.n as usize].iter_mut().enumerate() {
-                    *o = p0 + (i as $f) * dp;
-                }
+                each_x(&mut out[..=self.n as usize], |x| p0 + x * dp);
             }
 
             /// Phong in closed form: `(A·i + B)/√(C·i² + D·i + E)`, with `sqrt` and a
@@ -121,12 +119,9 @@ macro_rules! fast_impl {
             #[inline]
             pub fn phong(&self, out: &mut [$f]) {
                 let (a, b, c, d, e) = (self.a, self.b, self.c, self.d, self.e);
-                for (i, o) in out[..=self.n as usize].iter_mut().enumerate() {
-                    let x = i as $f;
-                    let p = a * x + b;
-                    let q = (c * x + d) * x + e;
-                    *o = p / q.sqrt();
-                }
+                each_x(&mut out[..=self.n as usize], |x| {
+                    (a * x + b) / ((c * x + d) * x + e).sqrt()
+                });
             }
 
             /// The paper's corrected-Euler inner loop, serial: `p += t; t += ds`
@@ -173,17 +168,51 @@ macro_rules! fast_impl {
                 let half = n / 2;
                 let (a, b, c, d, e) = (self.a, self.b, self.c, self.d, self.e);
                 let out = &mut out[..=n];
-                // 1/√q_i into the left half, then each right pixel reads its mirror.
-                for (i, o) in out[..=half].iter_mut().enumerate() {
-                    let x = i as $f;
-                    *o = 1.0 / ((c * x + d) * x + e).sqrt();
+                // 1/√q_i into the left half, then the right half as its mirror image
+                // (q_i = q_{n−i}), then the factor p_i everywhere.
+                let (left, right) = out.split_at_mut(half + 1);
+                each_x(left, |x| 1.0 / ((c * x + d) * x + e).sqrt());
+                let skip = usize::from(n % 2 == 0);
+                for (o, m) in right.iter_mut().zip(left.iter().rev().skip(skip)) {
+                    *o = *m;
                 }
-                for i in half + 1..=n {
-                    out[i] = out[n - i];
+                scale_x(out, |x| a * x + b);
+            }
+        }
+
+        /// `out[i] = f(i)` with `i` as a float, eight pixels at a time: the index is a
+        /// float base plus constant offsets (exact below 2^24), so no integer-to-float
+        /// conversion stands in the way of vectorization.
+        #[inline(always)]
+        fn each_x(out: &mut [$f], f: impl Fn($f) -> $f) {
+            const OFF: [$f; 8] = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0];
+            let mut chunks = out.chunks_exact_mut(8);
+            let mut base: $f = 0.0;
+            for ch in &mut chunks {
+                for j in 0..8 {
+                    ch[j] = f(base + OFF[j]);
                 }
-                for (i, o) in out.iter_mut().enumerate() {
-                    *o *= a * (i as $f) + b;
+                base += 8.0;
+            }
+            for (j, o) in chunks.into_remainder().iter_mut().enumerate() {
+                *o = f(base + OFF[j]);
+            }
+        }
+
+        /// `out[i] *= f(i)`, chunked like [`each_x`].
+        #[inline(always)]
+        fn scale_x(out: &mut [$f], f: impl Fn($f) -> $f) {
+            const OFF: [$f; 8] = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0];
+            let mut chunks = out.chunks_exact_mut(8);
+            let mut base: $f = 0.0;
+            for ch in &mut chunks {
+                for j in 0..8 {
+                    ch[j] *= f(base + OFF[j]);
                 }
+                base += 8.0;
+            }
+            for (j, o) in chunks.into_remainder().iter_mut().enumerate() {
+                *o *= f(base + OFF[j]);
             }
         }
 
@@ -191,10 +220,7 @@ macro_rules! fast_impl {
         #[inline]
         fn quadratic_impl(p0: $f, t: $f, ds: $f, out: &mut [$f]) {
             let half_ds = 0.5 * ds;
-            for (i, o) in out.iter_mut().enumerate() {
-                let x = i as $f;
-                *o = p0 + x * (t + (x - 1.0) * half_ds);
-            }
+            each_x(out, |x| p0 + x * (t + (x - 1.0) * half_ds));
         }
     };
 }

@@ -1,0 +1,65 @@
+#!/usr/bin/env python3
+"""Turns criterion's results (target/criterion) into the Markdown tables of
+docs/performance.md: ns per pixel per kernel and n, ratios to glam per-pixel Phong
+and to the store floor, the set-up at n = 8, and the frame benchmark in pixels/s."""
+import json, os, sys
+
+root = sys.argv[1] if len(sys.argv) > 1 else "target/criterion"
+
+def est(path):
+    with open(os.path.join(path, "new", "estimates.json")) as f:
+        return json.load(f)["mean"]["point_estimate"]
+
+def elements(path):
+    with open(os.path.join(path, "new", "benchmark.json")) as f:
+        t = json.load(f).get("throughput") or {}
+    return t.get("Elements")
+
+def span_table(group):
+    base = os.path.join(root, group)
+    if not os.path.isdir(base):
+        return
+    kernels = sorted(k for k in os.listdir(base) if k != "report")
+    ns = sorted({int(n) for k in kernels for n in os.listdir(os.path.join(base, k)) if n.isdigit()})
+    ns_px = {}
+    for k in kernels:
+        for n in ns:
+            p = os.path.join(base, k, str(n))
+            if os.path.isdir(p):
+                ns_px[(k, n)] = est(p) / (n + 1)
+    print(f"\n### {group}: ns per pixel (one span per call, set-up included)\n")
+    print("| kernel | " + " | ".join(f"n = {n}" for n in ns) + " | ÷ glam Phong (n = 512) | ÷ store floor (n = 512) |")
+    print("|---|" + "---:|" * (len(ns) + 2))
+    order = ["store_floor", "glam_phong"] + [k for k in kernels if k not in ("store_floor", "glam_phong")]
+    big = max(ns)
+    for k in order:
+        if k not in kernels:
+            continue
+        cells = [f"{ns_px[(k, n)]:.3f}" if (k, n) in ns_px else "" for n in ns]
+        r_glam = ns_px[(k, big)] / ns_px[("glam_phong", big)] if ("glam_phong", big) in ns_px else float("nan")
+        r_floor = ns_px[(k, big)] / ns_px[("store_floor", big)]
+        print(f"| {k} | " + " | ".join(cells) + f" | {r_glam:.2f} | {r_floor:.1f} |")
+
+for g in ("span_f32", "span_f64"):
+    span_table(g)
+
+base = os.path.join(root, "setup_f32_n8")
+if os.path.isdir(base):
+    print("\n### Set-up alone, f32, n = 8\n\n| set-up | ns |\n|---|---:|")
+    for k in sorted(os.listdir(base)):
+        if k != "report":
+            print(f"| {k} | {est(os.path.join(base, k)):.2f} |")
+
+base = os.path.join(root, "frame_torus800_225")
+if os.path.isdir(base):
+    print("\n### Frame: 800-polygon torus, 225×225, one method (Mpixel/s, visible pixels)\n")
+    print("| kernel | single thread | rayon, 8 frames on 2 cores |\n|---|---:|---:|")
+    kernels = sorted(os.listdir(os.path.join(base, "single")))
+    for k in kernels:
+        if k == "report":
+            continue
+        row = []
+        for mode in ("single", "rayon8"):
+            p = os.path.join(base, mode, k)
+            row.append(f"{elements(p) / est(p) * 1e3:.1f}" if os.path.isdir(p) else "")
+        print(f"| {k} | " + " | ".join(row) + " |")

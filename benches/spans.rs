@@ -87,6 +87,10 @@ macro_rules! bench_type {
                     Method::Phong,
                     Method::Euler,
                     Method::Gouraud,
+                    Method::Duff,
+                    Method::SymmetricPhong,
+                    Method::Adaptive,
+                    Method::Angular,
                 ] {
                     let name = format!("reference_{}", m.name());
                     g.bench_with_input(BenchmarkId::new(name, n), &n, |b, &n| {
@@ -111,8 +115,76 @@ macro_rules! bench_extra_ {
                 phong_rsqrt_f32(&s, &mut $out);
             })
         });
+        $g.bench_with_input(
+            BenchmarkId::new("corrected_euler_wide", $n),
+            &$n,
+            |b, &n| {
+                b.iter(|| {
+                    let s = FastSpan::<f32>::new(black_box($na), black_box($nb), black_box($l), n);
+                    corrected_euler_wide(&s, &mut $out);
+                })
+            },
+        );
+        $g.bench_with_input(BenchmarkId::new("phong_wide", $n), &$n, |b, &n| {
+            b.iter(|| {
+                let s = FastSpan::<f32>::new(black_box($na), black_box($nb), black_box($l), n);
+                phong_wide(&s, &mut $out);
+            })
+        });
     };
     (f64, $g:ident, $n:ident, $na:ident, $nb:ident, $l:ident, $out:ident) => {};
+}
+
+/// Corrected Euler's closed form with the portable SIMD crate `wide` (8 lanes), to
+/// compare with the auto-vectorized `FastSpan::corrected_euler`.
+fn corrected_euler_wide(s: &FastSpan<f32>, out: &mut [f32]) {
+    use wide::f32x8;
+    let out = &mut out[..=s.n as usize];
+    let (p0, t, h) = (
+        f32x8::splat(s.b),
+        f32x8::splat(s.t0),
+        f32x8::splat(0.5 * s.ds),
+    );
+    let mut x = f32x8::from([0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0]);
+    let one = f32x8::splat(1.0);
+    let eight = f32x8::splat(8.0);
+    let mut chunks = out.chunks_exact_mut(8);
+    for ch in &mut chunks {
+        let v = p0 + x * (t + (x - one) * h);
+        ch.copy_from_slice(&v.to_array());
+        x += eight;
+    }
+    let base = x.to_array()[0];
+    for (j, o) in chunks.into_remainder().iter_mut().enumerate() {
+        let xf = base + j as f32;
+        *o = s.b + xf * (s.t0 + (xf - 1.0) * 0.5 * s.ds);
+    }
+}
+
+/// Phong's closed form with `wide` (sqrt and division, 8 lanes).
+fn phong_wide(s: &FastSpan<f32>, out: &mut [f32]) {
+    use wide::f32x8;
+    let out = &mut out[..=s.n as usize];
+    let (a, b, c, d, e) = (
+        f32x8::splat(s.a),
+        f32x8::splat(s.b),
+        f32x8::splat(s.c),
+        f32x8::splat(s.d),
+        f32x8::splat(s.e),
+    );
+    let mut x = f32x8::from([0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0]);
+    let eight = f32x8::splat(8.0);
+    let mut chunks = out.chunks_exact_mut(8);
+    for ch in &mut chunks {
+        let v = (a * x + b) / ((c * x + d) * x + e).sqrt();
+        ch.copy_from_slice(&v.to_array());
+        x += eight;
+    }
+    let base = x.to_array()[0];
+    for (j, o) in chunks.into_remainder().iter_mut().enumerate() {
+        let xf = base + j as f32;
+        *o = (s.a * xf + s.b) / ((s.c * xf + s.d) * xf + s.e).sqrt();
+    }
 }
 
 bench_type!(span_f32, f32, Vec3);

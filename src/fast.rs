@@ -293,6 +293,7 @@ unsafe fn phong_rsqrt_sse(s: &FastSpan<f32>, out: &mut [f32]) {
     let mut x = _mm_setr_ps(0.0, 1.0, 2.0, 3.0);
     let len = out.len();
     let mut chunks = out.chunks_exact_mut(4);
+    // (`len` is read before the chunks borrow `out`.)
     for chunk in &mut chunks {
         let p = _mm_add_ps(_mm_mul_ps(a, x), b);
         let q = _mm_add_ps(_mm_mul_ps(_mm_add_ps(_mm_mul_ps(c, x), d), x), e);
@@ -308,10 +309,10 @@ unsafe fn phong_rsqrt_sse(s: &FastSpan<f32>, out: &mut [f32]) {
         x = _mm_add_ps(x, step);
     }
     let done = len - chunks.into_remainder().len();
-    for i in done..len {
+    for (i, o) in out.iter_mut().enumerate().skip(done) {
         let xf = i as f32;
         let p = s.a * xf + s.b;
         let q = (s.c * xf + s.d) * xf + s.e;
-        out[i] = p / q.sqrt();
+        *o = p / q.sqrt();
     }
 }

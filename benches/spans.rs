@@ -57,7 +57,11 @@ macro_rules! bench_type {
                     })
                 });
                 type K = fn(&FastSpan<$f>, &mut [$f]);
-                let kernels: [(&str, K); 9] = [
+                let kernels: [(&str, K); 11] = [
+                    ("adaptive_fast", |s, o| {
+                        s.adaptive(1.0, o);
+                    }),
+                    ("angular_fast", FastSpan::<$f>::angular),
                     ("gouraud_serial", FastSpan::<$f>::gouraud_serial),
                     ("gouraud_fast", FastSpan::<$f>::gouraud),
                     ("euler_fast", FastSpan::<$f>::euler),
@@ -115,6 +119,19 @@ macro_rules! bench_extra_ {
                 phong_rsqrt_f32(&s, &mut $out);
             })
         });
+        let table: Vec<f32> = phong_approx::angular::CosTable::<f32>::new(256)
+            .unwrap()
+            .values;
+        $g.bench_with_input(
+            BenchmarkId::new("angular_table256_fast", $n),
+            &$n,
+            |b, &n| {
+                b.iter(|| {
+                    let s = FastSpan::<f32>::new(black_box($na), black_box($nb), black_box($l), n);
+                    s.angular_table(&table, &mut $out);
+                })
+            },
+        );
         $g.bench_with_input(
             BenchmarkId::new("corrected_euler_wide", $n),
             &$n,

@@ -124,6 +124,52 @@ macro_rules! fast_impl {
                 });
             }
 
+            /// The adaptive test of eqs. 23–24 without eq. 23's division: the largest
+            /// difference between Gouraud and corrected Euler is
+            /// `δ = ds/2 · ⌈n/2⌉·⌊n/2⌋` (`eq_24_delta_closed_form`). Shades with
+            /// Gouraud when `|δ·255·K_d| < 1`, else corrected Euler; returns `true`
+            /// for Gouraud.
+            #[inline]
+            pub fn adaptive(&self, kd: $f, out: &mut [$f]) -> bool {
+                let (lo, hi) = ((self.n / 2) as $f, self.n.div_ceil(2) as $f);
+                let delta = 0.5 * self.ds * lo * hi;
+                let gouraud = (delta * 255.0 * kd).abs() < 1.0;
+                if gouraud {
+                    self.gouraud(out);
+                } else {
+                    self.corrected_euler(out);
+                }
+                gouraud
+            }
+
+            /// Angular interpolation (the second source) with every pixel's angle in
+            /// closed form, `α_i = α_a + i·(α_b − α_a)/n`, and its cosine.
+            #[inline]
+            pub fn angular(&self, out: &mut [$f]) {
+                let alpha_a = self.b.clamp(-1.0, 1.0).acos();
+                let alpha_b = self.p_b.clamp(-1.0, 1.0).acos();
+                let d_alpha = (alpha_b - alpha_a) / self.n as $f;
+                each_x(&mut out[..=self.n as usize], |x| {
+                    (alpha_a + x * d_alpha).cos()
+                });
+            }
+
+            /// [`Self::angular`] with the cosine read from a table over 0–90° of
+            /// `table.len()` entries (the second source: 256), nearest entry; angles
+            /// past 90° read the last entry (`cos 90° = 0`).
+            #[inline]
+            pub fn angular_table(&self, table: &[$f], out: &mut [$f]) {
+                let alpha_a = self.b.clamp(-1.0, 1.0).acos();
+                let alpha_b = self.p_b.clamp(-1.0, 1.0).acos();
+                let d_alpha = (alpha_b - alpha_a) / self.n as $f;
+                let last = table.len().saturating_sub(1);
+                let per_radian = last as $f / std::$f::consts::FRAC_PI_2;
+                for (i, o) in out[..=self.n as usize].iter_mut().enumerate() {
+                    let pos = (alpha_a + i as $f * d_alpha) * per_radian + 0.5;
+                    *o = table[(pos.max(0.0) as usize).min(last)];
+                }
+            }
+
             /// The paper's corrected-Euler inner loop, serial: `p += t; t += ds`
             /// (eqs. 16–17), with this set-up. For measuring against
             /// [`Self::corrected_euler`].

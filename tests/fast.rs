@@ -128,6 +128,63 @@ fn phong_kernels_are_within_4_ulps() {
     });
 }
 
+/// Adaptive and angular fast kernels against the crate's own methods in the same
+/// type: the same decision (or one within rounding of the threshold) and values within
+/// the method's bound.
+#[test]
+fn adaptive_and_angular_fast_kernels() {
+    let table: Vec<f32> = phong_approx::angular::CosTable::<f32>::new(256)
+        .unwrap()
+        .values;
+    for_all_spans(64, |c, s| {
+        let fs = s.cast::<f32>().unwrap();
+        let f = FastSpan::<f32>::from_span(&fs);
+        let u = <f32 as Scalar>::unit_roundoff();
+        let mut out = vec![0f32; s.len()];
+        // Adaptive: the fast decision agrees with eq. 24 exactly unless |δ·255| is
+        // within rounding of 1.
+        let gouraud = f.adaptive(1.0, &mut out);
+        let exact = phong_approx::adaptive::decide(s, &Q::from_integer(1.into()));
+        let exact_gouraud = exact.choice == phong_approx::adaptive::Choice::Gouraud;
+        let margin = (exact.delta.to_f64() * 255.0).abs() - 1.0;
+        ensure(gouraud == exact_gouraud || margin.abs() < 1e-3, || {
+            format!("adaptive decision ({})", c.why)
+        })?;
+        let want = if gouraud {
+            Method::Gouraud
+        } else {
+            Method::CorrectedEuler
+        }
+        .values(s)
+        .unwrap();
+        let b = bound(Method::Adaptive, s.n, 1.0, u);
+        for i in 0..s.len() {
+            ensure(err(&out[i], &want[i]) <= b, || {
+                format!("adaptive pixel {i} ({})", c.why)
+            })?;
+        }
+        // Angular: the closed-form angle is within the angular bound.
+        f.angular(&mut out);
+        let want = Method::Angular.values(s).unwrap();
+        let b = bound(Method::Angular, s.n, 1.0, u);
+        for i in 0..s.len() {
+            ensure(err(&out[i], &want[i]) <= b, || {
+                format!("angular pixel {i} ({})", c.why)
+            })?;
+        }
+        // Tabled: equal to the crate's table method in f32, or one table step away.
+        f.angular_table(&table, &mut out);
+        let want = Method::AngularTable(256).values(&fs).unwrap();
+        for i in 0..s.len() {
+            let d = (out[i] - want[i]).abs();
+            ensure(d <= 0.0063, || {
+                format!("angular table pixel {i}: {d} ({})", c.why)
+            })?;
+        }
+        Ok(())
+    });
+}
+
 #[test]
 fn short_spans_and_leftovers() {
     // Every length from 1 to 19 (all remainders of 4- and 8-wide chunks), and the

@@ -7,7 +7,7 @@ use phong_approx::fast::{phong_rsqrt_f32, FastSpan};
 use phong_approx::quantize::level;
 use phong_approx::raster::experiment::Experiment;
 use phong_approx::raster::mesh::Mesh;
-use phong_approx::raster::render::Scene;
+use phong_approx::raster::render::{project, Scene};
 use phong_approx::raster::scan::{rows, ScreenVertex};
 use rayon::prelude::*;
 use std::time::Duration;
@@ -19,22 +19,7 @@ type Kernel = fn(&FastSpan<f32>, &mut [f32]);
 fn frame(mesh: &Mesh, scene: &Scene, f: u32, kernel: Kernel) -> u64 {
     let (w, h) = (scene.width, scene.height);
     let rot = scene.rotation(f);
-    let (cx, cy) = (w as f32 / 2.0, h as f32 / 2.0);
-    let verts: Vec<ScreenVertex> = mesh
-        .positions
-        .iter()
-        .zip(&mesh.normals)
-        .map(|(p, n)| {
-            let (p, n) = (rot * *p, rot * *n);
-            ScreenVertex {
-                x: cx + scene.scale * p.x,
-                y: cy - scene.scale * p.y,
-                z: p.z,
-                normal: n,
-                intensity: 0.0,
-            }
-        })
-        .collect();
+    let verts = project(mesh, scene, &rot);
     let mut depth = vec![f32::NEG_INFINITY; (w * h) as usize];
     let mut image = vec![0u8; (w * h) as usize];
     let mut span = vec![0f32; w as usize + 1];

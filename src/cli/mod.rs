@@ -38,6 +38,30 @@ impl fmt::Display for CliError {
     }
 }
 
+/// Parses a whole number for `arg` within `lo..=hi`; `what` names it in the range
+/// message (empty for none).
+///
+/// # Errors
+/// A [`CliError`] naming `arg`: not a whole number, or out of range.
+pub fn parse_whole(arg: &str, s: &str, lo: u32, hi: u32, what: &str) -> Result<u32, CliError> {
+    let v: u64 = s
+        .trim()
+        .parse()
+        .map_err(|_| CliError::arg(arg, format!("'{s}' is not a whole number")))?;
+    if v < u64::from(lo) || v > u64::from(hi) {
+        let what = if what.is_empty() {
+            String::new()
+        } else {
+            format!("{what} ")
+        };
+        return Err(CliError::arg(
+            arg,
+            format!("{what}must be between {lo} and {hi} (got {v})"),
+        ));
+    }
+    Ok(v as u32)
+}
+
 /// Prints clap's error as one line (help and version as clap prints them) and exits
 /// with 2 for errors, 0 for help/version.
 pub fn clap_error(e: clap::Error) -> ExitCode {

@@ -1,6 +1,6 @@
 //! `phong-approx reproduce`: the paper's Tables 1–2 and Figures 1–5, end to end.
 
-use super::CliError;
+use super::{parse_whole, CliError};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
 use phong_approx::raster::experiment::{Experiment, TorusResult, PAPER_TABLE_1, PAPER_TABLE_2};
@@ -39,20 +39,6 @@ pub struct ReproduceArgs {
     /// Frames of the 800-polygon torus also evaluated in exact rationals.
     #[arg(long, value_name = "K", default_value = "1")]
     pub exact_frames: String,
-}
-
-fn parse_whole(arg: &str, s: &str, lo: u32, hi: u32) -> Result<u32, CliError> {
-    let v: i64 = s
-        .trim()
-        .parse()
-        .map_err(|_| CliError::arg(arg, format!("'{s}' is not a whole number")))?;
-    if v < i64::from(lo) || v > i64::from(hi) {
-        return Err(CliError::arg(
-            arg,
-            format!("must be between {lo} and {hi} (got {v})"),
-        ));
-    }
-    Ok(v as u32)
 }
 
 fn parse_size(s: &str) -> Result<(u32, u32), CliError> {
@@ -105,7 +91,7 @@ fn io_err(path: &Path, e: impl std::fmt::Display) -> CliError {
 /// # Errors
 /// A [`CliError`] naming the bad argument or the file that could not be written.
 pub fn run(a: &ReproduceArgs) -> Result<(), CliError> {
-    let frames = parse_whole("--frames", &a.frames, 1, 100_000)?;
+    let frames = parse_whole("--frames", &a.frames, 1, 100_000, "")?;
     let size = parse_size(&a.size)?;
     let radii = parse_radii(&a.radii)?;
     let normals = match a.normals.as_str() {
@@ -118,7 +104,7 @@ pub fn run(a: &ReproduceArgs) -> Result<(), CliError> {
             ))
         }
     };
-    let exact_frames = parse_whole("--exact-frames", &a.exact_frames, 0, frames)?;
+    let exact_frames = parse_whole("--exact-frames", &a.exact_frames, 0, frames, "")?;
     prepare_out(&a.out)?;
     let exp = Experiment {
         frames,

@@ -1,6 +1,6 @@
 //! `phong-approx span`: one scan line, one method, one number type.
 
-use super::CliError;
+use super::{parse_whole, CliError};
 use clap::Args;
 use phong_approx::adaptive::{self, Decision};
 use phong_approx::angular::CosTable;
@@ -89,20 +89,6 @@ struct Outcome {
     adaptive: Option<(String, Option<String>, Option<u32>, &'static str)>,
 }
 
-fn parse_u32(arg: &str, s: &str, lo: u32, hi: u32, what: &str) -> Result<u32, CliError> {
-    let v: u64 = s
-        .trim()
-        .parse()
-        .map_err(|_| CliError::arg(arg, format!("'{s}' is not a whole number")))?;
-    if v < u64::from(lo) || v > u64::from(hi) {
-        return Err(CliError::arg(
-            arg,
-            format!("{what} must be between {lo} and {hi} (got {v})"),
-        ));
-    }
-    Ok(v as u32)
-}
-
 fn parse_request(a: &SpanArgs) -> Result<(Request, ScalarKind, bool, u32), CliError> {
     let mut method: Method = a.method.parse().map_err(|e| CliError::arg("--method", e))?;
     let scalar = match a.scalar.as_str() {
@@ -131,7 +117,7 @@ fn parse_request(a: &SpanArgs) -> Result<(Request, ScalarKind, bool, u32), CliEr
     let na = vec("--na", &a.na)?;
     let nb = vec("--nb", &a.nb)?;
     let l = vec("--light", &a.light)?;
-    let n = parse_u32("--steps", &a.steps, 1, 1 << 24, "n")?;
+    let n = parse_whole("--steps", &a.steps, 1, 1 << 24, "n")?;
     let kd = parse_rational(&a.kd).map_err(|e| CliError::arg("--kd", e))?;
     if let Some(t) = &a.table_size {
         if method != Method::Angular {
@@ -140,10 +126,16 @@ fn parse_request(a: &SpanArgs) -> Result<(Request, ScalarKind, bool, u32), CliEr
                 "only the angular method uses a table",
             ));
         }
-        method = Method::AngularTable(parse_u32("--table-size", t, 2, 1 << 24, "the table size")?);
+        method = Method::AngularTable(parse_whole(
+            "--table-size",
+            t,
+            2,
+            1 << 24,
+            "the table size",
+        )?);
     }
-    let precision = parse_u32("--precision", &a.precision, 2, 1 << 20, "the precision")?;
-    let digits = parse_u32("--digits", &a.digits, 1, 10_000, "the number of digits")? as usize;
+    let precision = parse_whole("--precision", &a.precision, 2, 1 << 20, "the precision")?;
+    let digits = parse_whole("--digits", &a.digits, 1, 10_000, "the number of digits")? as usize;
     if scalar == ScalarKind::Mpfr && !cfg!(feature = "mpfr") {
         return Err(CliError::arg(
             "--scalar",

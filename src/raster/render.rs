@@ -444,20 +444,16 @@ pub struct RenderOptions {
     pub specular: bool,
 }
 
-/// Renders frame `f` of `mesh` in `scene`.
-pub fn render(mesh: &Mesh, scene: &Scene, f: u32, opts: RenderOptions) -> Frame {
-    let (w, h) = (scene.width, scene.height);
-    let npix = (w * h) as usize;
-    let cols = Column::ALL.len();
-    let rot = scene.rotation(f);
-    let (cx, cy) = (w as f32 / 2.0, h as f32 / 2.0);
-    let verts: Vec<ScreenVertex> = mesh
-        .positions
+/// The mesh's vertices rotated by `rot` and projected orthographically into `scene`'s
+/// image, with their rotated normals and vertex (Gouraud) intensities.
+pub fn project(mesh: &Mesh, scene: &Scene, rot: &Mat3) -> Vec<ScreenVertex> {
+    let (cx, cy) = (scene.width as f32 / 2.0, scene.height as f32 / 2.0);
+    mesh.positions
         .iter()
         .zip(&mesh.normals)
         .map(|(p, n)| {
-            let p = rot * *p;
-            let n = rot * *n;
+            let p = *rot * *p;
+            let n = *rot * *n;
             ScreenVertex {
                 x: cx + scene.scale * p.x,
                 y: cy - scene.scale * p.y,
@@ -466,7 +462,16 @@ pub fn render(mesh: &Mesh, scene: &Scene, f: u32, opts: RenderOptions) -> Frame 
                 intensity: n.dot(scene.light),
             }
         })
-        .collect();
+        .collect()
+}
+
+/// Renders frame `f` of `mesh` in `scene`.
+pub fn render(mesh: &Mesh, scene: &Scene, f: u32, opts: RenderOptions) -> Frame {
+    let (w, h) = (scene.width, scene.height);
+    let npix = (w * h) as usize;
+    let cols = Column::ALL.len();
+    let rot = scene.rotation(f);
+    let verts = project(mesh, scene, &rot);
     let table = CosTable::<f32>::new(256).expect("256 entries");
     let exact_table = opts
         .exact

@@ -226,40 +226,35 @@ macro_rules! fast_impl {
             }
         }
 
-        /// `out[i] = f(i)` with `i` as a float, eight pixels at a time: the index is a
-        /// float base plus constant offsets (exact below 2^24), so no integer-to-float
-        /// conversion stands in the way of vectorization.
+        /// Calls `g(&mut out[i], i)` with `i` as a float, eight pixels at a time: the
+        /// index is a float base plus constant offsets (exact below 2^24), so no
+        /// integer-to-float conversion stands in the way of vectorization.
         #[inline(always)]
-        fn each_x(out: &mut [$f], f: impl Fn($f) -> $f) {
+        fn chunked(out: &mut [$f], g: impl Fn(&mut $f, $f)) {
             const OFF: [$f; 8] = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0];
             let mut chunks = out.chunks_exact_mut(8);
             let mut base: $f = 0.0;
             for ch in &mut chunks {
                 for j in 0..8 {
-                    ch[j] = f(base + OFF[j]);
+                    g(&mut ch[j], base + OFF[j]);
                 }
                 base += 8.0;
             }
             for (j, o) in chunks.into_remainder().iter_mut().enumerate() {
-                *o = f(base + OFF[j]);
+                g(o, base + OFF[j]);
             }
         }
 
-        /// `out[i] *= f(i)`, chunked like [`each_x`].
+        /// `out[i] = f(i)`, chunked.
+        #[inline(always)]
+        fn each_x(out: &mut [$f], f: impl Fn($f) -> $f) {
+            chunked(out, |o, x| *o = f(x));
+        }
+
+        /// `out[i] *= f(i)`, chunked.
         #[inline(always)]
         fn scale_x(out: &mut [$f], f: impl Fn($f) -> $f) {
-            const OFF: [$f; 8] = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0];
-            let mut chunks = out.chunks_exact_mut(8);
-            let mut base: $f = 0.0;
-            for ch in &mut chunks {
-                for j in 0..8 {
-                    ch[j] *= f(base + OFF[j]);
-                }
-                base += 8.0;
-            }
-            for (j, o) in chunks.into_remainder().iter_mut().enumerate() {
-                *o *= f(base + OFF[j]);
-            }
+            chunked(out, |o, x| *o *= f(x));
         }
 
         /// `p0 + i·(t + (i − 1)/2·ds)` for `i = 0..len`.

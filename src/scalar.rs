@@ -169,7 +169,7 @@ impl_float_scalar!(f64, "f64", 1.0 / 1_099_511_627_776.0);
 /// `BigRational::to_f64` is correctly rounded; for `f32`, rounding through `f64`
 /// could round twice, so the candidates next to the `f64` result are compared
 /// exactly.
-fn nearest_float<T: FloatBits>(x: &BigRational) -> T {
+pub(crate) fn nearest_float<T: FloatBits>(x: &BigRational) -> T {
     let approx = T::from_f64_lossy(ToPrimitive::to_f64(x).unwrap_or(f64::NAN));
     if !approx.finite() {
         return approx;
@@ -194,7 +194,7 @@ fn dist<T: FloatBits>(x: &BigRational, f: T) -> BigRational {
 }
 
 /// The bit-level operations [`nearest_float`] needs.
-trait FloatBits: Copy {
+pub(crate) trait FloatBits: Copy {
     fn from_f64_lossy(v: f64) -> Self;
     fn finite(self) -> bool;
     fn step_up(self) -> Self;

@@ -7,12 +7,15 @@
 //! `(U + V) / (2 cos(θ/2))`, so `I_mid = (I_U + I_V) / (2 cos(θ/2))`, with one
 //! constant factor per level, `cos(θ/2^{j+1}) = √((1 + cos(θ/2^j))/2)`.
 //!
-//! What that gives (tests/related.rs): the segment ends and the first midpoint are
-//! Phong's values (`binary_exact_at_ends_and_first_midpoint`), but deeper
-//! subdivision points bisect the *angle*, so they are the spherical interpolation of
-//! [`crate::related::spherical`] between the segment ends, not Phong's
-//! (`binary_deeper_points_are_spherical_not_phong`). The literature note "exact Phong
-//! values at every binary subdivision point" holds only for the first level.
+//! What that gives (tests/related.rs): the segment ends are Phong's values
+//! (`binary_exact_at_ends_and_whole_span_midpoint`); every point inside a segment
+//! bisects the *angle* between the segment's unit end normals, so it is the
+//! spherical interpolation of [`crate::related::spherical`] between them
+//! (`binary_deeper_points_are_spherical_not_phong`). That equals Phong's value only
+//! at the midpoint of a segment whose ends have interpolated normals of equal length
+//! — the middle of a span whose `n` is a power of two. The literature note "exact
+//! Phong values at every binary subdivision point" holds at the segment ends and
+//! there, nowhere else (`binary_quarter_point_is_not_phong`).
 
 use crate::error::SpanError;
 use crate::scalar::Real;

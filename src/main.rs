@@ -2,6 +2,8 @@
 //!
 //! - `phong-approx span`: one scan line by one method in one number type.
 //! - `phong-approx reproduce`: the paper's Tables 1–2 and Figures 1–5.
+//! - `phong-approx compare`: every method of the paper and its related work, diffuse
+//!   and specular, in five precisions, with pictures (`docs/comparison.md`).
 //! - `phong-approx vectors` / `check`: the conformance kit.
 //!
 //! Bad input prints one line on stderr naming the argument and the problem and exits
@@ -26,6 +28,9 @@ enum Command {
     Span(cli::span::SpanArgs),
     /// Reproduce the paper's Tables 1–2 and Figures 1–5 on rotating tori.
     Reproduce(cli::reproduce::ReproduceArgs),
+    /// Compare every method (paper and related work) on the same tori: diffuse,
+    /// specular, precisions, pictures.
+    Compare(cli::compare::CompareArgs),
     /// Write the conformance test vectors (JSON and CSV) from the exact references.
     Vectors(cli::vectors::VectorsArgs),
     /// Check an implementation's results against a vector file (exit 0 pass, 1 fail).
@@ -40,6 +45,7 @@ fn main() -> ExitCode {
     let result = match cli.command {
         Command::Span(args) => cli::span::run(&args),
         Command::Reproduce(args) => cli::reproduce::run(&args),
+        Command::Compare(args) => cli::compare::run(&args),
         Command::Vectors(args) => cli::vectors::run(&args),
         Command::Check(args) => cli::check::run(&args),
     };

@@ -1,6 +1,7 @@
 //! Sub-commands of the CLI and their shared error type.
 
 pub mod check;
+pub mod compare;
 pub mod reproduce;
 pub mod span;
 pub mod vectors;

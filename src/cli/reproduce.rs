@@ -41,7 +41,7 @@ pub struct ReproduceArgs {
     pub exact_frames: String,
 }
 
-fn parse_size(s: &str) -> Result<(u32, u32), CliError> {
+pub(crate) fn parse_size(s: &str) -> Result<(u32, u32), CliError> {
     let bad = || CliError::arg("--size", format!("'{s}' is not WxH, e.g. 200x200"));
     let (w, h) = s.split_once(['x', 'X']).ok_or_else(bad)?;
     let w: u32 = w.trim().parse().map_err(|_| bad())?;
@@ -55,7 +55,7 @@ fn parse_size(s: &str) -> Result<(u32, u32), CliError> {
     Ok((w, h))
 }
 
-fn parse_radii(s: &str) -> Result<(f32, f32), CliError> {
+pub(crate) fn parse_radii(s: &str) -> Result<(f32, f32), CliError> {
     let bad = |why: &str| CliError::arg("--radii", format!("'{s}': {why}"));
     let (a, b) = s
         .split_once(',')
@@ -68,7 +68,7 @@ fn parse_radii(s: &str) -> Result<(f32, f32), CliError> {
     Ok((big, small))
 }
 
-fn prepare_out(dir: &Path) -> Result<(), CliError> {
+pub(crate) fn prepare_out(dir: &Path) -> Result<(), CliError> {
     let name = dir.display().to_string();
     fs::create_dir_all(dir)
         .map_err(|e| CliError::arg("--out", format!("cannot create {name}: {e}")))?;
@@ -79,7 +79,7 @@ fn prepare_out(dir: &Path) -> Result<(), CliError> {
     Ok(())
 }
 
-fn io_err(path: &Path, e: impl std::fmt::Display) -> CliError {
+pub(crate) fn io_err(path: &Path, e: impl std::fmt::Display) -> CliError {
     CliError {
         message: format!("{}: {e}", path.display()),
         code: 2,

@@ -8,8 +8,10 @@
 //! - [`experiment`]: the paper's Tables 1–2 over many frames, in parallel.
 //! - [`pictures`]: PNG renders and heat maps, SVG plots (Figures 1–5).
 
+pub mod compare;
 pub mod experiment;
 pub mod mesh;
 pub mod pictures;
+pub mod precision;
 pub mod render;
 pub mod scan;

@@ -123,7 +123,7 @@ impl Deviation {
         }
     }
 
-    fn merge(&mut self, o: &Deviation) {
+    pub(crate) fn merge(&mut self, o: &Deviation) {
         self.pixels += o.pixels;
         self.sum += o.sum;
         self.max = self.max.max(o.max);

@@ -1,0 +1,731 @@
+//! The comparison harness: every method of the paper and of its related work on the
+//! same rotating tori, diffuse and specular, against per-pixel Phong.
+//!
+//! Geometry: each quad of the paper's tori is drawn as two triangles (split along the
+//! diagonal from its first to its third vertex), because Bishop & Weimer's and
+//! Seiler's methods are defined over a triangle's affine normal field. Every
+//! attribute is evaluated at pixel centres from that field:
+//!
+//! - the reference, [`Shader::Phong`], normalizes the field's normal at each pixel
+//!   centre, in `f64`;
+//! - the span methods get the field's normal at the first and last covered pixel of
+//!   a row, normalized, as their `N_a` and `N_b` (so their span Phong differs from the
+//!   reference only by which normals are normalized: [`Shader::PhongSpan`] measures
+//!   it);
+//! - the polygon methods (vertex Gouraud, vertex angles, Bishop–Weimer, Seiler) set up
+//!   once per triangle and step along each row by forward differences.
+//!
+//! The Tables 1–2 reproduction ([`super::render`]) keeps the paper's quads and edge
+//! crossings; this harness answers the paper's future-work question.
+
+use super::mesh::Mesh;
+use super::render::{project, Deviation, Scene};
+use super::scan::{rows, ScreenVertex};
+use crate::adaptive::{self, Choice};
+use crate::angular::CosTable;
+use crate::quantize::level;
+use crate::related::bishop_weimer::Taylor;
+use crate::related::power::PowerTable;
+use crate::related::seiler::Quadratic;
+use crate::related::triangle::{Affine, Triangle};
+use crate::related::{binary, spherical, vertex_angle};
+use crate::scalar::Real;
+use crate::{Method, Span, Vec3};
+use glam::Vec3 as G3;
+
+/// The shininess values of the specular tables.
+pub const SHININESS: [u32; 3] = [10, 50, 200];
+
+/// A column of the comparison.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Shader {
+    /// Phong, the normal of the polygon's field normalized at every pixel (reference).
+    Phong,
+    /// The paper's span Phong: unit edge normals, `p/√q` per pixel (eq. 4).
+    PhongSpan,
+    /// Duff's forward differences (eqs. 5–7).
+    Duff,
+    /// Half the square roots (§4).
+    SymmetricPhong,
+    /// Behrens' fence shading: exact at the span's edges, linear between.
+    Fence,
+    /// Classic Gouraud: vertex intensities interpolated over the polygon.
+    VertexGouraud,
+    /// Euler (eqs. 12–14).
+    Euler,
+    /// Corrected Euler (eqs. 15–17).
+    CorrectedEuler,
+    /// §5's adaptive scheme: Gouraud where the δ test allows, else corrected Euler.
+    Adaptive,
+    /// The second source at span level: cosine of the linearly interpolated angle.
+    Angular,
+    /// The same with the 256-entry cosine table.
+    AngularTable,
+    /// The second source as meant: vertex angles over the polygon, byte table.
+    VertexAngle,
+    /// Kuijk & Blake: spherical interpolation, Chebyshev recurrence.
+    Spherical,
+    /// Ouyang & Maynard: binary interpolation.
+    Binary,
+    /// Bishop & Weimer: 2-D Taylor expansion at the centroid, forward differences.
+    BishopWeimer,
+    /// Seiler: six-point quadratic, forward differences.
+    Seiler,
+}
+
+impl Shader {
+    /// Every column, the reference first.
+    pub const ALL: [Shader; 16] = [
+        Shader::Phong,
+        Shader::PhongSpan,
+        Shader::Duff,
+        Shader::SymmetricPhong,
+        Shader::Fence,
+        Shader::VertexGouraud,
+        Shader::Euler,
+        Shader::CorrectedEuler,
+        Shader::Adaptive,
+        Shader::Angular,
+        Shader::AngularTable,
+        Shader::VertexAngle,
+        Shader::Spherical,
+        Shader::Binary,
+        Shader::BishopWeimer,
+        Shader::Seiler,
+    ];
+
+    /// A short label for tables and file names.
+    pub fn label(self) -> &'static str {
+        match self {
+            Shader::Phong => "phong",
+            Shader::PhongSpan => "phong-span",
+            Shader::Duff => "duff",
+            Shader::SymmetricPhong => "symmetric-phong",
+            Shader::Fence => "fence",
+            Shader::VertexGouraud => "gouraud-vertex",
+            Shader::Euler => "euler",
+            Shader::CorrectedEuler => "corrected-euler",
+            Shader::Adaptive => "adaptive",
+            Shader::Angular => "angular-span",
+            Shader::AngularTable => "angular-span-table",
+            Shader::VertexAngle => "vertex-angle",
+            Shader::Spherical => "spherical",
+            Shader::Binary => "binary",
+            Shader::BishopWeimer => "bishop-weimer",
+            Shader::Seiler => "seiler",
+        }
+    }
+
+    /// Who the method is by.
+    pub fn source(self) -> &'static str {
+        match self {
+            Shader::Phong | Shader::PhongSpan => "Phong 1975",
+            Shader::Duff => "Duff 1979",
+            Shader::SymmetricPhong | Shader::Euler | Shader::CorrectedEuler | Shader::Adaptive => {
+                "Hast, Barrera, Bengtsson"
+            }
+            Shader::Fence => "Behrens 1994",
+            Shader::VertexGouraud => "Gouraud 1971",
+            Shader::Angular | Shader::AngularTable | Shader::VertexAngle => "Mortensen 1995",
+            Shader::Spherical => "Kuijk & Blake 1989",
+            Shader::Binary => "Ouyang & Maynard 1996",
+            Shader::BishopWeimer => "Bishop & Weimer 1986",
+            Shader::Seiler => "Seiler 1998",
+        }
+    }
+
+    /// Whether part of the method is a reconstruction (see `docs/comparison.md`).
+    pub fn reconstructed(self) -> bool {
+        matches!(self, Shader::Spherical | Shader::Binary | Shader::Seiler)
+    }
+
+    /// Whether the method reads the specular power from a table (Bishop–Weimer and
+    /// Seiler: [`PowerTable`]; the vertex-angle method: its byte table holds `cos`, so
+    /// the power of the looked-up value is the table of `cos^s`).
+    pub fn power_from_table(self) -> bool {
+        matches!(self, Shader::BishopWeimer | Shader::Seiler)
+    }
+
+    /// The position in [`Shader::ALL`].
+    pub fn index(self) -> usize {
+        Shader::ALL.iter().position(|s| *s == self).expect("in ALL")
+    }
+}
+
+/// One triangle set up for one direction (`L` or `H`).
+pub(crate) struct Direction<T> {
+    dir: Vec3<T>,
+    vertex: [T; 3],
+    gouraud: Affine<T>,
+    angle: Affine<T>,
+    taylor: Taylor<T>,
+    seiler: Quadratic<T>,
+}
+
+/// One triangle set up in `T`.
+pub(crate) struct TriangleSetup<T> {
+    lambda: [Affine<T>; 3],
+    field: (Vec3<T>, Vec3<T>, Vec3<T>),
+    dirs: Vec<Direction<T>>,
+}
+
+fn to_vec<T: Real>(v: G3) -> Option<Vec3<T>> {
+    Vec3::new(f64::from(v.x), f64::from(v.y), f64::from(v.z)).cast()
+}
+
+fn to_t<T: Real>(v: f64) -> T {
+    let r = crate::BigRational::from_float(v).unwrap_or_default();
+    T::from_rational(&r)
+}
+
+impl<T: Real> TriangleSetup<T> {
+    /// `rel`: vertex positions relative to the centroid (computed in `f64`);
+    /// `normals`: unit vertex normals; `dirs`: unit directions.
+    pub(crate) fn new(rel: [(f64, f64); 3], normals: [G3; 3], dirs: &[G3]) -> Option<Self> {
+        let tri = Triangle::new(rel.map(|(x, y)| (to_t::<T>(x), to_t::<T>(y)))).ok()?;
+        // Unit in `T`: normalized after the conversion.
+        let nrm = [
+            to_vec::<T>(normals[0])?.normalize(),
+            to_vec::<T>(normals[1])?.normalize(),
+            to_vec::<T>(normals[2])?.normalize(),
+        ];
+        let field = tri.normal_field(&nrm);
+        let mut out = Vec::with_capacity(dirs.len());
+        for d in dirs {
+            let dir = to_vec::<T>(*d)?.normalize();
+            let vertex = [nrm[0].dot(&dir), nrm[1].dot(&dir), nrm[2].dot(&dir)];
+            let gouraud = tri.affine(&vertex);
+            let angle = vertex_angle::angle_field(&tri, &nrm, &dir);
+            // Centroid-relative: the expansion point is (0, 0).
+            let taylor = Taylor::new(&field.0, &field.1, &field.2, &dir).ok()?;
+            let seiler = Quadratic::from_normals(&tri, &nrm, &dir).ok()?;
+            out.push(Direction {
+                dir,
+                vertex,
+                gouraud,
+                angle,
+                taylor,
+                seiler,
+            });
+        }
+        Some(TriangleSetup {
+            lambda: tri.lambda.clone(),
+            field,
+            dirs: out,
+        })
+    }
+
+    fn normal(&self, x: &T, y: &T) -> Vec3<T> {
+        self.field
+            .0
+            .scale(x)
+            .add(&self.field.1.scale(y))
+            .add(&self.field.2)
+    }
+}
+
+/// What a row gives beyond its values.
+pub(crate) struct RowInfo<T> {
+    /// The adaptive pick (Gouraud for a one-pixel row).
+    choice: Choice,
+    /// The exact values at the row's first and last pixel (the fence's samples).
+    edges: (T, T),
+}
+
+/// Shades one row of `n + 1` pixels starting at centroid-relative `(x0, y)` for
+/// direction `d`, for every shader in `which`, into `out[shader index]`.
+#[allow(clippy::too_many_arguments)]
+pub(crate) fn shade_row<T: Real>(
+    s: &TriangleSetup<T>,
+    d: usize,
+    x0: f64,
+    y: f64,
+    n: u32,
+    table: &CosTable<T>,
+    which: &[Shader],
+    out: &mut [Vec<T>],
+) -> Option<RowInfo<T>> {
+    let dir = &s.dirs[d];
+    let len = n as usize + 1;
+    let (tx0, ty) = (to_t::<T>(x0), to_t::<T>(y));
+    let txn = to_t::<T>(x0 + f64::from(n));
+    let unit = |v: Vec3<T>| -> Option<Vec3<T>> {
+        let l2 = v.length_squared();
+        if l2 <= T::zero() || !l2.is_finite() {
+            None
+        } else {
+            Some(v.div(&l2.sqrt()))
+        }
+    };
+    let na = unit(s.normal(&tx0, &ty))?;
+    let nb = unit(s.normal(&txn, &ty))?;
+    let span = if n >= 1 {
+        // Normalized in `T`: unit within rounding (within 2^-200 for rationals, whose
+        // square roots are not exact).
+        let tol = T::unit_tolerance()
+            + T::from_rational(&crate::BigRational::new(
+                1.into(),
+                num_bigint::BigInt::from(1) << 200,
+            ));
+        Some(Span::with_tolerance(na.clone(), nb.clone(), dir.dir.clone(), n, &tol).ok()?)
+    } else {
+        None
+    };
+    let p_a = na.dot(&dir.dir);
+    let p_b = nb.dot(&dir.dir);
+    let mut choice = Choice::Gouraud;
+    for &sh in which {
+        let o = &mut out[sh.index()];
+        o.clear();
+        o.resize(len, T::zero());
+        match (sh, &span) {
+            (Shader::Phong, _) => {
+                for (j, v) in o.iter_mut().enumerate() {
+                    let x = to_t::<T>(x0 + j as f64);
+                    *v = unit(s.normal(&x, &ty))?.dot(&dir.dir);
+                }
+            }
+            (Shader::VertexGouraud, _) => dir.gouraud.shade_row(&tx0, &ty, o),
+            (Shader::VertexAngle, _) => vertex_angle::shade_row(&dir.angle, table, &tx0, &ty, o),
+            (Shader::BishopWeimer, _) => dir.taylor.shade_row(&tx0, &ty, o),
+            (Shader::Seiler, _) => dir.seiler.shade_row(&tx0, &ty, o),
+            (_, None) => o[0] = p_a.clone(),
+            (sh, Some(span)) => {
+                let r = match sh {
+                    Shader::PhongSpan => Method::Phong.shade(span, o),
+                    Shader::Duff => Method::Duff.shade(span, o),
+                    Shader::SymmetricPhong => Method::SymmetricPhong.shade(span, o),
+                    Shader::Fence => Method::Gouraud.shade(span, o),
+                    Shader::Euler => Method::Euler.shade(span, o),
+                    Shader::CorrectedEuler => Method::CorrectedEuler.shade(span, o),
+                    Shader::Adaptive => adaptive::shade(span, &T::one(), o).map(|dec| {
+                        choice = dec.choice;
+                    }),
+                    Shader::Angular => crate::angular::shade(span, o),
+                    Shader::AngularTable => crate::angular::shade_table(span, table, o),
+                    Shader::Spherical => spherical::shade(span, o),
+                    Shader::Binary => binary::shade(span, o),
+                    _ => Ok(()),
+                };
+                r.ok()?;
+            }
+        }
+        if o.iter().any(|v| !v.is_finite()) {
+            return None;
+        }
+    }
+    Some(RowInfo {
+        choice,
+        edges: (p_a, p_b),
+    })
+}
+
+/// Per-shader accumulators of the comparison.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct CompareStats {
+    /// Diffuse: per shader of [`Shader::ALL`], deviation from the reference in levels.
+    pub diffuse: Vec<Deviation>,
+    /// Specular `max(0, N·H)^s`, per shininess of [`SHININESS`], per shader.
+    pub specular: Vec<Vec<Deviation>>,
+    /// Rows of two or more pixels (spans).
+    pub spans: u64,
+    /// Spans the diffuse δ test gives to Gouraud.
+    pub adaptive_gouraud: u64,
+    /// Per shininess: the δ test applied to `N·H` (K = 1).
+    pub specular_delta: Vec<DeltaCount>,
+    /// Rows dropped because some method could not shade them in this precision.
+    pub dropped_rows: u64,
+    /// Visible pixels.
+    pub pixels: u64,
+    /// Frames.
+    pub frames: u64,
+}
+
+/// How the δ test of eq. 24 fares on the specular term.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct DeltaCount {
+    /// Spans the test gives to Gouraud.
+    pub gouraud: u64,
+    /// … of which Gouraud's and corrected Euler's levels of `(N·H)^s` differ.
+    pub gouraud_but_differ: u64,
+    /// Spans given to corrected Euler although both give the same levels.
+    pub corrected_but_same: u64,
+}
+
+impl CompareStats {
+    fn empty() -> Self {
+        let cols = Shader::ALL.len();
+        CompareStats {
+            diffuse: vec![Deviation::default(); cols],
+            specular: vec![vec![Deviation::default(); cols]; SHININESS.len()],
+            specular_delta: vec![DeltaCount::default(); SHININESS.len()],
+            ..Default::default()
+        }
+    }
+
+    /// Adds `o` into `self`.
+    pub fn merge(&mut self, o: &CompareStats) {
+        if self.diffuse.is_empty() {
+            *self = CompareStats::empty();
+        }
+        for (a, b) in self.diffuse.iter_mut().zip(&o.diffuse) {
+            a.merge(b);
+        }
+        for (sa, sb) in self.specular.iter_mut().zip(&o.specular) {
+            for (a, b) in sa.iter_mut().zip(sb) {
+                a.merge(b);
+            }
+        }
+        for (a, b) in self.specular_delta.iter_mut().zip(&o.specular_delta) {
+            a.gouraud += b.gouraud;
+            a.gouraud_but_differ += b.gouraud_but_differ;
+            a.corrected_but_same += b.corrected_but_same;
+        }
+        self.spans += o.spans;
+        self.adaptive_gouraud += o.adaptive_gouraud;
+        self.dropped_rows += o.dropped_rows;
+        self.pixels += o.pixels;
+        self.frames += o.frames;
+    }
+
+    /// The share of spans the diffuse δ test gives to Gouraud, in percent.
+    pub fn adaptive_gouraud_percent(&self) -> f64 {
+        if self.spans == 0 {
+            0.0
+        } else {
+            100.0 * self.adaptive_gouraud as f64 / self.spans as f64
+        }
+    }
+}
+
+/// Options of [`render_compare`].
+#[derive(Clone, Copy, Debug, Default)]
+pub struct CompareOptions {
+    /// Keep per-pixel pictures (levels of [`PICTURE_LOOK`]).
+    pub pictures: bool,
+    /// The shininess of the pictures, as an index into [`SHININESS`].
+    pub shininess: usize,
+}
+
+/// The lighting of the pictures: `K_a + K_d·diffuse + K_s·specular`, clamped to 1.
+pub const PICTURE_LOOK: (f64, f64, f64) = (0.08, 0.75, 0.5);
+
+/// One frame of the comparison.
+#[derive(Clone, Debug)]
+pub struct CompareFrame {
+    /// Width.
+    pub width: u32,
+    /// Height.
+    pub height: u32,
+    /// Per shader, per pixel: the picture level (only with
+    /// [`CompareOptions::pictures`]; the reference is [`Shader::Phong`]'s).
+    pub picture: Vec<Vec<Option<u8>>>,
+    /// The statistics.
+    pub stats: CompareStats,
+}
+
+/// The specular power of shader `sh` applied to `v` (its base value of `N·H`).
+fn power(sh: Shader, v: f64, table: &PowerTable) -> f64 {
+    if sh.power_from_table() {
+        table.lookup(v)
+    } else if v <= 0.0 {
+        0.0
+    } else {
+        v.powi(table.shininess as i32)
+    }
+}
+
+/// Levels of one row for one shader: diffuse, and specular per shininess.
+type RowLevels = Vec<[u8; 4]>;
+
+/// Renders frame `f` of `mesh` in `scene` with every shader in `f32` (the reference in
+/// `f64`) and measures the deviations.
+pub fn render_compare(mesh: &Mesh, scene: &Scene, f: u32, opts: CompareOptions) -> CompareFrame {
+    let (w, h) = (scene.width, scene.height);
+    let npix = (w * h) as usize;
+    let cols = Shader::ALL.len();
+    let rot = scene.rotation(f);
+    let verts = project(mesh, scene, &rot);
+    let dirs = [scene.light, scene.half()];
+    let table32 = CosTable::<f32>::new(256).expect("256 entries");
+    let table64 = CosTable::<f64>::new(256).expect("256 entries");
+    let powers: Vec<PowerTable> = SHININESS.iter().map(|&s| PowerTable::new(s)).collect();
+    let mut depth = vec![f32::NEG_INFINITY; npix];
+    // Per pixel: per shader the four levels; the reference's levels.
+    let mut levels: Vec<Option<Vec<[u8; 4]>>> = vec![None; npix];
+    let mut picture = if opts.pictures {
+        vec![vec![None; npix]; cols]
+    } else {
+        Vec::new()
+    };
+    let mut stats = CompareStats::empty();
+    stats.frames = 1;
+    let mut out32: Vec<Vec<f32>> = vec![Vec::new(); cols];
+    let mut out64: Vec<Vec<f64>> = vec![Vec::new(); cols];
+    let mut spec32: Vec<Vec<f32>> = vec![Vec::new(); cols];
+    let mut spec64: Vec<Vec<f64>> = vec![Vec::new(); cols];
+    for q in &mesh.quads {
+        let p: Vec<G3> = q
+            .iter()
+            .map(|&i| rot * mesh.positions[i as usize])
+            .collect();
+        if (p[2] - p[0]).cross(p[3] - p[1]).z <= 0.0 {
+            continue;
+        }
+        for t in [[q[0], q[1], q[2]], [q[0], q[2], q[3]]] {
+            let v: [ScreenVertex; 3] = t.map(|i| verts[i as usize]);
+            let (xc, yc) = (
+                (f64::from(v[0].x) + f64::from(v[1].x) + f64::from(v[2].x)) / 3.0,
+                (f64::from(v[0].y) + f64::from(v[1].y) + f64::from(v[2].y)) / 3.0,
+            );
+            let rel = v.map(|s| (f64::from(s.x) - xc, f64::from(s.y) - yc));
+            let normals = v.map(|s| s.normal.normalize());
+            let (Some(s32), Some(s64)) = (
+                TriangleSetup::<f32>::new(rel, normals, &dirs),
+                TriangleSetup::<f64>::new(rel, normals, &dirs),
+            ) else {
+                continue;
+            };
+            rows(&v, w, h, |row| {
+                let n = (row.x_last - row.x_first) as u32;
+                let x0 = f64::from(row.x_first) + 0.5 - xc;
+                let y = f64::from(row.y) + 0.5 - yc;
+                let Some(d32) = shade_row(&s32, 0, x0, y, n, &table32, &Shader::ALL, &mut out32)
+                else {
+                    stats.dropped_rows += 1;
+                    return;
+                };
+                let Some(_) = shade_row(&s64, 0, x0, y, n, &table64, &[Shader::Phong], &mut out64)
+                else {
+                    stats.dropped_rows += 1;
+                    return;
+                };
+                let Some(h32) = shade_row(&s32, 1, x0, y, n, &table32, &Shader::ALL, &mut spec32)
+                else {
+                    stats.dropped_rows += 1;
+                    return;
+                };
+                let Some(_) = shade_row(&s64, 1, x0, y, n, &table64, &[Shader::Phong], &mut spec64)
+                else {
+                    stats.dropped_rows += 1;
+                    return;
+                };
+                let len = n as usize + 1;
+                let row_levels = row_levels(
+                    &out32, &out64, &spec32, &spec64, &s32, 1, &h32, x0, y, len, &powers,
+                );
+                if n >= 1 {
+                    stats.spans += 1;
+                    stats.adaptive_gouraud += u64::from(d32.choice == Choice::Gouraud);
+                    // The δ test on N·H, and what the power does to it.
+                    // Gouraud of N·H (the δ test's alternative: the linear N·H, power
+                    // per pixel) against corrected Euler's levels of (N·H)^s.
+                    let ce = &row_levels[Shader::CorrectedEuler.index()];
+                    let lin = &spec32[Shader::Fence.index()];
+                    for (k, pt) in powers.iter().enumerate() {
+                        let same = lin.iter().zip(ce.iter()).all(|(a, c)| {
+                            level(&power(Shader::Euler, f64::from(*a), pt)) == c[k + 1]
+                        });
+                        let dc = &mut stats.specular_delta[k];
+                        if h32.choice == Choice::Gouraud {
+                            dc.gouraud += 1;
+                            dc.gouraud_but_differ += u64::from(!same);
+                        } else {
+                            dc.corrected_but_same += u64::from(same);
+                        }
+                    }
+                }
+                for (j, x) in (row.x_first..=row.x_last).enumerate() {
+                    let idx = (row.y as u32 * w + x as u32) as usize;
+                    let z = plane_z(&v, f64::from(x) + 0.5, f64::from(row.y) + 0.5);
+                    if z > depth[idx] {
+                        depth[idx] = z;
+                        levels[idx] = Some(row_levels.iter().map(|l| l[j]).collect());
+                        if opts.pictures {
+                            let (ka, kd, ks) = PICTURE_LOOK;
+                            let si = opts.shininess.min(SHININESS.len() - 1);
+                            for c in 0..cols {
+                                let (dv, sv) = if c == 0 {
+                                    (out64[0][j], power(Shader::Phong, spec64[0][j], &powers[si]))
+                                } else {
+                                    let sh = Shader::ALL[c];
+                                    (
+                                        f64::from(out32[c][j]),
+                                        specular_value(
+                                            sh,
+                                            &spec32[c],
+                                            &s32,
+                                            &h32,
+                                            x0,
+                                            y,
+                                            j,
+                                            n,
+                                            &powers[si],
+                                        ),
+                                    )
+                                };
+                                let i = ka + kd * dv.max(0.0) + ks * sv;
+                                picture[c][idx] = Some(level(&i));
+                            }
+                        }
+                    }
+                }
+            });
+        }
+    }
+    for px in levels.iter().flatten() {
+        stats.pixels += 1;
+        let r = px[0];
+        for (c, l) in px.iter().enumerate() {
+            add(&mut stats.diffuse[c], l[0], r[0]);
+            for k in 0..SHININESS.len() {
+                add(&mut stats.specular[k][c], l[k + 1], r[k + 1]);
+            }
+        }
+    }
+    CompareFrame {
+        width: w,
+        height: h,
+        picture,
+        stats,
+    }
+}
+
+fn add(d: &mut Deviation, a: u8, b: u8) {
+    let x = u32::from(a.abs_diff(b));
+    d.pixels += 1;
+    d.sum += u64::from(x);
+    d.max = d.max.max(x);
+}
+
+/// Depth at `(x, y)` on the triangle's plane (barycentric, in `f64`).
+fn plane_z(v: &[ScreenVertex; 3], x: f64, y: f64) -> f32 {
+    let (x0, y0) = (f64::from(v[0].x), f64::from(v[0].y));
+    let (x1, y1) = (f64::from(v[1].x), f64::from(v[1].y));
+    let (x2, y2) = (f64::from(v[2].x), f64::from(v[2].y));
+    let det = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0);
+    if det == 0.0 {
+        return v[0].z;
+    }
+    let l1 = ((x - x0) * (y2 - y0) - (x2 - x0) * (y - y0)) / det;
+    let l2 = ((x1 - x0) * (y - y0) - (x - x0) * (y1 - y0)) / det;
+    let z = f64::from(v[0].z) * (1.0 - l1 - l2) + f64::from(v[1].z) * l1 + f64::from(v[2].z) * l2;
+    z as f32
+}
+
+/// The specular value (after the power) of shader `sh` at pixel `j` of a row.
+#[allow(clippy::too_many_arguments)]
+fn specular_value(
+    sh: Shader,
+    base: &[f32],
+    s: &TriangleSetup<f32>,
+    info: &RowInfo<f32>,
+    x0: f64,
+    y: f64,
+    j: usize,
+    n: u32,
+    pt: &PowerTable,
+) -> f64 {
+    match sh {
+        // Behrens: the exact intensity at the span's edges, linear between.
+        Shader::Fence => {
+            let (a, b) = (
+                power(sh, f64::from(info.edges.0), pt),
+                power(sh, f64::from(info.edges.1), pt),
+            );
+            if n == 0 {
+                a
+            } else {
+                a + (b - a) * (j as f64 / f64::from(n))
+            }
+        }
+        // Gouraud: the vertex intensities interpolated.
+        Shader::VertexGouraud => {
+            let d = &s.dirs[1];
+            let powered = d.vertex.map(|v| power(sh, f64::from(v), pt));
+            let (x, y) = ((x0 + j as f64) as f32, y as f32);
+            s.lambda
+                .iter()
+                .zip(&powered)
+                .map(|(l, v)| f64::from(l.at(&x, &y)) * v)
+                .sum()
+        }
+        _ => power(sh, f64::from(base[j]), pt),
+    }
+}
+
+/// The levels of one row for every shader: diffuse, then specular per shininess.
+#[allow(clippy::too_many_arguments)]
+fn row_levels(
+    out32: &[Vec<f32>],
+    out64: &[Vec<f64>],
+    spec32: &[Vec<f32>],
+    spec64: &[Vec<f64>],
+    s32: &TriangleSetup<f32>,
+    _d: usize,
+    h32: &RowInfo<f32>,
+    x0: f64,
+    y: f64,
+    len: usize,
+    powers: &[PowerTable],
+) -> Vec<RowLevels> {
+    let n = (len - 1) as u32;
+    Shader::ALL
+        .iter()
+        .enumerate()
+        .map(|(c, &sh)| {
+            (0..len)
+                .map(|j| {
+                    let mut l = [0u8; 4];
+                    if c == 0 {
+                        l[0] = level(&out64[0][j]);
+                        for (k, pt) in powers.iter().enumerate() {
+                            l[k + 1] = level(&power(Shader::Phong, spec64[0][j], pt));
+                        }
+                    } else {
+                        l[0] = level(&out32[c][j]);
+                        for (k, pt) in powers.iter().enumerate() {
+                            let v = specular_value(sh, &spec32[c], s32, h32, x0, y, j, n, pt);
+                            l[k + 1] = level(&v);
+                        }
+                    }
+                    l
+                })
+                .collect()
+        })
+        .collect()
+}
+
+/// The comparison over one torus.
+#[derive(Clone, Debug)]
+pub struct CompareResult {
+    /// Polygons (quads) of the torus.
+    pub polygons: u32,
+    /// Merged statistics.
+    pub stats: CompareStats,
+}
+
+/// Runs the comparison on every paper torus over `exp.frames` frames, in parallel;
+/// `tick` is called once per finished frame.
+pub fn run(exp: &super::experiment::Experiment, tick: &(dyn Fn() + Sync)) -> Vec<CompareResult> {
+    use rayon::prelude::*;
+    let scene = exp.scene();
+    super::mesh::paper_tori()
+        .iter()
+        .map(|&(polygons, ring, tube)| {
+            let mesh = exp.mesh(ring, tube);
+            let stats = (0..exp.frames)
+                .into_par_iter()
+                .map(|f| {
+                    let s = render_compare(&mesh, &scene, f, CompareOptions::default()).stats;
+                    tick();
+                    s
+                })
+                .reduce(CompareStats::default, |mut a, b| {
+                    a.merge(&b);
+                    a
+                });
+            CompareResult { polygons, stats }
+        })
+        .collect()
+}

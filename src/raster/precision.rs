@@ -1,0 +1,323 @@
+//! Low precision: every method in `f64`, `f32`, binary16 and fixed point
+//! ([`crate::lowp`]), on the torus harness and on long spans.
+//!
+//! - [`torus`]: the diffuse value of every shader of [`Shader::ALL`] over the
+//!   800-polygon torus, set up and stepped entirely in the precision under test (pixel
+//!   coordinates are taken relative to each triangle's centroid in `f64` first, as an
+//!   integer rasterizer would), against per-pixel Phong in `f64` and against the same
+//!   method in `f64`.
+//! - [`longest_spans`]: per span method, the longest span before the recurrence's
+//!   accumulated error exceeds one 8-bit level: the set-up computed in `f64` and
+//!   rounded to the precision ([`Span::cast`]), the steps in the precision.
+
+use super::compare::{shade_row, Shader, TriangleSetup};
+use super::mesh::Mesh;
+use super::render::{project, Deviation, Scene};
+use super::scan::{rows, ScreenVertex};
+use crate::angular::CosTable;
+use crate::lowp::{f16, I16F16, I8F8};
+use crate::quantize::level;
+use crate::related::{binary, bishop_weimer, spherical};
+use crate::scalar::Real;
+use crate::{Method, Span, Vec3};
+use glam::Vec3 as G3;
+
+/// The precisions of the tables, widest first.
+pub const PRECISIONS: [&str; 5] = ["f64", "f32", "f16", "I16F16", "I8F8"];
+
+/// Per shader, in one precision.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct PrecisionStats {
+    /// Per shader of [`Shader::ALL`]: levels against per-pixel Phong in `f64`.
+    pub vs_phong: Vec<Deviation>,
+    /// Per shader: levels against the same shader in `f64` (the arithmetic's own
+    /// error).
+    pub vs_f64: Vec<Deviation>,
+    /// Per shader: rows the precision could not shade (a set-up that fails, a
+    /// non-finite value); the `f64` run shades them all.
+    pub failed_rows: Vec<u64>,
+    /// Rows shaded in `f64`.
+    pub rows: u64,
+}
+
+impl PrecisionStats {
+    fn empty() -> Self {
+        let c = Shader::ALL.len();
+        PrecisionStats {
+            vs_phong: vec![Deviation::default(); c],
+            vs_f64: vec![Deviation::default(); c],
+            failed_rows: vec![0; c],
+            rows: 0,
+        }
+    }
+
+    /// Adds `o` into `self`.
+    pub fn merge(&mut self, o: &PrecisionStats) {
+        if self.vs_phong.is_empty() {
+            *self = PrecisionStats::empty();
+        }
+        for (a, b) in self.vs_phong.iter_mut().zip(&o.vs_phong) {
+            a.merge(b);
+        }
+        for (a, b) in self.vs_f64.iter_mut().zip(&o.vs_f64) {
+            a.merge(b);
+        }
+        for (a, b) in self.failed_rows.iter_mut().zip(&o.failed_rows) {
+            *a += b;
+        }
+        self.rows += o.rows;
+    }
+}
+
+fn add(d: &mut Deviation, a: u8, b: u8) {
+    let x = u32::from(a.abs_diff(b));
+    d.pixels += 1;
+    d.sum += u64::from(x);
+    d.max = d.max.max(x);
+}
+
+/// Every drawn row of front-facing triangles of frame `f` (no depth test: every
+/// span counts), each shader in `T` against `f64`.
+pub fn frame<T: Real>(mesh: &Mesh, scene: &Scene, f: u32) -> PrecisionStats {
+    let rot = scene.rotation(f);
+    let verts = project(mesh, scene, &rot);
+    let dirs = [scene.light];
+    let table_t = CosTable::<T>::new(256).expect("256 entries");
+    let table64 = CosTable::<f64>::new(256).expect("256 entries");
+    let cols = Shader::ALL.len();
+    let mut st = PrecisionStats::empty();
+    let mut out_t: Vec<Vec<T>> = vec![Vec::new(); cols];
+    let mut out64: Vec<Vec<f64>> = vec![Vec::new(); cols];
+    let mut one: Vec<Vec<T>> = vec![Vec::new(); cols];
+    for q in &mesh.quads {
+        let p: Vec<G3> = q
+            .iter()
+            .map(|&i| rot * mesh.positions[i as usize])
+            .collect();
+        if (p[2] - p[0]).cross(p[3] - p[1]).z <= 0.0 {
+            continue;
+        }
+        for t in [[q[0], q[1], q[2]], [q[0], q[2], q[3]]] {
+            let v: [ScreenVertex; 3] = t.map(|i| verts[i as usize]);
+            let xc = (f64::from(v[0].x) + f64::from(v[1].x) + f64::from(v[2].x)) / 3.0;
+            let yc = (f64::from(v[0].y) + f64::from(v[1].y) + f64::from(v[2].y)) / 3.0;
+            let rel = v.map(|s| (f64::from(s.x) - xc, f64::from(s.y) - yc));
+            let normals = v.map(|s| s.normal.normalize());
+            let Some(s64) = TriangleSetup::<f64>::new(rel, normals, &dirs) else {
+                continue;
+            };
+            let st_t = TriangleSetup::<T>::new(rel, normals, &dirs);
+            rows(&v, scene.width, scene.height, |row| {
+                let n = (row.x_last - row.x_first) as u32;
+                let x0 = f64::from(row.x_first) + 0.5 - xc;
+                let y = f64::from(row.y) + 0.5 - yc;
+                if shade_row(&s64, 0, x0, y, n, &table64, &Shader::ALL, &mut out64).is_none() {
+                    return;
+                }
+                st.rows += 1;
+                let reference: Vec<u8> = out64[0].iter().map(level).collect();
+                // All shaders at once; if that fails, each alone, to count per shader.
+                let all_ok = st_t
+                    .as_ref()
+                    .and_then(|s| shade_row(s, 0, x0, y, n, &table_t, &Shader::ALL, &mut out_t))
+                    .is_some();
+                for (c, &sh) in Shader::ALL.iter().enumerate() {
+                    let values: &[T] = if all_ok {
+                        &out_t[c]
+                    } else {
+                        let ok = st_t
+                            .as_ref()
+                            .and_then(|s| shade_row(s, 0, x0, y, n, &table_t, &[sh], &mut one))
+                            .is_some();
+                        if !ok {
+                            st.failed_rows[c] += 1;
+                            continue;
+                        }
+                        &one[c]
+                    };
+                    for (j, val) in values.iter().enumerate() {
+                        // The level of the value the precision holds, taken exactly (a
+                        // quantizer in 8.8 cannot even form 255·v).
+                        let l = level(&val.to_f64());
+                        add(&mut st.vs_phong[c], l, reference[j]);
+                        add(&mut st.vs_f64[c], l, level(&out64[c][j]));
+                    }
+                }
+            });
+        }
+    }
+    st
+}
+
+/// [`frame`] over frames `0..frames` for the precision named `name` (one of
+/// [`PRECISIONS`]), frames in parallel; `None` for an unknown name.
+pub fn torus(
+    mesh: &Mesh,
+    scene: &Scene,
+    frames: u32,
+    name: &str,
+    tick: &(dyn Fn() + Sync),
+) -> Option<PrecisionStats> {
+    use rayon::prelude::*;
+    fn go<T: Real>(
+        mesh: &Mesh,
+        scene: &Scene,
+        frames: u32,
+        tick: &(dyn Fn() + Sync),
+    ) -> PrecisionStats {
+        (0..frames)
+            .into_par_iter()
+            .map(|f| {
+                let s = frame::<T>(mesh, scene, f);
+                tick();
+                s
+            })
+            .reduce(PrecisionStats::default, |mut a, b| {
+                a.merge(&b);
+                a
+            })
+    }
+    Some(match name {
+        "f64" => go::<f64>(mesh, scene, frames, tick),
+        "f32" => go::<f32>(mesh, scene, frames, tick),
+        "f16" => go::<f16>(mesh, scene, frames, tick),
+        "I16F16" => go::<I16F16>(mesh, scene, frames, tick),
+        "I8F8" => go::<I8F8>(mesh, scene, frames, tick),
+        _ => return None,
+    })
+}
+
+/// The span methods of the long-span study (the polygon methods step along a row by
+/// the same additions as the fence (vertex Gouraud, vertex angles) or as
+/// Bishop–Weimer (Seiler)).
+pub const SPAN_SHADERS: [Shader; 12] = [
+    Shader::PhongSpan,
+    Shader::Duff,
+    Shader::SymmetricPhong,
+    Shader::Fence,
+    Shader::Euler,
+    Shader::CorrectedEuler,
+    Shader::Adaptive,
+    Shader::Angular,
+    Shader::AngularTable,
+    Shader::Spherical,
+    Shader::Binary,
+    Shader::BishopWeimer,
+];
+
+/// The span lengths tried by [`longest_spans`].
+pub const SPAN_LENGTHS: [u32; 13] = [1, 2, 4, 8, 16, 32, 64, 128, 256, 512, 1024, 2048, 4096];
+
+/// Shades `span` with span shader `sh`.
+pub fn shade_span<T: Real>(
+    sh: Shader,
+    span: &Span<T>,
+    table: &CosTable<T>,
+    out: &mut [T],
+) -> Option<()> {
+    let r = match sh {
+        Shader::PhongSpan => Method::Phong.shade(span, out),
+        Shader::Duff => Method::Duff.shade(span, out),
+        Shader::SymmetricPhong => Method::SymmetricPhong.shade(span, out),
+        Shader::Fence => Method::Gouraud.shade(span, out),
+        Shader::Euler => Method::Euler.shade(span, out),
+        Shader::CorrectedEuler => Method::CorrectedEuler.shade(span, out),
+        Shader::Adaptive => Method::Adaptive.shade(span, out),
+        Shader::Angular => crate::angular::shade(span, out),
+        Shader::AngularTable => crate::angular::shade_table(span, table, out),
+        Shader::Spherical => spherical::shade(span, out),
+        Shader::Binary => binary::shade(span, out),
+        Shader::BishopWeimer => bishop_weimer::shade(span, out),
+        _ => return None,
+    };
+    r.ok()?;
+    out.iter().all(|v| v.is_finite()).then_some(())
+}
+
+/// The test spans of [`longest_spans`]: `count` unit normal pairs 5° to 45° apart,
+/// lights within 60° of `N_a`, from a fixed generator (reproducible).
+pub fn test_directions(count: usize) -> Vec<(Vec3<f64>, Vec3<f64>, Vec3<f64>)> {
+    let mut state = 0x2545_f491_4f6c_dd1du64;
+    let mut next = move || {
+        state ^= state << 13;
+        state ^= state >> 7;
+        state ^= state << 17;
+        (state >> 11) as f64 / (1u64 << 53) as f64
+    };
+    let mut out = Vec::with_capacity(count);
+    while out.len() < count {
+        let g = |a: f64, b: f64| glam::DVec3::new(a.sin() * b.cos(), a.sin() * b.sin(), a.cos());
+        let na = g(next() * 1.2, next() * std::f64::consts::TAU);
+        let axis = na.any_orthonormal_vector();
+        let axis = glam::DQuat::from_axis_angle(na, next() * std::f64::consts::TAU) * axis;
+        let angle = (5.0 + 40.0 * next()).to_radians();
+        let nb = glam::DQuat::from_axis_angle(axis, angle) * na;
+        let l_axis = glam::DQuat::from_axis_angle(na, next() * std::f64::consts::TAU)
+            * na.any_orthonormal_vector();
+        let l = glam::DQuat::from_axis_angle(l_axis, next() * 60f64.to_radians()) * na;
+        out.push((
+            Vec3::from(na),
+            Vec3::from(nb.normalize()),
+            Vec3::from(l.normalize()),
+        ));
+    }
+    out
+}
+
+/// For shader `sh` in `T`: the largest error (in units of one 8-bit level, 1/255)
+/// against the same shader in `f64`, per entry of [`SPAN_LENGTHS`], over
+/// `directions`; `None` where the precision could not shade some span.
+pub fn span_errors<T: Real>(
+    sh: Shader,
+    directions: &[(Vec3<f64>, Vec3<f64>, Vec3<f64>)],
+) -> Vec<Option<f64>> {
+    let table_t = CosTable::<T>::new(256).expect("256 entries");
+    let table64 = CosTable::<f64>::new(256).expect("256 entries");
+    SPAN_LENGTHS
+        .iter()
+        .map(|&n| {
+            let mut worst = 0.0f64;
+            for (na, nb, l) in directions {
+                let s64 = Span::<f64>::normalized(na.clone(), nb.clone(), l.clone(), n).ok()?;
+                let st: Span<T> = s64.cast()?;
+                let mut a = vec![0.0f64; s64.len()];
+                let mut b = vec![T::zero(); s64.len()];
+                shade_span(sh, &s64, &table64, &mut a)?;
+                shade_span(sh, &st, &table_t, &mut b)?;
+                for (x, y) in a.iter().zip(&b) {
+                    worst = worst.max((x - y.to_f64()).abs() * 255.0);
+                }
+            }
+            Some(worst)
+        })
+        .collect()
+}
+
+/// The longest entry of [`SPAN_LENGTHS`] up to which every error is at most one level
+/// (`None` if even `n = 1` fails), from [`span_errors`]'s output.
+pub fn longest(errors: &[Option<f64>]) -> Option<u32> {
+    let mut best = None;
+    for (n, e) in SPAN_LENGTHS.iter().zip(errors) {
+        match e {
+            Some(e) if *e <= 1.0 => best = Some(*n),
+            _ => break,
+        }
+    }
+    best
+}
+
+/// [`span_errors`] for the precision named `name`.
+pub fn span_errors_named(
+    sh: Shader,
+    name: &str,
+    directions: &[(Vec3<f64>, Vec3<f64>, Vec3<f64>)],
+) -> Option<Vec<Option<f64>>> {
+    Some(match name {
+        "f64" => span_errors::<f64>(sh, directions),
+        "f32" => span_errors::<f32>(sh, directions),
+        "f16" => span_errors::<f16>(sh, directions),
+        "I16F16" => span_errors::<I16F16>(sh, directions),
+        "I8F8" => span_errors::<I8F8>(sh, directions),
+        _ => return None,
+    })
+}

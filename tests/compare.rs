@@ -1,0 +1,176 @@
+//! The comparison harness (`phong-approx compare`): its reference against exact
+//! rationals, the relations the tables must show, and the command line.
+
+use phong_approx::raster::compare::{render_compare, CompareOptions, Shader, SHININESS};
+use phong_approx::raster::mesh::{torus, NormalMode};
+use phong_approx::raster::precision::{self, longest, SPAN_LENGTHS};
+use phong_approx::raster::render::Scene;
+use phong_approx::BigRational;
+use std::process::Command;
+
+fn small() -> (phong_approx::raster::mesh::Mesh, Scene) {
+    (
+        torus(24, 12, 1.0, 0.4, NormalMode::Analytic),
+        Scene::new(96, 96, 1.4),
+    )
+}
+
+/// The whole generic row pipeline run in exact rationals agrees with its `f64` run:
+/// the `f64` levels differ from the exact ones only where a value sits within
+/// rounding of a level boundary (rare), never by more than one level.
+#[test]
+fn f64_harness_agrees_with_exact_rationals() {
+    let (mesh, _) = small();
+    let scene = Scene::new(24, 24, 1.4);
+    let exact = precision::frame::<BigRational>(&mesh, &scene, 3);
+    assert!(exact.rows > 30, "too few rows: {}", exact.rows);
+    for (c, sh) in Shader::ALL.iter().enumerate() {
+        let d = &exact.vs_f64[c];
+        assert_eq!(exact.failed_rows[c], 0, "{}", sh.label());
+        assert!(d.pixels > 100, "{}: {} pixels", sh.label(), d.pixels);
+        assert!(d.max <= 1, "{}: max {}", sh.label(), d.max);
+        assert!(d.mean() < 0.01, "{}: mean {}", sh.label(), d.mean());
+    }
+}
+
+/// The relations the extended tables must show on one frame: the reference column
+/// is zero; the Phong-valued methods (span Phong, Duff, symmetric Phong, binary and
+/// spherical on fine spans) and corrected Euler within one level; every column over
+/// the same pixels; Euler and the fence worse than corrected Euler.
+#[test]
+fn one_frame_relations() {
+    let (mesh, scene) = small();
+    let f = render_compare(&mesh, &scene, 5, CompareOptions::default());
+    let st = &f.stats;
+    assert!(st.pixels > 1000);
+    assert_eq!(st.dropped_rows, 0);
+    let d = |s: Shader| &st.diffuse[s.index()];
+    assert_eq!(d(Shader::Phong).max, 0);
+    for k in 0..SHININESS.len() {
+        assert_eq!(st.specular[k][0].max, 0);
+    }
+    for s in [
+        Shader::PhongSpan,
+        Shader::Duff,
+        Shader::SymmetricPhong,
+        Shader::CorrectedEuler,
+    ] {
+        assert!(d(s).max <= 1, "{}: {}", s.label(), d(s).max);
+    }
+    for dev in &st.diffuse {
+        assert_eq!(dev.pixels, st.pixels);
+    }
+    assert!(d(Shader::Euler).mean() > d(Shader::CorrectedEuler).mean());
+    assert!(d(Shader::Fence).mean() > d(Shader::CorrectedEuler).mean());
+    assert!(d(Shader::VertexGouraud).mean() > d(Shader::Fence).mean());
+    assert!(st.adaptive_gouraud <= st.spans);
+    for dc in &st.specular_delta {
+        assert!(dc.gouraud_but_differ <= dc.gouraud && dc.gouraud <= st.spans);
+    }
+}
+
+/// The longest span is the last length before the first error above one level.
+#[test]
+fn longest_span_logic() {
+    let mut e: Vec<Option<f64>> = vec![Some(0.1); SPAN_LENGTHS.len()];
+    assert_eq!(longest(&e), Some(*SPAN_LENGTHS.last().unwrap()));
+    e[5] = Some(1.5);
+    assert_eq!(longest(&e), Some(SPAN_LENGTHS[4]));
+    e[2] = None;
+    assert_eq!(longest(&e), Some(SPAN_LENGTHS[1]));
+    e[0] = Some(2.0);
+    assert_eq!(longest(&e), None);
+}
+
+/// The test spans are what the table says: unit vectors, normals 5°–45° apart, light
+/// within 60° of `N_a`.
+#[test]
+fn long_span_directions() {
+    for (na, nb, l) in precision::test_directions(64) {
+        for v in [&na, &nb, &l] {
+            assert!((v.dot(v) - 1.0).abs() < 1e-12);
+        }
+        let a = na.dot(&nb).clamp(-1.0, 1.0).acos().to_degrees();
+        assert!((5.0 - 1e-9..=45.0 + 1e-9).contains(&a), "{a}");
+        let b = na.dot(&l).clamp(-1.0, 1.0).acos().to_degrees();
+        assert!(b <= 60.0 + 1e-9, "{b}");
+    }
+}
+
+/// In `f64` every span method stays within one level of itself at every length (the
+/// table's first column), and `I8F8` cannot hold even a one-step span's Phong value.
+#[test]
+fn long_span_extremes() {
+    let dirs = precision::test_directions(4);
+    for sh in precision::SPAN_SHADERS {
+        let e = precision::span_errors::<f64>(sh, &dirs);
+        assert_eq!(longest(&e), Some(4096), "{}", sh.label());
+    }
+    let e = precision::span_errors::<phong_approx::lowp::I8F8>(Shader::PhongSpan, &dirs);
+    assert!(e[0].unwrap() > 1.0);
+}
+
+#[test]
+fn cli_compare_writes_its_tables_and_pictures() {
+    let out = std::env::temp_dir().join(format!("phong-compare-{}", std::process::id()));
+    let o = Command::new(env!("CARGO_BIN_EXE_phong-approx"))
+        .args([
+            "compare",
+            "--frames",
+            "1",
+            "--precision-frames",
+            "1",
+            "--spans",
+            "2",
+            "--size",
+            "64x64",
+            "--out",
+        ])
+        .arg(&out)
+        .output()
+        .expect("runs");
+    assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+    let md = std::fs::read_to_string(out.join("comparison.md")).expect("comparison.md");
+    for sh in Shader::ALL {
+        assert!(
+            md.contains(&format!("| {} |", sh.label())),
+            "{}",
+            sh.label()
+        );
+    }
+    let csv = std::fs::read_to_string(out.join("table2_extended.csv")).expect("csv");
+    assert_eq!(
+        csv.lines().count(),
+        1 + 4 * Shader::ALL.len() * (1 + SHININESS.len())
+    );
+    for f in [
+        "precision.csv",
+        "longest_span.csv",
+        "grid.png",
+        "fig4_corrected_euler_s50.png",
+        "fig5_phong_s200.png",
+    ] {
+        assert!(out.join(f).exists(), "{f}");
+    }
+    let _ = std::fs::remove_dir_all(out);
+}
+
+#[test]
+fn cli_compare_rejects_bad_arguments() {
+    for (args, needle) in [
+        (vec!["--frames", "0"], "--frames"),
+        (vec!["--spans", "x"], "--spans"),
+        (vec!["--size", "5x5"], "--size"),
+        (vec!["--precision-frames", "-3"], "--precision-frames"),
+    ] {
+        let o = Command::new(env!("CARGO_BIN_EXE_phong-approx"))
+            .arg("compare")
+            .args(&args)
+            .output()
+            .expect("runs");
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        let err = String::from_utf8_lossy(&o.stderr);
+        assert_eq!(err.trim().lines().count(), 1, "{err}");
+        assert!(err.contains(needle), "{err}");
+    }
+}

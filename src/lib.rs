@@ -21,6 +21,12 @@
 //! | specular `(N·H)^s` | [`specular`] | eq. 1, §6.1 |
 //! | 8-bit levels | [`quantize`] | §6 |
 //!
+//! The methods of the paper's related work — Bishop & Weimer, Seiler, Kuijk & Blake,
+//! Mortensen's vertex angles, Ouyang & Maynard — are in [`related`]; low-precision
+//! scalars (binary16, 16.16 and 8.8 fixed point) in [`lowp`]; the comparison of all of
+//! them on the torus harness in [`raster::compare`] and [`raster::precision`]
+//! (`phong-approx compare`, `docs/comparison.md`).
+//!
 //! The set-up of a scan line (k, A, B, C, D, E, p_a, p_b, dq_a, dq_b, di_a, di_b, ds,
 //! p_n, ε, dε, t_0, d_p) lives in [`Span`].
 //!

@@ -464,22 +464,14 @@ pub fn render_compare(mesh: &Mesh, scene: &Scene, f: u32, opts: CompareOptions) 
     let mut out64: Vec<Vec<f64>> = vec![Vec::new(); cols];
     let mut spec32: Vec<Vec<f32>> = vec![Vec::new(); cols];
     let mut spec64: Vec<Vec<f64>> = vec![Vec::new(); cols];
-    for q in &mesh.quads {
-        let p: Vec<G3> = q
-            .iter()
-            .map(|&i| rot * mesh.positions[i as usize])
-            .collect();
-        if (p[2] - p[0]).cross(p[3] - p[1]).z <= 0.0 {
-            continue;
-        }
-        for t in [[q[0], q[1], q[2]], [q[0], q[2], q[3]]] {
-            let v: [ScreenVertex; 3] = t.map(|i| verts[i as usize]);
-            let (xc, yc) = (
-                (f64::from(v[0].x) + f64::from(v[1].x) + f64::from(v[2].x)) / 3.0,
-                (f64::from(v[0].y) + f64::from(v[1].y) + f64::from(v[2].y)) / 3.0,
-            );
-            let rel = v.map(|s| (f64::from(s.x) - xc, f64::from(s.y) - yc));
-            let normals = v.map(|s| s.normal.normalize());
+    for tri in front_triangles(mesh, &rot, &verts) {
+        {
+            let FrontTriangle {
+                v,
+                centre: (xc, yc),
+                rel,
+                normals,
+            } = tri;
             let (Some(s32), Some(s64)) = (
                 TriangleSetup::<f32>::new(rel, normals, &dirs),
                 TriangleSetup::<f64>::new(rel, normals, &dirs),
@@ -577,9 +569,9 @@ pub fn render_compare(mesh: &Mesh, scene: &Scene, f: u32, opts: CompareOptions) 
         stats.pixels += 1;
         let r = px[0];
         for (c, l) in px.iter().enumerate() {
-            add(&mut stats.diffuse[c], l[0], r[0]);
+            stats.diffuse[c].add(l[0], r[0]);
             for k in 0..SHININESS.len() {
-                add(&mut stats.specular[k][c], l[k + 1], r[k + 1]);
+                stats.specular[k][c].add(l[k + 1], r[k + 1]);
             }
         }
     }
@@ -591,11 +583,48 @@ pub fn render_compare(mesh: &Mesh, scene: &Scene, f: u32, opts: CompareOptions) 
     }
 }
 
-fn add(d: &mut Deviation, a: u8, b: u8) {
-    let x = u32::from(a.abs_diff(b));
-    d.pixels += 1;
-    d.sum += u64::from(x);
-    d.max = d.max.max(x);
+/// A front-facing triangle of a frame: each visible quad split along the diagonal
+/// from its first to its third vertex, with the centroid (in `f64`) every
+/// polygon method takes its coordinates from.
+pub(crate) struct FrontTriangle {
+    /// The projected vertices.
+    pub(crate) v: [ScreenVertex; 3],
+    /// The centroid in screen coordinates.
+    pub(crate) centre: (f64, f64),
+    /// The vertices relative to the centroid.
+    pub(crate) rel: [(f64, f64); 3],
+    /// The unit vertex normals.
+    pub(crate) normals: [G3; 3],
+}
+
+/// The front-facing triangles of `mesh` rotated by `rot`, projected as `verts`.
+pub(crate) fn front_triangles(
+    mesh: &Mesh,
+    rot: &glam::Mat3,
+    verts: &[ScreenVertex],
+) -> Vec<FrontTriangle> {
+    let mut out = Vec::new();
+    for q in &mesh.quads {
+        let p: Vec<G3> = q
+            .iter()
+            .map(|&i| *rot * mesh.positions[i as usize])
+            .collect();
+        if (p[2] - p[0]).cross(p[3] - p[1]).z <= 0.0 {
+            continue;
+        }
+        for t in [[q[0], q[1], q[2]], [q[0], q[2], q[3]]] {
+            let v: [ScreenVertex; 3] = t.map(|i| verts[i as usize]);
+            let xc = (f64::from(v[0].x) + f64::from(v[1].x) + f64::from(v[2].x)) / 3.0;
+            let yc = (f64::from(v[0].y) + f64::from(v[1].y) + f64::from(v[2].y)) / 3.0;
+            out.push(FrontTriangle {
+                v,
+                centre: (xc, yc),
+                rel: v.map(|s| (f64::from(s.x) - xc, f64::from(s.y) - yc)),
+                normals: v.map(|s| s.normal.normalize()),
+            });
+        }
+    }
+    out
 }
 
 /// Depth at `(x, y)` on the triangle's plane (barycentric, in `f64`).

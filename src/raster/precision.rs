@@ -10,17 +10,16 @@
 //!   accumulated error exceeds one 8-bit level: the set-up computed in `f64` and
 //!   rounded to the precision ([`Span::cast`]), the steps in the precision.
 
-use super::compare::{shade_row, Shader, TriangleSetup};
+use super::compare::{front_triangles, shade_row, FrontTriangle, Shader, TriangleSetup};
 use super::mesh::Mesh;
 use super::render::{project, Deviation, Scene};
-use super::scan::{rows, ScreenVertex};
+use super::scan::rows;
 use crate::angular::CosTable;
 use crate::lowp::{f16, I16F16, I8F8};
 use crate::quantize::level;
 use crate::related::{binary, bishop_weimer, spherical};
 use crate::scalar::Real;
 use crate::{Method, Span, Vec3};
-use glam::Vec3 as G3;
 
 /// The precisions of the tables, widest first.
 pub const PRECISIONS: [&str; 5] = ["f64", "f32", "f16", "I16F16", "I8F8"];
@@ -69,13 +68,6 @@ impl PrecisionStats {
     }
 }
 
-fn add(d: &mut Deviation, a: u8, b: u8) {
-    let x = u32::from(a.abs_diff(b));
-    d.pixels += 1;
-    d.sum += u64::from(x);
-    d.max = d.max.max(x);
-}
-
 /// Every drawn row of front-facing triangles of frame `f` (no depth test: every
 /// span counts), each shader in `T` against `f64`.
 pub fn frame<T: Real>(mesh: &Mesh, scene: &Scene, f: u32) -> PrecisionStats {
@@ -89,20 +81,14 @@ pub fn frame<T: Real>(mesh: &Mesh, scene: &Scene, f: u32) -> PrecisionStats {
     let mut out_t: Vec<Vec<T>> = vec![Vec::new(); cols];
     let mut out64: Vec<Vec<f64>> = vec![Vec::new(); cols];
     let mut one: Vec<Vec<T>> = vec![Vec::new(); cols];
-    for q in &mesh.quads {
-        let p: Vec<G3> = q
-            .iter()
-            .map(|&i| rot * mesh.positions[i as usize])
-            .collect();
-        if (p[2] - p[0]).cross(p[3] - p[1]).z <= 0.0 {
-            continue;
-        }
-        for t in [[q[0], q[1], q[2]], [q[0], q[2], q[3]]] {
-            let v: [ScreenVertex; 3] = t.map(|i| verts[i as usize]);
-            let xc = (f64::from(v[0].x) + f64::from(v[1].x) + f64::from(v[2].x)) / 3.0;
-            let yc = (f64::from(v[0].y) + f64::from(v[1].y) + f64::from(v[2].y)) / 3.0;
-            let rel = v.map(|s| (f64::from(s.x) - xc, f64::from(s.y) - yc));
-            let normals = v.map(|s| s.normal.normalize());
+    for tri in front_triangles(mesh, &rot, &verts) {
+        {
+            let FrontTriangle {
+                v,
+                centre: (xc, yc),
+                rel,
+                normals,
+            } = tri;
             let Some(s64) = TriangleSetup::<f64>::new(rel, normals, &dirs) else {
                 continue;
             };
@@ -139,8 +125,8 @@ pub fn frame<T: Real>(mesh: &Mesh, scene: &Scene, f: u32) -> PrecisionStats {
                         // The level of the value the precision holds, taken exactly (a
                         // quantizer in 8.8 cannot even form 255·v).
                         let l = level(&val.to_f64());
-                        add(&mut st.vs_phong[c], l, reference[j]);
-                        add(&mut st.vs_f64[c], l, level(&out64[c][j]));
+                        st.vs_phong[c].add(l, reference[j]);
+                        st.vs_f64[c].add(l, level(&out64[c][j]));
                     }
                 }
             });

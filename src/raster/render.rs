@@ -123,6 +123,14 @@ impl Deviation {
         }
     }
 
+    /// Counts one pixel whose level is `a` where the reference's is `b`.
+    pub(crate) fn add(&mut self, a: u8, b: u8) {
+        let x = u32::from(a.abs_diff(b));
+        self.pixels += 1;
+        self.sum += u64::from(x);
+        self.max = self.max.max(x);
+    }
+
     pub(crate) fn merge(&mut self, o: &Deviation) {
         self.pixels += o.pixels;
         self.sum += o.sum;

@@ -598,3 +598,26 @@ fn related_span_methods_f64_against_exact() {
         })
         .unwrap();
 }
+
+/// Bad input to the polygon methods gets a typed error, never a panic or a NaN: a
+/// collinear or non-finite triangle, a zero normal at the expansion point, a
+/// non-finite light, opposite vertex normals.
+#[test]
+fn related_bad_input_gets_typed_errors() {
+    use phong_approx::SpanError;
+    let is_param = |r: Result<(), SpanError>| matches!(r, Err(SpanError::Parameter(_)));
+    let collinear = [(0.0f64, 0.0), (1.0, 1.0), (2.0, 2.0)];
+    assert!(is_param(Triangle::new(collinear).map(|_| ())));
+    let nan = [(0.0f64, 0.0), (f64::NAN, 1.0), (2.0, 0.0)];
+    assert!(is_param(Triangle::new(nan).map(|_| ())));
+    let zero = Vec3::new(0.0f64, 0.0, 0.0);
+    let z = Vec3::new(0.0f64, 0.0, 1.0);
+    assert!(is_param(Taylor::new(&z, &z, &zero, &z).map(|_| ())));
+    let inf = Vec3::new(f64::INFINITY, 0.0, 0.0);
+    assert!(is_param(Taylor::new(&z, &z, &z, &inf).map(|_| ())));
+    let tri = Triangle::new([(0.0f64, 0.0), (4.0, 0.0), (0.0, 4.0)]).expect("area");
+    let down = Vec3::new(0.0f64, 0.0, -1.0);
+    assert!(is_param(
+        Quadratic::from_normals(&tri, &[z.clone(), down, z.clone()], &z).map(|_| ())
+    ));
+}

@@ -206,15 +206,7 @@ fn report(exp: &Experiment, pframes: u32, r: &Results, secs: f64) -> String {
         );
     }
     let header = |s: &mut String| {
-        let _ = write!(s, "| method |");
-        for t in &r.tori {
-            let _ = write!(s, " {} polygons |", t.polygons);
-        }
-        let _ = write!(s, "\n|---|");
-        for _ in &r.tori {
-            let _ = write!(s, "---:|");
-        }
-        let _ = writeln!(s);
+        table_header(s, r.tori.iter().map(|t| format!("{} polygons", t.polygons)));
     };
     let _ = writeln!(
         s,
@@ -287,15 +279,7 @@ fn report(exp: &Experiment, pframes: u32, r: &Results, secs: f64) -> String {
         "\n## Precision: the 800-polygon torus, {pframes} frames, every drawn pixel, mean / max deviation from \
          per-pixel Phong in f64\n\nSet-up and steps entirely in the precision; a blank cell means every row failed.\n"
     );
-    let _ = write!(s, "| method |");
-    for (p, _) in &r.precision {
-        let _ = write!(s, " {p} |");
-    }
-    let _ = write!(s, "\n|---|");
-    for _ in &r.precision {
-        let _ = write!(s, "---:|");
-    }
-    let _ = writeln!(s);
+    table_header(&mut s, PRECISIONS.iter().map(|p| p.to_string()));
     for (c, sh) in Shader::ALL.iter().enumerate() {
         let _ = write!(s, "| {} |", sh.label());
         for (_, st) in &r.precision {
@@ -321,15 +305,7 @@ fn report(exp: &Experiment, pframes: u32, r: &Results, secs: f64) -> String {
         s,
         "\nThe arithmetic's own share: the same, against the same method in f64.\n"
     );
-    let _ = write!(s, "| method |");
-    for (p, _) in &r.precision {
-        let _ = write!(s, " {p} |");
-    }
-    let _ = write!(s, "\n|---|");
-    for _ in &r.precision {
-        let _ = write!(s, "---:|");
-    }
-    let _ = writeln!(s);
+    table_header(&mut s, PRECISIONS.iter().map(|p| p.to_string()));
     for (c, sh) in Shader::ALL.iter().enumerate() {
         let _ = write!(s, "| {} |", sh.label());
         for (_, st) in &r.precision {
@@ -350,15 +326,7 @@ fn report(exp: &Experiment, pframes: u32, r: &Results, secs: f64) -> String {
          “—”: not even n = 1; in brackets the worst error at n = 64, in levels.\n",
         SPAN_LENGTHS, r.span_count
     );
-    let _ = write!(s, "| method |");
-    for p in PRECISIONS {
-        let _ = write!(s, " {p} |");
-    }
-    let _ = write!(s, "\n|---|");
-    for _ in PRECISIONS {
-        let _ = write!(s, "---:|");
-    }
-    let _ = writeln!(s);
+    table_header(&mut s, PRECISIONS.iter().map(|p| p.to_string()));
     let at64 = SPAN_LENGTHS
         .iter()
         .position(|&n| n == 64)
@@ -380,6 +348,20 @@ fn report(exp: &Experiment, pframes: u32, r: &Results, secs: f64) -> String {
         let _ = writeln!(s);
     }
     s
+}
+
+/// A Markdown table header: `method` and one right-aligned column per name.
+fn table_header(s: &mut String, columns: impl Iterator<Item = String>) {
+    let columns: Vec<String> = columns.collect();
+    let _ = write!(s, "| method |");
+    for c in &columns {
+        let _ = write!(s, " {c} |");
+    }
+    let _ = write!(s, "\n|---|");
+    for _ in &columns {
+        let _ = write!(s, "---:|");
+    }
+    let _ = writeln!(s);
 }
 
 fn table2_csv(tori: &[CompareResult]) -> String {

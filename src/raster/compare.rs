@@ -464,106 +464,104 @@ pub fn render_compare(mesh: &Mesh, scene: &Scene, f: u32, opts: CompareOptions) 
     let mut out64: Vec<Vec<f64>> = vec![Vec::new(); cols];
     let mut spec32: Vec<Vec<f32>> = vec![Vec::new(); cols];
     let mut spec64: Vec<Vec<f64>> = vec![Vec::new(); cols];
-    for tri in front_triangles(mesh, &rot, &verts) {
-        {
-            let FrontTriangle {
-                v,
-                centre: (xc, yc),
-                rel,
-                normals,
-            } = tri;
-            let (Some(s32), Some(s64)) = (
-                TriangleSetup::<f32>::new(rel, normals, &dirs),
-                TriangleSetup::<f64>::new(rel, normals, &dirs),
-            ) else {
-                continue;
+    for FrontTriangle {
+        v,
+        centre: (xc, yc),
+        rel,
+        normals,
+    } in front_triangles(mesh, &rot, &verts)
+    {
+        let (Some(s32), Some(s64)) = (
+            TriangleSetup::<f32>::new(rel, normals, &dirs),
+            TriangleSetup::<f64>::new(rel, normals, &dirs),
+        ) else {
+            continue;
+        };
+        rows(&v, w, h, |row| {
+            let n = (row.x_last - row.x_first) as u32;
+            let x0 = f64::from(row.x_first) + 0.5 - xc;
+            let y = f64::from(row.y) + 0.5 - yc;
+            let Some(d32) = shade_row(&s32, 0, x0, y, n, &table32, &Shader::ALL, &mut out32) else {
+                stats.dropped_rows += 1;
+                return;
             };
-            rows(&v, w, h, |row| {
-                let n = (row.x_last - row.x_first) as u32;
-                let x0 = f64::from(row.x_first) + 0.5 - xc;
-                let y = f64::from(row.y) + 0.5 - yc;
-                let Some(d32) = shade_row(&s32, 0, x0, y, n, &table32, &Shader::ALL, &mut out32)
-                else {
-                    stats.dropped_rows += 1;
-                    return;
-                };
-                let Some(_) = shade_row(&s64, 0, x0, y, n, &table64, &[Shader::Phong], &mut out64)
-                else {
-                    stats.dropped_rows += 1;
-                    return;
-                };
-                let Some(h32) = shade_row(&s32, 1, x0, y, n, &table32, &Shader::ALL, &mut spec32)
-                else {
-                    stats.dropped_rows += 1;
-                    return;
-                };
-                let Some(_) = shade_row(&s64, 1, x0, y, n, &table64, &[Shader::Phong], &mut spec64)
-                else {
-                    stats.dropped_rows += 1;
-                    return;
-                };
-                let len = n as usize + 1;
-                let row_levels = row_levels(
-                    &out32, &out64, &spec32, &spec64, &s32, 1, &h32, x0, y, len, &powers,
-                );
-                if n >= 1 {
-                    stats.spans += 1;
-                    stats.adaptive_gouraud += u64::from(d32.choice == Choice::Gouraud);
-                    // The δ test on N·H, and what the power does to it.
-                    // Gouraud of N·H (the δ test's alternative: the linear N·H, power
-                    // per pixel) against corrected Euler's levels of (N·H)^s.
-                    let ce = &row_levels[Shader::CorrectedEuler.index()];
-                    let lin = &spec32[Shader::Fence.index()];
-                    for (k, pt) in powers.iter().enumerate() {
-                        let same = lin.iter().zip(ce.iter()).all(|(a, c)| {
-                            level(&power(Shader::Euler, f64::from(*a), pt)) == c[k + 1]
-                        });
-                        let dc = &mut stats.specular_delta[k];
-                        if h32.choice == Choice::Gouraud {
-                            dc.gouraud += 1;
-                            dc.gouraud_but_differ += u64::from(!same);
-                        } else {
-                            dc.corrected_but_same += u64::from(same);
+            let Some(_) = shade_row(&s64, 0, x0, y, n, &table64, &[Shader::Phong], &mut out64)
+            else {
+                stats.dropped_rows += 1;
+                return;
+            };
+            let Some(h32) = shade_row(&s32, 1, x0, y, n, &table32, &Shader::ALL, &mut spec32)
+            else {
+                stats.dropped_rows += 1;
+                return;
+            };
+            let Some(_) = shade_row(&s64, 1, x0, y, n, &table64, &[Shader::Phong], &mut spec64)
+            else {
+                stats.dropped_rows += 1;
+                return;
+            };
+            let len = n as usize + 1;
+            let row_levels = row_levels(
+                &out32, &out64, &spec32, &spec64, &s32, 1, &h32, x0, y, len, &powers,
+            );
+            if n >= 1 {
+                stats.spans += 1;
+                stats.adaptive_gouraud += u64::from(d32.choice == Choice::Gouraud);
+                // The δ test on N·H, and what the power does to it.
+                // Gouraud of N·H (the δ test's alternative: the linear N·H, power
+                // per pixel) against corrected Euler's levels of (N·H)^s.
+                let ce = &row_levels[Shader::CorrectedEuler.index()];
+                let lin = &spec32[Shader::Fence.index()];
+                for (k, pt) in powers.iter().enumerate() {
+                    let same = lin
+                        .iter()
+                        .zip(ce.iter())
+                        .all(|(a, c)| level(&power(Shader::Euler, f64::from(*a), pt)) == c[k + 1]);
+                    let dc = &mut stats.specular_delta[k];
+                    if h32.choice == Choice::Gouraud {
+                        dc.gouraud += 1;
+                        dc.gouraud_but_differ += u64::from(!same);
+                    } else {
+                        dc.corrected_but_same += u64::from(same);
+                    }
+                }
+            }
+            for (j, x) in (row.x_first..=row.x_last).enumerate() {
+                let idx = (row.y as u32 * w + x as u32) as usize;
+                let z = plane_z(&v, f64::from(x) + 0.5, f64::from(row.y) + 0.5);
+                if z > depth[idx] {
+                    depth[idx] = z;
+                    levels[idx] = Some(row_levels.iter().map(|l| l[j]).collect());
+                    if opts.pictures {
+                        let (ka, kd, ks) = PICTURE_LOOK;
+                        let si = opts.shininess.min(SHININESS.len() - 1);
+                        for c in 0..cols {
+                            let (dv, sv) = if c == 0 {
+                                (out64[0][j], power(Shader::Phong, spec64[0][j], &powers[si]))
+                            } else {
+                                let sh = Shader::ALL[c];
+                                (
+                                    f64::from(out32[c][j]),
+                                    specular_value(
+                                        sh,
+                                        &spec32[c],
+                                        &s32,
+                                        &h32,
+                                        x0,
+                                        y,
+                                        j,
+                                        n,
+                                        &powers[si],
+                                    ),
+                                )
+                            };
+                            let i = ka + kd * dv.max(0.0) + ks * sv;
+                            picture[c][idx] = Some(level(&i));
                         }
                     }
                 }
-                for (j, x) in (row.x_first..=row.x_last).enumerate() {
-                    let idx = (row.y as u32 * w + x as u32) as usize;
-                    let z = plane_z(&v, f64::from(x) + 0.5, f64::from(row.y) + 0.5);
-                    if z > depth[idx] {
-                        depth[idx] = z;
-                        levels[idx] = Some(row_levels.iter().map(|l| l[j]).collect());
-                        if opts.pictures {
-                            let (ka, kd, ks) = PICTURE_LOOK;
-                            let si = opts.shininess.min(SHININESS.len() - 1);
-                            for c in 0..cols {
-                                let (dv, sv) = if c == 0 {
-                                    (out64[0][j], power(Shader::Phong, spec64[0][j], &powers[si]))
-                                } else {
-                                    let sh = Shader::ALL[c];
-                                    (
-                                        f64::from(out32[c][j]),
-                                        specular_value(
-                                            sh,
-                                            &spec32[c],
-                                            &s32,
-                                            &h32,
-                                            x0,
-                                            y,
-                                            j,
-                                            n,
-                                            &powers[si],
-                                        ),
-                                    )
-                                };
-                                let i = ka + kd * dv.max(0.0) + ks * sv;
-                                picture[c][idx] = Some(level(&i));
-                            }
-                        }
-                    }
-                }
-            });
-        }
+            }
+        });
     }
     for px in levels.iter().flatten() {
         stats.pixels += 1;

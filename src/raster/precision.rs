@@ -81,56 +81,54 @@ pub fn frame<T: Real>(mesh: &Mesh, scene: &Scene, f: u32) -> PrecisionStats {
     let mut out_t: Vec<Vec<T>> = vec![Vec::new(); cols];
     let mut out64: Vec<Vec<f64>> = vec![Vec::new(); cols];
     let mut one: Vec<Vec<T>> = vec![Vec::new(); cols];
-    for tri in front_triangles(mesh, &rot, &verts) {
-        {
-            let FrontTriangle {
-                v,
-                centre: (xc, yc),
-                rel,
-                normals,
-            } = tri;
-            let Some(s64) = TriangleSetup::<f64>::new(rel, normals, &dirs) else {
-                continue;
-            };
-            let st_t = TriangleSetup::<T>::new(rel, normals, &dirs);
-            rows(&v, scene.width, scene.height, |row| {
-                let n = (row.x_last - row.x_first) as u32;
-                let x0 = f64::from(row.x_first) + 0.5 - xc;
-                let y = f64::from(row.y) + 0.5 - yc;
-                if shade_row(&s64, 0, x0, y, n, &table64, &Shader::ALL, &mut out64).is_none() {
-                    return;
-                }
-                st.rows += 1;
-                let reference: Vec<u8> = out64[0].iter().map(level).collect();
-                // All shaders at once; if that fails, each alone, to count per shader.
-                let all_ok = st_t
-                    .as_ref()
-                    .and_then(|s| shade_row(s, 0, x0, y, n, &table_t, &Shader::ALL, &mut out_t))
-                    .is_some();
-                for (c, &sh) in Shader::ALL.iter().enumerate() {
-                    let values: &[T] = if all_ok {
-                        &out_t[c]
-                    } else {
-                        let ok = st_t
-                            .as_ref()
-                            .and_then(|s| shade_row(s, 0, x0, y, n, &table_t, &[sh], &mut one))
-                            .is_some();
-                        if !ok {
-                            st.failed_rows[c] += 1;
-                            continue;
-                        }
-                        &one[c]
-                    };
-                    for (j, val) in values.iter().enumerate() {
-                        // The level of the value the precision holds, taken exactly (a
-                        // quantizer in 8.8 cannot even form 255·v).
-                        let l = level(&val.to_f64());
-                        st.vs_phong[c].add(l, reference[j]);
-                        st.vs_f64[c].add(l, level(&out64[c][j]));
+    for FrontTriangle {
+        v,
+        centre: (xc, yc),
+        rel,
+        normals,
+    } in front_triangles(mesh, &rot, &verts)
+    {
+        let Some(s64) = TriangleSetup::<f64>::new(rel, normals, &dirs) else {
+            continue;
+        };
+        let st_t = TriangleSetup::<T>::new(rel, normals, &dirs);
+        rows(&v, scene.width, scene.height, |row| {
+            let n = (row.x_last - row.x_first) as u32;
+            let x0 = f64::from(row.x_first) + 0.5 - xc;
+            let y = f64::from(row.y) + 0.5 - yc;
+            if shade_row(&s64, 0, x0, y, n, &table64, &Shader::ALL, &mut out64).is_none() {
+                return;
+            }
+            st.rows += 1;
+            let reference: Vec<u8> = out64[0].iter().map(level).collect();
+            // All shaders at once; if that fails, each alone, to count per shader.
+            let all_ok = st_t
+                .as_ref()
+                .and_then(|s| shade_row(s, 0, x0, y, n, &table_t, &Shader::ALL, &mut out_t))
+                .is_some();
+            for (c, &sh) in Shader::ALL.iter().enumerate() {
+                let values: &[T] = if all_ok {
+                    &out_t[c]
+                } else {
+                    let ok = st_t
+                        .as_ref()
+                        .and_then(|s| shade_row(s, 0, x0, y, n, &table_t, &[sh], &mut one))
+                        .is_some();
+                    if !ok {
+                        st.failed_rows[c] += 1;
+                        continue;
                     }
+                    &one[c]
+                };
+                for (j, val) in values.iter().enumerate() {
+                    // The level of the value the precision holds, taken exactly (a
+                    // quantizer in 8.8 cannot even form 255·v).
+                    let l = level(&val.to_f64());
+                    st.vs_phong[c].add(l, reference[j]);
+                    st.vs_f64[c].add(l, level(&out64[c][j]));
                 }
-            });
-        }
+            }
+        });
     }
     st
 }

@@ -18,6 +18,7 @@
 //! (`bishop_weimer_printed_t5_is_wrong`).
 
 use crate::error::SpanError;
+use crate::related::triangle::forward_differences;
 use crate::scalar::Real;
 use crate::span::Span;
 use crate::vector::Vec3;
@@ -127,16 +128,11 @@ impl<T: Real> Taylor<T> {
     /// `ΔI = T5 (2 x0 + 1) + T4 y + T2`.
     pub fn shade_row(&self, x0: &T, y: &T, out: &mut [T]) {
         let two = T::from_i64(2);
-        let mut v = self.at(x0, y);
-        let mut dv = self.t5.clone() * (two.clone() * x0.clone() + T::one())
+        let dv = self.t5.clone() * (two.clone() * x0.clone() + T::one())
             + self.t4.clone() * y.clone()
             + self.t2.clone();
         let ddv = two * self.t5.clone();
-        for o in out.iter_mut() {
-            *o = v.clone();
-            v = v + dv.clone();
-            dv = dv + ddv.clone();
-        }
+        forward_differences(self.at(x0, y), dv, &ddv, out);
     }
 }
 

@@ -12,7 +12,7 @@
 //! `seiler_forward_differences_are_exact` (tests/related.rs).
 
 use crate::error::SpanError;
-use crate::related::triangle::{Affine, Triangle};
+use crate::related::triangle::{forward_differences, Affine, Triangle};
 use crate::scalar::{Real, Scalar};
 use crate::vector::Vec3;
 
@@ -109,16 +109,11 @@ impl<T: Scalar> Quadratic<T> {
     /// `v += Δ; Δ += 2A`, starting from `Δ = A(2 x0 + 1) + B y + D`.
     pub fn shade_row(&self, x0: &T, y: &T, out: &mut [T]) {
         let two = T::from_i64(2);
-        let mut v = self.at(x0, y);
-        let mut dv = self.a.clone() * (two.clone() * x0.clone() + T::one())
+        let dv = self.a.clone() * (two.clone() * x0.clone() + T::one())
             + self.b.clone() * y.clone()
             + self.d.clone();
         let ddv = two * self.a.clone();
-        for o in out.iter_mut() {
-            *o = v.clone();
-            v = v + dv.clone();
-            dv = dv + ddv.clone();
-        }
+        forward_differences(self.at(x0, y), dv, &ddv, out);
     }
 }
 

@@ -38,6 +38,18 @@ impl<T: Scalar> Affine<T> {
     }
 }
 
+/// Fills `out` with a quadratic's values at successive pixels by second-order forward
+/// differences from `v`, its first difference `dv` and its constant second difference
+/// `ddv`: `v += dv; dv += ddv` — the two additions per pixel of Bishop & Weimer and
+/// Seiler.
+pub fn forward_differences<T: Scalar>(mut v: T, mut dv: T, ddv: &T, out: &mut [T]) {
+    for o in out.iter_mut() {
+        *o = v.clone();
+        v = v + dv.clone();
+        dv = dv + ddv.clone();
+    }
+}
+
 /// A triangle in screen space with its barycentric forms.
 #[derive(Clone, Debug)]
 pub struct Triangle<T> {

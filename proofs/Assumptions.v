@@ -3,7 +3,7 @@
     unless every Theorem in the sources is listed here and each depends only
     on the standard library axioms of the real numbers. *)
 
-From PhongApprox Require Import Span Duff Euler Derivative Symmetry Adaptive Angular.
+From PhongApprox Require Import Span Duff Euler Derivative Symmetry Adaptive Angular Related.
 
 (** Span.v *)
 Check eq_2_p_is_linear.
@@ -100,3 +100,21 @@ Check mortensen_angle_not_linear.
 Print Assumptions mortensen_angle_not_linear.
 Check mortensen_unequal_angles_counterexample.
 Print Assumptions mortensen_unequal_angles_counterexample.
+
+(** Related.v *)
+Check bishop_weimer_forward_differences_are_exact.
+Print Assumptions bishop_weimer_forward_differences_are_exact.
+Check seiler_forward_differences_are_exact.
+Print Assumptions seiler_forward_differences_are_exact.
+Check bishop_weimer_scanline_special_case.
+Print Assumptions bishop_weimer_scanline_special_case.
+Check seiler_is_exact_at_the_six_points.
+Print Assumptions seiler_is_exact_at_the_six_points.
+Check seiler_reproduces_quadratics.
+Print Assumptions seiler_reproduces_quadratics.
+Check spherical_recurrence_matches_closed_form.
+Print Assumptions spherical_recurrence_matches_closed_form.
+Check spherical_equals_phong_at_the_middle.
+Print Assumptions spherical_equals_phong_at_the_middle.
+Check vertex_angle_equal_angles_give_a_flat_polygon.
+Print Assumptions vertex_angle_equal_angles_give_a_flat_polygon.

@@ -1,6 +1,9 @@
-//! One name per claim: every Coq `Theorem` in `proofs/` has a `#[test]` of the same
-//! name in `tests/claims.rs` and vice versa, every name is explained in
-//! `docs/derivations.md`, and every name is cited from a doc comment in `src/`.
+//! One name per claim: every Coq `Theorem` of the paper and the second source in
+//! `proofs/` has a `#[test]` of the same name in `tests/claims.rs` and vice versa,
+//! and is explained in `docs/derivations.md`; every `Theorem` of
+//! `proofs/Related.v` (the related-work methods) has a test of the same name in
+//! `tests/related.rs` and is explained in `docs/comparison.md`; every name is cited
+//! from a doc comment in `src/`.
 
 use std::collections::BTreeSet;
 use std::fs;
@@ -14,8 +17,15 @@ fn read(p: &str) -> String {
     fs::read_to_string(root().join(p)).unwrap_or_else(|e| panic!("{p}: {e}"))
 }
 
-fn theorems() -> BTreeSet<String> {
-    let mut names = BTreeSet::new();
+/// The proof file of the related-work methods; its theorems are checked against
+/// `tests/related.rs` and `docs/comparison.md`.
+const RELATED: &str = "Related.v";
+
+/// Every `Theorem` in `proofs/*.v` (except `Assumptions.v`), split into those of the
+/// paper and the second source, and those of [`RELATED`].
+fn theorems_by_source() -> (BTreeSet<String>, BTreeSet<String>) {
+    let mut all = BTreeSet::new();
+    let (mut paper, mut related) = (BTreeSet::new(), BTreeSet::new());
     for entry in fs::read_dir(root().join("proofs")).unwrap() {
         let path = entry.unwrap().path();
         if path.extension().is_some_and(|e| e == "v")
@@ -27,19 +37,28 @@ fn theorems() -> BTreeSet<String> {
                         .chars()
                         .take_while(|c| c.is_alphanumeric() || *c == '_')
                         .collect();
-                    assert!(
-                        names.insert(name.clone()),
-                        "theorem {name} is defined twice"
-                    );
+                    assert!(all.insert(name.clone()), "theorem {name} is defined twice");
+                    if path.file_name().unwrap() == RELATED {
+                        related.insert(name);
+                    } else {
+                        paper.insert(name);
+                    }
                 }
             }
         }
     }
-    names
+    (paper, related)
 }
 
-fn claim_tests() -> BTreeSet<String> {
-    let src = read("tests/claims.rs");
+fn theorems() -> BTreeSet<String> {
+    let (mut paper, related) = theorems_by_source();
+    paper.extend(related);
+    paper
+}
+
+/// The names of the `#[test]` functions in `file` (inside `proptest!` blocks too).
+fn test_names(file: &str) -> BTreeSet<String> {
+    let src = read(file);
     let lines: Vec<&str> = src.lines().collect();
     let mut names = BTreeSet::new();
     for (i, line) in lines.iter().enumerate() {
@@ -54,9 +73,20 @@ fn claim_tests() -> BTreeSet<String> {
 
 #[test]
 fn every_theorem_has_a_test_and_every_test_a_theorem() {
-    let t = theorems();
-    let c = claim_tests();
+    let (t, related) = theorems_by_source();
+    let c = test_names("tests/claims.rs");
     assert!(t.len() >= 41, "only {} theorems found", t.len());
+    assert!(
+        related.len() >= 8,
+        "only {} related theorems",
+        related.len()
+    );
+    let related_tests = test_names("tests/related.rs");
+    let untested: Vec<_> = related.difference(&related_tests).collect();
+    assert!(
+        untested.is_empty(),
+        "theorems of proofs/{RELATED} without a test in tests/related.rs: {untested:?}"
+    );
     let missing_tests: Vec<_> = t.difference(&c).collect();
     let missing_proofs: Vec<_> = c.difference(&t).collect();
     assert!(
@@ -71,7 +101,9 @@ fn every_theorem_has_a_test_and_every_test_a_theorem() {
 
 #[test]
 fn every_claim_is_in_the_derivations_and_cited_from_the_code() {
-    let docs = read("docs/derivations.md");
+    let (_, related) = theorems_by_source();
+    let derivations = read("docs/derivations.md");
+    let comparison = read("docs/comparison.md");
     let mut code = String::new();
     let mut stack = vec![root().join("src")];
     while let Some(dir) = stack.pop() {
@@ -86,10 +118,12 @@ fn every_claim_is_in_the_derivations_and_cited_from_the_code() {
     }
     for name in theorems() {
         let quoted = format!("`{name}`");
-        assert!(
-            docs.contains(&quoted),
-            "docs/derivations.md does not explain {name}"
-        );
+        let (docs, doc_name) = if related.contains(&name) {
+            (&comparison, "docs/comparison.md")
+        } else {
+            (&derivations, "docs/derivations.md")
+        };
+        assert!(docs.contains(&quoted), "{doc_name} does not explain {name}");
         assert!(
             code.contains(&quoted),
             "no doc comment in src/ cites {name}"

@@ -33,19 +33,19 @@ proptest! {
         prop_assert!(mid_down.clone() * mid_down <= ey.clone() && ey <= mid_up.clone() * mid_up);
     }
 
-    /// Conversion of a rational to fixed point rounds to the nearest step, and `from_f64`
-    /// agrees with it.
+    /// Conversion of a rational to fixed point rounds to the nearest step inside the
+    /// range (half a step beyond either end included) and saturates outside it, and
+    /// `from_f64` agrees with it. The inputs reach well past I16F16's ±32768 and
+    /// I8F8's ±128 on purpose.
     #[test]
     fn fixed_from_rational_rounds_to_nearest(n in -100_000i64..100_000, d in 1i64..5000) {
         let x = q(n, d);
         let a = I16F16::from_rational(&x);
-        let err = (exact(&a) - x.clone()).magnitude();
-        prop_assert!(err <= q(1, 1 << 17), "I16F16 error {}", err);
         prop_assert_eq!(a, I16F16::from_f64(n as f64 / d as f64));
-        if (x.clone() - q(0, 1)).magnitude() < q(127, 1) {
-            let b = I8F8::from_rational(&x);
-            prop_assert!((exact(&b) - x).magnitude() <= q(1, 1 << 9));
-        }
+        rounds_or_saturates(&x, &a, (I16F16::from_f64(-1e9), I16F16::from_f64(1e9)), 16)?;
+        let b = I8F8::from_rational(&x);
+        prop_assert_eq!(b, I8F8::from_f64(n as f64 / d as f64));
+        rounds_or_saturates(&x, &b, (I8F8::from_f64(-1e9), I8F8::from_f64(1e9)), 8)?;
     }
 
     /// A fixed-point product is within one step of the exact product of its operands
@@ -57,6 +57,28 @@ proptest! {
         let err = (exact(&(x * y)) - exact(&x) * exact(&y)).magnitude();
         prop_assert!(err < q(1, 1 << 16), "{}", err);
     }
+}
+
+/// `a`, the conversion of `x` to a format with `frac` fractional bits and range
+/// `[min, max]`, is within half a step of `x` when `x` is no more than half a step
+/// outside the range, and is the nearer end of the range otherwise.
+fn rounds_or_saturates<T: Scalar + std::fmt::Debug>(
+    x: &Q,
+    a: &T,
+    (min, max): (T, T),
+    frac: u32,
+) -> Result<(), TestCaseError> {
+    let half_step = q(1, 1 << (frac + 1));
+    let (lo, hi) = (exact(&min), exact(&max));
+    if *x > hi.clone() + half_step.clone() {
+        prop_assert_eq!(a, &max, "{} above the range", x);
+    } else if *x < lo.clone() - half_step.clone() {
+        prop_assert_eq!(a, &min, "{} below the range", x);
+    } else {
+        let err = (exact(a) - x.clone()).magnitude();
+        prop_assert!(err <= half_step, "{} converted with error {}", x, err);
+    }
+    Ok(())
 }
 
 /// Sums, products and quotients saturate at the range instead of wrapping or panicking;

@@ -154,6 +154,8 @@ proptest! {
     }
 
     /// Two additions per pixel give exactly the polynomial's values.
+    ///
+    /// Proved: `proofs/Related.v`, theorem of the same name.
     #[test]
     fn bishop_weimer_forward_differences_are_exact(
         (n1, n2, n3, _s, l) in arb_bw_inputs(), x0 in -40i64..40, y in -40i64..40, len in 1usize..48,
@@ -169,6 +171,8 @@ proptest! {
 
     /// Along one span expanded about its left edge, the 2-D coefficients reduce to the
     /// literature's scan-line case `B + (A − BD/2) x + (3BD²/8 − BC/2 − AD/2) x²`.
+    ///
+    /// Proved: `proofs/Related.v`, theorem of the same name.
     #[test]
     fn bishop_weimer_scanline_special_case(c in arb_case()) {
         let Some(span) = c.span() else { return Ok(()); };
@@ -185,6 +189,8 @@ proptest! {
 
     /// Seiler's quadratic takes the six given values at the vertices and the edge
     /// midpoints, exactly.
+    ///
+    /// Proved: `proofs/Related.v`, theorem of the same name.
     #[test]
     fn seiler_is_exact_at_the_six_points(
         p in arb_triangle(), vals in proptest::array::uniform6(-64i64..64),
@@ -206,6 +212,8 @@ proptest! {
     }
 
     /// The six-point quadratic of any quadratic is that quadratic, everywhere.
+    ///
+    /// Proved: `proofs/Related.v`, theorem of the same name.
     #[test]
     fn seiler_reproduces_quadratics(
         p in arb_triangle(), g in proptest::array::uniform6(-9i64..9), at in (-50i64..50, -50i64..50),
@@ -230,6 +238,8 @@ proptest! {
     }
 
     /// Seiler's forward differences give exactly the quadratic's values.
+    ///
+    /// Proved: `proofs/Related.v`, theorem of the same name.
     #[test]
     fn seiler_forward_differences_are_exact(
         p in arb_triangle(), vals in proptest::array::uniform6(-64i64..64), y in -30i64..30, len in 1usize..40,
@@ -347,6 +357,8 @@ proptest! {
 
     /// The Chebyshev recurrence follows the closed form `(u·L) cos iΔ + (w·L) sin iΔ`,
     /// starts at `p_a` exactly and ends at `p_b`.
+    ///
+    /// Proved: `proofs/Related.v`, theorem of the same name.
     #[test]
     fn spherical_recurrence_matches_closed_form(c in arb_case()) {
         let Some(span) = c.span() else { return Ok(()); };
@@ -365,6 +377,8 @@ proptest! {
 
     /// Spherical and Phong agree at the middle pixel of an even span (both give the
     /// normalized bisector).
+    ///
+    /// Proved: `proofs/Related.v`, theorem of the same name.
     #[test]
     fn spherical_equals_phong_at_the_middle(c in arb_case()) {
         let Some(span) = c.span() else { return Ok(()); };
@@ -506,6 +520,8 @@ fn binary_quarter_point_is_not_phong() {
 /// Three vertex normals at the same angle (53.1°) to `L`, 120° apart around it: the
 /// interpolated angle is constant, so is the intensity (0.6 everywhere), while Phong
 /// at the centroid is near 1 — the failure case of interpolating vertex angles.
+///
+/// Proved: `proofs/Related.v`, theorem of the same name.
 #[test]
 fn vertex_angle_equal_angles_give_a_flat_polygon() {
     use phong_approx::reference::unit::unit_from_ints;

@@ -104,6 +104,9 @@ impl<T: Real> Taylor<T> {
     /// The one-dimensional expansion along `span` about pixel `x_c` (`N1 = k`,
     /// `N2 = 0`, `N3 = N(x_c)`); the polynomial's variable is `i − x_c`.
     ///
+    /// Claims: `bishop_weimer_scanline_special_case` (proofs/Related.v;
+    /// tests/related.rs).
+    ///
     /// # Errors
     /// As [`Taylor::new`].
     pub fn from_span_at(span: &Span<T>, x_c: &T) -> Result<Self, SpanError> {
@@ -126,6 +129,9 @@ impl<T: Real> Taylor<T> {
     /// Fills `out` with the polynomial at `(x0 + j, y)`, `j = 0, 1, …` by forward
     /// differences: `I += ΔI; ΔI += 2 T5` (two additions per pixel), starting from
     /// `ΔI = T5 (2 x0 + 1) + T4 y + T2`.
+    ///
+    /// Claims: `bishop_weimer_forward_differences_are_exact` (proofs/Related.v;
+    /// tests/related.rs).
     pub fn shade_row(&self, x0: &T, y: &T, out: &mut [T]) {
         let two = T::from_i64(2);
         let dv = self.t5.clone() * (two.clone() * x0.clone() + T::one())

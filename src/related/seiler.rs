@@ -9,7 +9,7 @@
 //! (centroid-relative). The sketch gives the six points; the basis is ours.
 //!
 //! Claims: `seiler_is_exact_at_the_six_points`, `seiler_reproduces_quadratics`,
-//! `seiler_forward_differences_are_exact` (tests/related.rs).
+//! `seiler_forward_differences_are_exact` (proofs/Related.v; tests/related.rs).
 
 use crate::error::SpanError;
 use crate::related::triangle::{forward_differences, Affine, Triangle};

@@ -14,7 +14,10 @@
 //! equals it when `L` lies in the plane of `N_a`, `N_b` on one side of the span
 //! (`spherical_equals_angular_when_light_in_plane`).
 //!
-//! Claims: tests/related.rs, `spherical_*`.
+//! Claims: `spherical_recurrence_matches_closed_form`,
+//! `spherical_equals_phong_at_the_middle` (proofs/Related.v; tests/related.rs);
+//! `spherical_differs_from_phong_between`,
+//! `spherical_equals_angular_when_light_in_plane` (tests/related.rs).
 
 use crate::error::SpanError;
 use crate::scalar::Real;

@@ -8,7 +8,8 @@
 //!
 //! Its failure case: when the three vertex angles are equal, the interpolated angle is
 //! constant and so is the intensity, whatever the normals in between do
-//! (`vertex_angle_equal_angles_give_a_flat_polygon`, tests/related.rs) — a highlight
+//! (`vertex_angle_equal_angles_give_a_flat_polygon`, proofs/Related.v;
+//! tests/related.rs) — a highlight
 //! or a dark band inside the polygon cannot appear.
 
 use crate::angular::CosTable;

@@ -63,3 +63,23 @@ if os.path.isdir(base):
             p = os.path.join(base, mode, k)
             row.append(f"{elements(p) / est(p) * 1e3:.1f}" if os.path.isdir(p) else "")
         print(f"| {k} | " + " | ".join(row) + " |")
+
+base = os.path.join(root, "triangle_f32")
+if os.path.isdir(base):
+    methods = sorted(k for k in os.listdir(base) if k != "report")
+    sizes = sorted({int(s) for k in methods for s in os.listdir(os.path.join(base, k)) if s.isdigit()})
+    print("\n### One triangle with legs S, f32, set-up included: ns per pixel\n")
+    print("| method | " + " | ".join(f"S = {s}" for s in sizes) + " | ÷ glam Phong (largest S) |")
+    print("|---|" + "---:|" * (len(sizes) + 1))
+    per_px = {}
+    for k in methods:
+        for s in sizes:
+            p = os.path.join(base, k, str(s))
+            if os.path.isdir(p):
+                per_px[(k, s)] = est(p) / elements(p)
+    big = max(sizes)
+    order = ["glam_phong"] + sorted((k for k in methods if k != "glam_phong"), key=lambda k: per_px.get((k, big), 0))
+    for k in order:
+        cells = [f"{per_px[(k, s)]:.2f}" if (k, s) in per_px else "" for s in sizes]
+        r = per_px[(k, big)] / per_px[("glam_phong", big)] if ("glam_phong", big) in per_px else float("nan")
+        print(f"| {k} | " + " | ".join(cells) + f" | {r:.2f} |")

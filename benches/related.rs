@@ -102,9 +102,16 @@ fn per_polygon(
     black_box(&out);
 }
 
-/// A span method: the normal field once per polygon, then per row the two edge
-/// normals (normalized), the span set-up and the method; a one-pixel row gets `N·L`.
-fn per_span(s: u32, normals: &[V; 3], l: &V, which: &str, out: &mut [f32]) {
+/// The rows of the span methods: the normal field once per polygon, then per row the
+/// two edge normals (normalized) and `shade(N_a, N_b, n, row)`; a one-pixel row gets
+/// `N·L`.
+fn per_row(
+    s: u32,
+    normals: &[V; 3],
+    l: &V,
+    out: &mut [f32],
+    mut shade: impl FnMut(V, V, u32, &mut [f32]),
+) {
     let tri = triangle(s);
     let (n1, n2, n3) = tri.normal_field(normals);
     let at = |x: f32, y: f32| n1.scale(&x).add(&n2.scale(&y)).add(&n3).normalize();
@@ -114,9 +121,16 @@ fn per_span(s: u32, normals: &[V; 3], l: &V, which: &str, out: &mut [f32]) {
         let o = &mut out[..=n as usize];
         if n == 0 {
             o[0] = na.dot(l);
-            continue;
+        } else {
+            shade(na, at(x0 + n as f32, yr), n, o);
         }
-        let nb = at(x0 + n as f32, yr);
+    }
+    black_box(&out);
+}
+
+/// A span method through the checked generic path: `Span::new`, then the method.
+fn per_span(s: u32, normals: &[V; 3], l: &V, which: &str, out: &mut [f32]) {
+    per_row(s, normals, l, out, |na, nb, n, o| {
         let span = Span::new(na, nb, l.clone(), n).expect("unit normals");
         match which {
             "spherical" => spherical::shade(&span, o),
@@ -128,28 +142,16 @@ fn per_span(s: u32, normals: &[V; 3], l: &V, which: &str, out: &mut [f32]) {
                 .shade(&span, o),
         }
         .expect("the output length is n + 1");
-    }
-    black_box(&out);
+    });
 }
 
-/// A fast span kernel of the paper: the same rows, `FastSpan::new` per row.
+/// A fast span kernel of the paper: `FastSpan::new` per row, then the kernel.
 fn per_span_fast(s: u32, normals: &[V; 3], l: &V, kernel: Kernel, out: &mut [f32]) {
-    let tri = triangle(s);
-    let (n1, n2, n3) = tri.normal_field(normals);
     let arr = |v: &V| v.components().map(|c| *c);
-    let at = |x: f32, y: f32| arr(&n1.scale(&x).add(&n2.scale(&y)).add(&n3).normalize());
-    let l = arr(l);
-    for (y, n) in rows(s) {
-        let (x0, yr) = tri.relative(&0.0, &(y as f32));
-        let na = at(x0, yr);
-        let o = &mut out[..=n as usize];
-        if n == 0 {
-            o[0] = na[0] * l[0] + na[1] * l[1] + na[2] * l[2];
-            continue;
-        }
-        kernel(&FastSpan::<f32>::new(na, at(x0 + n as f32, yr), l, n), o);
-    }
-    black_box(&out);
+    let la = arr(l);
+    per_row(s, normals, l, out, |na, nb, n, o| {
+        kernel(&FastSpan::<f32>::new(arr(&na), arr(&nb), la, n), o)
+    });
 }
 
 type Kernel = fn(&FastSpan<f32>, &mut [f32]);

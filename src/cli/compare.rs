@@ -2,7 +2,7 @@
 //! tori — extended Table 2 (diffuse and specular), the adaptive scheme, the precision
 //! tables, and a picture grid with heat maps.
 
-use super::reproduce::{io_err, parse_radii, parse_size, prepare_out};
+use super::reproduce::{io_err, prepare_out, TorusArgs};
 use super::{parse_whole, CliError};
 use clap::Args;
 use image::{Rgb, RgbImage};
@@ -51,12 +51,9 @@ pub struct CompareArgs {
     /// Output folder for the tables and pictures.
     #[arg(long, value_name = "DIR", default_value = "out/compare")]
     pub out: PathBuf,
-    /// Image size in pixels.
-    #[arg(long, value_name = "WxH", default_value = "225x225")]
-    pub size: String,
-    /// Major and tube radius of the torus.
-    #[arg(long, value_name = "R,r", default_value = "1,0.4")]
-    pub radii: String,
+    /// The image and the torus.
+    #[command(flatten)]
+    pub torus: TorusArgs,
     /// The frame of the pictures.
     #[arg(
         long,
@@ -100,8 +97,7 @@ pub fn run(a: &CompareArgs) -> Result<(), CliError> {
     let pframes = parse_whole("--precision-frames", &a.precision_frames, 1, 100_000, "")?;
     let span_count = parse_whole("--spans", &a.spans, 1, 10_000, "")? as usize;
     let picture_frame = parse_whole("--picture-frame", &a.picture_frame, 0, 1_000_000, "")?;
-    let size = parse_size(&a.size)?;
-    let radii = parse_radii(&a.radii)?;
+    let (size, radii) = a.torus.parse()?;
     prepare_out(&a.out)?;
     let exp = Experiment {
         frames,

@@ -27,12 +27,9 @@ pub struct ReproduceArgs {
     /// Output folder for the CSVs and pictures.
     #[arg(long, value_name = "DIR", default_value = "out")]
     pub out: PathBuf,
-    /// Image size in pixels.
-    #[arg(long, value_name = "WxH", default_value = "225x225")]
-    pub size: String,
-    /// Major and tube radius of the torus.
-    #[arg(long, value_name = "R,r", default_value = "1,0.4")]
-    pub radii: String,
+    /// The image and the torus.
+    #[command(flatten)]
+    pub torus: TorusArgs,
     /// Vertex normals: analytic (the torus's own) or averaged (from the faces).
     #[arg(long, value_name = "MODE", default_value = "analytic")]
     pub normals: String,
@@ -41,7 +38,31 @@ pub struct ReproduceArgs {
     pub exact_frames: String,
 }
 
-pub(crate) fn parse_size(s: &str) -> Result<(u32, u32), CliError> {
+/// The image size and torus radii, shared by `reproduce` and `compare`.
+#[derive(Args, Debug)]
+pub struct TorusArgs {
+    /// Image size in pixels.
+    #[arg(long, value_name = "WxH", default_value = "225x225")]
+    pub size: String,
+    /// Major and tube radius of the torus.
+    #[arg(long, value_name = "R,r", default_value = "1,0.4")]
+    pub radii: String,
+}
+
+/// `((width, height), (major radius, tube radius))`.
+type SizeAndRadii = ((u32, u32), (f32, f32));
+
+impl TorusArgs {
+    /// The parsed `(size, radii)`.
+    ///
+    /// # Errors
+    /// [`CliError`] naming `--size` or `--radii` when one is malformed.
+    pub(crate) fn parse(&self) -> Result<SizeAndRadii, CliError> {
+        Ok((parse_size(&self.size)?, parse_radii(&self.radii)?))
+    }
+}
+
+fn parse_size(s: &str) -> Result<(u32, u32), CliError> {
     let bad = || CliError::arg("--size", format!("'{s}' is not WxH, e.g. 200x200"));
     let (w, h) = s.split_once(['x', 'X']).ok_or_else(bad)?;
     let w: u32 = w.trim().parse().map_err(|_| bad())?;
@@ -55,7 +76,7 @@ pub(crate) fn parse_size(s: &str) -> Result<(u32, u32), CliError> {
     Ok((w, h))
 }
 
-pub(crate) fn parse_radii(s: &str) -> Result<(f32, f32), CliError> {
+fn parse_radii(s: &str) -> Result<(f32, f32), CliError> {
     let bad = |why: &str| CliError::arg("--radii", format!("'{s}': {why}"));
     let (a, b) = s
         .split_once(',')
@@ -92,8 +113,7 @@ pub(crate) fn io_err(path: &Path, e: impl std::fmt::Display) -> CliError {
 /// A [`CliError`] naming the bad argument or the file that could not be written.
 pub fn run(a: &ReproduceArgs) -> Result<(), CliError> {
     let frames = parse_whole("--frames", &a.frames, 1, 100_000, "")?;
-    let size = parse_size(&a.size)?;
-    let radii = parse_radii(&a.radii)?;
+    let (size, radii) = a.torus.parse()?;
     let normals = match a.normals.as_str() {
         "analytic" => NormalMode::Analytic,
         "averaged" => NormalMode::Averaged,

@@ -250,6 +250,25 @@ impl<T: Scalar> Span<T> {
         (self.c.clone() * x.clone() + self.d.clone()) * x + self.e.clone()
     }
 
+    /// `q_min = min_i q(i)` over the pixels `i = 0..=n`: the smallest squared length
+    /// of an interpolated normal, on which the float bounds of the normalizing
+    /// methods depend (`src/tolerance.rs`). `q` is a parabola (eq. 3), so only the
+    /// two pixels around its vertex `−D/(2C)` and the two ends are evaluated.
+    pub fn q_min(&self) -> T {
+        let n = i64::from(self.n);
+        let mut at = vec![0, n];
+        if self.c > T::zero() {
+            let two = T::one() + T::one();
+            let vertex = -self.d.clone() / (two * self.c.clone());
+            let v = vertex.floor_i64();
+            at.extend([v, v.saturating_add(1)]);
+        }
+        at.into_iter()
+            .map(|i| self.q_at(i.clamp(0, n) as u32))
+            .reduce(|a, b| if b < a { b } else { a })
+            .expect("two pixels at least")
+    }
+
     /// The interpolated normal `N(i) = N_a + i·k` (§2.1).
     pub fn normal_at(&self, i: u32) -> Vec3<T> {
         self.na.add(&self.k.scale(&T::from_i64(i64::from(i))))

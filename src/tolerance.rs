@@ -1,48 +1,212 @@
 //! Error bounds of the float runs against the exact run, in one place.
 //!
-//! A method run in a float type `T` (unit roundoff `u`: 2^-24 for `f32`, 2^-53 for
-//! `f64`) on inputs rounded to `T` differs from the same method run exactly on the
-//! exact inputs by at most [`bound`] at every pixel, for exact-unit inputs and
-//! `1 ≤ n ≤ 4096`. Tested: `tests/float_bounds.rs`.
+//! A method run in a binary float type (unit roundoff `u`: 2^-24 for `f32`, 2^-53 for
+//! `f64`, round to nearest even) on exact-unit inputs rounded to that type differs
+//! from the same method run exactly on the exact inputs by at most [`bound`] at every
+//! pixel. Every constant below is *derived*, not measured: the derivation, one
+//! section per method and kernel, following the operation order of the code, is in
+//! `docs/float.md` (embedded in the crate docs as [`crate::float`]). For Gouraud and
+//! corrected Euler the bound is a machine-checked theorem (Flocq, `proofs/Float.v`:
+//! `float_gouraud_binary32`, `float_gouraud_binary64`,
+//! `float_corrected_euler_binary32`, `float_corrected_euler_binary64`).
 //!
-//! Where the form comes from:
-//! - the additive recurrences (Gouraud, Euler, corrected Euler) do one rounded
-//!   addition into `p` per pixel and one into the slope; the slope's error is carried
-//!   into `p` at every later step, and their set-up (`t_0`, `ds`) is accurate to a few
-//!   `u` on the scale of the span, so the error grows linearly in `n`;
-//! - Duff's `q` accumulates the same way, and the value `p/√q` turns an error `Δq`
-//!   into at most `Δq/(2 q)` (because `|p| ≤ √q`), so Duff and symmetric Phong carry a
-//!   factor `1/q_min`, where `q_min = min_i q_i = 1 − n²C/4` near the middle of the
-//!   span (small only when the edge normals are far apart: 0.0076 at 170°);
-//! - direct Phong normalizes at every pixel and its error does not grow with `n`;
-//! - angular interpolation accumulates the angle by additions (linear in `n`); the
-//!   tabled variant can land on the neighbouring table entry when the angle is within
-//!   rounding of a half-step, so it may be off by one table step, `π/2/(size − 1)`.
+//! The derivations take the standard model `fl(a ∘ b) = (a ∘ b)(1 + θ)`, `|θ| ≤ u`,
+//! with the underflow terms (at most 2^-150 per operation in `f32`) folded into the
+//! constant terms, and they hold while `n·u ≤ 2^-12` (every `n ≤ 4096` in `f32`, every
+//! `n ≤ 2^24` in `f64`); outside that, and where a method's bound does not exist
+//! (Duff and Phong when rounding can make `q` vanish), the functions return `None`.
+//! Angular interpolation calls libm's `acos` and `cos`: its bound assumes both are
+//! within one ulp (glibc's documented accuracy for `acos`, `cos`, `acosf`, `cosf`).
 //!
-//! The constants are the measured worst case over the edge cases and hundreds of
-//! random spans for `n` from 1 to 4096, times about two (measured: Phong ≤ 3u/q_min,
-//! Duff ≤ 0.5·n·u/q_min, corrected Euler ≤ 0.5·n·u, angular ≤ 1.6·n·u).
+//! Tested: `tests/float_bounds.rs` (every method, `f32` and `f64`, the edge cases,
+//! random spans and a targeted search for the worst case) and `tests/fast.rs` (the
+//! kernels of [`crate::fast`]).
 
 use crate::method::Method;
 
-/// The bound, in units of `u`, for `method` on a span of `n` steps whose smallest
-/// `q_i` is `q_min` (1 when the edge normals are equal).
-pub fn bound_in_u(method: Method, n: u32, q_min: f64) -> f64 {
-    let n = f64::from(n);
+/// The largest `n·u` for which the derivations hold (their second-order terms are
+/// folded into the constants under this condition).
+pub const MAX_NU: f64 = 1.0 / 4096.0;
+
+/// `π/√2`: `|acos x − acos y| ≤ (π/√2)·√|x − y|` on `[−1, 1]` (the worst pair is
+/// `x = −1`, `y = 1`; `docs/float.md`, angular).
+const ACOS_HOLDER: f64 = 2.2215;
+
+/// Coefficients `(α, β)` of a bound `(α·n + β)·u`, in one table (see `docs/float.md`
+/// for each derivation).
+mod coef {
+    /// Gouraud, recurrence `g += dp` on the `Span` set-up: theorem
+    /// `float_gouraud_binary32`/`_binary64` (proofs/Float.v).
+    pub const GOURAUD: (f64, f64) = (1.01, 10.0);
+    /// Corrected Euler, recurrence `p += t; t += ds` on the `Span` set-up: theorem
+    /// `float_corrected_euler_binary32`/`_binary64` (proofs/Float.v).
+    pub const CORRECTED_EULER: (f64, f64) = (2.2, 45.0);
+    /// Plain Euler (eqs. 12–14) on the `Span` set-up: `docs/float.md`, Euler.
+    pub const EULER: (f64, f64) = (5.6, 115.0);
+    /// Duff's `p` recurrence (`p += A`).
+    pub const DUFF_P: (f64, f64) = (1.01, 20.0);
+    /// Duff's `q` recurrence (`q += dq; dq += 2C`).
+    pub const DUFF_Q: (f64, f64) = (3.01, 118.0);
+    /// Fast kernels (`FastSpan`): corrected Euler in closed form (no growth in `n`).
+    pub const FAST_CORRECTED_EULER: (f64, f64) = (0.0, 48.0);
+    /// Fast kernels: Euler in closed form.
+    pub const FAST_EULER: (f64, f64) = (0.0, 96.0);
+    /// Fast kernels: Gouraud in closed form.
+    pub const FAST_GOURAUD: (f64, f64) = (0.0, 15.0);
+    /// Fast kernels: the serial corrected-Euler twin.
+    pub const FAST_CORRECTED_EULER_SERIAL: (f64, f64) = (2.2, 41.0);
+    /// Fast kernels: the serial Gouraud twin.
+    pub const FAST_GOURAUD_SERIAL: (f64, f64) = (1.01, 12.0);
+    /// Fast kernels: Duff's serial twin, `p` and `q`.
+    pub const FAST_DUFF_P: (f64, f64) = (1.01, 22.0);
+    /// Fast kernels: Duff's serial twin, `q`.
+    pub const FAST_DUFF_Q: (f64, f64) = (3.01, 136.0);
+    /// Fast kernels: closed-form `p = A·i + B` (absolute error).
+    pub const FAST_P: f64 = 24.0;
+    /// Fast kernels: closed-form `q = (C·i + D)·i + E` (absolute error).
+    pub const FAST_Q: f64 = 91.0;
+}
+
+fn linear((alpha, beta): (f64, f64), n: f64) -> f64 {
+    alpha * n + beta
+}
+
+/// The bound of `p/√q` from absolute error bounds `e_p` on `p` and `e_q` on `q`
+/// (both in units of `u`), `q ≥ q_min`, `|p| ≤ √q`, and `roundings` more rounded
+/// operations (the square root, the division, …) on the value; `None` when `q` could
+/// round to zero or below (`e_q·u ≥ q_min`).
+///
+/// `|p̂/√q̂ − p/√q| ≤ e_p/√(q(1−ρ)) + ((1−ρ)^(−1/2) − 1) + roundings·u·|p̂/√q̂|`, with
+/// `ρ = e_q/q_min`.
+fn ratio_bound(e_p: f64, e_q: f64, q_min: f64, roundings: f64, u: f64) -> Option<f64> {
+    if !(q_min > 0.0 && q_min.is_finite()) {
+        return None;
+    }
+    let rho = e_q * u / q_min;
+    if rho >= 0.5 {
+        return None;
+    }
+    let shrink = 1.0 / (1.0 - rho).sqrt();
+    let p_term = e_p * u / q_min.sqrt() * shrink;
+    let q_term = shrink - 1.0;
+    let value = (1.0 + e_p * u / q_min.sqrt()) * shrink;
+    Some(p_term + q_term + roundings * 1.0001 * u * value)
+}
+
+/// The bound of the angle interpolated by angular interpolation: the two `acos`
+/// (input error `5u` through `acos`'s Hölder continuity, plus one ulp of `acos`,
+/// `2πu`), the step's two roundings and `rounded_adds` rounded additions of
+/// the angle (each at most `πu`).
+fn angle_bound(rounded_adds: f64, u: f64) -> f64 {
+    ACOS_HOLDER * (5.0 * u).sqrt() + (2.0 + 2.0 + rounded_adds) * std::f64::consts::PI * u
+}
+
+/// The largest `|float − exact|` at any pixel of a span of `n` steps whose smallest
+/// `q_i = N(i)·N(i)` is `q_min` (1 when the edge normals are equal), for a method
+/// run through [`Method::shade`] in a float type of unit roundoff `u`.
+///
+/// `None` where no bound is derived: `n·u > ` [`MAX_NU`], or `q` may round to zero
+/// (Phong, Duff, symmetric Phong with `q_min` below about `100·n·u`).
+///
+/// For [`Method::Adaptive`] the bound is against the exact run of the method the
+/// float run chose (the two runs may decide differently when `|δ·255·K_d|` is within
+/// rounding of 1).
+pub fn bound(method: Method, n: u32, q_min: f64, u: f64) -> Option<f64> {
+    let nf = f64::from(n);
+    if n == 0 || !(u > 0.0) || nf * u > MAX_NU {
+        return None;
+    }
+    let lin = |c: (f64, f64)| Some(linear(c, nf) * u);
     match method {
-        Method::Phong => 8.0 / q_min,
-        Method::Duff | Method::SymmetricPhong => (8.0 + n) / q_min,
-        Method::Gouraud | Method::Euler | Method::CorrectedEuler | Method::Adaptive => 8.0 + n,
-        Method::Angular | Method::AngularTable(_) => 16.0 + 2.0 * n,
+        Method::Gouraud => lin(coef::GOURAUD),
+        Method::CorrectedEuler => lin(coef::CORRECTED_EULER),
+        Method::Adaptive => {
+            Some(linear(coef::CORRECTED_EULER, nf).max(linear(coef::GOURAUD, nf)) * u)
+        }
+        Method::Euler => lin(coef::EULER),
+        Method::Duff | Method::SymmetricPhong => ratio_bound(
+            linear(coef::DUFF_P, nf),
+            linear(coef::DUFF_Q, nf),
+            q_min,
+            2.0,
+            u,
+        ),
+        // The interpolated normal is off by at most 10u (Euclidean), which moves
+        // N·L/|N| by at most 10u/|N|; evaluating it costs 7.5u more.
+        Method::Phong => {
+            if !(q_min > 0.0 && q_min.is_finite()) {
+                return None;
+            }
+            Some((10.01 / q_min.sqrt() + 7.6) * u)
+        }
+        Method::Angular => Some(angle_bound(nf, u) + 2.0 * u),
+        Method::AngularTable(size) => Some(angle_bound(nf, u) + table_step(size) + 16.0 * u),
     }
 }
 
-/// The absolute bound at unit roundoff `u` (see [`bound_in_u`]), plus one table step
-/// for [`Method::AngularTable`].
-pub fn bound(method: Method, n: u32, q_min: f64, u: f64) -> f64 {
-    let table_step = match method {
-        Method::AngularTable(size) => std::f64::consts::FRAC_PI_2 / f64::from(size.max(2) - 1),
-        _ => 0.0,
-    };
-    bound_in_u(method, n, q_min) * u + table_step
+/// One step of a cosine table of `size` entries over 0–90°: the largest difference
+/// between neighbouring entries, and so what reading the neighbour costs.
+pub fn table_step(size: u32) -> f64 {
+    std::f64::consts::FRAC_PI_2 / f64::from(size.max(2) - 1)
+}
+
+/// The fast kernels of [`crate::fast::FastSpan`], whose set-up (one reciprocal, the
+/// closed form of `ds`) and evaluation order differ from [`Method::shade`]'s.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Kernel {
+    /// `FastSpan::corrected_euler` (closed form).
+    CorrectedEuler,
+    /// `FastSpan::corrected_euler_serial` (`p += t; t += ds`).
+    CorrectedEulerSerial,
+    /// `FastSpan::euler` (closed form).
+    Euler,
+    /// `FastSpan::gouraud` (closed form).
+    Gouraud,
+    /// `FastSpan::gouraud_serial` (`g += dp`).
+    GouraudSerial,
+    /// `FastSpan::adaptive`, against the exact run of the method it chose.
+    Adaptive,
+    /// `FastSpan::phong` (closed-form `p`, `q`; `sqrt` and a division).
+    Phong,
+    /// `fast::phong_rsqrt_f32` (`rsqrtps`, relative error ≤ 1.5·2^-12 by Intel's
+    /// documentation, and one Newton step).
+    PhongRsqrt,
+    /// `FastSpan::symmetric_phong`.
+    SymmetricPhong,
+    /// `FastSpan::duff_serial`.
+    DuffSerial,
+    /// `FastSpan::angular` (closed-form angle).
+    Angular,
+}
+
+/// [`bound`] for a fast kernel.
+pub fn fast_bound(kernel: Kernel, n: u32, q_min: f64, u: f64) -> Option<f64> {
+    let nf = f64::from(n);
+    if n == 0 || !(u > 0.0) || nf * u > MAX_NU {
+        return None;
+    }
+    let lin = |c: (f64, f64)| Some(linear(c, nf) * u);
+    let fast_phong = |extra: f64| ratio_bound(coef::FAST_P, coef::FAST_Q, q_min, extra, u);
+    match kernel {
+        Kernel::CorrectedEuler => lin(coef::FAST_CORRECTED_EULER),
+        Kernel::CorrectedEulerSerial => lin(coef::FAST_CORRECTED_EULER_SERIAL),
+        Kernel::Euler => lin(coef::FAST_EULER),
+        Kernel::Gouraud => lin(coef::FAST_GOURAUD),
+        Kernel::GouraudSerial => lin(coef::FAST_GOURAUD_SERIAL),
+        Kernel::Adaptive => {
+            Some(linear(coef::FAST_CORRECTED_EULER, nf).max(linear(coef::FAST_GOURAUD, nf)) * u)
+        }
+        Kernel::Phong => fast_phong(2.0),
+        Kernel::SymmetricPhong => fast_phong(3.0),
+        // 1.5·(1.5·2^-12)² + the Newton step's five roundings + the product.
+        Kernel::PhongRsqrt => fast_phong(3.4 * (2f64.powi(-24) / u) + 6.0),
+        Kernel::DuffSerial => ratio_bound(
+            linear(coef::FAST_DUFF_P, nf),
+            linear(coef::FAST_DUFF_Q, nf),
+            q_min,
+            2.0,
+            u,
+        ),
+        Kernel::Angular => Some(angle_bound(2.0, u) + 2.0 * u),
+    }
 }

@@ -6,13 +6,11 @@ mod common;
 
 use common::*;
 use phong_approx::fast::{phong_rsqrt_f32, FastSpan};
-use phong_approx::tolerance::bound;
+use phong_approx::tolerance::{bound, fast_bound, Kernel};
 use phong_approx::{Method, Real, Scalar, Span};
 
 fn q_min(s: &Span<Q>) -> f64 {
-    (0..=s.n)
-        .map(|i| s.q_at(i).to_f64())
-        .fold(f64::INFINITY, f64::min)
+    s.q_min().to_f64() * (1.0 - 1e-15)
 }
 
 fn err<T: Scalar>(a: &T, b: &Q) -> f64 {
@@ -23,39 +21,51 @@ macro_rules! kernel_tests {
     ($name:ident, $f:ident) => {
         #[test]
         fn $name() {
-            for_all_spans(64, |c, s| {
+            let check = |c: &Case, s: &Span<Q>| -> Result<(), String> {
                 let fs = s.cast::<$f>().unwrap();
                 let fast = FastSpan::<$f>::from_span(&fs);
                 let u = <$f as Scalar>::unit_roundoff();
                 let qm = q_min(s);
                 let mut out = vec![0 as $f; s.len()];
-                type Kernel = fn(&FastSpan<$f>, &mut [$f]);
-                let kernels: [(Method, Kernel); 8] = [
-                    (Method::CorrectedEuler, FastSpan::<$f>::corrected_euler),
+                type Run = fn(&FastSpan<$f>, &mut [$f]);
+                let kernels: [(Method, Kernel, Run); 8] = [
                     (
                         Method::CorrectedEuler,
+                        Kernel::CorrectedEuler,
+                        FastSpan::<$f>::corrected_euler,
+                    ),
+                    (
+                        Method::CorrectedEuler,
+                        Kernel::CorrectedEulerSerial,
                         FastSpan::<$f>::corrected_euler_serial,
                     ),
-                    (Method::Gouraud, FastSpan::<$f>::gouraud_serial),
-                    (Method::Duff, FastSpan::<$f>::duff_serial),
-                    (Method::Euler, FastSpan::<$f>::euler),
-                    (Method::Gouraud, FastSpan::<$f>::gouraud),
-                    (Method::Phong, FastSpan::<$f>::phong),
-                    (Method::SymmetricPhong, FastSpan::<$f>::symmetric_phong),
+                    (
+                        Method::Gouraud,
+                        Kernel::GouraudSerial,
+                        FastSpan::<$f>::gouraud_serial,
+                    ),
+                    (
+                        Method::Duff,
+                        Kernel::DuffSerial,
+                        FastSpan::<$f>::duff_serial,
+                    ),
+                    (Method::Euler, Kernel::Euler, FastSpan::<$f>::euler),
+                    (Method::Gouraud, Kernel::Gouraud, FastSpan::<$f>::gouraud),
+                    (Method::Phong, Kernel::Phong, FastSpan::<$f>::phong),
+                    (
+                        Method::SymmetricPhong,
+                        Kernel::SymmetricPhong,
+                        FastSpan::<$f>::symmetric_phong,
+                    ),
                 ];
-                for (m, kernel) in kernels {
+                for (m, k, kernel) in kernels {
                     kernel(&fast, &mut out);
                     let exact = m.values(s).unwrap();
                     let twin = m.values(&fs).unwrap();
-                    // Euler's values grow with n·di_a: scale its bound by the span's
-                    // magnitude as the claim tests do.
-                    let scale = if m == Method::Euler {
-                        1.0 + f64::from(s.n) * s.di_a.to_f64().abs()
-                            + f64::from(s.n).powi(2) * s.ds.to_f64().abs()
-                    } else {
-                        1.0
+                    let (Some(b), Some(b_twin)) = (fast_bound(k, s.n, qm, u), bound(m, s.n, qm, u))
+                    else {
+                        continue;
                     };
-                    let b = bound(m, s.n, qm, u) * scale;
                     for i in 0..s.len() {
                         let e = err(&out[i], &exact[i]);
                         ensure(e <= b, || {
@@ -66,7 +76,7 @@ macro_rules! kernel_tests {
                             )
                         })?;
                         let d = (f64::from(out[i]) - f64::from(twin[i])).abs();
-                        ensure(d <= 2.0 * b, || {
+                        ensure(d <= b + b_twin, || {
                             format!(
                                 "{} fast {m} vs its recurrence twin at {i}: {d:e}",
                                 stringify!($f)
@@ -75,7 +85,9 @@ macro_rules! kernel_tests {
                     }
                 }
                 Ok(())
-            });
+            };
+            for_all_spans(64, &check);
+            for_targeted_spans(16, &check);
         }
     };
 }
@@ -157,7 +169,7 @@ fn adaptive_and_angular_fast_kernels() {
         }
         .values(s)
         .unwrap();
-        let b = bound(Method::Adaptive, s.n, 1.0, u);
+        let b = fast_bound(Kernel::Adaptive, s.n, 1.0, u).unwrap();
         for i in 0..s.len() {
             ensure(err(&out[i], &want[i]) <= b, || {
                 format!("adaptive pixel {i} ({})", c.why)
@@ -166,7 +178,7 @@ fn adaptive_and_angular_fast_kernels() {
         // Angular: the closed-form angle is within the angular bound.
         f.angular(&mut out);
         let want = Method::Angular.values(s).unwrap();
-        let b = bound(Method::Angular, s.n, 1.0, u);
+        let b = fast_bound(Kernel::Angular, s.n, 1.0, u).unwrap();
         for i in 0..s.len() {
             ensure(err(&out[i], &want[i]) <= b, || {
                 format!("angular pixel {i} ({})", c.why)

@@ -7,7 +7,7 @@ use phong_approx::angular::CosTable;
 use phong_approx::parse::{parse_rational, parse_vec3};
 use phong_approx::quantize::level;
 use phong_approx::reference::level::phong_level_exact;
-use phong_approx::{BigRational, Input, Method, Real, Span, SpanError, Vec3};
+use phong_approx::{BigRational, Input, Method, Real, Scalar, Span, SpanError, Vec3};
 use serde_json::{json, Value};
 
 /// Arguments of `phong-approx span`.
@@ -248,6 +248,32 @@ fn run_typed<T: Real>(r: &Request) -> Result<Outcome, CliError> {
     Ok(outcome(r, &values, decision, None))
 }
 
+/// A positive `x` as a decimal of three significant digits, rounded up (the slack
+/// `1e-12` covers the rounding of the scaling in `f64`).
+fn round_up_3(x: f64) -> String {
+    let mut e = x.log10().floor() as i32;
+    let mut m = (x * (1.0 + 1e-12) / 10f64.powi(e - 2)).ceil() as u64;
+    if m >= 1000 {
+        m = m.div_ceil(10);
+        e += 1;
+    }
+    format!("{}.{:02}e{e}", m / 100, m % 100)
+}
+
+/// The derived bound on `|float − exact|` at every pixel of this span
+/// (`phong_approx::tolerance::bound`), for float runs of unit inputs; `None` with
+/// `--normalize` (the float run's own normalization is not in the derivation), past
+/// the derivation's range of `n`, or where the method has no bound.
+fn error_bound(r: &Request, u: f64) -> Option<f64> {
+    if r.normalize {
+        return None;
+    }
+    let exact = Span::new(r.na.clone(), r.nb.clone(), r.l.clone(), r.n).ok()?;
+    // q_min rounded down, so the bound is not understated.
+    let q_min = exact.q_min().to_f64() * (1.0 - 1e-15);
+    phong_approx::tolerance::bound(r.method, r.n, q_min, u)
+}
+
 fn run_exact(r: &Request) -> Result<Outcome, CliError> {
     let (span, values, decision) = compute::<BigRational>(r)?;
     // Phong-valued methods: decide the exact level of p/√q with rationals only.
@@ -305,6 +331,14 @@ pub fn run(a: &SpanArgs) -> Result<(), CliError> {
         });
         if let Some(f) = &o.fractions {
             obj["fractions"] = json!(f);
+        }
+        if let Some(u) = match scalar {
+            ScalarKind::F32 => Some(f32::unit_roundoff()),
+            ScalarKind::F64 => Some(f64::unit_roundoff()),
+            _ => None,
+        } {
+            // Rounded up to 3 significant digits: a bound, never understated.
+            obj["error_bound"] = error_bound(&r, u).map_or(Value::Null, |b| json!(round_up_3(b)));
         }
         if let Method::AngularTable(size) = r.method {
             obj["table_size"] = json!(size);

@@ -423,7 +423,9 @@ fn exact_row(
         let q_min = (0..=exact.n)
             .map(|i| exact.q_at(i).to_f64())
             .fold(f64::INFINITY, f64::min);
-        let bound = crate::tolerance::bound(*m, exact.n, q_min, u) * 255.0 + 8.0 * u * 255.0;
+        // Without a derived bound, no mismatch counts as explained.
+        let bound = crate::tolerance::bound(*m, exact.n, q_min, u)
+            .map_or(-1.0, |b| b * 255.0 + 8.0 * u * 255.0);
         for (i, (&g, &e)) in got[c].iter().zip(&levels).enumerate() {
             if g != e {
                 check.mismatches[c] += 1;

@@ -216,3 +216,102 @@ pub fn ensure(cond: bool, msg: impl FnOnce() -> String) -> Result<(), String> {
 pub fn qi(i: u32) -> Q {
     q(i64::from(i), 1)
 }
+
+/// Where rounding errors pile up, enumerated on purpose (`docs/float.md`, "the
+/// worst case"): near-opposite normals (a Gouraud slope of about `2/n` and `p_a + p_b`
+/// near 0, so `|ds|` is below half an ulp of the slope and every rounding of the slope
+/// has the same sign), `n = 2^k − 1`, `2^k` and `2^k + 1` (slopes just above, at and
+/// below a power of two), light along `N_a` or along the span, and the reproducer of
+/// the bound that was once false (`N_b = (192, 0, −9215)/9217`, `n = 4095`).
+pub fn targeted_cases() -> Vec<Case> {
+    let up = Stereo(0, 0, 1);
+    let mut v = vec![Case {
+        why: "reproducer: 178.8° apart, n = 4095",
+        na: up,
+        nb: Stereo(96, 0, 1),
+        l: up,
+        n: 4095,
+    }];
+    for k in [1u32, 3, 6, 8, 10, 11, 12] {
+        for n in [(1u32 << k) - 1, 1 << k, (1 << k) + 1] {
+            if n == 0 || n > 4096 {
+                continue;
+            }
+            for (why, nb, l) in [
+                ("near-opposite, light = Na", Stereo(96, 0, 1), up),
+                (
+                    "near-opposite, off-axis",
+                    Stereo(517, 33, 3),
+                    Stereo(1, 2, 7),
+                ),
+                (
+                    "near-opposite, light along the span",
+                    Stereo(40, 0, 1),
+                    Stereo(1, 0, 1),
+                ),
+                ("90° apart", Stereo(1, 0, 1), Stereo(1, 0, 3)),
+                (
+                    "close normals, grazing light",
+                    Stereo(1, 1, 40),
+                    Stereo(999, 0, 1000),
+                ),
+            ] {
+                v.push(Case {
+                    why,
+                    na: up,
+                    nb,
+                    l,
+                    n,
+                });
+            }
+        }
+    }
+    v
+}
+
+/// Random spans in the regions of [`targeted_cases`]: near-opposite normals at any
+/// orientation, `n` next to a power of two (up to 4096), light near `N_a`, along the
+/// span or anywhere.
+pub fn arb_targeted() -> impl Strategy<Value = Case> {
+    let na = (-3i64..=3, -3i64..=3, 1i64..=16).prop_map(|(a, b, d)| Stereo(a, b, d));
+    let far = (8i64..=3000, -200i64..=200, 1i64..=3).prop_map(|(a, b, d)| Stereo(a, b, d));
+    let n = (1u32..=12, 0u32..=2).prop_map(|(k, j)| ((1u32 << k) + j - 1).clamp(1, 4096));
+    let l = prop_oneof![Just(Stereo(0, 0, 1)), Just(Stereo(1, 0, 1)), arb_stereo(),];
+    (na, far, l, n).prop_map(|(na, nb, l, n)| Case {
+        why: "targeted",
+        na,
+        nb,
+        l,
+        n,
+    })
+}
+
+/// Runs `check` on every targeted case ([`targeted_cases`]), then on `cases` random
+/// ones in the same regions ([`arb_targeted`]); a failure panics with the case.
+pub fn for_targeted_spans(cases: u32, check: impl Fn(&Case, &Span<Q>) -> Result<(), String>) {
+    for c in targeted_cases() {
+        let Some(span) = c.span() else { continue };
+        if let Err(e) = check(&c, &span) {
+            panic!("targeted case '{}' failed: {e}\ninputs: {c:?}", c.why);
+        }
+    }
+    let config = ProptestConfig {
+        cases,
+        failure_persistence: Some(Box::new(
+            proptest::test_runner::FileFailurePersistence::Direct(
+                "proptest-regressions/targeted.txt",
+            ),
+        )),
+        ..ProptestConfig::default()
+    };
+    let mut runner = proptest::test_runner::TestRunner::new(config);
+    let result = runner.run(&arb_targeted(), |c| {
+        let Some(span) = c.span() else {
+            return Ok(());
+        };
+        check(&c, &span).map_err(|e| TestCaseError::fail(format!("{e}\ninputs: {c:?}")))
+    });
+    if let Err(e) = result {
+        panic!("{e}");
+    }
+}

@@ -93,12 +93,32 @@ fn ratio_bound(e_p: f64, e_q: f64, q_min: f64, roundings: f64, u: f64) -> Option
     Some(p_term + q_term + roundings * 1.0001 * u * value)
 }
 
+/// How far `acos` moves when its argument `p` (`|p| ≤ 1`) is off by at most `e`:
+/// `e/√(1 − (|p| + e)²)` (the derivative's largest value on the interval) while
+/// `|p| + e < 1`, and never more than `(π/√2)·√e` (Hölder). Without `p`, the latter.
+fn acos_error(p: Option<f64>, e: f64) -> f64 {
+    let holder = ACOS_HOLDER * e.sqrt();
+    match p {
+        // `p` is the f64 nearest the exact value: `f64::EPSILON` covers its rounding.
+        Some(p) if p.abs() + e + f64::EPSILON < 1.0 => {
+            let m = p.abs() + e + f64::EPSILON;
+            (e / (1.0 - m * m).sqrt()).min(holder)
+        }
+        _ => holder,
+    }
+}
+
 /// The bound of the angle interpolated by angular interpolation: the two `acos`
-/// (input error `5u` through `acos`'s Hölder continuity, plus one ulp of `acos`,
-/// `2πu`), the step's two roundings and `rounded_adds` rounded additions of
+/// (their argument `p_a` or `p_b` off by `5u`, see [`acos_error`], plus one ulp of
+/// `acos`, `2πu`), the step's two roundings and `rounded_adds` rounded additions of
 /// the angle (each at most `πu`).
-fn angle_bound(rounded_adds: f64, u: f64) -> f64 {
-    ACOS_HOLDER * (5.0 * u).sqrt() + (2.0 + 2.0 + rounded_adds) * std::f64::consts::PI * u
+fn angle_bound(edges: Option<(f64, f64)>, rounded_adds: f64, u: f64) -> f64 {
+    let e = 5.0 * u;
+    let acos = match edges {
+        Some((pa, pb)) => acos_error(Some(pa), e).max(acos_error(Some(pb), e)),
+        None => acos_error(None, e),
+    };
+    acos + (2.0 + 2.0 + rounded_adds) * std::f64::consts::PI * u
 }
 
 /// The largest `|float − exact|` at any pixel of a span of `n` steps whose smallest
@@ -112,6 +132,57 @@ fn angle_bound(rounded_adds: f64, u: f64) -> f64 {
 /// float run chose (the two runs may decide differently when `|δ·255·K_d|` is within
 /// rounding of 1).
 pub fn bound(method: Method, n: u32, q_min: f64, u: f64) -> Option<f64> {
+    method_bound(method, n, q_min, None, u)
+}
+
+/// What the bounds read of a span: `n`, `q_min` (rounded down) and the edge
+/// intensities `p_a`, `p_b` (angular interpolation's `acos` is ill-conditioned near
+/// ±1, so its bound is smaller when they are known).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Shape {
+    /// Steps.
+    pub n: u32,
+    /// `min_i q_i`, rounded down.
+    pub q_min: f64,
+    /// `N_a·L`.
+    pub p_a: f64,
+    /// `N_b·L`.
+    pub p_b: f64,
+}
+
+impl Shape {
+    /// The shape of an exact span.
+    pub fn of(span: &crate::Span<crate::BigRational>) -> Self {
+        use crate::Scalar;
+        // q_min rounded down; p to nearest (acos_error allows for that).
+        Shape {
+            n: span.n,
+            q_min: span.q_min().to_f64() * (1.0 - 1e-15),
+            p_a: span.p_a.to_f64(),
+            p_b: span.p_b.to_f64(),
+        }
+    }
+}
+
+/// [`bound`] for a known span: the same derivation with the span's `p_a` and `p_b`
+/// (tighter for angular interpolation; the same for every other method).
+pub fn span_bound(method: Method, shape: &Shape, u: f64) -> Option<f64> {
+    method_bound(
+        method,
+        shape.n,
+        shape.q_min,
+        Some((shape.p_a, shape.p_b)),
+        u,
+    )
+}
+
+fn method_bound(
+    method: Method,
+    n: u32,
+    q_min: f64,
+    edges: Option<(f64, f64)>,
+    u: f64,
+) -> Option<f64> {
     let nf = f64::from(n);
     if n == 0 || !(u > 0.0) || nf * u > MAX_NU {
         return None;
@@ -139,8 +210,8 @@ pub fn bound(method: Method, n: u32, q_min: f64, u: f64) -> Option<f64> {
             }
             Some((10.01 / q_min.sqrt() + 7.6) * u)
         }
-        Method::Angular => Some(angle_bound(nf, u) + 2.0 * u),
-        Method::AngularTable(size) => Some(angle_bound(nf, u) + table_step(size) + 16.0 * u),
+        Method::Angular => Some(angle_bound(edges, nf, u) + 2.0 * u),
+        Method::AngularTable(size) => Some(angle_bound(edges, nf, u) + table_step(size) + 16.0 * u),
     }
 }
 
@@ -179,8 +250,30 @@ pub enum Kernel {
     Angular,
 }
 
-/// [`bound`] for a fast kernel.
+/// [`bound`] for a fast kernel (with the span's `p_a`, `p_b` when known, as in
+/// [`span_bound`]).
 pub fn fast_bound(kernel: Kernel, n: u32, q_min: f64, u: f64) -> Option<f64> {
+    fast_method_bound(kernel, n, q_min, None, u)
+}
+
+/// [`fast_bound`] for a known span.
+pub fn fast_span_bound(kernel: Kernel, shape: &Shape, u: f64) -> Option<f64> {
+    fast_method_bound(
+        kernel,
+        shape.n,
+        shape.q_min,
+        Some((shape.p_a, shape.p_b)),
+        u,
+    )
+}
+
+fn fast_method_bound(
+    kernel: Kernel,
+    n: u32,
+    q_min: f64,
+    edges: Option<(f64, f64)>,
+    u: f64,
+) -> Option<f64> {
     let nf = f64::from(n);
     if n == 0 || !(u > 0.0) || nf * u > MAX_NU {
         return None;
@@ -207,6 +300,6 @@ pub fn fast_bound(kernel: Kernel, n: u32, q_min: f64, u: f64) -> Option<f64> {
             2.0,
             u,
         ),
-        Kernel::Angular => Some(angle_bound(2.0, u) + 2.0 * u),
+        Kernel::Angular => Some(angle_bound(edges, 2.0, u) + 2.0 * u),
     }
 }

@@ -6,7 +6,7 @@ mod common;
 
 use common::*;
 use phong_approx::fast::{phong_rsqrt_f32, FastSpan};
-use phong_approx::tolerance::{bound, fast_bound, Kernel};
+use phong_approx::tolerance::{bound, fast_bound, fast_span_bound, Kernel, Shape};
 use phong_approx::{Method, Real, Scalar, Span};
 
 fn q_min(s: &Span<Q>) -> f64 {
@@ -178,7 +178,7 @@ fn adaptive_and_angular_fast_kernels() {
         // Angular: the closed-form angle is within the angular bound.
         f.angular(&mut out);
         let want = Method::Angular.values(s).unwrap();
-        let b = fast_bound(Kernel::Angular, s.n, 1.0, u).unwrap();
+        let b = fast_span_bound(Kernel::Angular, &Shape::of(s), u).unwrap();
         for i in 0..s.len() {
             ensure(err(&out[i], &want[i]) <= b, || {
                 format!("angular pixel {i} ({})", c.why)

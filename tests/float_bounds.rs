@@ -14,7 +14,7 @@ mod common;
 use approx::assert_relative_eq;
 use common::*;
 use phong_approx::adaptive;
-use phong_approx::tolerance::bound;
+use phong_approx::tolerance::{bound, span_bound, Shape};
 use phong_approx::{Method, Real, Scalar, Span};
 use proptest::strategy::{Strategy, ValueTree};
 use proptest::test_runner::{
@@ -57,7 +57,7 @@ fn check_case<T: Real>(method: Method, c: &Case) -> Result<Option<(f64, f64)>, S
         return Ok(None);
     };
     let float_span = exact_span.cast::<T>().expect("finite");
-    let Some(b) = bound(method, c.n, q_min(&exact_span), T::unit_roundoff()) else {
+    let Some(b) = span_bound(method, &Shape::of(&exact_span), T::unit_roundoff()) else {
         return Ok(None);
     };
     let got = method.values(&float_span).unwrap();

@@ -269,9 +269,8 @@ fn error_bound(r: &Request, u: f64) -> Option<f64> {
         return None;
     }
     let exact = Span::new(r.na.clone(), r.nb.clone(), r.l.clone(), r.n).ok()?;
-    // q_min rounded down, so the bound is not understated.
-    let q_min = exact.q_min().to_f64() * (1.0 - 1e-15);
-    phong_approx::tolerance::bound(r.method, r.n, q_min, u)
+    let shape = phong_approx::tolerance::Shape::of(&exact);
+    phong_approx::tolerance::span_bound(r.method, &shape, u)
 }
 
 fn run_exact(r: &Request) -> Result<Outcome, CliError> {

@@ -316,39 +316,32 @@ Qed.
     within i(i-1)/2 (u Ms + eta) + i (u Mp + eta), provided Ms, Mp bound
     the slopes and values of the loop (plus the accumulated error). *)
 Lemma floop_err : forall (p0 s0 d : R) (m : nat) (Ms Mp : R), 0 <= Ms -> 0 <= Mp ->
-  (forall j, (j < m)%nat ->
+  (forall j, (S j < m)%nat ->
      Rabs (s0 + INR (S j) * d) + INR m * (u * Ms + eta) <= Ms) ->
   (forall j, (j < m)%nat ->
      Rabs (p0 + INR (S j) * s0 + INR (S j) * (INR (S j) - 1) / 2 * d)
      + INR m * INR m / 2 * (u * Ms + eta) + INR m * (u * Mp + eta) <= Mp) ->
   forall i, (i <= m)%nat ->
-  Rabs (snd (floop rnd p0 s0 d i) - (s0 + INR i * d)) <= INR i * (u * Ms + eta)
+  ((i < m)%nat ->
+   Rabs (snd (floop rnd p0 s0 d i) - (s0 + INR i * d)) <= INR i * (u * Ms + eta))
   /\ Rabs (fst (floop rnd p0 s0 d i) - (p0 + INR i * s0 + INR i * (INR i - 1) / 2 * d))
      <= INR i * (INR i - 1) / 2 * (u * Ms + eta) + INR i * (u * Mp + eta).
 Proof.
   intros p0 s0 d m Ms Mp HMs HMp HS HP i.
   pose proof u_pos. pose proof eta_pos.
+  assert (Ems : 0 <= u * Ms + eta) by (pose proof (Rmult_le_pos u Ms); lra).
+  assert (Emp : 0 <= u * Mp + eta) by (pose proof (Rmult_le_pos u Mp); lra).
   induction i as [| i IH]; intros Hi.
-  - cbn [floop fst snd INR]. split; rewrite Rabs_right; lra.
-  - destruct (IH ltac:(lia)) as [IS IP].
+  - cbn [floop fst snd INR]. split; [intros _|]; rewrite Rabs_right; lra.
+  - destruct (IH ltac:(lia)) as [IS IP]. specialize (IS ltac:(lia)).
     rewrite floop_S. cbn [fst snd].
     set (Sh := snd (floop rnd p0 s0 d i)) in *.
     set (Ph := fst (floop rnd p0 s0 d i)) in *.
-    specialize (HS i ltac:(lia)). specialize (HP i ltac:(lia)).
+    specialize (HP i ltac:(lia)).
     assert (Him : INR (S i) <= INR m) by (apply le_INR; lia).
     assert (Hi0 : 0 <= INR i) by apply pos_INR.
+    assert (Him' : INR i <= INR m) by (apply le_INR; lia).
     rewrite S_INR in *.
-    assert (Ems : 0 <= u * Ms + eta) by (pose proof (Rmult_le_pos u Ms); lra).
-    assert (Emp : 0 <= u * Mp + eta) by (pose proof (Rmult_le_pos u Mp); lra).
-    (* slope *)
-    assert (AS : Rabs (Sh + d) <= Ms).
-    { replace (Sh + d) with ((s0 + (INR i + 1) * d) + (Sh - (s0 + INR i * d))) by ring.
-      eapply Rle_trans; [apply Rabs_triang|].
-      assert (INR i * (u * Ms + eta) <= INR m * (u * Ms + eta))
-        by (apply Rmult_le_compat_r; lra).
-      lra. }
-    assert (RS : Rabs (rnd (Sh + d) - (Sh + d)) <= u * Ms + eta).
-    { eapply Rle_trans; [apply Hstd|]. apply Rplus_le_compat_r, Rmult_le_compat_l; lra. }
     (* value *)
     assert (AP : Rabs (Ph + Sh) <= Mp).
     { replace (Ph + Sh) with ((p0 + (INR i + 1) * s0 + (INR i + 1) * (INR i + 1 - 1) / 2 * d)
@@ -365,7 +358,16 @@ Proof.
     assert (RP : Rabs (rnd (Ph + Sh) - (Ph + Sh)) <= u * Mp + eta).
     { eapply Rle_trans; [apply Hstd|]. apply Rplus_le_compat_r, Rmult_le_compat_l; lra. }
     split.
-    + replace (rnd (Sh + d) - (s0 + (INR i + 1) * d))
+    + intros Hlt. specialize (HS i Hlt). rewrite S_INR in HS.
+      assert (AS : Rabs (Sh + d) <= Ms).
+      { replace (Sh + d) with ((s0 + (INR i + 1) * d) + (Sh - (s0 + INR i * d))) by ring.
+        eapply Rle_trans; [apply Rabs_triang|].
+        assert (INR i * (u * Ms + eta) <= INR m * (u * Ms + eta))
+          by (apply Rmult_le_compat_r; lra).
+        lra. }
+      assert (RS : Rabs (rnd (Sh + d) - (Sh + d)) <= u * Ms + eta).
+      { eapply Rle_trans; [apply Hstd|]. apply Rplus_le_compat_r, Rmult_le_compat_l; lra. }
+      replace (rnd (Sh + d) - (s0 + (INR i + 1) * d))
         with ((rnd (Sh + d) - (Sh + d)) + (Sh - (s0 + INR i * d))) by ring.
       eapply Rle_trans; [apply Rabs_triang|]. lra.
     + replace (rnd (Ph + Sh) - (p0 + (INR i + 1) * s0 + (INR i + 1) * (INR i + 1 - 1) / 2 * d))

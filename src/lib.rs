@@ -59,6 +59,9 @@ pub mod derivations {}
 #[doc = include_str!("../docs/errata.md")]
 pub mod errata {}
 
+#[doc = include_str!("../docs/float.md")]
+pub mod float {}
+
 pub mod angular;
 pub mod conformance;
 pub mod corrected_euler;
@@ -66,6 +69,7 @@ pub mod duff;
 pub mod error;
 pub mod euler;
 pub mod fast;
+pub mod fixed_span;
 pub mod gouraud;
 pub mod lowp;
 pub mod method;

@@ -17,20 +17,22 @@ fn read(p: &str) -> String {
     fs::read_to_string(root().join(p)).unwrap_or_else(|e| panic!("{p}: {e}"))
 }
 
-/// The proof file of the related-work methods; its theorems are checked against
-/// `tests/related.rs` and `docs/comparison.md`.
-const RELATED: &str = "Related.v";
+/// Proof files whose theorems are tested and explained somewhere else than
+/// `tests/claims.rs` and `docs/derivations.md`: (file, test file, document).
+const GROUPS: [(&str, &str, &str); 3] = [
+    ("Related.v", "tests/related.rs", "docs/comparison.md"),
+    ("Float.v", "tests/float_bounds.rs", "docs/float.md"),
+    ("Fixed.v", "tests/lowp.rs", "docs/float.md"),
+];
 
-/// Every `Theorem` in `proofs/*.v` (except `Assumptions.v`), split into those of the
-/// paper and the second source, and those of [`RELATED`].
-fn theorems_by_source() -> (BTreeSet<String>, BTreeSet<String>) {
+/// Every `Theorem` in `proofs/*.v` (except `Assumptions.v`) with its proof file.
+fn theorems_with_files() -> Vec<(String, String)> {
     let mut all = BTreeSet::new();
-    let (mut paper, mut related) = (BTreeSet::new(), BTreeSet::new());
+    let mut out = Vec::new();
     for entry in fs::read_dir(root().join("proofs")).unwrap() {
         let path = entry.unwrap().path();
-        if path.extension().is_some_and(|e| e == "v")
-            && path.file_name().unwrap() != "Assumptions.v"
-        {
+        let file = path.file_name().unwrap().to_string_lossy().to_string();
+        if path.extension().is_some_and(|e| e == "v") && file != "Assumptions.v" {
             for line in fs::read_to_string(&path).unwrap().lines() {
                 if let Some(rest) = line.trim_start().strip_prefix("Theorem ") {
                     let name: String = rest
@@ -38,22 +40,31 @@ fn theorems_by_source() -> (BTreeSet<String>, BTreeSet<String>) {
                         .take_while(|c| c.is_alphanumeric() || *c == '_')
                         .collect();
                     assert!(all.insert(name.clone()), "theorem {name} is defined twice");
-                    if path.file_name().unwrap() == RELATED {
-                        related.insert(name);
-                    } else {
-                        paper.insert(name);
-                    }
+                    out.push((name, file.clone()));
                 }
             }
         }
     }
-    (paper, related)
+    out
 }
 
-fn theorems() -> BTreeSet<String> {
-    let (mut paper, related) = theorems_by_source();
-    paper.extend(related);
-    paper
+/// The test file and the document of a proof file.
+fn home(file: &str) -> (&'static str, &'static str) {
+    GROUPS
+        .iter()
+        .find(|(f, _, _)| *f == file)
+        .map_or(("tests/claims.rs", "docs/derivations.md"), |(_, t, d)| {
+            (*t, *d)
+        })
+}
+
+/// The theorems of the paper and the second source (tested in `tests/claims.rs`).
+fn paper_theorems() -> BTreeSet<String> {
+    theorems_with_files()
+        .into_iter()
+        .filter(|(_, f)| home(f).0 == "tests/claims.rs")
+        .map(|(t, _)| t)
+        .collect()
 }
 
 /// The names of the `#[test]` functions in `file` (inside `proptest!` blocks too).
@@ -73,37 +84,30 @@ fn test_names(file: &str) -> BTreeSet<String> {
 
 #[test]
 fn every_theorem_has_a_test_and_every_test_a_theorem() {
-    let (t, related) = theorems_by_source();
-    let c = test_names("tests/claims.rs");
+    let all = theorems_with_files();
+    let t = paper_theorems();
     assert!(t.len() >= 41, "only {} theorems found", t.len());
-    assert!(
-        related.len() >= 8,
-        "only {} related theorems",
-        related.len()
-    );
-    let related_tests = test_names("tests/related.rs");
-    let untested: Vec<_> = related.difference(&related_tests).collect();
-    assert!(
-        untested.is_empty(),
-        "theorems of proofs/{RELATED} without a test in tests/related.rs: {untested:?}"
-    );
-    let missing_tests: Vec<_> = t.difference(&c).collect();
+    for (file, tests, _) in GROUPS {
+        let n = all.iter().filter(|(_, f)| f == file).count();
+        assert!(n >= 3, "only {n} theorems in proofs/{file}");
+    }
+    for (name, file) in &all {
+        let (tests, _) = home(file);
+        assert!(
+            test_names(tests).contains(name),
+            "theorem {name} of proofs/{file} has no test of that name in {tests}"
+        );
+    }
+    let c = test_names("tests/claims.rs");
     let missing_proofs: Vec<_> = c.difference(&t).collect();
     assert!(
-        missing_tests.is_empty(),
-        "theorems without a test: {missing_tests:?}"
-    );
-    assert!(
         missing_proofs.is_empty(),
-        "tests without a theorem: {missing_proofs:?}"
+        "tests of tests/claims.rs without a theorem: {missing_proofs:?}"
     );
 }
 
 #[test]
 fn every_claim_is_in_the_derivations_and_cited_from_the_code() {
-    let (_, related) = theorems_by_source();
-    let derivations = read("docs/derivations.md");
-    let comparison = read("docs/comparison.md");
     let mut code = String::new();
     let mut stack = vec![root().join("src")];
     while let Some(dir) = stack.pop() {
@@ -116,14 +120,10 @@ fn every_claim_is_in_the_derivations_and_cited_from_the_code() {
             }
         }
     }
-    for name in theorems() {
+    for (name, file) in theorems_with_files() {
         let quoted = format!("`{name}`");
-        let (docs, doc_name) = if related.contains(&name) {
-            (&comparison, "docs/comparison.md")
-        } else {
-            (&derivations, "docs/derivations.md")
-        };
-        assert!(docs.contains(&quoted), "{doc_name} does not explain {name}");
+        let (_, doc) = home(&file);
+        assert!(read(doc).contains(&quoted), "{doc} does not explain {name}");
         assert!(
             code.contains(&quoted),
             "no doc comment in src/ cites {name}"

@@ -1,0 +1,347 @@
+(** * Float.v — floating-point error bounds for the corrected Euler (eqs.
+    16-17) and Gouraud recurrences, computed exactly as the Rust crate
+    computes them (src/span.rs set-up, src/corrected_euler.rs and
+    src/gouraud.rs loops), with every operation rounded to nearest-even in
+    binary32 or binary64 (Flocq), against the exact real-number values of
+    Span.v / Euler.v / Adaptive.v on the exact (unrounded) inputs.
+
+    The model of the computation (every [rnd] is one rounded operation;
+    n, 2n and n(n-1)/2 are exact integers of the format since n <= 4096):
+      inputs   na = rnd Na, nb = rnd Nb, l = rnd L (componentwise)
+      dot      fdot a b = rnd (rnd (rnd (ax bx) + rnd (ay by)) + rnd (az bz))
+      k_j      = rnd (rnd (nb_j - na_j) / n)
+      a = fdot k l, pa = fdot na l, c = fdot k k, d = rnd (2 fdot k na),
+      pb = fdot nb l, dqb = rnd (rnd ((2n) c) + d),
+      dia = rnd (a - rnd (rnd (pa/2) d)), dib = rnd (a - rnd (rnd (pb/2) dqb)),
+      ds = rnd (rnd (dib - dia) / n),
+      pn = rnd (rnd (pa + rnd (n dia)) + rnd (tri ds)), tri = n(n-1)/2,
+      eps = rnd (pn - pb), t0 = rnd (dia - rnd (eps / n)),
+      dp = rnd (rnd (pb - pa) / n);
+      corrected Euler: P_0 = pa, S_0 = t0, P' = rnd (P + S), S' = rnd (S + ds);
+      Gouraud: G_0 = pa, G' = rnd (G + dp). *)
+
+From Coq Require Import Reals Lra Lia.
+From Flocq Require Import Core.
+From PhongApprox Require Import Span Euler Adaptive FloatModel.
+Open Scope R_scope.
+
+(** ** The float computation, for a rounding function [rnd] *)
+
+Definition rvec (rnd : R -> R) (v : vec) : vec :=
+  mkV (rnd (vx v)) (rnd (vy v)) (rnd (vz v)).
+Definition fk (rnd : R -> R) (m : R) (na nb : vec) : vec :=
+  mkV (rnd (rnd (vx nb - vx na) / m)) (rnd (rnd (vy nb - vy na) / m))
+      (rnd (rnd (vz nb - vz na) / m)).
+
+Definition f_k (rnd : R -> R) (s : span) : vec :=
+  fk rnd (INR (n s)) (rvec rnd (Na s)) (rvec rnd (Nb s)).
+Definition f_pa (rnd : R -> R) (s : span) : R := fdot rnd (rvec rnd (Na s)) (rvec rnd (L s)).
+Definition f_pb (rnd : R -> R) (s : span) : R := fdot rnd (rvec rnd (Nb s)) (rvec rnd (L s)).
+Definition f_a (rnd : R -> R) (s : span) : R := fdot rnd (f_k rnd s) (rvec rnd (L s)).
+Definition f_c (rnd : R -> R) (s : span) : R := fdot rnd (f_k rnd s) (f_k rnd s).
+Definition f_d (rnd : R -> R) (s : span) : R :=
+  rnd (2 * fdot rnd (f_k rnd s) (rvec rnd (Na s))).
+Definition f_dqb (rnd : R -> R) (s : span) : R :=
+  rnd (rnd (2 * INR (n s) * f_c rnd s) + f_d rnd s).
+Definition f_dia (rnd : R -> R) (s : span) : R :=
+  rnd (f_a rnd s - rnd (rnd (f_pa rnd s / 2) * f_d rnd s)).
+Definition f_dib (rnd : R -> R) (s : span) : R :=
+  rnd (f_a rnd s - rnd (rnd (f_pb rnd s / 2) * f_dqb rnd s)).
+Definition f_ds (rnd : R -> R) (s : span) : R :=
+  rnd (rnd (f_dib rnd s - f_dia rnd s) / INR (n s)).
+Definition f_tri (s : span) : R := INR (n s) * (INR (n s) - 1) / 2.
+Definition f_pn (rnd : R -> R) (s : span) : R :=
+  rnd (rnd (f_pa rnd s + rnd (INR (n s) * f_dia rnd s)) + rnd (f_tri s * f_ds rnd s)).
+Definition f_eps (rnd : R -> R) (s : span) : R := rnd (f_pn rnd s - f_pb rnd s).
+Definition f_deps (rnd : R -> R) (s : span) : R := rnd (f_eps rnd s / INR (n s)).
+Definition f_t0 (rnd : R -> R) (s : span) : R := rnd (f_dia rnd s - f_deps rnd s).
+Definition f_dp (rnd : R -> R) (s : span) : R :=
+  rnd (rnd (f_pb rnd s - f_pa rnd s) / INR (n s)).
+
+(** Output pixel i of the two loops. *)
+Definition f_ceuler (rnd : R -> R) (s : span) (i : nat) : R :=
+  fst (floop rnd (f_pa rnd s) (f_t0 rnd s) (f_ds rnd s) i).
+Definition f_gouraud (rnd : R -> R) (s : span) (i : nat) : R :=
+  gloop rnd (f_pa rnd s) (f_dp rnd s) i.
+
+(** ** Real-number facts for unit vectors *)
+
+Lemma abs_sq : forall x, Rabs x * Rabs x = x * x.
+Proof. intros x. rewrite <- Rabs_mult. apply Rabs_pos_eq. nra. Qed.
+
+Lemma amgm1 : forall x y, Rabs x * Rabs y <= (x * x + y * y) / 2.
+Proof.
+  intros x y. rewrite <- (abs_sq x), <- (abs_sq y).
+  pose proof (Rle_0_sqr (Rabs x - Rabs y)). unfold Rsqr in *. nra.
+Qed.
+
+Lemma amgm2 : forall x y, Rabs x * Rabs y <= x * x / 4 + y * y.
+Proof.
+  intros x y. rewrite <- (abs_sq x), <- (abs_sq y).
+  pose proof (Rle_0_sqr (Rabs x - 2 * Rabs y)). unfold Rsqr in *. nra.
+Qed.
+
+Lemma abs_le_of_sq : forall x M, 0 <= M -> x * x <= M * M -> Rabs x <= M.
+Proof. intros x M HM H. apply Rabs_le. split; nra. Qed.
+
+Lemma dot_abs : forall a b : vec,
+  Rabs (dot a b) <= Rabs (vx a) * Rabs (vx b) + Rabs (vy a) * Rabs (vy b)
+                    + Rabs (vz a) * Rabs (vz b).
+Proof.
+  intros a b. unfold dot. rewrite <- !Rabs_mult.
+  eapply Rle_trans; [apply Rabs_triang|]. apply Rplus_le_compat_r, Rabs_triang.
+Qed.
+
+Lemma unit_bounded : forall v, is_unit v -> vbounded v 1.
+Proof.
+  intros v H. unfold is_unit, dot in H. unfold vbounded.
+  pose proof (Rle_0_sqr (vx v)). pose proof (Rle_0_sqr (vy v)).
+  pose proof (Rle_0_sqr (vz v)). unfold Rsqr in *.
+  repeat split; apply abs_le_of_sq; lra.
+Qed.
+
+Lemma unit_pair : forall a b, is_unit a -> is_unit b ->
+  Rabs (vx a) * Rabs (vx b) + Rabs (vy a) * Rabs (vy b) + Rabs (vz a) * Rabs (vz b) <= 1.
+Proof.
+  intros a b Ha Hb. unfold is_unit, dot in *.
+  pose proof (amgm1 (vx a) (vx b)). pose proof (amgm1 (vy a) (vy b)).
+  pose proof (amgm1 (vz a) (vz b)). lra.
+Qed.
+
+Lemma unit_abs_sq : forall a, is_unit a ->
+  Rabs (vx a) * Rabs (vx a) + Rabs (vy a) * Rabs (vy a) + Rabs (vz a) * Rabs (vz a) = 1.
+Proof. intros a Ha. unfold is_unit, dot in Ha. rewrite !abs_sq. lra. Qed.
+
+(** Differences Dl = b - a of two unit vectors. *)
+Lemma diff_sq : forall a b, is_unit a -> is_unit b ->
+  dot (vsub b a) (vsub b a) <= 4.
+Proof.
+  intros a b Ha Hb. unfold is_unit, dot, vsub in *; cbn [vx vy vz].
+  pose proof (Rle_0_sqr (vx a + vx b)). pose proof (Rle_0_sqr (vy a + vy b)).
+  pose proof (Rle_0_sqr (vz a + vz b)). unfold Rsqr in *. nra.
+Qed.
+
+Lemma diff_bounded : forall a b, is_unit a -> is_unit b -> vbounded (vsub b a) 2.
+Proof.
+  intros a b Ha Hb. destruct (unit_bounded a Ha) as [A1 [A2 A3]].
+  destruct (unit_bounded b Hb) as [B1 [B2 B3]].
+  unfold vbounded, vsub; cbn [vx vy vz].
+  repeat split; (eapply Rle_trans; [apply Rabs_triang|]); rewrite Rabs_Ropp; lra.
+Qed.
+
+Lemma diff_pair : forall a b c, is_unit a -> is_unit b -> is_unit c ->
+  Rabs (vx (vsub b a)) * Rabs (vx c) + Rabs (vy (vsub b a)) * Rabs (vy c)
+  + Rabs (vz (vsub b a)) * Rabs (vz c) <= 2.
+Proof.
+  intros a b c Ha Hb Hc. pose proof (diff_sq a b Ha Hb) as D.
+  unfold is_unit, dot in *.
+  pose proof (amgm2 (vx (vsub b a)) (vx c)). pose proof (amgm2 (vy (vsub b a)) (vy c)).
+  pose proof (amgm2 (vz (vsub b a)) (vz c)). lra.
+Qed.
+
+Lemma diff_abs_sq : forall a b, is_unit a -> is_unit b ->
+  Rabs (vx (vsub b a)) * Rabs (vx (vsub b a)) + Rabs (vy (vsub b a)) * Rabs (vy (vsub b a))
+  + Rabs (vz (vsub b a)) * Rabs (vz (vsub b a)) <= 4.
+Proof.
+  intros a b Ha Hb. pose proof (diff_sq a b Ha Hb) as D. unfold dot in D.
+  rewrite !abs_sq. lra.
+Qed.
+
+(** |Dl . w| <= |Dl|^2/4 + |w|^2 *)
+Lemma diff_dot_le : forall (d w : vec), Rabs (dot d w) <= dot d d / 4 + dot w w.
+Proof.
+  intros d w. eapply Rle_trans; [apply dot_abs|]. unfold dot.
+  pose proof (amgm2 (vx d) (vx w)). pose proof (amgm2 (vy d) (vy w)).
+  pose proof (amgm2 (vz d) (vz w)). lra.
+Qed.
+
+(** ** The exact set-up, scaled by n (unit normals and light) *)
+
+Definition e_ndia (s : span) : R :=
+  dot (vsub (Nb s) (Na s)) (L s) - pa s * dot (vsub (Nb s) (Na s)) (Na s).
+Definition e_ndib (s : span) : R :=
+  dot (vsub (Nb s) (Na s)) (L s) - pb s * dot (vsub (Nb s) (Na s)) (Nb s).
+Definition e_n2ds (s : span) : R := e_ndib s - e_ndia s.
+
+Section Exact.
+Context (s : span) (Hua : is_unit (Na s)) (Hub : is_unit (Nb s)) (Hul : is_unit (L s))
+        (Hn1 : (1 <= n s)%nat).
+
+Lemma nr_ge1 : 1 <= INR (n s).
+Proof. apply (le_INR 1). exact Hn1. Qed.
+
+Lemma dia_scaled : dia s = e_ndia s / INR (n s).
+Proof.
+  pose proof nr_ge1.
+  unfold e_ndia, dia, dqa, A, D, k, pa, dot, vscale, vsub; cbn [vx vy vz]. field. lra.
+Qed.
+
+Lemma ds_scaled : ds s = e_n2ds s / (INR (n s) * INR (n s)).
+Proof.
+  pose proof nr_ge1.
+  unfold e_n2ds, e_ndib, e_ndia, ds, dib, dia, dqb, dqa, A, C, D, k, pa, pb, dot, vscale, vsub;
+    cbn [vx vy vz]. field. lra.
+Qed.
+
+Lemma pa_le : Rabs (pa s) <= 1.
+Proof. unfold pa. eapply Rle_trans; [apply dot_abs|]. apply unit_pair; assumption. Qed.
+Lemma pb_le : Rabs (pb s) <= 1.
+Proof. unfold pb. eapply Rle_trans; [apply dot_abs|]. apply unit_pair; assumption. Qed.
+
+Lemma dl_dot_le : forall c : vec, is_unit c -> Rabs (dot (vsub (Nb s) (Na s)) c) <= 2.
+Proof.
+  intros c Hc. eapply Rle_trans; [apply dot_abs|]. apply diff_pair; assumption.
+Qed.
+
+Lemma dl_na : dot (vsub (Nb s) (Na s)) (Na s) = dot (Na s) (Nb s) - 1.
+Proof. unfold is_unit in Hua. rewrite <- Hua. unfold dot, vsub; cbn [vx vy vz]. ring. Qed.
+Lemma dl_nb : dot (vsub (Nb s) (Na s)) (Nb s) = 1 - dot (Na s) (Nb s).
+Proof. unfold is_unit in Hub. rewrite <- Hub. unfold dot, vsub; cbn [vx vy vz]. ring. Qed.
+
+Lemma cos_range : -1 <= dot (Na s) (Nb s) <= 1.
+Proof.
+  unfold is_unit, dot in *.
+  pose proof (Rle_0_sqr (vx (Na s) + vx (Nb s))). pose proof (Rle_0_sqr (vy (Na s) + vy (Nb s))).
+  pose proof (Rle_0_sqr (vz (Na s) + vz (Nb s))).
+  pose proof (Rle_0_sqr (vx (Na s) - vx (Nb s))). pose proof (Rle_0_sqr (vy (Na s) - vy (Nb s))).
+  pose proof (Rle_0_sqr (vz (Na s) - vz (Nb s))). unfold Rsqr in *. split; nra.
+Qed.
+
+(** |n di_a| <= 2: n di_a = Dl . (L - p_a Na) and |L - p_a Na|^2 = 1 - p_a^2. *)
+Lemma ndia_le : Rabs (e_ndia s) <= 2.
+Proof.
+  set (w := mkV (vx (L s) - pa s * vx (Na s)) (vy (L s) - pa s * vy (Na s))
+                (vz (L s) - pa s * vz (Na s))).
+  assert (E : e_ndia s = dot (vsub (Nb s) (Na s)) w).
+  { unfold e_ndia, w, dot, vsub; cbn [vx vy vz]. ring. }
+  assert (Ew : dot w w = dot (L s) (L s) - 2 * pa s * dot (Na s) (L s)
+                         + pa s * pa s * dot (Na s) (Na s)).
+  { unfold w, dot; cbn [vx vy vz]. ring. }
+  unfold is_unit in *. rewrite Hul, Hua in Ew. fold (pa s) in Ew.
+  pose proof (diff_sq (Na s) (Nb s) Hua Hub).
+  rewrite E. eapply Rle_trans; [apply diff_dot_le|]. nra.
+Qed.
+
+Lemma ndib_le : Rabs (e_ndib s) <= 2.
+Proof.
+  set (w := mkV (vx (L s) - pb s * vx (Nb s)) (vy (L s) - pb s * vy (Nb s))
+                (vz (L s) - pb s * vz (Nb s))).
+  assert (E : e_ndib s = dot (vsub (Nb s) (Na s)) w).
+  { unfold e_ndib, w, dot, vsub; cbn [vx vy vz]. ring. }
+  assert (Ew : dot w w = dot (L s) (L s) - 2 * pb s * dot (Nb s) (L s)
+                         + pb s * pb s * dot (Nb s) (Nb s)).
+  { unfold w, dot; cbn [vx vy vz]. ring. }
+  unfold is_unit in *. rewrite Hul, Hub in Ew. fold (pb s) in Ew.
+  pose proof (diff_sq (Na s) (Nb s) Hua Hub).
+  rewrite E. eapply Rle_trans; [apply diff_dot_le|]. nra.
+Qed.
+
+(** n^2 ds = -(1 - Na.Nb)(p_a + p_b), and |n^2 ds| <= 2 (Cauchy-Schwarz). *)
+Lemma n2ds_form : e_n2ds s = - (1 - dot (Na s) (Nb s)) * (pa s + pb s).
+Proof. unfold e_n2ds, e_ndib, e_ndia. rewrite dl_na, dl_nb. ring. Qed.
+
+Lemma n2ds_le : Rabs (e_n2ds s) <= 2.
+Proof.
+  rewrite n2ds_form. set (c := dot (Na s) (Nb s)).
+  pose proof cos_range as Hc. fold c in Hc.
+  set (S := vadd (Na s) (Nb s)).
+  assert (ES : dot S S = 2 + 2 * c).
+  { unfold is_unit in *. unfold c. rewrite <- (Rmult_1_l 2) at 1.
+    replace 2 with (dot (Na s) (Na s) + dot (Nb s) (Nb s)) at 1 by lra.
+    unfold S, vadd, dot; cbn [vx vy vz]. ring. }
+  assert (EL : pa s + pb s = dot S (L s)).
+  { unfold S, pa, pb, vadd, dot; cbn [vx vy vz]. ring. }
+  assert (LG : dot S S * dot (L s) (L s) - dot S (L s) * dot S (L s) =
+     (vx S * vy (L s) - vy S * vx (L s)) * (vx S * vy (L s) - vy S * vx (L s))
+   + (vx S * vz (L s) - vz S * vx (L s)) * (vx S * vz (L s) - vz S * vx (L s))
+   + (vy S * vz (L s) - vz S * vy (L s)) * (vy S * vz (L s) - vz S * vy (L s))).
+  { unfold dot. ring. }
+  unfold is_unit in Hul. rewrite Hul in LG.
+  assert (CS : (pa s + pb s) * (pa s + pb s) <= 2 + 2 * c).
+  { rewrite EL, <- ES.
+    pose proof (Rle_0_sqr (vx S * vy (L s) - vy S * vx (L s))).
+    pose proof (Rle_0_sqr (vx S * vz (L s) - vz S * vx (L s))).
+    pose proof (Rle_0_sqr (vy S * vz (L s) - vz S * vy (L s))). unfold Rsqr in *. lra. }
+  apply abs_le_of_sq; [lra|].
+  set (x := 1 - c). assert (0 <= x <= 2) by (unfold x; lra).
+  replace (- x * (pa s + pb s) * (- x * (pa s + pb s)))
+    with ((x * x) * ((pa s + pb s) * (pa s + pb s))) by ring.
+  assert ((x * x) * ((pa s + pb s) * (pa s + pb s)) <= (x * x) * (2 + 2 * c))
+    by (apply Rmult_le_compat_l; nra).
+  replace c with (1 - x) in * by (unfold x; ring).
+  assert (x * x * (4 - 2 * x) <= 2 * x * (4 - 2 * x)) by (apply Rmult_le_compat_r; nra).
+  pose proof (Rle_0_sqr (x - 1)). unfold Rsqr in *. nra.
+Qed.
+
+(** Exact magnitudes along the span. *)
+Lemma gouraud_le : forall i, (i <= n s)%nat -> Rabs (gouraud s i) <= 1.
+Proof.
+  intros i Hi. pose proof nr_ge1. pose proof pa_le. pose proof pb_le.
+  assert (Hi' : INR i <= INR (n s)) by (apply le_INR; exact Hi).
+  pose proof (pos_INR i).
+  set (th := INR i / INR (n s)).
+  assert (0 <= th <= 1).
+  { unfold th. split; [unfold Rdiv; apply Rmult_le_pos; [lra | apply Rlt_le, Rinv_0_lt_compat; lra]|].
+    apply (Rmult_le_reg_r (INR (n s))); [lra|]. unfold Rdiv.
+    rewrite Rmult_assoc, Rinv_l by lra. lra. }
+  replace (gouraud s i) with ((1 - th) * pa s + th * pb s)
+    by (unfold gouraud, dp, th; field; lra).
+  eapply Rle_trans; [apply Rabs_triang|].
+  rewrite !Rabs_mult, (Rabs_pos_eq (1 - th)), (Rabs_pos_eq th) by lra.
+  assert ((1 - th) * Rabs (pa s) <= (1 - th) * 1) by (apply Rmult_le_compat_l; lra).
+  assert (th * Rabs (pb s) <= th * 1) by (apply Rmult_le_compat_l; lra).
+  lra.
+Qed.
+
+Lemma ceuler_le : forall i, (i <= n s)%nat -> Rabs (ceuler s i) <= 5 / 4.
+Proof.
+  intros i Hi. pose proof nr_ge1. pose proof n2ds_le.
+  assert (Hi' : INR i <= INR (n s)) by (apply le_INR; exact Hi).
+  pose proof (pos_INR i).
+  assert (E := eq_24_gouraud_minus_corrected_euler s i ltac:(lia)).
+  replace (ceuler s i) with (gouraud s i - ds s / 2 * INR i * (INR (n s) - INR i)) by lra.
+  rewrite ds_scaled.
+  set (kap := INR i * (INR (n s) - INR i) / (2 * (INR (n s) * INR (n s)))).
+  assert (0 <= kap <= 1 / 8).
+  { unfold kap. split.
+    - unfold Rdiv; apply Rmult_le_pos; [nra | apply Rlt_le, Rinv_0_lt_compat; nra].
+    - apply (Rmult_le_reg_r (2 * (INR (n s) * INR (n s)))); [nra|]. unfold Rdiv.
+      rewrite Rmult_assoc, Rinv_l by nra.
+      pose proof (Rle_0_sqr (INR (n s) - 2 * INR i)). unfold Rsqr in *. nra. }
+  replace (gouraud s i - e_n2ds s / (INR (n s) * INR (n s)) / 2 * INR i * (INR (n s) - INR i))
+    with (gouraud s i - kap * e_n2ds s) by (unfold kap; field; lra).
+  pose proof (gouraud_le i Hi).
+  unfold Rminus. eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_Ropp, Rabs_mult.
+  rewrite (Rabs_pos_eq kap) by lra.
+  assert (kap * Rabs (e_n2ds s) <= 1 / 8 * 2) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
+  lra.
+Qed.
+
+(** |n (t0 + j ds)| <= 3 for 0 <= j <= n - 1. *)
+Lemma slope_le : forall j, (j < n s)%nat ->
+  Rabs (INR (n s) * (t0 s + INR j * ds s)) <= 3.
+Proof.
+  intros j Hj. pose proof nr_ge1. pose proof n2ds_le. pose proof pa_le. pose proof pb_le.
+  assert (Hj' : INR j + 1 <= INR (n s)) by (rewrite <- S_INR; apply le_INR; lia).
+  pose proof (pos_INR j).
+  rewrite (t0_closed_form s ltac:(lia)), ds_scaled.
+  set (g := (2 * INR j - INR (n s) + 1) / (2 * INR (n s))).
+  assert (Rabs g <= 1 / 2).
+  { apply Rabs_le. unfold g. split.
+    - apply (Rmult_le_reg_r (2 * INR (n s))); [lra|]. unfold Rdiv.
+      rewrite Rmult_assoc, Rinv_l by lra. lra.
+    - apply (Rmult_le_reg_r (2 * INR (n s))); [lra|]. unfold Rdiv.
+      rewrite Rmult_assoc, Rinv_l by lra. lra. }
+  replace (INR (n s) * ((pb s - pa s) / INR (n s)
+             - (INR (n s) - 1) / 2 * (e_n2ds s / (INR (n s) * INR (n s)))
+             + INR j * (e_n2ds s / (INR (n s) * INR (n s)))))
+    with ((pb s - pa s) + g * e_n2ds s) by (unfold g; field; lra).
+  eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_mult.
+  assert (Rabs g * Rabs (e_n2ds s) <= 1 / 2 * 2)
+    by (apply Rmult_le_compat; try lra; apply Rabs_pos).
+  assert (Rabs (pb s - pa s) <= 2).
+  { unfold Rminus. eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_Ropp. lra. }
+  lra.
+Qed.
+
+End Exact.

@@ -345,3 +345,185 @@ Proof.
 Qed.
 
 End Exact.
+
+(** ** The float set-up, step by step *)
+
+(** Weights of the componentwise errors: inputs (|x_j| + 2^-30) and
+    n k_j (3.001 (|Na_j| + |Nb_j|) + 2^-28). *)
+Definition wIn (v : vec) : vec :=
+  mkV (Rabs (vx v) + / 1073741824) (Rabs (vy v) + / 1073741824) (Rabs (vz v) + / 1073741824).
+Definition wK (a b : vec) : vec :=
+  mkV (3001 / 1000 * (Rabs (vx a) + Rabs (vx b)) + / 268435456)
+      (3001 / 1000 * (Rabs (vy a) + Rabs (vy b)) + / 268435456)
+      (3001 / 1000 * (Rabs (vz a) + Rabs (vz b)) + / 268435456).
+
+Lemma vb12 : forall v, vbounded v 1 -> vbounded v 2.
+Proof. intros v [A [B C]]. repeat split; lra. Qed.
+
+Section Chain.
+Context (rnd : R -> R) (u eta : R) (Hstd : std_model rnd u eta) (Hok : fmt_ok u eta).
+
+Lemma in_comp : forall x, Rabs (rnd x - x) <= u * (Rabs x + / 1073741824).
+Proof.
+  intros x. pose proof (Hstd x). pose proof (u_pos u eta Hok).
+  pose proof (eta_small u eta Hok). lra.
+Qed.
+
+Lemma in_vec : forall v, vapprox u 1 (rvec rnd v) v (wIn v).
+Proof.
+  intros v. unfold vapprox, rvec, wIn; cbn [vx vy vz]. rewrite !Rmult_1_l.
+  repeat split; apply in_comp.
+Qed.
+
+Lemma wIn_bounded : forall v, vbounded v 1 -> wbounded (wIn v).
+Proof.
+  intros v [A [B C]]. unfold wbounded, wIn; cbn [vx vy vz].
+  pose proof (Rabs_pos (vx v)). pose proof (Rabs_pos (vy v)). pose proof (Rabs_pos (vz v)).
+  repeat split; lra.
+Qed.
+
+Lemma wK_bounded : forall a b, vbounded a 1 -> vbounded b 1 -> wbounded (wK a b).
+Proof.
+  intros a b [A1 [A2 A3]] [B1 [B2 B3]]. unfold wbounded, wK; cbn [vx vy vz].
+  pose proof (Rabs_pos (vx a)). pose proof (Rabs_pos (vy a)). pose proof (Rabs_pos (vz a)).
+  pose proof (Rabs_pos (vx b)). pose proof (Rabs_pos (vy b)). pose proof (Rabs_pos (vz b)).
+  repeat split; lra.
+Qed.
+
+(** One component of n k: |n rnd (rnd (rnd b - rnd a) / n) - (b - a)| <= u (3.001 (|a|+|b|) + 2^-28). *)
+Lemma k_comp : forall (m a b : R), 1 <= m <= 4096 -> Rabs a <= 1 -> Rabs b <= 1 ->
+  Rabs (m * rnd (rnd (rnd b - rnd a) / m) - (b - a))
+  <= u * (3001 / 1000 * (Rabs a + Rabs b) + / 268435456).
+Proof.
+  intros m a b Hm Ha Hb.
+  pose proof (u_pos u eta Hok). pose proof (u_small u eta Hok).
+  pose proof (in_comp a) as F1. pose proof (in_comp b) as F2.
+  set (ra := rnd a) in *. set (rb := rnd b) in *.
+  set (s1 := rnd (rb - ra)).
+  assert (D1 : Rabs (rb - ra) <= Rabs a + Rabs b + Rabs (ra - a) + Rabs (rb - b)).
+  { replace (rb - ra) with ((b - a) + (rb - b) + - (ra - a)) by ring.
+    eapply Rle_trans; [apply tri3|]. rewrite Rabs_Ropp. pose proof (absdiff b a). lra. }
+  pose proof (rnd_1 rnd u eta Hstd Hok (rb - ra) (Rabs (rb - ra)) (Rle_refl _)) as F3.
+  fold s1 in F3.
+  assert (HK : m * (s1 / m) = s1) by (field; lra).
+  pose proof (rnd_sc rnd u eta Hstd Hok m (s1 / m) (Rabs s1) ltac:(lra)
+                ltac:(rewrite HK; lra)) as F4.
+  rewrite HK in F4.
+  assert (S1 : Rabs s1 <= Rabs (rb - ra) + Rabs (s1 - (rb - ra))).
+  { apply abs_near. lra. }
+  assert (Pa : 0 <= u * Rabs a) by (apply Rmult_le_pos; [lra | apply Rabs_pos]).
+  assert (Pb : 0 <= u * Rabs b) by (apply Rmult_le_pos; [lra | apply Rabs_pos]).
+  assert (G1 : u * Rabs (rb - ra) <= u * (Rabs a + Rabs b + u * Rabs a + u * Rabs b
+                                           + 2 * (u * / 1073741824)))
+    by (apply Rmult_le_compat_l; lra).
+  pose proof (u_u u eta Hok (Rabs a) (Rabs_pos _)).
+  pose proof (u_u u eta Hok (Rabs b) (Rabs_pos _)).
+  assert (G2 : u * (u * / 1073741824) <= / 1073741824 * u) by nra.
+  assert (G3 : u * Rabs s1 <= u * (Rabs (rb - ra) + (Rabs (rb - ra) + / 68719476736) * u))
+    by (apply Rmult_le_compat_l; lra).
+  assert (G4 : u * ((Rabs (rb - ra) + / 68719476736) * u)
+               <= / 16777216 * (u * Rabs (rb - ra)) + / 68719476736 * (u * u)).
+  { pose proof (u_u u eta Hok (Rabs (rb - ra)) (Rabs_pos _)). nra. }
+  assert (G5 : u * u <= / 16777216 * u) by nra.
+  replace (m * rnd (s1 / m) - (b - a))
+    with ((m * rnd (s1 / m) - s1) + (s1 - (rb - ra)) + (rb - b) - (ra - a)) by ring.
+  replace ((m * rnd (s1 / m) - s1) + (s1 - (rb - ra)) + (rb - b) - (ra - a))
+    with ((m * rnd (s1 / m) - s1) + (s1 - (rb - ra)) + (rb - b) + - (ra - a)) by ring.
+  eapply Rle_trans; [apply tri4|]. rewrite Rabs_Ropp. lra.
+Qed.
+
+Section Span_.
+Context (s : span) (Hua : is_unit (Na s)) (Hub : is_unit (Nb s)) (Hul : is_unit (L s))
+        (Hn1 : (1 <= n s)%nat) (Hn2 : (n s <= 4096)%nat).
+
+Lemma nr_range : 1 <= INR (n s) <= 4096.
+Proof.
+  split; [apply (le_INR 1); exact Hn1|].
+  replace 4096 with (INR 4096) by (simpl; lra). apply le_INR. exact Hn2.
+Qed.
+
+Lemma k_vec : vapprox u (INR (n s)) (f_k rnd s) (vsub (Nb s) (Na s)) (wK (Na s) (Nb s)).
+Proof.
+  pose proof nr_range as Hm.
+  destruct (unit_bounded _ Hua) as [A1 [A2 A3]].
+  destruct (unit_bounded _ Hub) as [B1 [B2 B3]].
+  unfold vapprox, f_k, fk, rvec, wK, vsub; cbn [vx vy vz].
+  repeat split; apply k_comp; assumption.
+Qed.
+
+Ltac unit_facts :=
+  pose proof (unit_bounded _ Hua) as [UA1 [UA2 UA3]];
+  pose proof (unit_bounded _ Hub) as [UB1 [UB2 UB3]];
+  pose proof (unit_bounded _ Hul) as [UL1 [UL2 UL3]];
+  pose proof (diff_bounded _ _ Hua Hub) as [UD1 [UD2 UD3]];
+  pose proof (unit_pair _ _ Hua Hul); pose proof (unit_pair _ _ Hub Hul);
+  pose proof (unit_pair _ _ Hub Hua); pose proof (unit_abs_sq _ Hua);
+  pose proof (diff_pair _ _ _ Hua Hub Hul); pose proof (diff_pair _ _ _ Hua Hub Hua);
+  pose proof (diff_pair _ _ _ Hua Hub Hub); pose proof (diff_abs_sq _ _ Hua Hub);
+  pose proof (Rabs_pos (vx (Na s))); pose proof (Rabs_pos (vy (Na s)));
+  pose proof (Rabs_pos (vz (Na s))); pose proof (Rabs_pos (vx (Nb s)));
+  pose proof (Rabs_pos (vy (Nb s))); pose proof (Rabs_pos (vz (Nb s)));
+  pose proof (Rabs_pos (vx (L s))); pose proof (Rabs_pos (vy (L s)));
+  pose proof (Rabs_pos (vz (L s))); pose proof (Rabs_pos (vx (vsub (Nb s) (Na s))));
+  pose proof (Rabs_pos (vy (vsub (Nb s) (Na s)))); pose proof (Rabs_pos (vz (vsub (Nb s) (Na s)))).
+
+Lemma L_pa : Rabs (f_pa rnd s - pa s) <= 5002 / 1000 * u.
+Proof.
+  unit_facts.
+  pose proof (dot_inst rnd u eta Hstd Hok 1 1 _ _ _ _ _ _ (5002 / 1000) ltac:(lra) ltac:(lra)
+    ltac:(lra) (in_vec (Na s)) (in_vec (L s)) (vb12 _ (unit_bounded _ Hua))
+    (vb12 _ (unit_bounded _ Hul)) (wIn_bounded _ (unit_bounded _ Hua))
+    (wIn_bounded _ (unit_bounded _ Hul))) as HD.
+  rewrite !Rmult_1_l in HD. apply HD.
+  unfold wsum, wIn; cbn [vx vy vz]. lra.
+Qed.
+
+Lemma L_pb : Rabs (f_pb rnd s - pb s) <= 5002 / 1000 * u.
+Proof.
+  unit_facts.
+  pose proof (dot_inst rnd u eta Hstd Hok 1 1 _ _ _ _ _ _ (5002 / 1000) ltac:(lra) ltac:(lra)
+    ltac:(lra) (in_vec (Nb s)) (in_vec (L s)) (vb12 _ (unit_bounded _ Hub))
+    (vb12 _ (unit_bounded _ Hul)) (wIn_bounded _ (unit_bounded _ Hub))
+    (wIn_bounded _ (unit_bounded _ Hul))) as HD.
+  rewrite !Rmult_1_l in HD. apply HD.
+  unfold wsum, wIn; cbn [vx vy vz]. lra.
+Qed.
+
+Lemma L_a : Rabs (INR (n s) * f_a rnd s - dot (vsub (Nb s) (Na s)) (L s)) <= 1401 / 100 * u.
+Proof.
+  unit_facts. pose proof nr_range.
+  pose proof (dot_inst rnd u eta Hstd Hok (INR (n s)) 1 _ _ _ _ _ _ (1401 / 100) ltac:(lra)
+    ltac:(lra) ltac:(lra) k_vec (in_vec (L s)) (diff_bounded _ _ Hua Hub)
+    (vb12 _ (unit_bounded _ Hul)) (wK_bounded _ _ (unit_bounded _ Hua) (unit_bounded _ Hub))
+    (wIn_bounded _ (unit_bounded _ Hul))) as HD.
+  rewrite Rmult_1_r in HD. apply HD.
+  unfold wsum, wIn, wK; cbn [vx vy vz]. lra.
+Qed.
+
+Lemma L_c : Rabs (INR (n s) * INR (n s) * f_c rnd s - dot (vsub (Nb s) (Na s)) (vsub (Nb s) (Na s)))
+            <= 3602 / 100 * u.
+Proof.
+  unit_facts. pose proof nr_range.
+  assert (INR (n s) * INR (n s) <= 16777216) by nra.
+  pose proof (dot_inst rnd u eta Hstd Hok (INR (n s)) (INR (n s)) _ _ _ _ _ _ (3602 / 100)
+    ltac:(lra) ltac:(lra) ltac:(lra) k_vec k_vec (diff_bounded _ _ Hua Hub)
+    (diff_bounded _ _ Hua Hub) (wK_bounded _ _ (unit_bounded _ Hua) (unit_bounded _ Hub))
+    (wK_bounded _ _ (unit_bounded _ Hua) (unit_bounded _ Hub))) as HD.
+  apply HD.
+  unfold wsum, wK; cbn [vx vy vz]. lra.
+Qed.
+
+Lemma L_d0 : Rabs (INR (n s) * fdot rnd (f_k rnd s) (rvec rnd (Na s))
+                   - dot (vsub (Nb s) (Na s)) (Na s)) <= 1401 / 100 * u.
+Proof.
+  unit_facts. pose proof nr_range.
+  pose proof (dot_inst rnd u eta Hstd Hok (INR (n s)) 1 _ _ _ _ _ _ (1401 / 100) ltac:(lra)
+    ltac:(lra) ltac:(lra) k_vec (in_vec (Na s)) (diff_bounded _ _ Hua Hub)
+    (vb12 _ (unit_bounded _ Hua)) (wK_bounded _ _ (unit_bounded _ Hua) (unit_bounded _ Hub))
+    (wIn_bounded _ (unit_bounded _ Hua))) as HD.
+  rewrite Rmult_1_r in HD. apply HD.
+  unfold wsum, wIn, wK; cbn [vx vy vz]. lra.
+Qed.
+
+End Span_.
+End Chain.

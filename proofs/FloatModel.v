@@ -105,6 +105,36 @@ Definition wsum (a b wa wb : vec) : R :=
   + (Rabs (vy a) * vy wb + vy wa * Rabs (vy b) + 3 * (Rabs (vy a) * Rabs (vy b)))
   + (Rabs (vz a) * vz wb + vz wa * Rabs (vz b) + 3 * (Rabs (vz a) * Rabs (vz b))).
 
+(** Two small facts about approximations. *)
+Lemma abs_near : forall X Y e, Rabs (Y - X) <= e -> Rabs Y <= Rabs X + e.
+Proof.
+  intros X Y e H. replace Y with (X + (Y - X)) by ring.
+  eapply Rle_trans; [apply Rabs_triang|]. lra.
+Qed.
+
+Lemma absdiff : forall x y, Rabs (x - y) <= Rabs x + Rabs y.
+Proof.
+  intros. unfold Rminus. eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_Ropp. lra.
+Qed.
+Lemma tri3 : forall x y z, Rabs (x + y + z) <= Rabs x + Rabs y + Rabs z.
+Proof.
+  intros. eapply Rle_trans; [apply Rabs_triang|]. pose proof (Rabs_triang x y). lra.
+Qed.
+Lemma tri4 : forall w x y z, Rabs (w + x + y + z) <= Rabs w + Rabs x + Rabs y + Rabs z.
+Proof.
+  intros. eapply Rle_trans; [apply Rabs_triang|]. pose proof (tri3 w x y). lra.
+Qed.
+
+Lemma prod_err : forall X x Y y ex ey MY Mx,
+  Rabs (X - x) <= ex -> Rabs (Y - y) <= ey -> Rabs Y <= MY -> Rabs x <= Mx ->
+  Rabs (X * Y - x * y) <= ex * MY + Mx * ey.
+Proof.
+  intros X x Y y ex ey MY Mx H1 H2 H3 H4.
+  replace (X * Y - x * y) with ((X - x) * Y + x * (Y - y)) by ring.
+  eapply Rle_trans; [apply Rabs_triang|]. rewrite !Rabs_mult.
+  apply Rplus_le_compat; apply Rmult_le_compat; try apply Rabs_pos; assumption.
+Qed.
+
 (** ** Error lemmas *)
 
 Section Model.
@@ -141,6 +171,19 @@ Lemma rnd_1 : forall x M, Rabs x <= M -> Rabs (rnd x - x) <= (M + / 68719476736)
 Proof.
   intros x M H. pose proof (rnd_sc 1 x M) as H1.
   rewrite !Rmult_1_l in H1. apply H1; [lra | exact H].
+Qed.
+
+(** One rounded operation in a chain: the exact operand (scaled by lam) is
+    [Y], within [e] of the reference [X], and [|X| + e <= M]. *)
+Lemma rnd_step : forall lam x Y X e M, 0 <= lam <= 16777216 -> lam * x = Y ->
+  Rabs (Y - X) <= e -> Rabs X + e <= M ->
+  Rabs (lam * rnd x - X) <= e + (M + / 68719476736) * u.
+Proof.
+  intros lam x Y X e M Hl HY He HM.
+  assert (HB : Rabs (lam * x) <= M) by (rewrite HY; pose proof (abs_near X Y e He); lra).
+  pose proof (rnd_sc lam x M Hl HB) as H.
+  replace (lam * rnd x - X) with ((lam * rnd x - lam * x) + (Y - X)) by (rewrite <- HY; ring).
+  eapply Rle_trans; [apply Rabs_triang|]. lra.
 Qed.
 
 (** Three-term dot product: |fdot a b - a.b| <= (3 + 2^-20) u sum |a_j b_j| + 13 eta. *)
@@ -309,6 +352,17 @@ Proof.
     Rabs (a1 + a2 + a3 + a4) <= Rabs a1 + Rabs a2 + Rabs a3 + Rabs a4).
   { intros. repeat (eapply Rle_trans; [apply Rabs_triang | apply Rplus_le_compat_r]); lra. }
   eapply Rle_trans; [apply Tr|]. unfold S in *. lra.
+Qed.
+
+Lemma dot_inst : forall (lam mu : R) (ah bh a b wa wb : vec) (K : R),
+  0 < lam -> 0 < mu -> lam * mu <= 16777216 ->
+  vapprox u lam ah a wa -> vapprox u mu bh b wb ->
+  vbounded a 2 -> vbounded b 2 -> wbounded wa -> wbounded wb ->
+  wsum a b wa wb + / 1000 <= K ->
+  Rabs (lam * mu * fdot rnd ah bh - dot a b) <= K * u.
+Proof.
+  intros. eapply Rle_trans; [eapply fdot_weighted; eassumption|].
+  rewrite (Rmult_comm K). apply Rmult_le_compat_l; [pose proof u_pos; lra | assumption].
 Qed.
 
 (** The corrected-Euler loop against Euler on the same (computed) start

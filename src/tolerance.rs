@@ -211,7 +211,7 @@ fn method_bound(
             Some((10.01 / q_min.sqrt() + 7.6) * u)
         }
         Method::Angular => Some(angle_bound(edges, nf, u) + 2.0 * u),
-        Method::AngularTable(size) => Some(angle_bound(edges, nf, u) + table_step(size) + 16.0 * u),
+        Method::AngularTable(size) => Some(angle_bound(edges, nf, u) + table_step(size) + 20.0 * u),
     }
 }
 

@@ -4,6 +4,7 @@
     on the standard library axioms of the real numbers. *)
 
 From PhongApprox Require Import Span Duff Euler Derivative Symmetry Adaptive Angular Related.
+From PhongApprox Require Import FloatModel Float.
 
 (** Span.v *)
 Check eq_2_p_is_linear.
@@ -118,3 +119,13 @@ Check spherical_equals_phong_at_the_middle.
 Print Assumptions spherical_equals_phong_at_the_middle.
 Check vertex_angle_equal_angles_give_a_flat_polygon.
 Print Assumptions vertex_angle_equal_angles_give_a_flat_polygon.
+
+(** Float.v *)
+Check float_gouraud_binary32.
+Print Assumptions float_gouraud_binary32.
+Check float_gouraud_binary64.
+Print Assumptions float_gouraud_binary64.
+Check float_corrected_euler_binary32.
+Print Assumptions float_corrected_euler_binary32.
+Check float_corrected_euler_binary64.
+Print Assumptions float_corrected_euler_binary64.

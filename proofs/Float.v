@@ -273,6 +273,43 @@ Proof.
   pose proof (Rle_0_sqr (x - 1)). unfold Rsqr in *. nra.
 Qed.
 
+Lemma cs3 : forall a b : vec, dot a b * dot a b <= dot a a * dot b b.
+Proof.
+  intros a b.
+  assert (LG : dot a a * dot b b - dot a b * dot a b =
+     (vx a * vy b - vy a * vx b) * (vx a * vy b - vy a * vx b)
+   + (vx a * vz b - vz a * vx b) * (vx a * vz b - vz a * vx b)
+   + (vy a * vz b - vz a * vy b) * (vy a * vz b - vz a * vy b)) by (unfold dot; ring).
+  pose proof (Rle_0_sqr (vx a * vy b - vy a * vx b)).
+  pose proof (Rle_0_sqr (vx a * vz b - vz a * vx b)).
+  pose proof (Rle_0_sqr (vy a * vz b - vz a * vy b)). unfold Rsqr in *. lra.
+Qed.
+
+(** The sharp form: |n^2 ds| <= 1.54 (max of (1-c) sqrt(2(1+c)) is (4/3)^(3/2) = 1.5396). *)
+Lemma n2ds_le' : Rabs (e_n2ds s) <= 154 / 100.
+Proof.
+  rewrite n2ds_form. set (c := dot (Na s) (Nb s)).
+  pose proof cos_range as Hc. fold c in Hc.
+  set (S := vadd (Na s) (Nb s)).
+  assert (ES : dot S S = 2 + 2 * c).
+  { unfold is_unit in *. unfold c.
+    replace 2 with (dot (Na s) (Na s) + dot (Nb s) (Nb s)) at 1 by lra.
+    unfold S, vadd, dot; cbn [vx vy vz]. ring. }
+  assert (EL : pa s + pb s = dot S (L s)).
+  { unfold S, pa, pb, vadd, dot; cbn [vx vy vz]. ring. }
+  pose proof (cs3 S (L s)) as CS. unfold is_unit in Hul. rewrite Hul, ES, <- EL in CS.
+  apply abs_le_of_sq; [lra|].
+  set (x := 1 - c). assert (0 <= x <= 2) by (unfold x; lra).
+  replace (- x * (pa s + pb s) * (- x * (pa s + pb s)))
+    with ((x * x) * ((pa s + pb s) * (pa s + pb s))) by ring.
+  assert ((x * x) * ((pa s + pb s) * (pa s + pb s)) <= (x * x) * (2 + 2 * c))
+    by (apply Rmult_le_compat_l; nra).
+  replace c with (1 - x) in * by (unfold x; ring).
+  assert (0 <= 2 * ((x - 4 / 3) * (x - 4 / 3)) * (x + 2 / 3)).
+  { apply Rmult_le_pos; [|lra]. pose proof (Rle_0_sqr (x - 4 / 3)). unfold Rsqr in *. lra. }
+  nra.
+Qed.
+
 (** Exact magnitudes along the span. *)
 Lemma gouraud_le : forall i, (i <= n s)%nat -> Rabs (gouraud s i) <= 1.
 Proof.
@@ -293,9 +330,9 @@ Proof.
   lra.
 Qed.
 
-Lemma ceuler_le : forall i, (i <= n s)%nat -> Rabs (ceuler s i) <= 5 / 4.
+Lemma ceuler_le : forall i, (i <= n s)%nat -> Rabs (ceuler s i) <= 11925 / 10000.
 Proof.
-  intros i Hi. pose proof nr_ge1. pose proof n2ds_le.
+  intros i Hi. pose proof nr_ge1. pose proof n2ds_le'.
   assert (Hi' : INR i <= INR (n s)) by (apply le_INR; exact Hi).
   pose proof (pos_INR i).
   assert (E := eq_24_gouraud_minus_corrected_euler s i ltac:(lia)).
@@ -313,20 +350,23 @@ Proof.
   pose proof (gouraud_le i Hi).
   unfold Rminus. eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_Ropp, Rabs_mult.
   rewrite (Rabs_pos_eq kap) by lra.
-  assert (kap * Rabs (e_n2ds s) <= 1 / 8 * 2) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
+  assert (kap * Rabs (e_n2ds s) <= 1 / 8 * (154 / 100))
+    by (apply Rmult_le_compat; try lra; apply Rabs_pos).
   lra.
 Qed.
 
-(** |n (t0 + j ds)| <= 3 for 0 <= j <= n - 1. *)
+(** |n (t0 + j ds)| <= 2 for 0 <= j <= n - 1: n (t0 + j ds) = w . L with
+    w = (1 - g x) Nb - (1 + g x) Na, x = 1 - Na.Nb, |g| <= 1/2, and
+    |w|^2 = 2x + 2 g^2 x^2 (2 - x) <= 4. *)
 Lemma slope_le : forall j, (j < n s)%nat ->
-  Rabs (INR (n s) * (t0 s + INR j * ds s)) <= 3.
+  Rabs (INR (n s) * (t0 s + INR j * ds s)) <= 2.
 Proof.
-  intros j Hj. pose proof nr_ge1. pose proof n2ds_le. pose proof pa_le. pose proof pb_le.
+  intros j Hj. pose proof nr_ge1.
   assert (Hj' : INR j + 1 <= INR (n s)) by (rewrite <- S_INR; apply le_INR; lia).
   pose proof (pos_INR j).
   rewrite (t0_closed_form s ltac:(lia)), ds_scaled.
   set (g := (2 * INR j - INR (n s) + 1) / (2 * INR (n s))).
-  assert (Rabs g <= 1 / 2).
+  assert (Hg : Rabs g <= 1 / 2).
   { apply Rabs_le. unfold g. split.
     - apply (Rmult_le_reg_r (2 * INR (n s))); [lra|]. unfold Rdiv.
       rewrite Rmult_assoc, Rinv_l by lra. lra.
@@ -336,12 +376,28 @@ Proof.
              - (INR (n s) - 1) / 2 * (e_n2ds s / (INR (n s) * INR (n s)))
              + INR j * (e_n2ds s / (INR (n s) * INR (n s)))))
     with ((pb s - pa s) + g * e_n2ds s) by (unfold g; field; lra).
-  eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_mult.
-  assert (Rabs g * Rabs (e_n2ds s) <= 1 / 2 * 2)
-    by (apply Rmult_le_compat; try lra; apply Rabs_pos).
-  assert (Rabs (pb s - pa s) <= 2).
-  { unfold Rminus. eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_Ropp. lra. }
-  lra.
+  rewrite n2ds_form. set (c := dot (Na s) (Nb s)). pose proof cos_range as Hc. fold c in Hc.
+  set (x := 1 - c). assert (Hx : 0 <= x <= 2) by (unfold x; lra).
+  set (w := mkV ((1 - g * x) * vx (Nb s) - (1 + g * x) * vx (Na s))
+                ((1 - g * x) * vy (Nb s) - (1 + g * x) * vy (Na s))
+                ((1 - g * x) * vz (Nb s) - (1 + g * x) * vz (Na s))).
+  assert (EwL : pb s - pa s + g * (- x * (pa s + pb s)) = dot w (L s)).
+  { unfold w, pa, pb, dot; cbn [vx vy vz]. ring. }
+  assert (Eww : dot w w = (1 - g * x) * (1 - g * x) * dot (Nb s) (Nb s)
+                          + (1 + g * x) * (1 + g * x) * dot (Na s) (Na s)
+                          - 2 * ((1 - g * x) * (1 + g * x)) * dot (Na s) (Nb s)).
+  { unfold w, dot; cbn [vx vy vz]. ring. }
+  unfold is_unit in Hua, Hub. rewrite Hua, Hub in Eww. fold c in Eww.
+  replace c with (1 - x) in Eww by (unfold x; ring).
+  pose proof (cs3 w (L s)) as CS. unfold is_unit in Hul. rewrite Hul, <- EwL, Eww in CS.
+  apply abs_le_of_sq; [lra|].
+  assert (Hg2 : g * g <= 1 / 4).
+  { pose proof (Rabs_pos g). rewrite <- abs_sq. nra. }
+  assert (K : 0 <= x * x * (2 - x)) by (apply Rmult_le_pos; nra).
+  assert (K2 : g * g * (x * x * (2 - x)) <= 1 / 4 * (x * x * (2 - x)))
+    by (apply Rmult_le_compat_r; lra).
+  assert (K3 : 0 <= (x - 2) * (x - 2) * (x + 2)) by (apply Rmult_le_pos; nra).
+  nra.
 Qed.
 
 End Exact.
@@ -359,6 +415,58 @@ Definition wK (a b : vec) : vec :=
 
 Lemma vb12 : forall v, vbounded v 1 -> vbounded v 2.
 Proof. intros v [A [B C]]. repeat split; lra. Qed.
+
+(** Pure helpers for the final combination. *)
+Lemma theta_rng : forall m i, 1 <= m -> 0 <= i <= m -> 0 <= i / m <= 1.
+Proof.
+  intros m i Hm Hi. split.
+  - unfold Rdiv. apply Rmult_le_pos; [lra | apply Rlt_le, Rinv_0_lt_compat; lra].
+  - apply (Rmult_le_reg_r m); [lra|]. unfold Rdiv.
+    rewrite Rmult_assoc, Rinv_l by lra. lra.
+Qed.
+
+Lemma kappa_rng : forall m i, 1 <= m -> 0 <= i <= m ->
+  0 <= i * (m - i) / (2 * (m * m)) <= 1 / 8.
+Proof.
+  intros m i Hm Hi. split.
+  - unfold Rdiv. apply Rmult_le_pos; [nra | apply Rlt_le, Rinv_0_lt_compat; nra].
+  - apply (Rmult_le_reg_r (2 * (m * m))); [nra|]. unfold Rdiv.
+    rewrite Rmult_assoc, Rinv_l by nra.
+    pose proof (Rle_0_sqr (m - 2 * i)). unfold Rsqr in *. nra.
+Qed.
+
+Lemma comb_bound : forall th ka a b r d ea er ed,
+  0 <= th <= 1 -> 0 <= ka <= 1 / 8 ->
+  Rabs a <= ea -> Rabs b <= ea -> Rabs r <= er -> Rabs d <= ed ->
+  Rabs ((1 - th) * a + th * b + th * r - ka * d) <= ea + er + ed / 8.
+Proof.
+  intros th ka a b r d ea er ed Ht Hk Ha Hb Hr Hd.
+  replace ((1 - th) * a + th * b + th * r - ka * d)
+    with ((1 - th) * a + th * b + th * r + - (ka * d)) by ring.
+  eapply Rle_trans; [apply tri4|].
+  rewrite Rabs_Ropp, !Rabs_mult, (Rabs_pos_eq th), (Rabs_pos_eq (1 - th)), (Rabs_pos_eq ka)
+    by lra.
+  assert ((1 - th) * Rabs a <= (1 - th) * ea) by (apply Rmult_le_compat_l; lra).
+  assert (th * Rabs b <= th * ea) by (apply Rmult_le_compat_l; lra).
+  assert (th * Rabs r <= 1 * er) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
+  assert (ka * Rabs d <= 1 / 8 * ed) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
+  lra.
+Qed.
+
+Lemma ce_identity : forall m i PA PB pa pb t d n2, m <> 0 ->
+  PA + i * t + i * (i - 1) / 2 * d
+  - (pa + i * ((pb - pa) / m - (m - 1) / 2 * (n2 / (m * m))) + (i ^ 2 - i) / 2 * (n2 / (m * m)))
+  = (1 - i / m) * (PA - pa) + i / m * (PB - pb)
+    + i / m * (m * t - (PB - PA - (m - 1) / (2 * m) * (m * m * d)))
+    - i * (m - i) / (2 * (m * m)) * (m * m * d - n2).
+Proof. intros. field. assumption. Qed.
+
+Lemma div_helper : forall m A E c, 0 < m -> A + m * E * m <= c -> A / m + m * E <= c / m.
+Proof.
+  intros m A E c Hm H.
+  replace (A / m + m * E) with ((A + m * E * m) * / m) by (field; lra).
+  unfold Rdiv. apply Rmult_le_compat_r; [apply Rlt_le, Rinv_0_lt_compat|]; lra.
+Qed.
 
 Section Chain.
 Context (rnd : R -> R) (u eta : R) (Hstd : std_model rnd u eta) (Hok : fmt_ok u eta).
@@ -525,5 +633,547 @@ Proof.
   unfold wsum, wIn, wK; cbn [vx vy vz]. lra.
 Qed.
 
+
+Local Notation nr := (INR (n s)).
+Local Notation Dl := (vsub (Nb s) (Na s)).
+Local Notation t36 := (/ 68719476736).
+
+Ltac basics :=
+  pose proof nr_range as Hnr; pose proof (u_pos u eta Hok) as Hu0;
+  pose proof (u_small u eta Hok) as Hu1.
+
+Lemma dl_dd : 0 <= dot Dl Dl <= 4.
+Proof.
+  split; [|apply diff_sq; assumption].
+  unfold dot. pose proof (Rle_0_sqr (vx Dl)). pose proof (Rle_0_sqr (vy Dl)).
+  pose proof (Rle_0_sqr (vz Dl)). unfold Rsqr in *. lra.
+Qed.
+
+Lemma dl_sum : dot Dl Dl + dot Dl (Na s) = dot Dl (Nb s).
+Proof. unfold dot, vsub; cbn [vx vy vz]. ring. Qed.
+
+Lemma L_d : Rabs (nr * f_d rnd s - 2 * dot Dl (Na s)) <= 321 / 10 * u.
+Proof.
+  basics. pose proof L_d0 as H0. pose proof (dl_dot_le s Hua Hub (Na s) Hua) as H1.
+  unfold f_d. set (fd := fdot rnd (f_k rnd s) (rvec rnd (Na s))) in *.
+  eapply Rle_trans.
+  { apply (rnd_step rnd u eta Hstd Hok nr _ (2 * (nr * fd)) _ (2802 / 100 * u) (4001 / 1000));
+      [lra | ring | | ].
+    - rewrite <- Rmult_minus_distr_l, Rabs_mult, (Rabs_pos_eq 2) by lra. lra.
+    - rewrite Rabs_mult, (Rabs_pos_eq 2) by lra. lra. }
+  lra.
+Qed.
+
+Lemma L_c2 : Rabs (nr * rnd (2 * nr * f_c rnd s) - 2 * dot Dl Dl) <= 801 / 10 * u.
+Proof.
+  basics. pose proof L_c as H0. pose proof dl_dd as H1.
+  eapply Rle_trans.
+  { apply (rnd_step rnd u eta Hstd Hok nr _ (2 * (nr * nr * f_c rnd s)) _ (7204 / 100 * u)
+             (8001 / 1000)); [lra | ring | | ].
+    - rewrite <- Rmult_minus_distr_l, Rabs_mult, (Rabs_pos_eq 2) by lra. lra.
+    - rewrite Rabs_mult, (Rabs_pos_eq 2), Rabs_pos_eq by lra. lra. }
+  lra.
+Qed.
+
+Lemma L_qb : Rabs (nr * f_dqb rnd s - 2 * dot Dl (Nb s)) <= 1163 / 10 * u.
+Proof.
+  basics. pose proof L_c2 as H0. pose proof L_d as H1. pose proof (dl_dot_le s Hua Hub (Nb s) Hub) as H2.
+  unfold f_dqb.
+  eapply Rle_trans.
+  { apply (rnd_step rnd u eta Hstd Hok nr _ (nr * rnd (2 * nr * f_c rnd s) + nr * f_d rnd s) _
+             (1122 / 10 * u) (4001 / 1000)); [lra | ring | | ].
+    - rewrite <- dl_sum.
+      replace (nr * rnd (2 * nr * f_c rnd s) + nr * f_d rnd s - 2 * (dot Dl Dl + dot Dl (Na s)))
+        with ((nr * rnd (2 * nr * f_c rnd s) - 2 * dot Dl Dl) + (nr * f_d rnd s - 2 * dot Dl (Na s)))
+        by ring.
+      eapply Rle_trans; [apply Rabs_triang|]. lra.
+    - rewrite Rabs_mult, (Rabs_pos_eq 2) by lra. lra. }
+  lra.
+Qed.
+
+Lemma L_h : forall (x X : R), Rabs x <= 1 -> Rabs (X - x) <= 5002 / 1000 * u ->
+  Rabs (rnd (X / 2) - x / 2) <= 301 / 100 * u.
+Proof.
+  intros x X Hx HX. basics.
+  pose proof (rnd_step rnd u eta Hstd Hok 1 (X / 2) (X / 2) (x / 2) (2501 / 1000 * u) (501 / 1000)
+                ltac:(lra) ltac:(ring)) as H.
+  rewrite Rmult_1_l in H. eapply Rle_trans; [apply H|lra].
+  - replace (X / 2 - x / 2) with ((X - x) * / 2) by field.
+    rewrite Rabs_mult, (Rabs_pos_eq (/ 2)) by lra. lra.
+  - replace (x / 2) with (x * / 2) by field.
+    rewrite Rabs_mult, (Rabs_pos_eq (/ 2)) by lra. lra.
+Qed.
+
+Lemma L_xa : Rabs (nr * rnd (rnd (f_pa rnd s / 2) * f_d rnd s) - pa s * dot Dl (Na s))
+             <= 302 / 10 * u.
+Proof.
+  basics. pose proof L_d as H0. pose proof (dl_dot_le s Hua Hub (Na s) Hua) as H1.
+  pose proof (pa_le s Hua Hul) as H2.
+  pose proof (L_h (pa s) (f_pa rnd s) H2 L_pa) as H3.
+  set (HA := rnd (f_pa rnd s / 2)) in *.
+  assert (H4 : Rabs (nr * f_d rnd s) <= 4001 / 1000).
+  { pose proof (abs_near _ _ _ H0).
+    assert (Rabs (2 * dot Dl (Na s)) <= 4) by (rewrite Rabs_mult, (Rabs_pos_eq 2) by lra; lra).
+    lra. }
+  assert (H5 : Rabs (pa s / 2) <= 1 / 2).
+  { replace (pa s / 2) with (pa s * / 2) by field.
+    rewrite Rabs_mult, (Rabs_pos_eq (/ 2)) by lra. lra. }
+  pose proof (prod_err HA (pa s / 2) (nr * f_d rnd s) (2 * dot Dl (Na s)) _ _ _ _ H3 H0 H4 H5) as H6.
+  replace (pa s / 2 * (2 * dot Dl (Na s))) with (pa s * dot Dl (Na s)) in H6 by field.
+  assert (H7 : Rabs (pa s * dot Dl (Na s)) <= 2).
+  { rewrite Rabs_mult. replace 2 with (1 * 2) by ring.
+    apply Rmult_le_compat; try apply Rabs_pos; assumption. }
+  eapply Rle_trans.
+  { apply (rnd_step rnd u eta Hstd Hok nr _ (HA * (nr * f_d rnd s)) _
+             (301 / 100 * u * (4001 / 1000) + 1 / 2 * (321 / 10 * u)) (2001 / 1000));
+      [lra | ring | exact H6 | lra]. }
+  lra.
+Qed.
+
+Lemma L_xb : Rabs (nr * rnd (rnd (f_pb rnd s / 2) * f_dqb rnd s) - pb s * dot Dl (Nb s))
+             <= 723 / 10 * u.
+Proof.
+  basics. pose proof L_qb as H0. pose proof (dl_dot_le s Hua Hub (Nb s) Hub) as H1.
+  pose proof (pb_le s Hub Hul) as H2.
+  pose proof (L_h (pb s) (f_pb rnd s) H2 L_pb) as H3.
+  set (HB := rnd (f_pb rnd s / 2)) in *.
+  assert (H4 : Rabs (nr * f_dqb rnd s) <= 4001 / 1000).
+  { pose proof (abs_near _ _ _ H0).
+    assert (Rabs (2 * dot Dl (Nb s)) <= 4) by (rewrite Rabs_mult, (Rabs_pos_eq 2) by lra; lra).
+    lra. }
+  assert (H5 : Rabs (pb s / 2) <= 1 / 2).
+  { replace (pb s / 2) with (pb s * / 2) by field.
+    rewrite Rabs_mult, (Rabs_pos_eq (/ 2)) by lra. lra. }
+  pose proof (prod_err HB (pb s / 2) (nr * f_dqb rnd s) (2 * dot Dl (Nb s)) _ _ _ _ H3 H0 H4 H5) as H6.
+  replace (pb s / 2 * (2 * dot Dl (Nb s))) with (pb s * dot Dl (Nb s)) in H6 by field.
+  assert (H7 : Rabs (pb s * dot Dl (Nb s)) <= 2).
+  { rewrite Rabs_mult. replace 2 with (1 * 2) by ring.
+    apply Rmult_le_compat; try apply Rabs_pos; assumption. }
+  eapply Rle_trans.
+  { apply (rnd_step rnd u eta Hstd Hok nr _ (HB * (nr * f_dqb rnd s)) _
+             (301 / 100 * u * (4001 / 1000) + 1 / 2 * (1163 / 10 * u)) (2001 / 1000));
+      [lra | ring | exact H6 | lra]. }
+  lra.
+Qed.
+
+(** di_a and di_b: the rounding of [a - X] relative to the computed operands
+    (the error of [a] cancels in di_b - di_a). *)
+Lemma L_dia_r : Rabs (nr * f_dia rnd s
+                      - (nr * f_a rnd s - nr * rnd (rnd (f_pa rnd s / 2) * f_d rnd s)))
+                <= 2002 / 1000 * u.
+Proof.
+  basics. pose proof L_a as H0. pose proof L_xa as H1. pose proof (ndia_le s Hua Hub Hul) as H2.
+  unfold f_dia. rewrite <- Rmult_minus_distr_l.
+  eapply Rle_trans; [apply (rnd_sc rnd u eta Hstd Hok _ _ (2001 / 1000)); [lra|] | lra].
+  rewrite Rmult_minus_distr_l.
+  apply (Rle_trans _ (Rabs (e_ndia s) + (1401 / 100 * u + 302 / 10 * u))); [|lra].
+  apply abs_near. unfold e_ndia.
+  replace (nr * f_a rnd s - nr * rnd (rnd (f_pa rnd s / 2) * f_d rnd s)
+           - (dot Dl (L s) - pa s * dot Dl (Na s)))
+    with ((nr * f_a rnd s - dot Dl (L s))
+          - (nr * rnd (rnd (f_pa rnd s / 2) * f_d rnd s) - pa s * dot Dl (Na s))) by ring.
+  eapply Rle_trans; [apply absdiff|]. lra.
+Qed.
+
+Lemma L_dib_r : Rabs (nr * f_dib rnd s
+                      - (nr * f_a rnd s - nr * rnd (rnd (f_pb rnd s / 2) * f_dqb rnd s)))
+                <= 2002 / 1000 * u.
+Proof.
+  basics. pose proof L_a as H0. pose proof L_xb as H1. pose proof (ndib_le s Hua Hub Hul) as H2.
+  unfold f_dib. rewrite <- Rmult_minus_distr_l.
+  eapply Rle_trans; [apply (rnd_sc rnd u eta Hstd Hok _ _ (2001 / 1000)); [lra|] | lra].
+  rewrite Rmult_minus_distr_l.
+  apply (Rle_trans _ (Rabs (e_ndib s) + (1401 / 100 * u + 723 / 10 * u))); [|lra].
+  apply abs_near. unfold e_ndib.
+  replace (nr * f_a rnd s - nr * rnd (rnd (f_pb rnd s / 2) * f_dqb rnd s)
+           - (dot Dl (L s) - pb s * dot Dl (Nb s)))
+    with ((nr * f_a rnd s - dot Dl (L s))
+          - (nr * rnd (rnd (f_pb rnd s / 2) * f_dqb rnd s) - pb s * dot Dl (Nb s))) by ring.
+  eapply Rle_trans; [apply absdiff|]. lra.
+Qed.
+
+Lemma L_dia : Rabs (nr * f_dia rnd s - e_ndia s) <= 464 / 10 * u.
+Proof.
+  basics. pose proof L_a as H0. pose proof L_xa as H1. pose proof L_dia_r as H2.
+  unfold e_ndia.
+  replace (nr * f_dia rnd s - (dot Dl (L s) - pa s * dot Dl (Na s)))
+    with ((nr * f_dia rnd s - (nr * f_a rnd s - nr * rnd (rnd (f_pa rnd s / 2) * f_d rnd s)))
+          + (nr * f_a rnd s - dot Dl (L s))
+          + - (nr * rnd (rnd (f_pa rnd s / 2) * f_d rnd s) - pa s * dot Dl (Na s))) by ring.
+  eapply Rle_trans; [apply tri3|]. rewrite Rabs_Ropp. lra.
+Qed.
+
+Lemma L_w : Rabs (nr * rnd (f_dib rnd s - f_dia rnd s) - e_n2ds s) <= 1088 / 10 * u.
+Proof.
+  basics. pose proof L_xa as H0. pose proof L_xb as H1. pose proof L_dia_r as H2.
+  pose proof L_dib_r as H3. pose proof (n2ds_le s Hua Hub Hul) as H4.
+  eapply Rle_trans.
+  { apply (rnd_step rnd u eta Hstd Hok nr _ (nr * f_dib rnd s - nr * f_dia rnd s) _
+             (1066 / 10 * u) (2001 / 1000)); [lra | ring | | lra].
+    unfold e_n2ds, e_ndib, e_ndia.
+    replace (nr * f_dib rnd s - nr * f_dia rnd s
+             - (dot Dl (L s) - pb s * dot Dl (Nb s) - (dot Dl (L s) - pa s * dot Dl (Na s))))
+      with ((nr * f_dib rnd s - (nr * f_a rnd s - nr * rnd (rnd (f_pb rnd s / 2) * f_dqb rnd s)))
+            + - (nr * f_dia rnd s - (nr * f_a rnd s - nr * rnd (rnd (f_pa rnd s / 2) * f_d rnd s)))
+            + (nr * rnd (rnd (f_pa rnd s / 2) * f_d rnd s) - pa s * dot Dl (Na s))
+            + - (nr * rnd (rnd (f_pb rnd s / 2) * f_dqb rnd s) - pb s * dot Dl (Nb s))) by ring.
+    eapply Rle_trans; [apply tri4|]. rewrite !Rabs_Ropp. lra. }
+  lra.
+Qed.
+
+Lemma L_ds : Rabs (nr * nr * f_ds rnd s - e_n2ds s) <= 1109 / 10 * u.
+Proof.
+  basics. pose proof L_w as H0. pose proof (n2ds_le s Hua Hub Hul) as H1.
+  unfold f_ds.
+  eapply Rle_trans.
+  { apply (rnd_step rnd u eta Hstd Hok (nr * nr) _ (nr * rnd (f_dib rnd s - f_dia rnd s)) _
+             (1088 / 10 * u) (2001 / 1000)); [nra | field; lra | exact H0 | lra]. }
+  lra.
+Qed.
+
+(** The correction t0 = di_a - (p_n - p_b)/n. *)
+Lemma L_Y : f_tri s * f_ds rnd s = (nr - 1) / (2 * nr) * (nr * nr * f_ds rnd s).
+Proof. basics. unfold f_tri. field. lra. Qed.
+
+Lemma L_Yb : Rabs (f_tri s * f_ds rnd s) <= 1001 / 1000.
+Proof.
+  basics. pose proof L_ds as G0. pose proof (n2ds_le s Hua Hub Hul) as G1.
+  rewrite L_Y, Rabs_mult.
+  assert (Rabs ((nr - 1) / (2 * nr)) <= 1 / 2).
+  { rewrite Rabs_pos_eq.
+    - apply (Rmult_le_reg_r (2 * nr)); [lra|]. unfold Rdiv.
+      rewrite Rmult_assoc, Rinv_l by lra. lra.
+    - unfold Rdiv. apply Rmult_le_pos; [lra | apply Rlt_le, Rinv_0_lt_compat; lra]. }
+  pose proof (abs_near _ _ _ G0).
+  replace (1001 / 1000) with (1 / 2 * (2002 / 1000)) by field.
+  apply Rmult_le_compat; try apply Rabs_pos; lra.
+Qed.
+
+Lemma L_rhon : Rabs (f_pn rnd s - (f_pa rnd s + nr * f_dia rnd s + f_tri s * f_ds rnd s))
+               <= 1002 / 100 * u.
+Proof.
+  basics. pose proof L_dia as G0. pose proof (ndia_le s Hua Hub Hul) as G1.
+  pose proof L_pa as G2. pose proof (pa_le s Hua Hul) as G3. pose proof L_Yb as G4.
+  unfold f_pn.
+  set (DIA := nr * f_dia rnd s) in *. set (PA := f_pa rnd s) in *.
+  set (Y := f_tri s * f_ds rnd s) in *.
+  assert (B1 : Rabs DIA <= 2001 / 1000) by (pose proof (abs_near _ _ _ G0); lra).
+  pose proof (rnd_1 rnd u eta Hstd Hok DIA _ B1) as R1.
+  set (y1 := rnd DIA) in *.
+  assert (B2 : Rabs (PA + y1) <= 3003 / 1000).
+  { eapply Rle_trans; [apply Rabs_triang|].
+    pose proof (abs_near _ _ _ G2). pose proof (abs_near _ _ _ R1). lra. }
+  pose proof (rnd_1 rnd u eta Hstd Hok (PA + y1) _ B2) as R2.
+  set (y2 := rnd (PA + y1)) in *.
+  pose proof (rnd_1 rnd u eta Hstd Hok Y _ G4) as R3.
+  set (y3 := rnd Y) in *.
+  assert (B4 : Rabs (y2 + y3) <= 4005 / 1000).
+  { eapply Rle_trans; [apply Rabs_triang|].
+    pose proof (abs_near _ _ _ R2). pose proof (abs_near _ _ _ R3). lra. }
+  pose proof (rnd_1 rnd u eta Hstd Hok (y2 + y3) _ B4) as R4.
+  replace (rnd (y2 + y3) - (PA + DIA + Y))
+    with ((rnd (y2 + y3) - (y2 + y3)) + (y2 - (PA + y1)) + (y1 - DIA) + (y3 - Y)) by ring.
+  eapply Rle_trans; [apply tri4|]. lra.
+Qed.
+
+Lemma L_pnb : Rabs (f_pn rnd s) <= 4005 / 1000.
+Proof.
+  basics. pose proof L_rhon as G0. pose proof L_dia as G1. pose proof (ndia_le s Hua Hub Hul).
+  pose proof L_pa as G2. pose proof (pa_le s Hua Hul). pose proof L_Yb.
+  apply (Rle_trans _ _ _ (abs_near _ _ _ G0)).
+  pose proof (tri3 (f_pa rnd s) (nr * f_dia rnd s) (f_tri s * f_ds rnd s)).
+  pose proof (abs_near _ _ _ G1). pose proof (abs_near _ _ _ G2). lra.
+Qed.
+
+Lemma L_rhoe : Rabs (f_eps rnd s - (f_pn rnd s - f_pb rnd s)) <= 5007 / 1000 * u.
+Proof.
+  basics. pose proof L_pnb. pose proof L_pb as G0. pose proof (pb_le s Hub Hul).
+  unfold f_eps.
+  eapply Rle_trans; [apply (rnd_1 rnd u eta Hstd Hok _ (5006 / 1000))|lra].
+  eapply Rle_trans; [apply absdiff|]. pose proof (abs_near _ _ _ G0). lra.
+Qed.
+
+Lemma L_rhod : Rabs (nr * f_deps rnd s - f_eps rnd s) <= 5008 / 1000 * u.
+Proof.
+  basics. pose proof L_pnb. pose proof L_pb as G0. pose proof (pb_le s Hub Hul).
+  pose proof L_rhoe as G1.
+  assert (B : Rabs (f_eps rnd s) <= 5007 / 1000).
+  { apply (Rle_trans _ _ _ (abs_near _ _ _ G1)).
+    pose proof (absdiff (f_pn rnd s) (f_pb rnd s)). pose proof (abs_near _ _ _ G0). lra. }
+  unfold f_deps.
+  eapply Rle_trans.
+  { apply (rnd_step rnd u eta Hstd Hok nr _ (f_eps rnd s) _ 0 (5007 / 1000));
+      [lra | field; lra | rewrite Rminus_diag_eq, Rabs_R0 by reflexivity; lra | lra]. }
+  lra.
+Qed.
+
+Lemma L_R : Rabs (nr * f_t0 rnd s - (f_pb rnd s - f_pa rnd s - f_tri s * f_ds rnd s))
+            <= 231 / 10 * u.
+Proof.
+  basics. pose proof L_rhon as G0. pose proof L_rhoe as G1. pose proof L_rhod as G2.
+  pose proof L_pa as G3. pose proof L_pb as G4. pose proof (pa_le s Hua Hul).
+  pose proof (pb_le s Hub Hul). pose proof L_Yb.
+  set (Y := f_tri s * f_ds rnd s) in *.
+  assert (E : nr * f_dia rnd s - nr * f_deps rnd s =
+              (f_pb rnd s - f_pa rnd s - Y)
+              - (f_pn rnd s - (f_pa rnd s + nr * f_dia rnd s + Y))
+              - (f_eps rnd s - (f_pn rnd s - f_pb rnd s))
+              - (nr * f_deps rnd s - f_eps rnd s)) by ring.
+  assert (B : Rabs (nr * f_dia rnd s - nr * f_deps rnd s) <= 3002 / 1000).
+  { rewrite E. unfold Rminus at 1 2 3.
+    eapply Rle_trans; [apply tri4|]. rewrite !Rabs_Ropp.
+    assert (Rabs (f_pb rnd s - f_pa rnd s - Y) <= 2 + 10005 / 1000 * u + 1001 / 1000).
+    { unfold Rminus. eapply Rle_trans; [apply tri3|]. rewrite !Rabs_Ropp.
+      pose proof (abs_near _ _ _ G3). pose proof (abs_near _ _ _ G4). lra. }
+    lra. }
+  unfold f_t0. rewrite <- (Rmult_minus_distr_l nr (f_dia rnd s)) in B.
+  pose proof (rnd_sc rnd u eta Hstd Hok nr (f_dia rnd s - f_deps rnd s) _ ltac:(lra) B) as RT.
+  rewrite Rmult_minus_distr_l in RT, B.
+  replace (nr * rnd (f_dia rnd s - f_deps rnd s) - (f_pb rnd s - f_pa rnd s - Y))
+    with ((nr * rnd (f_dia rnd s - f_deps rnd s) - (nr * f_dia rnd s - nr * f_deps rnd s))
+          + - (f_pn rnd s - (f_pa rnd s + nr * f_dia rnd s + Y))
+          + - (f_eps rnd s - (f_pn rnd s - f_pb rnd s))
+          + - (nr * f_deps rnd s - f_eps rnd s)) by ring.
+  eapply Rle_trans; [apply tri4|]. rewrite !Rabs_Ropp. lra.
+Qed.
+
+Lemma L_dp : Rabs (nr * f_dp rnd s - (f_pb rnd s - f_pa rnd s)) <= 401 / 100 * u.
+Proof.
+  basics. pose proof L_pa as G3. pose proof L_pb as G4. pose proof (pa_le s Hua Hul).
+  pose proof (pb_le s Hub Hul).
+  assert (B : Rabs (f_pb rnd s - f_pa rnd s) <= 20001 / 10000).
+  { eapply Rle_trans; [apply absdiff|].
+    pose proof (abs_near _ _ _ G3). pose proof (abs_near _ _ _ G4). lra. }
+  pose proof (rnd_1 rnd u eta Hstd Hok _ _ B) as R1.
+  unfold f_dp.
+  eapply Rle_trans.
+  { apply (rnd_step rnd u eta Hstd Hok nr _ (rnd (f_pb rnd s - f_pa rnd s)) _
+             ((20001 / 10000 + t36) * u) (20002 / 10000));
+      [lra | field; lra | exact R1 | lra]. }
+  lra.
+Qed.
+
+
+Lemma ce_ideal : forall i, (i <= n s)%nat ->
+  Rabs (f_pa rnd s + INR i * f_t0 rnd s + INR i * (INR i - 1) / 2 * f_ds rnd s - ceuler s i)
+  <= 4197 / 100 * u.
+Proof.
+  intros i Hi. basics.
+  assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
+  rewrite ceuler_closed_form, (t0_closed_form s ltac:(lia)), (ds_scaled s ltac:(lia)).
+  rewrite (ce_identity nr (INR i) (f_pa rnd s) (f_pb rnd s)) by lra.
+  pose proof L_R as G0. rewrite L_Y in G0.
+  eapply Rle_trans.
+  { apply comb_bound; [apply theta_rng; lra | apply kappa_rng; lra | apply L_pa | apply L_pb
+                      | exact G0 | apply L_ds]. }
+  lra.
+Qed.
+
+Lemma g_ideal : forall i, (i <= n s)%nat ->
+  Rabs (f_pa rnd s + INR i * f_dp rnd s - gouraud s i) <= 9012 / 1000 * u.
+Proof.
+  intros i Hi. basics.
+  assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
+  unfold gouraud, dp.
+  replace (f_pa rnd s + INR i * f_dp rnd s - (pa s + INR i * ((pb s - pa s) / nr)))
+    with ((1 - INR i / nr) * (f_pa rnd s - pa s) + INR i / nr * (f_pb rnd s - pb s)
+          + INR i / nr * (nr * f_dp rnd s - (f_pb rnd s - f_pa rnd s)) - 0 * 0)
+    by (field; lra).
+  eapply Rle_trans.
+  { apply comb_bound; [apply theta_rng; lra | lra | apply L_pa | apply L_pb | apply L_dp
+                      | rewrite Rabs_R0; apply Rle_refl]. }
+  lra.
+Qed.
+
+(** Computed slopes (ideal, on the computed t0 and ds) for 1 <= J <= n-1. *)
+Lemma slope_f : forall J, (J < n s)%nat ->
+  Rabs (nr * (f_t0 rnd s + INR J * f_ds rnd s)) <= 2 + 200 * u.
+Proof.
+  intros J HJ. basics.
+  assert (HJ' : 0 <= INR J <= nr) by (split; [apply pos_INR | apply le_INR; lia]).
+  pose proof (slope_le s Hua Hub Hul Hn1 J HJ) as G0.
+  rewrite (t0_closed_form s ltac:(lia)), (ds_scaled s ltac:(lia)) in G0.
+  pose proof L_R as G1. rewrite L_Y in G1. pose proof L_ds as G2.
+  pose proof L_pa as G3. pose proof L_pb as G4.
+  apply (Rle_trans _ _ _ (abs_near _ _ _ (Rle_refl _))) || idtac.
+  set (X := nr * ((pb s - pa s) / nr - (nr - 1) / 2 * (e_n2ds s / (nr * nr))
+                  + INR J * (e_n2ds s / (nr * nr)))) in *.
+  assert (E : nr * (f_t0 rnd s + INR J * f_ds rnd s) - X =
+     (nr * f_t0 rnd s - (f_pb rnd s - f_pa rnd s - (nr - 1) / (2 * nr) * (nr * nr * f_ds rnd s)))
+     + ((f_pb rnd s - pb s) - (f_pa rnd s - pa s))
+     + (INR J / nr - (nr - 1) / (2 * nr)) * (nr * nr * f_ds rnd s - e_n2ds s))
+    by (unfold X; field; lra).
+  assert (Hg : Rabs (INR J / nr - (nr - 1) / (2 * nr)) <= 1).
+  { pose proof (theta_rng nr (INR J) ltac:(lra) HJ').
+    pose proof (theta_rng nr ((nr - 1) / 2) ltac:(lra) ltac:(lra)).
+    replace ((nr - 1) / (2 * nr)) with ((nr - 1) / 2 / nr) by (field; lra).
+    apply Rabs_le. lra. }
+  assert (B : Rabs (nr * (f_t0 rnd s + INR J * f_ds rnd s) - X) <= 200 * u).
+  { rewrite E. eapply Rle_trans; [apply tri3|]. rewrite Rabs_mult.
+    assert (Rabs (INR J / nr - (nr - 1) / (2 * nr)) * Rabs (nr * nr * f_ds rnd s - e_n2ds s)
+            <= 1 * (1109 / 10 * u)) by (apply Rmult_le_compat; try apply Rabs_pos; lra).
+    pose proof (absdiff (f_pb rnd s - pb s) (f_pa rnd s - pa s)). lra. }
+  pose proof (abs_near _ _ _ B). lra.
+Qed.
+
+Lemma ce_final : forall i, (i <= n s)%nat ->
+  Rabs (f_ceuler rnd s i - ceuler s i) <= (22 / 10 * INR (n s) + 42) * u.
+Proof.
+  intros i Hi. basics. pose proof (eta_pos u eta Hok) as He0. pose proof (eta_small u eta Hok) as He1.
+  set (Ms := 2001 / 1000 / nr). set (Mp := 1194 / 1000).
+  assert (HMs : 0 <= Ms) by (unfold Ms, Rdiv; apply Rmult_le_pos; [lra | apply Rlt_le, Rinv_0_lt_compat; lra]).
+  assert (Hnn : nr * nr <= 16777216) by nra.
+  assert (Hnu : nr * u <= 4096 * u) by (apply Rmult_le_compat_r; lra).
+  assert (Hne : nr * eta <= 4096 * eta) by (apply Rmult_le_compat_r; lra).
+  assert (Hnne : nr * nr * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra).
+  assert (Ems : nr * (u * Ms + eta) = 2001 / 1000 * u + nr * eta) by (unfold Ms; field; lra).
+  assert (Ems2 : nr * nr / 2 * (u * Ms + eta) = 10005 / 10000 * (nr * u) + nr * nr * eta / 2)
+    by (unfold Ms; field; lra).
+  destruct (floop_err rnd u eta Hstd Hok (f_pa rnd s) (f_t0 rnd s) (f_ds rnd s) (n s) Ms Mp
+              HMs ltac:(unfold Mp; lra)) with (i := i) as [_ HP]; [| | exact Hi |].
+  - intros j Hj. pose proof (slope_f (S j) Hj) as G0.
+    assert (G1 : Rabs (f_t0 rnd s + INR (S j) * f_ds rnd s) <= (2 + 200 * u) / nr).
+    { replace (f_t0 rnd s + INR (S j) * f_ds rnd s)
+        with (nr * (f_t0 rnd s + INR (S j) * f_ds rnd s) / nr) by (field; lra).
+      unfold Rdiv. rewrite Rabs_mult, (Rabs_pos_eq (/ nr))
+        by (apply Rlt_le, Rinv_0_lt_compat; lra).
+      apply Rmult_le_compat_r; [apply Rlt_le, Rinv_0_lt_compat; lra | exact G0]. }
+    assert (G2 : (2 + 200 * u) / nr + nr * (u * Ms + eta) <= Ms).
+    { unfold Ms. apply div_helper; [lra|].
+      replace (nr * (u * (2001 / 1000 / nr) + eta) * nr)
+        with (2001 / 1000 * (nr * u) + nr * nr * eta) by (field; lra).
+      lra. }
+    lra.
+  - intros j Hj.
+    pose proof (ce_ideal (S j) Hj) as G0. pose proof (ceuler_le s Hua Hub Hul Hn1 (S j) Hj) as G1.
+    pose proof (abs_near _ _ _ G0) as G2.
+    rewrite Ems2. unfold Mp. lra.
+  - pose proof (ce_ideal i Hi) as G0.
+    assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
+    unfold f_ceuler.
+    replace (fst (floop rnd (f_pa rnd s) (f_t0 rnd s) (f_ds rnd s) i) - ceuler s i)
+      with ((fst (floop rnd (f_pa rnd s) (f_t0 rnd s) (f_ds rnd s) i)
+             - (f_pa rnd s + INR i * f_t0 rnd s + INR i * (INR i - 1) / 2 * f_ds rnd s))
+            + (f_pa rnd s + INR i * f_t0 rnd s + INR i * (INR i - 1) / 2 * f_ds rnd s
+               - ceuler s i)) by ring.
+    eapply Rle_trans; [apply Rabs_triang|].
+    assert (Es0 : 0 <= u * Ms + eta) by (pose proof (Rmult_le_pos u Ms); lra).
+    assert (K1 : INR i * (INR i - 1) / 2 <= nr * (nr - 1) / 2) by nra.
+    assert (K2 : INR i * (INR i - 1) / 2 * (u * Ms + eta) <= nr * (nr - 1) / 2 * (u * Ms + eta))
+      by (apply Rmult_le_compat_r; lra).
+    assert (K3 : nr * (nr - 1) / 2 * (u * Ms + eta)
+                 = 10005 / 10000 * (nr * u) - 10005 / 10000 * u + nr * nr * eta / 2 - nr * eta / 2)
+      by (unfold Ms; field; lra).
+    assert (K4 : INR i * (u * Mp + eta) <= nr * (u * Mp + eta))
+      by (apply Rmult_le_compat_r; [unfold Mp; nra | lra]).
+    assert (K5 : 0 <= nr * u) by (apply Rmult_le_pos; lra).
+    assert (K6 : 0 <= nr * eta) by (apply Rmult_le_pos; lra).
+    unfold Mp in *. lra.
+Qed.
+
+Lemma g_final : forall i, (i <= n s)%nat ->
+  Rabs (f_gouraud rnd s i - gouraud s i) <= (1001 / 1000 * INR (n s) + 10) * u.
+Proof.
+  intros i Hi. basics. pose proof (eta_pos u eta Hok) as He0. pose proof (eta_small u eta Hok) as He1.
+  assert (Hnu : nr * u <= 4096 * u) by (apply Rmult_le_compat_r; lra).
+  assert (Hne : nr * eta <= 4096 * eta) by (apply Rmult_le_compat_r; lra).
+  pose proof (gloop_err rnd u eta Hstd Hok (f_pa rnd s) (f_dp rnd s) (n s) (1001 / 1000)
+                ltac:(lra)) as HG.
+  assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
+  specialize (HG ltac:(intros j Hj;
+     pose proof (g_ideal (S j) Hj) as G0; pose proof (gouraud_le s Hua Hub Hul Hn1 (S j) Hj) as G1;
+     pose proof (abs_near _ _ _ G0) as G2; lra) i Hi).
+  pose proof (g_ideal i Hi) as G0.
+  unfold f_gouraud.
+  replace (gloop rnd (f_pa rnd s) (f_dp rnd s) i - gouraud s i)
+    with ((gloop rnd (f_pa rnd s) (f_dp rnd s) i - (f_pa rnd s + INR i * f_dp rnd s))
+          + (f_pa rnd s + INR i * f_dp rnd s - gouraud s i)) by ring.
+  eapply Rle_trans; [apply Rabs_triang|].
+  assert (K4 : INR i * (u * (1001 / 1000) + eta) <= nr * (u * (1001 / 1000) + eta))
+    by (apply Rmult_le_compat_r; nra).
+  assert (K5 : 0 <= nr * u) by (apply Rmult_le_pos; lra).
+  lra.
+Qed.
+
 End Span_.
 End Chain.
+
+(** ** The bounds *)
+
+(** For any format with the standard model and the size conditions
+    (prec >= 24, emin <= -prec - 59). *)
+Lemma float_corrected_euler_generic : forall (rnd : R -> R) (u eta : R),
+  std_model rnd u eta -> fmt_ok u eta ->
+  forall s : span, is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  (1 <= n s <= 4096)%nat -> forall i : nat, (i <= n s)%nat ->
+  Rabs (f_ceuler rnd s i - ceuler s i) <= (22 / 10 * INR (n s) + 42) * u.
+Proof.
+  intros rnd u eta Hstd Hok s Ha Hb Hl Hn i Hi.
+  apply (ce_final rnd u eta Hstd Hok s Ha Hb Hl ltac:(lia) ltac:(lia) i Hi).
+Qed.
+
+Lemma float_gouraud_generic : forall (rnd : R -> R) (u eta : R),
+  std_model rnd u eta -> fmt_ok u eta ->
+  forall s : span, is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  (1 <= n s <= 4096)%nat -> forall i : nat, (i <= n s)%nat ->
+  Rabs (f_gouraud rnd s i - gouraud s i) <= (1001 / 1000 * INR (n s) + 10) * u.
+Proof.
+  intros rnd u eta Hstd Hok s Ha Hb Hl Hn i Hi.
+  apply (g_final rnd u eta Hstd Hok s Ha Hb Hl ltac:(lia) ltac:(lia) i Hi).
+Qed.
+
+Lemma flt_prec_ok : forall emin prec : Z, (24 <= prec)%Z -> (emin <= - prec - 59)%Z ->
+  std_model (fun x => round radix2 (FLT_exp emin prec) ZnearestE x)
+            (bpow radix2 (- prec)) (bpow radix2 (emin - 1))
+  /\ fmt_ok (bpow radix2 (- prec)) (bpow radix2 (emin - 1)).
+Proof.
+  intros emin prec H1 H2. split; [apply flt_std_model; lia | apply flt_fmt_ok; assumption].
+Qed.
+
+(* Note: binary32 (prec 24, emin -149), round to nearest even; u = 2^-24. *)
+(** Gouraud in binary32: |G_i(float) - G_i| <= (1.001 n + 10) u. *)
+Theorem float_gouraud_binary32 : forall s : span,
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) -> (1 <= n s <= 4096)%nat ->
+  forall i : nat, (i <= n s)%nat ->
+  Rabs (f_gouraud (fun x => round radix2 (FLT_exp (-149) 24) ZnearestE x) s i - gouraud s i)
+  <= (1001 / 1000 * INR (n s) + 10) * bpow radix2 (-24).
+Proof.
+  intros. destruct (flt_prec_ok (-149) 24 ltac:(lia) ltac:(lia)) as [F1 F2].
+  eapply float_gouraud_generic; eassumption.
+Qed.
+
+(* Note: binary64 (prec 53, emin -1074), round to nearest even; u = 2^-53. *)
+(** Gouraud in binary64: |G_i(float) - G_i| <= (1.001 n + 10) u. *)
+Theorem float_gouraud_binary64 : forall s : span,
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) -> (1 <= n s <= 4096)%nat ->
+  forall i : nat, (i <= n s)%nat ->
+  Rabs (f_gouraud (fun x => round radix2 (FLT_exp (-1074) 53) ZnearestE x) s i - gouraud s i)
+  <= (1001 / 1000 * INR (n s) + 10) * bpow radix2 (-53).
+Proof.
+  intros. destruct (flt_prec_ok (-1074) 53 ltac:(lia) ltac:(lia)) as [F1 F2].
+  eapply float_gouraud_generic; eassumption.
+Qed.
+
+(* Note: binary32; the exact value is ceuler of Euler.v on the exact inputs. *)
+(** Corrected Euler (eqs. 16-17) in binary32: |P_i(float) - P_i| <= (2.2 n + 42) u. *)
+Theorem float_corrected_euler_binary32 : forall s : span,
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) -> (1 <= n s <= 4096)%nat ->
+  forall i : nat, (i <= n s)%nat ->
+  Rabs (f_ceuler (fun x => round radix2 (FLT_exp (-149) 24) ZnearestE x) s i - ceuler s i)
+  <= (22 / 10 * INR (n s) + 42) * bpow radix2 (-24).
+Proof.
+  intros. destruct (flt_prec_ok (-149) 24 ltac:(lia) ltac:(lia)) as [F1 F2].
+  eapply float_corrected_euler_generic; eassumption.
+Qed.
+
+(* Note: binary64; the exact value is ceuler of Euler.v on the exact inputs. *)
+(** Corrected Euler (eqs. 16-17) in binary64: |P_i(float) - P_i| <= (2.2 n + 42) u. *)
+Theorem float_corrected_euler_binary64 : forall s : span,
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) -> (1 <= n s <= 4096)%nat ->
+  forall i : nat, (i <= n s)%nat ->
+  Rabs (f_ceuler (fun x => round radix2 (FLT_exp (-1074) 53) ZnearestE x) s i - ceuler s i)
+  <= (22 / 10 * INR (n s) + 42) * bpow radix2 (-53).
+Proof.
+  intros. destruct (flt_prec_ok (-1074) 53 ltac:(lia) ltac:(lia)) as [F1 F2].
+  eapply float_corrected_euler_generic; eassumption.
+Qed.

@@ -223,3 +223,96 @@ fn short_spans_and_leftovers() {
         assert_eq!(out[0], f.b);
     }
 }
+
+/// The ratio (derived bound) / (worst error found) per fast kernel and format, over the
+/// edge, targeted and 200 random targeted spans: the second table of `docs/float.md`
+/// §13. Run with `cargo test --release --test fast -- --ignored --nocapture`.
+#[test]
+#[ignore]
+fn fast_bound_ratio_report() {
+    use proptest::strategy::{Strategy, ValueTree};
+    let mut all: Vec<Case> = edge_cases();
+    all.extend(targeted_cases());
+    let mut runner = proptest::test_runner::TestRunner::deterministic();
+    for _ in 0..200 {
+        all.push(arb_targeted().new_tree(&mut runner).unwrap().current());
+    }
+    println!("| kernel | format | worst error found (u) | at n | bound there (u) | ratio |");
+    println!("|---|---|---:|---:|---:|---:|");
+    macro_rules! report {
+        ($f:ident) => {{
+            type Run = fn(&FastSpan<$f>, &mut [$f]);
+            let kernels: [(&str, Method, Kernel, Run); 8] = [
+                (
+                    "corrected_euler",
+                    Method::CorrectedEuler,
+                    Kernel::CorrectedEuler,
+                    FastSpan::<$f>::corrected_euler,
+                ),
+                (
+                    "corrected_euler_serial",
+                    Method::CorrectedEuler,
+                    Kernel::CorrectedEulerSerial,
+                    FastSpan::<$f>::corrected_euler_serial,
+                ),
+                ("euler", Method::Euler, Kernel::Euler, FastSpan::<$f>::euler),
+                (
+                    "gouraud",
+                    Method::Gouraud,
+                    Kernel::Gouraud,
+                    FastSpan::<$f>::gouraud,
+                ),
+                (
+                    "gouraud_serial",
+                    Method::Gouraud,
+                    Kernel::GouraudSerial,
+                    FastSpan::<$f>::gouraud_serial,
+                ),
+                ("phong", Method::Phong, Kernel::Phong, FastSpan::<$f>::phong),
+                (
+                    "symmetric_phong",
+                    Method::SymmetricPhong,
+                    Kernel::SymmetricPhong,
+                    FastSpan::<$f>::symmetric_phong,
+                ),
+                (
+                    "duff_serial",
+                    Method::Duff,
+                    Kernel::DuffSerial,
+                    FastSpan::<$f>::duff_serial,
+                ),
+            ];
+            let u = <$f as Scalar>::unit_roundoff();
+            for (name, m, k, run) in kernels {
+                let mut best: Option<(f64, f64, u32)> = None;
+                for c in &all {
+                    let Some(s) = c.span() else { continue };
+                    let Some(b) = fast_bound(k, s.n, q_min(&s), u) else {
+                        continue;
+                    };
+                    let fast = FastSpan::<$f>::from_span(&s.cast::<$f>().unwrap());
+                    let mut out = vec![0 as $f; s.len()];
+                    run(&fast, &mut out);
+                    let exact = m.values(&s).unwrap();
+                    let e = (0..s.len())
+                        .map(|i| err(&out[i], &exact[i]))
+                        .fold(0.0, f64::max);
+                    if e > 0.0 && best.is_none_or(|(be, bb, _)| e / b > be / bb) {
+                        best = Some((e, b, s.n));
+                    }
+                }
+                if let Some((e, b, n)) = best {
+                    println!(
+                        "| {name} | {} | {:.1} | {n} | {:.1} | {:.2} |",
+                        stringify!($f),
+                        e / u,
+                        b / u,
+                        b / e
+                    );
+                }
+            }
+        }};
+    }
+    report!(f32);
+    report!(f64);
+}

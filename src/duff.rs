@@ -17,7 +17,8 @@ use crate::span::Span;
 /// Phong's (eq. 4). Three additions, one square root and one division per pixel.
 ///
 /// # Errors
-/// [`SpanError::OutputLength`] if `out.len() ≠ n + 1`.
+/// [`SpanError::OutputLength`] if `out.len() ≠ n + 1`; [`SpanError::NotFiniteValue`]
+/// where a float `q` rounds to zero (edge normals nearly opposite).
 ///
 /// Claims: `eq_5_7_duff_computes_phong` (proofs/Duff.v; tests/claims.rs).
 pub fn shade<T: Real>(span: &Span<T>, out: &mut [T]) -> Result<(), SpanError> {
@@ -27,7 +28,7 @@ pub fn shade<T: Real>(span: &Span<T>, out: &mut [T]) -> Result<(), SpanError> {
         *o = pq.p.clone() / pq.q.sqrt();
         pq.step();
     }
-    Ok(())
+    span.check_finite(out)
 }
 
 /// The state of Duff's recurrence (eqs. 5–7): `p_i`, `q_i`, `dq_i`.

@@ -74,6 +74,17 @@ pub enum SpanError {
         got: usize,
     },
     /// A method parameter is out of range.
+    /// A computed value is NaN or infinite: in floats, the interpolated normal's
+    /// squared length `q` rounded to zero or below at that pixel (edge normals nearly
+    /// opposite), so a method that divides by `√q` has no value there.
+    #[error("pixel {pixel} of n = {n}: the value is not finite (q = N·N rounds to zero there: the edge normals are nearly opposite)")]
+    NotFiniteValue {
+        /// The pixel, `0..=n`.
+        pixel: usize,
+        /// The span's `n`.
+        n: u32,
+    },
+    /// A parameter of the method (e.g. a table size) is out of range.
     #[error("{0}")]
     Parameter(String),
 }

@@ -14,7 +14,8 @@ use crate::span::Span;
 /// from the interpolated vector itself, not from `p` and `q`, so that it checks them.
 ///
 /// # Errors
-/// [`SpanError::OutputLength`] if `out.len() ≠ n + 1`.
+/// [`SpanError::OutputLength`] if `out.len() ≠ n + 1`; [`SpanError::NotFiniteValue`]
+/// where a float `q` rounds to zero (edge normals nearly opposite).
 ///
 /// Claims: `eq_4_phong_exact_on_edges` (proofs/Span.v; tests/claims.rs).
 pub fn shade<T: Real>(span: &Span<T>, out: &mut [T]) -> Result<(), SpanError> {
@@ -23,5 +24,5 @@ pub fn shade<T: Real>(span: &Span<T>, out: &mut [T]) -> Result<(), SpanError> {
         let normal = span.normal_at(i as u32);
         *o = normal.dot(&span.l) / normal.length_squared().sqrt();
     }
-    Ok(())
+    span.check_finite(out)
 }

@@ -274,6 +274,18 @@ impl<T: Scalar> Span<T> {
         self.na.add(&self.k.scale(&T::from_i64(i64::from(i))))
     }
 
+    /// Checks that every value of `out` is finite (for the methods that divide by
+    /// `√q`, which floats can round to zero).
+    ///
+    /// # Errors
+    /// [`SpanError::NotFiniteValue`] naming the first pixel that is not.
+    pub fn check_finite(&self, out: &[T]) -> Result<(), SpanError> {
+        match out.iter().position(|v| !v.is_finite()) {
+            None => Ok(()),
+            Some(pixel) => Err(SpanError::NotFiniteValue { pixel, n: self.n }),
+        }
+    }
+
     /// Checks that `out` holds exactly `n + 1` values.
     ///
     /// # Errors

@@ -18,7 +18,8 @@ use crate::span::Span;
 /// mirror is wrong; [`crate::span::Span::new`] only accepts unit ones.
 ///
 /// # Errors
-/// [`SpanError::OutputLength`] if `out.len() ≠ n + 1`.
+/// [`SpanError::OutputLength`] if `out.len() ≠ n + 1`; [`SpanError::NotFiniteValue`]
+/// where a float `q` rounds to zero (edge normals nearly opposite).
 ///
 /// Claims: `sec_4_q_is_symmetric`, `sec_4_symmetric_phong_equals_phong`, `sec_4_duff_q_is_symmetric` (proofs/Symmetry.v; tests/claims.rs).
 pub fn shade<T: Real>(span: &Span<T>, out: &mut [T]) -> Result<(), SpanError> {
@@ -37,5 +38,5 @@ pub fn shade<T: Real>(span: &Span<T>, out: &mut [T]) -> Result<(), SpanError> {
         *o = p.clone() / r.clone();
         p = p + span.a.clone();
     }
-    Ok(())
+    span.check_finite(out)
 }

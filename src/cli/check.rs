@@ -122,7 +122,7 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
         })?;
     let reports = check(&vectors, &results, method, &key, tol, a.specular)
         .map_err(|e| CliError::arg("--method", e))?;
-    print_report(&vectors, &reports, &key, a.specular);
+    print_report(&vectors, &reports, &key, a.specular)?;
     let failed: Vec<&CaseReport> = reports.iter().filter(|r| !r.pass).collect();
     if failed.is_empty() {
         Ok(())
@@ -139,18 +139,23 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
     }
 }
 
-fn print_report(vectors: &VectorFile, reports: &[CaseReport], key: &str, specular: bool) {
-    println!(
+fn print_report(
+    vectors: &VectorFile,
+    reports: &[CaseReport],
+    key: &str,
+    specular: bool,
+) -> Result<(), CliError> {
+    outln!(
         "{} {} set '{}' ({} cases), method {key}",
         if specular { "specular" } else { "diffuse" },
         vectors.version,
         vectors.set,
         reports.len()
-    );
-    println!("| case | pixels | max Δlevel | mean Δlevel | max |Δ| | max ulps (f32) | allowed | verdict |");
-    println!("|---|---:|---:|---:|---:|---:|---:|---|");
+    )?;
+    outln!("| case | pixels | max Δlevel | mean Δlevel | max |Δ| | max ulps (f32) | allowed | verdict |")?;
+    outln!("|---|---:|---:|---:|---:|---:|---:|---|")?;
     for r in reports {
-        println!(
+        outln!(
             "| {} | {} | {} | {:.4} | {:.3e} | {:.1} | {} | {} |",
             r.id,
             r.pixels,
@@ -160,7 +165,7 @@ fn print_report(vectors: &VectorFile, reports: &[CaseReport], key: &str, specula
             r.max_ulps,
             r.allowed,
             if r.pass { "pass" } else { "FAIL" }
-        );
+        )?;
     }
     let px: usize = reports.iter().map(|r| r.pixels).sum();
     let mean = reports
@@ -171,7 +176,7 @@ fn print_report(vectors: &VectorFile, reports: &[CaseReport], key: &str, specula
     let max_l = reports.iter().map(|r| r.max_levels).max().unwrap_or(0);
     let max_a = reports.iter().map(|r| r.max_abs).fold(0.0, f64::max);
     let max_u = reports.iter().map(|r| r.max_ulps).fold(0.0, f64::max);
-    println!("\noverall: {px} pixels, max Δlevel {max_l}, mean Δlevel {mean:.4}, max |Δ| {max_a:.3e}, max {max_u:.1} f32 ulps");
+    outln!("\noverall: {px} pixels, max Δlevel {max_l}, mean Δlevel {mean:.4}, max |Δ| {max_a:.3e}, max {max_u:.1} f32 ulps")?;
     let worst = reports
         .iter()
         .filter(|r| !r.pass)
@@ -179,7 +184,7 @@ fn print_report(vectors: &VectorFile, reports: &[CaseReport], key: &str, specula
         .max_by(|a, b| a.max_abs.total_cmp(&b.max_abs));
     if let Some(w) = worst {
         if let Some(c) = vectors.cases.iter().find(|c| c.id == w.id) {
-            println!(
+            outln!(
                 "worst case {} (pixel {}): {}; Na = ({}), Nb = ({}), L = ({}), n = {}",
                 w.id,
                 w.worst_pixel,
@@ -188,7 +193,8 @@ fn print_report(vectors: &VectorFile, reports: &[CaseReport], key: &str, specula
                 c.nb.exact.join(", "),
                 c.l.exact.join(", "),
                 c.n
-            );
+            )?;
         }
     }
+    Ok(())
 }

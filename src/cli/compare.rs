@@ -151,7 +151,7 @@ pub fn run(a: &CompareArgs) -> Result<(), CliError> {
         span_count,
     };
     let report = report(&exp, pframes, &results, started.elapsed().as_secs_f64());
-    print!("{report}");
+    outp!("{report}")?;
     let write = |name: &str, text: &str| {
         let p = a.out.join(name);
         fs::write(&p, text).map_err(|e| io_err(&p, e))
@@ -161,10 +161,10 @@ pub fn run(a: &CompareArgs) -> Result<(), CliError> {
     write("precision.csv", &precision_csv(&results.precision))?;
     write("longest_span.csv", &spans_csv(&results.spans))?;
     pictures(&exp, picture_frame, &a.out)?;
-    println!(
+    outln!(
         "\nWrote comparison.md, table2_extended.csv, precision.csv, longest_span.csv, grid.png and the highlight figures to {}",
         a.out.display()
-    );
+    )?;
     Ok(())
 }
 

@@ -1,13 +1,57 @@
 //! Sub-commands of the CLI and their shared error type.
 
+use std::fmt;
+use std::io::{ErrorKind, Write};
+use std::process::ExitCode;
+use std::sync::atomic::{AtomicBool, Ordering};
+
+/// Set once standard output's reader has gone away (a closed pipe, as in
+/// `phong-approx span … | head`): the rest of the output is dropped and the command
+/// ends with its own exit code, as if the reader had read everything.
+static STDOUT_CLOSED: AtomicBool = AtomicBool::new(false);
+
+/// Writes `text` to standard output.
+///
+/// A closed pipe is not an error (see [`STDOUT_CLOSED`]); any other failure (a full
+/// disk, `/dev/full`) is bad output: exit code 2 with one line.
+///
+/// # Errors
+/// A [`CliError`] with code 2 naming standard output and the failure.
+pub fn out(text: fmt::Arguments<'_>) -> Result<(), CliError> {
+    if STDOUT_CLOSED.load(Ordering::Relaxed) {
+        return Ok(());
+    }
+    let mut lock = std::io::stdout().lock();
+    let written = lock.write_fmt(text).and_then(|()| lock.flush());
+    match written {
+        Ok(()) => Ok(()),
+        Err(e) if e.kind() == ErrorKind::BrokenPipe => {
+            STDOUT_CLOSED.store(true, Ordering::Relaxed);
+            Ok(())
+        }
+        Err(e) => Err(CliError {
+            message: format!("standard output: {e}"),
+            code: 2,
+        }),
+    }
+}
+
+/// `println!` through [`out`]: `outln!(…)?`.
+macro_rules! outln {
+    () => { $crate::cli::out(format_args!("\n")) };
+    ($($t:tt)*) => { $crate::cli::out(format_args!("{}\n", format_args!($($t)*))) };
+}
+
+/// `print!` through [`out`].
+macro_rules! outp {
+    ($($t:tt)*) => { $crate::cli::out(format_args!($($t)*)) };
+}
+
 pub mod check;
 pub mod compare;
 pub mod reproduce;
 pub mod span;
 pub mod vectors;
-
-use std::fmt;
-use std::process::ExitCode;
 
 /// A CLI failure: one line naming what was wrong, and the exit code.
 #[derive(Debug)]

@@ -143,7 +143,7 @@ pub fn run(a: &ReproduceArgs) -> Result<(), CliError> {
     let results = exp.run(&|| bar.inc(1));
     bar.finish_and_clear();
     let report = report(&exp, &results, started.elapsed().as_secs_f64());
-    print!("{report}");
+    outp!("{report}")?;
     let write = |name: &str, text: &str| {
         let p = a.out.join(name);
         fs::write(&p, text).map_err(|e| io_err(&p, e))
@@ -152,10 +152,10 @@ pub fn run(a: &ReproduceArgs) -> Result<(), CliError> {
     write("table1.csv", &table1_csv(&results))?;
     write("table2.csv", &table2_csv(&results))?;
     pictures(&exp, &a.out)?;
-    println!(
+    outln!(
         "\nWrote tables.md, table1.csv, table2.csv and the figures to {}",
         a.out.display()
-    );
+    )?;
     Ok(())
 }
 

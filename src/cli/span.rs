@@ -351,21 +351,21 @@ pub fn run(a: &SpanArgs) -> Result<(), CliError> {
             obj["step"] = step.map_or(Value::Null, |s| json!(s));
             obj["decision"] = json!(decision);
         }
-        println!(
+        outln!(
             "{}",
             serde_json::to_string_pretty(&obj).expect("plain JSON")
-        );
+        )?;
     } else {
-        println!("method {} · scalar {} · n = {}", r.method, scalar_name, r.n);
+        outln!("method {} · scalar {} · n = {}", r.method, scalar_name, r.n)?;
         if let Some((delta, m, step, decision)) = &o.adaptive {
             let m = m.as_deref().unwrap_or("none (ds = 0)");
             let step = step.map_or("none".to_string(), |s| s.to_string());
-            println!("eq. 23 m = {m} · step = {step} · eq. 24 δ = {delta} · decision: {decision}");
+            outln!("eq. 23 m = {m} · step = {step} · eq. 24 δ = {delta} · decision: {decision}")?;
         }
         let width = o.values.iter().map(String::len).max().unwrap_or(5).max(5);
-        println!("{:>6}  {:<width$}  level", "i", "value");
+        outln!("{:>6}  {:<width$}  level", "i", "value")?;
         for (i, (v, l)) in o.values.iter().zip(&o.levels).enumerate() {
-            println!("{i:>6}  {v:<width$}  {l:>5}");
+            outln!("{i:>6}  {v:<width$}  {l:>5}")?;
         }
     }
     Ok(())

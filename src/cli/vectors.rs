@@ -56,10 +56,10 @@ pub fn run(a: &VectorsArgs) -> Result<(), CliError> {
     match &a.out {
         None if sets.len() == 1 => {
             let file = generate(sets[0]).map_err(|e| CliError::arg("--set", e))?;
-            println!(
+            outln!(
                 "{}",
                 serde_json::to_string_pretty(&file).expect("plain data")
-            );
+            )?;
         }
         None => {
             return Err(CliError::arg(

@@ -4,7 +4,7 @@
     on the standard library axioms of the real numbers. *)
 
 From PhongApprox Require Import Span Duff Euler Derivative Symmetry Adaptive Angular Related.
-From PhongApprox Require Import FloatModel Float.
+From PhongApprox Require Import FloatModel Float Fixed.
 
 (** Span.v *)
 Check eq_2_p_is_linear.
@@ -129,3 +129,11 @@ Check float_corrected_euler_binary32.
 Print Assumptions float_corrected_euler_binary32.
 Check float_corrected_euler_binary64.
 Print Assumptions float_corrected_euler_binary64.
+
+(** Fixed.v *)
+Check fixed_point_corrected_euler_error.
+Print Assumptions fixed_point_corrected_euler_error.
+Check fixed_point_gouraud_error.
+Print Assumptions fixed_point_gouraud_error.
+Check fixed_point_half_level_bits.
+Print Assumptions fixed_point_half_level_bits.

@@ -37,10 +37,10 @@ const ACOS_HOLDER: f64 = 2.2215;
 mod coef {
     /// Gouraud, recurrence `g += dp` on the `Span` set-up: theorem
     /// `float_gouraud_binary32`/`_binary64` (proofs/Float.v).
-    pub const GOURAUD: (f64, f64) = (1.01, 10.0);
+    pub const GOURAUD: (f64, f64) = (1.001, 10.0);
     /// Corrected Euler, recurrence `p += t; t += ds` on the `Span` set-up: theorem
     /// `float_corrected_euler_binary32`/`_binary64` (proofs/Float.v).
-    pub const CORRECTED_EULER: (f64, f64) = (2.2, 45.0);
+    pub const CORRECTED_EULER: (f64, f64) = (2.2, 42.0);
     /// Plain Euler (eqs. 12–14) on the `Span` set-up: `docs/float.md`, Euler.
     pub const EULER: (f64, f64) = (5.6, 115.0);
     /// Duff's `p` recurrence (`p += A`).
@@ -184,7 +184,7 @@ fn method_bound(
     u: f64,
 ) -> Option<f64> {
     let nf = f64::from(n);
-    if n == 0 || !(u > 0.0) || nf * u > MAX_NU {
+    if n == 0 || u.is_nan() || u <= 0.0 || nf * u > MAX_NU {
         return None;
     }
     let lin = |c: (f64, f64)| Some(linear(c, nf) * u);
@@ -275,7 +275,7 @@ fn fast_method_bound(
     u: f64,
 ) -> Option<f64> {
     let nf = f64::from(n);
-    if n == 0 || !(u > 0.0) || nf * u > MAX_NU {
+    if n == 0 || u.is_nan() || u <= 0.0 || nf * u > MAX_NU {
         return None;
     }
     let lin = |c: (f64, f64)| Some(linear(c, nf) * u);

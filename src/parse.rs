@@ -20,6 +20,9 @@ pub enum ParseError {
     /// An exponent too large to be meant.
     #[error("'{0}' has an exponent outside ±1000")]
     ExponentRange(String),
+    /// Longer than [`MAX_NUMBER_CHARS`] characters.
+    #[error("a number of {0} characters is longer than {max} (write it as a fraction of shorter numbers)", max = MAX_NUMBER_CHARS)]
+    TooLong(usize),
     /// Not three comma-separated components.
     #[error("expected three components x,y,z, got {0}")]
     Arity(usize),
@@ -33,14 +36,23 @@ pub enum ParseError {
     },
 }
 
+/// The longest number read: digits beyond a few hundred are not meant, and the
+/// exact arithmetic on them would take time and memory in proportion.
+pub const MAX_NUMBER_CHARS: usize = 400;
+
 /// Parses a decimal (`0.6`, `-1e-3`, `+2.`, `.5E2`) or a fraction of two decimals
 /// (`2/3`, `1/1e3`) exactly.
 ///
 /// # Errors
-/// [`ParseError`] for anything else, a zero denominator, or `|exponent| > 1000`
+/// [`ParseError`] for anything else, a zero denominator, `|exponent| > 1000`, or more
+/// than [`MAX_NUMBER_CHARS`] characters
 /// (`inf` and `nan` are not numbers here).
 pub fn parse_rational(s: &str) -> Result<BigRational, ParseError> {
     let t = s.trim();
+    if t.chars().count() > MAX_NUMBER_CHARS {
+        return Err(ParseError::TooLong(t.chars().count()));
+    }
+    let s = &crate::conformance::shown(s);
     if let Some((a, b)) = t.split_once('/') {
         let num = parse_decimal(a.trim()).ok_or_else(|| ParseError::NotANumber(s.to_string()))?;
         let den = parse_decimal(b.trim()).ok_or_else(|| ParseError::NotANumber(s.to_string()))?;

@@ -339,6 +339,17 @@ impl<T: Real> Span<T> {
                 / T::from_i64(1 << 60)
                 / T::from_i64(1 << 60);
         }
-        Self::with_tolerance(na.normalize(), nb.normalize(), l.normalize(), n, &tol)
+        // Divide by the largest component first, so that the square of the length
+        // neither overflows (1e308 in f64) nor vanishes (1e-100 in exact arithmetic,
+        // whose square root works in fixed point): it lies in [1, 3] then.
+        let scaled = |v: &Vec3<T>| {
+            let m = v
+                .components()
+                .into_iter()
+                .map(Scalar::magnitude)
+                .fold(T::zero(), |a, b| if b > a { b } else { a });
+            v.div(&m).normalize()
+        };
+        Self::with_tolerance(scaled(&na), scaled(&nb), scaled(&l), n, &tol)
     }
 }

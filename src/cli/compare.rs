@@ -2,7 +2,8 @@
 //! tori — extended Table 2 (diffuse and specular), the adaptive scheme, the precision
 //! tables, and a picture grid with heat maps.
 
-use super::reproduce::{io_err, prepare_out, TorusArgs};
+use super::output::OutDir;
+use super::reproduce::TorusArgs;
 use super::{parse_whole, CliError};
 use clap::Args;
 use image::{Rgb, RgbImage};
@@ -17,8 +18,8 @@ use phong_approx::raster::precision::{
 };
 use rayon::prelude::*;
 use std::fmt::Write as _;
-use std::fs;
-use std::path::{Path, PathBuf};
+
+use std::path::PathBuf;
 use std::time::Instant;
 
 /// Arguments of `phong-approx compare`.
@@ -51,6 +52,9 @@ pub struct CompareArgs {
     /// Output folder for the tables and pictures.
     #[arg(long, value_name = "DIR", default_value = "out/compare")]
     pub out: PathBuf,
+    /// Replace files in the output folder that phong-approx did not write.
+    #[arg(long)]
+    pub force: bool,
     /// The image and the torus.
     #[command(flatten)]
     pub torus: TorusArgs,
@@ -98,7 +102,18 @@ pub fn run(a: &CompareArgs) -> Result<(), CliError> {
     let span_count = parse_whole("--spans", &a.spans, 1, 10_000, "")? as usize;
     let picture_frame = parse_whole("--picture-frame", &a.picture_frame, 0, 1_000_000, "")?;
     let (size, radii) = a.torus.parse()?;
-    prepare_out(&a.out)?;
+    let out = OutDir::open(&a.out, a.force, "--out")?;
+    out.check_all(
+        [
+            "comparison.md",
+            "table2_extended.csv",
+            "precision.csv",
+            "longest_span.csv",
+            "grid.png",
+        ]
+        .into_iter()
+        .chain(picture_names().iter().map(String::as_str)),
+    )?;
     let exp = Experiment {
         frames,
         size,
@@ -152,15 +167,12 @@ pub fn run(a: &CompareArgs) -> Result<(), CliError> {
     };
     let report = report(&exp, pframes, &results, started.elapsed().as_secs_f64());
     outp!("{report}")?;
-    let write = |name: &str, text: &str| {
-        let p = a.out.join(name);
-        fs::write(&p, text).map_err(|e| io_err(&p, e))
-    };
-    write("comparison.md", &report)?;
-    write("table2_extended.csv", &table2_csv(&results.tori))?;
-    write("precision.csv", &precision_csv(&results.precision))?;
-    write("longest_span.csv", &spans_csv(&results.spans))?;
-    pictures(&exp, picture_frame, &a.out)?;
+    out.write("comparison.md", &report)?;
+    out.write("table2_extended.csv", &table2_csv(&results.tori))?;
+    out.write("precision.csv", &precision_csv(&results.precision))?;
+    out.write("longest_span.csv", &spans_csv(&results.spans))?;
+    pictures(&exp, picture_frame, &out)?;
+    out.commit()?;
     outln!(
         "\nWrote comparison.md, table2_extended.csv, precision.csv, longest_span.csv, grid.png and the highlight figures to {}",
         a.out.display()
@@ -454,10 +466,20 @@ fn heat(frame: &compare::CompareFrame, c: usize) -> RgbImage {
     img
 }
 
+/// The highlight figures [`pictures`] writes besides `grid.png`.
+fn picture_names() -> Vec<String> {
+    SHININESS
+        .iter()
+        .flat_map(|sv| {
+            ["fig4_corrected_euler", "fig5_phong"].map(|name| format!("{name}_s{sv}.png"))
+        })
+        .collect()
+}
+
 /// The grid (every method on the 800-polygon torus, shading and heat map side by side,
 /// four methods per row in [`Shader::ALL`] order) and Figures 4–5 with highlights at
 /// every shininess.
-fn pictures(exp: &Experiment, f: u32, out: &Path) -> Result<(), CliError> {
+fn pictures(exp: &Experiment, f: u32, out: &OutDir) -> Result<(), CliError> {
     let scene = exp.scene();
     let mesh = exp.mesh(40, 20);
     for (k, sv) in SHININESS.iter().enumerate() {
@@ -490,13 +512,13 @@ fn pictures(exp: &Experiment, f: u32, out: &Path) -> Result<(), CliError> {
                     i64::from(gy),
                 );
             }
-            save_png(&grid, &out.join("grid.png")).map_err(|e| CliError::arg("--out", e))?;
+            save_png(&grid, &out.path_for("grid.png")?).map_err(|e| CliError::arg("--out", e))?;
         }
         for (name, sh) in [
             ("fig4_corrected_euler", Shader::CorrectedEuler),
             ("fig5_phong", Shader::Phong),
         ] {
-            let p = out.join(format!("{name}_s{sv}.png"));
+            let p = out.path_for(&format!("{name}_s{sv}.png"))?;
             save_png(&shaded(&frame, sh.index()), &p).map_err(|e| CliError::arg("--out", e))?;
         }
     }

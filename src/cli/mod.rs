@@ -1,5 +1,6 @@
 //! Sub-commands of the CLI and their shared error type.
 
+use phong_approx::conformance::shown;
 use std::fmt;
 use std::io::{ErrorKind, Write};
 use std::process::ExitCode;
@@ -49,6 +50,7 @@ macro_rules! outp {
 
 pub mod check;
 pub mod compare;
+pub mod output;
 pub mod reproduce;
 pub mod span;
 pub mod vectors;
@@ -92,7 +94,7 @@ pub fn parse_whole(arg: &str, s: &str, lo: u32, hi: u32, what: &str) -> Result<u
     let v: u64 = s
         .trim()
         .parse()
-        .map_err(|_| CliError::arg(arg, format!("'{s}' is not a whole number")))?;
+        .map_err(|_| CliError::arg(arg, format!("'{}' is not a whole number", shown(s))))?;
     if v < u64::from(lo) || v > u64::from(hi) {
         let what = if what.is_empty() {
             String::new()
@@ -138,5 +140,66 @@ pub fn clap_error(e: clap::Error) -> ExitCode {
             eprintln!("phong-approx: {line}");
             ExitCode::from(2)
         }
+    }
+}
+
+/// Reads the file `path` (`-` for standard input) through a byte limit: whatever it
+/// is (a file, a pipe, a FIFO, a device such as `/dev/zero`), reading stops after
+/// `cap` bytes and the input is refused. A FIFO is opened without waiting for a writer,
+/// so one that has none reads as empty instead of blocking.
+///
+/// # Errors
+/// A [`CliError`] for `arg` (code 2): the file cannot be opened or read, is larger than
+/// `cap`, or is not UTF-8.
+pub fn read_capped(path: &str, arg: &str, cap: u64) -> Result<String, CliError> {
+    use std::io::Read;
+    let fail = |e: &dyn fmt::Display| CliError::arg(arg, format!("{}: {e}", shown(path)));
+    let mut reader: Box<dyn Read> = if path == "-" {
+        Box::new(std::io::stdin())
+    } else {
+        Box::new(open_nonblocking(path).map_err(|e| fail(&e))?)
+    };
+    let mut bytes = Vec::new();
+    (&mut reader)
+        .take(cap + 1)
+        .read_to_end(&mut bytes)
+        .map_err(|e| fail(&e))?;
+    if bytes.len() as u64 > cap {
+        return Err(fail(&format!(
+            "larger than {} MiB (reading stopped there)",
+            cap >> 20
+        )));
+    }
+    String::from_utf8(bytes).map_err(|e| {
+        fail(&format!(
+            "not UTF-8 text (byte {})",
+            e.utf8_error().valid_up_to()
+        ))
+    })
+}
+
+/// Opens `path` for reading; on Unix with `O_NONBLOCK` (so opening a FIFO does not wait
+/// for a writer), which is then cleared so that reads wait for data as usual.
+fn open_nonblocking(path: &str) -> std::io::Result<std::fs::File> {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::OpenOptionsExt;
+        use std::os::unix::io::AsRawFd;
+        let f = std::fs::OpenOptions::new()
+            .read(true)
+            .custom_flags(libc::O_NONBLOCK)
+            .open(path)?;
+        let fd = f.as_raw_fd();
+        // SAFETY: `fd` is the open descriptor of `f`, which outlives both calls;
+        // F_GETFL/F_SETFL only read and set its status flags.
+        let flags = unsafe { libc::fcntl(fd, libc::F_GETFL) };
+        if flags < 0 || unsafe { libc::fcntl(fd, libc::F_SETFL, flags & !libc::O_NONBLOCK) } < 0 {
+            return Err(std::io::Error::last_os_error());
+        }
+        Ok(f)
+    }
+    #[cfg(not(unix))]
+    {
+        std::fs::File::open(path)
     }
 }

@@ -1,15 +1,17 @@
 //! `phong-approx reproduce`: the paper's Tables 1–2 and Figures 1–5, end to end.
 
+use super::output::OutDir;
 use super::{parse_whole, CliError};
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
+use phong_approx::conformance::shown;
 use phong_approx::raster::experiment::{Experiment, TorusResult, PAPER_TABLE_1, PAPER_TABLE_2};
 use phong_approx::raster::mesh::NormalMode;
 use phong_approx::raster::pictures::{difference_image, line_plot, save_png, shaded_image, Look};
 use phong_approx::raster::render::{render, Column, RenderOptions, Scene};
 use phong_approx::{Method, Span, Vec3};
 use std::fmt::Write as _;
-use std::fs;
+
 use std::path::{Path, PathBuf};
 use std::time::Instant;
 
@@ -27,6 +29,9 @@ pub struct ReproduceArgs {
     /// Output folder for the CSVs and pictures.
     #[arg(long, value_name = "DIR", default_value = "out")]
     pub out: PathBuf,
+    /// Replace files in the output folder that phong-approx did not write.
+    #[arg(long)]
+    pub force: bool,
     /// The image and the torus.
     #[command(flatten)]
     pub torus: TorusArgs,
@@ -63,7 +68,7 @@ impl TorusArgs {
 }
 
 fn parse_size(s: &str) -> Result<(u32, u32), CliError> {
-    let bad = || CliError::arg("--size", format!("'{s}' is not WxH, e.g. 200x200"));
+    let bad = || CliError::arg("--size", format!("'{}' is not WxH, e.g. 200x200", shown(s)));
     let (w, h) = s.split_once(['x', 'X']).ok_or_else(bad)?;
     let w: u32 = w.trim().parse().map_err(|_| bad())?;
     let h: u32 = h.trim().parse().map_err(|_| bad())?;
@@ -77,7 +82,7 @@ fn parse_size(s: &str) -> Result<(u32, u32), CliError> {
 }
 
 fn parse_radii(s: &str) -> Result<(f32, f32), CliError> {
-    let bad = |why: &str| CliError::arg("--radii", format!("'{s}': {why}"));
+    let bad = |why: &str| CliError::arg("--radii", format!("'{}': {why}", shown(s)));
     let (a, b) = s
         .split_once(',')
         .ok_or_else(|| bad("expected R,r, e.g. 1,0.4"))?;
@@ -89,23 +94,29 @@ fn parse_radii(s: &str) -> Result<(f32, f32), CliError> {
     Ok((big, small))
 }
 
-pub(crate) fn prepare_out(dir: &Path) -> Result<(), CliError> {
-    let name = dir.display().to_string();
-    fs::create_dir_all(dir)
-        .map_err(|e| CliError::arg("--out", format!("cannot create {name}: {e}")))?;
-    let probe = dir.join(".write-test");
-    fs::write(&probe, b"")
-        .map_err(|e| CliError::arg("--out", format!("cannot write in {name}: {e}")))?;
-    let _ = fs::remove_file(probe);
-    Ok(())
-}
-
 pub(crate) fn io_err(path: &Path, e: impl std::fmt::Display) -> CliError {
     CliError {
         message: format!("{}: {e}", path.display()),
         code: 2,
     }
 }
+
+/// The files `reproduce` writes into its folder.
+const OUTPUTS: [&str; 13] = [
+    "tables.md",
+    "table1.csv",
+    "table2.csv",
+    "fig4_torus800_corrected_euler.png",
+    "fig5_torus800_phong.png",
+    "torus800_gouraud_diffuse.png",
+    "diff_torus800_corrected_euler.png",
+    "diff_torus800_gouraud.png",
+    "diff_torus800_euler.png",
+    "fig1_phong_minus_gouraud.svg",
+    "fig2_phong_minus_euler.svg",
+    "fig3_phong_minus_corrected_euler.svg",
+    "fig0_curves.svg",
+];
 
 /// Runs `phong-approx reproduce`.
 ///
@@ -120,12 +131,16 @@ pub fn run(a: &ReproduceArgs) -> Result<(), CliError> {
         o => {
             return Err(CliError::arg(
                 "--normals",
-                format!("unknown mode '{o}' (expected analytic or averaged)"),
+                format!(
+                    "unknown mode '{}' (expected analytic or averaged)",
+                    shown(o)
+                ),
             ))
         }
     };
     let exact_frames = parse_whole("--exact-frames", &a.exact_frames, 0, frames, "")?;
-    prepare_out(&a.out)?;
+    let out = OutDir::open(&a.out, a.force, "--out")?;
+    out.check_all(OUTPUTS)?;
     let exp = Experiment {
         frames,
         size,
@@ -144,14 +159,11 @@ pub fn run(a: &ReproduceArgs) -> Result<(), CliError> {
     bar.finish_and_clear();
     let report = report(&exp, &results, started.elapsed().as_secs_f64());
     outp!("{report}")?;
-    let write = |name: &str, text: &str| {
-        let p = a.out.join(name);
-        fs::write(&p, text).map_err(|e| io_err(&p, e))
-    };
-    write("tables.md", &report)?;
-    write("table1.csv", &table1_csv(&results))?;
-    write("table2.csv", &table2_csv(&results))?;
-    pictures(&exp, &a.out)?;
+    out.write("tables.md", &report)?;
+    out.write("table1.csv", &table1_csv(&results))?;
+    out.write("table2.csv", &table2_csv(&results))?;
+    pictures(&exp, &out)?;
+    out.commit()?;
     outln!(
         "\nWrote tables.md, table1.csv, table2.csv and the figures to {}",
         a.out.display()
@@ -326,7 +338,7 @@ fn table2_csv(results: &[TorusResult]) -> String {
 /// Figures 4–5 (the 800-polygon torus by corrected Euler and by Phong, with
 /// highlights), the difference heat maps, and Figures 1–3 (one scan line, normals
 /// 60° apart).
-fn pictures(exp: &Experiment, out: &Path) -> Result<(), CliError> {
+fn pictures(exp: &Experiment, out: &OutDir) -> Result<(), CliError> {
     let big = Experiment {
         size: (400, 400),
         ..exp.clone()
@@ -344,8 +356,8 @@ fn pictures(exp: &Experiment, out: &Path) -> Result<(), CliError> {
     );
     let look = Look::default();
     let save = |img: &image::RgbImage, name: &str| {
-        let p = out.join(name);
-        save_png(img, &p).map_err(|e| io_err(&p, e))
+        let p = out.path_for(name)?;
+        save_png(img, &p).map_err(|e| io_err(&out.dir().join(name), e))
     };
     save(
         &shaded_image(&frame, Column::Span(Method::CorrectedEuler), look),
@@ -390,7 +402,7 @@ pub fn figure_span(scene: &Scene) -> Span<f64> {
     Span::normalized(na, nb, l, 100).expect("a valid span")
 }
 
-fn scanline_figures(scene: &Scene, out: &Path) -> Result<(), CliError> {
+fn scanline_figures(scene: &Scene, out: &OutDir) -> Result<(), CliError> {
     let span = figure_span(scene);
     let phong = Method::Phong.values(&span).expect("span");
     let curve = |m: Method| -> Vec<f64> {
@@ -418,11 +430,11 @@ fn scanline_figures(scene: &Scene, out: &Path) -> Result<(), CliError> {
         ),
     ];
     for (file, title, m, label) in figs {
-        let p = out.join(file);
+        let p = out.path_for(file)?;
         line_plot(&p, title, "difference (8-bit levels)", &[(label, curve(m))])
-            .map_err(|e| io_err(&p, e))?;
+            .map_err(|e| io_err(&out.dir().join(file), e))?;
     }
-    let p = out.join("fig0_curves.svg");
+    let p = out.path_for("fig0_curves.svg")?;
     let as_levels = |v: Vec<f64>| v.into_iter().map(|x| 255.0 * x).collect::<Vec<_>>();
     line_plot(
         &p,
@@ -444,5 +456,5 @@ fn scanline_figures(scene: &Scene, out: &Path) -> Result<(), CliError> {
             ),
         ],
     )
-    .map_err(|e| io_err(&p, e))
+    .map_err(|e| io_err(&out.dir().join("fig0_curves.svg"), e))
 }

@@ -4,6 +4,7 @@ use super::{parse_whole, CliError};
 use clap::Args;
 use phong_approx::adaptive::{self, Decision};
 use phong_approx::angular::CosTable;
+use phong_approx::conformance::shown;
 use phong_approx::parse::{parse_rational, parse_vec3};
 use phong_approx::quantize::level;
 use phong_approx::reference::level::phong_level_exact;
@@ -99,7 +100,10 @@ fn parse_request(a: &SpanArgs) -> Result<(Request, ScalarKind, bool, u32), CliEr
         other => {
             return Err(CliError::arg(
                 "--scalar",
-                format!("unknown scalar '{other}' (expected f32, f64, exact or mpfr)"),
+                format!(
+                    "unknown scalar '{}' (expected f32, f64, exact or mpfr)",
+                    shown(other)
+                ),
             ))
         }
     };
@@ -109,7 +113,7 @@ fn parse_request(a: &SpanArgs) -> Result<(Request, ScalarKind, bool, u32), CliEr
         other => {
             return Err(CliError::arg(
                 "--format",
-                format!("unknown format '{other}' (expected json or table)"),
+                format!("unknown format '{}' (expected json or table)", shown(other)),
             ))
         }
     };
@@ -273,8 +277,70 @@ fn error_bound(r: &Request, u: f64) -> Option<f64> {
     phong_approx::tolerance::span_bound(r.method, &shape, u)
 }
 
+/// Refuses `--digits` beyond what is known of exact values that are not exact:
+/// square roots, `acos` and `cos` are computed to 2^-256 (so `p/√q` to
+/// `2^-256/√q_min` and the angular values to `2^-254`), and `--normalize` makes the
+/// inputs unit only to 2^-240. A value's digits are printed only if the value's lower
+/// and upper ends (±2^-b, with `b` the bits known, less a margin) print the same.
+fn check_digits(
+    r: &Request,
+    span: &Span<BigRational>,
+    values: &[BigRational],
+) -> Result<(), CliError> {
+    use num_traits::One;
+    if r.method.is_rational() && !r.normalize {
+        return Ok(());
+    }
+    let mut bits: i64 = 250;
+    if matches!(
+        r.method,
+        Method::Phong | Method::Duff | Method::SymmetricPhong
+    ) {
+        // 1/√q_min ≤ 2^k.
+        let q = span.q_min();
+        let k = (i64::try_from(q.denom().bits()).unwrap_or(i64::MAX)
+            - i64::try_from(q.numer().bits()).unwrap_or(0))
+            / 2
+            + 2;
+        bits -= k.max(0);
+    }
+    if r.normalize {
+        bits = bits.min(180);
+    }
+    if bits < 4 {
+        return Err(CliError::arg(
+            "--digits",
+            "no digit of these values is known",
+        ));
+    }
+    let e = BigRational::new(
+        num_bigint::BigInt::one(),
+        num_bigint::BigInt::one() << (bits as usize),
+    );
+    for (i, v) in values.iter().enumerate() {
+        let lo = (v.clone() - e.clone()).to_decimal(r.digits);
+        let hi = (v.clone() + e.clone()).to_decimal(r.digits);
+        if lo != hi {
+            let known = (1..r.digits)
+                .rev()
+                .find(|&d| {
+                    (v.clone() - e.clone()).to_decimal(d) == (v.clone() + e.clone()).to_decimal(d)
+                })
+                .unwrap_or(0);
+            return Err(CliError::arg(
+                "--digits",
+                format!(
+                    "only {known} significant digits of pixel {i} are known (these values are computed to 2^-{bits}); ask for at most that many"
+                ),
+            ));
+        }
+    }
+    Ok(())
+}
+
 fn run_exact(r: &Request) -> Result<Outcome, CliError> {
     let (span, values, decision) = compute::<BigRational>(r)?;
+    check_digits(r, &span, &values)?;
     // Phong-valued methods: decide the exact level of p/√q with rationals only.
     let levels = match r.method {
         Method::Phong | Method::Duff | Method::SymmetricPhong if !r.normalize => Some(

@@ -1,9 +1,10 @@
 //! `phong-approx vectors`: write the test vector files.
 
+use super::output::OutDir;
 use super::CliError;
 use clap::Args;
+use phong_approx::conformance::shown;
 use phong_approx::conformance::vectors::{generate, inputs_csv, to_csv, SETS};
-use std::fs;
 use std::path::{Path, PathBuf};
 
 /// Arguments of `phong-approx vectors`.
@@ -16,25 +17,30 @@ pub struct VectorsArgs {
     /// typical, edge, paper, or all (the default).
     #[arg(long, value_name = "NAME", default_value = "all")]
     pub set: String,
+    /// Replace files that phong-approx did not write.
+    #[arg(long)]
+    pub force: bool,
 }
 
-fn write(path: &Path, text: &str) -> Result<(), CliError> {
-    fs::write(path, text)
-        .map_err(|e| CliError::arg("--out", format!("cannot write {}: {e}", path.display())))
+/// The three files of `set` written next to `json`: `NAME.json`, `NAME.csv` (expected
+/// values) and `NAME-inputs.csv`.
+fn names(set: &str, json: &Path) -> [String; 3] {
+    let stem = json.file_stem().and_then(|s| s.to_str()).unwrap_or(set);
+    [
+        format!("{stem}.json"),
+        format!("{stem}.csv"),
+        format!("{stem}-inputs.csv"),
+    ]
 }
 
-/// Writes `NAME.json`, `NAME.csv` (expected values) and `NAME-inputs.csv` for `set`
-/// next to `json`.
-fn write_set(set: &str, json: &Path) -> Result<(), CliError> {
+/// Writes the three files of `set` into `out`.
+fn write_set(set: &str, json: &Path, out: &OutDir) -> Result<(), CliError> {
     let file = generate(set).map_err(|e| CliError::arg("--set", e))?;
     let text = serde_json::to_string_pretty(&file).expect("plain data") + "\n";
-    write(json, &text)?;
-    write(&json.with_extension("csv"), &to_csv(&file))?;
-    let stem = json.file_stem().and_then(|s| s.to_str()).unwrap_or(set);
-    write(
-        &json.with_file_name(format!("{stem}-inputs.csv")),
-        &inputs_csv(&file),
-    )?;
+    let [j, c, i] = names(set, json);
+    out.write(&j, &text)?;
+    out.write(&c, &to_csv(&file))?;
+    out.write(&i, &inputs_csv(&file))?;
     Ok(())
 }
 
@@ -49,7 +55,10 @@ pub fn run(a: &VectorsArgs) -> Result<(), CliError> {
         other => {
             return Err(CliError::arg(
                 "--set",
-                format!("unknown set '{other}' (expected typical, edge, paper or all)"),
+                format!(
+                    "unknown set '{}' (expected typical, edge, paper or all)",
+                    shown(other)
+                ),
             ))
         }
     };
@@ -68,20 +77,26 @@ pub fn run(a: &VectorsArgs) -> Result<(), CliError> {
             ))
         }
         Some(p) if sets.len() == 1 && p.extension().is_some_and(|e| e == "json") => {
-            if let Some(dir) = p.parent().filter(|d| !d.as_os_str().is_empty()) {
-                fs::create_dir_all(dir).map_err(|e| {
-                    CliError::arg("--out", format!("cannot create {}: {e}", dir.display()))
-                })?;
-            }
-            write_set(sets[0], p)?;
+            let dir = p
+                .parent()
+                .filter(|d| !d.as_os_str().is_empty())
+                .unwrap_or(Path::new("."));
+            let out = OutDir::open(dir, a.force, "--out")?;
+            out.check_all(names(sets[0], p).iter().map(String::as_str))?;
+            write_set(sets[0], p, &out)?;
+            out.commit()?;
         }
         Some(dir) => {
-            fs::create_dir_all(dir).map_err(|e| {
-                CliError::arg("--out", format!("cannot create {}: {e}", dir.display()))
-            })?;
+            let out = OutDir::open(dir, a.force, "--out")?;
+            let all: Vec<[String; 3]> = sets
+                .iter()
+                .map(|s| names(s, &dir.join(format!("{s}.json"))))
+                .collect();
+            out.check_all(all.iter().flatten().map(String::as_str))?;
             for s in sets {
-                write_set(s, &dir.join(format!("{s}.json")))?;
+                write_set(s, &dir.join(format!("{s}.json")), &out)?;
             }
+            out.commit()?;
         }
     }
     Ok(())

@@ -1,0 +1,225 @@
+//! A vector file that cannot be fooled: its SHA-256 against the published sets, and a
+//! full check of its own invariants before `check` uses it.
+//!
+//! `check` refuses a vector file whose digest is not one of [`PUBLISHED`] unless the
+//! user says `--allow-modified-vectors` (for people who generate their own), and
+//! always refuses one that breaks an invariant of [`validate`]: so a truncated,
+//! edited or hostile file can neither make garbage pass nor exhaust memory.
+
+use super::vectors::{method_key, Case, Expected, VectorFile, METHODS};
+use crate::parse::parse_rational;
+use crate::quantize::level;
+use crate::scalar::Scalar;
+use crate::span::Span;
+use crate::vector::Vec3;
+use crate::BigRational;
+use sha2::{Digest, Sha256};
+
+/// SHA-256 of the published vector files `vectors/SET.json`, as written by
+/// `phong-approx vectors --set SET` of this version (tested: `tests/conformance.rs`).
+pub const PUBLISHED: [(&str, &str); 3] = [
+    (
+        "typical",
+        "f474021ef4d0b20b23dcb9927bd5c50388984c15f6a6664fcdc9f995494b1b98",
+    ),
+    (
+        "edge",
+        "f4a5fdc6066b2173de902a7c977b3db6da9880b5fee9a96f2db8effd04f29599",
+    ),
+    (
+        "paper",
+        "411569b215a26d0c0ae490a55de495a89cedf893f0aacb7618c5a43d304404f7",
+    ),
+];
+
+/// The largest `n` of a case `check` accepts (the published sets go to 4096).
+pub const MAX_CASE_STEPS: u32 = 65_536;
+
+/// The most cases a vector file may hold.
+pub const MAX_CASES: usize = 100_000;
+
+/// No method's value on exact unit inputs leaves `[−4, 4]` (plain Euler's overshoot
+/// is the largest, `|E_i| ≤ 3.77`: `docs/float.md` §3); diffuse expectations outside
+/// this range are refused.
+pub const MAX_DIFFUSE_VALUE: f64 = 4.0;
+
+/// The hexadecimal SHA-256 of `bytes`.
+pub fn sha256_hex(bytes: &[u8]) -> String {
+    Sha256::digest(bytes)
+        .iter()
+        .map(|b| format!("{b:02x}"))
+        .collect()
+}
+
+/// The published set whose file has this digest, if any.
+pub fn published_set(digest: &str) -> Option<&'static str> {
+    PUBLISHED
+        .iter()
+        .find(|(_, d)| d.eq_ignore_ascii_case(digest))
+        .map(|(s, _)| *s)
+}
+
+/// An exact input vector of a case.
+fn exact_vector(v: &super::vectors::VectorInput) -> Option<Vec3<BigRational>> {
+    let [x, y, z] = &v.exact;
+    Some(Vec3::new(
+        parse_rational(x).ok()?,
+        parse_rational(y).ok()?,
+        parse_rational(z).ok()?,
+    ))
+}
+
+/// The exact span of a case, after checking `n` and the inputs.
+///
+/// # Errors
+/// A message naming the case and what is wrong.
+pub fn case_span(c: &Case) -> Result<Span<BigRational>, String> {
+    let id = &c.id;
+    if c.n == 0 || c.n > MAX_CASE_STEPS {
+        return Err(format!(
+            "case {id}: n = {} is outside 1..={MAX_CASE_STEPS}",
+            c.n
+        ));
+    }
+    let v = |x, what: &str| {
+        exact_vector(x).ok_or_else(|| format!("case {id}: {what} is not three exact numbers"))
+    };
+    Span::new(v(&c.na, "na")?, v(&c.nb, "nb")?, v(&c.l, "l")?, c.n)
+        .map_err(|e| format!("case {id}: {e}"))
+}
+
+/// Checks one method's expectations: `n + 1` values and levels, every value a finite
+/// decimal within `range` (`None`: non-negative, any size), every level the level of
+/// its value (or one off where the value is within rounding of a level boundary).
+fn check_expected(
+    id: &str,
+    what: &str,
+    n: u32,
+    e: &Expected,
+    range: Option<f64>,
+) -> Result<(), String> {
+    let len = n as usize + 1;
+    if e.values.len() != len || e.levels.len() != len {
+        return Err(format!(
+            "case {id}: {what} has {} values and {} levels, the span has {len} pixels",
+            e.values.len(),
+            e.levels.len()
+        ));
+    }
+    for (i, (v, &l)) in e.values.iter().zip(&e.levels).enumerate() {
+        let x = parse_rational(v)
+            .map_err(|_| format!("case {id}: {what} value {i} is not a decimal number"))?;
+        let f = x.to_f64();
+        let ok = match range {
+            Some(r) => f.abs() <= r,
+            None => f >= 0.0 && f.is_finite(),
+        };
+        if !ok {
+            return Err(format!(
+                "case {id}: {what} value {i} = {} is out of range",
+                crate::conformance::shown(v)
+            ));
+        }
+        let lv = level(&x);
+        // The values carry 30 significant digits: a value within 1e-25 of a level
+        // boundary may round to the other side of it.
+        let scaled = f * 255.0;
+        let near_boundary = (scaled - scaled.round()).abs() < 1e-9;
+        if lv != l && !(near_boundary && lv.abs_diff(l) == 1) {
+            return Err(format!(
+                "case {id}: {what} pixel {i}: level {l} is not the level of value {} ({lv})",
+                crate::conformance::shown(v)
+            ));
+        }
+    }
+    Ok(())
+}
+
+/// Checks every invariant of a vector file: a supported version, the stated number of
+/// cases, unique ids, `1 ≤ n ≤` [`MAX_CASE_STEPS`], exact unit inputs, `q_min` equal to
+/// the span's, every method's `n + 1` finite values within range with consistent
+/// levels, and a valid adaptive decision.
+///
+/// # Errors
+/// The first problem found, naming the case.
+pub fn validate(file: &VectorFile) -> Result<(), String> {
+    let major = file.version.split('.').next().unwrap_or("");
+    if major != "1" {
+        return Err(format!(
+            "version '{}' is not supported (this checker reads 1.x)",
+            crate::conformance::shown(&file.version)
+        ));
+    }
+    if file.cases.len() > MAX_CASES {
+        return Err(format!("more than {MAX_CASES} cases"));
+    }
+    if file.cases.is_empty() {
+        return Err("the file has no cases".into());
+    }
+    if file.number_of_cases != file.cases.len() {
+        return Err(format!(
+            "number_of_cases is {} but the file holds {} cases",
+            file.number_of_cases,
+            file.cases.len()
+        ));
+    }
+    let known: Vec<String> = METHODS.iter().map(|&m| method_key(m)).collect();
+    if file.methods.is_empty() {
+        return Err("the file lists no methods".into());
+    }
+    for m in &file.methods {
+        if !known.contains(m) {
+            return Err(format!(
+                "unknown method '{}' (known: {})",
+                crate::conformance::shown(m),
+                known.join(", ")
+            ));
+        }
+    }
+    let mut ids = std::collections::HashSet::new();
+    for c in &file.cases {
+        if c.id.is_empty() || !ids.insert(c.id.as_str()) {
+            return Err(format!(
+                "case id '{}' is empty or not unique",
+                crate::conformance::shown(&c.id)
+            ));
+        }
+        let span = case_span(c)?;
+        let q = span.q_min().to_f64();
+        if !(c.q_min.is_finite() && c.q_min > 0.0 && (c.q_min - q).abs() <= 1e-12 * q) {
+            return Err(format!(
+                "case {}: q_min = {} but the span's is {q}",
+                c.id, c.q_min
+            ));
+        }
+        if c.decision != "gouraud" && c.decision != "corrected-euler" {
+            return Err(format!("case {}: unknown decision", c.id));
+        }
+        if parse_rational(&c.delta).is_err() {
+            return Err(format!("case {}: delta is not a number", c.id));
+        }
+        for m in &file.methods {
+            let e = c
+                .expected
+                .get(m)
+                .ok_or_else(|| format!("case {}: no expectations for method {m}", c.id))?;
+            check_expected(&c.id, m, c.n, e, Some(MAX_DIFFUSE_VALUE))?;
+        }
+        if let Some(sp) = &c.specular {
+            let h = exact_vector(&sp.h)
+                .ok_or_else(|| format!("case {}: h is not three exact numbers", c.id))?;
+            Span::new(span.na.clone(), span.nb.clone(), h, c.n)
+                .map_err(|e| format!("case {}: specular: {e}", c.id))?;
+            if sp.s == 0 || sp.s > 10_000 {
+                return Err(format!("case {}: shininess {} out of range", c.id, sp.s));
+            }
+            for m in &file.methods {
+                let e = sp.expected.get(m).ok_or_else(|| {
+                    format!("case {}: no specular expectations for method {m}", c.id)
+                })?;
+                check_expected(&c.id, &format!("specular {m}"), c.n, e, None)?;
+            }
+        }
+    }
+    Ok(())
+}

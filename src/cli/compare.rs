@@ -102,6 +102,7 @@ pub fn run(a: &CompareArgs) -> Result<(), CliError> {
     let span_count = parse_whole("--spans", &a.spans, 1, 10_000, "")? as usize;
     let picture_frame = parse_whole("--picture-frame", &a.picture_frame, 0, 1_000_000, "")?;
     let (size, radii) = a.torus.parse()?;
+    a.torus.budget(size, frames.max(pframes), 0)?;
     let out = OutDir::open(&a.out, a.force, "--out")?;
     out.check_all(
         [
@@ -123,6 +124,12 @@ pub fn run(a: &CompareArgs) -> Result<(), CliError> {
     let started = Instant::now();
     let b = bar(u64::from(frames) * 4, "every method, 4 tori:");
     let tori = compare::run(&exp, &|| b.inc(1));
+    if tori.iter().all(|t| t.stats.spans == 0) {
+        return Err(CliError::arg(
+            "--radii",
+            "the scene has no visible pixel (the torus is too small, or too large, for the image)",
+        ));
+    }
     b.finish_and_clear();
     let scene = exp.scene();
     let mesh = exp.mesh(40, 20);

@@ -52,6 +52,11 @@ pub struct TorusArgs {
     /// Major and tube radius of the torus.
     #[arg(long, value_name = "R,r", default_value = "1,0.4")]
     pub radii: String,
+    /// Run even when the request exceeds the budget (more than 1024×1024 pixels, more
+    /// than 200 frames of 512×512, or exact frames of more than 600,000 pixels in
+    /// all), which would take many minutes to hours.
+    #[arg(long)]
+    pub yes: bool,
 }
 
 /// `((width, height), (major radius, tube radius))`.
@@ -64,6 +69,42 @@ impl TorusArgs {
     /// [`CliError`] naming `--size` or `--radii` when one is malformed.
     pub(crate) fn parse(&self) -> Result<SizeAndRadii, CliError> {
         Ok((parse_size(&self.size)?, parse_radii(&self.radii)?))
+    }
+
+    /// Refuses, unless `--yes`, a run whose work exceeds the budget: `frames` frames
+    /// and `exact_frames` exact frames of `size` pixels.
+    ///
+    /// # Errors
+    /// A [`CliError`] naming the option and the limit.
+    pub(crate) fn budget(
+        &self,
+        size: (u32, u32),
+        frames: u32,
+        exact_frames: u32,
+    ) -> Result<(), CliError> {
+        if self.yes {
+            return Ok(());
+        }
+        let px = u64::from(size.0) * u64::from(size.1);
+        if px > 1 << 20 {
+            return Err(CliError::arg(
+                "--size",
+                format!("{}x{} is more than 1024×1024 pixels, which takes many minutes; pass --yes to run anyway", size.0, size.1),
+            ));
+        }
+        if px * u64::from(frames) > 200 * 512 * 512 {
+            return Err(CliError::arg(
+                "--frames",
+                format!("{frames} frames of {}x{} is more than 200 frames of 512×512, which takes many minutes; pass --yes to run anyway", size.0, size.1),
+            ));
+        }
+        if px * u64::from(exact_frames) > 600_000 {
+            return Err(CliError::arg(
+                "--exact-frames",
+                format!("{exact_frames} exact frames of {}x{} is more than 600,000 exact pixels (about a minute); pass --yes to run anyway", size.0, size.1),
+            ));
+        }
+        Ok(())
     }
 }
 
@@ -139,6 +180,7 @@ pub fn run(a: &ReproduceArgs) -> Result<(), CliError> {
         }
     };
     let exact_frames = parse_whole("--exact-frames", &a.exact_frames, 0, frames, "")?;
+    a.torus.budget(size, frames, exact_frames)?;
     let out = OutDir::open(&a.out, a.force, "--out")?;
     out.check_all(OUTPUTS)?;
     let exp = Experiment {
@@ -157,6 +199,12 @@ pub fn run(a: &ReproduceArgs) -> Result<(), CliError> {
     );
     let results = exp.run(&|| bar.inc(1));
     bar.finish_and_clear();
+    if results.iter().all(|r| r.stats.pixels == 0) {
+        return Err(CliError::arg(
+            "--radii",
+            "the scene has no visible pixel (the torus is too small, or too large, for the image)",
+        ));
+    }
     let report = report(&exp, &results, started.elapsed().as_secs_f64());
     outp!("{report}")?;
     out.write("tables.md", &report)?;
@@ -339,8 +387,11 @@ fn table2_csv(results: &[TorusResult]) -> String {
 /// highlights), the difference heat maps, and Figures 1–3 (one scan line, normals
 /// 60° apart).
 fn pictures(exp: &Experiment, out: &OutDir) -> Result<(), CliError> {
+    // The pictures follow --size, scaled up by a whole factor to at least 400 pixels
+    // on the shorter side.
+    let k = 400u32.div_ceil(exp.size.0.min(exp.size.1)).max(1);
     let big = Experiment {
-        size: (400, 400),
+        size: (exp.size.0 * k, exp.size.1 * k),
         ..exp.clone()
     };
     let scene = big.scene();

@@ -51,13 +51,25 @@ pub struct SpanArgs {
     /// (the second source uses 256) instead of computing it.
     #[arg(long, value_name = "SIZE")]
     pub table_size: Option<String>,
-    /// MPFR precision in bits (for --scalar mpfr).
-    #[arg(long, value_name = "BITS", default_value = "256")]
-    pub precision: String,
+    /// MPFR precision in bits (for --scalar mpfr; default 256).
+    #[arg(long, value_name = "BITS")]
+    pub precision: Option<String>,
+    /// Run even when the request exceeds the budget (exact or MPFR spans of more than
+    /// 65536 steps or tables of more than 65536 entries, or more than 1 GiB of
+    /// output), which would take minutes to hours.
+    #[arg(long)]
+    pub yes: bool,
     /// Significant digits printed for exact and mpfr values (at least 25 by default).
     #[arg(long, value_name = "D", default_value = "30")]
     pub digits: String,
 }
+
+/// The most steps (and cosine-table entries) an exact or MPFR run takes without
+/// `--yes`: about half a minute of work.
+const SPAN_BUDGET: u32 = 1 << 16;
+
+/// The most output `span` writes without `--yes`.
+const OUTPUT_BUDGET: u64 = 1 << 30;
 
 /// Which number type to run in.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -138,8 +150,59 @@ fn parse_request(a: &SpanArgs) -> Result<(Request, ScalarKind, bool, u32), CliEr
             "the table size",
         )?);
     }
-    let precision = parse_whole("--precision", &a.precision, 2, 1 << 20, "the precision")?;
+    let precision = match &a.precision {
+        Some(p) if scalar == ScalarKind::Mpfr => {
+            parse_whole("--precision", p, 2, 1 << 20, "the precision")?
+        }
+        Some(_) => {
+            return Err(CliError::arg(
+                "--precision",
+                "only --scalar mpfr has a precision to set",
+            ))
+        }
+        None => 256,
+    };
     let digits = parse_whole("--digits", &a.digits, 1, 10_000, "the number of digits")? as usize;
+    let zero = BigRational::from_integer(0.into());
+    let most = BigRational::from_integer(1000.into());
+    if kd < zero || kd > most {
+        return Err(CliError::arg(
+            "--kd",
+            "K_d must be between 0 and 1000 (a diffuse reflectance, usually at most 1)",
+        ));
+    }
+    // The budget: what would take minutes to hours, or gigabytes, needs --yes.
+    let exact = matches!(scalar, ScalarKind::Exact | ScalarKind::Mpfr);
+    if !a.yes {
+        if exact && n > SPAN_BUDGET {
+            return Err(CliError::arg(
+                "--steps",
+                format!("{n} steps in exact arithmetic take minutes or more (budget {SPAN_BUDGET}); pass --yes to run anyway"),
+            ));
+        }
+        if let Method::AngularTable(size) = method {
+            if exact && size > SPAN_BUDGET {
+                return Err(CliError::arg(
+                    "--table-size",
+                    format!("a table of {size} exact cosines takes minutes (budget {SPAN_BUDGET}); pass --yes to run anyway"),
+                ));
+            }
+        }
+        // Per pixel: the value (quoted, indented), its level, and for exact runs of
+        // the field-operation methods a fraction of about the same length.
+        let per_pixel = if exact { 2 * (digits + 12) + 10 } else { 42 };
+        let bytes = (u64::from(n) + 1) * per_pixel as u64;
+        if bytes > OUTPUT_BUDGET {
+            return Err(CliError::arg(
+                "--digits",
+                format!(
+                    "the output would be about {} MiB (budget {} MiB); ask for fewer digits or steps, or pass --yes",
+                    bytes >> 20,
+                    OUTPUT_BUDGET >> 20
+                ),
+            ));
+        }
+    }
     if scalar == ScalarKind::Mpfr && !cfg!(feature = "mpfr") {
         return Err(CliError::arg(
             "--scalar",
@@ -368,18 +431,74 @@ fn run_mpfr(_r: &Request, _precision: u32) -> Result<Outcome, CliError> {
     unreachable!("parse_request rejects mpfr without the feature")
 }
 
+/// A field of the JSON output: one value, or a long array written as it goes.
+enum Field<'a> {
+    One(Value),
+    Strings(&'a [String]),
+    Levels(&'a [u8]),
+}
+
+/// Writes the object as `serde_json`'s pretty printer would, streaming the arrays in
+/// pieces instead of building the whole text (2^24 values would take gigabytes).
+fn write_json(fields: &[(&str, Field)]) -> Result<(), CliError> {
+    outp!("{{")?;
+    for (k, (name, field)) in fields.iter().enumerate() {
+        let sep = if k == 0 { "" } else { "," };
+        outp!("{sep}\n  {}: ", json!(name))?;
+        match field {
+            Field::One(v) => outp!("{v}")?,
+            Field::Strings(items) => write_array(items.iter().map(|x| json!(x).to_string()))?,
+            Field::Levels(items) => write_array(items.iter().map(u8::to_string))?,
+        }
+    }
+    outln!("\n}}")
+}
+
+/// `[` items one per line, indented by four `]`, in chunks of about 64 KiB.
+fn write_array(items: impl ExactSizeIterator<Item = String>) -> Result<(), CliError> {
+    if items.len() == 0 {
+        return outp!("[]");
+    }
+    let mut chunk = String::from("[");
+    for (i, item) in items.enumerate() {
+        if i > 0 {
+            chunk.push(',');
+        }
+        chunk.push_str("\n    ");
+        chunk.push_str(&item);
+        if chunk.len() > 1 << 16 {
+            outp!("{chunk}")?;
+            chunk.clear();
+        }
+    }
+    chunk.push_str("\n  ]");
+    outp!("{chunk}")
+}
+
 /// Runs `phong-approx span`.
 ///
 /// # Errors
 /// A [`CliError`] naming the bad argument (exit code 2).
 pub fn run(a: &SpanArgs) -> Result<(), CliError> {
     let (r, scalar, json, precision) = parse_request(a)?;
+    // Exact work on long spans takes seconds: show that it is under way.
+    let spinner =
+        (matches!(scalar, ScalarKind::Exact | ScalarKind::Mpfr) && r.n > 4096).then(|| {
+            let b = indicatif::ProgressBar::new_spinner();
+            b.set_message(format!("{} pixels in {} arithmetic", r.n + 1, a.scalar));
+            b.enable_steady_tick(std::time::Duration::from_millis(200));
+            b
+        });
     let o = match scalar {
-        ScalarKind::F32 => run_typed::<f32>(&r)?,
-        ScalarKind::F64 => run_typed::<f64>(&r)?,
-        ScalarKind::Exact => run_exact(&r)?,
-        ScalarKind::Mpfr => run_mpfr(&r, precision)?,
+        ScalarKind::F32 => run_typed::<f32>(&r),
+        ScalarKind::F64 => run_typed::<f64>(&r),
+        ScalarKind::Exact => run_exact(&r),
+        ScalarKind::Mpfr => run_mpfr(&r, precision),
     };
+    if let Some(b) = spinner {
+        b.finish_and_clear();
+    }
+    let o = o?;
     let scalar_name = match scalar {
         ScalarKind::F32 => "f32",
         ScalarKind::F64 => "f64",
@@ -387,15 +506,15 @@ pub fn run(a: &SpanArgs) -> Result<(), CliError> {
         ScalarKind::Mpfr => "mpfr",
     };
     if json {
-        let mut obj = json!({
-            "method": r.method.name(),
-            "scalar": scalar_name,
-            "steps": r.n,
-            "values": o.values,
-            "levels": o.levels,
-        });
+        let mut fields: Vec<(&str, Field)> = vec![
+            ("method", Field::One(json!(r.method.name()))),
+            ("scalar", Field::One(json!(scalar_name))),
+            ("steps", Field::One(json!(r.n))),
+            ("values", Field::Strings(&o.values)),
+            ("levels", Field::Levels(&o.levels)),
+        ];
         if let Some(f) = &o.fractions {
-            obj["fractions"] = json!(f);
+            fields.push(("fractions", Field::Strings(f)));
         }
         if let Some(u) = match scalar {
             ScalarKind::F32 => Some(f32::unit_roundoff()),
@@ -403,24 +522,25 @@ pub fn run(a: &SpanArgs) -> Result<(), CliError> {
             _ => None,
         } {
             // Rounded up to 3 significant digits: a bound, never understated.
-            obj["error_bound"] = error_bound(&r, u).map_or(Value::Null, |b| json!(round_up_3(b)));
+            let b = error_bound(&r, u).map_or(Value::Null, |b| json!(round_up_3(b)));
+            fields.push(("error_bound", Field::One(b)));
         }
         if let Method::AngularTable(size) = r.method {
-            obj["table_size"] = json!(size);
+            fields.push(("table_size", Field::One(json!(size))));
         }
         if scalar == ScalarKind::Mpfr {
-            obj["precision"] = json!(precision);
+            fields.push(("precision", Field::One(json!(precision))));
         }
         if let Some((delta, m, step, decision)) = &o.adaptive {
-            obj["delta"] = json!(delta);
-            obj["m"] = m.as_ref().map_or(Value::Null, |m| json!(m));
-            obj["step"] = step.map_or(Value::Null, |s| json!(s));
-            obj["decision"] = json!(decision);
+            fields.push(("delta", Field::One(json!(delta))));
+            fields.push((
+                "m",
+                Field::One(m.as_ref().map_or(Value::Null, |m| json!(m))),
+            ));
+            fields.push(("step", Field::One(step.map_or(Value::Null, |s| json!(s)))));
+            fields.push(("decision", Field::One(json!(decision))));
         }
-        outln!(
-            "{}",
-            serde_json::to_string_pretty(&obj).expect("plain JSON")
-        )?;
+        write_json(&fields)?;
     } else {
         outln!("method {} · scalar {} · n = {}", r.method, scalar_name, r.n)?;
         if let Some((delta, m, step, decision)) = &o.adaptive {

@@ -1,0 +1,670 @@
+//! Reliability: every defect found by trying the tool as a careless user and as an
+//! attacker would has a test here that reproduces it, and now passes. Numbers refer
+//! to the list in docs/conformance.md, "Limits and exit codes".
+
+use serde_json::Value;
+use std::io::Read;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output, Stdio};
+use std::time::{Duration, Instant};
+
+fn root() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+}
+
+fn bin() -> Command {
+    Command::new(env!("CARGO_BIN_EXE_phong-approx"))
+}
+
+/// A fresh folder for one test.
+fn scratch(name: &str) -> PathBuf {
+    let d = std::env::temp_dir().join(format!("phong-approx-rel-{}-{name}", std::process::id()));
+    let _ = std::fs::remove_dir_all(&d);
+    std::fs::create_dir_all(&d).unwrap();
+    d
+}
+
+fn run(args: &[&str]) -> Output {
+    bin().args(args).output().unwrap()
+}
+
+fn code(o: &Output) -> i32 {
+    o.status.code().unwrap_or(-1)
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+/// Exit code 2 with one line on stderr that contains `needle`, and no panic.
+fn refused(o: &Output, needle: &str) {
+    let e = stderr(o);
+    assert_eq!(code(o), 2, "expected exit 2, got {}: {e}", code(o));
+    assert!(!e.contains("panicked"), "panic: {e}");
+    assert_eq!(e.trim_end().lines().count(), 1, "not one line: {e}");
+    assert!(e.contains(needle), "'{needle}' not in: {e}");
+}
+
+fn typical() -> Value {
+    let text = std::fs::read_to_string(root().join("vectors/typical.json")).unwrap();
+    serde_json::from_str(&text).unwrap()
+}
+
+/// The exact expected corrected-Euler values of `v` as a results CSV.
+fn results_csv(v: &Value) -> String {
+    let mut s = String::from("case,pixel,value\n");
+    for c in v["cases"].as_array().unwrap() {
+        let id = c["id"].as_str().unwrap();
+        for (i, x) in c["expected"]["corrected-euler"]["values"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .enumerate()
+        {
+            s.push_str(&format!("{id},{i},{}\n", x.as_str().unwrap()));
+        }
+    }
+    s
+}
+
+fn write(dir: &Path, name: &str, text: &str) -> String {
+    let p = dir.join(name);
+    std::fs::write(&p, text).unwrap();
+    p.display().to_string()
+}
+
+/// `check` on an edited copy of the typical vectors, with their own exact results.
+fn check_edited(name: &str, edit: impl Fn(&mut Value), extra: &[&str]) -> Output {
+    let d = scratch(name);
+    let mut v = typical();
+    let results = write(&d, "r.csv", &results_csv(&v));
+    edit(&mut v);
+    let vectors = write(&d, "v.json", &serde_json::to_string_pretty(&v).unwrap());
+    let mut args = vec!["check", "--vectors", &vectors, "--results", &results];
+    args.extend_from_slice(extra);
+    run(&args)
+}
+
+const ALLOW: &[&str] = &["--allow-modified-vectors"];
+
+#[test]
+fn d1_published_vectors_pass_and_modified_ones_are_refused() {
+    let d = scratch("d1");
+    let r = write(&d, "r.csv", &results_csv(&typical()));
+    let v = root().join("vectors/typical.json").display().to_string();
+    assert_eq!(code(&run(&["check", "--vectors", &v, "--results", &r])), 0);
+    // The same content, re-serialized: not the published bytes.
+    refused(
+        &check_edited("d1b", |_| {}, &[]),
+        "not that of a published vector set",
+    );
+    assert_eq!(code(&check_edited("d1c", |_| {}, ALLOW)), 0);
+}
+
+#[test]
+fn d1_truncated_expectations_cannot_make_garbage_pass() {
+    let o = check_edited(
+        "d1-empty",
+        |v| {
+            for c in v["cases"].as_array_mut().unwrap() {
+                c["expected"]["corrected-euler"]["values"] = Value::Array(vec![]);
+            }
+        },
+        ALLOW,
+    );
+    refused(&o, "values");
+}
+
+#[test]
+fn d1_q_min_zero_is_refused() {
+    let o = check_edited("d1-qmin", |v| v["cases"][0]["q_min"] = 0.into(), ALLOW);
+    refused(&o, "q_min");
+}
+
+#[test]
+fn d1_an_edited_value_is_caught() {
+    let o = check_edited(
+        "d1-edit",
+        |v| {
+            let x = &mut v["cases"][3]["expected"]["corrected-euler"]["values"][1];
+            let f: f64 = x.as_str().unwrap().parse().unwrap();
+            *x = Value::String(format!("{}", f + 0.5));
+        },
+        ALLOW,
+    );
+    refused(&o, "level");
+    let o = check_edited(
+        "d1-huge",
+        |v| v["cases"][3]["expected"]["corrected-euler"]["values"][1] = "1e39".into(),
+        &["--allow-modified-vectors", "--tolerance", "ulps=1"],
+    );
+    refused(&o, "out of range");
+}
+
+#[test]
+fn d1_absurd_n_is_refused_without_allocating() {
+    for n in [4_294_967_295u64, 400_000_000] {
+        let t = Instant::now();
+        let o = check_edited("d1-n", |v| v["cases"][0]["n"] = n.into(), ALLOW);
+        refused(&o, "n = ");
+        assert!(t.elapsed() < Duration::from_secs(30));
+    }
+}
+
+#[test]
+fn d1_ids_counts_and_versions_are_checked() {
+    let o = check_edited(
+        "d1-dup",
+        |v| {
+            let id = v["cases"][0]["id"].clone();
+            v["cases"][1]["id"] = id;
+        },
+        ALLOW,
+    );
+    refused(&o, "not unique");
+    let o = check_edited("d1-count", |v| v["number_of_cases"] = 41.into(), ALLOW);
+    refused(&o, "number_of_cases");
+    let o = check_edited("d1-version", |v| v["version"] = "99.0.0".into(), ALLOW);
+    refused(&o, "not supported");
+}
+
+/// Runs `bin args` with a time limit; `None` if it had to be killed.
+fn run_limited(args: &[&str], limit: Duration) -> Option<Output> {
+    let mut child = bin()
+        .args(args)
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let start = Instant::now();
+    loop {
+        if child.try_wait().unwrap().is_some() {
+            return Some(child.wait_with_output().unwrap());
+        }
+        if start.elapsed() > limit {
+            let _ = child.kill();
+            let _ = child.wait();
+            return None;
+        }
+        std::thread::sleep(Duration::from_millis(50));
+    }
+}
+
+#[test]
+fn d2_devices_and_fifos_are_capped() {
+    let d = scratch("d2");
+    let v = root().join("vectors/typical.json").display().to_string();
+    let o = run_limited(
+        &["check", "--vectors", &v, "--results", "/dev/zero"],
+        Duration::from_secs(60),
+    )
+    .expect("reading /dev/zero stops at the cap");
+    refused(&o, "larger than");
+    let fifo = d.join("fifo");
+    let c = std::ffi::CString::new(fifo.display().to_string()).unwrap();
+    // SAFETY: `c` is a valid NUL-terminated path.
+    assert_eq!(unsafe { libc::mkfifo(c.as_ptr(), 0o600) }, 0);
+    let f = fifo.display().to_string();
+    let o = run_limited(
+        &["check", "--vectors", &v, "--results", &f],
+        Duration::from_secs(30),
+    )
+    .expect("a FIFO without a writer does not block");
+    refused(&o, "no results");
+}
+
+#[test]
+fn d3_non_finite_values_are_errors_naming_the_pixel() {
+    let o = run(&[
+        "span",
+        "--method",
+        "duff",
+        "--na",
+        "0,0,1",
+        "--nb",
+        "1e-30,0,-1",
+        "--light",
+        "0.6,0,0.8",
+        "--steps",
+        "2",
+        "--normalize",
+    ]);
+    refused(&o, "pixel 1 of n = 2");
+    let o = run(&[
+        "span",
+        "--method",
+        "phong",
+        "--na",
+        "0,0,1",
+        "--nb",
+        "3e-4,0,-1",
+        "--light",
+        "0.6,0,0.8",
+        "--steps",
+        "2",
+        "--normalize",
+        "--scalar",
+        "f32",
+    ]);
+    refused(&o, "not finite");
+}
+
+#[test]
+fn d4_exact_normalize_takes_any_nonzero_finite_input() {
+    for (na, scalar) in [
+        ("1e-100,0,1e-100", "exact"),
+        ("1e-9,2e-9,3e-9", "exact"),
+        ("1e308,0,1", "f64"),
+    ] {
+        let o = run(&[
+            "span",
+            "--method",
+            "gouraud",
+            "--na",
+            na,
+            "--nb",
+            "0,0,1",
+            "--light",
+            "0,0,1",
+            "--steps",
+            "2",
+            "--normalize",
+            "--scalar",
+            scalar,
+        ]);
+        assert_eq!(code(&o), 0, "{na} {scalar}: {}", stderr(&o));
+    }
+}
+
+#[test]
+fn d5_no_digit_is_printed_that_is_not_known() {
+    let o = run(&[
+        "span",
+        "--method",
+        "phong",
+        "--na",
+        "0,0,1",
+        "--nb",
+        "0.6,0,0.8",
+        "--light",
+        "0.28,0.96,0",
+        "--steps",
+        "3",
+        "--scalar",
+        "exact",
+        "--digits",
+        "200",
+    ]);
+    refused(&o, "significant digits");
+    // Rational methods are exact: any number of digits.
+    let o = run(&[
+        "span",
+        "--method",
+        "corrected-euler",
+        "--na",
+        "0,0,1",
+        "--nb",
+        "0.6,0,0.8",
+        "--light",
+        "0.28,0.96,0",
+        "--steps",
+        "3",
+        "--scalar",
+        "exact",
+        "--digits",
+        "200",
+    ]);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+}
+
+#[test]
+fn d6_work_beyond_the_budget_needs_yes() {
+    let t = Instant::now();
+    let span = |extra: &[&str]| {
+        let mut a = vec![
+            "span",
+            "--method",
+            "phong",
+            "--na",
+            "0,0,1",
+            "--nb",
+            "0.6,0,0.8",
+            "--light",
+            "0,0,1",
+        ];
+        a.extend_from_slice(extra);
+        run(&a)
+    };
+    refused(
+        &span(&["--steps", "16777216", "--scalar", "exact"]),
+        "--yes",
+    );
+    refused(
+        &span(&[
+            "--steps", "4", "--scalar", "exact", "--digits", "10000", "--method", "gouraud",
+        ])
+        .clone(),
+        "",
+    );
+    let o = run(&[
+        "span",
+        "--method",
+        "angular",
+        "--na",
+        "0,0,1",
+        "--nb",
+        "0.6,0,0.8",
+        "--light",
+        "0,0,1",
+        "--steps",
+        "4",
+        "--scalar",
+        "exact",
+        "--table-size",
+        "16777216",
+    ]);
+    refused(&o, "--yes");
+    let long = format!("0.{},0,1", "1".repeat(100_000));
+    let o = run(&[
+        "span",
+        "--method",
+        "phong",
+        "--na",
+        &long,
+        "--nb",
+        "0,0,1",
+        "--light",
+        "0,0,1",
+        "--steps",
+        "2",
+        "--normalize",
+    ]);
+    refused(&o, "longer than");
+    let d = scratch("d6");
+    let out = d.display().to_string();
+    refused(
+        &run(&[
+            "reproduce",
+            "--size",
+            "4096x4096",
+            "--frames",
+            "1",
+            "--out",
+            &out,
+        ]),
+        "--yes",
+    );
+    refused(
+        &run(&[
+            "compare",
+            "--size",
+            "4096x4096",
+            "--frames",
+            "1",
+            "--out",
+            &out,
+        ]),
+        "--yes",
+    );
+    assert!(t.elapsed() < Duration::from_secs(60), "refusals are quick");
+}
+
+#[test]
+fn d6_float_spans_of_any_allowed_length_stream() {
+    // 2^20 pixels in f64: the JSON is written as it goes.
+    let o = run(&[
+        "span",
+        "--method",
+        "corrected-euler",
+        "--na",
+        "0,0,1",
+        "--nb",
+        "0.6,0,0.8",
+        "--light",
+        "0,0,1",
+        "--steps",
+        "1048576",
+    ]);
+    assert_eq!(code(&o), 0);
+    let v: Value = serde_json::from_slice(&o.stdout).expect("valid JSON");
+    assert_eq!(v["values"].as_array().unwrap().len(), 1_048_577);
+}
+
+#[test]
+fn d7_outputs_never_replace_a_users_file_or_follow_a_link() {
+    let d = scratch("d7");
+    let out = d.join("out");
+    std::fs::create_dir_all(&out).unwrap();
+    std::fs::write(out.join("tables.md"), "mine").unwrap();
+    std::fs::write(out.join(".write-test"), "mine too").unwrap();
+    let o = run(&["reproduce", "--frames", "1", "--out", out.to_str().unwrap()]);
+    refused(&o, "was not written by phong-approx");
+    assert_eq!(
+        std::fs::read_to_string(out.join("tables.md")).unwrap(),
+        "mine"
+    );
+    assert_eq!(
+        std::fs::read_to_string(out.join(".write-test")).unwrap(),
+        "mine too"
+    );
+    // With --force it writes, and then may write again.
+    let o = run(&[
+        "reproduce",
+        "--frames",
+        "1",
+        "--out",
+        out.to_str().unwrap(),
+        "--force",
+    ]);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let o = run(&["reproduce", "--frames", "1", "--out", out.to_str().unwrap()]);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    // A symbolic link among the outputs is not written through.
+    let target = d.join("precious.csv");
+    std::fs::write(&target, "precious").unwrap();
+    std::fs::remove_file(out.join("table1.csv")).unwrap();
+    std::os::unix::fs::symlink(&target, out.join("table1.csv")).unwrap();
+    let o = run(&[
+        "reproduce",
+        "--frames",
+        "1",
+        "--out",
+        out.to_str().unwrap(),
+        "--force",
+    ]);
+    refused(&o, "symbolic link");
+    assert_eq!(std::fs::read_to_string(&target).unwrap(), "precious");
+    // No temporary file is left behind by a refused run.
+    let leftovers: Vec<_> = std::fs::read_dir(&out)
+        .unwrap()
+        .filter_map(|e| e.ok())
+        .filter(|e| e.file_name().to_string_lossy().contains(".partial-"))
+        .collect();
+    assert!(leftovers.is_empty(), "{leftovers:?}");
+    // vectors: the CSV twins of my.json are the user's.
+    std::fs::write(d.join("my.csv"), "mine").unwrap();
+    let my = d.join("my.json");
+    let o = run(&["vectors", "--set", "paper", "--out", my.to_str().unwrap()]);
+    refused(&o, "my.csv");
+    assert_eq!(std::fs::read_to_string(d.join("my.csv")).unwrap(), "mine");
+    assert!(!my.exists(), "nothing is written when one name is refused");
+}
+
+#[test]
+fn d8_closed_pipe_and_full_disk_keep_the_exit_code_contract() {
+    let mut child = bin()
+        .args([
+            "span",
+            "--method",
+            "phong",
+            "--na",
+            "0,0,1",
+            "--nb",
+            "0.6,0,0.8",
+            "--light",
+            "0,0,1",
+            "--steps",
+            "200000",
+        ])
+        .stdout(Stdio::piped())
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    let mut head = [0u8; 10];
+    child.stdout.take().unwrap().read_exact(&mut head).unwrap();
+    // The reader is gone (its end of the pipe was dropped with it).
+    let o = child.wait_with_output().unwrap();
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    assert!(!stderr(&o).contains("panicked"));
+    let full = std::fs::OpenOptions::new()
+        .write(true)
+        .open("/dev/full")
+        .unwrap();
+    let v = root().join("vectors/typical.json").display().to_string();
+    let d = scratch("d8");
+    let r = write(&d, "r.csv", &results_csv(&typical()));
+    let o = bin()
+        .args(["check", "--vectors", &v, "--results", &r])
+        .stdout(full)
+        .output()
+        .unwrap();
+    refused(&o, "No space left");
+}
+
+#[test]
+fn d9_levels_tolerance_does_not_pass_absurd_values() {
+    let d = scratch("d9");
+    let v = typical();
+    let text = results_csv(&v)
+        .lines()
+        .enumerate()
+        .map(|(k, l)| {
+            if k == 0 {
+                l.to_string()
+            } else {
+                let (head, _) = l.rsplit_once(',').unwrap();
+                format!("{head},1e300")
+            }
+        })
+        .collect::<Vec<_>>()
+        .join("\n");
+    let r = write(&d, "r.csv", &text);
+    let vp = root().join("vectors/typical.json").display().to_string();
+    let o = run(&[
+        "check",
+        "--vectors",
+        &vp,
+        "--results",
+        &r,
+        "--tolerance",
+        "levels=0",
+    ]);
+    assert_eq!(code(&o), 1, "{}", stderr(&o));
+}
+
+#[test]
+fn d10_a_scene_with_no_visible_pixel_exits_2() {
+    let d = scratch("d10");
+    let o = run(&[
+        "reproduce",
+        "--frames",
+        "1",
+        "--radii",
+        "1e-30,1e-31",
+        "--out",
+        d.to_str().unwrap(),
+    ]);
+    refused(&o, "no visible pixel");
+}
+
+#[test]
+fn d11_echoed_input_is_cut_and_escaped() {
+    let d = scratch("d11");
+    let id = format!("\x1b[31m{}", "x".repeat(10_000_000));
+    let r = write(&d, "r.csv", &format!("case,pixel,value\n{id},0,0.5\n"));
+    let v = root().join("vectors/typical.json").display().to_string();
+    let o = run(&["check", "--vectors", &v, "--results", &r]);
+    refused(&o, "unknown case id");
+    let e = stderr(&o);
+    assert!(e.len() < 2000, "{} bytes of stderr", e.len());
+    assert!(!e.contains('\x1b'), "raw escape byte");
+}
+
+#[test]
+fn d12_csv_with_a_bom_and_quotes_is_read() {
+    let d = scratch("d12");
+    let v = typical();
+    let quoted: String = results_csv(&v)
+        .lines()
+        .map(|l| {
+            let f: Vec<&str> = l.split(',').collect();
+            format!("\"{}\",{},\"{}\"\r\n", f[0], f[1], f[2])
+        })
+        .collect();
+    let r = write(&d, "r.csv", &format!("\u{feff}{quoted}"));
+    let vp = root().join("vectors/typical.json").display().to_string();
+    let o = run(&["check", "--vectors", &vp, "--results", &r]);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    // Anything else is refused with the offending bytes escaped.
+    let r = write(&d, "bad.csv", "case,pixel,value\n\"typical-001,0,0.5\n");
+    let o = run(&["check", "--vectors", &vp, "--results", &r]);
+    assert_eq!(code(&o), 2);
+}
+
+#[test]
+fn d13_minor_options_are_checked() {
+    let span = |extra: &[&str]| {
+        let mut a = vec![
+            "span",
+            "--method",
+            "adaptive",
+            "--na",
+            "0,0,1",
+            "--nb",
+            "0.6,0,0.8",
+            "--light",
+            "0,0,1",
+            "--steps",
+            "4",
+        ];
+        a.extend_from_slice(extra);
+        run(&a)
+    };
+    refused(&span(&["--precision", "64"]), "--precision");
+    refused(&span(&["--kd", "-1"]), "--kd");
+    refused(&span(&["--kd", "1e309"]), "--kd");
+    let t = Instant::now();
+    let o = run(&["vectors", "--out", "/proc/phong-approx-test"]);
+    assert_eq!(code(&o), 2);
+    assert!(
+        t.elapsed() < Duration::from_secs(3),
+        "fails before computing"
+    );
+}
+
+/// The width and height of a PNG file.
+fn png_size(p: &Path) -> (u32, u32) {
+    let b = std::fs::read(p).unwrap();
+    let be = |i: usize| u32::from_be_bytes([b[i], b[i + 1], b[i + 2], b[i + 3]]);
+    (be(16), be(20))
+}
+
+#[test]
+fn d13_pictures_follow_size() {
+    let d = scratch("d13");
+    let o = run(&[
+        "reproduce",
+        "--frames",
+        "1",
+        "--size",
+        "500x300",
+        "--out",
+        d.to_str().unwrap(),
+    ]);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    // Scaled by a whole factor to at least 400 pixels on the shorter side.
+    assert_eq!(
+        png_size(&d.join("fig4_torus800_corrected_euler.png")),
+        (1000, 600)
+    );
+}

@@ -233,7 +233,7 @@ fn d3_non_finite_values_are_errors_naming_the_pixel() {
     let o = run(&[
         "span",
         "--method",
-        "phong",
+        "duff",
         "--na",
         "0,0,1",
         "--nb",

@@ -452,3 +452,24 @@ fn every_case_states_why_it_is_there() {
         .iter()
         .all(|c| c.comment.contains("60°") || c.comment.contains("Figures 1–3")));
 }
+
+#[test]
+fn published_digests_are_those_of_the_committed_files() {
+    use phong_approx::conformance::integrity::{published_set, sha256_hex, PUBLISHED};
+    for (set, digest) in PUBLISHED {
+        let bytes = std::fs::read(root().join(format!("vectors/{set}.json"))).unwrap();
+        assert_eq!(sha256_hex(&bytes), digest, "{set}");
+        assert_eq!(published_set(digest), Some(set));
+        // And the committed file is valid by every invariant.
+        phong_approx::conformance::integrity::validate(committed(set)).unwrap();
+    }
+    // The docs publish the same digests.
+    let doc = std::fs::read_to_string(root().join("docs/conformance.md")).unwrap();
+    for (set, digest) in PUBLISHED {
+        assert!(doc.contains(&format!("| `{set}` | `{digest}` |")), "{set}");
+    }
+    assert_eq!(
+        sha256_hex(b"abc"),
+        "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad"
+    );
+}

@@ -339,13 +339,48 @@ fn d6_work_beyond_the_budget_needs_yes() {
         &span(&["--steps", "16777216", "--scalar", "exact"]),
         "--yes",
     );
-    refused(
-        &span(&[
-            "--steps", "4", "--scalar", "exact", "--digits", "10000", "--method", "gouraud",
-        ])
-        .clone(),
-        "",
+    // A million rational values of 10,000 digits each would be 20 GB of output.
+    let o = run(&[
+        "span",
+        "--method",
+        "gouraud",
+        "--na",
+        "0,0,1",
+        "--nb",
+        "0.6,0,0.8",
+        "--light",
+        "0,0,1",
+        "--steps",
+        "1000000",
+        "--scalar",
+        "f64",
+        "--digits",
+        "10000",
+    ]);
+    assert_eq!(
+        code(&o),
+        0,
+        "floats print their shortest form: {}",
+        stderr(&o)
     );
+    let o = run(&[
+        "span",
+        "--method",
+        "gouraud",
+        "--na",
+        "0,0,1",
+        "--nb",
+        "0.6,0,0.8",
+        "--light",
+        "0,0,1",
+        "--steps",
+        "60000",
+        "--scalar",
+        "exact",
+        "--digits",
+        "10000",
+    ]);
+    refused(&o, "MiB");
     let o = run(&[
         "span",
         "--method",

@@ -93,9 +93,20 @@ pub fn run(a: &VectorsArgs) -> Result<(), CliError> {
                 .map(|s| names(s, &dir.join(format!("{s}.json"))))
                 .collect();
             out.check_all(all.iter().flatten().map(String::as_str))?;
+            // Generating the exact expectations of every set takes seconds.
+            let bar = indicatif::ProgressBar::new(sets.len() as u64);
+            bar.set_style(
+                indicatif::ProgressStyle::with_template(
+                    "{spinner} vector set {pos}/{len} {elapsed}",
+                )
+                .expect("template"),
+            );
+            bar.enable_steady_tick(std::time::Duration::from_millis(200));
             for s in sets {
                 write_set(s, &dir.join(format!("{s}.json")), &out)?;
+                bar.inc(1);
             }
+            bar.finish_and_clear();
             out.commit()?;
         }
     }

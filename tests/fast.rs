@@ -316,3 +316,28 @@ fn fast_bound_ratio_report() {
     report!(f32);
     report!(f64);
 }
+
+/// `phong_rsqrt_f32` against the exact Phong values on the inputs, within the derived
+/// bound of `Kernel::PhongRsqrt` (docs/float.md §12), on the edge, random and targeted
+/// spans.
+#[test]
+fn phong_rsqrt_within_its_derived_bound() {
+    let check = |c: &Case, s: &Span<Q>| -> Result<(), String> {
+        let Some(b) = fast_bound(Kernel::PhongRsqrt, s.n, q_min(s), f32::unit_roundoff()) else {
+            return Ok(());
+        };
+        let fast = FastSpan::<f32>::from_span(&s.cast::<f32>().unwrap());
+        let mut out = vec![0f32; s.len()];
+        phong_rsqrt_f32(&fast, &mut out);
+        let exact = Method::Phong.values(s).unwrap();
+        for i in 0..s.len() {
+            let e = err(&out[i], &exact[i]);
+            ensure(e <= b, || {
+                format!("rsqrt Phong pixel {i}: {e:e} > {b:e} ({})", c.why)
+            })?;
+        }
+        Ok(())
+    };
+    for_all_spans(64, &check);
+    for_targeted_spans(16, &check);
+}

@@ -338,6 +338,6 @@ fn phong_rsqrt_within_its_derived_bound() {
         }
         Ok(())
     };
-    for_all_spans(64, &check);
-    for_targeted_spans(16, &check);
+    for_all_spans(64, check);
+    for_targeted_spans(16, check);
 }

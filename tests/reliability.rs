@@ -445,6 +445,8 @@ fn d6_work_beyond_the_budget_needs_yes() {
 }
 
 #[test]
+// The child is reaped by `wait4` (for its resource usage), not by `Child::wait`.
+#[allow(clippy::zombie_processes)]
 fn d6_float_spans_of_any_allowed_length_stream() {
     // 2^22 pixels in f64: the JSON is written as it goes, so the process holds little
     // more than the values (it held about 270 bytes per pixel when the whole text was

@@ -67,6 +67,12 @@ mod coef {
     pub const FAST_Q: f64 = 91.0;
 }
 
+/// `n` as a float where the derivations hold (`1 ≤ n`, `n·u ≤` [`MAX_NU`]).
+fn in_range(n: u32, u: f64) -> Option<f64> {
+    let nf = f64::from(n);
+    (n > 0 && u > 0.0 && nf * u <= MAX_NU).then_some(nf)
+}
+
 fn linear((alpha, beta): (f64, f64), n: f64) -> f64 {
     alpha * n + beta
 }
@@ -183,10 +189,7 @@ fn method_bound(
     edges: Option<(f64, f64)>,
     u: f64,
 ) -> Option<f64> {
-    let nf = f64::from(n);
-    if n == 0 || u.is_nan() || u <= 0.0 || nf * u > MAX_NU {
-        return None;
-    }
+    let nf = in_range(n, u)?;
     let lin = |c: (f64, f64)| Some(linear(c, nf) * u);
     match method {
         Method::Gouraud => lin(coef::GOURAUD),
@@ -274,10 +277,7 @@ fn fast_method_bound(
     edges: Option<(f64, f64)>,
     u: f64,
 ) -> Option<f64> {
-    let nf = f64::from(n);
-    if n == 0 || u.is_nan() || u <= 0.0 || nf * u > MAX_NU {
-        return None;
-    }
+    let nf = in_range(n, u)?;
     let lin = |c: (f64, f64)| Some(linear(c, nf) * u);
     let fast_phong = |extra: f64| ratio_bound(coef::FAST_P, coef::FAST_Q, q_min, extra, u);
     match kernel {

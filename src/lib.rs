@@ -76,6 +76,7 @@ pub mod method;
 pub mod parse;
 pub mod phong;
 pub mod quantize;
+#[cfg(feature = "harness")]
 pub mod raster;
 pub mod reference;
 pub mod related;

@@ -341,3 +341,26 @@ fn phong_rsqrt_within_its_derived_bound() {
     for_all_spans(64, check);
     for_targeted_spans(16, check);
 }
+
+/// `FastSpan::delta` (the closed form of eq. 24's δ that `FastSpan::adaptive` decides
+/// with) is the reference δ of `adaptive::decide` on the exact inputs, within `10u`.
+#[test]
+fn fast_delta_is_the_reference_delta() {
+    macro_rules! check {
+        ($f:ident) => {{
+            let check = |c: &Case, s: &Span<Q>| -> Result<(), String> {
+                let fast = FastSpan::<$f>::from_span(&s.cast::<$f>().unwrap());
+                let exact = phong_approx::adaptive::decide(s, &Q::from_integer(1.into())).delta;
+                let u = <$f as Scalar>::unit_roundoff();
+                let e = err(&fast.delta(), &exact);
+                ensure(e <= 10.0 * u, || {
+                    format!("{} δ off by {:.1}u ({})", stringify!($f), e / u, c.why)
+                })
+            };
+            for_all_spans(64, check);
+            for_targeted_spans(16, check);
+        }};
+    }
+    check!(f32);
+    check!(f64);
+}

@@ -52,26 +52,8 @@ fn main() -> ExitCode {
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("phong-approx: {}", one_line(&e.to_string()));
+            eprintln!("phong-approx: {}", cli::one_line(&e.to_string()));
             ExitCode::from(e.code())
         }
     }
-}
-
-/// A message as one safe line: control characters escaped, at most 1000 characters.
-/// (Echoed input is already cut to 80 characters where it is quoted.)
-fn one_line(s: &str) -> String {
-    let mut out = String::new();
-    for (k, c) in s.chars().enumerate() {
-        if k == 1000 {
-            out.push('…');
-            break;
-        }
-        if c.is_control() {
-            out.extend(c.escape_unicode());
-        } else {
-            out.push(c);
-        }
-    }
-    out
 }

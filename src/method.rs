@@ -127,6 +127,7 @@ impl fmt::Display for Method {
 /// The error of parsing a method name.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 #[error("unknown method '{0}' (expected one of: phong, duff, symmetric-phong, gouraud, euler, corrected-euler, adaptive, angular)")]
+/// (The name as given, cut to 80 characters and escaped.)
 pub struct UnknownMethod(pub String);
 
 impl FromStr for Method {
@@ -141,7 +142,7 @@ impl FromStr for Method {
             "corrected-euler" => Method::CorrectedEuler,
             "adaptive" => Method::Adaptive,
             "angular" => Method::Angular,
-            other => return Err(UnknownMethod(other.to_string())),
+            other => return Err(UnknownMethod(crate::conformance::shown(other))),
         })
     }
 }

@@ -137,7 +137,7 @@ pub fn clap_error(e: clap::Error) -> ExitCode {
                 .collect();
             let line = line.join(" ");
             let line = line.strip_prefix("error: ").unwrap_or(&line);
-            eprintln!("phong-approx: {line}");
+            eprintln!("phong-approx: {}", one_line(line));
             ExitCode::from(2)
         }
     }
@@ -202,4 +202,22 @@ fn open_nonblocking(path: &str) -> std::io::Result<std::fs::File> {
     {
         std::fs::File::open(path)
     }
+}
+
+/// A message as one safe line: control characters escaped, at most 1000 characters.
+/// (Echoed input is already cut to 80 characters where it is quoted.)
+pub fn one_line(s: &str) -> String {
+    let mut out = String::new();
+    for (k, c) in s.chars().enumerate() {
+        if k == 1000 {
+            out.push('…');
+            break;
+        }
+        if c.is_control() {
+            out.extend(c.escape_unicode());
+        } else {
+            out.push(c);
+        }
+    }
+    out
 }

@@ -340,36 +340,10 @@ fn error_bound(r: &Request, u: f64) -> Option<f64> {
     phong_approx::tolerance::span_bound(r.method, &shape, u)
 }
 
-/// Refuses `--digits` beyond what is known of exact values that are not exact:
-/// square roots, `acos` and `cos` are computed to 2^-256 (so `p/√q` to
-/// `2^-256/√q_min` and the angular values to `2^-254`), and `--normalize` makes the
-/// inputs unit only to 2^-240. A value's digits are printed only if the value's lower
-/// and upper ends (±2^-b, with `b` the bits known, less a margin) print the same.
-fn check_digits(
-    r: &Request,
-    span: &Span<BigRational>,
-    values: &[BigRational],
-) -> Result<(), CliError> {
+/// Refuses `--digits` beyond what is known of values that are not exact: a value's
+/// digits are printed only if its lower and upper ends (±2^-bits) print the same.
+fn check_digits<T: Real>(r: &Request, values: &[T], bits: i64) -> Result<(), CliError> {
     use num_traits::One;
-    if r.method.is_rational() && !r.normalize {
-        return Ok(());
-    }
-    let mut bits: i64 = 250;
-    if matches!(
-        r.method,
-        Method::Phong | Method::Duff | Method::SymmetricPhong
-    ) {
-        // 1/√q_min ≤ 2^k.
-        let q = span.q_min();
-        let k = (i64::try_from(q.denom().bits()).unwrap_or(i64::MAX)
-            - i64::try_from(q.numer().bits()).unwrap_or(0))
-            / 2
-            + 2;
-        bits -= k.max(0);
-    }
-    if r.normalize {
-        bits = bits.min(180);
-    }
     if bits < 4 {
         return Err(CliError::arg(
             "--digits",
@@ -381,14 +355,15 @@ fn check_digits(
         num_bigint::BigInt::one() << (bits as usize),
     );
     for (i, v) in values.iter().enumerate() {
-        let lo = (v.clone() - e.clone()).to_decimal(r.digits);
-        let hi = (v.clone() + e.clone()).to_decimal(r.digits);
-        if lo != hi {
+        // A value of exactly 0 comes from an exact p = 0 (0/√q), and prints as "0".
+        let Some(v) = v.to_rational().filter(|v| !num_traits::Zero::is_zero(v)) else {
+            continue;
+        };
+        let (lo, hi) = (v.clone() - e.clone(), v.clone() + e.clone());
+        if lo.to_decimal(r.digits) != hi.to_decimal(r.digits) {
             let known = (1..r.digits)
                 .rev()
-                .find(|&d| {
-                    (v.clone() - e.clone()).to_decimal(d) == (v.clone() + e.clone()).to_decimal(d)
-                })
+                .find(|&d| lo.to_decimal(d) == hi.to_decimal(d))
                 .unwrap_or(0);
             return Err(CliError::arg(
                 "--digits",
@@ -401,9 +376,60 @@ fn check_digits(
     Ok(())
 }
 
+/// `⌈log2(1/q_min)⌉` (0 when `q_min ≥ 1`), from the span's own `q_min`.
+fn q_bits<T: Real>(span: &Span<T>) -> i64 {
+    let q = span.q_min().to_f64();
+    if q >= 1.0 {
+        0
+    } else if q > 0.0 {
+        (-q.log2()).ceil() as i64
+    } else {
+        i64::MAX / 4
+    }
+}
+
+/// The bits known of the exact values: square roots, `acos` and `cos` are computed to
+/// 2^-256, so `p/√q` to `2^-256/√q_min` and the angular values to `2^-254`;
+/// `--normalize` makes the inputs unit only to 2^-240. Rational methods on exact
+/// inputs are exact (`None`: every digit is known).
+fn exact_bits(r: &Request, span: &Span<BigRational>) -> Option<i64> {
+    if r.method.is_rational() && !r.normalize {
+        return None;
+    }
+    let mut bits: i64 = 250;
+    if matches!(
+        r.method,
+        Method::Phong | Method::Duff | Method::SymmetricPhong
+    ) {
+        bits -= q_bits(span) / 2 + 2;
+    }
+    if r.normalize {
+        bits = bits.min(180);
+    }
+    Some(bits)
+}
+
+/// The bits known of MPFR values at `precision` bits: every operation is correctly
+/// rounded, and the recurrences' rounding grows at most like `n²` steps of the
+/// unit roundoff (docs/float.md §6–8), divided by `q_min` for the methods that
+/// normalize; 8 bits of margin.
+fn mpfr_bits(r: &Request, precision: u32, q_bits: i64) -> i64 {
+    let n_bits = 64 - u64::from(r.n + 1).leading_zeros() as i64;
+    let mut bits = i64::from(precision) - 8 - 2 * n_bits;
+    if matches!(
+        r.method,
+        Method::Phong | Method::Duff | Method::SymmetricPhong
+    ) {
+        bits -= q_bits;
+    }
+    bits
+}
+
 fn run_exact(r: &Request) -> Result<Outcome, CliError> {
     let (span, values, decision) = compute::<BigRational>(r)?;
-    check_digits(r, &span, &values)?;
+    if let Some(bits) = exact_bits(r, &span) {
+        check_digits(r, &values, bits)?;
+    }
     // Phong-valued methods: decide the exact level of p/√q with rationals only.
     let levels = match r.method {
         Method::Phong | Method::Duff | Method::SymmetricPhong if !r.normalize => Some(
@@ -423,7 +449,11 @@ fn run_exact(r: &Request) -> Result<Outcome, CliError> {
 #[cfg(feature = "mpfr")]
 fn run_mpfr(r: &Request, precision: u32) -> Result<Outcome, CliError> {
     use phong_approx::reference::mpfr::{with_precision, Mpfr};
-    with_precision(precision, || run_typed::<Mpfr>(r))
+    with_precision(precision, || {
+        let (span, values, decision) = compute::<Mpfr>(r)?;
+        check_digits(r, &values, mpfr_bits(r, precision, q_bits(&span)))?;
+        Ok(outcome(r, &values, decision, None))
+    })
 }
 
 #[cfg(not(feature = "mpfr"))]

@@ -18,11 +18,13 @@ use crate::span::Span;
 ///
 /// # Errors
 /// [`SpanError::OutputLength`] if `out.len() ≠ n + 1`; [`SpanError::NotFiniteValue`]
-/// where a float `q` rounds to zero (edge normals nearly opposite).
+/// where a float `q` rounds to zero (edge normals nearly opposite);
+/// [`SpanError::ZeroNormal`] at the middle pixel of a span with `N_b = −N_a`, even `n`.
 ///
 /// Claims: `eq_5_7_duff_computes_phong` (proofs/Duff.v; tests/claims.rs).
 pub fn shade<T: Real>(span: &Span<T>, out: &mut [T]) -> Result<(), SpanError> {
     span.check_output(out)?;
+    span.check_nonzero_normal()?;
     let mut pq = Recurrence::new(span);
     for o in out.iter_mut() {
         *o = pq.p.clone() / pq.q.sqrt();

@@ -51,9 +51,19 @@ pub enum SpanError {
         /// The tolerance on `|length² − 1|`, rounded to `f64`.
         tolerance: f64,
     },
-    /// `N_b = −N_a`: the interpolated normal passes through zero.
-    #[error("Na and Nb are opposite: the interpolated normal passes through zero")]
+    /// `N_b = −N_a` for a method that is undefined there (spherical interpolation has
+    /// no unique great circle, binary interpolation bisects `N_a + N_b = 0`).
+    #[error("Na and Nb are opposite: this method is undefined for opposite normals (there is no unique arc between them)")]
     Opposite,
+    /// The interpolated normal is zero at this pixel (`N_b = −N_a` and `i = n/2`), where
+    /// `N·L/|N|` is undefined; the methods that normalize refuse it.
+    #[error("pixel {pixel} of n = {n}: the interpolated normal is zero there (Nb = −Na), so N·L/|N| is undefined")]
+    ZeroNormal {
+        /// The pixel, `n/2`.
+        pixel: usize,
+        /// The span's `n`.
+        n: u32,
+    },
     /// `n = 0`: a span needs at least one step.
     #[error("n must be at least 1 (got 0)")]
     ZeroSteps,

@@ -15,11 +15,13 @@ use crate::span::Span;
 ///
 /// # Errors
 /// [`SpanError::OutputLength`] if `out.len() ≠ n + 1`; [`SpanError::NotFiniteValue`]
-/// where a float `q` rounds to zero (edge normals nearly opposite).
+/// where a float `q` rounds to zero (edge normals nearly opposite);
+/// [`SpanError::ZeroNormal`] at the middle pixel of a span with `N_b = −N_a`, even `n`.
 ///
 /// Claims: `eq_4_phong_exact_on_edges` (proofs/Span.v; tests/claims.rs).
 pub fn shade<T: Real>(span: &Span<T>, out: &mut [T]) -> Result<(), SpanError> {
     span.check_output(out)?;
+    span.check_nonzero_normal()?;
     for (i, o) in out.iter_mut().enumerate() {
         let normal = span.normal_at(i as u32);
         *o = normal.dot(&span.l) / normal.length_squared().sqrt();

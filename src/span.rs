@@ -132,7 +132,9 @@ impl<T: Scalar> Span<T> {
     ///
     /// # Errors
     /// [`SpanError`] naming the input that is non-finite, zero, not unit, or `n = 0`,
-    /// or [`SpanError::Opposite`] when `N_b = −N_a`.
+    /// (`N_b = −N_a` is accepted: every method whose values are defined on such a span
+    /// computes them; the methods that normalize refuse the pixel where the
+    /// interpolated normal is zero, [`Span::check_nonzero_normal`].)
     pub fn new(na: Vec3<T>, nb: Vec3<T>, l: Vec3<T>, n: u32) -> Result<Self, SpanError> {
         Self::with_tolerance(na, nb, l, n, &T::unit_tolerance())
     }
@@ -159,9 +161,6 @@ impl<T: Scalar> Span<T> {
                 max: MAX_STEPS,
                 got: n,
             });
-        }
-        if na.add(&nb).length_squared().is_zero() {
-            return Err(SpanError::Opposite);
         }
         Ok(Self::setup(na, nb, l, n))
     }
@@ -272,6 +271,27 @@ impl<T: Scalar> Span<T> {
     /// The interpolated normal `N(i) = N_a + i·k` (§2.1).
     pub fn normal_at(&self, i: u32) -> Vec3<T> {
         self.na.add(&self.k.scale(&T::from_i64(i64::from(i))))
+    }
+
+    /// `true` when `N_b = −N_a` (exactly, in `T`).
+    pub fn is_opposite(&self) -> bool {
+        self.na.add(&self.nb).length_squared().is_zero()
+    }
+
+    /// For the methods that divide by `|N(i)|`: the interpolated normal is zero only
+    /// when `N_b = −N_a`, at the middle pixel `n/2` of an even `n`.
+    ///
+    /// # Errors
+    /// [`SpanError::ZeroNormal`] naming that pixel.
+    pub fn check_nonzero_normal(&self) -> Result<(), SpanError> {
+        if self.is_opposite() && self.n % 2 == 0 {
+            Err(SpanError::ZeroNormal {
+                pixel: self.n as usize / 2,
+                n: self.n,
+            })
+        } else {
+            Ok(())
+        }
     }
 
     /// Checks that every value of `out` is finite (for the methods that divide by

@@ -19,11 +19,13 @@ use crate::span::Span;
 ///
 /// # Errors
 /// [`SpanError::OutputLength`] if `out.len() ≠ n + 1`; [`SpanError::NotFiniteValue`]
-/// where a float `q` rounds to zero (edge normals nearly opposite).
+/// where a float `q` rounds to zero (edge normals nearly opposite);
+/// [`SpanError::ZeroNormal`] at the middle pixel of a span with `N_b = −N_a`, even `n`.
 ///
 /// Claims: `sec_4_q_is_symmetric`, `sec_4_symmetric_phong_equals_phong`, `sec_4_duff_q_is_symmetric` (proofs/Symmetry.v; tests/claims.rs).
 pub fn shade<T: Real>(span: &Span<T>, out: &mut [T]) -> Result<(), SpanError> {
     span.check_output(out)?;
+    span.check_nonzero_normal()?;
     let n = span.n as usize;
     let half = n / 2;
     let mut root = Vec::with_capacity(half + 1);

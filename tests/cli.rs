@@ -402,7 +402,11 @@ fn bad_input_gets_one_line_and_exit_2() {
     bad(&[("--light", "0,0,0")], "--light: the vector is zero");
     bad(&[("--na", "1,1,1")], "--na: not a unit vector");
     bad(&[("--na", "1,1,1")], "--normalize");
-    bad(&[("--nb", "0,-3/5,-4/5")], "Nb = −Na");
+    // Nb = −Na: Phong is undefined at the middle pixel of an even n, and says which.
+    bad(
+        &[("--nb", "0,-3/5,-4/5"), ("--method", "phong")],
+        "pixel 2 of n = 4: the interpolated normal is zero",
+    );
     bad(&[("--steps", "0")], "--steps: n must be between 1");
     bad(&[("--steps", "-3")], "--steps: '-3' is not a whole number");
     bad(
@@ -464,4 +468,66 @@ fn zero_is_printed_plainly() {
     ]);
     assert_eq!(v["values"][0], "0");
     assert!(Q::zero() < dec(v["values"][1].as_str().unwrap()));
+}
+
+/// Nb = −Na: every method computes what is defined (the example: Gouraud from
+/// (0, 0, 1) to (0, 0, −1) in 5 steps, exactly), and Phong with an odd n.
+#[test]
+fn opposite_normals_are_computed_where_defined() {
+    let run = |method: &str, steps: &str| {
+        bin()
+            .args([
+                "span",
+                "--method",
+                method,
+                "--na=0,0,1",
+                "--nb=0,0,-1",
+                "--light=0,0,1",
+                "--steps",
+                steps,
+                "--scalar",
+                "exact",
+            ])
+            .output()
+            .unwrap()
+    };
+    let out = run("gouraud", "5");
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let v: serde_json::Value = serde_json::from_slice(&out.stdout).unwrap();
+    let fractions: Vec<&str> = v["fractions"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_str().unwrap())
+        .collect();
+    assert_eq!(fractions, ["1", "3/5", "1/5", "-1/5", "-3/5", "-1"]);
+    for m in [
+        "euler",
+        "corrected-euler",
+        "adaptive",
+        "angular",
+        "phong",
+        "duff",
+        "symmetric-phong",
+    ] {
+        let out = run(m, "5");
+        assert!(
+            out.status.success(),
+            "{m}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+    }
+    // Phong on an odd n: N·L/|N| is +1 before the middle and −1 after it.
+    let v: serde_json::Value = serde_json::from_slice(&run("phong", "5").stdout).unwrap();
+    let levels: Vec<u64> = v["levels"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_u64().unwrap())
+        .collect();
+    assert_eq!(levels, [255, 255, 255, 0, 0, 0]);
 }

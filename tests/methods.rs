@@ -60,10 +60,50 @@ fn bad_spans_get_typed_errors() {
             got: (1 << 24) + 1
         }
     );
-    assert_eq!(
-        Span::new(tilt.clone(), v32(-0.6, 0.0, -0.8), up.clone(), 4).unwrap_err(),
-        SpanError::Opposite
-    );
+    // Nb = −Na is a span: the methods that normalize refuse the middle pixel of an
+    // even n by name, the related methods that need an arc refuse the span.
+    let opposite = Span::new(tilt.clone(), v32(-0.6, 0.0, -0.8), up.clone(), 4).unwrap();
+    assert!(opposite.is_opposite());
+    for m in [Method::Phong, Method::Duff, Method::SymmetricPhong] {
+        assert_eq!(
+            m.values(&opposite).unwrap_err(),
+            SpanError::ZeroNormal { pixel: 2, n: 4 },
+            "{m}"
+        );
+    }
+    for m in [
+        Method::Gouraud,
+        Method::Euler,
+        Method::CorrectedEuler,
+        Method::Adaptive,
+        Method::Angular,
+    ] {
+        let v = m.values(&opposite).unwrap();
+        assert!(v.iter().all(|x| x.is_finite()), "{m}");
+    }
+    let odd = Span::new(tilt.clone(), v32(-0.6, 0.0, -0.8), up.clone(), 5).unwrap();
+    assert!(Method::Phong
+        .values(&odd)
+        .unwrap()
+        .iter()
+        .all(|x| x.is_finite()));
+    let mut out = vec![0f32; 5];
+    for (name, r) in [
+        (
+            "spherical",
+            phong_approx::related::spherical::shade(&opposite, &mut out),
+        ),
+        (
+            "binary",
+            phong_approx::related::binary::shade(&opposite, &mut out),
+        ),
+        (
+            "bishop-weimer",
+            phong_approx::related::bishop_weimer::shade(&opposite, &mut out),
+        ),
+    ] {
+        assert_eq!(r.unwrap_err(), SpanError::Opposite, "{name}");
+    }
     // Exact: a decimal normal that is not exactly unit is refused, and accepted after
     // normalizing.
     let na = Vec3::new(q(267, 1000), q(534, 1000), q(802, 1000));

@@ -245,7 +245,10 @@ fn span_error(e: SpanError, normalize: bool) -> CliError {
                 if normalize { "" } else { "; pass --normalize to normalize it" }
             ),
         ),
-        SpanError::Opposite => CliError::arg("--nb", "Nb = −Na: the interpolated normal passes through zero"),
+        SpanError::Opposite => CliError::arg(
+            "--nb",
+            "Nb = −Na: this method is undefined for opposite normals (no unique arc between them)",
+        ),
         SpanError::ZeroSteps => CliError::arg("--steps", "n must be at least 1"),
         SpanError::TooManySteps { max, got } => {
             CliError::arg("--steps", format!("n must be at most {max} (got {got})"))

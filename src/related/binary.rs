@@ -61,6 +61,9 @@ fn cos_between<T: Real>(span: &Span<T>, i: u32, j: u32) -> T {
 /// [`SpanError::OutputLength`] if `out.len() ≠ n + 1`.
 pub fn shade<T: Real>(span: &Span<T>, out: &mut [T]) -> Result<(), SpanError> {
     span.check_output(out)?;
+    if span.is_opposite() {
+        return Err(SpanError::Opposite);
+    }
     let bounds = segments(span.n);
     out[0] = phong_at(span, 0);
     let half = T::one() / T::from_i64(2);

@@ -145,10 +145,14 @@ impl<T: Real> Taylor<T> {
 /// Shades `span` with the expansion about its middle pixel `n/2`.
 ///
 /// # Errors
-/// [`SpanError::OutputLength`] if `out.len() ≠ n + 1`; [`SpanError::Parameter`] if
-/// the middle normal is zero (cannot happen for a span built by [`Span::new`]).
+/// [`SpanError::OutputLength`] if `out.len() ≠ n + 1`; [`SpanError::Opposite`] if
+/// `N_b = −N_a` (the middle normal, the expansion's centre, is zero);
+/// [`SpanError::Parameter`] if the middle normal is zero otherwise (in floats).
 pub fn shade<T: Real>(span: &Span<T>, out: &mut [T]) -> Result<(), SpanError> {
     span.check_output(out)?;
+    if span.is_opposite() {
+        return Err(SpanError::Opposite);
+    }
     let x_c = span.n_s.clone() / T::from_i64(2);
     let taylor = Taylor::from_span_at(span, &x_c)?;
     taylor.shade_row(&-x_c, &T::zero(), out);

@@ -52,6 +52,9 @@ pub fn setup<T: Real>(span: &Span<T>) -> (T, T, T, T) {
 /// [`SpanError::OutputLength`] if `out.len() ≠ n + 1`.
 pub fn shade<T: Real>(span: &Span<T>, out: &mut [T]) -> Result<(), SpanError> {
     span.check_output(out)?;
+    if span.is_opposite() {
+        return Err(SpanError::Opposite);
+    }
     let (u_l, w_l, cos_d, sin_d) = setup(span);
     let two_cos = T::from_i64(2) * cos_d.clone();
     let mut prev = u_l.clone();

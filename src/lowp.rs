@@ -5,7 +5,7 @@
 //! All three implement [`Scalar`] and [`Real`], so every generic method runs on them
 //! unchanged. What the arithmetic is:
 //!
-//! - [`f16`]: each of `+ − × ÷ √` is the correctly rounded binary16 result (the `half`
+//! - [`f16`](struct@f16): each of `+ − × ÷ √` is the correctly rounded binary16 result (the `half`
 //!   crate computes in `f32` and rounds once; `f32` carries more than twice binary16's
 //!   11 significant bits plus two, so the double rounding is innocuous). `acos` and
 //!   `cos` are `f32`'s, rounded to binary16.

@@ -6,7 +6,7 @@
 //!   coordinates are taken relative to each triangle's centroid in `f64` first, as an
 //!   integer rasterizer would), against per-pixel Phong in `f64` and against the same
 //!   method in `f64`.
-//! - [`longest_spans`]: per span method, the longest span before the recurrence's
+//! - [`span_errors`] and [`longest`]: per span method, the longest span before the recurrence's
 //!   accumulated error exceeds one 8-bit level: the set-up computed in `f64` and
 //!   rounded to the precision ([`Span::cast`]), the steps in the precision.
 
@@ -189,7 +189,7 @@ pub const SPAN_SHADERS: [Shader; 12] = [
     Shader::BishopWeimer,
 ];
 
-/// The span lengths tried by [`longest_spans`].
+/// The span lengths tried by [`span_errors`] and [`longest`].
 pub const SPAN_LENGTHS: [u32; 13] = [1, 2, 4, 8, 16, 32, 64, 128, 256, 512, 1024, 2048, 4096];
 
 /// Shades `span` with span shader `sh`.
@@ -218,7 +218,7 @@ pub fn shade_span<T: Real>(
     out.iter().all(|v| v.is_finite()).then_some(())
 }
 
-/// The test spans of [`longest_spans`]: `count` unit normal pairs 5° to 45° apart,
+/// The test spans of [`span_errors`] and [`longest`]: `count` unit normal pairs 5° to 45° apart,
 /// lights within 60° of `N_a`, from a fixed generator (reproducible).
 pub fn test_directions(count: usize) -> Vec<(Vec3<f64>, Vec3<f64>, Vec3<f64>)> {
     let mut state = 0x2545_f491_4f6c_dd1du64;

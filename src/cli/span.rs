@@ -416,6 +416,7 @@ fn exact_bits(r: &Request, span: &Span<BigRational>) -> Option<i64> {
 /// rounded, and the recurrences' rounding grows at most like `n²` steps of the
 /// unit roundoff (docs/float.md §6–8), divided by `q_min` for the methods that
 /// normalize; 8 bits of margin.
+#[cfg(feature = "mpfr")]
 fn mpfr_bits(r: &Request, precision: u32, q_bits: i64) -> i64 {
     let n_bits = 64 - u64::from(r.n + 1).leading_zeros() as i64;
     let mut bits = i64::from(precision) - 8 - 2 * n_bits;

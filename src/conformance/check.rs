@@ -424,17 +424,9 @@ pub fn check(
 
 /// The shape of a case's span (its exact inputs re-read), for the bounds.
 fn case_shape(c: &Case) -> Option<crate::tolerance::Shape> {
-    use crate::parse::parse_rational;
-    let v = |x: &super::vectors::VectorInput| -> Option<crate::Vec3<crate::BigRational>> {
-        let [a, b, z] = &x.exact;
-        Some(crate::Vec3::new(
-            parse_rational(a).ok()?,
-            parse_rational(b).ok()?,
-            parse_rational(z).ok()?,
-        ))
-    };
-    let span = crate::Span::new(v(&c.na)?, v(&c.nb)?, v(&c.l)?, c.n).ok()?;
-    Some(crate::tolerance::Shape::of(&span))
+    super::integrity::case_span(c)
+        .ok()
+        .map(|span| crate::tolerance::Shape::of(&span))
 }
 
 fn case_report(

@@ -177,17 +177,29 @@ pub fn for_all_spans(cases: u32, check: impl Fn(&Case, &Span<Q>) -> Result<(), S
             panic!("edge case '{}' failed: {e}\ninputs: {c:?}", c.why);
         }
     }
+    search(arb_case(), cases, "proptest-regressions/claims.txt", &check);
+}
+
+/// A check of one span: `Err` with a message when it fails.
+type SpanCheck<'a> = dyn Fn(&Case, &Span<Q>) -> Result<(), String> + 'a;
+
+/// Runs `check` on `cases` random spans of `strategy` (failures kept in `file`, so
+/// they run first next time); a failure panics with the shrunk case.
+fn search(
+    strategy: impl Strategy<Value = Case>,
+    cases: u32,
+    file: &'static str,
+    check: &SpanCheck<'_>,
+) {
     let config = ProptestConfig {
         cases,
         failure_persistence: Some(Box::new(
-            proptest::test_runner::FileFailurePersistence::Direct(
-                "proptest-regressions/claims.txt",
-            ),
+            proptest::test_runner::FileFailurePersistence::Direct(file),
         )),
         ..ProptestConfig::default()
     };
     let mut runner = proptest::test_runner::TestRunner::new(config);
-    let result = runner.run(&arb_case(), |c| {
+    let result = runner.run(&strategy, |c| {
         let Some(span) = c.span() else {
             return Ok(());
         };
@@ -299,23 +311,10 @@ pub fn for_targeted_spans(cases: u32, check: impl Fn(&Case, &Span<Q>) -> Result<
             panic!("targeted case '{}' failed: {e}\ninputs: {c:?}", c.why);
         }
     }
-    let config = ProptestConfig {
+    search(
+        arb_targeted(),
         cases,
-        failure_persistence: Some(Box::new(
-            proptest::test_runner::FileFailurePersistence::Direct(
-                "proptest-regressions/targeted.txt",
-            ),
-        )),
-        ..ProptestConfig::default()
-    };
-    let mut runner = proptest::test_runner::TestRunner::new(config);
-    let result = runner.run(&arb_targeted(), |c| {
-        let Some(span) = c.span() else {
-            return Ok(());
-        };
-        check(&c, &span).map_err(|e| TestCaseError::fail(format!("{e}\ninputs: {c:?}")))
-    });
-    if let Err(e) = result {
-        panic!("{e}");
-    }
+        "proptest-regressions/targeted.txt",
+        &check,
+    );
 }

@@ -1,10 +1,24 @@
-//! The span methods by name, so callers (the CLI, the rasterizer, the tests) can
-//! iterate over them.
+//! The catalogue of span methods: one list, and per method everything the rest of the
+//! crate needs to know — its name (which parses back), source, equations, what it asks
+//! of the scalar, whether its value is Phong's `p/√q`, its float error bound, and how
+//! to run it. The CLI (`span`, `check`), the conformance vectors, the tolerances and
+//! the torus harness all read it from here.
+//!
+//! Adding a span method: its own file with `shade(span, out)`, then one entry here — a
+//! variant, its arm in [`Method::info`] and in [`Method::run`], and its place in
+//! [`Method::ALL`] (ARCHITECTURE.md, "Adding a span method").
 
-use crate::adaptive;
+use crate::adaptive::{self, Decision};
+use crate::angular::CosTable;
 use crate::error::SpanError;
-use crate::scalar::Real;
+use crate::reference::level::{level_of_rational, level_within, phong_level_exact};
+use crate::related::{binary, bishop_weimer, spherical};
+use crate::scalar::{Real, Scalar};
 use crate::span::Span;
+use crate::tolerance::{self, BoundFn};
+use crate::BigRational;
+use num_traits::One;
+use std::borrow::Cow;
 use std::fmt;
 use std::str::FromStr;
 
@@ -17,23 +31,149 @@ pub enum Method {
     Duff,
     /// [`crate::symmetric_phong`]: half the square roots (§4).
     SymmetricPhong,
-    /// [`crate::gouraud`]: linear between the exact edge values (fence shading).
+    /// [`crate::gouraud`]: linear between the exact edge values (Gouraud along the
+    /// span, Behrens' fence shading).
     Gouraud,
     /// [`crate::euler`]: eqs. 12–13.
     Euler,
     /// [`crate::corrected_euler`]: eqs. 16–17.
     CorrectedEuler,
-    /// [`crate::adaptive`]: Gouraud or corrected Euler by eqs. 23–24, with `K_d = 1`.
+    /// [`crate::adaptive`]: Gouraud or corrected Euler by eqs. 23–24.
     Adaptive,
     /// [`crate::angular`]: cosine of the linearly interpolated angle (second source).
     Angular,
     /// [`crate::angular::shade_table`] with a cosine table of this many entries.
     AngularTable(u32),
+    /// [`crate::related::spherical`]: Kuijk & Blake's spherical interpolation.
+    Spherical,
+    /// [`crate::related::binary`]: Ouyang & Maynard's binary interpolation.
+    Binary,
+    /// [`crate::related::bishop_weimer::shade`]: Bishop & Weimer's Taylor expansion
+    /// along the span, about its middle pixel.
+    BishopWeimer,
 }
 
+/// What a method asks of the number type.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Needs {
+    /// Field operations only ([`Scalar`]): exact in rationals.
+    Field,
+    /// Square roots, `acos` or `cos` as well ([`Real`]).
+    Real,
+}
+
+/// Everything the catalogue knows of a method.
+#[derive(Clone, Copy)]
+pub struct Info {
+    /// The name in the CLI, the vector files and every table; the tabled angular
+    /// method's is this followed by its table size (`angular-table256`).
+    pub name: &'static str,
+    /// A label for people (`corrected Euler`).
+    pub label: &'static str,
+    /// Who the method is by.
+    pub source: &'static str,
+    /// The equations it implements.
+    pub equations: &'static str,
+    /// The module that implements it.
+    pub module: &'static str,
+    /// What it asks of the number type.
+    pub needs: Needs,
+    /// The pixels where its exact value is Phong's `p_i/√q_i`, so that the exact
+    /// 8-bit level there is decided from `p_i` and `q_i` in rationals
+    /// ([`phong_level_exact`]) however close it is to a level boundary.
+    pub phong_pixels: PhongPixels,
+    /// Whether part of the method is a reconstruction from an incomplete description
+    /// (`docs/comparison.md`).
+    pub reconstructed: bool,
+    /// Its float error bound ([`crate::tolerance`], derived in `docs/float.md`).
+    pub bound: BoundFn,
+}
+
+impl fmt::Debug for Info {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_struct("Info")
+            .field("name", &self.name)
+            .field("needs", &self.needs)
+            .field("phong_pixels", &self.phong_pixels)
+            .finish_non_exhaustive()
+    }
+}
+
+/// Where a method's exact value is Phong's `p_i/√q_i` (in real arithmetic; the run in
+/// floats or with approximate square roots may differ by its error).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum PhongPixels {
+    /// Every pixel (Phong, Duff, symmetric Phong).
+    All,
+    /// Pixel 0 only (Euler misses `p_b`, eq. 15).
+    First,
+    /// Pixels `0` and `n`, where the value is `p_a` or `p_b` (Gouraud, corrected
+    /// Euler, adaptive).
+    Ends,
+    /// The ends (`cos(acos p)`), and every pixel when `p_a = p_b` (the angle does not
+    /// move: the value is `p_a`) — angular interpolation.
+    AngularEnds,
+    /// The ends and, for even `n`, the middle pixel (spherical:
+    /// `spherical_equals_phong_at_the_middle`).
+    EndsAndEvenMiddle,
+    /// The segment ends of binary interpolation and, when `n` is a power of two, the
+    /// middle (`binary_exact_at_ends_and_whole_span_midpoint`).
+    BinarySegments,
+    /// For even `n`, the middle pixel, the expansion point (Bishop–Weimer's `T0`).
+    EvenMiddle,
+    /// None known, but a value of exactly 1 is the table's entry `cos 0`, which the
+    /// exact run computes exactly (the tabled angular method reads even its ends from
+    /// the table).
+    Table,
+    /// None known.
+    None,
+}
+
+impl PhongPixels {
+    /// `(p, q)` with the method's exact value at pixel `i` of `span` equal to
+    /// `p/√q`, where that is known; `None` elsewhere.
+    pub fn exact_at(
+        &self,
+        span: &Span<BigRational>,
+        i: u32,
+    ) -> Option<(BigRational, BigRational)> {
+        // N_a = N_b: every untabled method is constant p_a (k = 0, q = 1: no step
+        // moves the value). Angular with p_a = p_b: the angle does not move.
+        let constant = (span.na == span.nb && !matches!(self, PhongPixels::None | PhongPixels::Table))
+            || (*self == PhongPixels::AngularEnds && span.p_a == span.p_b);
+        if constant {
+            return Some((span.p_a.clone(), BigRational::from_integer(1.into())));
+        }
+        self.at(span.n, i)
+            .then(|| (span.p_at(i), span.q_at(i)))
+    }
+
+    /// Whether pixel `i` of a span of `n` steps is one where the value is Phong's
+    /// (for any `p_a`, `p_b`).
+    pub fn at(&self, n: u32, i: u32) -> bool {
+        let ends = i == 0 || i == n;
+        let even_middle = n % 2 == 0 && 2 * i == n;
+        match self {
+            PhongPixels::All => true,
+            PhongPixels::First => i == 0,
+            PhongPixels::Ends | PhongPixels::AngularEnds => ends,
+            PhongPixels::EndsAndEvenMiddle => ends || even_middle,
+            PhongPixels::BinarySegments => {
+                binary::segments(n).contains(&i) || (n.is_power_of_two() && even_middle)
+            }
+            PhongPixels::EvenMiddle => even_middle,
+            PhongPixels::Table | PhongPixels::None => false,
+        }
+    }
+}
+
+/// The table size of the second source's byte angles.
+pub const SOURCE_TABLE: u32 = 256;
+
 impl Method {
-    /// Every method, with the second source's 256-entry table for the tabled one.
-    pub const ALL: [Method; 9] = [
+    /// Every method, in the order of the tables; the tabled angular method with the
+    /// second source's 256 entries.
+    pub const ALL: [Method; 12] = [
         Method::Phong,
         Method::Duff,
         Method::SymmetricPhong,
@@ -42,107 +182,393 @@ impl Method {
         Method::CorrectedEuler,
         Method::Adaptive,
         Method::Angular,
-        Method::AngularTable(256),
+        Method::AngularTable(SOURCE_TABLE),
+        Method::Spherical,
+        Method::Binary,
+        Method::BishopWeimer,
     ];
 
-    /// The CLI name (`corrected-euler`, …; the tabled angular method is `angular`
-    /// with a table size).
-    pub fn name(&self) -> &'static str {
+    /// The catalogue entry.
+    pub fn info(&self) -> Info {
+        const HBB: &str = "Hast, Barrera, Bengtsson";
+        let (field, real) = (Needs::Field, Needs::Real);
+        use PhongPixels::{All, BinarySegments, Ends, EndsAndEvenMiddle, EvenMiddle};
+        #[allow(clippy::type_complexity)]
+        let (name, label, source, equations, module, needs, phong_pixels, reconstructed, bound): (
+            &str,
+            &str,
+            &str,
+            &str,
+            &str,
+            Needs,
+            PhongPixels,
+            bool,
+            BoundFn,
+        ) = match self {
+            Method::Phong => ("phong", "Phong", "Phong 1975", "eq. 4", "phong", real, All, false, tolerance::phong),
+            Method::Duff => ("duff", "Duff", "Duff 1979", "eqs. 5–7", "duff", real, All, false, tolerance::duff),
+            Method::SymmetricPhong => ("symmetric-phong", "symmetric Phong", HBB, "§4", "symmetric_phong", real, All, false, tolerance::duff),
+            Method::Gouraud => ("gouraud", "Gouraud (fence)", "Gouraud 1971, Behrens 1994", "§1, eq. 23's d_p", "gouraud", field, Ends, false, tolerance::gouraud),
+            Method::Euler => ("euler", "Euler", HBB, "eqs. 12–14", "euler", field, PhongPixels::First, false, tolerance::euler),
+            Method::CorrectedEuler => ("corrected-euler", "corrected Euler", HBB, "eqs. 15–17", "corrected_euler", field, Ends, false, tolerance::corrected_euler),
+            Method::Adaptive => ("adaptive", "adaptive", HBB, "eqs. 23–24", "adaptive", field, Ends, false, tolerance::adaptive),
+            Method::Angular => ("angular", "angular", "Mortensen 1995", "second source", "angular", real, PhongPixels::AngularEnds, false, tolerance::angular),
+            Method::AngularTable(_) => ("angular-table", "angular, tabled", "Mortensen 1995", "second source", "angular", real, PhongPixels::Table, false, tolerance::angular_table),
+            Method::Spherical => ("spherical", "spherical", "Kuijk & Blake 1989", "Chebyshev recurrence", "related::spherical", real, EndsAndEvenMiddle, true, tolerance::spherical),
+            Method::Binary => ("binary", "binary", "Ouyang & Maynard 1996", "binary subdivision", "related::binary", real, BinarySegments, true, tolerance::binary),
+            Method::BishopWeimer => ("bishop-weimer", "Bishop–Weimer", "Bishop & Weimer 1986", "2-D Taylor, along the span", "related::bishop_weimer", real, EvenMiddle, false, tolerance::bishop_weimer),
+        };
+        Info {
+            name,
+            label,
+            source,
+            equations,
+            module,
+            needs,
+            phong_pixels,
+            reconstructed,
+            bound,
+        }
+    }
+
+    /// The name, which [`FromStr`] parses back: `corrected-euler`, …,
+    /// `angular-table256`.
+    pub fn name(&self) -> Cow<'static, str> {
         match self {
-            Method::Phong => "phong",
-            Method::Duff => "duff",
-            Method::SymmetricPhong => "symmetric-phong",
-            Method::Gouraud => "gouraud",
-            Method::Euler => "euler",
-            Method::CorrectedEuler => "corrected-euler",
-            Method::Adaptive => "adaptive",
-            Method::Angular | Method::AngularTable(_) => "angular",
+            Method::AngularTable(size) => Cow::Owned(format!("angular-table{size}")),
+            m => Cow::Borrowed(m.info().name),
         }
     }
 
     /// The equations the method implements.
     pub fn equations(&self) -> &'static str {
-        match self {
-            Method::Phong => "eq. 4",
-            Method::Duff => "eqs. 5–7",
-            Method::SymmetricPhong => "§4",
-            Method::Gouraud => "§1 (fence), eq. 23's d_p",
-            Method::Euler => "eqs. 12–14",
-            Method::CorrectedEuler => "eqs. 15–17",
-            Method::Adaptive => "eqs. 23–24",
-            Method::Angular | Method::AngularTable(_) => "second source",
-        }
+        self.info().equations
     }
 
     /// Whether the method uses only field operations (exact in rationals).
     pub fn is_rational(&self) -> bool {
-        matches!(
-            self,
-            Method::Gouraud | Method::Euler | Method::CorrectedEuler | Method::Adaptive
-        )
+        self.info().needs == Needs::Field
     }
 
-    /// Shades `span` into `out` (`n + 1` values).
+    /// Whether the method's exact value is Phong's `p/√q` at every pixel.
+    pub fn is_phong_valued(&self) -> bool {
+        self.info().phong_pixels == PhongPixels::All
+    }
+
+    /// Shades `span` into `out` (`n + 1` values) with the prepared parameters; the
+    /// adaptive method returns its decision (eqs. 23–24 with `prep.kd`).
     ///
     /// # Errors
-    /// [`SpanError::OutputLength`] for a wrong `out`, [`SpanError::Parameter`] for a bad
-    /// table size.
-    pub fn shade<T: Real>(&self, span: &Span<T>, out: &mut [T]) -> Result<(), SpanError> {
+    /// [`SpanError::OutputLength`] for a wrong `out`; [`SpanError::Parameter`] for a
+    /// bad table size; the method's own refusals ([`SpanError::Opposite`],
+    /// [`SpanError::ZeroNormal`], [`SpanError::NotFiniteValue`]).
+    pub fn run<T: Real>(
+        &self,
+        span: &Span<T>,
+        prep: &Prepared<T>,
+        out: &mut [T],
+    ) -> Result<Option<Decision<T>>, SpanError> {
         match self {
-            Method::Phong => crate::phong::shade(span, out),
-            Method::Duff => crate::duff::shade(span, out),
-            Method::SymmetricPhong => crate::symmetric_phong::shade(span, out),
-            Method::Gouraud => crate::gouraud::shade(span, out),
-            Method::Euler => crate::euler::shade(span, out),
-            Method::CorrectedEuler => crate::corrected_euler::shade(span, out),
-            Method::Adaptive => adaptive::shade(span, &T::one(), out).map(|_| ()),
-            Method::Angular => crate::angular::shade(span, out),
-            Method::AngularTable(size) => {
-                let table = crate::angular::CosTable::new(*size)?;
-                crate::angular::shade_table(span, &table, out)
+            Method::Phong => crate::phong::shade(span, out)?,
+            Method::Duff => crate::duff::shade(span, out)?,
+            Method::SymmetricPhong => crate::symmetric_phong::shade(span, out)?,
+            Method::Angular => crate::angular::shade(span, out)?,
+            Method::AngularTable(size) => match &prep.table {
+                Some(t) if t.values.len() == *size as usize => {
+                    crate::angular::shade_table(span, t, out)?
+                }
+                _ => crate::angular::shade_table(span, &CosTable::new(*size)?, out)?,
+            },
+            Method::Spherical => spherical::shade(span, out)?,
+            Method::Binary => binary::shade(span, out)?,
+            Method::BishopWeimer => bishop_weimer::shade(span, out)?,
+            m => return m.run_field(span, &prep.kd, out),
+        }
+        Ok(None)
+    }
+
+    /// [`Method::run`] in a number type with field operations only.
+    ///
+    /// # Errors
+    /// As [`Method::run`]; [`SpanError::Parameter`] for a method that needs square
+    /// roots or trigonometry.
+    pub fn run_field<T: Scalar>(
+        &self,
+        span: &Span<T>,
+        kd: &T,
+        out: &mut [T],
+    ) -> Result<Option<Decision<T>>, SpanError> {
+        match self {
+            Method::Gouraud => crate::gouraud::shade(span, out)?,
+            Method::Euler => crate::euler::shade(span, out)?,
+            Method::CorrectedEuler => crate::corrected_euler::shade(span, out)?,
+            Method::Adaptive => return adaptive::shade(span, kd, out).map(Some),
+            m => {
+                return Err(SpanError::Parameter(format!(
+                    "{} needs square roots or trigonometry, not only field operations",
+                    m.name()
+                )))
             }
         }
+        Ok(None)
     }
 
-    /// Shades `span` into a new vector of `n + 1` values.
+    /// Shades `span` into `out` with `K_d = 1` (the adaptive method's δ test) and the
+    /// table built for the call.
     ///
     /// # Errors
-    /// As [`Method::shade`].
+    /// As [`Method::run`].
+    pub fn shade<T: Real>(&self, span: &Span<T>, out: &mut [T]) -> Result<(), SpanError> {
+        self.run(span, &Prepared::new(*self, T::one())?, out)
+            .map(|_| ())
+    }
+
+    /// Shades `span` into a new vector of `n + 1` values ([`Method::shade`]).
+    ///
+    /// # Errors
+    /// As [`Method::run`].
     pub fn values<T: Real>(&self, span: &Span<T>) -> Result<Vec<T>, SpanError> {
         let mut out = vec![T::zero(); span.len()];
         self.shade(span, &mut out)?;
         Ok(out)
     }
+
+    /// How well the exact run ([`Method::run`] in [`BigRational`], whose square roots,
+    /// `acos` and `cos` are accurate to 2^-256) knows its values: `None` when they
+    /// are exact (field-only methods), else `bits` with every value within
+    /// `2^-bits` of the method's value in real arithmetic. What is lost of 2^-250:
+    /// - Phong-valued methods: `p/√q` moves by `e/√q_min` when `√q` is off by `e`,
+    ///   and `q` itself is exact: `⌈log2(1/q_min)⌉/2 + 2`;
+    /// - the related methods (spherical, binary, Bishop–Weimer): their set-up divides
+    ///   by `sin Ω` (spherical's `w·L`), by `sin(Ω/n)` (spherical's `sin Δ` from
+    ///   `cos Δ`) or by powers of `|N|` (Bishop–Weimer's expansion), and the
+    ///   recurrences carry an error of the first values or of the coefficients over
+    ///   `n` steps with a factor of at most `n` (Chebyshev: `sin(kΔ)/sin Δ ≤ k`) or
+    ///   `n²` (the quadratic's forward differences):
+    ///   `2·⌈log2(n + 1)⌉ + 2·⌈log2(1/sin²Ω)⌉ + 2·⌈log2(1/q_min)⌉ + 8`;
+    /// - angular interpolation: nothing more (its `acos` and `cos` are taken of exact
+    ///   arguments).
+    pub fn exact_bits(&self, span: &Span<BigRational>) -> Option<i64> {
+        if self.is_rational() {
+            return None;
+        }
+        let q = log2_recip(&span.q_min());
+        let loss = if self.is_phong_valued() {
+            q / 2 + 2
+        } else if matches!(self, Method::Spherical | Method::Binary | Method::BishopWeimer) {
+            let c = span.na.dot(&span.nb);
+            let s2 = BigRational::from_integer(1.into()) - c.clone() * c;
+            let n_bits = 64 - i64::from(u64::from(span.n + 1).leading_zeros());
+            let sin = if s2 == BigRational::from_integer(0.into()) {
+                0
+            } else {
+                log2_recip(&s2)
+            };
+            2 * n_bits + 2 * sin + 2 * q + 8
+        } else {
+            0
+        };
+        Some(250 - loss)
+    }
+
+    /// The exact 8-bit levels of `values`, the method's exact run on `span`, scaled
+    /// by `kd ≥ 0`: for Phong-valued methods decided from `kd·p_i` and `q_i` in
+    /// rationals (no square root); for field-only methods `level(kd·v)` of the exact
+    /// value; otherwise decided within the run's error ([`Method::exact_bits`]), and
+    /// `None` at a pixel whose value is within that error of a level boundary.
+    pub fn exact_levels(
+        &self,
+        span: &Span<BigRational>,
+        values: &[BigRational],
+        kd: &BigRational,
+    ) -> Vec<Option<u8>> {
+        let phong = self.info().phong_pixels;
+        let bits = self.exact_bits(span);
+        let e = bits.map(|b| {
+            kd.clone() * BigRational::new(1.into(), num_bigint::BigInt::from(1) << b.max(0) as usize)
+        });
+        values
+            .iter()
+            .enumerate()
+            .map(|(i, v)| {
+                let i = i as u32;
+                if let Some((p, q)) = phong.exact_at(span, i) {
+                    return phong_level_exact(&(p * kd.clone()), &q);
+                }
+                if phong == PhongPixels::Table && v.is_one() {
+                    return Some(level_of_rational(kd));
+                }
+                match &e {
+                    None => Some(level_of_rational(&(v.clone() * kd.clone()))),
+                    Some(e) => level_within(&(v.clone() * kd.clone()), e),
+                }
+            })
+            .collect()
+    }
+
+    /// The exact 8-bit levels of `max(0, v)^s` (the specular term) for the method's
+    /// exact run `values` on `span` (with `L` the half vector): decided in rationals
+    /// where the value is known ([`PhongPixels::exact_at`]: `ℓ ≤ 255·(p/√q)^s` iff
+    /// `ℓ²·q^s ≤ 255²·p^{2s}` for `p > 0`) or exact, else within `s` times the run's
+    /// error (`|d(v^s)/dv| ≤ s` on `[0, 1]`, and `(1 + e)^{s−1} < 1.01` for the
+    /// errors here), `None` where that straddles a level boundary.
+    pub fn exact_power_levels(
+        &self,
+        span: &Span<BigRational>,
+        values: &[BigRational],
+        s: u32,
+    ) -> Vec<Option<u8>> {
+        use num_traits::{Pow, Signed};
+        let phong = self.info().phong_pixels;
+        let e = self.exact_bits(span).map(|b| {
+            BigRational::new(
+                (101 * i64::from(s)).into(),
+                num_bigint::BigInt::from(100) << b.max(0) as usize,
+            )
+        });
+        let pow = |v: &BigRational| crate::specular::power(v, s);
+        values
+            .iter()
+            .enumerate()
+            .map(|(i, v)| {
+                if let Some((p, q)) = phong.exact_at(span, i as u32) {
+                    if s == 0 {
+                        return Some(255);
+                    }
+                    if !p.is_positive() {
+                        return Some(0);
+                    }
+                    let (ps, qs) = (Pow::pow(p, 2 * s), Pow::pow(q, s));
+                    let limit = ps * BigRational::from_integer((255 * 255).into());
+                    return (0..=255u32).rev().find(|&l| {
+                        BigRational::from_integer((l * l).into()) * qs.clone() <= limit
+                    }).map(|l| l as u8);
+                }
+                match &e {
+                    None => Some(level_of_rational(&pow(v))),
+                    Some(e) => level_within(&pow(v), e),
+                }
+            })
+            .collect()
+    }
+}
+
+/// `⌈log2(1/x)⌉` for `0 < x` (0 when `x ≥ 1`; very large for `x ≤ 0`).
+fn log2_recip(x: &BigRational) -> i64 {
+    let f = x.to_f64();
+    if f >= 1.0 {
+        0
+    } else if f > 0.0 {
+        (-f.log2()).ceil() as i64
+    } else {
+        i64::MAX / 8
+    }
+}
+
+/// A method's parameters, prepared once for many spans: the diffuse coefficient of
+/// the adaptive test and, for the tabled angular method, its cosine table.
+#[derive(Clone, Debug)]
+pub struct Prepared<T> {
+    /// `K_d` of eq. 24's test `|δ·255·K_d| < 1`.
+    pub kd: T,
+    /// The cosine table of [`Method::AngularTable`].
+    pub table: Option<CosTable<T>>,
+}
+
+impl<T: Real> Prepared<T> {
+    /// The parameters of `method` with diffuse coefficient `kd`.
+    ///
+    /// # Errors
+    /// [`SpanError::Parameter`] for a table size out of range.
+    pub fn new(method: Method, kd: T) -> Result<Self, SpanError> {
+        let table = match method {
+            Method::AngularTable(size) => Some(CosTable::new(size)?),
+            _ => None,
+        };
+        Ok(Prepared { kd, table })
+    }
 }
 
 impl fmt::Display for Method {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            Method::AngularTable(size) => write!(f, "angular (table of {size})"),
-            m => f.write_str(m.name()),
-        }
+        f.write_str(&self.name())
     }
 }
 
 /// The error of parsing a method name.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
-#[error("unknown method '{0}' (expected one of: phong, duff, symmetric-phong, gouraud, euler, corrected-euler, adaptive, angular)")]
+#[error("unknown method '{0}' (expected one of: {names})", names = names())]
 /// (The name as given, cut to 80 characters and escaped.)
 pub struct UnknownMethod(pub String);
+
+/// Every method's name, comma-separated (the tabled one as `angular-table<SIZE>`).
+pub fn names() -> String {
+    Method::ALL
+        .iter()
+        .map(|m| match m {
+            Method::AngularTable(_) => "angular-table<SIZE>".to_string(),
+            m => m.name().into_owned(),
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
+}
 
 impl FromStr for Method {
     type Err = UnknownMethod;
     fn from_str(s: &str) -> Result<Self, Self::Err> {
-        Ok(match s {
-            "phong" => Method::Phong,
-            "duff" => Method::Duff,
-            "symmetric-phong" => Method::SymmetricPhong,
-            "gouraud" => Method::Gouraud,
-            "euler" => Method::Euler,
-            "corrected-euler" => Method::CorrectedEuler,
-            "adaptive" => Method::Adaptive,
-            "angular" => Method::Angular,
-            other => return Err(UnknownMethod(crate::conformance::shown(other))),
-        })
+        if let Some(size) = s.strip_prefix("angular-table") {
+            // Digits only, no sign or leading zero, so the name round-trips.
+            if !size.is_empty()
+                && size.bytes().all(|b| b.is_ascii_digit())
+                && !size.starts_with('0')
+            {
+                if let Ok(size) = size.parse() {
+                    return Ok(Method::AngularTable(size));
+                }
+            }
+        }
+        Method::ALL
+            .iter()
+            .find(|m| !matches!(m, Method::AngularTable(_)) && m.info().name == s)
+            .copied()
+            .ok_or_else(|| UnknownMethod(crate::conformance::shown(s)))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_name_parses_back() {
+        for m in Method::ALL
+            .into_iter()
+            .chain([Method::AngularTable(2), Method::AngularTable(1 << 24)])
+        {
+            assert_eq!(m.name().parse::<Method>(), Ok(m), "{m}");
+            assert_eq!(m.to_string(), m.name());
+        }
+        let mut seen = std::collections::HashSet::new();
+        for m in Method::ALL {
+            assert!(seen.insert(m.name()), "two methods named {m}");
+        }
+        for bad in ["", "fence", "gouraud-span", "angular-table", "angular-table0256", "angular-table+5", "Phong"] {
+            assert!(bad.parse::<Method>().is_err(), "{bad}");
+        }
+    }
+
+    #[test]
+    fn field_methods_run_on_field_operations() {
+        use crate::reference::unit::unit_from_ints;
+        let span = Span::new(unit_from_ints(1, 0, 3), unit_from_ints(-1, 0, 3), unit_from_ints(0, 0, 1), 4).unwrap();
+        let one = BigRational::from_integer(1.into());
+        for m in Method::ALL {
+            let mut a = vec![one.clone(); 5];
+            let r = m.run_field(&span, &one, &mut a);
+            assert_eq!(r.is_ok(), m.is_rational(), "{m}");
+            if r.is_ok() {
+                assert_eq!(a, m.values(&span).unwrap(), "{m}");
+            }
+        }
     }
 }

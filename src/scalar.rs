@@ -79,6 +79,15 @@ pub trait Scalar:
     /// `self` as a decimal string with `digits` significant digits (floats print the
     /// shortest string that reads back to the same value, whatever `digits` is).
     fn to_decimal(&self, digits: usize) -> String;
+
+    /// `self`, or for [`BigRational`] the nearest multiple of 2^-320 (ties up): long
+    /// recurrences whose values come from approximate square roots and cosines
+    /// (spherical interpolation's Chebyshev recurrence) call it each step so that
+    /// exact rationals keep a bounded size; 2^-320 per step is far below those
+    /// functions' own error of 2^-256. The identity for every other type.
+    fn tidy(self) -> Self {
+        self
+    }
 }
 
 /// A [`Scalar`] that also has the square root, arc cosine and cosine.
@@ -270,6 +279,13 @@ impl Scalar for BigRational {
 
     fn unit_roundoff() -> f64 {
         0.0
+    }
+
+    fn tidy(self) -> Self {
+        let scale: num_bigint::BigInt = num_bigint::BigInt::from(1) << 320usize;
+        let scaled = self * BigRational::from_integer(scale.clone());
+        let half = BigRational::new(1.into(), 2.into());
+        BigRational::new((scaled + half).floor().to_integer(), scale)
     }
 
     fn to_decimal(&self, digits: usize) -> String {

@@ -129,17 +129,24 @@ fn angle_bound(edges: Option<(f64, f64)>, rounded_adds: f64, u: f64) -> f64 {
 
 /// The largest `|float − exact|` at any pixel of a span of `n` steps whose smallest
 /// `q_i = N(i)·N(i)` is `q_min` (1 when the edge normals are equal), for a method
-/// run through [`Method::shade`] in a float type of unit roundoff `u`.
+/// run through [`Method::run`] in a float type of unit roundoff `u`.
 ///
 /// `None` where no bound is derived: `n·u > ` [`MAX_NU`], or `q` may round to zero
-/// (Phong, Duff, symmetric Phong with `q_min` below about `100·n·u`).
+/// (Phong, Duff, symmetric Phong with `q_min` below about `100·n·u`), or the method's
+/// bound needs more of the span than `n` and `q_min` (the related methods: use
+/// [`span_bound`]).
 ///
 /// For [`Method::Adaptive`] the bound is against the exact run of the method the
 /// float run chose (the two runs may decide differently when `|δ·255·K_d|` is within
 /// rounding of 1).
 pub fn bound(method: Method, n: u32, q_min: f64, u: f64) -> Option<f64> {
-    method_bound(method, n, q_min, None, u)
+    (method.info().bound)(method, n, q_min, None, u)
 }
+
+/// A method's float error bound, as the catalogue ([`crate::method::Info::bound`])
+/// holds it: `(method, n, q_min, shape, u)`, with the whole [`Shape`] when the span
+/// is known.
+pub type BoundFn = fn(Method, u32, f64, Option<&Shape>, f64) -> Option<f64>;
 
 /// What the bounds read of a span: `n`, `q_min` (rounded down) and the edge
 /// intensities `p_a`, `p_b` (angular interpolation's `acos` is ill-conditioned near
@@ -170,52 +177,93 @@ impl Shape {
     }
 }
 
-/// [`bound`] for a known span: the same derivation with the span's `p_a` and `p_b`
-/// (tighter for angular interpolation; the same for every other method).
+/// [`bound`] for a known span: the same derivation with what the method's bound
+/// reads of the span (tighter for angular interpolation; the only bound of the
+/// related methods).
 pub fn span_bound(method: Method, shape: &Shape, u: f64) -> Option<f64> {
-    method_bound(
-        method,
-        shape.n,
-        shape.q_min,
-        Some((shape.p_a, shape.p_b)),
+    (method.info().bound)(method, shape.n, shape.q_min, Some(shape), u)
+}
+
+fn edges(shape: Option<&Shape>) -> Option<(f64, f64)> {
+    shape.map(|s| (s.p_a, s.p_b))
+}
+
+/// Gouraud along the span: `(1.001n + 10)u` (docs/float.md §5; proved,
+/// `float_gouraud_binary32`/`_binary64`).
+pub fn gouraud(_: Method, n: u32, _: f64, _: Option<&Shape>, u: f64) -> Option<f64> {
+    Some(linear(coef::GOURAUD, in_range(n, u)?) * u)
+}
+
+/// Corrected Euler: `(2.2n + 42)u` (docs/float.md §6; proved,
+/// `float_corrected_euler_binary32`/`_binary64`).
+pub fn corrected_euler(_: Method, n: u32, _: f64, _: Option<&Shape>, u: f64) -> Option<f64> {
+    Some(linear(coef::CORRECTED_EULER, in_range(n, u)?) * u)
+}
+
+/// The adaptive scheme: the larger of Gouraud's and corrected Euler's (docs/float.md
+/// §10).
+pub fn adaptive(_: Method, n: u32, _: f64, _: Option<&Shape>, u: f64) -> Option<f64> {
+    let nf = in_range(n, u)?;
+    Some(linear(coef::CORRECTED_EULER, nf).max(linear(coef::GOURAUD, nf)) * u)
+}
+
+/// Euler: `(5.6n + 115)u` (docs/float.md §7).
+pub fn euler(_: Method, n: u32, _: f64, _: Option<&Shape>, u: f64) -> Option<f64> {
+    Some(linear(coef::EULER, in_range(n, u)?) * u)
+}
+
+/// Duff and symmetric Phong: the ratio `p/√q` of two recurrences (docs/float.md §8).
+pub fn duff(_: Method, n: u32, q_min: f64, _: Option<&Shape>, u: f64) -> Option<f64> {
+    let nf = in_range(n, u)?;
+    ratio_bound(
+        linear(coef::DUFF_P, nf),
+        linear(coef::DUFF_Q, nf),
+        q_min,
+        2.0,
         u,
     )
 }
 
-fn method_bound(
-    method: Method,
-    n: u32,
-    q_min: f64,
-    edges: Option<(f64, f64)>,
-    u: f64,
-) -> Option<f64> {
-    let nf = in_range(n, u)?;
-    let lin = |c: (f64, f64)| Some(linear(c, nf) * u);
-    match method {
-        Method::Gouraud => lin(coef::GOURAUD),
-        Method::CorrectedEuler => lin(coef::CORRECTED_EULER),
-        Method::Adaptive => {
-            Some(linear(coef::CORRECTED_EULER, nf).max(linear(coef::GOURAUD, nf)) * u)
-        }
-        Method::Euler => lin(coef::EULER),
-        Method::Duff | Method::SymmetricPhong => ratio_bound(
-            linear(coef::DUFF_P, nf),
-            linear(coef::DUFF_Q, nf),
-            q_min,
-            2.0,
-            u,
-        ),
-        // The interpolated normal is off by at most 10u (Euclidean), which moves
-        // N·L/|N| by at most 10u/|N|; evaluating it costs 7.5u more.
-        Method::Phong => {
-            if !(q_min > 0.0 && q_min.is_finite()) {
-                return None;
-            }
-            Some((10.01 / q_min.sqrt() + 7.6) * u)
-        }
-        Method::Angular => Some(angle_bound(edges, nf, u) + 2.0 * u),
-        Method::AngularTable(size) => Some(angle_bound(edges, nf, u) + table_step(size) + 20.0 * u),
+/// Phong per pixel (docs/float.md §9): the interpolated normal is off by at most
+/// `10u` (Euclidean), which moves `N·L/|N|` by at most `10u/|N|`; evaluating it costs
+/// `7.5u` more.
+pub fn phong(_: Method, n: u32, q_min: f64, _: Option<&Shape>, u: f64) -> Option<f64> {
+    in_range(n, u)?;
+    if !(q_min > 0.0 && q_min.is_finite()) {
+        return None;
     }
+    Some((10.01 / q_min.sqrt() + 7.6) * u)
+}
+
+/// Angular interpolation (docs/float.md §11).
+pub fn angular(_: Method, n: u32, _: f64, shape: Option<&Shape>, u: f64) -> Option<f64> {
+    let nf = in_range(n, u)?;
+    Some(angle_bound(edges(shape), nf, u) + 2.0 * u)
+}
+
+/// Angular interpolation with a cosine table (docs/float.md §11): the angle's bound,
+/// one table step, and the table's own rounding.
+pub fn angular_table(m: Method, n: u32, _: f64, shape: Option<&Shape>, u: f64) -> Option<f64> {
+    let nf = in_range(n, u)?;
+    let Method::AngularTable(size) = m else {
+        return None;
+    };
+    Some(angle_bound(edges(shape), nf, u) + table_step(size) + 20.0 * u)
+}
+
+/// Kuijk & Blake's spherical interpolation along a span (docs/float.md §16).
+pub fn spherical(_: Method, _n: u32, _: f64, _shape: Option<&Shape>, _u: f64) -> Option<f64> {
+    None
+}
+
+/// Ouyang & Maynard's binary interpolation (docs/float.md §16).
+pub fn binary(_: Method, _n: u32, _: f64, _shape: Option<&Shape>, _u: f64) -> Option<f64> {
+    None
+}
+
+/// Bishop & Weimer along a span (docs/float.md §16).
+pub fn bishop_weimer(_: Method, _n: u32, _: f64, _shape: Option<&Shape>, _u: f64) -> Option<f64> {
+    None
 }
 
 /// One step of a cosine table of `size` entries over 0–90°: the largest difference

@@ -1,7 +1,10 @@
 //! The comparison harness (`phong-approx compare`): its reference against exact
 //! rationals, the relations the tables must show, and the command line.
 
-use phong_approx::raster::compare::{render_compare, CompareOptions, Shader, SHININESS};
+use phong_approx::raster::compare::{
+    index, render_compare, CompareOptions, Shader, COLUMNS, SHININESS,
+};
+use phong_approx::Method;
 use phong_approx::raster::mesh::{torus, NormalMode};
 use phong_approx::raster::precision::{self, longest, SPAN_LENGTHS};
 use phong_approx::raster::render::Scene;
@@ -24,7 +27,7 @@ fn f64_harness_agrees_with_exact_rationals() {
     let scene = Scene::new(24, 24, 1.4);
     let exact = precision::frame::<BigRational>(&mesh, &scene, 3);
     assert!(exact.rows > 30, "too few rows: {}", exact.rows);
-    for (c, sh) in Shader::ALL.iter().enumerate() {
+    for (c, sh) in COLUMNS.iter().enumerate() {
         let d = &exact.vs_f64[c];
         assert_eq!(exact.failed_rows[c], 0, "{}", sh.label());
         assert!(d.pixels > 100, "{}: {} pixels", sh.label(), d.pixels);
@@ -44,25 +47,25 @@ fn one_frame_relations() {
     let st = &f.stats;
     assert!(st.pixels > 1000);
     assert_eq!(st.dropped_rows, 0);
-    let d = |s: Shader| &st.diffuse[s.index()];
-    assert_eq!(d(Shader::Phong).max, 0);
+    let d = |s: Shader| &st.diffuse[index(s)];
+    assert_eq!(d(Shader::PhongPixel).max, 0);
     for k in 0..SHININESS.len() {
         assert_eq!(st.specular[k][0].max, 0);
     }
     for s in [
-        Shader::PhongSpan,
-        Shader::Duff,
-        Shader::SymmetricPhong,
-        Shader::CorrectedEuler,
+        Shader::Span(Method::Phong),
+        Shader::Span(Method::Duff),
+        Shader::Span(Method::SymmetricPhong),
+        Shader::Span(Method::CorrectedEuler),
     ] {
         assert!(d(s).max <= 1, "{}: {}", s.label(), d(s).max);
     }
     for dev in &st.diffuse {
         assert_eq!(dev.pixels, st.pixels);
     }
-    assert!(d(Shader::Euler).mean() > d(Shader::CorrectedEuler).mean());
-    assert!(d(Shader::Fence).mean() > d(Shader::CorrectedEuler).mean());
-    assert!(d(Shader::VertexGouraud).mean() > d(Shader::Fence).mean());
+    assert!(d(Shader::Span(Method::Euler)).mean() > d(Shader::Span(Method::CorrectedEuler)).mean());
+    assert!(d(Shader::Span(Method::Gouraud)).mean() > d(Shader::Span(Method::CorrectedEuler)).mean());
+    assert!(d(Shader::VertexGouraud).mean() > d(Shader::Span(Method::Gouraud)).mean());
     assert!(st.adaptive_gouraud <= st.spans);
     for dc in &st.specular_delta {
         assert!(dc.gouraud_but_differ <= dc.gouraud && dc.gouraud <= st.spans);
@@ -102,11 +105,11 @@ fn long_span_directions() {
 #[test]
 fn long_span_extremes() {
     let dirs = precision::test_directions(4);
-    for sh in precision::SPAN_SHADERS {
-        let e = precision::span_errors::<f64>(sh, &dirs);
-        assert_eq!(longest(&e), Some(4096), "{}", sh.label());
+    for m in precision::SPAN_METHODS {
+        let e = precision::span_errors::<f64>(m, &dirs);
+        assert_eq!(longest(&e), Some(4096), "{m}");
     }
-    let e = precision::span_errors::<phong_approx::lowp::I8F8>(Shader::PhongSpan, &dirs);
+    let e = precision::span_errors::<phong_approx::lowp::I8F8>(Method::Phong, &dirs);
     assert!(e[0].unwrap() > 1.0);
 }
 
@@ -131,7 +134,7 @@ fn cli_compare_writes_its_tables_and_pictures() {
         .expect("runs");
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let md = std::fs::read_to_string(out.join("comparison.md")).expect("comparison.md");
-    for sh in Shader::ALL {
+    for sh in COLUMNS {
         assert!(
             md.contains(&format!("| {} |", sh.label())),
             "{}",
@@ -141,7 +144,7 @@ fn cli_compare_writes_its_tables_and_pictures() {
     let csv = std::fs::read_to_string(out.join("table2_extended.csv")).expect("csv");
     assert_eq!(
         csv.lines().count(),
-        1 + 4 * Shader::ALL.len() * (1 + SHININESS.len())
+        1 + 4 * COLUMNS.len() * (1 + SHININESS.len())
     );
     for f in [
         "precision.csv",

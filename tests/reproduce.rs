@@ -2,12 +2,12 @@
 
 use phong_approx::raster::experiment::Experiment;
 use phong_approx::raster::mesh::{torus, Mesh, NormalMode};
-use phong_approx::raster::render::{render, Column, RenderOptions, Scene};
+use phong_approx::raster::render::{render, RenderOptions, Scene, Shader, COLUMNS};
 use phong_approx::Method;
 use std::process::Command;
 
-fn col(c: Column) -> usize {
-    Column::ALL.iter().position(|x| *x == c).unwrap()
+fn col(c: Shader) -> usize {
+    COLUMNS.iter().position(|x| *x == c).unwrap()
 }
 
 fn few_frames() -> Experiment {
@@ -25,9 +25,9 @@ fn corrected_euler_is_within_the_tables_bound_and_beats_euler_and_gouraud() {
     assert_eq!(results.len(), 4);
     for r in &results {
         let d = &r.stats.deviation;
-        let ce = &d[col(Column::Span(Method::CorrectedEuler))];
-        let eu = &d[col(Column::Span(Method::Euler))];
-        let go = &d[col(Column::Span(Method::Gouraud))];
+        let ce = &d[col(Shader::Span(Method::CorrectedEuler))];
+        let eu = &d[col(Shader::Span(Method::Euler))];
+        let go = &d[col(Shader::Span(Method::Gouraud))];
         assert!(ce.pixels > 1000, "{} polygons: too few pixels", r.polygons);
         // The bound the full tables show: at most 3 levels on the coarsest torus,
         // at most 1 from 512 polygons up (paper: 3, 1, 1, 1).
@@ -44,14 +44,14 @@ fn corrected_euler_is_within_the_tables_bound_and_beats_euler_and_gouraud() {
             r.polygons
         );
         // Duff and symmetric Phong are Phong up to rounding: at most one level.
-        assert!(d[col(Column::Span(Method::Duff))].max <= 1);
-        assert!(d[col(Column::Span(Method::SymmetricPhong))].max <= 1);
+        assert!(d[col(Shader::Span(Method::Duff))].max <= 1);
+        assert!(d[col(Shader::Span(Method::SymmetricPhong))].max <= 1);
         // Phong against itself.
         assert_eq!(d[0].max, 0);
     }
     // Finer tori are better for every approximation.
     let ce =
-        |i: usize| results[i].stats.deviation[col(Column::Span(Method::CorrectedEuler))].mean();
+        |i: usize| results[i].stats.deviation[col(Shader::Span(Method::CorrectedEuler))].mean();
     assert!(ce(0) > ce(3));
 }
 
@@ -212,7 +212,7 @@ fn reproduce_writes_tables_and_pictures() {
         );
     }
     let csv = std::fs::read_to_string(dir.join("table2.csv")).unwrap();
-    assert_eq!(csv.lines().count(), 1 + 4 * Column::ALL.len());
+    assert_eq!(csv.lines().count(), 1 + 4 * COLUMNS.len());
     let _ = std::fs::remove_dir_all(&dir);
 }
 

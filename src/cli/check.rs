@@ -41,15 +41,6 @@ pub struct CheckArgs {
 }
 
 fn parse_method(s: &str) -> Result<Method, CliError> {
-    if let Some(size) = s.strip_prefix("angular-table") {
-        let n: u32 = size.parse().map_err(|_| {
-            CliError::arg(
-                "--method",
-                format!("'{}': expected angular-table256", shown(s)),
-            )
-        })?;
-        return Ok(Method::AngularTable(n));
-    }
     s.parse().map_err(|e| CliError::arg("--method", e))
 }
 

@@ -14,7 +14,7 @@ use phong_approx::raster::compare::{
 use phong_approx::raster::experiment::Experiment;
 use phong_approx::raster::pictures::save_png;
 use phong_approx::raster::precision::{
-    self, PrecisionStats, PRECISIONS, SPAN_LENGTHS, SPAN_SHADERS,
+    self, PrecisionStats, PRECISIONS, SPAN_LENGTHS, SPAN_METHODS,
 };
 use rayon::prelude::*;
 use std::fmt::Write as _;
@@ -81,7 +81,7 @@ fn bar(len: u64, what: &str) -> ProgressBar {
 }
 
 /// One method of the long-span study: per precision, the errors per span length.
-type SpanRow = (Shader, Vec<(&'static str, Vec<Option<f64>>)>);
+type SpanRow = (phong_approx::Method, Vec<(&'static str, Vec<Option<f64>>)>);
 
 /// Everything `compare` measures.
 struct Results {
@@ -148,10 +148,10 @@ pub fn run(a: &CompareArgs) -> Result<(), CliError> {
     b.finish_and_clear();
     let dirs = precision::test_directions(span_count);
     let b = bar(
-        (SPAN_SHADERS.len() * PRECISIONS.len()) as u64,
+        (SPAN_METHODS.len() * PRECISIONS.len()) as u64,
         "long spans:",
     );
-    let spans: Vec<SpanRow> = SPAN_SHADERS
+    let spans: Vec<SpanRow> = SPAN_METHODS
         .par_iter()
         .map(|&sh| {
             let per: Vec<(&'static str, Vec<Option<f64>>)> = PRECISIONS
@@ -202,10 +202,10 @@ fn report(exp: &Experiment, pframes: u32, r: &Results, secs: f64) -> String {
         s,
         "## Methods\n\n| column | source | reconstructed | specular power |\n|---|---|---|---|"
     );
-    for sh in Shader::ALL {
+    for sh in compare::COLUMNS {
         let pw = match sh {
-            Shader::Phong => "exact (f64)",
-            Shader::Fence => "at the span's edges, interpolated",
+            Shader::PhongPixel => "exact (f64)",
+            Shader::Span(phong_approx::Method::Gouraud) => "at the span's edges, interpolated",
             Shader::VertexGouraud => "at the vertices, interpolated",
             Shader::VertexAngle => "table of cos^s (byte angle)",
             s if s.power_from_table() => "1024-entry table",
@@ -228,7 +228,7 @@ fn report(exp: &Experiment, pframes: u32, r: &Results, secs: f64) -> String {
         "\n## Extended Table 2: diffuse (N·L), mean / max deviation\n"
     );
     header(&mut s);
-    for (c, sh) in Shader::ALL.iter().enumerate() {
+    for (c, sh) in compare::COLUMNS.iter().enumerate() {
         let _ = write!(s, "| {} |", sh.label());
         for t in &r.tori {
             let d = &t.stats.diffuse[c];
@@ -242,7 +242,7 @@ fn report(exp: &Experiment, pframes: u32, r: &Results, secs: f64) -> String {
             "\n## Extended Table 2: specular (N·H)^{sv}, mean / max deviation\n"
         );
         header(&mut s);
-        for (c, sh) in Shader::ALL.iter().enumerate() {
+        for (c, sh) in compare::COLUMNS.iter().enumerate() {
             let _ = write!(s, "| {} |", sh.label());
             for t in &r.tori {
                 let d = &t.stats.specular[k][c];
@@ -295,7 +295,7 @@ fn report(exp: &Experiment, pframes: u32, r: &Results, secs: f64) -> String {
          per-pixel Phong in f64\n\nSet-up and steps entirely in the precision; a blank cell means every row failed.\n"
     );
     table_header(&mut s, PRECISIONS.iter().map(|p| p.to_string()));
-    for (c, sh) in Shader::ALL.iter().enumerate() {
+    for (c, sh) in compare::COLUMNS.iter().enumerate() {
         let _ = write!(s, "| {} |", sh.label());
         for (_, st) in &r.precision {
             let d = &st.vs_phong[c];
@@ -321,7 +321,7 @@ fn report(exp: &Experiment, pframes: u32, r: &Results, secs: f64) -> String {
         "\nThe arithmetic's own share: the same, against the same method in f64.\n"
     );
     table_header(&mut s, PRECISIONS.iter().map(|p| p.to_string()));
-    for (c, sh) in Shader::ALL.iter().enumerate() {
+    for (c, sh) in compare::COLUMNS.iter().enumerate() {
         let _ = write!(s, "| {} |", sh.label());
         for (_, st) in &r.precision {
             let d = &st.vs_f64[c];
@@ -347,7 +347,7 @@ fn report(exp: &Experiment, pframes: u32, r: &Results, secs: f64) -> String {
         .position(|&n| n == 64)
         .expect("64 is tried");
     for (sh, per) in &r.spans {
-        let _ = write!(s, "| {} |", sh.label());
+        let _ = write!(s, "| {} |", sh.name());
         for (_, e) in per {
             let longest = match precision::longest(e) {
                 None => "—".to_string(),
@@ -382,7 +382,7 @@ fn table_header(s: &mut String, columns: impl Iterator<Item = String>) {
 fn table2_csv(tori: &[CompareResult]) -> String {
     let mut s = String::from("polygons,method,term,mean,max,pixels\n");
     for t in tori {
-        for (c, sh) in Shader::ALL.iter().enumerate() {
+        for (c, sh) in compare::COLUMNS.iter().enumerate() {
             let d = &t.stats.diffuse[c];
             let _ = writeln!(
                 s,
@@ -413,7 +413,7 @@ fn table2_csv(tori: &[CompareResult]) -> String {
 fn precision_csv(p: &[(&'static str, PrecisionStats)]) -> String {
     let mut s = String::from("precision,method,mean_vs_phong,max_vs_phong,mean_vs_f64,max_vs_f64,pixels,failed_rows,rows\n");
     for (name, st) in p {
-        for (c, sh) in Shader::ALL.iter().enumerate() {
+        for (c, sh) in compare::COLUMNS.iter().enumerate() {
             let (a, b) = (&st.vs_phong[c], &st.vs_f64[c]);
             let _ = writeln!(
                 s,
@@ -438,7 +438,7 @@ fn spans_csv(spans: &[SpanRow]) -> String {
         for (p, e) in per {
             for (n, v) in SPAN_LENGTHS.iter().zip(e) {
                 let v = v.map_or("fails".to_string(), |v| format!("{v:.6}"));
-                let _ = writeln!(s, "{},{p},{n},{v}", sh.label());
+                let _ = writeln!(s, "{},{p},{n},{v}", sh.name());
             }
         }
     }
@@ -484,7 +484,7 @@ fn picture_names() -> Vec<String> {
 }
 
 /// The grid (every method on the 800-polygon torus, shading and heat map side by side,
-/// four methods per row in [`Shader::ALL`] order) and Figures 4–5 with highlights at
+/// four methods per row in [`compare::COLUMNS`] order) and Figures 4–5 with highlights at
 /// every shininess.
 fn pictures(exp: &Experiment, f: u32, out: &OutDir) -> Result<(), CliError> {
     let scene = exp.scene();
@@ -502,9 +502,9 @@ fn pictures(exp: &Experiment, f: u32, out: &OutDir) -> Result<(), CliError> {
         if *sv == 50 {
             let (w, h) = (frame.width, frame.height);
             let per_row = 4u32;
-            let rows = (Shader::ALL.len() as u32).div_ceil(per_row);
+            let rows = (compare::COLUMNS.len() as u32).div_ceil(per_row);
             let mut grid = RgbImage::from_pixel(w * 2 * per_row, h * rows, Rgb([0, 0, 0]));
-            for c in 0..Shader::ALL.len() {
+            for c in 0..compare::COLUMNS.len() {
                 let (gx, gy) = ((c as u32 % per_row) * 2 * w, (c as u32 / per_row) * h);
                 image::imageops::replace(
                     &mut grid,
@@ -522,11 +522,11 @@ fn pictures(exp: &Experiment, f: u32, out: &OutDir) -> Result<(), CliError> {
             save_png(&grid, &out.path_for("grid.png")?).map_err(|e| CliError::arg("--out", e))?;
         }
         for (name, sh) in [
-            ("fig4_corrected_euler", Shader::CorrectedEuler),
-            ("fig5_phong", Shader::Phong),
+            ("fig4_corrected_euler", Shader::Span(phong_approx::Method::CorrectedEuler)),
+            ("fig5_phong", Shader::PhongPixel),
         ] {
             let p = out.path_for(&format!("{name}_s{sv}.png"))?;
-            save_png(&shaded(&frame, sh.index()), &p).map_err(|e| CliError::arg("--out", e))?;
+            save_png(&shaded(&frame, compare::index(sh)), &p).map_err(|e| CliError::arg("--out", e))?;
         }
     }
     Ok(())

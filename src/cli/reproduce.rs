@@ -8,7 +8,7 @@ use phong_approx::conformance::shown;
 use phong_approx::raster::experiment::{Experiment, TorusResult, PAPER_TABLE_1, PAPER_TABLE_2};
 use phong_approx::raster::mesh::NormalMode;
 use phong_approx::raster::pictures::{difference_image, line_plot, save_png, shaded_image, Look};
-use phong_approx::raster::render::{render, Column, RenderOptions, Scene};
+use phong_approx::raster::render::{render, RenderOptions, Scene, Shader, COLUMNS};
 use phong_approx::{Method, Span, Vec3};
 use std::fmt::Write as _;
 
@@ -250,11 +250,11 @@ fn report(exp: &Experiment, results: &[TorusResult], secs: f64) -> String {
         px as f64 / frames.max(1) as f64,
         secs
     );
-    let col = |c: Column| Column::ALL.iter().position(|x| *x == c).expect("column");
-    let g = col(Column::Span(Method::Gouraud));
-    let gv = col(Column::VertexGouraud);
-    let e = col(Column::Span(Method::Euler));
-    let ce = col(Column::Span(Method::CorrectedEuler));
+    let col = |c: Shader| COLUMNS.iter().position(|x| *x == c).expect("column");
+    let g = col(Shader::Span(Method::Gouraud));
+    let gv = col(Shader::VertexGouraud);
+    let e = col(Shader::Span(Method::Euler));
+    let ce = col(Shader::Span(Method::CorrectedEuler));
     let _ = writeln!(
         s,
         "## Table 2: deviation from Phong in 8-bit levels (mean / max), ours beside the paper's\n"
@@ -286,7 +286,7 @@ fn report(exp: &Experiment, results: &[TorusResult], secs: f64) -> String {
     );
     let mut head = String::from("| polygons |");
     let mut rule = String::from("|---:|");
-    for c in Column::ALL.iter().skip(1) {
+    for c in COLUMNS.iter().skip(1) {
         let _ = write!(head, " {} |", c.label());
         rule.push_str("---:|");
     }
@@ -327,8 +327,8 @@ fn report(exp: &Experiment, results: &[TorusResult], secs: f64) -> String {
         );
         let _ = writeln!(s, "| method | span pixels | f32 level ≠ exact level | of which within rounding of a level boundary |");
         let _ = writeln!(s, "|---|---:|---:|---:|");
-        for (c, col) in Column::ALL.iter().enumerate() {
-            if *col == Column::VertexGouraud || x.mismatches.is_empty() {
+        for (c, col) in COLUMNS.iter().enumerate() {
+            if *col == Shader::VertexGouraud || x.mismatches.is_empty() {
                 continue;
             }
             let _ = writeln!(
@@ -368,7 +368,7 @@ fn table1_csv(results: &[TorusResult]) -> String {
 fn table2_csv(results: &[TorusResult]) -> String {
     let mut s = String::from("polygons,method,pixels,mean_deviation,max_deviation\n");
     for r in results {
-        for (c, d) in Column::ALL.iter().zip(&r.stats.deviation) {
+        for (c, d) in COLUMNS.iter().zip(&r.stats.deviation) {
             let _ = writeln!(
                 s,
                 "{},{},{},{:.6},{}",
@@ -411,29 +411,29 @@ fn pictures(exp: &Experiment, out: &OutDir) -> Result<(), CliError> {
         save_png(img, &p).map_err(|e| io_err(&out.dir().join(name), e))
     };
     save(
-        &shaded_image(&frame, Column::Span(Method::CorrectedEuler), look),
+        &shaded_image(&frame, Shader::Span(Method::CorrectedEuler), look),
         "fig4_torus800_corrected_euler.png",
     )?;
     save(
-        &shaded_image(&frame, Column::Span(Method::Phong), look),
+        &shaded_image(&frame, Shader::Span(Method::Phong), look),
         "fig5_torus800_phong.png",
     )?;
     let diffuse = Look { ks: 0.0, ..look };
     save(
-        &shaded_image(&frame, Column::Span(Method::Gouraud), diffuse),
+        &shaded_image(&frame, Shader::Span(Method::Gouraud), diffuse),
         "torus800_gouraud_diffuse.png",
     )?;
-    let phong = Column::Span(Method::Phong);
+    let phong = Shader::Span(Method::Phong);
     save(
-        &difference_image(&frame, Column::Span(Method::CorrectedEuler), phong),
+        &difference_image(&frame, Shader::Span(Method::CorrectedEuler), phong),
         "diff_torus800_corrected_euler.png",
     )?;
     save(
-        &difference_image(&frame, Column::Span(Method::Gouraud), phong),
+        &difference_image(&frame, Shader::Span(Method::Gouraud), phong),
         "diff_torus800_gouraud.png",
     )?;
     save(
-        &difference_image(&frame, Column::Span(Method::Euler), phong),
+        &difference_image(&frame, Shader::Span(Method::Euler), phong),
         "diff_torus800_euler.png",
     )?;
     scanline_figures(&scene, out)

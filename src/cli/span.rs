@@ -2,19 +2,20 @@
 
 use super::{parse_whole, CliError};
 use clap::Args;
-use phong_approx::adaptive::{self, Decision};
-use phong_approx::angular::CosTable;
+use phong_approx::adaptive::Decision;
+use phong_approx::method::Prepared;
 use phong_approx::conformance::shown;
 use phong_approx::parse::{parse_rational, parse_vec3};
 use phong_approx::quantize::level;
-use phong_approx::reference::level::phong_level_exact;
 use phong_approx::{BigRational, Input, Method, Real, Scalar, Span, SpanError, Vec3};
 use serde_json::{json, Value};
 
 /// Arguments of `phong-approx span`.
 #[derive(Args, Debug)]
 pub struct SpanArgs {
-    /// phong, duff, symmetric-phong, gouraud, euler, corrected-euler, adaptive or angular.
+    /// A method of the catalogue: phong, duff, symmetric-phong, gouraud, euler,
+    /// corrected-euler, adaptive, angular, angular-table<SIZE>, spherical, binary or
+    /// bishop-weimer.
     #[arg(long, value_name = "NAME")]
     pub method: String,
     /// Unit normal at the left edge, N_a: three decimals or fractions, e.g. 0.6,0,0.8.
@@ -98,7 +99,9 @@ struct Outcome {
     /// For the exact scalar and the methods that use only field operations: each
     /// value as an exact fraction.
     fractions: Option<Vec<String>>,
-    levels: Vec<u8>,
+    /// `None` where the level is not known (a value within its error of a level
+    /// boundary).
+    levels: Vec<Option<u8>>,
     adaptive: Option<(String, Option<String>, Option<u32>, &'static str)>,
 }
 
@@ -136,19 +139,31 @@ fn parse_request(a: &SpanArgs) -> Result<(Request, ScalarKind, bool, u32), CliEr
     let n = parse_whole("--steps", &a.steps, 1, 1 << 24, "n")?;
     let kd = parse_rational(&a.kd).map_err(|e| CliError::arg("--kd", e))?;
     if let Some(t) = &a.table_size {
-        if method != Method::Angular {
+        let size = parse_whole("--table-size", t, 2, 1 << 24, "the table size")?;
+        method = match method {
+            Method::Angular => Method::AngularTable(size),
+            Method::AngularTable(s) if s == size => method,
+            Method::AngularTable(s) => {
+                return Err(CliError::arg(
+                    "--table-size",
+                    format!("{size} contradicts the method's own table size, {s}"),
+                ))
+            }
+            _ => {
+                return Err(CliError::arg(
+                    "--table-size",
+                    "only the angular method uses a table",
+                ))
+            }
+        };
+    }
+    if let Method::AngularTable(size) = method {
+        if !(2..=1 << 24).contains(&size) {
             return Err(CliError::arg(
-                "--table-size",
-                "only the angular method uses a table",
+                "--method",
+                format!("the table size must be between 2 and 16777216 (got {size})"),
             ));
         }
-        method = Method::AngularTable(parse_whole(
-            "--table-size",
-            t,
-            2,
-            1 << 24,
-            "the table size",
-        )?);
     }
     let precision = match &a.precision {
         Some(p) if scalar == ScalarKind::Mpfr => {
@@ -271,23 +286,12 @@ fn compute<T: Real>(r: &Request) -> Result<Computed<T>, CliError> {
     }
     .map_err(|e| span_error(e, r.normalize))?;
     let mut out = vec![T::zero(); span.len()];
-    let decision = match r.method {
-        Method::Adaptive => Some(
-            adaptive::shade(&span, &T::from_rational(&r.kd), &mut out)
-                .map_err(|e| CliError::arg("span", e))?,
-        ),
-        Method::AngularTable(size) => {
-            let table = CosTable::new(size).map_err(|e| CliError::arg("--table-size", e))?;
-            phong_approx::angular::shade_table(&span, &table, &mut out)
-                .map_err(|e| CliError::arg("span", e))?;
-            None
-        }
-        m => {
-            m.shade(&span, &mut out)
-                .map_err(|e| CliError::arg("span", e))?;
-            None
-        }
-    };
+    let prep = Prepared::new(r.method, T::from_rational(&r.kd))
+        .map_err(|e| CliError::arg("--table-size", e))?;
+    let decision = r
+        .method
+        .run(&span, &prep, &mut out)
+        .map_err(|e| span_error(e, r.normalize))?;
     Ok((span, out, decision))
 }
 
@@ -295,13 +299,13 @@ fn outcome<T: Real>(
     r: &Request,
     values: &[T],
     decision: Option<Decision<T>>,
-    levels: Option<Vec<u8>>,
+    levels: Option<Vec<Option<u8>>>,
 ) -> Outcome {
     let fmt = |v: &T| v.to_decimal(r.digits);
     Outcome {
         values: values.iter().map(fmt).collect(),
         fractions: None,
-        levels: levels.unwrap_or_else(|| values.iter().map(level).collect()),
+        levels: levels.unwrap_or_else(|| values.iter().map(|v| Some(level(v))).collect()),
         adaptive: decision.map(|d| {
             (
                 fmt(&d.delta),
@@ -380,6 +384,7 @@ fn check_digits<T: Real>(r: &Request, values: &[T], bits: i64) -> Result<(), Cli
 }
 
 /// `⌈log2(1/q_min)⌉` (0 when `q_min ≥ 1`), from the span's own `q_min`.
+#[cfg(feature = "mpfr")]
 fn q_bits<T: Real>(span: &Span<T>) -> i64 {
     let q = span.q_min().to_f64();
     if q >= 1.0 {
@@ -391,42 +396,34 @@ fn q_bits<T: Real>(span: &Span<T>) -> i64 {
     }
 }
 
-/// The bits known of the exact values: square roots, `acos` and `cos` are computed to
-/// 2^-256, so `p/√q` to `2^-256/√q_min` and the angular values to `2^-254`;
-/// `--normalize` makes the inputs unit only to 2^-240. Rational methods on exact
-/// inputs are exact (`None`: every digit is known).
+/// The bits known of the exact values ([`Method::exact_bits`]); `--normalize` makes
+/// the inputs unit only to 2^-240. Rational methods on exact inputs are exact
+/// (`None`: every digit is known).
 fn exact_bits(r: &Request, span: &Span<BigRational>) -> Option<i64> {
-    if r.method.is_rational() && !r.normalize {
-        return None;
+    match r.method.exact_bits(span) {
+        None if r.normalize => Some(180),
+        None => None,
+        Some(bits) if r.normalize => Some(bits.min(180)),
+        Some(bits) => Some(bits),
     }
-    let mut bits: i64 = 250;
-    if matches!(
-        r.method,
-        Method::Phong | Method::Duff | Method::SymmetricPhong
-    ) {
-        bits -= q_bits(span) / 2 + 2;
-    }
-    if r.normalize {
-        bits = bits.min(180);
-    }
-    Some(bits)
 }
 
 /// The bits known of MPFR values at `precision` bits: every operation is correctly
 /// rounded, and the recurrences' rounding grows at most like `n²` steps of the
-/// unit roundoff (docs/float.md §6–8), divided by `q_min` for the methods that
-/// normalize; 8 bits of margin.
+/// unit roundoff (docs/float.md §6–8), plus `q_bits` for the Phong-valued methods and
+/// what [`Method::exact_bits`] says the exact run loses for the others (`span`, the
+/// exact span of the request); 8 bits of margin.
 #[cfg(feature = "mpfr")]
-fn mpfr_bits(r: &Request, precision: u32, q_bits: i64) -> i64 {
+fn mpfr_bits(r: &Request, span: Option<&Span<BigRational>>, precision: u32, q_bits: i64) -> i64 {
     let n_bits = 64 - u64::from(r.n + 1).leading_zeros() as i64;
-    let mut bits = i64::from(precision) - 8 - 2 * n_bits;
-    if matches!(
-        r.method,
-        Method::Phong | Method::Duff | Method::SymmetricPhong
-    ) {
-        bits -= q_bits;
-    }
-    bits
+    // In MPFR `q` is rounded too: the Phong-valued methods lose all of `q_bits`;
+    // the others what the exact run loses (`Method::exact_bits`).
+    let loss = if r.method.is_phong_valued() {
+        q_bits
+    } else {
+        span.map_or(0, |s| r.method.exact_bits(s).map_or(0, |b| 250 - b))
+    };
+    i64::from(precision) - 8 - 2 * n_bits - loss
 }
 
 fn run_exact(r: &Request) -> Result<Outcome, CliError> {
@@ -434,15 +431,11 @@ fn run_exact(r: &Request) -> Result<Outcome, CliError> {
     if let Some(bits) = exact_bits(r, &span) {
         check_digits(r, &values, bits)?;
     }
-    // Phong-valued methods: decide the exact level of p/√q with rationals only.
-    let levels = match r.method {
-        Method::Phong | Method::Duff | Method::SymmetricPhong if !r.normalize => Some(
-            (0..=span.n)
-                .map(|i| phong_level_exact(&span.p_at(i), &span.q_at(i)).unwrap_or(0))
-                .collect(),
-        ),
-        _ => None,
-    };
+    // Phong-valued methods: the exact level of p/√q decided with rationals only.
+    let levels = (!r.normalize).then(|| {
+        let one = BigRational::from_integer(1.into());
+        r.method.exact_levels(&span, &values, &one)
+    });
     let mut o = outcome(r, &values, decision, levels);
     if r.method.is_rational() {
         o.fractions = Some(values.iter().map(ToString::to_string).collect());
@@ -455,8 +448,23 @@ fn run_mpfr(r: &Request, precision: u32) -> Result<Outcome, CliError> {
     use phong_approx::reference::mpfr::{with_precision, Mpfr};
     with_precision(precision, || {
         let (span, values, decision) = compute::<Mpfr>(r)?;
-        check_digits(r, &values, mpfr_bits(r, precision, q_bits(&span)))?;
-        Ok(outcome(r, &values, decision, None))
+        let exact = if r.normalize {
+            None
+        } else {
+            Span::new(r.na.clone(), r.nb.clone(), r.l.clone(), r.n).ok()
+        };
+        let bits = mpfr_bits(r, exact.as_ref(), precision, q_bits(&span));
+        check_digits(r, &values, bits)?;
+        // A level is printed only where the value's error cannot cross a boundary.
+        let e = BigRational::new(1.into(), num_bigint::BigInt::from(1) << bits.max(0) as usize);
+        let levels = values
+            .iter()
+            .map(|v| {
+                v.to_rational()
+                    .and_then(|x| phong_approx::reference::level::level_within(&x, &e))
+            })
+            .collect();
+        Ok(outcome(r, &values, decision, Some(levels)))
     })
 }
 
@@ -469,7 +477,7 @@ fn run_mpfr(_r: &Request, _precision: u32) -> Result<Outcome, CliError> {
 enum Field<'a> {
     One(Value),
     Strings(&'a [String]),
-    Levels(&'a [u8]),
+    Levels(&'a [Option<u8>]),
 }
 
 /// Writes the object as `serde_json`'s pretty printer would, streaming the arrays in
@@ -482,7 +490,11 @@ fn write_json(fields: &[(&str, Field)]) -> Result<(), CliError> {
         match field {
             Field::One(v) => outp!("{v}")?,
             Field::Strings(items) => write_array(items.iter().map(|x| json!(x).to_string()))?,
-            Field::Levels(items) => write_array(items.iter().map(u8::to_string))?,
+            Field::Levels(items) => write_array(
+                items
+                    .iter()
+                    .map(|l| l.map_or_else(|| "null".to_string(), |l| l.to_string())),
+            )?,
         }
     }
     outln!("\n}}")
@@ -585,6 +597,9 @@ pub fn run(a: &SpanArgs) -> Result<(), CliError> {
         let width = o.values.iter().map(String::len).max().unwrap_or(5).max(5);
         outln!("{:>6}  {:<width$}  level", "i", "value")?;
         for (i, (v, l)) in o.values.iter().zip(&o.levels).enumerate() {
+            // An unknown level prints as "?" (its value is within its error of a
+            // level boundary).
+            let l = l.map_or_else(|| "?".to_string(), |l| l.to_string());
             outln!("{i:>6}  {v:<width$}  {l:>5}")?;
         }
     }

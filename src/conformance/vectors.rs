@@ -4,7 +4,6 @@
 use crate::adaptive;
 use crate::method::Method;
 use crate::quantize::level;
-use crate::reference::level::phong_level_exact;
 use crate::reference::unit::unit_from_stereo;
 use crate::scalar::Scalar;
 use crate::span::Span;
@@ -20,15 +19,13 @@ pub const FORMAT_VERSION: &str = "1.0.0";
 /// Significant digits of the expected values.
 pub const DIGITS: usize = 30;
 
-/// The methods every case carries expected values for.
-pub const METHODS: [Method; 9] = Method::ALL;
+/// The methods every case carries expected values for: the whole catalogue.
+pub const METHODS: [Method; 12] = Method::ALL;
 
-/// The name of a method in the vector files (`angular-table256` for the tabled one).
+/// The name of a method in the vector files: its catalogue name
+/// ([`Method::name`], e.g. `angular-table256`), which parses back.
 pub fn method_key(m: Method) -> String {
-    match m {
-        Method::AngularTable(n) => format!("angular-table{n}"),
-        m => m.name().to_string(),
-    }
+    m.name().into_owned()
 }
 
 /// A vector as exact fractions and as the nearest `f32` and `f64`.
@@ -126,20 +123,30 @@ fn input(v: &Vec3<BigRational>) -> VectorInput {
     }
 }
 
+/// Decided levels, or the message naming the first pixel whose level the exact run
+/// cannot decide (its value within its error of a level boundary).
+fn decided(levels: Vec<Option<u8>>, method: Method, what: &str) -> Result<Vec<u8>, String> {
+    levels
+        .into_iter()
+        .enumerate()
+        .map(|(i, l)| {
+            l.ok_or_else(|| {
+                format!("{method}: the {what} level of pixel {i} is not decided by the exact run")
+            })
+        })
+        .collect()
+}
+
 /// The exact expectations of `method` on `span` (values to [`DIGITS`] digits; levels
-/// decided exactly for the Phong-valued methods).
-fn expected(method: Method, span: &Span<BigRational>) -> Expected {
-    let values = method.values(span).expect("valid span");
-    let levels = match method {
-        Method::Phong | Method::Duff | Method::SymmetricPhong => (0..=span.n)
-            .map(|i| phong_level_exact(&span.p_at(i), &span.q_at(i)).expect("q > 0"))
-            .collect(),
-        _ => values.iter().map(level).collect(),
-    };
-    Expected {
+/// decided exactly, [`Method::exact_levels`]).
+fn expected(method: Method, span: &Span<BigRational>) -> Result<Expected, String> {
+    let values = method.values(span).map_err(|e| format!("{method}: {e}"))?;
+    let one = BigRational::from_integer(1.into());
+    let levels = decided(method.exact_levels(span, &values, &one), method, "diffuse")?;
+    Ok(Expected {
         values: values.iter().map(|v| v.to_decimal(DIGITS)).collect(),
         levels,
-    }
+    })
 }
 
 /// A case from exact unit inputs.
@@ -151,7 +158,8 @@ fn make_case(
     l: Vec3<BigRational>,
     n: u32,
     h: Option<(Vec3<BigRational>, u32)>,
-) -> Case {
+) -> Result<Case, String> {
+    let at = |e: String| format!("{id}: {e}");
     let span =
         Span::new(na.clone(), nb.clone(), l.clone(), n).expect("vector cases are valid spans");
     let q_min = (0..=n)
@@ -160,33 +168,32 @@ fn make_case(
     let d = adaptive::decide(&span, &BigRational::from_i64(1));
     let expected = METHODS
         .iter()
-        .map(|&m| (method_key(m), self::expected(m, &span)))
-        .collect();
-    let specular = h.map(|(h, s)| {
+        .map(|&m| Ok((method_key(m), self::expected(m, &span)?)))
+        .collect::<Result<_, String>>()
+        .map_err(at)?;
+    let specular = h.map(|(h, s)| -> Result<SpecularCase, String> {
         let span_h = Span::new(na.clone(), nb.clone(), h.clone(), n).expect("valid half vector");
         let expected = METHODS
             .iter()
             .map(|&m| {
-                let v: Vec<BigRational> = m
-                    .values(&span_h)
-                    .expect("valid")
-                    .iter()
-                    .map(|x| power(x, s))
-                    .collect();
+                let base = m.values(&span_h).map_err(|e| format!("{m}: {e}"))?;
+                let v: Vec<BigRational> = base.iter().map(|x| power(x, s)).collect();
+                let levels = decided(m.exact_power_levels(&span_h, &base, s), m, "specular")?;
                 let e = Expected {
                     values: v.iter().map(|x| x.to_decimal(DIGITS)).collect(),
-                    levels: v.iter().map(level).collect(),
+                    levels,
                 };
-                (method_key(m), e)
+                Ok((method_key(m), e))
             })
-            .collect();
-        SpecularCase {
+            .collect::<Result<_, String>>()?;
+        Ok(SpecularCase {
             h: input(&h),
             s,
             expected,
-        }
+        })
     });
-    Case {
+    let specular = specular.transpose().map_err(at)?;
+    Ok(Case {
         id,
         comment: comment.to_string(),
         na: input(&na),
@@ -198,7 +205,7 @@ fn make_case(
         decision: d.choice.name().to_string(),
         expected,
         specular,
-    }
+    })
 }
 
 fn q(n: i64, d: i64) -> BigRational {
@@ -239,7 +246,7 @@ impl Rng {
 
 /// The `typical` set: spans like a torus produces — unit normals a few degrees apart,
 /// a light anywhere in front, 2 to 64 steps.
-fn typical() -> Vec<Case> {
+fn typical() -> Vec<Result<Case, String>> {
     let mut rng = Rng(0x5EED_0001);
     let mut cases = Vec::new();
     for k in 0..40 {
@@ -275,7 +282,7 @@ type EdgeCase = (
 );
 
 /// The `edge` set: the cases an implementation most often gets wrong.
-fn edge() -> Vec<Case> {
+fn edge() -> Vec<Result<Case, String>> {
     let up = stereo(0, 0, 1);
     let tilt = stereo(1, 0, 3); // (3/5, 0, 4/5)
     let tilt_back = stereo(-1, 0, 3); // (−3/5, 0, 4/5)
@@ -400,7 +407,7 @@ fn edge() -> Vec<Case> {
 /// The `paper` set: the spans behind Figures 1–3 — unit normals 60° apart in the x–z
 /// plane (exact rational approximations, 60.0000° to 10^-4), the reproduction's light,
 /// and the same with specular highlights.
-fn paper() -> Vec<Case> {
+fn paper() -> Vec<Result<Case, String>> {
     // tan(15°) = 2 − √3 ≈ 0.267949: stereographic parameters of (∓sin 30°, 0, cos 30°).
     let na = stereo(-267_949, 0, 1_000_000);
     let nb = stereo(267_949, 0, 1_000_000);
@@ -451,7 +458,8 @@ fn paper() -> Vec<Case> {
 /// Generates the vector file of `set`.
 ///
 /// # Errors
-/// The unknown set's name.
+/// The unknown set's name; a case whose level at some pixel the exact run cannot
+/// decide (named, with the method and pixel).
 pub fn generate(set: &str) -> Result<VectorFile, String> {
     let cases = match set {
         "typical" => typical(),
@@ -463,12 +471,13 @@ pub fn generate(set: &str) -> Result<VectorFile, String> {
             ))
         }
     };
+    let cases = cases.into_iter().collect::<Result<Vec<Case>, String>>()?;
     Ok(VectorFile {
         version: FORMAT_VERSION.to_string(),
         generator: format!("phong-approx {}", env!("CARGO_PKG_VERSION")),
         set: set.to_string(),
         notes: "Inputs are exact rational unit vectors (inverse stereographic projection). Expected values are computed exactly in rationals; \
-                Phong-valued methods (phong, duff, symmetric-phong) and angular ones use square roots, arc cosines and cosines accurate to 2^-256, \
+                Phong-valued methods (phong, duff, symmetric-phong), the angular ones and the related methods (spherical, binary, bishop-weimer) use square roots, arc cosines and cosines accurate to 2^-256, \
                 and are printed to 30 significant digits. Levels are floor(255*clamp(v,0,1)), decided exactly (for p/sqrt(q) by comparing squares). \
                 Recurrences are unclamped; specular values are max(0, v)^s."
             .to_string(),

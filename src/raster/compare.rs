@@ -6,11 +6,11 @@
 //! Seiler's methods are defined over a triangle's affine normal field. Every
 //! attribute is evaluated at pixel centres from that field:
 //!
-//! - the reference, [`Shader::Phong`], normalizes the field's normal at each pixel
+//! - the reference, [`Shader::PhongPixel`], normalizes the field's normal at each pixel
 //!   centre, in `f64`;
 //! - the span methods get the field's normal at the first and last covered pixel of
 //!   a row, normalized, as their `N_a` and `N_b` (so their span Phong differs from the
-//!   reference only by which normals are normalized: [`Shader::PhongSpan`] measures
+//!   reference only by which normals are normalized: `Shader::Span(Method::Phong)` measures
 //!   it);
 //! - the polygon methods (vertex Gouraud, vertex angles, Bishop–Weimer, Seiler) set up
 //!   once per triangle and step along each row by forward differences.
@@ -21,14 +21,14 @@
 use super::mesh::Mesh;
 use super::render::{project, Deviation, Scene};
 use super::scan::{rows, ScreenVertex};
-use crate::adaptive::{self, Choice};
-use crate::angular::CosTable;
+use crate::adaptive::Choice;
 use crate::quantize::level;
 use crate::related::bishop_weimer::Taylor;
 use crate::related::power::PowerTable;
 use crate::related::seiler::Quadratic;
 use crate::related::triangle::{Affine, Triangle};
-use crate::related::{binary, spherical, vertex_angle};
+use crate::method::Prepared;
+use crate::related::vertex_angle;
 use crate::scalar::Real;
 use crate::{Method, Span, Vec3};
 use glam::Vec3 as G3;
@@ -36,120 +36,38 @@ use glam::Vec3 as G3;
 /// The shininess values of the specular tables.
 pub const SHININESS: [u32; 3] = [10, 50, 200];
 
-/// A column of the comparison.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Shader {
-    /// Phong, the normal of the polygon's field normalized at every pixel (reference).
-    Phong,
-    /// The paper's span Phong: unit edge normals, `p/√q` per pixel (eq. 4).
-    PhongSpan,
-    /// Duff's forward differences (eqs. 5–7).
-    Duff,
-    /// Half the square roots (§4).
-    SymmetricPhong,
-    /// Behrens' fence shading: exact at the span's edges, linear between.
-    Fence,
-    /// Classic Gouraud: vertex intensities interpolated over the polygon.
-    VertexGouraud,
-    /// Euler (eqs. 12–14).
-    Euler,
-    /// Corrected Euler (eqs. 15–17).
-    CorrectedEuler,
-    /// §5's adaptive scheme: Gouraud where the δ test allows, else corrected Euler.
-    Adaptive,
-    /// The second source at span level: cosine of the linearly interpolated angle.
-    Angular,
-    /// The same with the 256-entry cosine table.
-    AngularTable,
-    /// The second source as meant: vertex angles over the polygon, byte table.
-    VertexAngle,
-    /// Kuijk & Blake: spherical interpolation, Chebyshev recurrence.
-    Spherical,
-    /// Ouyang & Maynard: binary interpolation.
-    Binary,
-    /// Bishop & Weimer: 2-D Taylor expansion at the centroid, forward differences.
-    BishopWeimer,
-    /// Seiler: six-point quadratic, forward differences.
-    Seiler,
-}
+pub use super::shader::Shader;
 
-impl Shader {
-    /// Every column, the reference first.
-    pub const ALL: [Shader; 16] = [
-        Shader::Phong,
-        Shader::PhongSpan,
-        Shader::Duff,
-        Shader::SymmetricPhong,
-        Shader::Fence,
-        Shader::VertexGouraud,
-        Shader::Euler,
-        Shader::CorrectedEuler,
-        Shader::Adaptive,
-        Shader::Angular,
-        Shader::AngularTable,
-        Shader::VertexAngle,
-        Shader::Spherical,
-        Shader::Binary,
-        Shader::BishopWeimer,
-        Shader::Seiler,
-    ];
+/// Every column of the comparison, the reference first: the span methods of the
+/// catalogue interleaved with the polygon methods they are compared with.
+pub const COLUMNS: [Shader; 16] = [
+    Shader::PhongPixel,
+    Shader::Span(Method::Phong),
+    Shader::Span(Method::Duff),
+    Shader::Span(Method::SymmetricPhong),
+    Shader::Span(Method::Gouraud),
+    Shader::VertexGouraud,
+    Shader::Span(Method::Euler),
+    Shader::Span(Method::CorrectedEuler),
+    Shader::Span(Method::Adaptive),
+    Shader::Span(Method::Angular),
+    Shader::Span(Method::AngularTable(crate::method::SOURCE_TABLE)),
+    Shader::VertexAngle,
+    Shader::Span(Method::Spherical),
+    Shader::Span(Method::Binary),
+    Shader::BishopWeimerTriangle,
+    Shader::Seiler,
+];
 
-    /// A short label for tables and file names.
-    pub fn label(self) -> &'static str {
-        match self {
-            Shader::Phong => "phong",
-            Shader::PhongSpan => "phong-span",
-            Shader::Duff => "duff",
-            Shader::SymmetricPhong => "symmetric-phong",
-            Shader::Fence => "fence",
-            Shader::VertexGouraud => "gouraud-vertex",
-            Shader::Euler => "euler",
-            Shader::CorrectedEuler => "corrected-euler",
-            Shader::Adaptive => "adaptive",
-            Shader::Angular => "angular-span",
-            Shader::AngularTable => "angular-span-table",
-            Shader::VertexAngle => "vertex-angle",
-            Shader::Spherical => "spherical",
-            Shader::Binary => "binary",
-            Shader::BishopWeimer => "bishop-weimer",
-            Shader::Seiler => "seiler",
-        }
-    }
-
-    /// Who the method is by.
-    pub fn source(self) -> &'static str {
-        match self {
-            Shader::Phong | Shader::PhongSpan => "Phong 1975",
-            Shader::Duff => "Duff 1979",
-            Shader::SymmetricPhong | Shader::Euler | Shader::CorrectedEuler | Shader::Adaptive => {
-                "Hast, Barrera, Bengtsson"
-            }
-            Shader::Fence => "Behrens 1994",
-            Shader::VertexGouraud => "Gouraud 1971",
-            Shader::Angular | Shader::AngularTable | Shader::VertexAngle => "Mortensen 1995",
-            Shader::Spherical => "Kuijk & Blake 1989",
-            Shader::Binary => "Ouyang & Maynard 1996",
-            Shader::BishopWeimer => "Bishop & Weimer 1986",
-            Shader::Seiler => "Seiler 1998",
-        }
-    }
-
-    /// Whether part of the method is a reconstruction (see `docs/comparison.md`).
-    pub fn reconstructed(self) -> bool {
-        matches!(self, Shader::Spherical | Shader::Binary | Shader::Seiler)
-    }
-
-    /// Whether the method reads the specular power from a table (Bishop–Weimer and
-    /// Seiler: [`PowerTable`]; the vertex-angle method: its byte table holds `cos`, so
-    /// the power of the looked-up value is the table of `cos^s`).
-    pub fn power_from_table(self) -> bool {
-        matches!(self, Shader::BishopWeimer | Shader::Seiler)
-    }
-
-    /// The position in [`Shader::ALL`].
-    pub fn index(self) -> usize {
-        Shader::ALL.iter().position(|s| *s == self).expect("in ALL")
-    }
+/// The position of `sh` in [`COLUMNS`].
+///
+/// # Panics
+/// If `sh` is not a column of the comparison.
+pub fn index(sh: Shader) -> usize {
+    COLUMNS
+        .iter()
+        .position(|s| *s == sh)
+        .expect("a column of the comparison")
 }
 
 /// One triangle set up for one direction (`L` or `H`).
@@ -241,7 +159,7 @@ pub(crate) fn shade_row<T: Real>(
     x0: f64,
     y: f64,
     n: u32,
-    table: &CosTable<T>,
+    prep: &Prepared<T>,
     which: &[Shader],
     out: &mut [Vec<T>],
 ) -> Option<RowInfo<T>> {
@@ -275,39 +193,27 @@ pub(crate) fn shade_row<T: Real>(
     let p_b = nb.dot(&dir.dir);
     let mut choice = Choice::Gouraud;
     for &sh in which {
-        let o = &mut out[sh.index()];
+        let o = &mut out[index(sh)];
         o.clear();
         o.resize(len, T::zero());
         match (sh, &span) {
-            (Shader::Phong, _) => {
+            (Shader::PhongPixel, _) => {
                 for (j, v) in o.iter_mut().enumerate() {
                     let x = to_t::<T>(x0 + j as f64);
                     *v = unit(s.normal(&x, &ty))?.dot(&dir.dir);
                 }
             }
             (Shader::VertexGouraud, _) => dir.gouraud.shade_row(&tx0, &ty, o),
-            (Shader::VertexAngle, _) => vertex_angle::shade_row(&dir.angle, table, &tx0, &ty, o),
-            (Shader::BishopWeimer, _) => dir.taylor.shade_row(&tx0, &ty, o),
+            (Shader::VertexAngle, _) => {
+                vertex_angle::shade_row(&dir.angle, prep.table.as_ref()?, &tx0, &ty, o)
+            }
+            (Shader::BishopWeimerTriangle, _) => dir.taylor.shade_row(&tx0, &ty, o),
             (Shader::Seiler, _) => dir.seiler.shade_row(&tx0, &ty, o),
-            (_, None) => o[0] = p_a.clone(),
-            (sh, Some(span)) => {
-                let r = match sh {
-                    Shader::PhongSpan => Method::Phong.shade(span, o),
-                    Shader::Duff => Method::Duff.shade(span, o),
-                    Shader::SymmetricPhong => Method::SymmetricPhong.shade(span, o),
-                    Shader::Fence => Method::Gouraud.shade(span, o),
-                    Shader::Euler => Method::Euler.shade(span, o),
-                    Shader::CorrectedEuler => Method::CorrectedEuler.shade(span, o),
-                    Shader::Adaptive => adaptive::shade(span, &T::one(), o).map(|dec| {
-                        choice = dec.choice;
-                    }),
-                    Shader::Angular => crate::angular::shade(span, o),
-                    Shader::AngularTable => crate::angular::shade_table(span, table, o),
-                    Shader::Spherical => spherical::shade(span, o),
-                    Shader::Binary => binary::shade(span, o),
-                    _ => Ok(()),
-                };
-                r.ok()?;
+            (Shader::Span(_), None) => o[0] = p_a.clone(),
+            (Shader::Span(m), Some(span)) => {
+                if let Some(d) = m.run(span, prep, o).ok()? {
+                    choice = d.choice;
+                }
             }
         }
         if o.iter().any(|v| !v.is_finite()) {
@@ -323,7 +229,7 @@ pub(crate) fn shade_row<T: Real>(
 /// Per-shader accumulators of the comparison.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct CompareStats {
-    /// Diffuse: per shader of [`Shader::ALL`], deviation from the reference in levels.
+    /// Diffuse: per shader of [`COLUMNS`], deviation from the reference in levels.
     pub diffuse: Vec<Deviation>,
     /// Specular `max(0, N·H)^s`, per shininess of [`SHININESS`], per shader.
     pub specular: Vec<Vec<Deviation>>,
@@ -354,7 +260,7 @@ pub struct DeltaCount {
 
 impl CompareStats {
     fn empty() -> Self {
-        let cols = Shader::ALL.len();
+        let cols = COLUMNS.len();
         CompareStats {
             diffuse: vec![Deviation::default(); cols],
             specular: vec![vec![Deviation::default(); cols]; SHININESS.len()],
@@ -418,7 +324,7 @@ pub struct CompareFrame {
     /// Height.
     pub height: u32,
     /// Per shader, per pixel: the picture level (only with
-    /// [`CompareOptions::pictures`]; the reference is [`Shader::Phong`]'s).
+    /// [`CompareOptions::pictures`]; the reference is [`Shader::PhongPixel`]'s).
     pub picture: Vec<Vec<Option<u8>>>,
     /// The statistics.
     pub stats: CompareStats,
@@ -443,12 +349,12 @@ type RowLevels = Vec<[u8; 4]>;
 pub fn render_compare(mesh: &Mesh, scene: &Scene, f: u32, opts: CompareOptions) -> CompareFrame {
     let (w, h) = (scene.width, scene.height);
     let npix = (w * h) as usize;
-    let cols = Shader::ALL.len();
+    let cols = COLUMNS.len();
     let rot = scene.rotation(f);
     let verts = project(mesh, scene, &rot);
     let dirs = [scene.light, scene.half()];
-    let table32 = CosTable::<f32>::new(256).expect("256 entries");
-    let table64 = CosTable::<f64>::new(256).expect("256 entries");
+    let prep32 = Prepared::new(Method::AngularTable(crate::method::SOURCE_TABLE), 1.0f32).expect("256 entries");
+    let prep64 = Prepared::new(Method::AngularTable(crate::method::SOURCE_TABLE), 1.0f64).expect("256 entries");
     let powers: Vec<PowerTable> = SHININESS.iter().map(|&s| PowerTable::new(s)).collect();
     let mut depth = vec![f32::NEG_INFINITY; npix];
     // Per pixel: per shader the four levels; the reference's levels.
@@ -481,21 +387,21 @@ pub fn render_compare(mesh: &Mesh, scene: &Scene, f: u32, opts: CompareOptions) 
             let n = (row.x_last - row.x_first) as u32;
             let x0 = f64::from(row.x_first) + 0.5 - xc;
             let y = f64::from(row.y) + 0.5 - yc;
-            let Some(d32) = shade_row(&s32, 0, x0, y, n, &table32, &Shader::ALL, &mut out32) else {
+            let Some(d32) = shade_row(&s32, 0, x0, y, n, &prep32, &COLUMNS, &mut out32) else {
                 stats.dropped_rows += 1;
                 return;
             };
-            let Some(_) = shade_row(&s64, 0, x0, y, n, &table64, &[Shader::Phong], &mut out64)
+            let Some(_) = shade_row(&s64, 0, x0, y, n, &prep64, &[Shader::PhongPixel], &mut out64)
             else {
                 stats.dropped_rows += 1;
                 return;
             };
-            let Some(h32) = shade_row(&s32, 1, x0, y, n, &table32, &Shader::ALL, &mut spec32)
+            let Some(h32) = shade_row(&s32, 1, x0, y, n, &prep32, &COLUMNS, &mut spec32)
             else {
                 stats.dropped_rows += 1;
                 return;
             };
-            let Some(_) = shade_row(&s64, 1, x0, y, n, &table64, &[Shader::Phong], &mut spec64)
+            let Some(_) = shade_row(&s64, 1, x0, y, n, &prep64, &[Shader::PhongPixel], &mut spec64)
             else {
                 stats.dropped_rows += 1;
                 return;
@@ -510,13 +416,13 @@ pub fn render_compare(mesh: &Mesh, scene: &Scene, f: u32, opts: CompareOptions) 
                 // The δ test on N·H, and what the power does to it.
                 // Gouraud of N·H (the δ test's alternative: the linear N·H, power
                 // per pixel) against corrected Euler's levels of (N·H)^s.
-                let ce = &row_levels[Shader::CorrectedEuler.index()];
-                let lin = &spec32[Shader::Fence.index()];
+                let ce = &row_levels[index(Shader::Span(Method::CorrectedEuler))];
+                let lin = &spec32[index(Shader::Span(Method::Gouraud))];
                 for (k, pt) in powers.iter().enumerate() {
                     let same = lin
                         .iter()
                         .zip(ce.iter())
-                        .all(|(a, c)| level(&power(Shader::Euler, f64::from(*a), pt)) == c[k + 1]);
+                        .all(|(a, c)| level(&power(Shader::Span(Method::Euler), f64::from(*a), pt)) == c[k + 1]);
                     let dc = &mut stats.specular_delta[k];
                     if h32.choice == Choice::Gouraud {
                         dc.gouraud += 1;
@@ -537,9 +443,9 @@ pub fn render_compare(mesh: &Mesh, scene: &Scene, f: u32, opts: CompareOptions) 
                         let si = opts.shininess.min(SHININESS.len() - 1);
                         for c in 0..cols {
                             let (dv, sv) = if c == 0 {
-                                (out64[0][j], power(Shader::Phong, spec64[0][j], &powers[si]))
+                                (out64[0][j], power(Shader::PhongPixel, spec64[0][j], &powers[si]))
                             } else {
-                                let sh = Shader::ALL[c];
+                                let sh = COLUMNS[c];
                                 (
                                     f64::from(out32[c][j]),
                                     specular_value(
@@ -655,7 +561,7 @@ fn specular_value(
 ) -> f64 {
     match sh {
         // Behrens: the exact intensity at the span's edges, linear between.
-        Shader::Fence => {
+        Shader::Span(Method::Gouraud) => {
             let (a, b) = (
                 power(sh, f64::from(info.edges.0), pt),
                 power(sh, f64::from(info.edges.1), pt),
@@ -697,7 +603,7 @@ fn row_levels(
     powers: &[PowerTable],
 ) -> Vec<RowLevels> {
     let n = (len - 1) as u32;
-    Shader::ALL
+    COLUMNS
         .iter()
         .enumerate()
         .map(|(c, &sh)| {
@@ -707,7 +613,7 @@ fn row_levels(
                     if c == 0 {
                         l[0] = level(&out64[0][j]);
                         for (k, pt) in powers.iter().enumerate() {
-                            l[k + 1] = level(&power(Shader::Phong, spec64[0][j], pt));
+                            l[k + 1] = level(&power(Shader::PhongPixel, spec64[0][j], pt));
                         }
                     } else {
                         l[0] = level(&out32[c][j]);

@@ -14,4 +14,5 @@ pub mod mesh;
 pub mod pictures;
 pub mod precision;
 pub mod render;
+pub mod shader;
 pub mod scan;

@@ -1,7 +1,7 @@
 //! Pictures: PNG renders of a frame, difference heat maps, and SVG plots of one scan
 //! line (Figures 1–5 of the paper).
 
-use super::render::{Column, Frame};
+use super::render::{Frame, Shader, COLUMNS};
 use image::{Rgb, RgbImage};
 use plotters::prelude::*;
 use std::path::Path;
@@ -51,16 +51,16 @@ pub enum PictureError {
     },
 }
 
-fn column_index(col: Column) -> usize {
-    Column::ALL
+fn column_index(col: Shader) -> usize {
+    COLUMNS
         .iter()
         .position(|c| *c == col)
-        .expect("a column of Column::ALL")
+        .expect("a column of COLUMNS")
 }
 
 /// The frame as shaded by `col`: its diffuse 8-bit level, plus the specular term by
 /// the same method when the frame has one; a warm material on a dark background.
-pub fn shaded_image(frame: &Frame, col: Column, look: Look) -> RgbImage {
+pub fn shaded_image(frame: &Frame, col: Shader, look: Look) -> RgbImage {
     let c = column_index(col);
     let mut img = RgbImage::from_pixel(frame.width, frame.height, Rgb([24, 26, 32]));
     for y in 0..frame.height {
@@ -86,7 +86,7 @@ pub fn shaded_image(frame: &Frame, col: Column, look: Look) -> RgbImage {
 
 /// A heat map of `|level(col) − level(reference)|`: background dark, 0 grey, 1 yellow,
 /// 2 orange, 3 or more red.
-pub fn difference_image(frame: &Frame, col: Column, reference: Column) -> RgbImage {
+pub fn difference_image(frame: &Frame, col: Shader, reference: Shader) -> RgbImage {
     let (c, r) = (column_index(col), column_index(reference));
     let mut img = RgbImage::from_pixel(frame.width, frame.height, Rgb([24, 26, 32]));
     for idx in 0..(frame.width * frame.height) as usize {

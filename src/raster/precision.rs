@@ -1,7 +1,7 @@
 //! Low precision: every method in `f64`, `f32`, binary16 and fixed point
 //! ([`crate::lowp`]), on the torus harness and on long spans.
 //!
-//! - [`torus`]: the diffuse value of every shader of [`Shader::ALL`] over the
+//! - [`torus`]: the diffuse value of every shader of [`COLUMNS`] over the
 //!   800-polygon torus, set up and stepped entirely in the precision under test (pixel
 //!   coordinates are taken relative to each triangle's centroid in `f64` first, as an
 //!   integer rasterizer would), against per-pixel Phong in `f64` and against the same
@@ -10,14 +10,13 @@
 //!   accumulated error exceeds one 8-bit level: the set-up computed in `f64` and
 //!   rounded to the precision ([`Span::cast`]), the steps in the precision.
 
-use super::compare::{front_triangles, shade_row, FrontTriangle, Shader, TriangleSetup};
+use super::compare::{front_triangles, shade_row, FrontTriangle, TriangleSetup, COLUMNS};
 use super::mesh::Mesh;
 use super::render::{project, Deviation, Scene};
 use super::scan::rows;
-use crate::angular::CosTable;
 use crate::lowp::{f16, I16F16, I8F8};
 use crate::quantize::level;
-use crate::related::{binary, bishop_weimer, spherical};
+use crate::method::Prepared;
 use crate::scalar::Real;
 use crate::{Method, Span, Vec3};
 
@@ -27,7 +26,7 @@ pub const PRECISIONS: [&str; 5] = ["f64", "f32", "f16", "I16F16", "I8F8"];
 /// Per shader, in one precision.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct PrecisionStats {
-    /// Per shader of [`Shader::ALL`]: levels against per-pixel Phong in `f64`.
+    /// Per shader of [`COLUMNS`]: levels against per-pixel Phong in `f64`.
     pub vs_phong: Vec<Deviation>,
     /// Per shader: levels against the same shader in `f64` (the arithmetic's own
     /// error).
@@ -41,7 +40,7 @@ pub struct PrecisionStats {
 
 impl PrecisionStats {
     fn empty() -> Self {
-        let c = Shader::ALL.len();
+        let c = COLUMNS.len();
         PrecisionStats {
             vs_phong: vec![Deviation::default(); c],
             vs_f64: vec![Deviation::default(); c],
@@ -74,9 +73,9 @@ pub fn frame<T: Real>(mesh: &Mesh, scene: &Scene, f: u32) -> PrecisionStats {
     let rot = scene.rotation(f);
     let verts = project(mesh, scene, &rot);
     let dirs = [scene.light];
-    let table_t = CosTable::<T>::new(256).expect("256 entries");
-    let table64 = CosTable::<f64>::new(256).expect("256 entries");
-    let cols = Shader::ALL.len();
+    let table_t = Prepared::new(Method::AngularTable(crate::method::SOURCE_TABLE), T::one()).expect("256 entries");
+    let table64 = Prepared::new(Method::AngularTable(crate::method::SOURCE_TABLE), 1.0f64).expect("256 entries");
+    let cols = COLUMNS.len();
     let mut st = PrecisionStats::empty();
     let mut out_t: Vec<Vec<T>> = vec![Vec::new(); cols];
     let mut out64: Vec<Vec<f64>> = vec![Vec::new(); cols];
@@ -96,7 +95,7 @@ pub fn frame<T: Real>(mesh: &Mesh, scene: &Scene, f: u32) -> PrecisionStats {
             let n = (row.x_last - row.x_first) as u32;
             let x0 = f64::from(row.x_first) + 0.5 - xc;
             let y = f64::from(row.y) + 0.5 - yc;
-            if shade_row(&s64, 0, x0, y, n, &table64, &Shader::ALL, &mut out64).is_none() {
+            if shade_row(&s64, 0, x0, y, n, &table64, &COLUMNS, &mut out64).is_none() {
                 return;
             }
             st.rows += 1;
@@ -104,9 +103,9 @@ pub fn frame<T: Real>(mesh: &Mesh, scene: &Scene, f: u32) -> PrecisionStats {
             // All shaders at once; if that fails, each alone, to count per shader.
             let all_ok = st_t
                 .as_ref()
-                .and_then(|s| shade_row(s, 0, x0, y, n, &table_t, &Shader::ALL, &mut out_t))
+                .and_then(|s| shade_row(s, 0, x0, y, n, &table_t, &COLUMNS, &mut out_t))
                 .is_some();
-            for (c, &sh) in Shader::ALL.iter().enumerate() {
+            for (c, &sh) in COLUMNS.iter().enumerate() {
                 let values: &[T] = if all_ok {
                     &out_t[c]
                 } else {
@@ -171,50 +170,18 @@ pub fn torus(
     })
 }
 
-/// The span methods of the long-span study (the polygon methods step along a row by
-/// the same additions as the fence (vertex Gouraud, vertex angles) or as
-/// Bishop–Weimer (Seiler)).
-pub const SPAN_SHADERS: [Shader; 12] = [
-    Shader::PhongSpan,
-    Shader::Duff,
-    Shader::SymmetricPhong,
-    Shader::Fence,
-    Shader::Euler,
-    Shader::CorrectedEuler,
-    Shader::Adaptive,
-    Shader::Angular,
-    Shader::AngularTable,
-    Shader::Spherical,
-    Shader::Binary,
-    Shader::BishopWeimer,
-];
+/// The methods of the long-span study: every span method of the catalogue (the
+/// polygon methods step along a row by the same additions as Gouraud (vertex
+/// Gouraud, vertex angles) or as Bishop–Weimer (Seiler)).
+pub const SPAN_METHODS: [Method; 12] = Method::ALL;
 
 /// The span lengths tried by [`span_errors`] and [`longest`].
 pub const SPAN_LENGTHS: [u32; 13] = [1, 2, 4, 8, 16, 32, 64, 128, 256, 512, 1024, 2048, 4096];
 
-/// Shades `span` with span shader `sh`.
-pub fn shade_span<T: Real>(
-    sh: Shader,
-    span: &Span<T>,
-    table: &CosTable<T>,
-    out: &mut [T],
-) -> Option<()> {
-    let r = match sh {
-        Shader::PhongSpan => Method::Phong.shade(span, out),
-        Shader::Duff => Method::Duff.shade(span, out),
-        Shader::SymmetricPhong => Method::SymmetricPhong.shade(span, out),
-        Shader::Fence => Method::Gouraud.shade(span, out),
-        Shader::Euler => Method::Euler.shade(span, out),
-        Shader::CorrectedEuler => Method::CorrectedEuler.shade(span, out),
-        Shader::Adaptive => Method::Adaptive.shade(span, out),
-        Shader::Angular => crate::angular::shade(span, out),
-        Shader::AngularTable => crate::angular::shade_table(span, table, out),
-        Shader::Spherical => spherical::shade(span, out),
-        Shader::Binary => binary::shade(span, out),
-        Shader::BishopWeimer => bishop_weimer::shade(span, out),
-        _ => return None,
-    };
-    r.ok()?;
+/// Shades `span` with `m` and the prepared parameters; `None` if the method refuses
+/// the span or a value is not finite.
+pub fn shade_span<T: Real>(m: Method, span: &Span<T>, prep: &Prepared<T>, out: &mut [T]) -> Option<()> {
+    m.run(span, prep, out).ok()?;
     out.iter().all(|v| v.is_finite()).then_some(())
 }
 
@@ -248,15 +215,15 @@ pub fn test_directions(count: usize) -> Vec<(Vec3<f64>, Vec3<f64>, Vec3<f64>)> {
     out
 }
 
-/// For shader `sh` in `T`: the largest error (in units of one 8-bit level, 1/255)
+/// For method `m` in `T`: the largest error (in units of one 8-bit level, 1/255)
 /// against the same shader in `f64`, per entry of [`SPAN_LENGTHS`], over
 /// `directions`; `None` where the precision could not shade some span.
 pub fn span_errors<T: Real>(
-    sh: Shader,
+    m: Method,
     directions: &[(Vec3<f64>, Vec3<f64>, Vec3<f64>)],
 ) -> Vec<Option<f64>> {
-    let table_t = CosTable::<T>::new(256).expect("256 entries");
-    let table64 = CosTable::<f64>::new(256).expect("256 entries");
+    let table_t = Prepared::new(Method::AngularTable(crate::method::SOURCE_TABLE), T::one()).expect("256 entries");
+    let table64 = Prepared::new(Method::AngularTable(crate::method::SOURCE_TABLE), 1.0f64).expect("256 entries");
     SPAN_LENGTHS
         .iter()
         .map(|&n| {
@@ -266,8 +233,8 @@ pub fn span_errors<T: Real>(
                 let st: Span<T> = s64.cast()?;
                 let mut a = vec![0.0f64; s64.len()];
                 let mut b = vec![T::zero(); s64.len()];
-                shade_span(sh, &s64, &table64, &mut a)?;
-                shade_span(sh, &st, &table_t, &mut b)?;
+                shade_span(m, &s64, &table64, &mut a)?;
+                shade_span(m, &st, &table_t, &mut b)?;
                 for (x, y) in a.iter().zip(&b) {
                     worst = worst.max((x - y.to_f64()).abs() * 255.0);
                 }
@@ -292,16 +259,16 @@ pub fn longest(errors: &[Option<f64>]) -> Option<u32> {
 
 /// [`span_errors`] for the precision named `name`.
 pub fn span_errors_named(
-    sh: Shader,
+    m: Method,
     name: &str,
     directions: &[(Vec3<f64>, Vec3<f64>, Vec3<f64>)],
 ) -> Option<Vec<Option<f64>>> {
     Some(match name {
-        "f64" => span_errors::<f64>(sh, directions),
-        "f32" => span_errors::<f32>(sh, directions),
-        "f16" => span_errors::<f16>(sh, directions),
-        "I16F16" => span_errors::<I16F16>(sh, directions),
-        "I8F8" => span_errors::<I8F8>(sh, directions),
+        "f64" => span_errors::<f64>(m, directions),
+        "f32" => span_errors::<f32>(m, directions),
+        "f16" => span_errors::<f16>(m, directions),
+        "I16F16" => span_errors::<I16F16>(m, directions),
+        "I8F8" => span_errors::<I8F8>(m, directions),
         _ => return None,
     })
 }

@@ -9,48 +9,39 @@
 
 use super::mesh::Mesh;
 use super::scan::{rows, Row, ScreenVertex};
-use crate::adaptive::{self, Choice};
-use crate::angular::CosTable;
+use crate::adaptive::Choice;
+use crate::method::Prepared;
 use crate::quantize::level;
-use crate::reference::level::phong_level_exact;
 use crate::scalar::Scalar;
 use crate::{BigRational, Method, Span, Vec3};
 use glam::{Mat3, Vec3 as G3};
 
-/// A column of the tables: a span method, or classic vertex Gouraud.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Column {
-    /// A span method of the crate.
-    Span(Method),
-    /// Classic Gouraud: intensities computed at the vertices, interpolated along the
-    /// polygon's edges and then along the span.
-    VertexGouraud,
-}
+pub use super::shader::Shader;
 
-impl Column {
-    /// Every column, Phong first (the reference).
-    pub const ALL: [Column; 10] = [
-        Column::Span(Method::Phong),
-        Column::Span(Method::Duff),
-        Column::Span(Method::SymmetricPhong),
-        Column::Span(Method::Gouraud),
-        Column::VertexGouraud,
-        Column::Span(Method::Euler),
-        Column::Span(Method::CorrectedEuler),
-        Column::Span(Method::Adaptive),
-        Column::Span(Method::Angular),
-        Column::Span(Method::AngularTable(256)),
-    ];
+/// The columns of Tables 1–2: the paper's span methods and the second source's, and
+/// classic vertex Gouraud; Phong first (the reference).
+pub const COLUMNS: [Shader; 10] = [
+    Shader::Span(Method::Phong),
+    Shader::Span(Method::Duff),
+    Shader::Span(Method::SymmetricPhong),
+    Shader::Span(Method::Gouraud),
+    Shader::VertexGouraud,
+    Shader::Span(Method::Euler),
+    Shader::Span(Method::CorrectedEuler),
+    Shader::Span(Method::Adaptive),
+    Shader::Span(Method::Angular),
+    Shader::Span(Method::AngularTable(crate::method::SOURCE_TABLE)),
+];
 
-    /// A short label for tables and file names.
-    pub fn label(&self) -> String {
-        match self {
-            Column::Span(Method::Gouraud) => "gouraud-span".into(),
-            Column::Span(Method::AngularTable(n)) => format!("angular-table{n}"),
-            Column::Span(m) => m.name().into(),
-            Column::VertexGouraud => "gouraud-vertex".into(),
-        }
-    }
+/// The position of `sh` in [`COLUMNS`].
+///
+/// # Panics
+/// If `sh` is not a column of the tables.
+pub fn index(sh: Shader) -> usize {
+    COLUMNS
+        .iter()
+        .position(|s| *s == sh)
+        .expect("a column of Tables 1-2")
 }
 
 /// The fixed scene of the experiment.
@@ -201,7 +192,7 @@ impl ExactCheck {
 /// Everything measured over some frames.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Stats {
-    /// Per column of [`Column::ALL`]: deviation from Phong.
+    /// Per column of [`COLUMNS`]: deviation from Phong.
     pub deviation: Vec<Deviation>,
     /// Table 1.
     pub rows: RowStats,
@@ -265,13 +256,13 @@ struct RowShade {
 fn shade_row(
     scene: &Scene,
     row: &Row,
-    table: &CosTable<f32>,
+    prep: &Prepared<f32>,
     want_specular: bool,
 ) -> Option<(RowShade, RowExtra)> {
     let na = row.left.normal.try_normalize()?;
     let nb = row.right.normal.try_normalize()?;
     let n = (row.x_last - row.x_first) as u32;
-    let cols = Column::ALL.len();
+    let cols = COLUMNS.len();
     let mut levels = vec![Vec::with_capacity(n as usize + 1); cols];
     let mut specular = vec![Vec::new(); cols];
     let kd = scene.kd;
@@ -280,7 +271,7 @@ fn shade_row(
         let p = na.dot(scene.light);
         let h = na.dot(scene.half()).max(0.0);
         for c in 0..cols {
-            let v = if Column::ALL[c] == Column::VertexGouraud {
+            let v = if COLUMNS[c] == Shader::VertexGouraud {
                 row.left.intensity
             } else {
                 p
@@ -295,38 +286,34 @@ fn shade_row(
     let span = Span::new(vec3(na), vec3(nb), vec3(scene.light), n).ok()?;
     let mut out = vec![0.0f32; n as usize + 1];
     let mut decision = Choice::CorrectedEuler;
-    for (c, col) in Column::ALL.iter().enumerate() {
+    for (c, col) in COLUMNS.iter().enumerate() {
         match col {
-            Column::VertexGouraud => {
+            Shader::Span(m) => {
+                if let Some(d) = m.run(&span, prep, &mut out).ok()? {
+                    decision = d.choice;
+                }
+            }
+            _ => {
+                // Classic Gouraud: the vertex intensities, interpolated down the
+                // polygon's edges and along the row.
                 let (a, b) = (row.left.intensity, row.right.intensity);
                 for (i, o) in out.iter_mut().enumerate() {
                     *o = a + (b - a) * (i as f32 / n as f32);
                 }
             }
-            Column::Span(Method::AngularTable(_)) => {
-                crate::angular::shade_table(&span, table, &mut out).ok()?;
-            }
-            Column::Span(Method::Adaptive) => {
-                decision = adaptive::shade(&span, &kd, &mut out).ok()?.choice;
-            }
-            Column::Span(m) => m.shade(&span, &mut out).ok()?,
         }
         levels[c].extend(out.iter().map(|v| level(&(kd * v))));
     }
     if want_specular {
         let span_h = Span::new(vec3(na), vec3(nb), vec3(scene.half()), n).ok()?;
-        for (c, col) in Column::ALL.iter().enumerate() {
-            match col {
-                Column::VertexGouraud => {
-                    // Classic Gouraud of N·H: vertex values are not kept per vertex
-                    // here, so the span's edge values (exact) are interpolated.
-                    Method::Gouraud.shade(&span_h, &mut out).ok()?;
-                }
-                Column::Span(Method::AngularTable(_)) => {
-                    crate::angular::shade_table(&span_h, table, &mut out).ok()?;
-                }
-                Column::Span(m) => m.shade(&span_h, &mut out).ok()?,
-            }
+        for (c, col) in COLUMNS.iter().enumerate() {
+            // Classic Gouraud of N·H: vertex values are not kept per vertex here, so
+            // the span's edge values (exact) are interpolated.
+            let m = match col {
+                Shader::Span(m) => *m,
+                _ => Method::Gouraud,
+            };
+            m.run(&span_h, prep, &mut out).ok()?;
             specular[c].extend(out.iter().map(|v| v.max(0.0)));
         }
     }
@@ -355,20 +342,14 @@ impl RowExtra {
     }
 }
 
-/// The indices of Phong, span Gouraud and corrected Euler in [`Column::ALL`].
+/// The indices of Phong, span Gouraud and corrected Euler in [`COLUMNS`].
 const PHONG: usize = 0;
 const GOURAUD: usize = 3;
 const CORRECTED: usize = 6;
 
 /// Exact levels of a row's span for every span column, for the exact mode: the same
 /// span, its `f32` inputs converted exactly (they are within 2^-17 of unit length).
-fn exact_row(
-    span: &Span<f32>,
-    table: &CosTable<BigRational>,
-    kd: &BigRational,
-    got: &[Vec<u8>],
-    check: &mut ExactCheck,
-) {
+fn exact_row(span: &Span<f32>, prep: &Prepared<BigRational>, got: &[Vec<u8>], check: &mut ExactCheck) {
     let tol = BigRational::new(1.into(), (1u64 << 16).into());
     let (Some(na), Some(nb), Some(l)) = (span.na.cast(), span.nb.cast(), span.l.cast()) else {
         return;
@@ -376,66 +357,39 @@ fn exact_row(
     let Ok(exact) = Span::<BigRational>::with_tolerance(na, nb, l, span.n, &tol) else {
         return;
     };
-    let cols = Column::ALL.len();
+    let cols = COLUMNS.len();
     if check.mismatches.is_empty() {
         check.mismatches = vec![0; cols];
         check.explained = vec![0; cols];
     }
     check.pixels += u64::from(span.n) + 1;
     let mut out = vec![BigRational::from_i64(0); span.len()];
-    for (c, col) in Column::ALL.iter().enumerate() {
-        let Column::Span(m) = col else { continue };
-        let levels: Vec<u8> = match m {
-            // Phong-valued: the exact level of p/√q (for q ≈ 1 edges the span's E is
-            // within 2^-16 of 1; p/√q is still what the f32 code computes).
-            Method::Phong | Method::Duff | Method::SymmetricPhong => (0..=exact.n)
-                .map(|i| {
-                    let p = exact.p_at(i) * kd.clone();
-                    phong_level_exact(&p, &exact.q_at(i)).unwrap_or(0)
-                })
-                .collect(),
-            Method::AngularTable(_) => {
-                if crate::angular::shade_table(&exact, table, &mut out).is_err() {
-                    return;
-                }
-                out.iter()
-                    .map(|v| level(&(v.clone() * kd.clone())))
-                    .collect()
-            }
-            Method::Adaptive => {
-                if adaptive::shade(&exact, kd, &mut out).is_err() {
-                    return;
-                }
-                out.iter()
-                    .map(|v| level(&(v.clone() * kd.clone())))
-                    .collect()
-            }
-            m => {
-                if m.shade(&exact, &mut out).is_err() {
-                    return;
-                }
-                out.iter()
-                    .map(|v| level(&(v.clone() * kd.clone())))
-                    .collect()
-            }
-        };
-        let u = f32::unit_roundoff();
-        let q_min = (0..=exact.n)
-            .map(|i| exact.q_at(i).to_f64())
-            .fold(f64::INFINITY, f64::min);
+    let kd = &prep.kd;
+    let u = f32::unit_roundoff();
+    let q_min = (0..=exact.n)
+        .map(|i| exact.q_at(i).to_f64())
+        .fold(f64::INFINITY, f64::min);
+    for (c, col) in COLUMNS.iter().enumerate() {
+        let Shader::Span(m) = col else { continue };
+        if m.run(&exact, prep, &mut out).is_err() {
+            return;
+        }
+        // Phong-valued pixels: the exact level of p/√q (for q ≈ 1 edges the span's E
+        // is within 2^-16 of 1; p/√q is still what the f32 code computes).
+        let levels = m.exact_levels(&exact, &out, kd);
         // Without a derived bound, no mismatch counts as explained.
         let bound = crate::tolerance::bound(*m, exact.n, q_min, u)
             .map_or(-1.0, |b| b * 255.0 + 8.0 * u * 255.0);
-        for (i, (&g, &e)) in got[c].iter().zip(&levels).enumerate() {
-            if g != e {
+        for (i, (&g, e)) in got[c].iter().zip(&levels).enumerate() {
+            // A level the exact run cannot decide is not counted either way.
+            if e.is_some_and(|e| e != g) {
                 check.mismatches[c] += 1;
                 // Distance of the exact scaled value from the nearest level boundary.
-                let v = match m {
-                    Method::Phong | Method::Duff | Method::SymmetricPhong => {
-                        use crate::scalar::Real;
-                        (exact.p_at(i as u32) / exact.q_at(i as u32).sqrt()).to_f64()
-                    }
-                    _ => out[i].to_f64(),
+                let v = if m.is_phong_valued() {
+                    use crate::scalar::Real;
+                    (exact.p_at(i as u32) / exact.q_at(i as u32).sqrt()).to_f64()
+                } else {
+                    out[i].to_f64()
                 } * 255.0;
                 if (v - v.round()).abs() <= bound {
                     check.explained[c] += 1;
@@ -479,14 +433,15 @@ pub fn project(mesh: &Mesh, scene: &Scene, rot: &Mat3) -> Vec<ScreenVertex> {
 pub fn render(mesh: &Mesh, scene: &Scene, f: u32, opts: RenderOptions) -> Frame {
     let (w, h) = (scene.width, scene.height);
     let npix = (w * h) as usize;
-    let cols = Column::ALL.len();
+    let cols = COLUMNS.len();
     let rot = scene.rotation(f);
     let verts = project(mesh, scene, &rot);
-    let table = CosTable::<f32>::new(256).expect("256 entries");
-    let exact_table = opts
-        .exact
-        .then(|| CosTable::<BigRational>::new(256).expect("256 entries"));
-    let kd_exact = BigRational::from_float(scene.kd).expect("finite");
+    let table = Method::AngularTable(crate::method::SOURCE_TABLE);
+    let prep = Prepared::new(table, scene.kd).expect("256 entries");
+    let exact_prep = opts.exact.then(|| {
+        let kd = BigRational::from_float(scene.kd).expect("finite");
+        Prepared::new(table, kd).expect("256 entries")
+    });
     let mut depth = vec![f32::NEG_INFINITY; npix];
     let mut levels = vec![vec![None; npix]; cols];
     let mut specular = if opts.specular {
@@ -508,7 +463,7 @@ pub fn render(mesh: &Mesh, scene: &Scene, f: u32, opts: RenderOptions) -> Frame 
             continue;
         }
         rows(&poly, w, h, |row| {
-            let Some((shade, extra)) = shade_row(scene, &row, &table, opts.specular) else {
+            let Some((shade, extra)) = shade_row(scene, &row, &prep, opts.specular) else {
                 return;
             };
             if extra.single {
@@ -525,10 +480,10 @@ pub fn render(mesh: &Mesh, scene: &Scene, f: u32, opts: RenderOptions) -> Frame 
                 } else {
                     rows_stats.predicted_corrected_but_same += u64::from(same_gc);
                 }
-                if let (Some(check), Some(span), Some(t)) =
-                    (exact.as_mut(), extra.span.as_ref(), exact_table.as_ref())
+                if let (Some(check), Some(span), Some(p)) =
+                    (exact.as_mut(), extra.span.as_ref(), exact_prep.as_ref())
                 {
-                    exact_row(span, t, &kd_exact, &shade.levels, check);
+                    exact_row(span, p, &shade.levels, check);
                 }
             }
             let n = row.x_last - row.x_first;

@@ -48,6 +48,14 @@ pub fn level_of_rational(v: &BigRational) -> u8 {
     s.floor().to_integer().try_into().unwrap_or(255)
 }
 
+/// The level of a value known only to within `e` of `v`: `Some` when every value of
+/// `[v − e, v + e]` has the same level, `None` when that interval straddles a level
+/// boundary `k/255` (the level is then not known).
+pub fn level_within(v: &BigRational, e: &BigRational) -> Option<u8> {
+    let lo = level_of_rational(&(v - e));
+    (lo == level_of_rational(&(v + e))).then_some(lo)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -71,5 +79,10 @@ mod tests {
         assert_eq!(level_of_rational(&q(100, 255)), 100);
         assert_eq!(level_of_rational(&q(-1, 255)), 0);
         assert_eq!(level_of_rational(&q(3, 2)), 255);
+        // Within 1/1000 of 100/255: undecided; 1/1000 from 100.5/255: level 100.
+        assert_eq!(level_within(&q(100, 255), &q(1, 1000)), None);
+        assert_eq!(level_within(&q(201, 510), &q(1, 1000)), Some(100));
+        assert_eq!(level_within(&q(1, 1), &q(1, 1 << 30)), None);
+        assert_eq!(level_within(&q(3, 1), &q(1, 1)), Some(255));
     }
 }

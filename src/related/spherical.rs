@@ -62,7 +62,7 @@ pub fn shade<T: Real>(span: &Span<T>, out: &mut [T]) -> Result<(), SpanError> {
     out[0] = prev.clone();
     for o in out.iter_mut().skip(1) {
         *o = cur.clone();
-        let next = two_cos.clone() * cur.clone() - prev;
+        let next = (two_cos.clone() * cur.clone() - prev).tidy();
         prev = cur;
         cur = next;
     }

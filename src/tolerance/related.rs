@@ -97,7 +97,9 @@ pub fn spherical(shape: &Shape, u: f64) -> Option<f64> {
     let (s2, s, c) = angle(shape);
     // |w·L| ≤ √(1 − p_a²): the sinusoid's amplitude is at most 1 (the f64 p_a is the
     // nearest to the exact one; 1e-15 covers that under the root).
-    let w_max = ((1.0 - shape.p_a * shape.p_a).max(0.0) + 1e-15).sqrt().min(1.0);
+    let w_max = ((1.0 - shape.p_a * shape.p_a).max(0.0) + 1e-15)
+        .sqrt()
+        .min(1.0);
     let e_in = k::DOT * u;
     let (e1, dc) = if s2 == 0.0 {
         spherical_equal_normals(nf, e_in, u)
@@ -159,7 +161,8 @@ fn spherical_first_value(
 /// rounded inputs coincide, `|1 − ĉ| ≤ 5u`, and either the float run takes the
 /// constant branch too or `ŝ ≥ √u` bounds `|ŵ| ≤ 6.02√u`.
 fn spherical_equal_normals(nf: f64, e_in: f64, u: f64) -> (f64, f64) {
-    let w_hat = k::SPH_EQUAL_NU * u * (1.0 + 2.0 * u) / ((MIN_ONE_MINUS_SQUARE * u).sqrt() * (1.0 - u));
+    let w_hat =
+        k::SPH_EQUAL_NU * u * (1.0 + 2.0 * u) / ((MIN_ONE_MINUS_SQUARE * u).sqrt() * (1.0 - u));
     // Ω̂ = acos(ĉ)(1 + 2u) ≤ 1.001·√(2·5u)·(1 + 2u); Δ̂ = Ω̂/n (1 + u).
     let omega_hat = k::ACOS_NEAR_ONE * (2.0 * e_in).sqrt() * (1.0 + 3.0 * u);
     let delta_hat = omega_hat / nf;
@@ -276,7 +279,8 @@ pub fn bishop_weimer(shape: &Shape, u: f64) -> Option<f64> {
     // t_5 = (3c·g² − 4c·d·i − 4a·g·i)/(8i²√i).
     let d_max = 4.0 * sigma2 / (nf * nf);
     let y_max = 4.0 * nu * d_max * nu2;
-    let e_y = 4.0 * (e_c * d_max * nu2 + nu * e_d * nu2 + nu * d_max * rel_i * nu2) + 2.0 * u * y_max;
+    let e_y =
+        4.0 * (e_c * d_max * nu2 + nu * e_d * nu2 + nu * d_max * rel_i * nu2) + 2.0 * u * y_max;
     let e_x = 3.0 * (nu + e_c) * g_hat * g_hat;
     let e_z = 4.0 * (a_max + e_a) * g_hat * nu2 * (1.0 + rel_i);
     let e_n5 = e_x + e_y + e_z + 2.0 * u * (y_max + e_x + e_y + e_z);

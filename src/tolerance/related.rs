@@ -54,8 +54,9 @@ mod k {
     pub const SLACK: f64 = 1.01;
 }
 
-/// The smallest float above zero that `fl(1 − fl(x²))` can be, for `x` a float with
-/// `x² < 1`: `u` (the float below 1 is `1 − u`; the subtraction is exact).
+/// The smallest float above zero that `fl(1 − fl(x²))` can be, in units of `u`, for `x`
+/// a float with `fl(x²) < 1`: the float below 1 is `1 − u`, and the subtraction is
+/// exact (Sterbenz), so it is `u`.
 const MIN_ONE_MINUS_SQUARE: f64 = 1.0;
 
 /// `|√a − √b|` for `|a − b| ≤ e`, `b = r² ≥ 0`: `e/(r + √(r² − e))`, never more than
@@ -69,7 +70,7 @@ fn sqrt_error(r: f64, e: f64) -> f64 {
     }
 }
 
-/// `sin Ω` and `cos Ω` of a shape, `Ω ∈ [0, π]` the angle between `N_a` and `N_b`.
+/// `sin²Ω`, `sin Ω` and `cos Ω` of a shape, `Ω ∈ [0, π]` the angle between `N_a` and `N_b`.
 fn angle(shape: &Shape) -> (f64, f64, f64) {
     let c = shape.cos_omega.clamp(-1.0, 1.0);
     let s2 = shape.sin2_omega.clamp(0.0, 1.0);
@@ -250,7 +251,7 @@ pub fn bishop_weimer(shape: &Shape, u: f64) -> Option<f64> {
     };
     let nu = (nu2 * (1.0 - 1e-12)).sqrt();
     let sigma = (sigma2 * (1.0 + 1e-12)).sqrt().min(1.0);
-    if !(nu > 0.0) {
+    if nu.is_nan() || nu <= 0.0 {
         return None;
     }
     // Set-up (§16.3): N̂_3 off by 6u; c = L·N_3, i = N_3·N_3, g = 2k·N_3.

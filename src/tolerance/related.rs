@@ -237,8 +237,8 @@ pub fn binary(shape: &Shape, u: f64) -> Option<f64> {
 /// errors are `O(u/n)` and `O(u/n²)`, as the coefficients are).
 ///
 /// `None` when `n·u >` [`super::MAX_NU`] or when the relative error of the
-/// denominator `8i²√i` may exceed `2^-10` (normals within about `10^-2`, in `f32`,
-/// or `10^-11` rad, in `f64`, of opposite: `i` is `cos²(Ω/2)`).
+/// denominator `8i²√i` may exceed `2^-10` (about `30u/cos(Ω/2)`: normals within
+/// about `4·10^-3` rad, in `f32`, or `7·10^-12` rad, in `f64`, of opposite).
 pub fn bishop_weimer(shape: &Shape, u: f64) -> Option<f64> {
     let nf = in_range(shape.n, u)?;
     let (s2, _, c) = angle(shape);

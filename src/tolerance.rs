@@ -21,6 +21,11 @@
 //! Tested: `tests/float_bounds.rs` (every method, `f32` and `f64`, the edge cases,
 //! random spans and a targeted search for the worst case) and `tests/fast.rs` (the
 //! kernels of [`crate::fast`]).
+//!
+//! The related span methods (spherical, binary, Bishop–Weimer): [`related`]
+//! (`docs/float.md` §16, tested in `tests/float_bounds_related.rs`).
+
+pub mod related;
 
 use crate::method::Method;
 
@@ -161,18 +166,35 @@ pub struct Shape {
     pub p_a: f64,
     /// `N_b·L`.
     pub p_b: f64,
+    /// `cos Ω = N_a·N_b` (to nearest), for the related methods ([`related`]).
+    pub cos_omega: f64,
+    /// `sin² Ω = 1 − (N_a·N_b)²`, computed exactly and then rounded; `0` exactly
+    /// when `N_a = ±N_b` and positive otherwise ([`related`]).
+    pub sin2_omega: f64,
 }
 
 impl Shape {
     /// The shape of an exact span.
     pub fn of(span: &crate::Span<crate::BigRational>) -> Self {
         use crate::Scalar;
+        use num_traits::{One, Zero};
         // q_min rounded down; p to nearest (acos_error allows for that).
+        let cos_omega = span.na.dot(&span.nb);
+        let sin2 = crate::BigRational::one() - cos_omega.clone() * cos_omega.clone();
+        // A positive sin²Ω too small for f64 stays positive (the bounds then refuse
+        // the span rather than take it for N_a = N_b).
+        let sin2_omega = if sin2.is_zero() {
+            0.0
+        } else {
+            sin2.to_f64().max(f64::MIN_POSITIVE)
+        };
         Shape {
             n: span.n,
             q_min: span.q_min().to_f64() * (1.0 - 1e-15),
             p_a: span.p_a.to_f64(),
             p_b: span.p_b.to_f64(),
+            cos_omega: cos_omega.to_f64(),
+            sin2_omega,
         }
     }
 }

@@ -53,13 +53,14 @@
 
 pub mod adaptive;
 
-#[doc = include_str!("../docs/derivations.md")]
+// docs/derivations.md, errata.md and float.md with their math escaped for rustdoc (build.rs).
+#[doc = include_str!(concat!(env!("OUT_DIR"), "/derivations.md"))]
 pub mod derivations {}
 
-#[doc = include_str!("../docs/errata.md")]
+#[doc = include_str!(concat!(env!("OUT_DIR"), "/errata.md"))]
 pub mod errata {}
 
-#[doc = include_str!("../docs/float.md")]
+#[doc = include_str!(concat!(env!("OUT_DIR"), "/float.md"))]
 pub mod float {}
 
 pub mod angular;

@@ -273,19 +273,25 @@ pub fn angular_table(m: Method, n: u32, _: f64, shape: Option<&Shape>, u: f64) -
     Some(angle_bound(edges(shape), nf, u) + table_step(size) + 20.0 * u)
 }
 
-/// Kuijk & Blake's spherical interpolation along a span (docs/float.md §16).
-pub fn spherical(_: Method, _n: u32, _: f64, _shape: Option<&Shape>, _u: f64) -> Option<f64> {
-    None
+/// Kuijk & Blake's spherical interpolation along a span ([`related::spherical`],
+/// docs/float.md §16.1); only for a known span.
+pub fn spherical(_: Method, n: u32, _: f64, shape: Option<&Shape>, u: f64) -> Option<f64> {
+    in_range(n, u)?;
+    related::spherical(shape?, u)
 }
 
-/// Ouyang & Maynard's binary interpolation (docs/float.md §16).
-pub fn binary(_: Method, _n: u32, _: f64, _shape: Option<&Shape>, _u: f64) -> Option<f64> {
-    None
+/// Ouyang & Maynard's binary interpolation ([`related::binary`], docs/float.md
+/// §16.2); only for a known span.
+pub fn binary(_: Method, n: u32, _: f64, shape: Option<&Shape>, u: f64) -> Option<f64> {
+    in_range(n, u)?;
+    related::binary(shape?, u)
 }
 
-/// Bishop & Weimer along a span (docs/float.md §16).
-pub fn bishop_weimer(_: Method, _n: u32, _: f64, _shape: Option<&Shape>, _u: f64) -> Option<f64> {
-    None
+/// Bishop & Weimer along a span ([`related::bishop_weimer`], docs/float.md §16.3);
+/// only for a known span.
+pub fn bishop_weimer(_: Method, n: u32, _: f64, shape: Option<&Shape>, u: f64) -> Option<f64> {
+    in_range(n, u)?;
+    related::bishop_weimer(shape?, u)
 }
 
 /// One step of a cosine table of `size` entries over 0–90°: the largest difference

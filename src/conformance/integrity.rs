@@ -20,15 +20,15 @@ use sha2::{Digest, Sha256};
 pub const PUBLISHED: [(&str, &str); 3] = [
     (
         "typical",
-        "f474021ef4d0b20b23dcb9927bd5c50388984c15f6a6664fcdc9f995494b1b98",
+        "c444e1de67860fc3db77fb2c4487d9de5d36e2b15e81958e2610e6b450166484",
     ),
     (
         "edge",
-        "f4a5fdc6066b2173de902a7c977b3db6da9880b5fee9a96f2db8effd04f29599",
+        "ed2a83b76b11b52aace83bd1ddd462c32dc89c1a7233ca5459957a0b8805ebc3",
     ),
     (
         "paper",
-        "411569b215a26d0c0ae490a55de495a89cedf893f0aacb7618c5a43d304404f7",
+        "ff0c40cba507255299050b9c6cc6c0b20b6594559263d03507c8a6c6ca317ac2",
     ),
 ];
 

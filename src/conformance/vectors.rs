@@ -14,7 +14,7 @@ use num_rational::BigRational;
 use serde::{Deserialize, Serialize};
 
 /// Version of the vector format (semantic: a major change breaks readers).
-pub const FORMAT_VERSION: &str = "1.0.0";
+pub const FORMAT_VERSION: &str = "1.1.0";
 
 /// Significant digits of the expected values.
 pub const DIGITS: usize = 30;

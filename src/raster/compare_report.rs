@@ -409,11 +409,15 @@ pub fn grid(frame: &CompareFrame, title: &[String]) -> RgbImage {
         } else {
             format!("max {max}")
         };
+        // Each label is cut to its own tile, so that neighbours never overlap.
+        let room = w.saturating_sub(8);
+        let left = font::fit(sh.label(), room, s);
+        let right = font::fit(&right, room, s);
         font::draw_text(
             &mut tiles,
             i64::from(gx + 4),
             i64::from(gy + 4),
-            sh.label(),
+            &left,
             INK,
             s,
         );
@@ -732,5 +736,16 @@ mod tests {
         // Text (INK) is drawn in the head above the first tile.
         let has_ink = (0..f.width).any(|x| (top..top + head).any(|y| *g.get_pixel(x, y) == INK));
         assert!(has_ink);
+        // Labels are cut to their tiles: no ink within 4 pixels of a tile's edge.
+        for row in 0..rows {
+            let y0 = top + row * (head + f.height);
+            for edge in (1..8).map(|k| k * f.width) {
+                for x in edge - 4..edge + 4 {
+                    for y in y0..y0 + head {
+                        assert_ne!(*g.get_pixel(x, y), INK, "label ink at ({x}, {y})");
+                    }
+                }
+            }
+        }
     }
 }

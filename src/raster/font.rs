@@ -139,6 +139,29 @@ pub fn text_width(text: &str, scale: u32) -> u32 {
     }
 }
 
+/// `text` cut to fit `width` pixels at `scale`: whole if it fits, else as many of its
+/// first characters as fit followed by `…` (just `…`, or nothing, when even that is too
+/// wide).
+pub fn fit(text: &str, width: u32, scale: u32) -> String {
+    if text_width(text, scale) <= width {
+        return text.to_string();
+    }
+    let mut out = String::new();
+    for c in text.chars() {
+        out.push(c);
+        if text_width(&format!("{out}…"), scale) > width {
+            out.pop();
+            break;
+        }
+    }
+    out.push('…');
+    if text_width(&out, scale) <= width {
+        out
+    } else {
+        String::new()
+    }
+}
+
 /// The height in image pixels of one line of text at `scale` (the glyph cell with its
 /// descenders, without the gap to the next line).
 pub fn text_height(scale: u32) -> u32 {
@@ -313,6 +336,18 @@ mod tests {
             }
         }
         assert!(cut.pixels().any(|p| *p == INK));
+    }
+
+    #[test]
+    fn fit_cuts_long_text_with_an_ellipsis() {
+        assert_eq!(fit("angular", 100, 1), "angular");
+        // 6 pixels a character, 5 for the last: "angu…" is 29 wide.
+        assert_eq!(fit("angular-span-table", 29, 1), "angu…");
+        assert_eq!(fit("angular-span-table", 34, 1), "angu…");
+        assert_eq!(fit("angular-span-table", 35, 1), "angul…");
+        assert_eq!(fit("angular", 5, 1), "…");
+        assert_eq!(fit("angular", 4, 1), "");
+        assert!(text_width(&fit("angular-span-table", 96, 1), 1) <= 96);
     }
 
     #[test]

@@ -53,6 +53,7 @@ pub mod compare;
 pub mod output;
 pub mod reproduce;
 pub mod span;
+pub mod torus;
 pub mod vectors;
 
 /// A CLI failure: one line naming what was wrong, and the exit code.

@@ -6,13 +6,21 @@
 //! - [`scan`]: convex-polygon scan conversion (pixel centres, top-left rule).
 //! - [`render`]: one frame: culling, depth buffer, per-span shading, statistics.
 //! - [`experiment`]: the paper's Tables 1–2 over many frames, in parallel.
-//! - [`pictures`]: PNG renders and heat maps, SVG plots (Figures 1–5).
+//! - [`compare`], [`precision`]: every method of the paper and its related work on the
+//!   same tori, and in every precision.
+//! - [`pictures`]: PNG renders, heat maps with their legends, SVG plots (Figures 1–5);
+//!   [`font`]: the built-in bitmap font of their labels.
+//! - [`report`]: `reproduce`'s tables, CSVs and pictures, as strings and images.
+//! - [`compare_report`]: `compare`'s studies, report, CSVs and labelled picture grid.
 
 pub mod compare;
+pub mod compare_report;
 pub mod experiment;
+pub mod font;
 pub mod mesh;
 pub mod pictures;
 pub mod precision;
 pub mod render;
+pub mod report;
 pub mod shader;
 pub mod scan;

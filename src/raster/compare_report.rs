@@ -1,0 +1,751 @@
+//! The report of `phong-approx compare`: the measurements behind it (the precision
+//! and long-span studies), the Markdown report (`comparison.md`), the CSVs and the
+//! pictures (the labelled grid of every method with its heat map, and the highlight
+//! figures), as strings and images; the command line writes them.
+
+use super::compare::{
+    render_compare, CompareFrame, CompareOptions, CompareResult, Shader, COLUMNS, SHININESS,
+};
+use super::experiment::Experiment;
+use super::font;
+use super::pictures::{
+    fitting_scale, heat_legend, heat_map, level_image, stack, text_strip, BACKGROUND, INK,
+};
+use super::precision::{self, PrecisionStats, PRECISIONS, SPAN_LENGTHS, SPAN_METHODS};
+use image::RgbImage;
+use rayon::prelude::*;
+use std::fmt::Write as _;
+
+/// The tables `compare` writes, before its pictures ([`GRID`] and
+/// [`picture_names`]).
+pub const TABLES: [&str; 4] = [
+    "comparison.md",
+    "table2_extended.csv",
+    "precision.csv",
+    "longest_span.csv",
+];
+
+/// The file name of the picture grid.
+pub const GRID: &str = "grid.png";
+
+/// The shader of [`COLUMNS`] whose table label is `label`.
+///
+/// # Panics
+/// If no shader has that label.
+fn shader(label: &str) -> Shader {
+    *COLUMNS
+        .iter()
+        .find(|s| s.label() == label)
+        .unwrap_or_else(|| panic!("no shader labelled {label}"))
+}
+
+/// One method of the long-span study: per precision, the errors per span length
+/// ([`SPAN_LENGTHS`]; `None` where the precision fails).
+pub type SpanRow = (crate::Method, Vec<(&'static str, Vec<Option<f64>>)>);
+
+/// Everything `compare` measures.
+#[derive(Clone, Debug)]
+pub struct Results {
+    /// The four tori, every shader, diffuse and specular.
+    pub tori: Vec<CompareResult>,
+    /// Per precision of [`PRECISIONS`]: the 800-polygon torus.
+    pub precision: Vec<(&'static str, PrecisionStats)>,
+    /// Per span shader of [`SPAN_METHODS`], per precision: errors per span length.
+    pub spans: Vec<SpanRow>,
+    /// Test spans per length.
+    pub span_count: usize,
+}
+
+/// The precision study: the 800-polygon torus of `exp` over `frames` frames in every
+/// precision of [`PRECISIONS`]; `tick` is called once per frame and precision.
+pub fn precision_study(
+    exp: &Experiment,
+    frames: u32,
+    tick: &(dyn Fn() + Sync),
+) -> Vec<(&'static str, PrecisionStats)> {
+    let scene = exp.scene();
+    let mesh = exp.mesh(40, 20);
+    PRECISIONS
+        .iter()
+        .map(|&p| {
+            let st = precision::torus(&mesh, &scene, frames, p, tick).expect("known precision");
+            (p, st)
+        })
+        .collect()
+}
+
+/// The long-span study: every span shader of [`SPAN_METHODS`] in every precision on
+/// `count` test spans per length (shaders in parallel); `tick` is called once per
+/// shader and precision.
+pub fn span_study(count: usize, tick: &(dyn Fn() + Sync)) -> Vec<SpanRow> {
+    let dirs = precision::test_directions(count);
+    SPAN_METHODS
+        .par_iter()
+        .map(|&sh| {
+            let per: Vec<(&'static str, Vec<Option<f64>>)> = PRECISIONS
+                .iter()
+                .map(|&p| {
+                    let e = precision::span_errors_named(sh, p, &dirs).expect("known precision");
+                    tick();
+                    (p, e)
+                })
+                .collect();
+            (sh, per)
+        })
+        .collect()
+}
+
+/// The Markdown report of `compare` (`comparison.md`): the scene, the methods, the
+/// extended Table 2 (diffuse, then specular at every [`SHININESS`]), the adaptive
+/// scheme and the δ test on the specular term, the precision tables (`pframes` frames)
+/// and the longest spans. `secs` is the run time it states.
+pub fn report_md(exp: &Experiment, pframes: u32, r: &Results, secs: f64) -> String {
+    let mut s = String::new();
+    let _ = writeln!(s, "# Every method on the same tori\n");
+    let _ = writeln!(
+        s,
+        "{} frames per torus at {}×{}, tori of radii {} and {} with analytic normals, quads drawn as two triangles; \
+         light normalize(−1, 1, 2), viewer +z, H = normalize(L + V). Reference: per-pixel Phong (the triangle's \
+         normal field normalized at each pixel centre) in f64; every method in f32. Deviation = |level − reference \
+         level|, 8-bit levels floor(255·v), over the visible pixels: mean / max. Ran in {:.0} s.\n",
+        exp.frames, exp.size.0, exp.size.1, exp.radii.0, exp.radii.1, secs
+    );
+    let _ = writeln!(
+        s,
+        "## Methods\n\n| column | source | reconstructed | specular power |\n|---|---|---|---|"
+    );
+    for sh in COLUMNS {
+        let pw = match sh.label().as_ref() {
+            "phong-pixel" => "exact (f64)",
+            "gouraud" => "at the span's edges, interpolated",
+            "gouraud-vertex" => "at the vertices, interpolated",
+            "vertex-angle" => "table of cos^s (byte angle)",
+            _ if sh.power_from_table() => "1024-entry table",
+            _ => "per pixel",
+        };
+        let _ = writeln!(
+            s,
+            "| {} | {} | {} | {} |",
+            sh.label(),
+            sh.source(),
+            if sh.reconstructed() { "yes" } else { "" },
+            pw
+        );
+    }
+    let header = |s: &mut String| {
+        table_header(s, r.tori.iter().map(|t| format!("{} polygons", t.polygons)));
+    };
+    let _ = writeln!(
+        s,
+        "\n## Extended Table 2: diffuse (N·L), mean / max deviation\n"
+    );
+    header(&mut s);
+    for (c, sh) in COLUMNS.iter().enumerate() {
+        let _ = write!(s, "| {} |", sh.label());
+        for t in &r.tori {
+            let d = &t.stats.diffuse[c];
+            let _ = write!(s, " {:.3} / {} |", d.mean(), d.max);
+        }
+        let _ = writeln!(s);
+    }
+    for (k, sv) in SHININESS.iter().enumerate() {
+        let _ = writeln!(
+            s,
+            "\n## Extended Table 2: specular (N·H)^{sv}, mean / max deviation\n"
+        );
+        header(&mut s);
+        for (c, sh) in COLUMNS.iter().enumerate() {
+            let _ = write!(s, "| {} |", sh.label());
+            for t in &r.tori {
+                let d = &t.stats.specular[k][c];
+                let _ = write!(s, " {:.3} / {} |", d.mean(), d.max);
+            }
+            let _ = writeln!(s);
+        }
+    }
+    let _ = writeln!(
+        s,
+        "\n## The adaptive scheme (§5) and the δ test on the specular term\n"
+    );
+    let _ = writeln!(
+        s,
+        "Spans: rows of two or more pixels. Diffuse: the share the δ test (eq. 24, K_d = 1) gives to Gouraud. \
+         Specular: the same test on N·H (K = 1) — the spans it gives to Gouraud, and of those, the share where \
+         Gouraud's and corrected Euler's levels of (N·H)^s differ somewhere.\n"
+    );
+    let _ = write!(s, "| torus | spans | diffuse → Gouraud |");
+    for sv in SHININESS {
+        let _ = write!(s, " s = {sv}: Gouraud spans that differ |");
+    }
+    let _ = write!(s, "\n|---:|---:|---:|");
+    for _ in SHININESS {
+        let _ = write!(s, "---:|");
+    }
+    let _ = writeln!(s);
+    for t in &r.tori {
+        let st = &t.stats;
+        let _ = write!(
+            s,
+            "| {} | {} | {:.1} % |",
+            t.polygons,
+            st.spans,
+            st.adaptive_gouraud_percent()
+        );
+        for d in &st.specular_delta {
+            let pct = if d.gouraud == 0 {
+                0.0
+            } else {
+                100.0 * d.gouraud_but_differ as f64 / d.gouraud as f64
+            };
+            let _ = write!(s, " {pct:.1} % of {} |", d.gouraud);
+        }
+        let _ = writeln!(s);
+    }
+    let _ = writeln!(
+        s,
+        "\n## Precision: the 800-polygon torus, {pframes} frames, every drawn pixel, mean / max deviation from \
+         per-pixel Phong in f64\n\nSet-up and steps entirely in the precision; a blank cell means every row failed.\n"
+    );
+    table_header(&mut s, PRECISIONS.iter().map(|p| p.to_string()));
+    for (c, sh) in COLUMNS.iter().enumerate() {
+        let _ = write!(s, "| {} |", sh.label());
+        for (_, st) in &r.precision {
+            let d = &st.vs_phong[c];
+            let fail = st.failed_rows[c];
+            if d.pixels == 0 {
+                let _ = write!(s, " |");
+            } else if fail > 0 {
+                let _ = write!(
+                    s,
+                    " {:.3} / {} ({:.1} % rows failed) |",
+                    d.mean(),
+                    d.max,
+                    100.0 * fail as f64 / st.rows as f64
+                );
+            } else {
+                let _ = write!(s, " {:.3} / {} |", d.mean(), d.max);
+            }
+        }
+        let _ = writeln!(s);
+    }
+    let _ = writeln!(
+        s,
+        "\nThe arithmetic's own share: the same, against the same method in f64.\n"
+    );
+    table_header(&mut s, PRECISIONS.iter().map(|p| p.to_string()));
+    for (c, sh) in COLUMNS.iter().enumerate() {
+        let _ = write!(s, "| {} |", sh.label());
+        for (_, st) in &r.precision {
+            let d = &st.vs_f64[c];
+            if d.pixels == 0 {
+                let _ = write!(s, " |");
+            } else {
+                let _ = write!(s, " {:.3} / {} |", d.mean(), d.max);
+            }
+        }
+        let _ = writeln!(s);
+    }
+    let _ = writeln!(
+        s,
+        "\n## Longest span within one 8-bit level\n\nPer method and precision: the longest n of {:?} up to which \
+         the method in that precision stays within 1/255 of the same method in f64 on {} test spans (normals 5° to \
+         45° apart, light within 60° of N_a); set-up in f64 rounded to the precision, steps in the precision. \
+         “—”: not even n = 1; in brackets the worst error at n = 64, in levels.\n",
+        SPAN_LENGTHS, r.span_count
+    );
+    table_header(&mut s, PRECISIONS.iter().map(|p| p.to_string()));
+    let at64 = SPAN_LENGTHS
+        .iter()
+        .position(|&n| n == 64)
+        .expect("64 is tried");
+    for (sh, per) in &r.spans {
+        let _ = write!(s, "| {} |", sh.name());
+        for (_, e) in per {
+            let longest = match precision::longest(e) {
+                None => "—".to_string(),
+                Some(n) if n == *SPAN_LENGTHS.last().expect("non-empty") => format!("≥ {n}"),
+                Some(n) => n.to_string(),
+            };
+            let e64 = match e[at64] {
+                Some(v) => format!("{v:.2}"),
+                None => "fails".into(),
+            };
+            let _ = write!(s, " {longest} ({e64}) |");
+        }
+        let _ = writeln!(s);
+    }
+    s
+}
+
+/// A Markdown table header: `method` and one right-aligned column per name.
+fn table_header(s: &mut String, columns: impl Iterator<Item = String>) {
+    let columns: Vec<String> = columns.collect();
+    let _ = write!(s, "| method |");
+    for c in &columns {
+        let _ = write!(s, " {c} |");
+    }
+    let _ = write!(s, "\n|---|");
+    for _ in &columns {
+        let _ = write!(s, "---:|");
+    }
+    let _ = writeln!(s);
+}
+
+/// `table2_extended.csv`: per torus and shader of [`COLUMNS`], the diffuse and
+/// the specular deviations (`diffuse`, `specular10`, …): mean (6 decimals), max,
+/// pixels.
+pub fn table2_csv(tori: &[CompareResult]) -> String {
+    let mut s = String::from("polygons,method,term,mean,max,pixels\n");
+    for t in tori {
+        for (c, sh) in COLUMNS.iter().enumerate() {
+            let d = &t.stats.diffuse[c];
+            let _ = writeln!(
+                s,
+                "{},{},diffuse,{:.6},{},{}",
+                t.polygons,
+                sh.label(),
+                d.mean(),
+                d.max,
+                d.pixels
+            );
+            for (k, sv) in SHININESS.iter().enumerate() {
+                let d = &t.stats.specular[k][c];
+                let _ = writeln!(
+                    s,
+                    "{},{},specular{sv},{:.6},{},{}",
+                    t.polygons,
+                    sh.label(),
+                    d.mean(),
+                    d.max,
+                    d.pixels
+                );
+            }
+        }
+    }
+    s
+}
+
+/// `precision.csv`: per precision and shader, the deviations from per-pixel Phong in
+/// `f64` and from the same shader in `f64` (mean with 6 decimals, max), the pixels,
+/// the failed rows and all rows.
+pub fn precision_csv(p: &[(&'static str, PrecisionStats)]) -> String {
+    let mut s = String::from("precision,method,mean_vs_phong,max_vs_phong,mean_vs_f64,max_vs_f64,pixels,failed_rows,rows\n");
+    for (name, st) in p {
+        for (c, sh) in COLUMNS.iter().enumerate() {
+            let (a, b) = (&st.vs_phong[c], &st.vs_f64[c]);
+            let _ = writeln!(
+                s,
+                "{name},{},{:.6},{},{:.6},{},{},{},{}",
+                sh.label(),
+                a.mean(),
+                a.max,
+                b.mean(),
+                b.max,
+                a.pixels,
+                st.failed_rows[c],
+                st.rows
+            );
+        }
+    }
+    s
+}
+
+/// `longest_span.csv`: per span shader, precision and length of [`SPAN_LENGTHS`], the
+/// largest error in 8-bit levels (6 decimals), or `fails`.
+pub fn spans_csv(spans: &[SpanRow]) -> String {
+    let mut s = String::from("method,precision,n,max_error_levels\n");
+    for (sh, per) in spans {
+        for (p, e) in per {
+            for (n, v) in SPAN_LENGTHS.iter().zip(e) {
+                let v = v.map_or("fails".to_string(), |v| format!("{v:.6}"));
+                let _ = writeln!(s, "{},{p},{n},{v}", sh.name());
+            }
+        }
+    }
+    s
+}
+
+/// The highlight figures [`pictures`] writes besides [`GRID`]: Figures 4 and 5
+/// (corrected Euler and Phong) at every shininess of [`SHININESS`].
+pub fn picture_names() -> Vec<String> {
+    SHININESS
+        .iter()
+        .flat_map(|sv| {
+            ["fig4_corrected_euler", "fig5_phong"].map(|name| format!("{name}_s{sv}.png"))
+        })
+        .collect()
+}
+
+/// The labelled grid of `frame`: a title (`title`'s lines), then every shader of
+/// [`COLUMNS`], four per row, as a pair of pictures — its shading (labelled with
+/// its table label) and its heat map against the reference, the first shader
+/// (labelled with the largest difference) — and at the bottom the heat maps' legend.
+pub fn grid(frame: &CompareFrame, title: &[String]) -> RgbImage {
+    let (w, h) = (frame.width, frame.height);
+    let per_row = 4u32;
+    let n = COLUMNS.len() as u32;
+    let rows = n.div_ceil(per_row);
+    let width = w * 2 * per_row;
+    let longest = COLUMNS
+        .iter()
+        .map(|s| s.label())
+        .max_by_key(|l| l.len());
+    let s = if font::text_width(longest.as_deref().unwrap_or(""), 2) + 8 <= w {
+        2
+    } else {
+        1
+    };
+    let head = font::text_height(s) + 8;
+    let mut tiles = RgbImage::from_pixel(width, rows * (head + h), BACKGROUND);
+    let reference = &frame.picture[0];
+    for (c, sh) in COLUMNS.iter().enumerate() {
+        let (gx, gy) = (
+            (c as u32 % per_row) * 2 * w,
+            (c as u32 / per_row) * (head + h),
+        );
+        let (map, max) = heat_map(w, h, &frame.picture[c], reference);
+        let right = if c == 0 {
+            "reference".to_string()
+        } else {
+            format!("max {max}")
+        };
+        // Each label is cut to its own tile, so that neighbours never overlap.
+        let room = w.saturating_sub(8);
+        let left = font::fit(&sh.label(), room, s);
+        let right = font::fit(&right, room, s);
+        font::draw_text(
+            &mut tiles,
+            i64::from(gx + 4),
+            i64::from(gy + 4),
+            &left,
+            INK,
+            s,
+        );
+        font::draw_text(
+            &mut tiles,
+            i64::from(gx + w + 4),
+            i64::from(gy + 4),
+            &right,
+            INK,
+            s,
+        );
+        let shaded = level_image(w, h, &frame.picture[c]);
+        image::imageops::replace(&mut tiles, &shaded, i64::from(gx), i64::from(gy + head));
+        image::imageops::replace(&mut tiles, &map, i64::from(gx + w), i64::from(gy + head));
+    }
+    let legend = grid_legend(width);
+    let top = text_strip(width, title, fitting_scale(width, title, |_| 0));
+    stack(&[&top, &tiles, &legend])
+}
+
+/// The legend below the grid's tiles, `width` wide.
+fn grid_legend(width: u32) -> RgbImage {
+    let reference = COLUMNS[0].label();
+    heat_legend(
+        width,
+        &[format!(
+            "Right of each method: |level − {reference} level| per pixel, in 8-bit levels; above it the largest."
+        )],
+    )
+}
+
+/// The pictures of `compare` at frame `f` of the 800-polygon torus: the labelled
+/// [`grid`] at shininess 50, and the highlight figures of [`picture_names`], each
+/// with its file name.
+pub fn pictures(exp: &Experiment, f: u32) -> Vec<(String, RgbImage)> {
+    let scene = exp.scene();
+    let mesh = exp.mesh(40, 20);
+    let mut out = Vec::new();
+    for (k, sv) in SHININESS.iter().enumerate() {
+        let frame = render_compare(
+            &mesh,
+            &scene,
+            f,
+            CompareOptions {
+                pictures: true,
+                shininess: k,
+            },
+        );
+        if *sv == 50 {
+            let title = [
+                format!(
+                    "Every method on the 800-polygon torus: frame {f}, {}×{} pixels, diffuse + specular (N·H)^{sv}",
+                    frame.width, frame.height
+                ),
+                "Each method: its shading (left, labelled as in the tables) and its difference from the reference (right)".to_string(),
+            ];
+            out.push((GRID.to_string(), grid(&frame, &title)));
+        }
+        for (name, label) in [
+            ("fig4_corrected_euler", "corrected-euler"),
+            ("fig5_phong", "phong-pixel"),
+        ] {
+            let c = super::compare::index(shader(label));
+            out.push((
+                format!("{name}_s{sv}.png"),
+                level_image(frame.width, frame.height, &frame.picture[c]),
+            ));
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::raster::compare::{CompareStats, DeltaCount};
+    use crate::raster::render::Deviation;
+
+    /// Shader `c` deviates by `c` in `c` of `10` pixels, diffuse; specular `k` adds `k`
+    /// to the maximum.
+    fn dev(c: usize, k: u32) -> Deviation {
+        Deviation {
+            pixels: 10,
+            sum: c as u64,
+            max: c as u32 + k,
+        }
+    }
+
+    fn results() -> Results {
+        let n = COLUMNS.len();
+        let tori = [288, 512, 800, 1152]
+            .map(|polygons| CompareResult {
+                polygons,
+                stats: CompareStats {
+                    diffuse: (0..n).map(|c| dev(c, 0)).collect(),
+                    specular: (1..=SHININESS.len() as u32)
+                        .map(|k| (0..n).map(|c| dev(c, k)).collect())
+                        .collect(),
+                    spans: 40,
+                    adaptive_gouraud: 10,
+                    specular_delta: vec![
+                        DeltaCount {
+                            gouraud: 8,
+                            gouraud_but_differ: 2,
+                            corrected_but_same: 0,
+                        };
+                        SHININESS.len()
+                    ],
+                    dropped_rows: 0,
+                    pixels: 400,
+                    frames: 1,
+                },
+            })
+            .to_vec();
+        let precision = PRECISIONS
+            .iter()
+            .map(|&p| {
+                let mut st = PrecisionStats {
+                    vs_phong: (0..n).map(|c| dev(c, 0)).collect(),
+                    vs_f64: (0..n).map(|c| dev(c, 1)).collect(),
+                    failed_rows: vec![0; n],
+                    rows: 20,
+                };
+                if p == "I8F8" {
+                    st.failed_rows[1] = 5;
+                    st.vs_phong[2].pixels = 0;
+                    st.vs_f64[2].pixels = 0;
+                }
+                (p, st)
+            })
+            .collect();
+        let spans = SPAN_METHODS
+            .iter()
+            .map(|&sh| {
+                let per = PRECISIONS
+                    .iter()
+                    .map(|&p| {
+                        let e = SPAN_LENGTHS
+                            .iter()
+                            .map(|&len| (len <= 64).then_some(len as f64 / 64.0))
+                            .collect();
+                        (p, e)
+                    })
+                    .collect();
+                (sh, per)
+            })
+            .collect();
+        Results {
+            tori,
+            precision,
+            spans,
+            span_count: 3,
+        }
+    }
+
+    fn csv_rows(text: &str) -> (Vec<String>, Vec<Vec<String>>) {
+        let mut r = csv::Reader::from_reader(text.as_bytes());
+        let head = r
+            .headers()
+            .expect("header")
+            .iter()
+            .map(String::from)
+            .collect();
+        let rows = r
+            .records()
+            .map(|rec| rec.expect("a record").iter().map(String::from).collect())
+            .collect();
+        (head, rows)
+    }
+
+    #[test]
+    fn the_report_has_every_table_with_the_expected_digits() {
+        let exp = Experiment {
+            frames: 1,
+            ..Experiment::default()
+        };
+        let md = report_md(&exp, 2, &results(), 3.4);
+        assert!(md.starts_with("# Every method on the same tori\n"));
+        assert!(md.contains("1 frames per torus at 225×225, tori of radii 1 and 0.4"));
+        assert!(md.contains("Ran in 3 s."));
+        assert!(md.contains("| phong | Phong 1975 |  | exact (f64) |"));
+        assert!(md.contains("| spherical | Kuijk & Blake 1989 | yes | per pixel |"));
+        assert!(md.contains("| seiler | Seiler 1998 | yes | 1024-entry table |"));
+        let head = "| method | 288 polygons | 512 polygons | 800 polygons | 1152 polygons |\n|---|---:|---:|---:|---:|\n";
+        assert_eq!(md.matches(head).count(), 1 + SHININESS.len());
+        // Diffuse, shader 2: mean 2/10, max 2.
+        let c = super::super::compare::index(shader("duff"));
+        assert_eq!(c, 2);
+        assert!(md.contains("| duff | 0.200 / 2 | 0.200 / 2 | 0.200 / 2 | 0.200 / 2 |"));
+        // Specular s = 200 adds 3 to the maximum.
+        assert!(md.contains("| duff | 0.200 / 5 | 0.200 / 5 |"));
+        assert!(md.contains("| 800 | 40 | 25.0 % | 25.0 % of 8 |"));
+        // Precision: I8F8 is the last column; shader 1 failed 5 of 20 rows, shader 2
+        // has no pixel (a blank cell).
+        assert!(md.contains(" 0.100 / 1 (25.0 % rows failed) |\n"));
+        assert!(md.contains("| duff | 0.200 / 2 | 0.200 / 2 | 0.200 / 2 | 0.200 / 2 | |\n"));
+        // Longest span: up to 64 within one level, the error at 64 is 1.00.
+        assert!(md.contains("on 3 test spans"));
+        assert!(md.contains("| corrected-euler | 64 (1.00) | 64 (1.00) |"));
+    }
+
+    #[test]
+    fn table2_csv_has_a_diffuse_and_specular_row_per_torus_and_shader() {
+        let (head, rows) = csv_rows(&table2_csv(&results().tori));
+        assert_eq!(
+            head,
+            ["polygons", "method", "term", "mean", "max", "pixels"]
+        );
+        assert_eq!(rows.len(), 4 * COLUMNS.len() * (1 + SHININESS.len()));
+        assert_eq!(rows[0], ["288", "phong", "diffuse", "0.000000", "0", "10"]);
+        let duff_s200 = rows
+            .iter()
+            .find(|r| r[0] == "1152" && r[1] == "duff" && r[2] == "specular200")
+            .expect("a row");
+        assert_eq!(duff_s200[3..], ["0.200000", "5", "10"]);
+    }
+
+    #[test]
+    fn precision_csv_has_a_row_per_precision_and_shader() {
+        let (head, rows) = csv_rows(&precision_csv(&results().precision));
+        assert_eq!(
+            head,
+            [
+                "precision",
+                "method",
+                "mean_vs_phong",
+                "max_vs_phong",
+                "mean_vs_f64",
+                "max_vs_f64",
+                "pixels",
+                "failed_rows",
+                "rows"
+            ]
+        );
+        assert_eq!(rows.len(), PRECISIONS.len() * COLUMNS.len());
+        let r = &rows[PRECISIONS.len() * COLUMNS.len() - COLUMNS.len() + 1];
+        assert_eq!(
+            r,
+            &[
+                "I8F8",
+                &COLUMNS[1].label(),
+                "0.100000",
+                "1",
+                "0.100000",
+                "2",
+                "10",
+                "5",
+                "20"
+            ]
+        );
+    }
+
+    #[test]
+    fn spans_csv_has_a_row_per_shader_precision_and_length() {
+        let (head, rows) = csv_rows(&spans_csv(&results().spans));
+        assert_eq!(head, ["method", "precision", "n", "max_error_levels"]);
+        assert_eq!(
+            rows.len(),
+            SPAN_METHODS.len() * PRECISIONS.len() * SPAN_LENGTHS.len()
+        );
+        assert_eq!(rows[0], [&*SPAN_METHODS[0].name(), "f64", "1", "0.015625"]);
+        assert_eq!(rows[12], [&*SPAN_METHODS[0].name(), "f64", "4096", "fails"]);
+    }
+
+    #[test]
+    fn the_file_names_are_the_tables_grid_and_highlights() {
+        assert_eq!(
+            picture_names(),
+            [
+                "fig4_corrected_euler_s10.png",
+                "fig5_phong_s10.png",
+                "fig4_corrected_euler_s50.png",
+                "fig5_phong_s50.png",
+                "fig4_corrected_euler_s200.png",
+                "fig5_phong_s200.png"
+            ]
+        );
+    }
+
+    /// A 40 × 30 frame: shader `c` has level `c` everywhere but the top row (nothing).
+    fn frame() -> CompareFrame {
+        let (w, h) = (40u32, 30u32);
+        CompareFrame {
+            width: w,
+            height: h,
+            picture: (0..COLUMNS.len())
+                .map(|c| (0..w * h).map(|i| (i >= w).then_some(c as u8)).collect())
+                .collect(),
+            stats: CompareStats::default(),
+        }
+    }
+
+    #[test]
+    fn the_grid_has_a_title_a_labelled_pair_per_shader_and_a_legend() {
+        let f = frame();
+        let title = ["title".to_string()];
+        let g = grid(&f, &title);
+        assert_eq!(g.width(), 8 * f.width);
+        // Tiles too narrow for scale 2: labels at scale 1, a 17-pixel head per row.
+        let rows = (COLUMNS.len() as u32).div_ceil(4);
+        let top = text_strip(g.width(), &title, 2).height();
+        let legend = grid_legend(g.width()).height();
+        let tiles = rows * (f.height + 9 + 8);
+        assert_eq!(g.height(), top + tiles + legend);
+        // The heat map of shader 5 (second row, second pair) is red (5 ≥ 3) at its
+        // bottom-right pixel; that of the reference is the colour of 0.
+        let head = 17;
+        let y = top + (head + f.height) + head + f.height - 1;
+        let heat5 = g.get_pixel(4 * f.width - 1, y);
+        assert_eq!(*heat5, crate::raster::pictures::heat_colour(5));
+        let y0 = top + head + f.height - 1;
+        assert_eq!(
+            *g.get_pixel(2 * f.width - 1, y0),
+            crate::raster::pictures::heat_colour(0)
+        );
+        // Text (INK) is drawn in the head above the first tile.
+        let has_ink = (0..f.width).any(|x| (top..top + head).any(|y| *g.get_pixel(x, y) == INK));
+        assert!(has_ink);
+        // Labels are cut to their tiles: no ink within 4 pixels of a tile's edge.
+        for row in 0..rows {
+            let y0 = top + row * (head + f.height);
+            for edge in (1..8).map(|k| k * f.width) {
+                for x in edge - 4..edge + 4 {
+                    for y in y0..y0 + head {
+                        assert_ne!(*g.get_pixel(x, y), INK, "label ink at ({x}, {y})");
+                    }
+                }
+            }
+        }
+    }
+}

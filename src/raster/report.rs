@@ -1,0 +1,528 @@
+//! The report of `phong-approx reproduce`: the Markdown tables (`tables.md`), the CSVs
+//! (`table1.csv`, `table2.csv`) and the pictures (Figures 1–5 and the heat maps), as
+//! strings and images; the command line writes them.
+
+use super::experiment::{Experiment, TorusResult, PAPER_TABLE_1, PAPER_TABLE_2};
+use super::mesh::NormalMode;
+use super::pictures::{
+    labelled_difference_image, line_plot, shaded_image, Look, Picture, PictureError,
+};
+use super::render::{render, RenderOptions, Scene, Shader, COLUMNS};
+use crate::{Method, Span, Vec3};
+use std::fmt::Write as _;
+
+/// The files `reproduce` writes: the tables, then the pictures of [`pictures`].
+pub const OUTPUTS: [&str; 13] = [
+    "tables.md",
+    "table1.csv",
+    "table2.csv",
+    "fig4_torus800_corrected_euler.png",
+    "fig5_torus800_phong.png",
+    "torus800_gouraud_diffuse.png",
+    "diff_torus800_corrected_euler.png",
+    "diff_torus800_gouraud.png",
+    "diff_torus800_euler.png",
+    "fig1_phong_minus_gouraud.svg",
+    "fig2_phong_minus_euler.svg",
+    "fig3_phong_minus_corrected_euler.svg",
+    "fig0_curves.svg",
+];
+
+
+/// The span method of [`Method::ALL`] named `name`.
+///
+/// # Panics
+/// If no method has that name.
+fn method(name: &str) -> Method {
+    *Method::ALL
+        .iter()
+        .find(|m| m.name() == name)
+        .unwrap_or_else(|| panic!("no method named {name}"))
+}
+
+/// The Markdown report of `reproduce` (`tables.md`): the scene, Table 2 beside the
+/// paper's, Table 2 for every column of [`COLUMNS`], Table 1 beside the paper's,
+/// and, when a torus has an exact check, the exact-mode table. `secs` is the run time
+/// it states.
+pub fn tables_md(exp: &Experiment, results: &[TorusResult], secs: f64) -> String {
+    let scene = exp.scene();
+    let mut s = String::new();
+    let px: u64 = results.iter().map(|r| r.stats.pixels).sum();
+    let frames: u64 = results.iter().map(|r| r.stats.frames).sum();
+    let _ = writeln!(
+        s,
+        "# Tables 1 and 2 of Hast, Barrera & Bengtsson, reproduced\n"
+    );
+    let _ = writeln!(
+        s,
+        "Scene: tori R = {}, r = {}, {} normals; {}×{} pixels, orthographic, {:.1} px per unit; light {:?}; K_d = {}; rotation {}°, {}°, {}° per frame about x, y, z; {} frames per torus; {:.0} visible pixels per frame on average; f32 arithmetic; {:.1} s.\n",
+        exp.radii.0,
+        exp.radii.1,
+        match exp.normals {
+            NormalMode::Analytic => "analytic",
+            NormalMode::Averaged => "face-averaged",
+        },
+        scene.width,
+        scene.height,
+        scene.scale,
+        [scene.light.x, scene.light.y, scene.light.z].map(|v| (v * 1e4).round() / 1e4),
+        scene.kd,
+        scene.rates_deg.x,
+        scene.rates_deg.y,
+        scene.rates_deg.z,
+        exp.frames,
+        px as f64 / frames.max(1) as f64,
+        secs
+    );
+    let g = crate::raster::render::index(Shader::Span(Method::Gouraud));
+    let gv = crate::raster::render::index(Shader::VertexGouraud);
+    let e = crate::raster::render::index(Shader::Span(Method::Euler));
+    let ce = crate::raster::render::index(Shader::Span(Method::CorrectedEuler));
+    let _ = writeln!(
+        s,
+        "## Table 2: deviation from Phong in 8-bit levels (mean / max), ours beside the paper's\n"
+    );
+    let _ = writeln!(s, "| polygons | Gouraud (paper) | Gouraud, span | Gouraud, vertex | Euler (paper) | Euler | Corr. Euler (paper) | Corr. Euler |");
+    let _ = writeln!(s, "|---:|---:|---:|---:|---:|---:|---:|---:|");
+    for (r, p) in results.iter().zip(PAPER_TABLE_2) {
+        let d = &r.stats.deviation;
+        let f = |i: usize| format!("{:.3} / {}", d[i].mean(), d[i].max);
+        let _ = writeln!(
+            s,
+            "| {} | {:.2} / {} | {} | {} | {:.2} / {} | {} | {:.3} / {} | {} |",
+            r.polygons,
+            p.1,
+            p.2,
+            f(g),
+            f(gv),
+            p.3,
+            p.4,
+            f(e),
+            p.5,
+            p.6,
+            f(ce)
+        );
+    }
+    let _ = writeln!(
+        s,
+        "\n## Table 2, every method (mean / max deviation from Phong, 8-bit levels)\n"
+    );
+    let mut head = String::from("| polygons |");
+    let mut rule = String::from("|---:|");
+    for c in COLUMNS.iter().skip(1) {
+        let _ = write!(head, " {} |", c.label());
+        rule.push_str("---:|");
+    }
+    let _ = writeln!(s, "{head}\n{rule}");
+    for r in results {
+        let mut line = format!("| {} |", r.polygons);
+        for d in r.stats.deviation.iter().skip(1) {
+            let _ = write!(line, " {:.3} / {} |", d.mean(), d.max);
+        }
+        let _ = writeln!(s, "{line}");
+    }
+    let _ = writeln!(s, "\n## Table 1: scan lines on which Gouraud gives the same 8-bit levels as corrected Euler\n");
+    let _ = writeln!(s, "| polygons | paper | ours: Gouraud = corr. Euler | δ test (eq. 24) says Gouraud | … but levels differ | δ test says corr. Euler, levels equal | Gouraud = Phong | rows | 1-pixel rows |");
+    let _ = writeln!(s, "|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
+    for (r, p) in results.iter().zip(PAPER_TABLE_1) {
+        let t = &r.stats.rows;
+        let pc = |k: u64| 100.0 * k as f64 / t.rows.max(1) as f64;
+        let _ = writeln!(
+            s,
+            "| {} | {:.1} % | {:.1} % | {:.1} % | {:.2} % | {:.2} % | {:.1} % | {} | {} |",
+            r.polygons,
+            p.1,
+            pc(t.gouraud_eq_corrected),
+            pc(t.predicted_gouraud),
+            pc(t.predicted_gouraud_but_differ),
+            pc(t.predicted_corrected_but_same),
+            pc(t.gouraud_eq_phong),
+            t.rows,
+            t.single_pixel_rows
+        );
+    }
+    if let Some(r) = results.iter().find(|r| r.stats.exact.is_some()) {
+        let x = r.stats.exact.as_ref().expect("checked");
+        let _ = writeln!(
+            s,
+            "\n## Exact mode: the {}-polygon torus, first {} frame(s), every span also in exact rationals\n",
+            r.polygons, exp.exact_frames
+        );
+        let _ = writeln!(s, "| method | span pixels | f32 level ≠ exact level | of which within rounding of a level boundary |");
+        let _ = writeln!(s, "|---|---:|---:|---:|");
+        for (c, col) in COLUMNS.iter().enumerate() {
+            if c == gv || x.mismatches.is_empty() {
+                continue;
+            }
+            let _ = writeln!(
+                s,
+                "| {} | {} | {} | {} |",
+                col.label(),
+                x.pixels,
+                x.mismatches[c],
+                x.explained[c]
+            );
+        }
+    }
+    s
+}
+
+/// `table1.csv`: per torus, the paper's Table 1 percentage and our row counts (one
+/// line per torus, the header first).
+pub fn table1_csv(results: &[TorusResult]) -> String {
+    let mut s = String::from("polygons,paper_percent,rows,single_pixel_rows,gouraud_eq_corrected,gouraud_eq_phong,predicted_gouraud,predicted_gouraud_but_differ,predicted_corrected_but_same\n");
+    for (r, p) in results.iter().zip(PAPER_TABLE_1) {
+        let t = &r.stats.rows;
+        let _ = writeln!(
+            s,
+            "{},{},{},{},{},{},{},{},{}",
+            r.polygons,
+            p.1,
+            t.rows,
+            t.single_pixel_rows,
+            t.gouraud_eq_corrected,
+            t.gouraud_eq_phong,
+            t.predicted_gouraud,
+            t.predicted_gouraud_but_differ,
+            t.predicted_corrected_but_same
+        );
+    }
+    s
+}
+
+/// `table2.csv`: per torus and column of [`COLUMNS`], the pixels and the mean
+/// (6 decimals) and maximum deviation from Phong in 8-bit levels.
+pub fn table2_csv(results: &[TorusResult]) -> String {
+    let mut s = String::from("polygons,method,pixels,mean_deviation,max_deviation\n");
+    for r in results {
+        for (c, d) in COLUMNS.iter().zip(&r.stats.deviation) {
+            let _ = writeln!(
+                s,
+                "{},{},{},{:.6},{}",
+                r.polygons,
+                c.label(),
+                d.pixels,
+                d.mean(),
+                d.max
+            );
+        }
+    }
+    s
+}
+
+/// Figures 4–5 (the 800-polygon torus by corrected Euler and by Phong, with
+/// highlights, frame 37), the diffuse Gouraud render, the difference heat maps with
+/// their legends, and the scan-line figures of [`scanline_figures`], each with its file
+/// name (in the order of [`OUTPUTS`]). The renders follow the experiment's size,
+/// scaled up by a whole factor to at least 400 pixels on the shorter side.
+///
+/// # Errors
+/// [`PictureError::Svg`] if a plot fails.
+pub fn pictures(exp: &Experiment) -> Result<Vec<(&'static str, Picture)>, PictureError> {
+    let k = 400u32.div_ceil(exp.size.0.min(exp.size.1)).max(1);
+    let big = Experiment {
+        size: (exp.size.0 * k, exp.size.1 * k),
+        ..exp.clone()
+    };
+    let scene = big.scene();
+    let mesh = big.mesh(40, 20);
+    let frame = render(
+        &mesh,
+        &scene,
+        37,
+        RenderOptions {
+            exact: false,
+            specular: true,
+        },
+    );
+    let look = Look::default();
+    let diffuse = Look { ks: 0.0, ..look };
+    let phong = Shader::Span(Method::Phong);
+    let mut out = vec![
+        (
+            "fig4_torus800_corrected_euler.png",
+            Picture::Png(shaded_image(&frame, Shader::Span(Method::CorrectedEuler), look)),
+        ),
+        (
+            "fig5_torus800_phong.png",
+            Picture::Png(shaded_image(&frame, phong, look)),
+        ),
+        (
+            "torus800_gouraud_diffuse.png",
+            Picture::Png(shaded_image(&frame, Shader::Span(Method::Gouraud), diffuse)),
+        ),
+    ];
+    for (name, m) in [
+        ("diff_torus800_corrected_euler.png", Method::CorrectedEuler),
+        ("diff_torus800_gouraud.png", Method::Gouraud),
+        ("diff_torus800_euler.png", Method::Euler),
+    ] {
+        out.push((
+            name,
+            Picture::Png(labelled_difference_image(&frame, Shader::Span(m), phong)),
+        ));
+    }
+    for (name, svg) in scanline_figures(&scene)? {
+        out.push((name, Picture::Svg(svg)));
+    }
+    Ok(out)
+}
+
+/// The span of Figures 1–3: unit normals 60° apart in the x–z plane, the scene's
+/// light, 100 steps.
+pub fn figure_span(scene: &Scene) -> Span<f64> {
+    let a = 30f64.to_radians();
+    let na = Vec3::new(-a.sin(), 0.0, a.cos());
+    let nb = Vec3::new(a.sin(), 0.0, a.cos());
+    let l = Vec3::new(
+        f64::from(scene.light.x),
+        f64::from(scene.light.y),
+        f64::from(scene.light.z),
+    );
+    Span::normalized(na, nb, l, 100).expect("a valid span")
+}
+
+/// Figures 1–3 (Phong minus Gouraud, Euler and corrected Euler along
+/// [`figure_span`], in 8-bit levels) and the four curves themselves, as SVG texts with
+/// their file names.
+///
+/// # Errors
+/// [`PictureError::Svg`] if a plot fails.
+pub fn scanline_figures(scene: &Scene) -> Result<Vec<(&'static str, String)>, PictureError> {
+    let span = figure_span(scene);
+    let values = |name: &str| method(name).values(&span).expect("span");
+    let phong = values("phong");
+    let curve = |name: &str| -> Vec<f64> {
+        let v = values(name);
+        phong.iter().zip(&v).map(|(p, x)| 255.0 * (p - x)).collect()
+    };
+    let figs = [
+        (
+            "fig1_phong_minus_gouraud.svg",
+            "Figure 1: Phong − Gouraud, normals 60° apart",
+            "gouraud",
+            "Phong − Gouraud",
+        ),
+        (
+            "fig2_phong_minus_euler.svg",
+            "Figure 2: Phong − Euler, normals 60° apart",
+            "euler",
+            "Phong − Euler",
+        ),
+        (
+            "fig3_phong_minus_corrected_euler.svg",
+            "Figure 3: Phong − corrected Euler, normals 60° apart",
+            "corrected-euler",
+            "Phong − corrected Euler",
+        ),
+    ];
+    let mut out = Vec::new();
+    for (file, title, m, label) in figs {
+        out.push((
+            file,
+            line_plot(title, "difference (8-bit levels)", &[(label, curve(m))])?,
+        ));
+    }
+    let as_levels = |v: Vec<f64>| v.into_iter().map(|x| 255.0 * x).collect::<Vec<_>>();
+    out.push((
+        "fig0_curves.svg",
+        line_plot(
+            "One scan line, normals 60° apart",
+            "intensity (8-bit levels)",
+            &[
+                ("Phong", as_levels(phong.clone())),
+                ("Gouraud", as_levels(values("gouraud"))),
+                ("Euler", as_levels(values("euler"))),
+                ("corrected Euler", as_levels(values("corrected-euler"))),
+            ],
+        )?,
+    ));
+    Ok(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::raster::render::{Deviation, ExactCheck, RowStats, Stats};
+
+    /// A hand-made result per paper torus: column `c` has `10 + c` pixels, a deviation
+    /// sum of `c` and a maximum of `c`; the 800-polygon torus has an exact check.
+    fn results() -> Vec<TorusResult> {
+        PAPER_TABLE_1
+            .iter()
+            .map(|&(polygons, _)| TorusResult {
+                polygons,
+                segments: (1, 1),
+                stats: Stats {
+                    deviation: (0..COLUMNS.len() as u64)
+                        .map(|c| Deviation {
+                            pixels: 10 + c,
+                            sum: c,
+                            max: c as u32,
+                        })
+                        .collect(),
+                    rows: RowStats {
+                        rows: 8,
+                        single_pixel_rows: 3,
+                        gouraud_eq_corrected: 4,
+                        gouraud_eq_phong: 2,
+                        predicted_gouraud: 1,
+                        predicted_gouraud_but_differ: 1,
+                        predicted_corrected_but_same: 0,
+                    },
+                    pixels: 500,
+                    frames: 2,
+                    exact: (polygons == 800).then(|| ExactCheck {
+                        pixels: 99,
+                        mismatches: vec![5; COLUMNS.len()],
+                        explained: vec![4; COLUMNS.len()],
+                    }),
+                },
+            })
+            .collect()
+    }
+
+    fn exp() -> Experiment {
+        Experiment {
+            frames: 2,
+            ..Experiment::default()
+        }
+    }
+
+    fn csv_rows(text: &str) -> (Vec<String>, Vec<Vec<String>>) {
+        let mut r = csv::Reader::from_reader(text.as_bytes());
+        let head = r
+            .headers()
+            .expect("header")
+            .iter()
+            .map(String::from)
+            .collect();
+        let rows = r
+            .records()
+            .map(|rec| rec.expect("a record").iter().map(String::from).collect())
+            .collect();
+        (head, rows)
+    }
+
+    #[test]
+    fn the_report_has_its_tables_and_the_numbers_with_their_digits() {
+        let md = tables_md(&exp(), &results(), 1.3);
+        assert!(md.starts_with("# Tables 1 and 2 of Hast, Barrera & Bengtsson, reproduced\n"));
+        assert!(md.contains(
+            "2 frames per torus; 250 visible pixels per frame on average; f32 arithmetic; 1.3 s."
+        ));
+        assert!(md.contains("| polygons | Gouraud (paper) | Gouraud, span | Gouraud, vertex | Euler (paper) | Euler | Corr. Euler (paper) | Corr. Euler |\n|---:|---:|---:|---:|---:|---:|---:|---:|\n"));
+        // 288 polygons: the paper's numbers, then ours with 3 decimals / max.
+        let (g, gv, e, ce) = (
+            crate::raster::render::index(Shader::Span(Method::Gouraud)) as f64,
+            crate::raster::render::index(Shader::VertexGouraud) as f64,
+            crate::raster::render::index(Shader::Span(Method::Euler)) as f64,
+            crate::raster::render::index(Shader::Span(Method::CorrectedEuler)) as f64,
+        );
+        let ours = |c: f64| format!("{:.3} / {}", c / (10.0 + c), c);
+        let row = format!(
+            "| 288 | 1.08 / 15 | {} | {} | 0.75 / 21 | {} | 0.081 / 3 | {} |",
+            ours(g),
+            ours(gv),
+            ours(e),
+            ours(ce)
+        );
+        assert!(md.contains(&row), "{row}\n{md}");
+        // Every method: one column per label after Phong's.
+        let head: String = COLUMNS[1..]
+            .iter()
+            .map(|c| format!(" {} |", c.label()))
+            .collect();
+        assert!(md.contains(&format!("| polygons |{head}\n")));
+        // Table 1: 4 of 8 rows is 50.0 %, 1 of 8 is 12.50 %.
+        assert!(
+            md.contains("| 800 | 80.9 % | 50.0 % | 12.5 % | 12.50 % | 0.00 % | 25.0 % | 8 | 3 |")
+        );
+        // The exact table: every column but vertex Gouraud.
+        assert!(md.contains("## Exact mode: the 800-polygon torus, first 1 frame(s)"));
+        assert!(md.contains("| corrected-euler | 99 | 5 | 4 |"));
+        assert!(!md.contains("| gouraud-vertex | 99 |"));
+    }
+
+    #[test]
+    fn without_an_exact_check_there_is_no_exact_table() {
+        let mut r = results();
+        for t in &mut r {
+            t.stats.exact = None;
+        }
+        assert!(!tables_md(&exp(), &r, 0.0).contains("Exact mode"));
+    }
+
+    #[test]
+    fn table1_csv_parses_back_with_one_row_per_torus() {
+        let (head, rows) = csv_rows(&table1_csv(&results()));
+        assert_eq!(
+            head,
+            [
+                "polygons",
+                "paper_percent",
+                "rows",
+                "single_pixel_rows",
+                "gouraud_eq_corrected",
+                "gouraud_eq_phong",
+                "predicted_gouraud",
+                "predicted_gouraud_but_differ",
+                "predicted_corrected_but_same"
+            ]
+        );
+        assert_eq!(rows.len(), 4);
+        assert_eq!(rows[2], ["800", "80.9", "8", "3", "4", "2", "1", "1", "0"]);
+    }
+
+    #[test]
+    fn table2_csv_parses_back_with_a_row_per_torus_and_column() {
+        let (head, rows) = csv_rows(&table2_csv(&results()));
+        assert_eq!(
+            head,
+            [
+                "polygons",
+                "method",
+                "pixels",
+                "mean_deviation",
+                "max_deviation"
+            ]
+        );
+        assert_eq!(rows.len(), 4 * COLUMNS.len());
+        let labels: Vec<String> = COLUMNS.iter().map(|c| c.label().into_owned()).collect();
+        for (k, row) in rows.iter().enumerate() {
+            let c = k % COLUMNS.len();
+            assert_eq!(row[1], labels[c]);
+            assert_eq!(row[2], (10 + c).to_string());
+            assert_eq!(row[3], format!("{:.6}", c as f64 / (10 + c) as f64));
+            assert_eq!(row[4], c.to_string());
+        }
+    }
+
+    #[test]
+    fn the_figure_span_has_unit_normals_sixty_degrees_apart() {
+        let s = figure_span(&exp().scene());
+        let cos = s.na.x * s.nb.x + s.na.y * s.nb.y + s.na.z * s.nb.z;
+        assert!((cos - 0.5).abs() < 1e-12);
+    }
+
+    #[test]
+    fn the_scanline_figures_are_labelled_svgs() {
+        let figs = scanline_figures(&exp().scene()).expect("plots");
+        let names: Vec<&str> = figs.iter().map(|f| f.0).collect();
+        assert_eq!(names, OUTPUTS[9..]);
+        for (name, svg) in &figs {
+            assert!(svg.starts_with("<svg"), "{name}");
+            assert!(
+                svg.contains("pixel i along the scan line (pixels, n = 100)"),
+                "{name}"
+            );
+            assert!(svg.contains("(8-bit levels)"), "{name}");
+        }
+        for series in ["Phong", "Gouraud", "Euler", "corrected Euler"] {
+            assert!(
+                figs[3].1.contains(&format!("\n{series}\n</text>")),
+                "{series}"
+            );
+        }
+    }
+}

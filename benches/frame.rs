@@ -7,54 +7,51 @@ use phong_approx::fast::{phong_rsqrt_f32, FastSpan};
 use phong_approx::quantize::level;
 use phong_approx::raster::experiment::Experiment;
 use phong_approx::raster::mesh::Mesh;
-use phong_approx::raster::render::{project, Scene};
-use phong_approx::raster::scan::{rows, ScreenVertex};
+use phong_approx::raster::frame::{draw, polygons, Polygon, Shading, Split};
+use phong_approx::raster::render::Scene;
+use phong_approx::raster::scan::Row;
 use rayon::prelude::*;
 use std::time::Duration;
 
 type Kernel = fn(&FastSpan<f32>, &mut [f32]);
 
-/// Renders frame `f` with `kernel`: culling, scan conversion, per-row set-up, the
-/// kernel, 8-bit quantization and a depth test. Returns the visible pixel count.
+/// Frame `f` with `kernel` through the crate's frame loop
+/// (`phong_approx::raster::frame`): culling, scan conversion, per-row set-up, the
+/// kernel, 8-bit quantization and the depth test. Returns the visible pixel count.
 fn frame(mesh: &Mesh, scene: &Scene, f: u32, kernel: Kernel) -> u64 {
-    let (w, h) = (scene.width, scene.height);
-    let rot = scene.rotation(f);
-    let verts = project(mesh, scene, &rot);
-    let mut depth = vec![f32::NEG_INFINITY; (w * h) as usize];
-    let mut image = vec![0u8; (w * h) as usize];
-    let mut span = vec![0f32; w as usize + 1];
-    let l = scene.light.to_array();
-    for q in &mesh.quads {
-        let p: Vec<glam::Vec3> = q
-            .iter()
-            .map(|&i| rot * mesh.positions[i as usize])
-            .collect();
-        if (p[2] - p[0]).cross(p[3] - p[1]).z <= 0.0 {
-            continue;
-        }
-        let poly: Vec<ScreenVertex> = q.iter().map(|&i| verts[i as usize]).collect();
-        rows(&poly, w, h, |row| {
+    struct Fast {
+        kernel: Kernel,
+        l: [f32; 3],
+        image: Vec<Option<u8>>,
+    }
+    impl Shading for Fast {
+        type Row = Vec<f32>;
+        fn row(&mut self, _: usize, _: &Polygon, row: &Row) -> Option<Vec<f32>> {
             let n = (row.x_last - row.x_first) as u32;
             let na = row.left.normal.normalize().to_array();
             let nb = row.right.normal.normalize().to_array();
+            let mut span = vec![0f32; n as usize + 1];
             if n == 0 {
+                let l = self.l;
                 span[0] = na[0] * l[0] + na[1] * l[1] + na[2] * l[2];
             } else {
-                kernel(&FastSpan::<f32>::new(na, nb, l, n), &mut span);
+                (self.kernel)(&FastSpan::<f32>::new(na, nb, self.l, n), &mut span);
             }
-            for (i, x) in (row.x_first..=row.x_last).enumerate() {
-                let idx = (row.y as u32 * w + x as u32) as usize;
-                let t = if n == 0 { 0.0 } else { i as f32 / n as f32 };
-                let z = row.left.z + t * (row.right.z - row.left.z);
-                if z > depth[idx] {
-                    depth[idx] = z;
-                    image[idx] = level(&span[i]);
-                }
-            }
-        });
+            Some(span)
+        }
+        fn store(&mut self, span: &Vec<f32>, i: usize, pixel: usize) {
+            self.image[pixel] = Some(level(&span[i]));
+        }
     }
-    black_box(&image);
-    depth.iter().filter(|d| d.is_finite()).count() as u64
+    let (w, h) = (scene.width, scene.height);
+    let mut s = Fast {
+        kernel,
+        l: scene.light.to_array(),
+        image: vec![None; (w * h) as usize],
+    };
+    draw(w, h, &polygons(mesh, scene, f, Split::Quads), &mut s);
+    black_box(&s.image);
+    s.image.iter().flatten().count() as u64
 }
 
 fn frames(c: &mut Criterion) {

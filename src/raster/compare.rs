@@ -19,8 +19,10 @@
 //! crossings; this harness answers the paper's future-work question.
 
 use super::mesh::Mesh;
-use super::render::{project, Deviation, Scene};
-use super::scan::{rows, ScreenVertex};
+use super::frame::{draw, polygons, Polygon, Shading, Split};
+use super::render::{Deviation, Scene};
+use super::scan::Row;
+use super::stats::deviations;
 use crate::adaptive::Choice;
 use crate::quantize::level;
 use crate::related::bishop_weimer::Taylor;
@@ -345,205 +347,176 @@ fn power(sh: Shader, v: f64, table: &PowerTable) -> f64 {
 type RowLevels = Vec<[u8; 4]>;
 
 /// Renders frame `f` of `mesh` in `scene` with every shader in `f32` (the reference in
-/// `f64`) and measures the deviations.
+/// `f64`) through the frame loop ([`super::frame::draw`], triangles) and measures the
+/// deviations.
 pub fn render_compare(mesh: &Mesh, scene: &Scene, f: u32, opts: CompareOptions) -> CompareFrame {
     let (w, h) = (scene.width, scene.height);
     let npix = (w * h) as usize;
     let cols = COLUMNS.len();
-    let rot = scene.rotation(f);
-    let verts = project(mesh, scene, &rot);
-    let dirs = [scene.light, scene.half()];
-    let prep32 = Prepared::new(Method::AngularTable(crate::method::SOURCE_TABLE), 1.0f32).expect("256 entries");
-    let prep64 = Prepared::new(Method::AngularTable(crate::method::SOURCE_TABLE), 1.0f64).expect("256 entries");
-    let powers: Vec<PowerTable> = SHININESS.iter().map(|&s| PowerTable::new(s)).collect();
-    let mut depth = vec![f32::NEG_INFINITY; npix];
-    // Per pixel: per shader the four levels; the reference's levels.
-    let mut levels: Vec<Option<Vec<[u8; 4]>>> = vec![None; npix];
-    let mut picture = if opts.pictures {
-        vec![vec![None; npix]; cols]
-    } else {
-        Vec::new()
+    let table = Method::AngularTable(crate::method::SOURCE_TABLE);
+    let mut st = CompareStats::empty();
+    st.frames = 1;
+    let mut shading = Comparison {
+        dirs: [scene.light, scene.half()],
+        prep32: Prepared::new(table, 1.0f32).expect("256 entries"),
+        prep64: Prepared::new(table, 1.0f64).expect("256 entries"),
+        powers: SHININESS.iter().map(|&s| PowerTable::new(s)).collect(),
+        opts,
+        setup: None,
+        levels: vec![vec![vec![None; npix]; cols]; 1 + SHININESS.len()],
+        picture: if opts.pictures {
+            vec![vec![None; npix]; cols]
+        } else {
+            Vec::new()
+        },
+        stats: st,
+        out32: vec![Vec::new(); cols],
+        out64: vec![Vec::new(); cols],
+        spec32: vec![Vec::new(); cols],
+        spec64: vec![Vec::new(); cols],
     };
-    let mut stats = CompareStats::empty();
-    stats.frames = 1;
-    let mut out32: Vec<Vec<f32>> = vec![Vec::new(); cols];
-    let mut out64: Vec<Vec<f64>> = vec![Vec::new(); cols];
-    let mut spec32: Vec<Vec<f32>> = vec![Vec::new(); cols];
-    let mut spec64: Vec<Vec<f64>> = vec![Vec::new(); cols];
-    for FrontTriangle {
-        v,
-        centre: (xc, yc),
-        rel,
-        normals,
-    } in front_triangles(mesh, &rot, &verts)
-    {
-        let (Some(s32), Some(s64)) = (
-            TriangleSetup::<f32>::new(rel, normals, &dirs),
-            TriangleSetup::<f64>::new(rel, normals, &dirs),
-        ) else {
-            continue;
-        };
-        rows(&v, w, h, |row| {
-            let n = (row.x_last - row.x_first) as u32;
-            let x0 = f64::from(row.x_first) + 0.5 - xc;
-            let y = f64::from(row.y) + 0.5 - yc;
-            let Some(d32) = shade_row(&s32, 0, x0, y, n, &prep32, &COLUMNS, &mut out32) else {
-                stats.dropped_rows += 1;
-                return;
-            };
-            let Some(_) = shade_row(&s64, 0, x0, y, n, &prep64, &[Shader::PhongPixel], &mut out64)
-            else {
-                stats.dropped_rows += 1;
-                return;
-            };
-            let Some(h32) = shade_row(&s32, 1, x0, y, n, &prep32, &COLUMNS, &mut spec32)
-            else {
-                stats.dropped_rows += 1;
-                return;
-            };
-            let Some(_) = shade_row(&s64, 1, x0, y, n, &prep64, &[Shader::PhongPixel], &mut spec64)
-            else {
-                stats.dropped_rows += 1;
-                return;
-            };
-            let len = n as usize + 1;
-            let row_levels = row_levels(
-                &out32, &out64, &spec32, &spec64, &s32, 1, &h32, x0, y, len, &powers,
-            );
-            if n >= 1 {
-                stats.spans += 1;
-                stats.adaptive_gouraud += u64::from(d32.choice == Choice::Gouraud);
-                // The δ test on N·H, and what the power does to it.
-                // Gouraud of N·H (the δ test's alternative: the linear N·H, power
-                // per pixel) against corrected Euler's levels of (N·H)^s.
-                let ce = &row_levels[index(Shader::Span(Method::CorrectedEuler))];
-                let lin = &spec32[index(Shader::Span(Method::Gouraud))];
-                for (k, pt) in powers.iter().enumerate() {
-                    let same = lin
-                        .iter()
-                        .zip(ce.iter())
-                        .all(|(a, c)| level(&power(Shader::Span(Method::Euler), f64::from(*a), pt)) == c[k + 1]);
-                    let dc = &mut stats.specular_delta[k];
-                    if h32.choice == Choice::Gouraud {
-                        dc.gouraud += 1;
-                        dc.gouraud_but_differ += u64::from(!same);
-                    } else {
-                        dc.corrected_but_same += u64::from(same);
-                    }
-                }
-            }
-            for (j, x) in (row.x_first..=row.x_last).enumerate() {
-                let idx = (row.y as u32 * w + x as u32) as usize;
-                let z = plane_z(&v, f64::from(x) + 0.5, f64::from(row.y) + 0.5);
-                if z > depth[idx] {
-                    depth[idx] = z;
-                    levels[idx] = Some(row_levels.iter().map(|l| l[j]).collect());
-                    if opts.pictures {
-                        let (ka, kd, ks) = PICTURE_LOOK;
-                        let si = opts.shininess.min(SHININESS.len() - 1);
-                        for c in 0..cols {
-                            let (dv, sv) = if c == 0 {
-                                (out64[0][j], power(Shader::PhongPixel, spec64[0][j], &powers[si]))
-                            } else {
-                                let sh = COLUMNS[c];
-                                (
-                                    f64::from(out32[c][j]),
-                                    specular_value(
-                                        sh,
-                                        &spec32[c],
-                                        &s32,
-                                        &h32,
-                                        x0,
-                                        y,
-                                        j,
-                                        n,
-                                        &powers[si],
-                                    ),
-                                )
-                            };
-                            let i = ka + kd * dv.max(0.0) + ks * sv;
-                            picture[c][idx] = Some(level(&i));
-                        }
-                    }
-                }
-            }
-        });
-    }
-    for px in levels.iter().flatten() {
-        stats.pixels += 1;
-        let r = px[0];
-        for (c, l) in px.iter().enumerate() {
-            stats.diffuse[c].add(l[0], r[0]);
-            for k in 0..SHININESS.len() {
-                stats.specular[k][c].add(l[k + 1], r[k + 1]);
-            }
-        }
+    let polys = polygons(mesh, scene, f, Split::Triangles);
+    draw(w, h, &polys, &mut shading);
+    let mut stats = shading.stats;
+    stats.pixels = shading.levels[0][0].iter().flatten().count() as u64;
+    stats.diffuse = deviations(&shading.levels[0], 0);
+    for k in 0..SHININESS.len() {
+        stats.specular[k] = deviations(&shading.levels[k + 1], 0);
     }
     CompareFrame {
         width: w,
         height: h,
-        picture,
+        picture: shading.picture,
         stats,
     }
 }
 
-/// A front-facing triangle of a frame: each visible quad split along the diagonal
-/// from its first to its third vertex, with the centroid (in `f64`) every
-/// polygon method takes its coordinates from.
-pub(crate) struct FrontTriangle {
-    /// The projected vertices.
-    pub(crate) v: [ScreenVertex; 3],
-    /// The centroid in screen coordinates.
-    pub(crate) centre: (f64, f64),
-    /// The vertices relative to the centroid.
-    pub(crate) rel: [(f64, f64); 3],
-    /// The unit vertex normals.
-    pub(crate) normals: [G3; 3],
+/// The vertices of triangle `poly` relative to its centroid, and its unit vertex
+/// normals: what every polygon method is set up from.
+pub(crate) fn triangle_inputs(poly: &Polygon) -> ((f64, f64), [(f64, f64); 3], [G3; 3]) {
+    let (xc, yc) = poly.centre();
+    let v = [poly.v[0], poly.v[1], poly.v[2]];
+    (
+        (xc, yc),
+        v.map(|s| (f64::from(s.x) - xc, f64::from(s.y) - yc)),
+        v.map(|s| s.normal.normalize()),
+    )
 }
 
-/// The front-facing triangles of `mesh` rotated by `rot`, projected as `verts`.
-pub(crate) fn front_triangles(
-    mesh: &Mesh,
-    rot: &glam::Mat3,
-    verts: &[ScreenVertex],
-) -> Vec<FrontTriangle> {
-    let mut out = Vec::new();
-    for q in &mesh.quads {
-        let p: Vec<G3> = q
-            .iter()
-            .map(|&i| *rot * mesh.positions[i as usize])
-            .collect();
-        if (p[2] - p[0]).cross(p[3] - p[1]).z <= 0.0 {
-            continue;
-        }
-        for t in [[q[0], q[1], q[2]], [q[0], q[2], q[3]]] {
-            let v: [ScreenVertex; 3] = t.map(|i| verts[i as usize]);
-            let xc = (f64::from(v[0].x) + f64::from(v[1].x) + f64::from(v[2].x)) / 3.0;
-            let yc = (f64::from(v[0].y) + f64::from(v[1].y) + f64::from(v[2].y)) / 3.0;
-            out.push(FrontTriangle {
-                v,
-                centre: (xc, yc),
-                rel: v.map(|s| (f64::from(s.x) - xc, f64::from(s.y) - yc)),
-                normals: v.map(|s| s.normal.normalize()),
-            });
-        }
-    }
-    out
+/// One shaded row of the comparison: per column, per pixel, the diffuse level and
+/// the specular levels per shininess; the picture levels.
+struct CompareRow {
+    levels: Vec<RowLevels>,
+    picture: Vec<Vec<u8>>,
 }
 
-/// Depth at `(x, y)` on the triangle's plane (barycentric, in `f64`).
-fn plane_z(v: &[ScreenVertex; 3], x: f64, y: f64) -> f32 {
-    let (x0, y0) = (f64::from(v[0].x), f64::from(v[0].y));
-    let (x1, y1) = (f64::from(v[1].x), f64::from(v[1].y));
-    let (x2, y2) = (f64::from(v[2].x), f64::from(v[2].y));
-    let det = (x1 - x0) * (y2 - y0) - (x2 - x0) * (y1 - y0);
-    if det == 0.0 {
-        return v[0].z;
+/// The [`Shading`] of the comparison.
+struct Comparison {
+    dirs: [G3; 2],
+    prep32: Prepared<f32>,
+    prep64: Prepared<f64>,
+    powers: Vec<PowerTable>,
+    opts: CompareOptions,
+    /// The current triangle: its centroid and its set-ups in `f32` and `f64`.
+    setup: Option<((f64, f64), TriangleSetup<f32>, TriangleSetup<f64>)>,
+    /// Per channel (diffuse, then specular per shininess), per column, per pixel.
+    levels: Vec<Vec<Vec<Option<u8>>>>,
+    picture: Vec<Vec<Option<u8>>>,
+    stats: CompareStats,
+    out32: Vec<Vec<f32>>,
+    out64: Vec<Vec<f64>>,
+    spec32: Vec<Vec<f32>>,
+    spec64: Vec<Vec<f64>>,
+}
+
+impl Shading for Comparison {
+    type Row = CompareRow;
+
+    fn polygon(&mut self, _: usize, poly: &Polygon) -> bool {
+        let (centre, rel, normals) = triangle_inputs(poly);
+        self.setup = match (
+            TriangleSetup::<f32>::new(rel, normals, &self.dirs),
+            TriangleSetup::<f64>::new(rel, normals, &self.dirs),
+        ) {
+            (Some(a), Some(b)) => Some((centre, a, b)),
+            _ => None,
+        };
+        self.setup.is_some()
     }
-    let l1 = ((x - x0) * (y2 - y0) - (x2 - x0) * (y - y0)) / det;
-    let l2 = ((x1 - x0) * (y - y0) - (x - x0) * (y1 - y0)) / det;
-    let z = f64::from(v[0].z) * (1.0 - l1 - l2) + f64::from(v[1].z) * l1 + f64::from(v[2].z) * l2;
-    z as f32
+
+    fn row(&mut self, _: usize, _: &Polygon, row: &Row) -> Option<CompareRow> {
+        let ((xc, yc), s32, s64) = self.setup.as_ref()?;
+        let n = (row.x_last - row.x_first) as u32;
+        let x0 = f64::from(row.x_first) + 0.5 - xc;
+        let y = f64::from(row.y) + 0.5 - yc;
+        let reference = [Shader::PhongPixel];
+        let shaded = shade_row(s32, 0, x0, y, n, &self.prep32, &COLUMNS, &mut self.out32)
+            .zip(shade_row(s64, 0, x0, y, n, &self.prep64, &reference, &mut self.out64))
+            .zip(shade_row(s32, 1, x0, y, n, &self.prep32, &COLUMNS, &mut self.spec32))
+            .zip(shade_row(s64, 1, x0, y, n, &self.prep64, &reference, &mut self.spec64));
+        let Some((((d32, _), h32), _)) = shaded else {
+            self.stats.dropped_rows += 1;
+            return None;
+        };
+        let len = n as usize + 1;
+        let (out32, out64, spec32, spec64) = (&self.out32, &self.out64, &self.spec32, &self.spec64);
+        let powers = &self.powers;
+        let levels = row_levels(out32, out64, spec32, spec64, s32, 1, &h32, x0, y, len, powers);
+        let stats = &mut self.stats;
+        if n >= 1 {
+            stats.spans += 1;
+            stats.adaptive_gouraud += u64::from(d32.choice == Choice::Gouraud);
+            // The δ test on N·H, and what the power does to it: Gouraud of N·H (the
+            // δ test's alternative: the linear N·H, power per pixel) against
+            // corrected Euler's levels of (N·H)^s.
+            let ce = &levels[index(Shader::Span(Method::CorrectedEuler))];
+            let lin = &spec32[index(Shader::Span(Method::Gouraud))];
+            for (k, pt) in powers.iter().enumerate() {
+                let same = lin.iter().zip(ce.iter()).all(|(a, c)| {
+                    level(&power(Shader::Span(Method::Euler), f64::from(*a), pt)) == c[k + 1]
+                });
+                let dc = &mut stats.specular_delta[k];
+                if h32.choice == Choice::Gouraud {
+                    dc.gouraud += 1;
+                    dc.gouraud_but_differ += u64::from(!same);
+                } else {
+                    dc.corrected_but_same += u64::from(same);
+                }
+            }
+        }
+        let mut picture = Vec::new();
+        if self.opts.pictures {
+            let (ka, kd, ks) = PICTURE_LOOK;
+            let pt = &powers[self.opts.shininess.min(SHININESS.len() - 1)];
+            for (c, &sh) in COLUMNS.iter().enumerate() {
+                picture.push(
+                    (0..len)
+                        .map(|j| {
+                            let (dv, sv) = if c == 0 {
+                                (out64[0][j], power(Shader::PhongPixel, spec64[0][j], pt))
+                            } else {
+                                let sv = specular_value(sh, &spec32[c], s32, &h32, x0, y, j, n, pt);
+                                (f64::from(out32[c][j]), sv)
+                            };
+                            level(&(ka + kd * dv.max(0.0) + ks * sv))
+                        })
+                        .collect(),
+                );
+            }
+        }
+        Some(CompareRow { levels, picture })
+    }
+
+    fn store(&mut self, r: &CompareRow, j: usize, pixel: usize) {
+        for (c, l) in r.levels.iter().enumerate() {
+            for (k, channel) in self.levels.iter_mut().enumerate() {
+                channel[c][pixel] = Some(l[j][k]);
+            }
+        }
+        for (c, p) in r.picture.iter().enumerate() {
+            self.picture[c][pixel] = Some(p[j]);
+        }
+    }
 }
 
 /// The specular value (after the power) of shader `sh` at pixel `j` of a row.

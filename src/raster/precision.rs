@@ -10,9 +10,10 @@
 //!   accumulated error exceeds one 8-bit level: the set-up computed in `f64` and
 //!   rounded to the precision ([`Span::cast`]), the steps in the precision.
 
-use super::compare::{front_triangles, shade_row, FrontTriangle, TriangleSetup, COLUMNS};
+use super::compare::{shade_row, triangle_inputs, TriangleSetup, COLUMNS};
+use super::frame::{polygons, Split};
 use super::mesh::Mesh;
-use super::render::{project, Deviation, Scene};
+use super::render::{Deviation, Scene};
 use super::scan::rows;
 use crate::lowp::{f16, I16F16, I8F8};
 use crate::quantize::level;
@@ -70,8 +71,6 @@ impl PrecisionStats {
 /// Every drawn row of front-facing triangles of frame `f` (no depth test: every
 /// span counts), each shader in `T` against `f64`.
 pub fn frame<T: Real>(mesh: &Mesh, scene: &Scene, f: u32) -> PrecisionStats {
-    let rot = scene.rotation(f);
-    let verts = project(mesh, scene, &rot);
     let dirs = [scene.light];
     let table_t = Prepared::new(Method::AngularTable(crate::method::SOURCE_TABLE), T::one()).expect("256 entries");
     let table64 = Prepared::new(Method::AngularTable(crate::method::SOURCE_TABLE), 1.0f64).expect("256 entries");
@@ -80,18 +79,13 @@ pub fn frame<T: Real>(mesh: &Mesh, scene: &Scene, f: u32) -> PrecisionStats {
     let mut out_t: Vec<Vec<T>> = vec![Vec::new(); cols];
     let mut out64: Vec<Vec<f64>> = vec![Vec::new(); cols];
     let mut one: Vec<Vec<T>> = vec![Vec::new(); cols];
-    for FrontTriangle {
-        v,
-        centre: (xc, yc),
-        rel,
-        normals,
-    } in front_triangles(mesh, &rot, &verts)
-    {
+    for poly in polygons(mesh, scene, f, Split::Triangles) {
+        let ((xc, yc), rel, normals) = triangle_inputs(&poly);
         let Some(s64) = TriangleSetup::<f64>::new(rel, normals, &dirs) else {
             continue;
         };
         let st_t = TriangleSetup::<T>::new(rel, normals, &dirs);
-        rows(&v, scene.width, scene.height, |row| {
+        rows(&poly.v, scene.width, scene.height, |row| {
             let n = (row.x_last - row.x_first) as u32;
             let x0 = f64::from(row.x_first) + 0.5 - xc;
             let y = f64::from(row.y) + 0.5 - yc;

@@ -7,14 +7,18 @@
 //! depth-test and store the levels per pixel. The statistics of Tables 1 and 2 are then
 //! taken over the visible pixels (Table 2) and over every drawn row (Table 1).
 
+use super::frame::{draw, polygons, Polygon, Shading, Split};
 use super::mesh::Mesh;
-use super::scan::{rows, Row, ScreenVertex};
+use super::scan::Row;
+pub use super::scene::{project, Scene};
+pub use super::stats::Deviation;
+use super::stats::deviations;
 use crate::adaptive::Choice;
 use crate::method::Prepared;
 use crate::quantize::level;
 use crate::scalar::Scalar;
 use crate::{BigRational, Method, Span, Vec3};
-use glam::{Mat3, Vec3 as G3};
+use glam::Vec3 as G3;
 
 pub use super::shader::Shader;
 
@@ -42,91 +46,6 @@ pub fn index(sh: Shader) -> usize {
         .iter()
         .position(|s| *s == sh)
         .expect("a column of Tables 1-2")
-}
-
-/// The fixed scene of the experiment.
-#[derive(Clone, Debug)]
-pub struct Scene {
-    /// Image width in pixels.
-    pub width: u32,
-    /// Image height in pixels.
-    pub height: u32,
-    /// Pixels per world unit of the orthographic projection.
-    pub scale: f32,
-    /// Unit light direction (towards the light), in view space.
-    pub light: G3,
-    /// Unit view direction (towards the viewer): +z.
-    pub view: G3,
-    /// Diffuse coefficient `K_d` (intensity = `K_d·N·L`).
-    pub kd: f32,
-    /// Rotation per frame about x, y and z, in degrees.
-    pub rates_deg: G3,
-}
-
-impl Scene {
-    /// The default scene for a `width × height` image: light from the upper left
-    /// front, `normalize(−1, 1, 2)`; `K_d = 1`; rotation 1.8°, 1.1° and 0.7° per frame
-    /// about x, y and z; a scale that fits a torus of outer radius `outer` with 5 %
-    /// margin.
-    pub fn new(width: u32, height: u32, outer: f32) -> Scene {
-        let scale = 0.95 * 0.5 * (width.min(height) as f32) / outer;
-        Scene {
-            width,
-            height,
-            scale,
-            light: G3::new(-1.0, 1.0, 2.0).normalize(),
-            view: G3::Z,
-            kd: 1.0,
-            rates_deg: G3::new(1.8, 1.1, 0.7),
-        }
-    }
-
-    /// The rotation of frame `f`: about x, then y, then z.
-    pub fn rotation(&self, f: u32) -> Mat3 {
-        let a = self.rates_deg * (f as f32).to_radians();
-        Mat3::from_rotation_z(a.z) * Mat3::from_rotation_y(a.y) * Mat3::from_rotation_x(a.x)
-    }
-
-    /// The half vector `H = normalize(L + V)` for specular light.
-    pub fn half(&self) -> G3 {
-        (self.light + self.view).normalize()
-    }
-}
-
-/// Per-column accumulators of Table 2.
-#[derive(Clone, Debug, Default, PartialEq)]
-pub struct Deviation {
-    /// Visible pixels counted.
-    pub pixels: u64,
-    /// Sum of |level − Phong level|.
-    pub sum: u64,
-    /// Maximum |level − Phong level|.
-    pub max: u32,
-}
-
-impl Deviation {
-    /// Mean deviation in 8-bit levels.
-    pub fn mean(&self) -> f64 {
-        if self.pixels == 0 {
-            0.0
-        } else {
-            self.sum as f64 / self.pixels as f64
-        }
-    }
-
-    /// Counts one pixel whose level is `a` where the reference's is `b`.
-    pub(crate) fn add(&mut self, a: u8, b: u8) {
-        let x = u32::from(a.abs_diff(b));
-        self.pixels += 1;
-        self.sum += u64::from(x);
-        self.max = self.max.max(x);
-    }
-
-    pub(crate) fn merge(&mut self, o: &Deviation) {
-        self.pixels += o.pixels;
-        self.sum += o.sum;
-        self.max = self.max.max(o.max);
-    }
 }
 
 /// Per-row accumulators of Table 1.
@@ -408,129 +327,100 @@ pub struct RenderOptions {
     pub specular: bool,
 }
 
-/// The mesh's vertices rotated by `rot` and projected orthographically into `scene`'s
-/// image, with their rotated normals and vertex (Gouraud) intensities.
-pub fn project(mesh: &Mesh, scene: &Scene, rot: &Mat3) -> Vec<ScreenVertex> {
-    let (cx, cy) = (scene.width as f32 / 2.0, scene.height as f32 / 2.0);
-    mesh.positions
-        .iter()
-        .zip(&mesh.normals)
-        .map(|(p, n)| {
-            let p = *rot * *p;
-            let n = *rot * *n;
-            ScreenVertex {
-                x: cx + scene.scale * p.x,
-                y: cy - scene.scale * p.y,
-                z: p.z,
-                normal: n,
-                intensity: n.dot(scene.light),
-            }
-        })
-        .collect()
-}
-
-/// Renders frame `f` of `mesh` in `scene`.
+/// Renders frame `f` of `mesh` in `scene` through the frame loop
+/// ([`super::frame::draw`]), the paper's quads, every column of [`COLUMNS`] per row.
 pub fn render(mesh: &Mesh, scene: &Scene, f: u32, opts: RenderOptions) -> Frame {
     let (w, h) = (scene.width, scene.height);
     let npix = (w * h) as usize;
     let cols = COLUMNS.len();
-    let rot = scene.rotation(f);
-    let verts = project(mesh, scene, &rot);
     let table = Method::AngularTable(crate::method::SOURCE_TABLE);
-    let prep = Prepared::new(table, scene.kd).expect("256 entries");
     let exact_prep = opts.exact.then(|| {
         let kd = BigRational::from_float(scene.kd).expect("finite");
         Prepared::new(table, kd).expect("256 entries")
     });
-    let mut depth = vec![f32::NEG_INFINITY; npix];
-    let mut levels = vec![vec![None; npix]; cols];
-    let mut specular = if opts.specular {
-        vec![vec![0.0f32; npix]; cols]
-    } else {
-        Vec::new()
+    let mut shading = Tables {
+        scene,
+        opts,
+        prep: Prepared::new(table, scene.kd).expect("256 entries"),
+        exact_prep,
+        levels: vec![vec![None; npix]; cols],
+        specular: if opts.specular {
+            vec![vec![0.0f32; npix]; cols]
+        } else {
+            Vec::new()
+        },
+        rows: RowStats::default(),
+        exact: opts.exact.then(ExactCheck::default),
     };
-    let mut writes = vec![0u32; npix];
-    let mut rows_stats = RowStats::default();
-    let mut exact = opts.exact.then(ExactCheck::default);
-    for q in &mesh.quads {
-        let poly: Vec<ScreenVertex> = q.iter().map(|&i| verts[i as usize]).collect();
-        // Back-face culling: the face normal (from the rotated positions) must face +z.
-        let p: Vec<G3> = q
-            .iter()
-            .map(|&i| rot * mesh.positions[i as usize])
-            .collect();
-        if (p[2] - p[0]).cross(p[3] - p[1]).z <= 0.0 {
-            continue;
-        }
-        rows(&poly, w, h, |row| {
-            let Some((shade, extra)) = shade_row(scene, &row, &prep, opts.specular) else {
-                return;
-            };
-            if extra.single {
-                rows_stats.single_pixel_rows += 1;
-            } else {
-                rows_stats.rows += 1;
-                let same_gc = shade.levels[GOURAUD] == shade.levels[CORRECTED];
-                let same_gp = shade.levels[GOURAUD] == shade.levels[PHONG];
-                rows_stats.gouraud_eq_corrected += u64::from(same_gc);
-                rows_stats.gouraud_eq_phong += u64::from(same_gp);
-                if extra.decision == Choice::Gouraud {
-                    rows_stats.predicted_gouraud += 1;
-                    rows_stats.predicted_gouraud_but_differ += u64::from(!same_gc);
-                } else {
-                    rows_stats.predicted_corrected_but_same += u64::from(same_gc);
-                }
-                if let (Some(check), Some(span), Some(p)) =
-                    (exact.as_mut(), extra.span.as_ref(), exact_prep.as_ref())
-                {
-                    exact_row(span, p, &shade.levels, check);
-                }
-            }
-            let n = row.x_last - row.x_first;
-            for (i, x) in (row.x_first..=row.x_last).enumerate() {
-                let idx = (row.y as u32 * w + x as u32) as usize;
-                writes[idx] += 1;
-                let t = if n == 0 { 0.0 } else { i as f32 / n as f32 };
-                let z = row.left.z + t * (row.right.z - row.left.z);
-                if z > depth[idx] {
-                    depth[idx] = z;
-                    for c in 0..cols {
-                        levels[c][idx] = Some(shade.levels[c][i]);
-                        if opts.specular {
-                            specular[c][idx] = shade.specular[c][i];
-                        }
-                    }
-                }
-            }
-        });
-    }
-    let mut deviation = vec![Deviation::default(); cols];
-    let mut pixels = 0u64;
-    for (idx, phong) in levels[PHONG].iter().enumerate() {
-        let Some(p) = *phong else {
-            continue;
-        };
-        pixels += 1;
-        for (column, dev) in levels.iter().zip(deviation.iter_mut()) {
-            let l = column[idx].expect("every column writes the same pixels");
-            let d = u32::from(l.abs_diff(p));
-            dev.pixels += 1;
-            dev.sum += u64::from(d);
-            dev.max = dev.max.max(d);
-        }
-    }
+    let polys = polygons(mesh, scene, f, Split::Quads);
+    let writes = draw(w, h, &polys, &mut shading);
+    let deviation = deviations(&shading.levels, PHONG);
+    let pixels = shading.levels[PHONG].iter().flatten().count() as u64;
     Frame {
         width: w,
         height: h,
-        levels,
-        specular,
+        levels: shading.levels,
+        specular: shading.specular,
         writes,
         stats: Stats {
             deviation,
-            rows: rows_stats,
+            rows: shading.rows,
             pixels,
             frames: 1,
-            exact,
+            exact: shading.exact,
         },
+    }
+}
+
+/// The [`Shading`] of Tables 1–2: every column's levels per pixel, Table 1 per row.
+struct Tables<'a> {
+    scene: &'a Scene,
+    opts: RenderOptions,
+    prep: Prepared<f32>,
+    exact_prep: Option<Prepared<BigRational>>,
+    levels: Vec<Vec<Option<u8>>>,
+    specular: Vec<Vec<f32>>,
+    rows: RowStats,
+    exact: Option<ExactCheck>,
+}
+
+impl Shading for Tables<'_> {
+    type Row = RowShade;
+
+    fn row(&mut self, _: usize, _: &Polygon, row: &Row) -> Option<RowShade> {
+        let (shade, extra) = shade_row(self.scene, row, &self.prep, self.opts.specular)?;
+        let st = &mut self.rows;
+        if extra.single {
+            st.single_pixel_rows += 1;
+        } else {
+            st.rows += 1;
+            let same_gc = shade.levels[GOURAUD] == shade.levels[CORRECTED];
+            let same_gp = shade.levels[GOURAUD] == shade.levels[PHONG];
+            st.gouraud_eq_corrected += u64::from(same_gc);
+            st.gouraud_eq_phong += u64::from(same_gp);
+            if extra.decision == Choice::Gouraud {
+                st.predicted_gouraud += 1;
+                st.predicted_gouraud_but_differ += u64::from(!same_gc);
+            } else {
+                st.predicted_corrected_but_same += u64::from(same_gc);
+            }
+            if let (Some(check), Some(span), Some(p)) =
+                (self.exact.as_mut(), extra.span.as_ref(), self.exact_prep.as_ref())
+            {
+                exact_row(span, p, &shade.levels, check);
+            }
+        }
+        Some(shade)
+    }
+
+    fn store(&mut self, shade: &RowShade, i: usize, pixel: usize) {
+        for (c, column) in self.levels.iter_mut().enumerate() {
+            column[pixel] = Some(shade.levels[c][i]);
+        }
+        if self.opts.specular {
+            for (c, column) in self.specular.iter_mut().enumerate() {
+                column[pixel] = shade.specular[c][i];
+            }
+        }
     }
 }

@@ -132,20 +132,16 @@ pub enum PhongPixels {
 impl PhongPixels {
     /// `(p, q)` with the method's exact value at pixel `i` of `span` equal to
     /// `p/√q`, where that is known; `None` elsewhere.
-    pub fn exact_at(
-        &self,
-        span: &Span<BigRational>,
-        i: u32,
-    ) -> Option<(BigRational, BigRational)> {
+    pub fn exact_at(&self, span: &Span<BigRational>, i: u32) -> Option<(BigRational, BigRational)> {
         // N_a = N_b: every untabled method is constant p_a (k = 0, q = 1: no step
         // moves the value). Angular with p_a = p_b: the angle does not move.
-        let constant = (span.na == span.nb && !matches!(self, PhongPixels::None | PhongPixels::Table))
+        let constant = (span.na == span.nb
+            && !matches!(self, PhongPixels::None | PhongPixels::Table))
             || (*self == PhongPixels::AngularEnds && span.p_a == span.p_b);
         if constant {
             return Some((span.p_a.clone(), BigRational::from_integer(1.into())));
         }
-        self.at(span.n, i)
-            .then(|| (span.p_at(i), span.q_at(i)))
+        self.at(span.n, i).then(|| (span.p_at(i), span.q_at(i)))
     }
 
     /// Whether pixel `i` of a span of `n` steps is one where the value is Phong's
@@ -355,7 +351,10 @@ impl Method {
         let q = log2_recip(&span.q_min());
         let loss = if self.is_phong_valued() {
             q / 2 + 2
-        } else if matches!(self, Method::Spherical | Method::Binary | Method::BishopWeimer) {
+        } else if matches!(
+            self,
+            Method::Spherical | Method::Binary | Method::BishopWeimer
+        ) {
             let c = span.na.dot(&span.nb);
             let s2 = BigRational::from_integer(1.into()) - c.clone() * c;
             let n_bits = 64 - i64::from(u64::from(span.n + 1).leading_zeros());
@@ -385,7 +384,8 @@ impl Method {
         let phong = self.info().phong_pixels;
         let bits = self.exact_bits(span);
         let e = bits.map(|b| {
-            kd.clone() * BigRational::new(1.into(), num_bigint::BigInt::from(1) << b.max(0) as usize)
+            kd.clone()
+                * BigRational::new(1.into(), num_bigint::BigInt::from(1) << b.max(0) as usize)
         });
         values
             .iter()
@@ -440,9 +440,10 @@ impl Method {
                     }
                     let (ps, qs) = (Pow::pow(p, 2 * s), Pow::pow(q, s));
                     let limit = ps * BigRational::from_integer((255 * 255).into());
-                    return (0..=255u32).rev().find(|&l| {
-                        BigRational::from_integer((l * l).into()) * qs.clone() <= limit
-                    }).map(|l| l as u8);
+                    return (0..=255u32)
+                        .rev()
+                        .find(|&l| BigRational::from_integer((l * l).into()) * qs.clone() <= limit)
+                        .map(|l| l as u8);
                 }
                 match &e {
                     None => Some(level_of_rational(&pow(v))),
@@ -552,7 +553,15 @@ mod tests {
         for m in Method::ALL {
             assert!(seen.insert(m.name()), "two methods named {m}");
         }
-        for bad in ["", "fence", "gouraud-span", "angular-table", "angular-table0256", "angular-table+5", "Phong"] {
+        for bad in [
+            "",
+            "fence",
+            "gouraud-span",
+            "angular-table",
+            "angular-table0256",
+            "angular-table+5",
+            "Phong",
+        ] {
             assert!(bad.parse::<Method>().is_err(), "{bad}");
         }
     }
@@ -560,7 +569,13 @@ mod tests {
     #[test]
     fn field_methods_run_on_field_operations() {
         use crate::reference::unit::unit_from_ints;
-        let span = Span::new(unit_from_ints(1, 0, 3), unit_from_ints(-1, 0, 3), unit_from_ints(0, 0, 1), 4).unwrap();
+        let span = Span::new(
+            unit_from_ints(1, 0, 3),
+            unit_from_ints(-1, 0, 3),
+            unit_from_ints(0, 0, 1),
+            4,
+        )
+        .unwrap();
         let one = BigRational::from_integer(1.into());
         for m in Method::ALL {
             let mut a = vec![one.clone(); 5];

@@ -252,27 +252,88 @@ fn adaptive_reports_delta_m_and_decision() {
     assert_eq!(v2["decision"], "corrected-euler");
 }
 
+/// Every method of the catalogue, in every float scalar, is within its printed
+/// derived bound (`error_bound`) of its exact run, and prints its own name, which
+/// parses back to the method.
 #[test]
-fn every_method_and_float_scalar_answers_close_to_exact() {
-    for method in [
-        "phong",
-        "duff",
-        "symmetric-phong",
-        "gouraud",
-        "euler",
-        "corrected-euler",
-        "adaptive",
-        "angular",
-    ] {
-        let exact = values(&run_json(&span_args(method, "12", "exact")));
-        for (scalar, tol) in [("f32", 1e-5), ("f64", 1e-13)] {
-            let v = values(&run_json(&span_args(method, "12", scalar)));
-            for (a, b) in v.iter().zip(&exact) {
+fn every_method_and_float_scalar_is_within_its_bound_of_exact() {
+    for m in phong_approx::Method::ALL {
+        let name = m.name();
+        let exact_json = run_json(&span_args(&name, "12", "exact"));
+        assert_eq!(exact_json["method"], name.as_ref());
+        assert_eq!(name.parse::<phong_approx::Method>(), Ok(m));
+        let exact = values(&exact_json);
+        for scalar in ["f32", "f64"] {
+            let j = run_json(&span_args(&name, "12", scalar));
+            let bound: f64 = j["error_bound"]
+                .as_str()
+                .unwrap_or_else(|| panic!("{name} {scalar}: no bound"))
+                .parse()
+                .unwrap();
+            let v = values(&j);
+            for (i, (a, b)) in v.iter().zip(&exact).enumerate() {
                 let d = (a.clone() - b.clone()).abs().to_f64().unwrap();
-                assert!(d <= tol, "{method} {scalar}: {d}");
+                assert!(d <= bound, "{name} {scalar} pixel {i}: {d} > {bound}");
             }
         }
     }
+}
+
+/// The related methods refuse opposite normals (undefined there: no unique arc, no
+/// bisector, a zero normal at the expansion point); a Phong-valued method refuses
+/// only the pixel where the normal is zero, naming it.
+#[test]
+fn related_methods_refuse_opposite_normals_and_phong_names_the_pixel() {
+    let args = |m: &'static str, steps: &'static str| {
+        vec![
+            "span",
+            "--method",
+            m,
+            "--na=0,0,1",
+            "--nb=0,0,-1",
+            "--light=0,0,1",
+            "--steps",
+            steps,
+            "--scalar",
+            "exact",
+        ]
+    };
+    for m in ["spherical", "binary", "bishop-weimer"] {
+        let o = bin().args(args(m, "5")).output().unwrap();
+        assert_eq!(o.status.code(), Some(2), "{m}");
+        assert!(
+            String::from_utf8_lossy(&o.stderr).contains("opposite"),
+            "{m}"
+        );
+    }
+    let o = bin().args(args("phong", "4")).output().unwrap();
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("pixel 2 of n = 4"));
+}
+
+/// An exact level that the value's error cannot decide prints as null, never a guess:
+/// spherical interpolation between these normals passes exactly through L at the
+/// middle (value 1, a level boundary), which the exact run decides from the middle
+/// pixel's p/√q; everything it prints is a level.
+#[test]
+fn exact_levels_are_decided_or_null() {
+    let j = run_json(&[
+        "span",
+        "--method",
+        "spherical",
+        "--na",
+        "3/5,0,4/5",
+        "--nb=-3/5,0,4/5",
+        "--light",
+        "0,0,1",
+        "--steps",
+        "4",
+        "--scalar",
+        "exact",
+    ]);
+    let l: Vec<Value> = j["levels"].as_array().unwrap().clone();
+    assert_eq!(l[2], 255, "{l:?}");
+    assert!(l.iter().all(|x| x.is_u64() || x.is_null()));
 }
 
 #[test]

@@ -4,11 +4,11 @@
 use phong_approx::raster::compare::{
     index, render_compare, CompareOptions, Shader, COLUMNS, SHININESS,
 };
-use phong_approx::Method;
 use phong_approx::raster::mesh::{torus, NormalMode};
 use phong_approx::raster::precision::{self, longest, SPAN_LENGTHS};
 use phong_approx::raster::render::Scene;
 use phong_approx::BigRational;
+use phong_approx::Method;
 use std::process::Command;
 
 fn small() -> (phong_approx::raster::mesh::Mesh, Scene) {
@@ -64,7 +64,9 @@ fn one_frame_relations() {
         assert_eq!(dev.pixels, st.pixels);
     }
     assert!(d(Shader::Span(Method::Euler)).mean() > d(Shader::Span(Method::CorrectedEuler)).mean());
-    assert!(d(Shader::Span(Method::Gouraud)).mean() > d(Shader::Span(Method::CorrectedEuler)).mean());
+    assert!(
+        d(Shader::Span(Method::Gouraud)).mean() > d(Shader::Span(Method::CorrectedEuler)).mean()
+    );
     assert!(d(Shader::VertexGouraud).mean() > d(Shader::Span(Method::Gouraud)).mean());
     assert!(st.adaptive_gouraud <= st.spans);
     for dc in &st.specular_delta {

@@ -3,8 +3,8 @@
 use super::{parse_whole, CliError};
 use clap::Args;
 use phong_approx::adaptive::Decision;
-use phong_approx::method::Prepared;
 use phong_approx::conformance::shown;
+use phong_approx::method::Prepared;
 use phong_approx::parse::{parse_rational, parse_vec3};
 use phong_approx::quantize::level;
 use phong_approx::{BigRational, Input, Method, Real, Scalar, Span, SpanError, Vec3};
@@ -456,7 +456,10 @@ fn run_mpfr(r: &Request, precision: u32) -> Result<Outcome, CliError> {
         let bits = mpfr_bits(r, exact.as_ref(), precision, q_bits(&span));
         check_digits(r, &values, bits)?;
         // A level is printed only where the value's error cannot cross a boundary.
-        let e = BigRational::new(1.into(), num_bigint::BigInt::from(1) << bits.max(0) as usize);
+        let e = BigRational::new(
+            1.into(),
+            num_bigint::BigInt::from(1) << bits.max(0) as usize,
+        );
         let levels = values
             .iter()
             .map(|v| {

@@ -18,18 +18,18 @@
 //! The Tables 1–2 reproduction ([`super::render`]) keeps the paper's quads and edge
 //! crossings; this harness answers the paper's future-work question.
 
-use super::mesh::Mesh;
 use super::frame::{draw, polygons, Polygon, Shading, Split};
+use super::mesh::Mesh;
 use super::render::{Deviation, Scene};
 use super::scan::Row;
 use super::stats::deviations;
 use crate::adaptive::Choice;
+use crate::method::Prepared;
 use crate::quantize::level;
 use crate::related::bishop_weimer::Taylor;
 use crate::related::power::PowerTable;
 use crate::related::seiler::Quadratic;
 use crate::related::triangle::{Affine, Triangle};
-use crate::method::Prepared;
 use crate::related::vertex_angle;
 use crate::scalar::Real;
 use crate::{Method, Span, Vec3};
@@ -391,9 +391,13 @@ pub fn render_compare(mesh: &Mesh, scene: &Scene, f: u32, opts: CompareOptions) 
     }
 }
 
+/// A triangle's centroid, its vertices relative to the centroid, and its unit vertex
+/// normals.
+pub(crate) type TriangleInputs = ((f64, f64), [(f64, f64); 3], [G3; 3]);
+
 /// The vertices of triangle `poly` relative to its centroid, and its unit vertex
 /// normals: what every polygon method is set up from.
-pub(crate) fn triangle_inputs(poly: &Polygon) -> ((f64, f64), [(f64, f64); 3], [G3; 3]) {
+pub(crate) fn triangle_inputs(poly: &Polygon) -> TriangleInputs {
     let (xc, yc) = poly.centre();
     let v = [poly.v[0], poly.v[1], poly.v[2]];
     (
@@ -410,6 +414,9 @@ struct CompareRow {
     picture: Vec<Vec<u8>>,
 }
 
+/// A triangle's centroid and its set-ups in `f32` and `f64`.
+type TriangleSetups = ((f64, f64), TriangleSetup<f32>, TriangleSetup<f64>);
+
 /// The [`Shading`] of the comparison.
 struct Comparison {
     dirs: [G3; 2],
@@ -418,7 +425,7 @@ struct Comparison {
     powers: Vec<PowerTable>,
     opts: CompareOptions,
     /// The current triangle: its centroid and its set-ups in `f32` and `f64`.
-    setup: Option<((f64, f64), TriangleSetup<f32>, TriangleSetup<f64>)>,
+    setup: Option<TriangleSetups>,
     /// Per channel (diffuse, then specular per shininess), per column, per pixel.
     levels: Vec<Vec<Vec<Option<u8>>>>,
     picture: Vec<Vec<Option<u8>>>,
@@ -451,9 +458,36 @@ impl Shading for Comparison {
         let y = f64::from(row.y) + 0.5 - yc;
         let reference = [Shader::PhongPixel];
         let shaded = shade_row(s32, 0, x0, y, n, &self.prep32, &COLUMNS, &mut self.out32)
-            .zip(shade_row(s64, 0, x0, y, n, &self.prep64, &reference, &mut self.out64))
-            .zip(shade_row(s32, 1, x0, y, n, &self.prep32, &COLUMNS, &mut self.spec32))
-            .zip(shade_row(s64, 1, x0, y, n, &self.prep64, &reference, &mut self.spec64));
+            .zip(shade_row(
+                s64,
+                0,
+                x0,
+                y,
+                n,
+                &self.prep64,
+                &reference,
+                &mut self.out64,
+            ))
+            .zip(shade_row(
+                s32,
+                1,
+                x0,
+                y,
+                n,
+                &self.prep32,
+                &COLUMNS,
+                &mut self.spec32,
+            ))
+            .zip(shade_row(
+                s64,
+                1,
+                x0,
+                y,
+                n,
+                &self.prep64,
+                &reference,
+                &mut self.spec64,
+            ));
         let Some((((d32, _), h32), _)) = shaded else {
             self.stats.dropped_rows += 1;
             return None;
@@ -461,7 +495,9 @@ impl Shading for Comparison {
         let len = n as usize + 1;
         let (out32, out64, spec32, spec64) = (&self.out32, &self.out64, &self.spec32, &self.spec64);
         let powers = &self.powers;
-        let levels = row_levels(out32, out64, spec32, spec64, s32, 1, &h32, x0, y, len, powers);
+        let levels = row_levels(
+            out32, out64, spec32, spec64, s32, 1, &h32, x0, y, len, powers,
+        );
         let stats = &mut self.stats;
         if n >= 1 {
             stats.spans += 1;

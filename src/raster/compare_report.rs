@@ -386,10 +386,7 @@ pub fn grid(frame: &CompareFrame, title: &[String]) -> RgbImage {
     let n = COLUMNS.len() as u32;
     let rows = n.div_ceil(per_row);
     let width = w * 2 * per_row;
-    let longest = COLUMNS
-        .iter()
-        .map(|s| s.label())
-        .max_by_key(|l| l.len());
+    let longest = COLUMNS.iter().map(|s| s.label()).max_by_key(|l| l.len());
     let s = if font::text_width(longest.as_deref().unwrap_or(""), 2) + 8 <= w {
         2
     } else {
@@ -598,7 +595,7 @@ mod tests {
         assert!(md.starts_with("# Every method on the same tori\n"));
         assert!(md.contains("1 frames per torus at 225×225, tori of radii 1 and 0.4"));
         assert!(md.contains("Ran in 3 s."));
-        assert!(md.contains("| phong | Phong 1975 |  | exact (f64) |"));
+        assert!(md.contains("| phong-pixel | Phong 1975 |  | exact (f64) |"));
         assert!(md.contains("| spherical | Kuijk & Blake 1989 | yes | per pixel |"));
         assert!(md.contains("| seiler | Seiler 1998 | yes | 1024-entry table |"));
         let head = "| method | 288 polygons | 512 polygons | 800 polygons | 1152 polygons |\n|---|---:|---:|---:|---:|\n";
@@ -627,7 +624,10 @@ mod tests {
             ["polygons", "method", "term", "mean", "max", "pixels"]
         );
         assert_eq!(rows.len(), 4 * COLUMNS.len() * (1 + SHININESS.len()));
-        assert_eq!(rows[0], ["288", "phong", "diffuse", "0.000000", "0", "10"]);
+        assert_eq!(
+            rows[0],
+            ["288", "phong-pixel", "diffuse", "0.000000", "0", "10"]
+        );
         let duff_s200 = rows
             .iter()
             .find(|r| r[0] == "1152" && r[1] == "duff" && r[2] == "specular200")

@@ -16,14 +16,14 @@
 pub mod compare;
 pub mod compare_report;
 pub mod experiment;
-pub mod frame;
 pub mod font;
+pub mod frame;
 pub mod mesh;
 pub mod pictures;
 pub mod precision;
 pub mod render;
 pub mod report;
+pub mod scan;
 pub mod scene;
 pub mod shader;
 pub mod stats;
-pub mod scan;

@@ -16,8 +16,8 @@ use super::mesh::Mesh;
 use super::render::{Deviation, Scene};
 use super::scan::rows;
 use crate::lowp::{f16, I16F16, I8F8};
-use crate::quantize::level;
 use crate::method::Prepared;
+use crate::quantize::level;
 use crate::scalar::Real;
 use crate::{Method, Span, Vec3};
 
@@ -72,8 +72,10 @@ impl PrecisionStats {
 /// span counts), each shader in `T` against `f64`.
 pub fn frame<T: Real>(mesh: &Mesh, scene: &Scene, f: u32) -> PrecisionStats {
     let dirs = [scene.light];
-    let table_t = Prepared::new(Method::AngularTable(crate::method::SOURCE_TABLE), T::one()).expect("256 entries");
-    let table64 = Prepared::new(Method::AngularTable(crate::method::SOURCE_TABLE), 1.0f64).expect("256 entries");
+    let table_t = Prepared::new(Method::AngularTable(crate::method::SOURCE_TABLE), T::one())
+        .expect("256 entries");
+    let table64 = Prepared::new(Method::AngularTable(crate::method::SOURCE_TABLE), 1.0f64)
+        .expect("256 entries");
     let cols = COLUMNS.len();
     let mut st = PrecisionStats::empty();
     let mut out_t: Vec<Vec<T>> = vec![Vec::new(); cols];
@@ -174,7 +176,12 @@ pub const SPAN_LENGTHS: [u32; 13] = [1, 2, 4, 8, 16, 32, 64, 128, 256, 512, 1024
 
 /// Shades `span` with `m` and the prepared parameters; `None` if the method refuses
 /// the span or a value is not finite.
-pub fn shade_span<T: Real>(m: Method, span: &Span<T>, prep: &Prepared<T>, out: &mut [T]) -> Option<()> {
+pub fn shade_span<T: Real>(
+    m: Method,
+    span: &Span<T>,
+    prep: &Prepared<T>,
+    out: &mut [T],
+) -> Option<()> {
     m.run(span, prep, out).ok()?;
     out.iter().all(|v| v.is_finite()).then_some(())
 }
@@ -216,8 +223,10 @@ pub fn span_errors<T: Real>(
     m: Method,
     directions: &[(Vec3<f64>, Vec3<f64>, Vec3<f64>)],
 ) -> Vec<Option<f64>> {
-    let table_t = Prepared::new(Method::AngularTable(crate::method::SOURCE_TABLE), T::one()).expect("256 entries");
-    let table64 = Prepared::new(Method::AngularTable(crate::method::SOURCE_TABLE), 1.0f64).expect("256 entries");
+    let table_t = Prepared::new(Method::AngularTable(crate::method::SOURCE_TABLE), T::one())
+        .expect("256 entries");
+    let table64 = Prepared::new(Method::AngularTable(crate::method::SOURCE_TABLE), 1.0f64)
+        .expect("256 entries");
     SPAN_LENGTHS
         .iter()
         .map(|&n| {

@@ -11,8 +11,8 @@ use super::frame::{draw, polygons, Polygon, Shading, Split};
 use super::mesh::Mesh;
 use super::scan::Row;
 pub use super::scene::{project, Scene};
-pub use super::stats::Deviation;
 use super::stats::deviations;
+pub use super::stats::Deviation;
 use crate::adaptive::Choice;
 use crate::method::Prepared;
 use crate::quantize::level;
@@ -268,7 +268,12 @@ const CORRECTED: usize = 6;
 
 /// Exact levels of a row's span for every span column, for the exact mode: the same
 /// span, its `f32` inputs converted exactly (they are within 2^-17 of unit length).
-fn exact_row(span: &Span<f32>, prep: &Prepared<BigRational>, got: &[Vec<u8>], check: &mut ExactCheck) {
+fn exact_row(
+    span: &Span<f32>,
+    prep: &Prepared<BigRational>,
+    got: &[Vec<u8>],
+    check: &mut ExactCheck,
+) {
     let tol = BigRational::new(1.into(), (1u64 << 16).into());
     let (Some(na), Some(nb), Some(l)) = (span.na.cast(), span.nb.cast(), span.l.cast()) else {
         return;
@@ -404,9 +409,11 @@ impl Shading for Tables<'_> {
             } else {
                 st.predicted_corrected_but_same += u64::from(same_gc);
             }
-            if let (Some(check), Some(span), Some(p)) =
-                (self.exact.as_mut(), extra.span.as_ref(), self.exact_prep.as_ref())
-            {
+            if let (Some(check), Some(span), Some(p)) = (
+                self.exact.as_mut(),
+                extra.span.as_ref(),
+                self.exact_prep.as_ref(),
+            ) {
                 exact_row(span, p, &shade.levels, check);
             }
         }

@@ -28,7 +28,6 @@ pub const OUTPUTS: [&str; 13] = [
     "fig0_curves.svg",
 ];
 
-
 /// The span method of [`Method::ALL`] named `name`.
 ///
 /// # Panics
@@ -241,7 +240,11 @@ pub fn pictures(exp: &Experiment) -> Result<Vec<(&'static str, Picture)>, Pictur
     let mut out = vec![
         (
             "fig4_torus800_corrected_euler.png",
-            Picture::Png(shaded_image(&frame, Shader::Span(Method::CorrectedEuler), look)),
+            Picture::Png(shaded_image(
+                &frame,
+                Shader::Span(Method::CorrectedEuler),
+                look,
+            )),
         ),
         (
             "fig5_torus800_phong.png",

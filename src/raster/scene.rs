@@ -73,4 +73,3 @@ pub fn project(mesh: &Mesh, scene: &Scene, rot: &Mat3) -> Vec<ScreenVertex> {
         })
         .collect()
 }
-

@@ -65,11 +65,32 @@ mod tests {
             vec![Some(12), None, Some(199)],
         ];
         let d = deviations(&levels, 0);
-        assert_eq!(d[0], Deviation { pixels: 2, sum: 0, max: 0 });
-        assert_eq!(d[1], Deviation { pixels: 2, sum: 3, max: 2 });
+        assert_eq!(
+            d[0],
+            Deviation {
+                pixels: 2,
+                sum: 0,
+                max: 0
+            }
+        );
+        assert_eq!(
+            d[1],
+            Deviation {
+                pixels: 2,
+                sum: 3,
+                max: 2
+            }
+        );
         assert_eq!(d[1].mean(), 1.5);
         let mut m = d[1].clone();
         m.merge(&d[0]);
-        assert_eq!(m, Deviation { pixels: 4, sum: 3, max: 2 });
+        assert_eq!(
+            m,
+            Deviation {
+                pixels: 4,
+                sum: 3,
+                max: 2
+            }
+        );
     }
 }

@@ -374,7 +374,9 @@ impl Method {
     /// by `kd ≥ 0`: for Phong-valued methods decided from `kd·p_i` and `q_i` in
     /// rationals (no square root); for field-only methods `level(kd·v)` of the exact
     /// value; otherwise decided within the run's error ([`Method::exact_bits`]), and
-    /// `None` at a pixel whose value is within that error of a level boundary.
+    /// `None` at a pixel whose value is within that error of a level boundary (or
+    /// missing from `values`: a Phong-valued method needs none, so its exact run, with
+    /// a square root per pixel, can be skipped).
     pub fn exact_levels(
         &self,
         span: &Span<BigRational>,
@@ -387,14 +389,12 @@ impl Method {
             kd.clone()
                 * BigRational::new(1.into(), num_bigint::BigInt::from(1) << b.max(0) as usize)
         });
-        values
-            .iter()
-            .enumerate()
-            .map(|(i, v)| {
-                let i = i as u32;
+        (0..=span.n)
+            .map(|i| {
                 if let Some((p, q)) = phong.exact_at(span, i) {
                     return phong_level_exact(&(p * kd.clone()), &q);
                 }
+                let v = values.get(i as usize)?;
                 if phong == PhongPixels::Table && v.is_one() {
                     return Some(level_of_rational(kd));
                 }

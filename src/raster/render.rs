@@ -295,12 +295,14 @@ fn exact_row(
         .fold(f64::INFINITY, f64::min);
     for (c, col) in COLUMNS.iter().enumerate() {
         let Shader::Span(m) = col else { continue };
-        if m.run(&exact, prep, &mut out).is_err() {
+        // Phong-valued methods' levels come from p and q alone (no exact run needed).
+        if !m.is_phong_valued() && m.run(&exact, prep, &mut out).is_err() {
             return;
         }
         // Phong-valued pixels: the exact level of p/√q (for q ≈ 1 edges the span's E
         // is within 2^-16 of 1; p/√q is still what the f32 code computes).
-        let levels = m.exact_levels(&exact, &out, kd);
+        let values: &[BigRational] = if m.is_phong_valued() { &[] } else { &out };
+        let levels = m.exact_levels(&exact, values, kd);
         // Without a derived bound, no mismatch counts as explained.
         let bound = crate::tolerance::bound(*m, exact.n, q_min, u)
             .map_or(-1.0, |b| b * 255.0 + 8.0 * u * 255.0);

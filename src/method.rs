@@ -383,8 +383,21 @@ impl Method {
         values: &[BigRational],
         kd: &BigRational,
     ) -> Vec<Option<u8>> {
+        self.levels_within(span, values, kd, self.exact_bits(span))
+    }
+
+    /// [`Method::exact_levels`] for values known to within `2^-bits` of the method's
+    /// values on the exact `span` (`None`: exact), however they were computed (the
+    /// exact run, MPFR): decided exactly where the value is known
+    /// ([`PhongPixels::exact_at`]), else from the value, `None` where undecided.
+    pub fn levels_within(
+        &self,
+        span: &Span<BigRational>,
+        values: &[BigRational],
+        kd: &BigRational,
+        bits: Option<i64>,
+    ) -> Vec<Option<u8>> {
         let phong = self.info().phong_pixels;
-        let bits = self.exact_bits(span);
         let e = bits.map(|b| {
             kd.clone()
                 * BigRational::new(1.into(), num_bigint::BigInt::from(1) << b.max(0) as usize)

@@ -455,18 +455,28 @@ fn run_mpfr(r: &Request, precision: u32) -> Result<Outcome, CliError> {
         };
         let bits = mpfr_bits(r, exact.as_ref(), precision, q_bits(&span));
         check_digits(r, &values, bits)?;
-        // A level is printed only where the value's error cannot cross a boundary.
-        let e = BigRational::new(
-            1.into(),
-            num_bigint::BigInt::from(1) << bits.max(0) as usize,
-        );
-        let levels = values
-            .iter()
-            .map(|v| {
-                v.to_rational()
-                    .and_then(|x| phong_approx::reference::level::level_within(&x, &e))
-            })
-            .collect();
+        // A level is printed only where it is known: decided exactly where the value
+        // is (Phong's p/√q, p_a), else only where its error cannot cross a boundary.
+        let rationals: Vec<BigRational> = values.iter().filter_map(|v| v.to_rational()).collect();
+        let levels = match &exact {
+            Some(x) if rationals.len() == values.len() => {
+                let one = BigRational::from_integer(1.into());
+                r.method.levels_within(x, &rationals, &one, Some(bits))
+            }
+            _ => {
+                let e = BigRational::new(
+                    1.into(),
+                    num_bigint::BigInt::from(1) << bits.max(0) as usize,
+                );
+                values
+                    .iter()
+                    .map(|v| {
+                        v.to_rational()
+                            .and_then(|x| phong_approx::reference::level::level_within(&x, &e))
+                    })
+                    .collect()
+            }
+        };
         Ok(outcome(r, &values, decision, Some(levels)))
     })
 }

@@ -53,7 +53,8 @@ fn value_range(method: &str, span: &Span<BigRational>) -> f64 {
 
 /// No method's value on exact unit inputs leaves `[−4, 4]` (plain Euler's overshoot
 /// is the largest, `|E_i| ≤ 3.77`: `docs/float.md` §3); diffuse expectations outside
-/// this range are refused (Bishop–Weimer's expansion aside: [`value_range`]).
+/// this range are refused (Bishop–Weimer's expansion aside, whose range grows as the
+/// normals near opposite: `1 + τ + τ²/2`, `τ = tan(Ω/2)`, docs/float.md §16.3).
 pub const MAX_DIFFUSE_VALUE: f64 = 4.0;
 
 /// The hexadecimal SHA-256 of `bytes`.

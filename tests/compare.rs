@@ -136,7 +136,7 @@ fn cli_compare_writes_its_tables_and_pictures() {
         .expect("runs");
     assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
     let md = std::fs::read_to_string(out.join("comparison.md")).expect("comparison.md");
-    for sh in COLUMNS {
+    for sh in COLUMNS.iter() {
         assert!(
             md.contains(&format!("| {} |", sh.label())),
             "{}",

@@ -40,26 +40,22 @@ pub const SHININESS: [u32; 3] = [10, 50, 200];
 
 pub use super::shader::Shader;
 
-/// Every column of the comparison, the reference first: the span methods of the
-/// catalogue interleaved with the polygon methods they are compared with.
-pub const COLUMNS: [Shader; 16] = [
-    Shader::PhongPixel,
-    Shader::Span(Method::Phong),
-    Shader::Span(Method::Duff),
-    Shader::Span(Method::SymmetricPhong),
-    Shader::Span(Method::Gouraud),
-    Shader::VertexGouraud,
-    Shader::Span(Method::Euler),
-    Shader::Span(Method::CorrectedEuler),
-    Shader::Span(Method::Adaptive),
-    Shader::Span(Method::Angular),
-    Shader::Span(Method::AngularTable(crate::method::SOURCE_TABLE)),
-    Shader::VertexAngle,
-    Shader::Span(Method::Spherical),
-    Shader::Span(Method::Binary),
-    Shader::BishopWeimerTriangle,
-    Shader::Seiler,
-];
+/// Every column of the comparison, the reference first: every span method of the
+/// catalogue ([`Method::ALL`], in its order), each followed by the polygon methods it
+/// is compared with ([`super::shader::POLYGON_AFTER`]). A method added to the
+/// catalogue appears here by itself.
+pub static COLUMNS: std::sync::LazyLock<Vec<Shader>> = std::sync::LazyLock::new(|| {
+    let mut c = vec![Shader::PhongPixel];
+    for m in Method::ALL {
+        c.push(Shader::Span(m));
+        for (after, p) in super::shader::POLYGON_AFTER {
+            if after == m {
+                c.push(p);
+            }
+        }
+    }
+    c
+});
 
 /// The position of `sh` in [`COLUMNS`].
 ///
@@ -457,7 +453,8 @@ impl Shading for Comparison {
         let x0 = f64::from(row.x_first) + 0.5 - xc;
         let y = f64::from(row.y) + 0.5 - yc;
         let reference = [Shader::PhongPixel];
-        let shaded = shade_row(s32, 0, x0, y, n, &self.prep32, &COLUMNS, &mut self.out32)
+        let all: &[Shader] = &COLUMNS;
+        let shaded = shade_row(s32, 0, x0, y, n, &self.prep32, all, &mut self.out32)
             .zip(shade_row(
                 s64,
                 0,
@@ -475,7 +472,7 @@ impl Shading for Comparison {
                 y,
                 n,
                 &self.prep32,
-                &COLUMNS,
+                &COLUMNS[..],
                 &mut self.spec32,
             ))
             .zip(shade_row(

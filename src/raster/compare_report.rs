@@ -114,7 +114,7 @@ pub fn report_md(exp: &Experiment, pframes: u32, r: &Results, secs: f64) -> Stri
         s,
         "## Methods\n\n| column | source | reconstructed | specular power |\n|---|---|---|---|"
     );
-    for sh in COLUMNS {
+    for sh in COLUMNS.iter() {
         let pw = match sh.label().as_ref() {
             "phong-pixel" => "exact (f64)",
             "gouraud" => "at the span's edges, interpolated",

@@ -91,7 +91,7 @@ pub fn frame<T: Real>(mesh: &Mesh, scene: &Scene, f: u32) -> PrecisionStats {
             let n = (row.x_last - row.x_first) as u32;
             let x0 = f64::from(row.x_first) + 0.5 - xc;
             let y = f64::from(row.y) + 0.5 - yc;
-            if shade_row(&s64, 0, x0, y, n, &table64, &COLUMNS, &mut out64).is_none() {
+            if shade_row(&s64, 0, x0, y, n, &table64, &COLUMNS[..], &mut out64).is_none() {
                 return;
             }
             st.rows += 1;
@@ -99,7 +99,7 @@ pub fn frame<T: Real>(mesh: &Mesh, scene: &Scene, f: u32) -> PrecisionStats {
             // All shaders at once; if that fails, each alone, to count per shader.
             let all_ok = st_t
                 .as_ref()
-                .and_then(|s| shade_row(s, 0, x0, y, n, &table_t, &COLUMNS, &mut out_t))
+                .and_then(|s| shade_row(s, 0, x0, y, n, &table_t, &COLUMNS[..], &mut out_t))
                 .is_some();
             for (c, &sh) in COLUMNS.iter().enumerate() {
                 let values: &[T] = if all_ok {

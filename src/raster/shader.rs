@@ -35,6 +35,18 @@ pub const POLYGON_SHADERS: [Shader; 5] = [
     Shader::Seiler,
 ];
 
+/// Where the comparison shows each polygon method: after the span method it is the
+/// polygon form of (or is compared with).
+pub const POLYGON_AFTER: [(Method, Shader); 4] = [
+    (Method::Gouraud, Shader::VertexGouraud),
+    (
+        Method::AngularTable(crate::method::SOURCE_TABLE),
+        Shader::VertexAngle,
+    ),
+    (Method::BishopWeimer, Shader::BishopWeimerTriangle),
+    (Method::BishopWeimer, Shader::Seiler),
+];
+
 impl Shader {
     /// The name in tables, file names and pictures; a span method's is its catalogue
     /// name, and every label parses back ([`FromStr`]).

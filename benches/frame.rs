@@ -22,31 +22,34 @@ fn frame(mesh: &Mesh, scene: &Scene, f: u32, kernel: Kernel) -> u64 {
     struct Fast {
         kernel: Kernel,
         l: [f32; 3],
+        /// The current row's values (one buffer for the frame, as a renderer keeps).
+        span: Vec<f32>,
         image: Vec<Option<u8>>,
     }
     impl Shading for Fast {
-        type Row = Vec<f32>;
-        fn row(&mut self, _: usize, _: &Polygon, row: &Row) -> Option<Vec<f32>> {
+        type Row = ();
+        fn row(&mut self, _: usize, _: &Polygon, row: &Row) -> Option<()> {
             let n = (row.x_last - row.x_first) as u32;
             let na = row.left.normal.normalize().to_array();
             let nb = row.right.normal.normalize().to_array();
-            let mut span = vec![0f32; n as usize + 1];
+            let span = &mut self.span[..n as usize + 1];
             if n == 0 {
                 let l = self.l;
                 span[0] = na[0] * l[0] + na[1] * l[1] + na[2] * l[2];
             } else {
-                (self.kernel)(&FastSpan::<f32>::new(na, nb, self.l, n), &mut span);
+                (self.kernel)(&FastSpan::<f32>::new(na, nb, self.l, n), span);
             }
-            Some(span)
+            Some(())
         }
-        fn store(&mut self, span: &Vec<f32>, i: usize, pixel: usize) {
-            self.image[pixel] = Some(level(&span[i]));
+        fn store(&mut self, _: &(), i: usize, pixel: usize) {
+            self.image[pixel] = Some(level(&self.span[i]));
         }
     }
     let (w, h) = (scene.width, scene.height);
     let mut s = Fast {
         kernel,
         l: scene.light.to_array(),
+        span: vec![0f32; scene.width as usize + 1],
         image: vec![None; (w * h) as usize],
     };
     draw(w, h, &polygons(mesh, scene, f, Split::Quads), &mut s);

@@ -279,38 +279,6 @@ fn every_method_and_float_scalar_is_within_its_bound_of_exact() {
     }
 }
 
-/// The related methods refuse opposite normals (undefined there: no unique arc, no
-/// bisector, a zero normal at the expansion point); a Phong-valued method refuses
-/// only the pixel where the normal is zero, naming it.
-#[test]
-fn related_methods_refuse_opposite_normals_and_phong_names_the_pixel() {
-    let args = |m: &'static str, steps: &'static str| {
-        vec![
-            "span",
-            "--method",
-            m,
-            "--na=0,0,1",
-            "--nb=0,0,-1",
-            "--light=0,0,1",
-            "--steps",
-            steps,
-            "--scalar",
-            "exact",
-        ]
-    };
-    for m in ["spherical", "binary", "bishop-weimer"] {
-        let o = bin().args(args(m, "5")).output().unwrap();
-        assert_eq!(o.status.code(), Some(2), "{m}");
-        assert!(
-            String::from_utf8_lossy(&o.stderr).contains("opposite"),
-            "{m}"
-        );
-    }
-    let o = bin().args(args("phong", "4")).output().unwrap();
-    assert_eq!(o.status.code(), Some(2));
-    assert!(String::from_utf8_lossy(&o.stderr).contains("pixel 2 of n = 4"));
-}
-
 /// An exact level that the value's error cannot decide prints as null, never a guess:
 /// spherical interpolation between these normals passes exactly through L at the
 /// middle (value 1, a level boundary), which the exact run decides from the middle
@@ -591,4 +559,18 @@ fn opposite_normals_are_computed_where_defined() {
         .map(|x| x.as_u64().unwrap())
         .collect();
     assert_eq!(levels, [255, 255, 255, 0, 0, 0]);
+    // The related methods refuse opposite normals (undefined there: no unique arc, no
+    // bisector, a zero normal at the expansion point); a Phong-valued method refuses
+    // only the pixel where the normal is zero, naming it.
+    for m in ["spherical", "binary", "bishop-weimer"] {
+        let o = run(m, "5");
+        assert_eq!(o.status.code(), Some(2), "{m}");
+        assert!(
+            String::from_utf8_lossy(&o.stderr).contains("opposite"),
+            "{m}"
+        );
+    }
+    let o = run("phong", "4");
+    assert_eq!(o.status.code(), Some(2));
+    assert!(String::from_utf8_lossy(&o.stderr).contains("pixel 2 of n = 4"));
 }

@@ -491,6 +491,7 @@ pub fn pictures(exp: &Experiment, f: u32) -> Vec<(String, RgbImage)> {
 mod tests {
     use super::*;
     use crate::raster::compare::{CompareStats, DeltaCount};
+    use crate::raster::pictures::tests_support::csv_rows;
     use crate::raster::render::Deviation;
 
     /// Shader `c` deviates by `c` in `c` of `10` pixels, diffuse; specular `k` adds `k`
@@ -568,21 +569,6 @@ mod tests {
             spans,
             span_count: 3,
         }
-    }
-
-    fn csv_rows(text: &str) -> (Vec<String>, Vec<Vec<String>>) {
-        let mut r = csv::Reader::from_reader(text.as_bytes());
-        let head = r
-            .headers()
-            .expect("header")
-            .iter()
-            .map(String::from)
-            .collect();
-        let rows = r
-            .records()
-            .map(|rec| rec.expect("a record").iter().map(String::from).collect())
-            .collect();
-        (head, rows)
     }
 
     #[test]

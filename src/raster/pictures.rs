@@ -511,3 +511,23 @@ mod tests {
         assert_eq!(e.to_string(), "plot 'empty': no finite values to plot");
     }
 }
+
+/// Helpers shared by the report modules' tests.
+#[cfg(test)]
+pub(crate) mod tests_support {
+    /// A CSV text's header and records, as strings.
+    pub(crate) fn csv_rows(text: &str) -> (Vec<String>, Vec<Vec<String>>) {
+        let mut r = csv::Reader::from_reader(text.as_bytes());
+        let head = r
+            .headers()
+            .expect("header")
+            .iter()
+            .map(String::from)
+            .collect();
+        let rows = r
+            .records()
+            .map(|rec| rec.expect("a record").iter().map(String::from).collect())
+            .collect();
+        (head, rows)
+    }
+}

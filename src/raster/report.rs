@@ -346,6 +346,7 @@ pub fn scanline_figures(scene: &Scene) -> Result<Vec<(&'static str, String)>, Pi
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::raster::pictures::tests_support::csv_rows;
     use crate::raster::render::{Deviation, ExactCheck, RowStats, Stats};
 
     /// A hand-made result per paper torus: column `c` has `10 + c` pixels, a deviation
@@ -390,21 +391,6 @@ mod tests {
             frames: 2,
             ..Experiment::default()
         }
-    }
-
-    fn csv_rows(text: &str) -> (Vec<String>, Vec<Vec<String>>) {
-        let mut r = csv::Reader::from_reader(text.as_bytes());
-        let head = r
-            .headers()
-            .expect("header")
-            .iter()
-            .map(String::from)
-            .collect();
-        let rows = r
-            .records()
-            .map(|rec| rec.expect("a record").iter().map(String::from).collect())
-            .collect();
-        (head, rows)
     }
 
     #[test]

@@ -380,12 +380,11 @@ Lemma clamped_level_range : forall v : R, (0 <= clamped_level v <= 255)%Z.
 Proof.
   intros v. rewrite clamped_level_clamp. pose proof (clamp01_in v) as [H0 H1].
   unfold level. destruct (Int_part_bounds (255 * clamp01 v)) as [B1 B2].
-  split.
-  - apply le_IZR. simpl. lra.
-  - apply le_IZR. destruct (Rle_lt_or_eq_dec _ _ H1) as [Hlt | Heq].
-    + assert (IZR (Int_part (255 * clamp01 v)) < 255) by lra.
-      apply lt_IZR in H. apply IZR_le. lia.
-    + rewrite Heq. rewrite (Int_part_eq (255 * 1) 255) by (simpl; lra). simpl. lra.
+  assert (Hlo : IZR (-1) < IZR (Int_part (255 * clamp01 v))) by lra.
+  apply lt_IZR in Hlo.
+  assert (Hhi : IZR (Int_part (255 * clamp01 v)) < IZR 256) by lra.
+  apply lt_IZR in Hhi.
+  lia.
 Qed.
 
 Lemma level_diff_ge_1 : forall g c : R, Rabs (g - c) * 255 >= 1 -> level g <> level c.
@@ -541,6 +540,14 @@ Proof.
   - cbn [p_walk]. rewrite IH, S_INR. ring.
 Qed.
 
+Lemma nth_map_seq : forall (g : nat -> R) (len j : nat) (d : R),
+  (j < len)%nat -> nth j (map g (seq 0 len)) d = g j.
+Proof.
+  intros g len j d Hj.
+  rewrite (nth_indep _ d (g 0%nat)) by (rewrite map_length, seq_length; exact Hj).
+  rewrite map_nth, seq_nth by exact Hj. reflexivity.
+Qed.
+
 Lemma sym_index_le_half : forall s i, (i <= n s)%nat -> (sym_index s i <= n s / 2)%nat.
 Proof.
   intros s i Hi. unfold sym_index.
@@ -566,21 +573,15 @@ Proof.
   intros s H. unfold sym_roots, sym_shade.
   rewrite !map_length, !seq_length. split; [reflexivity | split; [reflexivity |]].
   intros i Hi. split; [exact (sym_index_le_half s i Hi) |].
-  set (f := fun i0 => p_walk (A s) (B s) i0
-                      / nth (sym_index s i0)
-                            (map (fun j => sqrt (d_q (duff_span s j)))
-                                 (seq 0 (S (n s / 2)))) 0).
-  rewrite (nth_indep _ 0 (f 0%nat)) by (rewrite map_length, seq_length; lia).
-  rewrite map_nth, seq_nth by lia. simpl (0 + i)%nat. unfold f.
   pose proof (sym_index_le_half s i Hi) as Hix.
-  rewrite (nth_indep _ 0 ((fun j => sqrt (d_q (duff_span s j))) 0%nat))
-    by (rewrite map_length, seq_length; lia).
-  rewrite map_nth, seq_nth by lia. simpl (0 + sym_index s i)%nat.
+  rewrite nth_map_seq by lia. unfold sym_roots. rewrite nth_map_seq by lia.
   rewrite p_walk_closed.
   assert (Hq : d_q (duff_span s (sym_index s i)) = d_q (duff_span s i)).
   { unfold sym_index. destruct (i <=? n s / 2)%nat; [reflexivity |].
     exact (sec_4_duff_q_is_symmetric s i H Hi). }
-  rewrite Hq. exact (proj2 (proj2 (eq_5_7_duff_computes_phong s i))).
+  rewrite Hq. unfold duff_span.
+  rewrite (proj1 (proj2 (eq_5_7_duff_recurrence_exact (A s) (B s) (C s) (D s) (E s) i))).
+  reflexivity.
 Qed.
 
 (** ** Claim: eq. 14 as a sum of slopes *)

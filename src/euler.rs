@@ -18,7 +18,7 @@ use crate::span::Span;
 /// # Errors
 /// [`SpanError::OutputLength`] if `out.len() ≠ n + 1`.
 ///
-/// Claims: `eq_13_slope_closed_form`, `eq_14_euler_closed_form` (proofs/Euler.v; tests/claims.rs).
+/// Claims: `eq_13_slope_closed_form`, `eq_14_euler_closed_form` (proofs/Euler.v), `eq_14_euler_sum_of_slopes` (proofs/ClosedForms.v); tests/claims.rs.
 pub fn shade<T: Scalar>(span: &Span<T>, out: &mut [T]) -> Result<(), SpanError> {
     span.check_output(out)?;
     recurrence(span.p_a.clone(), span.di_a.clone(), &span.ds, out);

@@ -7,7 +7,10 @@ use crate::scalar::Scalar;
 /// as an implementation in that type would; for the exact level of an irrational
 /// Phong value use [`crate::reference::level::phong_level_exact`].
 ///
-/// Claims: `eq_24_delta_test_does_not_imply_same_levels` (proofs/Adaptive.v; tests/claims.rs).
+/// Claims: `eq_24_delta_test_does_not_imply_same_levels` (proofs/Adaptive.v), and for this
+/// clamped quantiser `eq_24_delta_test_does_not_imply_same_clamped_levels`,
+/// `eq_24_delta_test_fails_on_concrete_span_clamped`,
+/// `eq_24_large_delta_implies_different_clamped_levels` (proofs/ClosedForms.v); tests/claims.rs.
 pub fn level<T: Scalar>(v: &T) -> u8 {
     if *v <= T::zero() {
         return 0;

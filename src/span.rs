@@ -79,7 +79,9 @@ pub struct Span<T> {
     pub di_b: T,
     /// `ds = (di_b − di_a)/n`, the step of the interpolated derivative (§3).
     ///
-    /// Claims: `eq_11_ds_closed_form` (proofs/Span.v; tests/claims.rs).
+    /// With unit edge normals `ds = −(1 − N_a·N_b)(p_a + p_b)/n²`.
+    ///
+    /// Claims: `eq_11_ds_closed_form` (proofs/Span.v), `eq_11_ds_unit_closed_form` (proofs/ClosedForms.v); tests/claims.rs.
     pub ds: T,
     /// `p_n = p_a + n·di_a + (n² − n)/2 · ds`, where plain Euler ends (eq. 14).
     ///
@@ -87,7 +89,11 @@ pub struct Span<T> {
     pub p_n: T,
     /// `ε = p_n − p_b`, plain Euler's error at the right edge (eq. 15).
     ///
-    /// Claims: `eq_15_euler_misses_pb` (proofs/Euler.v; tests/claims.rs).
+    /// With unit edge normals `ε = (1 − N_a·N_b)((p_a − p_b)/2 + (p_a + p_b)/(2n))`, which
+    /// tends to `(1 − N_a·N_b)(p_a − p_b)/2` as `n` grows, and is zero only when
+    /// `N_a = N_b` or `n(p_a − p_b) + p_a + p_b = 0`.
+    ///
+    /// Claims: `eq_15_euler_misses_pb` (proofs/Euler.v), `eq_15_eps_closed_form`, `eq_15_eps_limit`, `eq_15_euler_misses_pb_general` (proofs/ClosedForms.v); tests/claims.rs.
     pub eps: T,
     /// `dε = ε/n`, the correction per step (eq. 17; the text prints `ε/N`).
     pub d_eps: T,

@@ -660,3 +660,244 @@ fn mortensen_unequal_angles_counterexample() {
     assert!((phong[1].clone() * phong[1].clone() - q(4, 5)).abs() < tol);
     assert!((ang[1].clone() - phong[1].clone()).abs() > q(1, 100));
 }
+
+// ---- closed forms with unit normals (proofs/ClosedForms.v) -----------------------
+
+/// `c = N_a·N_b`, the cosine of the angle between the edge normals.
+fn cos_ab(s: &Span<Q>) -> Q {
+    s.na.dot(&s.nb)
+}
+
+#[test]
+fn eq_11_ds_unit_closed_form() {
+    for_all_spans(CASES, |_, s| {
+        let want = -(Q::one() - cos_ab(s)) * (s.p_a.clone() + s.p_b.clone()) / (qi(s.n) * qi(s.n));
+        eq("ds", &s.ds, &want)
+    });
+}
+
+#[test]
+fn eq_15_eps_closed_form() {
+    for_all_spans(CASES, |_, s| {
+        let want = (Q::one() - cos_ab(s))
+            * ((s.p_a.clone() - s.p_b.clone()) / q(2, 1)
+                + (s.p_a.clone() + s.p_b.clone()) / (q(2, 1) * qi(s.n)));
+        eq("ε", &s.eps, &want)?;
+        // ε is where plain Euler's recurrence ends, minus p_b.
+        let e = values(Method::Euler, s);
+        eq("p_n − p_b", &(e[s.n as usize].clone() - s.p_b.clone()), &want)
+    });
+}
+
+#[test]
+fn eq_15_eps_limit() {
+    // Fixed edge normals and light, n = 1, 2, 4, …, 4096: the distance of ε from
+    // (1 − c)(p_a − p_b)/2 is exactly (1 − c)|p_a + p_b|/(2n), so it halves with n and
+    // the limit is not 0 unless c = 1 or p_a = p_b.
+    let cases = [
+        (Stereo(1, 2, 7), Stereo(3, -1, 8), Stereo(2, 1, 5)),
+        (Stereo(1, 0, 3), Stereo(-1, 0, 3), Stereo(1, 1, 4)),
+        (Stereo(5, 2, 9), Stereo(5, 3, 9), Stereo(-2, 7, 11)),
+    ];
+    for (na, nb, l) in cases {
+        let mut last: Option<Q> = None;
+        for e in 0..=12 {
+            let n = 1u32 << e;
+            let s = Span::new(na.unit(), nb.unit(), l.unit(), n).unwrap();
+            let c = cos_ab(&s);
+            let limit = (Q::one() - c.clone()) * (s.p_a.clone() - s.p_b.clone()) / q(2, 1);
+            let gap = (s.eps.clone() - limit.clone()).abs();
+            let want = (Q::one() - c) * (s.p_a.clone() + s.p_b.clone()).abs() / (q(2, 1) * qi(n));
+            assert_eq!(gap, want, "n = {n}, {na:?} {nb:?} {l:?}");
+            if let Some(prev) = last {
+                assert_eq!(gap.clone() * q(2, 1), prev, "the gap halves with n");
+            }
+            last = Some(gap);
+            assert!(!limit.is_zero(), "these spans have a nonzero limit");
+        }
+    }
+}
+
+#[test]
+fn eq_15_euler_misses_pb_general() {
+    for_all_spans(CASES, |_, s| {
+        let e = values(Method::Euler, s);
+        let hits = e[s.n as usize] == s.p_b;
+        let cond = cos_ab(s).is_one()
+            || (qi(s.n) * (s.p_a.clone() - s.p_b.clone()) + s.p_a.clone() + s.p_b.clone())
+                .is_zero();
+        ensure(hits == cond, || {
+            format!("Euler hits p_b: {hits}, the condition: {cond}")
+        })?;
+        ensure(cos_ab(s).is_one() == (s.na == s.nb), || "c = 1 iff N_a = N_b".into())
+    });
+    // The second alternative, on purpose: L perpendicular to both normals (p_a = p_b = 0),
+    // and n = 1 with p_a = 0.
+    for (na, nb, l, n) in [
+        (Stereo(1, 0, 3), Stereo(-1, 0, 3), Stereo(0, 1, 1), 5),
+        (Stereo(0, 0, 1), Stereo(1, 0, 2), Stereo(1, 0, 1), 1),
+    ] {
+        let s = Span::new(na.unit(), nb.unit(), l.unit(), n).unwrap();
+        assert!(s.na != s.nb);
+        assert!(s.eps.is_zero(), "ε = {} on {na:?} {nb:?} {l:?} n = {n}", s.eps);
+    }
+}
+
+#[test]
+fn eq_24_delta_unit_closed_form() {
+    for_all_spans(CASES, |_, s| {
+        let base = -(Q::one() - cos_ab(s)) * (s.p_a.clone() + s.p_b.clone()) / q(8, 1);
+        let want = if s.n % 2 == 0 {
+            base
+        } else {
+            base * (Q::one() - Q::one() / (qi(s.n) * qi(s.n)))
+        };
+        eq("δ", &adaptive::delta_at(s, s.n.div_ceil(2)), &want)?;
+        eq("decide's δ", &adaptive::decide(s, &Q::one()).delta, &want)
+    });
+}
+
+#[test]
+fn eq_23_24_paper_step_gives_delta() {
+    // The paper's procedure, written out here independently of `adaptive::decide`:
+    // m = (d_p − t_0)/d_s, truncate and add 1, eq. 24 at that step.
+    for_all_spans(CASES, |_, s| {
+        if s.ds.is_zero() {
+            // m is undefined; δ = 0 and corrected Euler is Gouraud at every pixel.
+            eq("δ", &adaptive::delta_at(s, s.n.div_ceil(2)), &Q::zero())?;
+            let g = values(Method::Gouraud, s);
+            let c = values(Method::CorrectedEuler, s);
+            return ensure(g == c, || "ds = 0 but G ≠ CE".into());
+        }
+        let m = (s.dp.clone() - s.t0.clone()) / s.ds.clone();
+        let step = m.trunc() + Q::one();
+        let delta = step.clone() * s.dp.clone()
+            - (step.clone() * s.t0.clone()
+                + (step.clone() * step.clone() - step.clone()) / q(2, 1) * s.ds.clone());
+        eq("step", &step, &qi(s.n.div_ceil(2)))?;
+        eq("δ", &delta, &adaptive::delta_at(s, s.n.div_ceil(2)))?;
+        eq("decide's δ", &delta, &adaptive::decide(s, &Q::one()).delta)
+    });
+    // ds = 0 on purpose: p_a + p_b = 0 with N_a ≠ N_b.
+    let s = Span::new(
+        Stereo(1, 0, 3).unit(),
+        Stereo(-1, 0, 3).unit(),
+        Stereo(1, 0, 1).unit(),
+        4,
+    )
+    .unwrap();
+    assert!(s.ds.is_zero() && !s.p_a.is_zero());
+    assert_eq!(values(Method::Gouraud, &s), values(Method::CorrectedEuler, &s));
+    assert!(adaptive::decide(&s, &Q::one()).delta.is_zero());
+}
+
+/// `floor(255·clamp(v, 0, 1))` written out (with 1 ↦ 255), to check the crate's
+/// quantiser against.
+fn clamped_level(v: &Q) -> u8 {
+    if !v.is_positive() {
+        0
+    } else if *v >= Q::one() {
+        255
+    } else {
+        (v.clone() * q(255, 1)).floor().to_integer().try_into().unwrap()
+    }
+}
+
+#[test]
+fn eq_24_delta_test_does_not_imply_same_clamped_levels() {
+    let g = q(1, 255);
+    let c = q(1, 255) - q(1, 1000);
+    assert!((g.clone() - c.clone()).abs() * q(255, 1) < Q::one());
+    assert_eq!((clamped_level(&g), clamped_level(&c)), (1, 0));
+    assert_eq!((level(&g), level(&c)), (1, 0));
+    // The crate's quantiser is the clamped one on a grid through [−1, 2].
+    for i in -255..=510 {
+        for off in [q(0, 1), q(1, 1000), q(-1, 1000)] {
+            let v = q(i, 255) + off;
+            assert_eq!(level(&v), clamped_level(&v), "v = {v}");
+        }
+    }
+}
+
+#[test]
+fn eq_24_delta_test_fails_on_concrete_span_clamped() {
+    let s = Span::new(
+        Stereo(0, 1, 3).unit(),
+        Stereo(0, 1, 4).unit(),
+        Stereo(0, 0, 1).unit(),
+        2,
+    )
+    .unwrap();
+    let d = adaptive::decide(&s, &Q::one());
+    assert!((d.delta.clone() * q(255, 1)).abs() < Q::one());
+    let g = values(Method::Gouraud, &s);
+    let c = values(Method::CorrectedEuler, &s);
+    assert_eq!((clamped_level(&g[1]), clamped_level(&c[1])), (214, 215));
+}
+
+#[test]
+fn eq_24_large_delta_implies_different_clamped_levels() {
+    for_all_spans(CASES, |_, s| {
+        let d = adaptive::decide(s, &Q::one());
+        let Some(step) = d.step else { return Ok(()) };
+        let g = values(Method::Gouraud, s)[step as usize].clone();
+        let c = values(Method::CorrectedEuler, s)[step as usize].clone();
+        let inside = |v: &Q| !v.is_negative() && *v <= Q::one();
+        if (d.delta.clone() * q(255, 1)).abs() >= Q::one() && inside(&g) && inside(&c) {
+            ensure(clamped_level(&g) != clamped_level(&c), || {
+                format!("|δ·255| ≥ 1, values in [0, 1], equal levels at {step}")
+            })?;
+        }
+        Ok(())
+    });
+    // Without the premise it fails: both values above 1, or both below 0.
+    for (g, c) in [(q(2, 1), q(1, 1)), (q(-1, 1), q(0, 1)), (q(-1, 1), q(1, 1000))] {
+        assert!((g.clone() - c.clone()).abs() * q(255, 1) >= Q::one());
+        assert_eq!(clamped_level(&g), clamped_level(&c), "{g} {c}");
+    }
+}
+
+#[test]
+fn sec_4_symmetric_phong_algorithm() {
+    // The mirrored half-span computation, both parities on purpose and on random spans.
+    for n in 1..=9 {
+        let s = Span::new(
+            Stereo(1, 2, 7).unit(),
+            Stereo(-3, 1, 5).unit(),
+            Stereo(2, -1, 6).unit(),
+            n,
+        )
+        .unwrap();
+        let sym = values(Method::SymmetricPhong, &s);
+        for i in 0..=n {
+            let want = s.p_at(i) / s.q_at(i).sqrt();
+            assert_eq!(sym[i as usize], want, "n = {n}, pixel {i}");
+        }
+    }
+    for_all_spans(CASES, |_, s| {
+        let sym = values(Method::SymmetricPhong, s);
+        for i in 0..=s.n {
+            eq(&format!("pixel {i}"), &sym[i as usize], &(s.p_at(i) / s.q_at(i).sqrt()))?;
+        }
+        Ok(())
+    });
+}
+
+#[test]
+fn eq_14_euler_sum_of_slopes() {
+    // The recurrence's value after m steps is p_0 plus the sum of the slopes it used,
+    // s_0 + j·ds for j < m, which is the arithmetic series of eq. 14.
+    for_all_spans(CASES, |_, s| {
+        let e = values(Method::Euler, s);
+        let mut sum = s.p_a.clone();
+        for m in 0..=s.n {
+            eq(&format!("p_{m}"), &e[m as usize], &sum)?;
+            let closed = s.p_a.clone()
+                + qi(m) * s.di_a.clone()
+                + (qi(m) * qi(m) - qi(m)) / q(2, 1) * s.ds.clone();
+            eq(&format!("closed form at {m}"), &sum, &closed)?;
+            sum = sum + s.di_a.clone() + qi(m) * s.ds.clone();
+        }
+        Ok(())
+    });
+}

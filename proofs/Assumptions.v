@@ -4,6 +4,7 @@
     on the standard library axioms of the real numbers. *)
 
 From PhongApprox Require Import Span Duff Euler Derivative Symmetry Adaptive Angular Related.
+From PhongApprox Require Import ClosedForms.
 From PhongApprox Require Import FloatModel Float Fixed.
 
 (** Span.v *)
@@ -119,6 +120,30 @@ Check spherical_equals_phong_at_the_middle.
 Print Assumptions spherical_equals_phong_at_the_middle.
 Check vertex_angle_equal_angles_give_a_flat_polygon.
 Print Assumptions vertex_angle_equal_angles_give_a_flat_polygon.
+
+(** ClosedForms.v *)
+Check eq_11_ds_unit_closed_form.
+Print Assumptions eq_11_ds_unit_closed_form.
+Check eq_15_eps_closed_form.
+Print Assumptions eq_15_eps_closed_form.
+Check eq_15_eps_limit.
+Print Assumptions eq_15_eps_limit.
+Check eq_15_euler_misses_pb_general.
+Print Assumptions eq_15_euler_misses_pb_general.
+Check eq_24_delta_unit_closed_form.
+Print Assumptions eq_24_delta_unit_closed_form.
+Check eq_23_24_paper_step_gives_delta.
+Print Assumptions eq_23_24_paper_step_gives_delta.
+Check eq_24_delta_test_does_not_imply_same_clamped_levels.
+Print Assumptions eq_24_delta_test_does_not_imply_same_clamped_levels.
+Check eq_24_delta_test_fails_on_concrete_span_clamped.
+Print Assumptions eq_24_delta_test_fails_on_concrete_span_clamped.
+Check eq_24_large_delta_implies_different_clamped_levels.
+Print Assumptions eq_24_large_delta_implies_different_clamped_levels.
+Check sec_4_symmetric_phong_algorithm.
+Print Assumptions sec_4_symmetric_phong_algorithm.
+Check eq_14_euler_sum_of_slopes.
+Print Assumptions eq_14_euler_sum_of_slopes.
 
 (** Float.v *)
 Check float_gouraud_binary32.

@@ -286,8 +286,8 @@ Definition paper_delta (s : span) : R :=
 (* Note: First conjunct: every span with ds <> 0 (no unit normals needed; ds <> 0
    forces n >= 1). Second: ds = 0 with n >= 1, where the paper's m is undefined:
    then delta = 0 and corrected Euler IS Gouraud at every pixel; Coq's x/0 = 0 makes
-   m = 0, the step 1, and the procedure still returns delta. For n = 0 (ds = 0) the
-   procedure returns -di_a instead of delta = 0. *)
+   m = 0, the step 1, and the procedure still returns delta. Third: for n = 0 (then
+   ds = 0) the procedure returns -di_a instead of delta = 0. *)
 (** Paper §5, eqs. 23-24: "n = (d_p - t_0)/d_s" ... "we need to truncate it and add 1"
     ... "delta = n d_p - (n t_0 + (n^2 - n)/2 ds)": the procedure computes exactly
     delta = G(m') - CE(m') with m' = (n + 1)/2. *)
@@ -297,9 +297,23 @@ Theorem eq_23_24_paper_step_gives_delta : forall s : span,
      /\ paper_step s = Z.of_nat (m_step (n s)) /\ paper_delta s = delta s)
   /\ ((0 < n s)%nat -> ds s = 0 ->
      delta s = 0 /\ (forall i : nat, gouraud s i = ceuler s i)
-     /\ paper_step s = 1%Z /\ paper_delta s = delta s).
+     /\ paper_step s = 1%Z /\ paper_delta s = delta s)
+  /\ (n s = 0%nat -> ds s = 0 /\ delta s = 0 /\ paper_delta s = - dia s).
 Proof.
-  intros s. split.
+  intros s. split; [| split].
+  3: { intros Hn0.
+       assert (Hds : ds s = 0) by (unfold ds; rewrite Hn0; simpl INR; unfold Rdiv;
+                                   rewrite Rinv_0; ring).
+       assert (Hdp : dp s = 0) by (unfold dp; rewrite Hn0; simpl INR; unfold Rdiv;
+                                   rewrite Rinv_0; ring).
+       assert (Ht0 : t0 s = dia s) by (unfold t0, corr_t0; rewrite Hn0; simpl INR;
+                                       unfold Rdiv; rewrite Rinv_0; ring).
+       assert (Hst : paper_step s = 1%Z).
+       { unfold paper_step, m_real. rewrite Hds. unfold Rdiv.
+         rewrite Rinv_0, Rmult_0_r, (Int_part_eq 0 0) by (simpl; lra). reflexivity. }
+       split; [exact Hds | split].
+       - unfold delta; cbv zeta. rewrite Hn0. change (m_step 0) with 0%nat. change (INR 0) with 0. field.
+       - unfold paper_delta; cbv zeta. rewrite Hst, Hdp, Ht0, Hds. simpl IZR. ring. }
   - intros Hds. pose proof (ds_nonzero_n s Hds) as Hn.
     assert (Hm : m_real s = (INR (n s) - 1) / 2)
       by exact (eq_23_m_is_half_n_minus_1 s Hds).

@@ -158,3 +158,86 @@ fn proofs_admit_nothing() {
         }
     }
 }
+
+/// The theorems that hold by unfolding definitions or restate another theorem at one
+/// instance: proved and tested like the others, but listed apart and not counted as
+/// results (docs/derivations.md §15, proofs/README.md, README.md).
+const DEFINITIONAL: [&str; 6] = [
+    "eq_2_p_is_linear",
+    "eq_3_q_is_quadratic",
+    "eq_3_e_is_one",
+    "eq_14_arithmetic_series",
+    "eq_14_euler_end_value",
+    "eq_17_corrected_euler_starts_at_pa",
+];
+
+/// Every number written just before `word` in `text` ("57 substantive theorems").
+fn counts_before(text: &str, word: &str) -> Vec<usize> {
+    text.match_indices(word)
+        .filter_map(|(i, _)| {
+            let head = text[..i].trim_end();
+            let digits: String = head
+                .chars()
+                .rev()
+                .take_while(char::is_ascii_digit)
+                .collect::<Vec<_>>()
+                .into_iter()
+                .rev()
+                .collect();
+            digits.parse().ok()
+        })
+        .collect()
+}
+
+#[test]
+fn the_index_counts_only_substantive_theorems() {
+    let all = theorems_with_files();
+    let names: BTreeSet<String> = all.iter().map(|(t, _)| t.clone()).collect();
+    for d in DEFINITIONAL {
+        assert!(names.contains(d), "definitional {d} is not a theorem");
+    }
+    let substantive = all.len() - DEFINITIONAL.len();
+    let paper = paper_theorems();
+    let paper_substantive = paper.len() - DEFINITIONAL.len();
+    // The counts the documents state.
+    for doc in ["README.md", "proofs/README.md", "docs/derivations.md"] {
+        let text = read(doc);
+        let s = counts_before(&text, "substantive theorems");
+        let d = counts_before(&text, "definitional statements");
+        assert!(!s.is_empty() && !d.is_empty(), "{doc} states no counts");
+        for c in s {
+            assert!(
+                c == substantive || c == paper_substantive,
+                "{doc} says {c} substantive theorems; there are {substantive} ({paper_substantive} on the paper and the second source)"
+            );
+        }
+        for c in d {
+            assert_eq!(c, DEFINITIONAL.len(), "{doc}: definitional statements");
+        }
+    }
+    // The index of docs/derivations.md: one row per paper theorem, its kind given.
+    let deriv = read("docs/derivations.md");
+    let index = &deriv[deriv.find("## 15. Index of claims").expect("§15")..];
+    let mut rows = BTreeSet::new();
+    for line in index.lines().filter(|l| l.starts_with("| `")) {
+        let cells: Vec<&str> = line.split('|').map(str::trim).collect();
+        let name = cells[1].trim_matches('`').to_string();
+        let kind = cells[2];
+        let want = if DEFINITIONAL.contains(&name.as_str()) {
+            "definitional"
+        } else {
+            "theorem"
+        };
+        assert_eq!(kind, want, "index row {name}");
+        assert!(rows.insert(name.clone()), "index row {name} twice");
+    }
+    assert_eq!(rows, paper, "the index rows are not the paper's theorems");
+    // proofs/README.md lists the definitional ones under their own heading.
+    let readme = read("proofs/README.md");
+    let apart = &readme[readme
+        .find("## Definitional statements")
+        .expect("proofs/README.md lists definitional statements apart")..];
+    for d in DEFINITIONAL {
+        assert!(apart.contains(&format!("`{d}`")), "proofs/README.md: {d} not listed apart");
+    }
+}

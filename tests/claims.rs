@@ -901,3 +901,328 @@ fn eq_14_euler_sum_of_slopes() {
         Ok(())
     });
 }
+
+// ---- §7: the error against Phong, by angle (proofs/Angle.v) -----------------------
+
+/// The fraction `t = i/n` of pixel `i`.
+fn t_of(s: &Span<Q>, i: u32) -> Q {
+    qi(i) / qi(s.n)
+}
+
+/// `(a, b)` with `Ph(t) − M(t) = a·p_a + b·p_b` for the methods of §7, from the
+/// closed forms in `t` (`1 − c = k`, `h = 1/n`); `r = 1/√q(t)` to `2^-256`.
+fn error_coefficients(method: Method, s: &Span<Q>, i: u32) -> (Q, Q) {
+    let t = t_of(s, i);
+    let u = Q::one() - t.clone();
+    let k = Q::one() - cos_ab(s);
+    let r = Q::one() / s.q_at(i).sqrt();
+    let st = t.clone() * u.clone();
+    let h = Q::one() / qi(s.n);
+    let two = q(2, 1);
+    let (alpha, beta) = match method {
+        Method::Gouraud => (u.clone(), t.clone()),
+        Method::CorrectedEuler => (
+            u.clone() + k.clone() * st.clone() / two.clone(),
+            t.clone() + k.clone() * st.clone() / two.clone(),
+        ),
+        Method::Euler => {
+            let w = k.clone() * (t.clone() * t.clone() - t.clone() * h) / two.clone();
+            (u.clone() + t.clone() * k.clone() - w.clone(), t.clone() - w)
+        }
+        _ => unreachable!("§7 covers Gouraud, corrected Euler and Euler"),
+    };
+    (u * r.clone() - alpha, t * r - beta)
+}
+
+/// `√(a² + b² + 2abc)`: the length of `a N_a + b N_b`, the largest error over unit lights.
+fn sup_over_lights(s: &Span<Q>, (a, b): &(Q, Q)) -> Q {
+    (a.clone() * a.clone() + b.clone() * b.clone() + q(2, 1) * a.clone() * b.clone() * cos_ab(s))
+        .sqrt()
+}
+
+/// Phong at pixel `i`, to `2^-256`.
+fn phong_value(s: &Span<Q>, i: u32) -> Q {
+    s.p_at(i) / s.q_at(i).sqrt()
+}
+
+fn tiny() -> Q {
+    two_pow(-200)
+}
+
+#[test]
+fn sec_7_phong_in_t() {
+    // p(i)/√q(i) = ((1−t)p_a + t p_b)/√(1 − 2(1−c)t(1−t)), checked exactly on p and q.
+    for_all_spans(CASES, |_, s| {
+        let k = Q::one() - cos_ab(s);
+        for i in 0..=s.n {
+            let t = t_of(s, i);
+            let g = (Q::one() - t.clone()) * s.p_a.clone() + t.clone() * s.p_b.clone();
+            eq(&format!("p({i})"), &s.p_at(i), &g)?;
+            let qt = Q::one() - q(2, 1) * k.clone() * t.clone() * (Q::one() - t);
+            eq(&format!("q({i})"), &s.q_at(i), &qt)?;
+        }
+        Ok(())
+    });
+}
+
+#[test]
+fn sec_7_gouraud_in_t() {
+    for_all_spans(CASES, |_, s| {
+        let g = values(Method::Gouraud, s);
+        for i in 0..=s.n {
+            let t = t_of(s, i);
+            let want = (Q::one() - t.clone()) * s.p_a.clone() + t * s.p_b.clone();
+            eq(&format!("G({i})"), &g[i as usize], &want)?;
+        }
+        Ok(())
+    });
+}
+
+#[test]
+fn sec_7_corrected_euler_in_t() {
+    // CE(t) = (1−t)p_a + t p_b + (1−c)(p_a+p_b)/2 · t(1−t): independent of n.
+    for_all_spans(CASES, |_, s| {
+        let ce = values(Method::CorrectedEuler, s);
+        let k = Q::one() - cos_ab(s);
+        for i in 0..=s.n {
+            let t = t_of(s, i);
+            let want = (Q::one() - t.clone()) * s.p_a.clone()
+                + t.clone() * s.p_b.clone()
+                + k.clone() * (s.p_a.clone() + s.p_b.clone()) / q(2, 1) * t.clone() * (Q::one() - t);
+            eq(&format!("CE({i})"), &ce[i as usize], &want)?;
+        }
+        Ok(())
+    });
+}
+
+#[test]
+fn sec_7_euler_in_t() {
+    // E(t) = CE(t) + t·ε with ε = (1−c)((p_a − p_b)/2 + (p_a + p_b)/(2n)).
+    for_all_spans(CASES, |_, s| {
+        let e = values(Method::Euler, s);
+        let ce = values(Method::CorrectedEuler, s);
+        let k = Q::one() - cos_ab(s);
+        let eps = k
+            * ((s.p_a.clone() - s.p_b.clone()) / q(2, 1)
+                + (s.p_a.clone() + s.p_b.clone()) / (q(2, 1) * qi(s.n)));
+        for i in 0..=s.n {
+            let want = ce[i as usize].clone() + t_of(s, i) * eps.clone();
+            eq(&format!("E({i})"), &e[i as usize], &want)?;
+        }
+        Ok(())
+    });
+}
+
+#[test]
+fn sec_7_error_sup_over_lights() {
+    // The error is linear in L: Ph − M = a p_a + b p_b = L·(a N_a + b N_b), so it is at
+    // most |a N_a + b N_b|, and that is reached at L = (a N_a + b N_b)/|…|.
+    for_all_spans(CASES, |_, s| {
+        for m in [Method::Gouraud, Method::CorrectedEuler, Method::Euler] {
+            let v = values(m, s);
+            for i in 0..=s.n {
+                let ab = error_coefficients(m, s, i);
+                let err = phong_value(s, i) - v[i as usize].clone();
+                let lin = ab.0.clone() * s.p_a.clone() + ab.1.clone() * s.p_b.clone();
+                ensure((err.clone() - lin).abs() < tiny(), || {
+                    format!("{m:?} pixel {i}: error is not a·p_a + b·p_b")
+                })?;
+                ensure(err.abs() <= sup_over_lights(s, &ab) + tiny(), || {
+                    format!("{m:?} pixel {i}: error above |a N_a + b N_b|")
+                })?;
+            }
+        }
+        Ok(())
+    });
+    // Reached: for a span in the x–z plane, a rational light close to V/|V| comes
+    // within 10^-6 of the bound.
+    let s = plane_span(q(1, 2), 16);
+    for m in [Method::Gouraud, Method::CorrectedEuler, Method::Euler] {
+        for i in [3, 8, 13] {
+            let ab = error_coefficients(m, &s, i);
+            let sup = sup_over_lights(&s, &ab);
+            let (best, _) = worst_light(&s, m, i);
+            assert!(
+                sup.clone() - best.clone() < q(1, 1_000_000),
+                "{m:?} pixel {i}: sup {sup} best light {best}"
+            );
+        }
+    }
+}
+
+/// The span `N_a = (0, 0, 1)`, `N_b = (sin θ, 0, cos θ)` with `tan(θ/2) = m`, light along
+/// `N_a` (the light is replaced per pixel by [`worst_light`]).
+fn plane_span(m: Q, n: u32) -> Span<Q> {
+    let one = Q::one();
+    let den = one.clone() + m.clone() * m.clone();
+    let nb = phong_approx::Vec3::new(
+        q(2, 1) * m.clone() / den.clone(),
+        Q::zero(),
+        (one.clone() - m.clone() * m) / den,
+    );
+    let na = phong_approx::Vec3::new(Q::zero(), Q::zero(), one.clone());
+    Span::new(na.clone(), nb, na, n).unwrap()
+}
+
+/// The light in the plane of the normals closest to `(a N_a + b N_b)/|…|` among rational
+/// unit vectors `(2w, 0, 1 − w²)/(1 + w²)` with `w` on a `10^-9` grid: the error of
+/// `method` at pixel `i` under it, and the span.
+fn worst_light(s: &Span<Q>, method: Method, i: u32) -> (Q, Span<Q>) {
+    let (a, b) = error_coefficients(method, s, i);
+    let f = |x: &Q| num_traits::ToPrimitive::to_f64(x).unwrap();
+    // V = a N_a + b N_b in the x–z plane.
+    let vx = f(&a) * f(&s.na.x) + f(&b) * f(&s.nb.x);
+    let vz = f(&a) * f(&s.na.z) + f(&b) * f(&s.nb.z);
+    let phi = vx.atan2(vz);
+    let w = Q::new(
+        (((phi / 2.0).tan() * 1e9).round() as i64).into(),
+        1_000_000_000i64.into(),
+    );
+    let den = Q::one() + w.clone() * w.clone();
+    let l = phong_approx::Vec3::new(
+        q(2, 1) * w.clone() / den.clone(),
+        Q::zero(),
+        (Q::one() - w.clone() * w) / den,
+    );
+    let t = Span::new(s.na.clone(), s.nb.clone(), l, s.n).unwrap();
+    let err = (phong_value(&t, i) - values(method, &t)[i as usize].clone()).abs();
+    (err, t)
+}
+
+/// `tan(θ/2)` of an angle in degrees, rounded down to a multiple of `10^-9` (so the
+/// span's angle is at most `θ` and within about `10^-7` degrees of it).
+fn half_tan_below(deg: f64) -> Q {
+    let t = (deg.to_radians() / 2.0).tan();
+    Q::new(((t * 1e9).floor() as i64 - 1).into(), 1_000_000_000i64.into())
+}
+
+/// `tan(θ/2)` rounded up (the angle is at least `θ`).
+fn half_tan_above(deg: f64) -> Q {
+    let t = (deg.to_radians() / 2.0).tan();
+    Q::new(((t * 1e9).ceil() as i64 + 1).into(), 1_000_000_000i64.into())
+}
+
+/// The largest error of `method` against Phong over every pixel of a 64-step span at
+/// angle `m = tan(θ/2)`, each pixel under its own worst light (rational, near
+/// `V/|V|`), computed in rationals with a `2^-256`-accurate square root.
+fn worst_error_at_angle(method: Method, m: Q, n: u32) -> Q {
+    let s = plane_span(m, n);
+    (0..=n).map(|i| worst_light(&s, method, i).0).max().unwrap()
+}
+
+/// The proved table of corrected Euler's worst error (8-bit levels, `K_d = 1`) by the
+/// angle between the edge normals: (degrees, bound in levels) — `sec_7_corrected_euler_angle_table`.
+const CE_TABLE: [(f64, f64); 14] = [
+    (5.0, 0.00410),
+    (10.0, 0.0328),
+    (15.0, 0.111),
+    (20.0, 0.264),
+    (25.0, 0.519),
+    (30.0, 0.904),
+    (35.0, 1.45),
+    (40.0, 2.19),
+    (45.0, 3.16),
+    (50.0, 4.39),
+    (60.0, 7.83),
+    (70.0, 12.9),
+    (80.0, 20.1),
+    (90.0, 30.0),
+];
+
+#[test]
+fn sec_7_corrected_euler_angle_table() {
+    // At each angle of the table: no pixel of any light exceeds the proved bound, and the
+    // worst light found comes within 2 % of it (the bound is tight).
+    for (deg, levels) in CE_TABLE {
+        let bound = Q::new(((levels * 1e6).round() as i64).into(), 255_000_000i64.into());
+        let worst = worst_error_at_angle(Method::CorrectedEuler, half_tan_below(deg), 64);
+        let ratio = num_traits::ToPrimitive::to_f64(&(worst.clone() / bound.clone())).unwrap();
+        println!("{deg}°: worst {:.4} levels, bound {levels} ({:.1} %)", ratio * levels, 100.0 * ratio);
+        assert!(worst <= bound, "{deg}°: {worst} above the bound {levels}/255");
+        assert!(ratio > 0.98, "{deg}°: the bound is {:.1} % above the worst found", 100.0 / ratio - 100.0);
+    }
+    // Random spans at or below each angle never exceed it either.
+    for_all_spans(CASES, |_, s| {
+        let c = num_traits::ToPrimitive::to_f64(&cos_ab(s)).unwrap();
+        let ce = values(Method::CorrectedEuler, s);
+        for (deg, levels) in CE_TABLE {
+            if c >= f64::cos(f64::to_radians(deg)) + 1e-12 {
+                let bound = Q::new(((levels * 1e6).round() as i64).into(), 255_000_000i64.into());
+                for i in 0..=s.n {
+                    let err = (phong_value(s, i) - ce[i as usize].clone()).abs();
+                    ensure(err <= bound.clone() + tiny(), || format!("{deg}° pixel {i}"))?;
+                }
+                break;
+            }
+        }
+        Ok(())
+    });
+}
+
+#[test]
+fn sec_7_corrected_euler_one_level() {
+    // Up to 31.0° within one level, up to 24.6° within half a level; at 31.1° and 24.8°
+    // some pixel under some light is further off.
+    let one = q(1, 255);
+    let half = q(1, 510);
+    assert!(worst_error_at_angle(Method::CorrectedEuler, half_tan_below(31.0), 64) <= one);
+    assert!(worst_error_at_angle(Method::CorrectedEuler, half_tan_below(24.6), 64) <= half);
+    assert!(worst_error_at_angle(Method::CorrectedEuler, half_tan_above(31.1), 64) > one);
+    assert!(worst_error_at_angle(Method::CorrectedEuler, half_tan_above(24.8), 64) > half);
+}
+
+#[test]
+fn sec_7_gouraud_angle_bound() {
+    // |Ph − G| ≤ 1 − √((1+c)/2) = 1 − cos(θ/2) at every pixel of every span.
+    for_all_spans(CASES, |_, s| {
+        let g = values(Method::Gouraud, s);
+        let bound = Q::one() - ((Q::one() + cos_ab(s)) / q(2, 1)).sqrt();
+        for i in 0..=s.n {
+            let err = (phong_value(s, i) - g[i as usize].clone()).abs();
+            ensure(err <= bound.clone() + tiny(), || format!("pixel {i}"))?;
+        }
+        Ok(())
+    });
+    // Equality at the middle pixel with L along N_a + N_b: Na = (3/5,0,4/5),
+    // Nb = (−3/5,0,4/5), L = (0,0,1), n = 2: Ph = 1, G = 4/5, 1 − cos(θ/2) = 1/5.
+    let s = Span::new(
+        Stereo(1, 0, 3).unit(),
+        Stereo(-1, 0, 3).unit(),
+        Stereo(0, 0, 1).unit(),
+        2,
+    )
+    .unwrap();
+    let g = values(Method::Gouraud, &s);
+    assert_eq!(s.p_at(1), q(4, 5));
+    assert_eq!(s.q_at(1), q(16, 25));
+    assert_eq!(q(1, 1) - g[1].clone(), q(1, 5));
+    assert_eq!(((Q::one() + cos_ab(&s)) / q(2, 1)), q(16, 25));
+}
+
+#[test]
+fn sec_7_euler_angle_bound() {
+    // |Ph − E| ≤ 1 − c at every pixel of every span, every n.
+    for_all_spans(CASES, |_, s| {
+        let e = values(Method::Euler, s);
+        let bound = Q::one() - cos_ab(s);
+        for i in 0..=s.n {
+            let err = (phong_value(s, i) - e[i as usize].clone()).abs();
+            ensure(err <= bound.clone() + tiny(), || format!("pixel {i}"))?;
+        }
+        Ok(())
+    });
+    // Equality at n = 1, pixel 1, L = N_a: E_1 = p_b + (1 − c)p_a with p_a = 1.
+    let s = Span::new(Stereo(1, 2, 7).unit(), Stereo(-3, 1, 5).unit(), Stereo(1, 2, 7).unit(), 1)
+        .unwrap();
+    let e = values(Method::Euler, &s);
+    assert_eq!(e[1].clone() - s.p_b.clone(), Q::one() - cos_ab(&s));
+    // And at the table's angles no worst light exceeds 1 − c (n = 1 and n = 64).
+    for deg in [5.0, 30.0, 60.0, 90.0] {
+        for n in [1, 64] {
+            let m = half_tan_below(deg);
+            let s = plane_span(m.clone(), n);
+            let worst = worst_error_at_angle(Method::Euler, m, n);
+            assert!(worst <= Q::one() - cos_ab(&s) + tiny(), "{deg}° n = {n}");
+        }
+    }
+}

@@ -4,7 +4,7 @@
     on the standard library axioms of the real numbers. *)
 
 From PhongApprox Require Import Span Duff Euler Derivative Symmetry Adaptive Angular Related.
-From PhongApprox Require Import ClosedForms.
+From PhongApprox Require Import ClosedForms Angle.
 From PhongApprox Require Import FloatModel Float Fixed.
 
 (** Span.v *)
@@ -144,6 +144,26 @@ Check sec_4_symmetric_phong_algorithm.
 Print Assumptions sec_4_symmetric_phong_algorithm.
 Check eq_14_euler_sum_of_slopes.
 Print Assumptions eq_14_euler_sum_of_slopes.
+
+(** Angle.v *)
+Check sec_7_phong_in_t.
+Print Assumptions sec_7_phong_in_t.
+Check sec_7_gouraud_in_t.
+Print Assumptions sec_7_gouraud_in_t.
+Check sec_7_corrected_euler_in_t.
+Print Assumptions sec_7_corrected_euler_in_t.
+Check sec_7_euler_in_t.
+Print Assumptions sec_7_euler_in_t.
+Check sec_7_error_sup_over_lights.
+Print Assumptions sec_7_error_sup_over_lights.
+Check sec_7_gouraud_angle_bound.
+Print Assumptions sec_7_gouraud_angle_bound.
+Check sec_7_corrected_euler_angle_table.
+Print Assumptions sec_7_corrected_euler_angle_table.
+Check sec_7_corrected_euler_one_level.
+Print Assumptions sec_7_corrected_euler_one_level.
+Check sec_7_euler_angle_bound.
+Print Assumptions sec_7_euler_angle_bound.
 
 (** Float.v *)
 Check float_gouraud_binary32.

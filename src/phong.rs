@@ -18,7 +18,8 @@ use crate::span::Span;
 /// where a float `q` rounds to zero (edge normals nearly opposite);
 /// [`SpanError::ZeroNormal`] at the middle pixel of a span with `N_b = −N_a`, even `n`.
 ///
-/// Claims: `eq_4_phong_exact_on_edges` (proofs/Span.v; tests/claims.rs).
+/// Claims: `eq_4_phong_exact_on_edges` (proofs/Span.v); in closed form in `t = i/n`,
+/// `sec_7_phong_in_t` (proofs/Angle.v); tests/claims.rs.
 pub fn shade<T: Real>(span: &Span<T>, out: &mut [T]) -> Result<(), SpanError> {
     span.check_output(out)?;
     span.check_nonzero_normal()?;

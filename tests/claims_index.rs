@@ -238,6 +238,9 @@ fn the_index_counts_only_substantive_theorems() {
         .find("## Definitional statements")
         .expect("proofs/README.md lists definitional statements apart")..];
     for d in DEFINITIONAL {
-        assert!(apart.contains(&format!("`{d}`")), "proofs/README.md: {d} not listed apart");
+        assert!(
+            apart.contains(&format!("`{d}`")),
+            "proofs/README.md: {d} not listed apart"
+        );
     }
 }

@@ -147,7 +147,14 @@ fn mortensen_sample() -> &'static [(usize, Span<Q>)] {
             let nb = Stereo(a * scale + next(-6, 6), b * scale + next(-6, 6), d * scale);
             let l = Stereo(next(-40, 40), next(-40, 40), next(1, 24));
             let n = next(2, 16) as u32;
-            let Some(s) = (Case { why: "mortensen", na, nb, l, n }).span() else {
+            let Some(s) = (Case {
+                why: "mortensen",
+                na,
+                nb,
+                l,
+                n,
+            })
+            .span() else {
                 continue;
             };
             if !(s.p_a.is_positive() || s.p_b.is_positive()) {
@@ -249,7 +256,11 @@ fn erratum_mortensen_99_percent() {
     }
     // Every bin with θ ≥ 10° is below 99 % with 95 % confidence.
     for (b, &(_, _, _, wh)) in shares.iter().enumerate().skip(2) {
-        assert!(wh < 0.99, "bin {:?}: angular matched Phong on ≥ 99 %", BINS[b]);
+        assert!(
+            wh < 0.99,
+            "bin {:?}: angular matched Phong on ≥ 99 %",
+            BINS[b]
+        );
     }
     // The source's own equal-angle case fails.
     let s = Span::new(
@@ -290,7 +301,9 @@ fn erratum_mortensen_two_terms() {
     assert!(at90 > 59.0, "error at 90°: {at90} levels");
 
     let sample = mortensen_sample();
-    println!("bin | spans | two-term = true cosine (angular levels) at every pixel | 95 % interval");
+    println!(
+        "bin | spans | two-term = true cosine (angular levels) at every pixel | 95 % interval"
+    );
     let mut wide_hi = 1.0;
     for (b, &(lo, hi)) in BINS.iter().enumerate() {
         let (mut total, mut same) = (0usize, 0usize);
@@ -315,7 +328,10 @@ fn erratum_mortensen_two_terms() {
         }
     }
     // Not sufficient: with the light at large angles the two-term cosine changes levels.
-    assert!(wide_hi < 0.9, "two-term cosine matched on ≥ 90 % of wide spans");
+    assert!(
+        wide_hi < 0.9,
+        "two-term cosine matched on ≥ 90 % of wide spans"
+    );
 }
 
 /// B7 ("x should have a range of 0 to 90 degrees"), measured: per angle bin, the share
@@ -361,8 +377,14 @@ fn erratum_mortensen_0_to_90_degrees() {
     }
     // Lit spans with an edge past 90° occur, clamping changes the output on some of
     // them, and the unclamped angles match Phong at least as often.
-    assert!(all_straddle > 0 && all_changed > 0, "{all_straddle} {all_changed}");
-    assert!(right_free >= right_clamped, "{right_free} < {right_clamped}");
+    assert!(
+        all_straddle > 0 && all_changed > 0,
+        "{all_straddle} {all_changed}"
+    );
+    assert!(
+        right_free >= right_clamped,
+        "{right_free} < {right_clamped}"
+    );
 }
 
 #[test]

@@ -183,6 +183,19 @@ fn to_f64(v: &Q) -> f64 {
     num_traits::ToPrimitive::to_f64(v).unwrap()
 }
 
+/// Prints one bin's row `lo–hi° | total | k (share) | interval` (then `tail`) and
+/// returns the 95 % Wilson interval.
+fn print_share((lo, hi): (f64, f64), k: usize, total: usize, tail: &str) -> (f64, f64) {
+    let (wl, wh) = wilson(k, total);
+    println!(
+        "{lo}–{hi}° | {total} | {k} ({:.1} %) | {:.1}–{:.1} %{tail}",
+        100.0 * k as f64 / total as f64,
+        100.0 * wl,
+        100.0 * wh
+    );
+    (wl, wh)
+}
+
 /// The 95 % Wilson score interval of a share `k/total`.
 fn wilson(k: usize, total: usize) -> (f64, f64) {
     let (k, t, z) = (k as f64, total as f64, 1.96f64);
@@ -245,13 +258,7 @@ fn erratum_mortensen_99_percent() {
             total += 1;
             ok += usize::from(got == phong_levels_opt(s));
         }
-        let (wl, wh) = wilson(ok, total);
-        println!(
-            "{lo}–{hi}° | {total} | {ok} ({:.1} %) | {:.1}–{:.1} % | {undecided}",
-            100.0 * ok as f64 / total as f64,
-            100.0 * wl,
-            100.0 * wh
-        );
+        let (wl, wh) = print_share((lo, hi), ok, total, &format!(" | {undecided}"));
         shares.push((ok, total, wl, wh));
     }
     // Every bin with θ ≥ 10° is below 99 % with 95 % confidence.
@@ -316,13 +323,7 @@ fn erratum_mortensen_two_terms() {
             total += 1;
             same += usize::from(exact == approx);
         }
-        let (wl, wh) = wilson(same, total);
-        println!(
-            "{lo}–{hi}° | {total} | {same} ({:.1} %) | {:.1}–{:.1} %",
-            100.0 * same as f64 / total as f64,
-            100.0 * wl,
-            100.0 * wh
-        );
+        let (_, wh) = print_share((lo, hi), same, total, "");
         if b == BINS.len() - 1 {
             wide_hi = wh;
         }

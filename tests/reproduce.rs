@@ -213,6 +213,44 @@ fn reproduce_writes_tables_and_pictures() {
     }
     let csv = std::fs::read_to_string(dir.join("table2.csv")).unwrap();
     assert_eq!(csv.lines().count(), 1 + 4 * COLUMNS.len());
+    // Every reading of Table 1 is printed.
+    for r in phong_approx::raster::render::Reading::ALL {
+        assert!(text.contains(r.label()), "{}", r.label());
+    }
+    let _ = std::fs::remove_dir_all(&dir);
+}
+
+#[test]
+fn reproduce_runs_the_calibrated_scene() {
+    let dir = std::env::temp_dir().join(format!("phong-approx-fit-{}", std::process::id()));
+    let out = bin()
+        .args([
+            "reproduce",
+            "--scene",
+            "paper-fit",
+            "--frames",
+            "1",
+            "--exact-frames",
+            "0",
+            "--out",
+        ])
+        .arg(&dir)
+        .output()
+        .unwrap();
+    assert!(
+        out.status.success(),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    let text = String::from_utf8(out.stdout).unwrap();
+    let e = Experiment::paper_fit();
+    let scene = format!(
+        "Scene: tori R = {}, r = {}, analytic normals, ring × tube segments",
+        e.radii.0, e.radii.1
+    );
+    assert!(text.contains(&scene), "{scene}\n{text}");
+    assert!(text.contains(&format!("; {}×{} pixels,", e.size.0, e.size.1)));
+    assert!(text.contains(&format!("K_d = {}", e.setup.kd)));
     let _ = std::fs::remove_dir_all(&dir);
 }
 
@@ -236,6 +274,11 @@ fn bad_input_to_reproduce_gets_one_line_and_exit_2() {
     bad(&["--size", "0x0"], "--size:");
     bad(&["--radii", "1,2"], "--radii: '1,2': need 0 < r < R");
     bad(&["--normals", "smooth"], "--normals: unknown mode 'smooth'");
+    bad(&["--scene", "nice"], "--scene: unknown scene 'nice'");
+    bad(
+        &["--fit", "--fit-frames", "0", "--frames", "5"],
+        "--fit-frames: must be between 1 and 5",
+    );
     bad(
         &["--exact-frames", "500", "--frames", "10"],
         "--exact-frames: must be between 0 and 10",

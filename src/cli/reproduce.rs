@@ -13,6 +13,8 @@ use phong_approx::raster::report::{self, OUTPUTS};
 use std::path::PathBuf;
 use std::time::Instant;
 
+mod fit;
+
 /// Arguments of `phong-approx reproduce`.
 #[derive(Args, Debug)]
 pub struct ReproduceArgs {
@@ -39,6 +41,19 @@ pub struct ReproduceArgs {
     /// Frames of the 800-polygon torus also evaluated in exact rationals.
     #[arg(long, value_name = "K", default_value = "1")]
     pub exact_frames: String,
+    /// The scene: `default` (docs/reproduction.md's choices, with --size, --radii and
+    /// --normals) or `paper-fit` (the calibrated scene of `--fit`, which sets its own
+    /// size and radii).
+    #[arg(long, value_name = "NAME", default_value = "default")]
+    pub scene: String,
+    /// Run the calibration study instead: fit the scene choices the paper leaves open
+    /// to its Tables 1–2 (starting from --scene), confirm the best scene at --frames,
+    /// and write fit.md and fit_sensitivity.svg.
+    #[arg(long)]
+    pub fit: bool,
+    /// Frames per torus for each scene of the --fit search.
+    #[arg(long, value_name = "N", default_value = "40")]
+    pub fit_frames: String,
 }
 
 /// Runs `phong-approx reproduce`.
@@ -62,16 +77,38 @@ pub fn run(a: &ReproduceArgs) -> Result<(), CliError> {
         }
     };
     let exact_frames = parse_whole("--exact-frames", &a.exact_frames, 0, frames, "")?;
-    a.torus.budget(size, frames, exact_frames)?;
+    let exp = match a.scene.as_str() {
+        "default" => Experiment {
+            frames,
+            size,
+            radii,
+            normals,
+            exact_frames,
+            ..Experiment::default()
+        },
+        "paper-fit" => Experiment {
+            frames,
+            normals,
+            exact_frames,
+            ..Experiment::paper_fit()
+        },
+        o => {
+            return Err(CliError::arg(
+                "--scene",
+                format!(
+                    "unknown scene '{}' (expected default or paper-fit)",
+                    shown(o)
+                ),
+            ))
+        }
+    };
+    a.torus.budget(exp.size, frames, exact_frames)?;
+    if a.fit {
+        let fit_frames = parse_whole("--fit-frames", &a.fit_frames, 1, frames, "")?;
+        return fit::run(a, &exp, fit_frames);
+    }
     let out = OutDir::open(&a.out, a.force, "--out")?;
     out.check_all(OUTPUTS)?;
-    let exp = Experiment {
-        frames,
-        size,
-        radii,
-        normals,
-        exact_frames,
-    };
     let started = Instant::now();
     let bar = ProgressBar::new(u64::from(frames) * 4);
     bar.set_style(

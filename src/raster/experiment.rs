@@ -2,6 +2,7 @@
 
 use super::mesh::{paper_tori, torus, Mesh, NormalMode};
 use super::render::{render, RenderOptions, Scene, Stats};
+use glam::Vec3 as G3;
 use rayon::prelude::*;
 
 /// The settings of one run of the experiment.
@@ -17,6 +18,65 @@ pub struct Experiment {
     pub normals: NormalMode,
     /// How many frames of the 800-polygon torus to check exactly (0 = none).
     pub exact_frames: u32,
+    /// The choices the paper does not state beyond size, radii and normals.
+    pub setup: Setup,
+    /// Render frames `0, s, 2s, …` (`s = frame_stride ≥ 1`): fewer frames spread over
+    /// the same rotation, as the calibration search uses.
+    pub frame_stride: u32,
+}
+
+/// Scene choices the paper leaves open, beside the image size, radii and normals of
+/// [`Experiment`]: the tessellation's shape, the light and `K_d`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Setup {
+    /// Ring segments per tube segment (2: the quads are near square for `r = 0.4`).
+    /// Each paper torus of `P = 2k²` polygons gets `tube = √(P/ring_per_tube)` tube and
+    /// `P/tube` ring segments; 1/8, 1/2, 2 and 8 give whole numbers for all four.
+    pub ring_per_tube: f32,
+    /// Angle between the light and the view direction, in degrees; the light lies
+    /// towards the upper left, `(−sin φ/√2, sin φ/√2, cos φ)`.
+    pub light_deg: f32,
+    /// Diffuse coefficient `K_d`.
+    pub kd: f32,
+}
+
+impl Default for Setup {
+    /// Ring twice the tube, the light `normalize(−1, 1, 2)` (35.26° from the view),
+    /// `K_d = 1`.
+    fn default() -> Self {
+        Setup {
+            ring_per_tube: 2.0,
+            light_deg: (2.0f32 / 6.0f32.sqrt()).acos().to_degrees(),
+            kd: 1.0,
+        }
+    }
+}
+
+impl Setup {
+    /// The unit light direction (towards the light, view space).
+    pub fn light(&self) -> G3 {
+        let (s, c) = self.light_deg.to_radians().sin_cos();
+        let h = s / std::f32::consts::SQRT_2;
+        G3::new(-h, h, c).normalize()
+    }
+
+    /// The four tori as `(polygons, ring, tube)` segments, or `None` if the ratio does
+    /// not divide every paper count into whole segments.
+    pub fn tori(&self) -> Option<[(u32, u32, u32); 4]> {
+        let mut out = paper_tori();
+        for t in &mut out {
+            let tube = (t.0 as f32 / self.ring_per_tube).sqrt().round() as u32;
+            if tube < 3 || t.0 % tube != 0 || t.0 / tube < 3 {
+                return None;
+            }
+            let ring = t.0 / tube;
+            if (ring as f32 / tube as f32 - self.ring_per_tube).abs() > 1e-3 * self.ring_per_tube {
+                return None;
+            }
+            *t = (t.0, ring, tube);
+        }
+        Some(out)
+    }
 }
 
 impl Default for Experiment {
@@ -27,6 +87,8 @@ impl Default for Experiment {
             radii: (1.0, 0.4),
             normals: NormalMode::Analytic,
             exact_frames: 1,
+            setup: Setup::default(),
+            frame_stride: 1,
         }
     }
 }
@@ -43,9 +105,29 @@ pub struct TorusResult {
 }
 
 impl Experiment {
+    /// The calibrated scene of `reproduce --fit` (docs/reproduction.md, "Calibration"),
+    /// with the paper's 200 frames: a fat torus (R = 1, r = 0.8) of the default
+    /// tessellation, the light 45° from the view, 210×210 pixels (about 4.3 million
+    /// visible pixels per torus), `K_d = 1`.
+    pub fn paper_fit() -> Experiment {
+        Experiment {
+            size: (210, 210),
+            radii: (1.0, 0.8),
+            setup: Setup {
+                ring_per_tube: 2.0,
+                light_deg: 45.0,
+                kd: 1.0,
+            },
+            ..Experiment::default()
+        }
+    }
+
     /// The scene for this experiment's image size and radii.
     pub fn scene(&self) -> Scene {
-        Scene::new(self.size.0, self.size.1, self.radii.0 + self.radii.1)
+        let mut scene = Scene::new(self.size.0, self.size.1, self.radii.0 + self.radii.1);
+        scene.light = self.setup.light();
+        scene.kd = self.setup.kd;
+        scene
     }
 
     /// The mesh of a torus with `ring × tube` segments.
@@ -54,10 +136,13 @@ impl Experiment {
     }
 
     /// Runs every torus over every frame (frames in parallel with rayon); `tick` is
-    /// called once per finished frame (for a progress bar).
+    /// called once per finished frame (for a progress bar). The tori are those of
+    /// [`Setup::tori`] (the paper's default segments if the ratio does not divide).
     pub fn run(&self, tick: &(dyn Fn() + Sync)) -> Vec<TorusResult> {
         let scene = self.scene();
-        paper_tori()
+        self.setup
+            .tori()
+            .unwrap_or_else(paper_tori)
             .iter()
             .map(|&(polygons, ring, tube)| {
                 let mesh = self.mesh(ring, tube);
@@ -68,7 +153,7 @@ impl Experiment {
                         let frame = render(
                             &mesh,
                             &scene,
-                            f,
+                            f * self.frame_stride.max(1),
                             RenderOptions {
                                 exact,
                                 specular: false,

@@ -6,6 +6,7 @@
 //! - [`scan`]: convex-polygon scan conversion (pixel centres, top-left rule).
 //! - [`render`]: one frame: culling, depth buffer, per-span shading, statistics.
 //! - [`experiment`]: the paper's Tables 1–2 over many frames, in parallel.
+//! - [`calibrate`]: the scene choices the paper leaves open, fitted to its numbers.
 //! - [`compare`], [`precision`]: every method of the paper and its related work on the
 //!   same tori, and in every precision.
 //! - [`pictures`]: PNG renders, heat maps with their legends, SVG plots (Figures 1–5);
@@ -13,6 +14,7 @@
 //! - [`report`]: `reproduce`'s tables, CSVs and pictures, as strings and images.
 //! - [`compare_report`]: `compare`'s studies, report, CSVs and labelled picture grid.
 
+pub mod calibrate;
 pub mod compare;
 pub mod compare_report;
 pub mod experiment;

@@ -57,9 +57,15 @@ pub struct RowStats {
     pub single_pixel_rows: u64,
     /// Rows where span Gouraud and corrected Euler give the same levels at every pixel.
     pub gouraud_eq_corrected: u64,
-    /// Rows where span Gouraud and Phong give the same levels at every pixel (the
-    /// paper's text: "the difference of Phong and Gouraud … truncated").
+    /// Rows where span Gouraud and Phong give the same 8-bit levels at every pixel,
+    /// `level(K_d·Ph_i) = level(K_d·G_i)`. This is *not* the paper's text, which
+    /// truncates the difference; that is [`RowStats::truncated_difference_zero`], and
+    /// the two differ (errata A5).
     pub gouraud_eq_phong: u64,
+    /// Rows where the paper's text criterion holds at every pixel: "the difference of
+    /// Phong and Gouraud intensities was multiplied with 255 and then truncated",
+    /// `trunc(255·K_d·(Ph_i − G_i)) = 0`, i.e. `|255·K_d·(Ph_i − G_i)| < 1`.
+    pub truncated_difference_zero: u64,
     /// Rows the δ test of eq. 24 gives to Gouraud.
     pub predicted_gouraud: u64,
     /// … of which Gouraud and corrected Euler differ somewhere (false "same").
@@ -74,9 +80,72 @@ impl RowStats {
         self.single_pixel_rows += o.single_pixel_rows;
         self.gouraud_eq_corrected += o.gouraud_eq_corrected;
         self.gouraud_eq_phong += o.gouraud_eq_phong;
+        self.truncated_difference_zero += o.truncated_difference_zero;
         self.predicted_gouraud += o.predicted_gouraud;
         self.predicted_gouraud_but_differ += o.predicted_gouraud_but_differ;
         self.predicted_corrected_but_same += o.predicted_corrected_but_same;
+    }
+}
+
+/// The readings of Table 1 (errata A5): what "scan lines which could have been
+/// computed with Gouraud" counts.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Reading {
+    /// The paper's text: `trunc(255·K_d·(Ph_i − G_i)) = 0` at every pixel.
+    Text,
+    /// The caption: Gouraud and corrected Euler on the same 8-bit level at every pixel.
+    Caption,
+    /// Gouraud and Phong on the same 8-bit level at every pixel.
+    PhongLevels,
+    /// The δ test of eq. 24 says Gouraud.
+    Delta,
+}
+
+impl Reading {
+    /// Every reading, the text first.
+    pub const ALL: [Reading; 4] = [
+        Reading::Text,
+        Reading::Caption,
+        Reading::PhongLevels,
+        Reading::Delta,
+    ];
+
+    /// A short name (`text`, `caption`, `phong-levels`, `delta`).
+    pub fn name(self) -> &'static str {
+        match self {
+            Reading::Text => "text",
+            Reading::Caption => "caption",
+            Reading::PhongLevels => "phong-levels",
+            Reading::Delta => "delta",
+        }
+    }
+
+    /// What the reading counts, for table headers.
+    pub fn label(self) -> &'static str {
+        match self {
+            Reading::Text => "text: trunc(255(Ph − G)) = 0",
+            Reading::Caption => "caption: levels G = CE",
+            Reading::PhongLevels => "levels G = Ph",
+            Reading::Delta => "δ test (eq. 24) says G",
+        }
+    }
+
+    /// Rows of at least two pixels on which the reading holds.
+    pub fn rows(self, t: &RowStats) -> u64 {
+        match self {
+            Reading::Text => t.truncated_difference_zero,
+            Reading::Caption => t.gouraud_eq_corrected,
+            Reading::PhongLevels => t.gouraud_eq_phong,
+            Reading::Delta => t.predicted_gouraud,
+        }
+    }
+
+    /// The percentage of rows on which the reading holds; with `single`, the
+    /// one-pixel rows are counted too (every reading holds on them: every method gives
+    /// the exact edge value).
+    pub fn percent(self, t: &RowStats, single: bool) -> f64 {
+        let extra = if single { t.single_pixel_rows } else { 0 };
+        100.0 * (self.rows(t) + extra) as f64 / (t.rows + extra).max(1) as f64
     }
 }
 
@@ -204,12 +273,23 @@ fn shade_row(
     }
     let span = Span::new(vec3(na), vec3(nb), vec3(scene.light), n).ok()?;
     let mut out = vec![0.0f32; n as usize + 1];
+    let mut phong = Vec::new();
+    let mut text_same = true;
     let mut decision = Choice::CorrectedEuler;
     for (c, col) in COLUMNS.iter().enumerate() {
         match col {
             Shader::Span(m) => {
                 if let Some(d) = m.run(&span, prep, &mut out).ok()? {
                     decision = d.choice;
+                }
+                if c == PHONG {
+                    phong.clone_from(&out);
+                } else if c == GOURAUD {
+                    // The text's criterion: trunc(255·K_d·(Ph − G)) = 0 at every pixel.
+                    text_same = phong
+                        .iter()
+                        .zip(&out)
+                        .all(|(p, g)| (255.0 * kd * (p - g)).abs() < 1.0);
                 }
             }
             _ => {
@@ -239,6 +319,7 @@ fn shade_row(
     let extra = RowExtra {
         single: false,
         decision,
+        text_same,
         span: Some(span),
     };
     Some((RowShade { levels, specular }, extra))
@@ -248,6 +329,8 @@ fn shade_row(
 struct RowExtra {
     single: bool,
     decision: Choice,
+    /// The text's criterion of Table 1 (see [`RowStats::truncated_difference_zero`]).
+    text_same: bool,
     span: Option<Span<f32>>,
 }
 
@@ -256,6 +339,7 @@ impl RowExtra {
         RowExtra {
             single: true,
             decision: Choice::Gouraud,
+            text_same: true,
             span: None,
         }
     }
@@ -405,6 +489,7 @@ impl Shading for Tables<'_> {
             let same_gp = shade.levels[GOURAUD] == shade.levels[PHONG];
             st.gouraud_eq_corrected += u64::from(same_gc);
             st.gouraud_eq_phong += u64::from(same_gp);
+            st.truncated_difference_zero += u64::from(extra.text_same);
             if extra.decision == Choice::Gouraud {
                 st.predicted_gouraud += 1;
                 st.predicted_gouraud_but_differ += u64::from(!same_gc);

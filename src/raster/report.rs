@@ -7,7 +7,7 @@ use super::mesh::NormalMode;
 use super::pictures::{
     labelled_difference_image, line_plot, shaded_image, Look, Picture, PictureError,
 };
-use super::render::{render, RenderOptions, Scene, Shader, COLUMNS};
+use super::render::{render, Reading, RenderOptions, Scene, Shader, COLUMNS};
 use crate::{Method, Span, Vec3};
 use std::fmt::Write as _;
 
@@ -54,17 +54,23 @@ pub fn tables_md(exp: &Experiment, results: &[TorusResult], secs: f64) -> String
     );
     let _ = writeln!(
         s,
-        "Scene: tori R = {}, r = {}, {} normals; {}×{} pixels, orthographic, {:.1} px per unit; light {:?}; K_d = {}; rotation {}°, {}°, {}° per frame about x, y, z; {} frames per torus; {:.0} visible pixels per frame on average; f32 arithmetic; {:.1} s.\n",
+        "Scene: tori R = {}, r = {}, {} normals, ring × tube segments {}; {}×{} pixels, orthographic, {:.1} px per unit; light {:?} ({:.2}° from the view); K_d = {}; rotation {}°, {}°, {}° per frame about x, y, z; {} frames per torus; {:.0} visible pixels per frame on average; f32 arithmetic; {:.1} s.\n",
         exp.radii.0,
         exp.radii.1,
         match exp.normals {
             NormalMode::Analytic => "analytic",
             NormalMode::Averaged => "face-averaged",
         },
+        results
+            .iter()
+            .map(|r| format!("{}×{}", r.segments.0, r.segments.1))
+            .collect::<Vec<_>>()
+            .join(", "),
         scene.width,
         scene.height,
         scene.scale,
         [scene.light.x, scene.light.y, scene.light.z].map(|v| (v * 1e4).round() / 1e4),
+        exp.setup.light_deg,
         scene.kd,
         scene.rates_deg.x,
         scene.rates_deg.y,
@@ -120,22 +126,35 @@ pub fn tables_md(exp: &Experiment, results: &[TorusResult], secs: f64) -> String
         }
         let _ = writeln!(s, "{line}");
     }
-    let _ = writeln!(s, "\n## Table 1: scan lines on which Gouraud gives the same 8-bit levels as corrected Euler\n");
-    let _ = writeln!(s, "| polygons | paper | ours: Gouraud = corr. Euler | δ test (eq. 24) says Gouraud | … but levels differ | δ test says corr. Euler, levels equal | Gouraud = Phong | rows | 1-pixel rows |");
-    let _ = writeln!(s, "|---:|---:|---:|---:|---:|---:|---:|---:|---:|");
+    let _ = writeln!(
+        s,
+        "\n## Table 1: scan lines that \"could have been computed with Gouraud\", every reading\n"
+    );
+    let _ = writeln!(s, "Percent of rows of two or more pixels (in brackets: with the one-pixel rows counted, on which every reading holds). The paper's text counts the first reading, its caption the second (errata A5).\n");
+    let mut head = String::from("| polygons | paper |");
+    let mut rule = String::from("|---:|---:|");
+    for r in Reading::ALL {
+        let _ = write!(head, " {} |", r.label());
+        rule.push_str("---:|");
+    }
+    let _ = writeln!(s, "{head} δ says G, levels G ≠ CE | δ says CE, levels G = CE | rows | 1-pixel rows |\n{rule}---:|---:|---:|---:|");
     for (r, p) in results.iter().zip(PAPER_TABLE_1) {
         let t = &r.stats.rows;
+        let mut line = format!("| {} | {:.1} % |", r.polygons, p.1);
+        for reading in Reading::ALL {
+            let _ = write!(
+                line,
+                " {:.1} % ({:.1} %) |",
+                reading.percent(t, false),
+                reading.percent(t, true)
+            );
+        }
         let pc = |k: u64| 100.0 * k as f64 / t.rows.max(1) as f64;
         let _ = writeln!(
             s,
-            "| {} | {:.1} % | {:.1} % | {:.1} % | {:.2} % | {:.2} % | {:.1} % | {} | {} |",
-            r.polygons,
-            p.1,
-            pc(t.gouraud_eq_corrected),
-            pc(t.predicted_gouraud),
+            "{line} {:.2} % | {:.2} % | {} | {} |",
             pc(t.predicted_gouraud_but_differ),
             pc(t.predicted_corrected_but_same),
-            pc(t.gouraud_eq_phong),
             t.rows,
             t.single_pixel_rows
         );
@@ -169,16 +188,17 @@ pub fn tables_md(exp: &Experiment, results: &[TorusResult], secs: f64) -> String
 /// `table1.csv`: per torus, the paper's Table 1 percentage and our row counts (one
 /// line per torus, the header first).
 pub fn table1_csv(results: &[TorusResult]) -> String {
-    let mut s = String::from("polygons,paper_percent,rows,single_pixel_rows,gouraud_eq_corrected,gouraud_eq_phong,predicted_gouraud,predicted_gouraud_but_differ,predicted_corrected_but_same\n");
+    let mut s = String::from("polygons,paper_percent,rows,single_pixel_rows,truncated_difference_zero,gouraud_eq_corrected,gouraud_eq_phong,predicted_gouraud,predicted_gouraud_but_differ,predicted_corrected_but_same\n");
     for (r, p) in results.iter().zip(PAPER_TABLE_1) {
         let t = &r.stats.rows;
         let _ = writeln!(
             s,
-            "{},{},{},{},{},{},{},{},{}",
+            "{},{},{},{},{},{},{},{},{},{}",
             r.polygons,
             p.1,
             t.rows,
             t.single_pixel_rows,
+            t.truncated_difference_zero,
             t.gouraud_eq_corrected,
             t.gouraud_eq_phong,
             t.predicted_gouraud,
@@ -370,6 +390,7 @@ mod tests {
                         single_pixel_rows: 3,
                         gouraud_eq_corrected: 4,
                         gouraud_eq_phong: 2,
+                        truncated_difference_zero: 5,
                         predicted_gouraud: 1,
                         predicted_gouraud_but_differ: 1,
                         predicted_corrected_but_same: 0,
@@ -423,10 +444,11 @@ mod tests {
             .map(|c| format!(" {} |", c.label()))
             .collect();
         assert!(md.contains(&format!("| polygons |{head}\n")));
-        // Table 1: 4 of 8 rows is 50.0 %, 1 of 8 is 12.50 %.
-        assert!(
-            md.contains("| 800 | 80.9 % | 50.0 % | 12.5 % | 12.50 % | 0.00 % | 25.0 % | 8 | 3 |")
-        );
+        // Table 1, every reading without and with the 3 one-pixel rows: text 5 of 8
+        // (8 of 11), caption 4 of 8 (7 of 11), G = Ph 2 of 8 (5 of 11), δ 1 of 8
+        // (4 of 11); then 1 of 8 is 12.50 %.
+        let row = "| 800 | 80.9 % | 62.5 % (72.7 %) | 50.0 % (63.6 %) | 25.0 % (45.5 %) | 12.5 % (36.4 %) | 12.50 % | 0.00 % | 8 | 3 |";
+        assert!(md.contains(row), "{row}\n{md}");
         // The exact table: every column but vertex Gouraud.
         assert!(md.contains("## Exact mode: the 800-polygon torus, first 1 frame(s)"));
         assert!(md.contains("| corrected-euler | 99 | 5 | 4 |"));
@@ -452,6 +474,7 @@ mod tests {
                 "paper_percent",
                 "rows",
                 "single_pixel_rows",
+                "truncated_difference_zero",
                 "gouraud_eq_corrected",
                 "gouraud_eq_phong",
                 "predicted_gouraud",
@@ -460,7 +483,10 @@ mod tests {
             ]
         );
         assert_eq!(rows.len(), 4);
-        assert_eq!(rows[2], ["800", "80.9", "8", "3", "4", "2", "1", "1", "0"]);
+        assert_eq!(
+            rows[2],
+            ["800", "80.9", "8", "3", "5", "4", "2", "1", "1", "0"]
+        );
     }
 
     #[test]

@@ -285,11 +285,7 @@ fn shade_row(
                 if c == PHONG {
                     phong.clone_from(&out);
                 } else if c == GOURAUD {
-                    // The text's criterion: trunc(255·K_d·(Ph − G)) = 0 at every pixel.
-                    text_same = phong
-                        .iter()
-                        .zip(&out)
-                        .all(|(p, g)| (255.0 * kd * (p - g)).abs() < 1.0);
+                    text_same = truncated_difference_is_zero(&phong, &out, kd);
                 }
             }
             _ => {
@@ -323,6 +319,17 @@ fn shade_row(
         span: Some(span),
     };
     Some((RowShade { levels, specular }, extra))
+}
+
+/// The paper's text criterion of Table 1 on one row: "the difference of Phong and
+/// Gouraud intensities was multiplied with 255 and then truncated" is zero at every
+/// pixel, `trunc(255·K_d·(Ph_i − G_i)) = 0`, i.e. `|255·K_d·(Ph_i − G_i)| < 1`.
+/// (Equal 8-bit levels imply it; it does not imply equal levels.)
+pub fn truncated_difference_is_zero(phong: &[f32], gouraud: &[f32], kd: f32) -> bool {
+    phong
+        .iter()
+        .zip(gouraud)
+        .all(|(p, g)| (255.0 * kd * (p - g)).abs() < 1.0)
 }
 
 /// What Table 1 and the exact mode need of a row beyond its levels.
@@ -515,6 +522,52 @@ impl Shading for Tables<'_> {
             for (c, column) in self.specular.iter_mut().enumerate() {
                 column[pixel] = shade.specular[c][i];
             }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn the_text_criterion_is_not_equal_levels() {
+        // 0.5019 and 0.5021 straddle the level boundary 128/255 = 0.50196…: different
+        // levels, but their difference truncates to 0.
+        let (p, g) = ([0.5021f32, 0.3], [0.5019f32, 0.3]);
+        assert_ne!(level(&p[0]), level(&g[0]));
+        assert!(truncated_difference_is_zero(&p, &g, 1.0));
+        // More than a level apart fails it; K_d scales the difference.
+        let far = [0.5019f32 + 1.1 / 255.0, 0.3];
+        assert!(!truncated_difference_is_zero(&far, &g, 1.0));
+        assert!(truncated_difference_is_zero(&far, &g, 0.9));
+    }
+
+    #[test]
+    fn every_reading_counts_one_pixel_rows_as_passing() {
+        let t = RowStats {
+            rows: 8,
+            single_pixel_rows: 2,
+            truncated_difference_zero: 6,
+            gouraud_eq_corrected: 4,
+            gouraud_eq_phong: 3,
+            predicted_gouraud: 5,
+            ..RowStats::default()
+        };
+        let want = [
+            (6, 75.0, 80.0),
+            (4, 50.0, 60.0),
+            (3, 37.5, 50.0),
+            (5, 62.5, 70.0),
+        ];
+        for (r, (rows, without, with)) in Reading::ALL.into_iter().zip(want) {
+            assert_eq!(r.rows(&t), rows, "{}", r.name());
+            assert!(
+                (r.percent(&t, false) - without).abs() < 1e-12,
+                "{}",
+                r.name()
+            );
+            assert!((r.percent(&t, true) - with).abs() < 1e-12, "{}", r.name());
         }
     }
 }

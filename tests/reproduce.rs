@@ -163,20 +163,14 @@ fn bin() -> Command {
     Command::new(env!("CARGO_BIN_EXE_phong-approx"))
 }
 
-#[test]
-fn reproduce_writes_tables_and_pictures() {
-    let dir = std::env::temp_dir().join(format!("phong-approx-repro-{}", std::process::id()));
+/// Runs `reproduce` with `args` into a fresh folder named after `tag`; its stdout and
+/// the folder.
+fn reproduce(tag: &str, args: &[&str]) -> (String, std::path::PathBuf) {
+    let dir = std::env::temp_dir().join(format!("phong-approx-{tag}-{}", std::process::id()));
     let out = bin()
-        .args([
-            "reproduce",
-            "--frames",
-            "2",
-            "--size",
-            "120x120",
-            "--exact-frames",
-            "0",
-            "--out",
-        ])
+        .arg("reproduce")
+        .args(args)
+        .arg("--out")
         .arg(&dir)
         .output()
         .unwrap();
@@ -185,7 +179,15 @@ fn reproduce_writes_tables_and_pictures() {
         "{}",
         String::from_utf8_lossy(&out.stderr)
     );
-    let text = String::from_utf8(out.stdout).unwrap();
+    (String::from_utf8(out.stdout).unwrap(), dir)
+}
+
+#[test]
+fn reproduce_writes_tables_and_pictures() {
+    let (text, dir) = reproduce(
+        "repro",
+        &["--frames", "2", "--size", "120x120", "--exact-frames", "0"],
+    );
     assert!(text.contains("## Table 2"), "{text}");
     assert!(
         text.contains("| 800 | 0.38 / 6 |"),
@@ -222,27 +224,17 @@ fn reproduce_writes_tables_and_pictures() {
 
 #[test]
 fn reproduce_runs_the_calibrated_scene() {
-    let dir = std::env::temp_dir().join(format!("phong-approx-fit-{}", std::process::id()));
-    let out = bin()
-        .args([
-            "reproduce",
+    let (text, dir) = reproduce(
+        "fit",
+        &[
             "--scene",
             "paper-fit",
             "--frames",
             "1",
             "--exact-frames",
             "0",
-            "--out",
-        ])
-        .arg(&dir)
-        .output()
-        .unwrap();
-    assert!(
-        out.status.success(),
-        "{}",
-        String::from_utf8_lossy(&out.stderr)
+        ],
     );
-    let text = String::from_utf8(out.stdout).unwrap();
     let e = Experiment::paper_fit();
     let scene = format!(
         "Scene: tori R = {}, r = {}, analytic normals, ring × tube segments",

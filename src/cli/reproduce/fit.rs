@@ -12,33 +12,6 @@ use phong_approx::raster::experiment::Experiment;
 use std::fmt::Write as _;
 use std::time::Instant;
 
-/// Table 1 under every reading (Markdown), the paper's shares first.
-fn readings_table(results: &[phong_approx::raster::experiment::TorusResult]) -> String {
-    use phong_approx::raster::experiment::PAPER_TABLE_1;
-    use phong_approx::raster::render::Reading;
-    let mut s = String::from("| polygons | paper |");
-    let mut rule = String::from("|---:|---:|");
-    for r in Reading::ALL {
-        let _ = write!(s, " {} |", r.label());
-        rule.push_str("---:|");
-    }
-    let _ = writeln!(s, "\n{rule}");
-    for (r, p) in results.iter().zip(PAPER_TABLE_1) {
-        let _ = write!(s, "| {} | {} % |", r.polygons, p.1);
-        for reading in Reading::ALL {
-            let t = &r.stats.rows;
-            let _ = write!(
-                s,
-                " {:.1} % ({:.1} %) |",
-                reading.percent(t, false),
-                reading.percent(t, true)
-            );
-        }
-        s.push('\n');
-    }
-    s
-}
-
 /// The files `reproduce --fit` writes.
 pub const FIT_OUTPUTS: [&str; 2] = ["fit.md", "fit_sensitivity.svg"];
 
@@ -96,7 +69,7 @@ pub(super) fn run(a: &ReproduceArgs, start: &Experiment, fit_frames: u32) -> Res
         md,
         "\nTable 1 of the best scene under every reading (percent of rows; in brackets with the one-pixel rows), beside the paper's:\n"
     );
-    md.push_str(&readings_table(&best_results));
+    md.push_str(&phong_approx::raster::report::table1_md(&best_results));
     let _ = writeln!(
         md,
         "\nStart scene: {} — {}; distance {:.3}, {} of 28 targets met.\n",

@@ -548,7 +548,7 @@ pub fn sensitivity_svg(study: &Study) -> String {
         .map(|r| r.name.clone())
         .collect();
     let (cw, ch, left, top) = (34.0, 26.0, 150.0, 190.0);
-    let w = left + cw * names.len() as f64 + 20.0;
+    let w = left + cw * names.len() as f64 + 130.0;
     let h = top + ch * m.len() as f64 + 60.0;
     let mut s = format!(
         "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h}\" font-family=\"sans-serif\" font-size=\"11\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
@@ -588,7 +588,7 @@ pub fn sensitivity_svg(study: &Study) -> String {
     }
     let _ = writeln!(
         s,
-        "<text x=\"10\" y=\"{}\">Tolerances: means 15 % of the paper's value, maxima 2 levels, Table 1 shares 5 points.</text>\n</svg>",
+        "<text x=\"10\" y=\"{}\">Shade: white 0 to black 4 or more. Tolerances: means 15 % of the paper's value, maxima 2 levels, Table 1 shares 5 points.</text>\n</svg>",
         h - 20.0
     );
     s

@@ -19,7 +19,7 @@ use crate::span::Span;
 /// [`SpanError::OutputLength`] if `out.len() ≠ n + 1`.
 ///
 /// Against Phong, at most `1 − N_a·N_b` off, reached on one-step spans (one 8-bit level
-/// up to θ = 5.08°).
+/// up to θ = 5.07°).
 ///
 /// Claims: `eq_13_slope_closed_form`, `eq_14_euler_closed_form` (proofs/Euler.v), `eq_14_euler_sum_of_slopes` (proofs/ClosedForms.v), `sec_7_euler_in_t`, `sec_7_euler_angle_bound` (proofs/Angle.v); tests/claims.rs.
 pub fn shade<T: Scalar>(span: &Span<T>, out: &mut [T]) -> Result<(), SpanError> {

@@ -446,20 +446,12 @@ Theorem eq_24_delta_test_fails_on_concrete_span_clamped :
           clamped_level (Kd * gouraud s' i) = clamped_level (Kd * ceuler s' i)).
 Proof.
   cbv zeta.
-  destruct adaptive_span_values as [_ [_ [_ [_ [_ [HG [HC HD]]]]]]].
-  assert (Ha : is_unit (Na adaptive_span))
-    by (unfold is_unit, dot, adaptive_span; cbn [vx vy vz Na]; field).
-  assert (Hb : is_unit (Nb adaptive_span))
-    by (unfold is_unit, dot, adaptive_span; cbn [vx vy vz Nb]; field).
-  assert (Hn : (0 < n adaptive_span)%nat) by (cbn; lia).
-  assert (Hd : Rabs (delta adaptive_span * 255 * 1) < 1).
-  { rewrite HD. rewrite Rabs_left by lra. lra. }
-  assert (HlG : clamped_level (1 * gouraud adaptive_span 1) = 214%Z).
-  { rewrite HG. rewrite clamped_level_is_level by lra. unfold level.
-    apply Int_part_eq. split; lra. }
-  assert (HlC : clamped_level (1 * ceuler adaptive_span 1) = 215%Z).
-  { rewrite HC. rewrite clamped_level_is_level by lra. unfold level.
-    apply Int_part_eq. split; lra. }
+  destruct adaptive_span_values as [_ [_ [_ [_ [_ [HG [HC _]]]]]]].
+  destruct eq_24_delta_test_fails_on_concrete_span
+    as [Ha [Hb [Hn [Hd [HlG [HlC _]]]]]].
+  (* Both values lie in [0, 1], where the clamped quantiser is the floor. *)
+  rewrite <- clamped_level_is_level in HlG by (rewrite HG; lra).
+  rewrite <- clamped_level_is_level in HlC by (rewrite HC; lra).
   repeat split; try assumption.
   intros H. specialize (H adaptive_span 1 Hn Ha Hb ltac:(lra) Hd 1%nat).
   rewrite HlG, HlC in H. assert (H' : (214 = 215)%Z) by (apply H; cbn; lia).

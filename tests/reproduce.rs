@@ -272,6 +272,10 @@ fn bad_input_to_reproduce_gets_one_line_and_exit_2() {
         "--fit-frames: must be between 1 and 5",
     );
     bad(
+        &["--fit", "--fit-frames", "101", "--frames", "200"],
+        "--fit-frames: 101 frames for each of up to 160 scenes",
+    );
+    bad(
         &["--exact-frames", "500", "--frames", "10"],
         "--exact-frames: must be between 0 and 10",
     );

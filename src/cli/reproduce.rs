@@ -105,6 +105,7 @@ pub fn run(a: &ReproduceArgs) -> Result<(), CliError> {
     a.torus.budget(exp.size, frames, exact_frames)?;
     if a.fit {
         let fit_frames = parse_whole("--fit-frames", &a.fit_frames, 1, frames, "")?;
+        fit::budget(fit_frames, a.torus.yes)?;
         return fit::run(a, &exp, fit_frames);
     }
     let out = OutDir::open(&a.out, a.force, "--out")?;

@@ -635,11 +635,11 @@ pub fn report_md(study: &Study, space: &Space, frames: u32) -> String {
     let groups = [
         ("Gouraud mean", "Gouraud mean"),
         ("Gouraud max", "Gouraud max"),
-        ("Euler mean", " Euler mean"),
-        ("Euler max", " Euler max"),
+        ("Euler mean", "Euler mean"),
+        ("Euler max", "Euler max"),
         ("corr. Euler mean", "corrected Euler mean"),
         ("corr. Euler max", "corrected Euler max"),
-        ("Table 1", "Table 1"),
+        ("Table 1", "Table 1 share"),
     ];
     let mut head = String::from("| parameter |");
     let mut rule = String::from("|---|");
@@ -661,11 +661,8 @@ pub fn report_md(study: &Study, space: &Space, frames: u32) -> String {
             let worst = names
                 .iter()
                 .zip(row)
-                .filter(|(n, _)| {
-                    n.contains(pat)
-                        && !(pat == " Euler mean" && n.contains("corrected"))
-                        && !(pat == " Euler max" && n.contains("corrected"))
-                })
+                // Names are "<polygons> <what>": group by what.
+                .filter(|(n, _)| n.split_once(' ').is_some_and(|(_, what)| what == pat))
                 .map(|(_, v)| *v)
                 .fold(0.0f64, f64::max);
             let _ = write!(line, " {worst:.1} |");

@@ -7,10 +7,31 @@ use super::ReproduceArgs;
 use indicatif::{ProgressBar, ProgressStyle};
 use phong_approx::raster::calibrate::{
     calibrate, describe, describe_fit, fit, report_md, residual_table, sensitivity_svg, Space,
+    MAX_PASSES,
 };
 use phong_approx::raster::experiment::Experiment;
 use std::fmt::Write as _;
 use std::time::Instant;
+
+/// Frames per scene of the search at most, unless `--yes`: with up to
+/// `MAX_PASSES × Space::per_pass()` scenes (160) of up to 260×260 pixels, 100 frames
+/// per scene is about 2.5 times the default search (a few minutes on 2 cores).
+pub const MAX_FIT_FRAMES: u32 = 100;
+
+/// Refuses, unless `yes`, a search of more than [`MAX_FIT_FRAMES`] frames per scene.
+///
+/// # Errors
+/// A [`CliError`] naming `--fit-frames` and the limit.
+pub(super) fn budget(fit_frames: u32, yes: bool) -> Result<(), CliError> {
+    if fit_frames > MAX_FIT_FRAMES && !yes {
+        let scenes = MAX_PASSES * Space::paper().per_pass();
+        return Err(CliError::arg(
+            "--fit-frames",
+            format!("{fit_frames} frames for each of up to {scenes} scenes is more than {MAX_FIT_FRAMES} per scene, which takes many minutes; pass --yes to run anyway"),
+        ));
+    }
+    Ok(())
+}
 
 /// The files `reproduce --fit` writes.
 pub const FIT_OUTPUTS: [&str; 2] = ["fit.md", "fit_sensitivity.svg"];

@@ -5,6 +5,7 @@
 
 From PhongApprox Require Import Span Duff Euler Derivative Symmetry Adaptive Angular Related.
 From PhongApprox Require Import ClosedForms Angle.
+From PhongApprox Require Import FastSetup.
 From PhongApprox Require Import FloatModel Float Fixed.
 
 (** Span.v *)
@@ -164,6 +165,18 @@ Check sec_7_corrected_euler_one_level.
 Print Assumptions sec_7_corrected_euler_one_level.
 Check sec_7_euler_angle_bound.
 Print Assumptions sec_7_euler_angle_bound.
+
+(** FastSetup.v *)
+Check fast_rows_ce_from_span_invariants.
+Print Assumptions fast_rows_ce_from_span_invariants.
+Check fast_rows_phong_from_span_invariants.
+Print Assumptions fast_rows_phong_from_span_invariants.
+Check fast_rows_field_span_identities.
+Print Assumptions fast_rows_field_span_identities.
+Check edge_stepped_setup_exact.
+Print Assumptions edge_stepped_setup_exact.
+Check rsqrt_newton_step_error.
+Print Assumptions rsqrt_newton_step_error.
 
 (** Float.v *)
 Check float_gouraud_binary32.

@@ -118,10 +118,10 @@ macro_rules! fast_impl {
             /// division (both correctly rounded, vectorized by LLVM).
             #[inline]
             pub fn phong(&self, out: &mut [$f]) {
-                let (a, b, c, d, e) = (self.a, self.b, self.c, self.d, self.e);
-                each_x(&mut out[..=self.n as usize], |x| {
-                    (a * x + b) / ((c * x + d) * x + e).sqrt()
-                });
+                closed_phong_impl(
+                    [self.a, self.b, self.c, self.d, self.e],
+                    &mut out[..=self.n as usize],
+                );
             }
 
             /// The adaptive test of eqs. 23–24 without eq. 23's division: the largest
@@ -248,21 +248,51 @@ macro_rules! fast_impl {
                 }
                 base += 8.0;
             }
-            for (j, o) in chunks.into_remainder().iter_mut().enumerate() {
-                g(o, base + OFF[j]);
+            // The last (or only) partial chunk as a whole one through a buffer, so
+            // that a short row is one vector pass too; the lanes past the row are
+            // computed and dropped.
+            let rem = chunks.into_remainder();
+            if !rem.is_empty() {
+                let mut tmp: [$f; 8] = [0.0; 8];
+                copy_short(&mut tmp[..rem.len()], rem);
+                for j in 0..8 {
+                    g(&mut tmp[j], base + OFF[j]);
+                }
+                copy_short(rem, &tmp[..rem.len()]);
             }
         }
 
-        /// `out[i] = f(i)`, chunked.
+        /// `out[i] = f(i)`, eight pixels at a time as [`chunked`] (the partial chunk
+        /// needs no read of `out`).
         #[inline(always)]
         fn each_x(out: &mut [$f], f: impl Fn($f) -> $f) {
-            chunked(out, |o, x| *o = f(x));
+            const OFF: [$f; 8] = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0];
+            let mut chunks = out.chunks_exact_mut(8);
+            let mut base: $f = 0.0;
+            for ch in &mut chunks {
+                for j in 0..8 {
+                    ch[j] = f(base + OFF[j]);
+                }
+                base += 8.0;
+            }
+            let rem = chunks.into_remainder();
+            if !rem.is_empty() {
+                let tmp: [$f; 8] = std::array::from_fn(|j| f(base + OFF[j]));
+                copy_short(rem, &tmp[..rem.len()]);
+            }
         }
 
         /// `out[i] *= f(i)`, chunked.
         #[inline(always)]
         fn scale_x(out: &mut [$f], f: impl Fn($f) -> $f) {
             chunked(out, |o, x| *o *= f(x));
+        }
+
+        /// `(A i + B)/√(C i² + D i + E)` for `i = 0..len`.
+        #[inline(always)]
+        fn closed_phong_impl(c: [$f; 5], out: &mut [$f]) {
+            let [a, b, c, d, e] = c;
+            each_x(out, |x| (a * x + b) / ((c * x + d) * x + e).sqrt());
         }
 
         /// `p0 + i·(t + (i − 1)/2·ds)` for `i = 0..len`.
@@ -274,34 +304,71 @@ macro_rules! fast_impl {
     };
 }
 
-/// Closed-form quadratic for both float types.
-trait Quadratic: Sized {
+/// `dst.copy_from_slice(src)` for the at most seven values of a partial chunk, as
+/// fixed-size copies: a copy of variable length is a call to `memcpy`, which costs
+/// more than the eight values it follows on a short row.
+#[inline(always)]
+fn copy_short<F: Copy>(dst: &mut [F], src: &[F]) {
+    macro_rules! fixed {
+        ($($k:literal)*) => {
+            match dst.len() {
+                $($k => dst[..$k].copy_from_slice(&src[..$k]),)*
+                _ => dst.copy_from_slice(src),
+            }
+        };
+    }
+    fixed!(1 2 3 4 5 6 7)
+}
+
+/// The chunked loops, for both float types.
+pub(crate) trait Kernels: Sized {
     fn quad(p0: Self, t: Self, ds: Self, out: &mut [Self]);
+    fn each(out: &mut [Self], f: impl Fn(Self) -> Self);
+    fn phong5(c: [Self; 5], out: &mut [Self]);
 }
 
-mod f32_impl {
-    use super::*;
-    fast_impl!(f32);
-    impl Quadratic for f32 {
-        fn quad(p0: f32, t: f32, ds: f32, out: &mut [f32]) {
-            quadratic_impl(p0, t, ds, out)
+macro_rules! kernels_for {
+    ($f:ident, $m:ident) => {
+        mod $m {
+            use super::*;
+            fast_impl!($f);
+            impl Kernels for $f {
+                #[inline(always)]
+                fn quad(p0: $f, t: $f, ds: $f, out: &mut [$f]) {
+                    quadratic_impl(p0, t, ds, out)
+                }
+                #[inline(always)]
+                fn each(out: &mut [$f], f: impl Fn($f) -> $f) {
+                    each_x(out, f)
+                }
+                #[inline(always)]
+                fn phong5(c: [$f; 5], out: &mut [$f]) {
+                    closed_phong_impl(c, out)
+                }
+            }
         }
-    }
+    };
 }
 
-mod f64_impl {
-    use super::*;
-    fast_impl!(f64);
-    impl Quadratic for f64 {
-        fn quad(p0: f64, t: f64, ds: f64, out: &mut [f64]) {
-            quadratic_impl(p0, t, ds, out)
-        }
-    }
-}
+kernels_for!(f32, f32_impl);
+kernels_for!(f64, f64_impl);
 
 #[inline]
-fn quadratic<F: Quadratic>(p0: F, t: F, ds: F, out: &mut [F]) {
+fn quadratic<F: Kernels>(p0: F, t: F, ds: F, out: &mut [F]) {
     F::quad(p0, t, ds, out)
+}
+
+/// `out[i] = f(i)` with `i` as a float, eight pixels at a time (vectorized).
+#[inline(always)]
+pub(crate) fn each_index<F: Kernels>(out: &mut [F], f: impl Fn(F) -> F) {
+    F::each(out, f)
+}
+
+/// `out[i] = (A i + B)/√(C i² + D i + E)` for the coefficients `[A, B, C, D, E]`
+/// (eqs. 2–3), vectorized, with `sqrt` and a division.
+#[inline(always)]
+pub(crate) fn closed_phong<F: Kernels>(c: [F; 5], out: &mut [F]) {
+    F::phong5(c, out)
 }
 
 /// Phong in `f32` with an approximate reciprocal square root (`rsqrtps`, 12 bits)
@@ -319,34 +386,44 @@ pub fn phong_rsqrt_f32(s: &FastSpan<f32>, out: &mut [f32]) {
         // SSE is part of the x86-64 baseline: no runtime detection is needed.
         // SAFETY: the intrinsics only read and write the local vectors and `out`
         // through bounds-checked slices of exactly four elements.
-        unsafe { phong_rsqrt_sse(s, &mut out[..=s.n as usize]) }
+        unsafe { phong_rsqrt_sse([s.a, s.b, s.c, s.d, s.e], &mut out[..=s.n as usize]) }
     }
     #[cfg(not(target_arch = "x86_64"))]
     s.phong(out)
 }
 
+/// [`phong_rsqrt_f32`] for the coefficients `[A, B, C, D, E]` of eqs. 2–3, filling
+/// all of `out`.
+pub fn phong_rsqrt_coefficients(c: [f32; 5], out: &mut [f32]) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        // SAFETY: as in `phong_rsqrt_f32`.
+        unsafe { phong_rsqrt_sse(c, out) }
+    }
+    #[cfg(not(target_arch = "x86_64"))]
+    closed_phong(c, out)
+}
+
 #[cfg(target_arch = "x86_64")]
 #[inline]
-unsafe fn phong_rsqrt_sse(s: &FastSpan<f32>, out: &mut [f32]) {
+unsafe fn phong_rsqrt_sse(coef: [f32; 5], out: &mut [f32]) {
     use std::arch::x86_64::*;
+    let [sa, sb, sc, sd, se] = coef;
     let (a, b, c, d, e) = (
-        _mm_set1_ps(s.a),
-        _mm_set1_ps(s.b),
-        _mm_set1_ps(s.c),
-        _mm_set1_ps(s.d),
-        _mm_set1_ps(s.e),
+        _mm_set1_ps(sa),
+        _mm_set1_ps(sb),
+        _mm_set1_ps(sc),
+        _mm_set1_ps(sd),
+        _mm_set1_ps(se),
     );
     let half = _mm_set1_ps(0.5);
     let three = _mm_set1_ps(3.0);
     let step = _mm_set1_ps(4.0);
-    let mut x = _mm_setr_ps(0.0, 1.0, 2.0, 3.0);
-    let len = out.len();
-    let mut chunks = out.chunks_exact_mut(4);
-    // (`len` is read before the chunks borrow `out`.)
-    for chunk in &mut chunks {
+    // Four pixels from the index vector `x`: p·r with r ≈ 1/√q from `rsqrtps`, then
+    // one Newton step, r·(3 − q·r²)/2.
+    let four = |x: __m128| {
         let p = _mm_add_ps(_mm_mul_ps(a, x), b);
         let q = _mm_add_ps(_mm_mul_ps(_mm_add_ps(_mm_mul_ps(c, x), d), x), e);
-        // r ≈ 1/√q, then one Newton step: r·(3 − q·r²)/2.
         let r = _mm_rsqrt_ps(q);
         let r = _mm_mul_ps(
             _mm_mul_ps(half, r),
@@ -354,14 +431,18 @@ unsafe fn phong_rsqrt_sse(s: &FastSpan<f32>, out: &mut [f32]) {
         );
         let mut tmp = [0f32; 4];
         _mm_storeu_ps(tmp.as_mut_ptr(), _mm_mul_ps(p, r));
-        chunk.copy_from_slice(&tmp);
+        tmp
+    };
+    let mut x = _mm_setr_ps(0.0, 1.0, 2.0, 3.0);
+    let mut chunks = out.chunks_exact_mut(4);
+    for chunk in &mut chunks {
+        chunk.copy_from_slice(&four(x));
         x = _mm_add_ps(x, step);
     }
-    let done = len - chunks.into_remainder().len();
-    for (i, o) in out.iter_mut().enumerate().skip(done) {
-        let xf = i as f32;
-        let p = s.a * xf + s.b;
-        let q = (s.c * xf + s.d) * xf + s.e;
-        *o = p / q.sqrt();
+    // The partial chunk as a whole one (the lanes past the row are dropped), so the
+    // last pixels take the same operations as the others.
+    let rem = chunks.into_remainder();
+    if !rem.is_empty() {
+        rem.copy_from_slice(&four(x)[..rem.len()]);
     }
 }

@@ -70,6 +70,7 @@ pub mod duff;
 pub mod error;
 pub mod euler;
 pub mod fast;
+pub mod fast_rows;
 pub mod fixed_span;
 pub mod gouraud;
 pub mod lowp;

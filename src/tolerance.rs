@@ -26,6 +26,7 @@
 //! (`docs/float.md` §16, tested in `tests/float_bounds_related.rs`).
 
 pub mod related;
+pub mod rows;
 
 use crate::method::Method;
 

@@ -23,7 +23,11 @@ fn main() {
     };
     let which = triangle::which(method);
     if !(1..=4096).contains(&s) || !(which.is_some() || method == "none") {
-        let names: Vec<&str> = triangle::METHODS.iter().chain(&triangle::STAGES).map(|(n, _)| *n).collect();
+        let names: Vec<&str> = triangle::METHODS
+            .iter()
+            .chain(&triangle::STAGES)
+            .map(|(n, _)| *n)
+            .collect();
         eprintln!("{usage}: S in 1..=4096, METHOD one of {names:?} or none");
         std::process::exit(2);
     }

@@ -35,8 +35,6 @@
 //! Error bounds (derived in `docs/float.md`, "The row set-up") are in
 //! [`crate::tolerance::rows`]; tests against the exact run: `tests/fast.rs`.
 
-use crate::fast::FastSpan;
-
 /// An affine normal field over a polygon, `U(x, y) = n1·x + n2·y + n3` (Phong's
 /// interpolated normal before normalization), and the light `L`.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -83,11 +81,20 @@ pub struct RowSpan<F> {
     pub p_b: F,
     /// `1 − c`, `c = N_a·N_b`.
     pub omc: F,
-    /// `1/n` (0 for a one-pixel row).
+    /// `1/n` (1 for a one-pixel row, whose only value is `p_a`).
     pub inv_n: F,
+    /// The Gouraud slope `a1 = (p_b − p_a)/n`, as `(p_b − p_a)·(1/n)`.
+    pub a1: F,
+    /// Corrected Euler's parabola `a2 = (1 − c)(p_a + p_b)/(2n²)`
+    /// (`fast_rows_ce_from_span_invariants`), as `((0.5·(1 − c))·(p_a + p_b))·(1/n)·(1/n)`.
+    pub a2: F,
     /// Steps `n` (pixels `0..=n`).
     pub n: u32,
 }
+
+/// Rows of fewer pixels than this run [`RowSpan::corrected_euler`] as the paper's
+/// serial recurrence; longer rows in closed form, eight pixels a vector pass.
+pub const SHORT: usize = 8;
 
 /// How many rows [`Batch`] sets up at once: two SSE vectors (one AVX vector) of
 /// `f32`.
@@ -103,8 +110,12 @@ pub struct Batch<F> {
     pub p_b: [F; BATCH],
     /// `1 − c` per row.
     pub omc: [F; BATCH],
-    /// `1/n` per row (0 for one-pixel rows).
+    /// `1/n` per row.
     pub inv_n: [F; BATCH],
+    /// `a1` per row.
+    pub a1: [F; BATCH],
+    /// `a2` per row.
+    pub a2: [F; BATCH],
     /// Steps per row.
     pub n: [u32; BATCH],
 }
@@ -152,7 +163,11 @@ macro_rules! rows_impl {
             /// The field of a triangle's vertex normals, `U(v_i) = N_i`, in
             /// coordinates relative to its first vertex `v_0` (`U(0, 0) = N_0`): one
             /// reciprocal of the doubled area. `None` for a degenerate triangle.
-            pub fn from_triangle(v: [[$f; 2]; 3], normals: [[$f; 3]; 3], l: [$f; 3]) -> Option<Self> {
+            pub fn from_triangle(
+                v: [[$f; 2]; 3],
+                normals: [[$f; 3]; 3],
+                l: [$f; 3],
+            ) -> Option<Self> {
                 let (e1, e2) = (
                     [v[1][0] - v[0][0], v[1][1] - v[0][1]],
                     [v[2][0] - v[0][0], v[2][1] - v[0][1]],
@@ -167,7 +182,12 @@ macro_rules! rows_impl {
                 let d2 = [n2[0] - n0[0], n2[1] - n0[1], n2[2] - n0[2]];
                 let gx = |j: usize| (d1[j] * e2[1] - d2[j] * e1[1]) * inv;
                 let gy = |j: usize| (d2[j] * e1[0] - d1[j] * e2[0]) * inv;
-                Some(Self::new([gx(0), gx(1), gx(2)], [gy(0), gy(1), gy(2)], n0, l))
+                Some(Self::new(
+                    [gx(0), gx(1), gx(2)],
+                    [gy(0), gy(1), gy(2)],
+                    n0,
+                    l,
+                ))
             }
 
             /// `U(x, y)`.
@@ -211,11 +231,16 @@ macro_rules! rows_impl {
                 // four `i32` at once, but has no unsigned conversion.
                 let nf = n as i32 as $f;
                 let (ra, rb, s_b, w) = self.roots(f, nf);
+                let (p_a, p_b) = (self.s * ra, s_b * rb);
+                let omc = 1.0 - w * ra * rb;
+                let inv_n = 1.0 / nf.max(1.0);
                 RowSpan {
-                    p_a: self.s * ra,
-                    p_b: s_b * rb,
-                    omc: 1.0 - w * ra * rb,
-                    inv_n: 1.0 / nf.max(1.0),
+                    p_a,
+                    p_b,
+                    omc,
+                    inv_n,
+                    a1: (p_b - p_a) * inv_n,
+                    a2: 0.5 * omc * (p_a + p_b) * inv_n * inv_n,
                     n,
                 }
             }
@@ -251,19 +276,29 @@ macro_rules! rows_impl {
             /// `out[..=n]`.
             #[inline]
             pub fn corrected_euler(&self, out: &mut [$f]) {
-                let a1 = (self.p_b - self.p_a) * self.inv_n;
-                let a2 = 0.5 * self.omc * (self.p_a + self.p_b) * self.inv_n * self.inv_n;
-                let (p_a, nf) = (self.p_a, self.n as $f);
-                crate::fast::each_index(&mut out[..=self.n as usize], |x| {
-                    p_a + x * (a1 + (nf - x) * a2)
-                });
+                let out = &mut out[..=self.n as usize];
+                let (p_a, a1, a2) = (self.p_a, self.a1, self.a2);
+                if out.len() < SHORT {
+                    // The paper's recurrence (eqs. 16–17), `p += t; t += ds` with
+                    // `t_0 = a1 + (n − 1)·a2`, `ds = −2·a2`: two additions a pixel,
+                    // cheaper than a vector pass on a row this short.
+                    let nf = self.n as $f;
+                    let (mut p, mut t, ds) = (p_a, a1 + (nf - 1.0) * a2, -2.0 * a2);
+                    for o in out.iter_mut() {
+                        *o = p;
+                        p += t;
+                        t += ds;
+                    }
+                } else {
+                    let nf = self.n as $f;
+                    crate::fast::each_index(out, |x| p_a + x * (a1 + (nf - x) * a2));
+                }
             }
 
             /// Gouraud: `p_a + i(p_b − p_a)/n`. Fills `out[..=n]`.
             #[inline]
             pub fn gouraud(&self, out: &mut [$f]) {
-                let a1 = (self.p_b - self.p_a) * self.inv_n;
-                let p_a = self.p_a;
+                let (p_a, a1) = (self.p_a, self.a1);
                 crate::fast::each_index(&mut out[..=self.n as usize], |x| p_a + x * a1);
             }
 
@@ -272,13 +307,7 @@ macro_rules! rows_impl {
             #[inline(always)]
             pub fn abcde(&self) -> [$f; 5] {
                 let omc2 = 2.0 * self.omc * self.inv_n;
-                [
-                    (self.p_b - self.p_a) * self.inv_n,
-                    self.p_a,
-                    omc2 * self.inv_n,
-                    -omc2,
-                    1.0,
-                ]
+                [self.a1, self.p_a, omc2 * self.inv_n, -omc2, 1.0]
             }
 
             /// The paper's Phong with unit edge normals, `(A i + B)/√(C i² + D i + 1)`,
@@ -286,29 +315,6 @@ macro_rules! rows_impl {
             #[inline]
             pub fn phong(&self, out: &mut [$f]) {
                 crate::fast::closed_phong(self.abcde(), &mut out[..=self.n as usize]);
-            }
-
-            /// The whole [`FastSpan`] of the row, for the other fast kernels: the
-            /// quantities of the paper's set-up from `p_a`, `p_b`, `1 − c`
-            /// (`eq_11_ds_unit_closed_form`: `ds = −(1 − c)(p_a + p_b)/n²`).
-            pub fn fast_span(&self) -> FastSpan<$f> {
-                let [a, b, c, d, e] = self.abcde();
-                let ds = -self.omc * (self.p_a + self.p_b) * self.inv_n * self.inv_n;
-                let nf = self.n as $f;
-                let di_a = a - b * 0.5 * d;
-                FastSpan {
-                    n: self.n,
-                    a,
-                    b,
-                    c,
-                    d,
-                    e,
-                    p_b: self.p_b,
-                    di_a,
-                    ds,
-                    t0: a - 0.5 * (nf - 1.0) * ds,
-                    dp: a,
-                }
             }
         }
 
@@ -319,12 +325,19 @@ macro_rules! rows_impl {
             /// four (SSE) rows go in one instruction. Lanes a caller does not use may
             /// hold anything (their results are not read).
             #[inline]
-            pub fn set_up(f: &Field<$f>, x: &[$f; BATCH], y: &[$f; BATCH], n: &[u32; BATCH]) -> Self {
+            pub fn set_up(
+                f: &Field<$f>,
+                x: &[$f; BATCH],
+                y: &[$f; BATCH],
+                n: &[u32; BATCH],
+            ) -> Self {
                 let mut b = Batch {
                     p_a: [0.0; BATCH],
                     p_b: [0.0; BATCH],
                     omc: [0.0; BATCH],
                     inv_n: [0.0; BATCH],
+                    a1: [0.0; BATCH],
+                    a2: [0.0; BATCH],
                     n: *n,
                 };
                 for r in 0..BATCH {
@@ -333,6 +346,8 @@ macro_rules! rows_impl {
                     b.p_b[r] = row.p_b;
                     b.omc[r] = row.omc;
                     b.inv_n[r] = row.inv_n;
+                    b.a1[r] = row.a1;
+                    b.a2[r] = row.a2;
                 }
                 b
             }
@@ -345,6 +360,8 @@ macro_rules! rows_impl {
                     p_b: self.p_b[r],
                     omc: self.omc[r],
                     inv_n: self.inv_n[r],
+                    a1: self.a1[r],
+                    a2: self.a2[r],
                     n: self.n[r],
                 }
             }
@@ -363,12 +380,13 @@ macro_rules! rows_impl {
             ) {
                 let (mut x, mut y, mut n) = ([0.0; BATCH], [0.0; BATCH], [0u32; BATCH]);
                 let (mut k, mut done) = (0, 0);
-                let mut flush = |k: usize, x: &[$f; BATCH], y: &[$f; BATCH], n: &[u32; BATCH], done: usize| {
-                    let b = Batch::<$f>::set_up(self, x, y, n);
-                    for r in 0..k {
-                        each(done + r, &b.get(r));
-                    }
-                };
+                let mut flush =
+                    |k: usize, x: &[$f; BATCH], y: &[$f; BATCH], n: &[u32; BATCH], done: usize| {
+                        let b = Batch::<$f>::set_up(self, x, y, n);
+                        for r in 0..k {
+                            each(done + r, &b.get(r));
+                        }
+                    };
                 for (xr, yr, nr) in rows {
                     (x[k], y[k], n[k]) = (xr, yr, nr);
                     k += 1;

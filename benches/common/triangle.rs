@@ -122,13 +122,19 @@ pub const METHODS: [(&str, Which); 26] = [
     ("field_phong_rsqrt", Which::FieldPhongRsqrt),
     ("span_phong", Which::Span(SpanMethod::Paper(Method::Phong))),
     ("span_duff", Which::Span(SpanMethod::Paper(Method::Duff))),
-    ("span_fence", Which::Span(SpanMethod::Paper(Method::Gouraud))),
+    (
+        "span_fence",
+        Which::Span(SpanMethod::Paper(Method::Gouraud)),
+    ),
     ("span_euler", Which::Span(SpanMethod::Paper(Method::Euler))),
     (
         "span_corrected_euler",
         Which::Span(SpanMethod::Paper(Method::CorrectedEuler)),
     ),
-    ("span_angular", Which::Span(SpanMethod::Paper(Method::Angular))),
+    (
+        "span_angular",
+        Which::Span(SpanMethod::Paper(Method::Angular)),
+    ),
     ("span_spherical", Which::Span(SpanMethod::Spherical)),
     ("span_binary", Which::Span(SpanMethod::Binary)),
     ("span_bishop_weimer", Which::Span(SpanMethod::BishopWeimer)),

@@ -94,9 +94,11 @@ pub fn stepped_start(r: &RowShape, st: &Stepped) -> StartError {
     let (s, m) = (st.sigma, st.m);
     let per = 5.0 * s + m;
     // Σ_{j<k} 2(|dx|Δg_j + Δh_j) ≤ 2σ·Σ_j (6M + j·per) over the steps, with
-    // Δg_j/|n1|, Δh_j/|n2| ≤ 6M + j·per; plus the roundings of each increment.
+    // Δg_j/|n1|, Δh_j/|n2| ≤ 6M + j·per; plus per step the roundings of the
+    // increment (4σM in 2(dx·g + h), 7σ² in the constant part, 2σM + σ² in their
+    // sum) and of the addition to q (M²).
     let cross = 2.0 * s * (6.0 * m * k + per * k * (k - 1.0) / 2.0);
-    let round = k * (6.0 * m * s + 7.0 * s * s + m * m);
+    let round = k * (6.0 * m * s + 8.0 * s * s + m * m);
     StartError {
         s: 6.0 * m * r.lambda + k * per * r.lambda,
         g: 6.0 * m * r.n1 + k * per * r.n1,
@@ -156,18 +158,33 @@ pub enum RowKernel {
     PhongRsqrt,
 }
 
-/// The absolute error of a kernel's values on a row whose set-up is within `e`
-/// (§17.3), with `q_min` the least `q` of the exact unit span (Phong only) and
-/// `lambda = |L|`. The propagated part is the largest derivative of the exact values
-/// in `p_a`, `p_b`, `1 − c` (`fast_rows_ce_from_span_invariants`) times the errors;
-/// the evaluation part counts the kernel's roundings.
-pub fn kernel_bound(k: RowKernel, e: &SpanError, lambda: f64, q_min: f64, u: f64) -> Option<f64> {
+/// The absolute error of a kernel's values on a row of `n` steps whose set-up is
+/// within `e` (§17.3), with `q_min` the least `q` of the exact unit span (Phong only)
+/// and `lambda = |L|`. The propagated part is the largest derivative of the exact
+/// values in `p_a`, `p_b`, `1 − c` (`fast_rows_ce_from_span_invariants`) times the
+/// errors; the evaluation part counts the kernel's roundings.
+pub fn kernel_bound(
+    k: RowKernel,
+    n: u32,
+    e: &SpanError,
+    lambda: f64,
+    q_min: f64,
+    u: f64,
+) -> Option<f64> {
     let slack = 1.0 + 1.0 / 256.0;
     let big = e.p_a.max(e.p_b);
     let v = match k {
-        // ∂/∂p_a ≤ (1 − t) + (1 − c)t(1 − t)/2, ∂/∂1−c ≤ |p_a + p_b|/8; 16 roundings.
+        // ∂/∂p_a ≤ (1 − t) + (1 − c)t(1 − t)/2, ∂/∂1−c ≤ |p_a + p_b|/8; the closed
+        // form's 16 roundings, or on a row shorter than `fast_rows::SHORT` the
+        // recurrence's (21 + 2.2n).
         RowKernel::CorrectedEuler => {
-            big + (e.p_a + e.p_b) / 4.0 + lambda * e.omc / 4.0 + 16.0 * lambda
+            let nf = f64::from(n);
+            let eval = if (n as usize) + 1 < crate::fast_rows::SHORT {
+                21.0 + 2.2 * nf
+            } else {
+                16.0
+            };
+            big + (e.p_a + e.p_b) / 4.0 + lambda * e.omc / 4.0 + eval * lambda
         }
         RowKernel::Gouraud => big + 9.0 * lambda,
         RowKernel::Phong | RowKernel::PhongRsqrt => {
@@ -186,7 +203,13 @@ pub fn kernel_bound(k: RowKernel, e: &SpanError, lambda: f64, q_min: f64, u: f64
 /// or with `rsqrt`) from a start within `e` (§17.5): `p = s + x·n1·L` within
 /// `e.s + (4ν + T)λ`, `q = q_a + x(2g + x·n1·n1)` within `e.q + 2n·e.g + 9T²`,
 /// `q_min` the least `|U|²` over the row's pixels, and §8's ratio.
-pub fn field_phong_bound(r: &RowShape, e: &StartError, q_min: f64, rsqrt: bool, u: f64) -> Option<f64> {
+pub fn field_phong_bound(
+    r: &RowShape,
+    e: &StartError,
+    q_min: f64,
+    rsqrt: bool,
+    u: f64,
+) -> Option<f64> {
     let (nu, t, lam) = (r.nu(), r.t(), r.lambda);
     let nf = f64::from(r.n);
     let e_p = e.s + (4.0 * nu + t) * lam;

@@ -1,6 +1,9 @@
 //! The frame benchmark: the 800-polygon torus at the default size (225×225), shaded
 //! by one method at a time with the fast kernels, in visible pixels per second —
-//! single-threaded (one frame) and with rayon (eight frames in parallel).
+//! single-threaded (one frame) and with rayon (eight frames in parallel). Two rows
+//! profile the frame: `profile_scan_depth` (no set-up, no kernel: culling, scan
+//! conversion, the depth test and quantization) and `profile_setup` (the rows' edge
+//! normals normalized and `FastSpan::new`, no kernel).
 
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use phong_approx::fast::{phong_rsqrt_f32, FastSpan};
@@ -15,12 +18,20 @@ use std::time::Duration;
 
 type Kernel = fn(&FastSpan<f32>, &mut [f32]);
 
+/// What a row does: nothing, the set-up alone, or the set-up and a kernel.
+#[derive(Clone, Copy)]
+enum Mode {
+    ScanDepth,
+    Setup,
+    Kernel(Kernel),
+}
+
 /// Frame `f` with `kernel` through the crate's frame loop
 /// (`phong_approx::raster::frame`): culling, scan conversion, per-row set-up, the
 /// kernel, 8-bit quantization and the depth test. Returns the visible pixel count.
-fn frame(mesh: &Mesh, scene: &Scene, f: u32, kernel: Kernel) -> u64 {
+fn frame(mesh: &Mesh, scene: &Scene, f: u32, mode: Mode) -> u64 {
     struct Fast {
-        kernel: Kernel,
+        mode: Mode,
         l: [f32; 3],
         /// The current row's values (one buffer for the frame, as a renderer keeps).
         span: Vec<f32>,
@@ -30,6 +41,11 @@ fn frame(mesh: &Mesh, scene: &Scene, f: u32, kernel: Kernel) -> u64 {
         type Row = ();
         fn row(&mut self, _: usize, _: &Polygon, row: &Row) -> Option<()> {
             let n = (row.x_last - row.x_first) as u32;
+            let kernel = match self.mode {
+                Mode::ScanDepth => return Some(()),
+                Mode::Setup => None,
+                Mode::Kernel(k) => Some(k),
+            };
             let na = row.left.normal.normalize().to_array();
             let nb = row.right.normal.normalize().to_array();
             let span = &mut self.span[..n as usize + 1];
@@ -37,7 +53,13 @@ fn frame(mesh: &Mesh, scene: &Scene, f: u32, kernel: Kernel) -> u64 {
                 let l = self.l;
                 span[0] = na[0] * l[0] + na[1] * l[1] + na[2] * l[2];
             } else {
-                (self.kernel)(&FastSpan::<f32>::new(na, nb, self.l, n), span);
+                let fs = FastSpan::<f32>::new(na, nb, self.l, n);
+                match kernel {
+                    Some(k) => k(&fs, span),
+                    None => {
+                        black_box(&fs);
+                    }
+                }
             }
             Some(())
         }
@@ -47,7 +69,7 @@ fn frame(mesh: &Mesh, scene: &Scene, f: u32, kernel: Kernel) -> u64 {
     }
     let (w, h) = (scene.width, scene.height);
     let mut s = Fast {
-        kernel,
+        mode,
         l: scene.light.to_array(),
         span: vec![0f32; scene.width as usize + 1],
         image: vec![None; (w * h) as usize],
@@ -61,17 +83,25 @@ fn frames(c: &mut Criterion) {
     let exp = Experiment::default();
     let scene = exp.scene();
     let mesh = exp.mesh(40, 20);
-    let kernels: [(&str, Kernel); 7] = [
-        ("gouraud_fast", FastSpan::<f32>::gouraud),
+    let kernels: [(&str, Mode); 9] = [
+        ("profile_scan_depth", Mode::ScanDepth),
+        ("profile_setup", Mode::Setup),
+        ("gouraud_fast", Mode::Kernel(FastSpan::<f32>::gouraud)),
         (
             "corrected_euler_serial",
-            FastSpan::<f32>::corrected_euler_serial,
+            Mode::Kernel(FastSpan::<f32>::corrected_euler_serial),
         ),
-        ("corrected_euler_fast", FastSpan::<f32>::corrected_euler),
-        ("duff_serial", FastSpan::<f32>::duff_serial),
-        ("phong_fast", FastSpan::<f32>::phong),
-        ("phong_rsqrt_simd", phong_rsqrt_f32),
-        ("symmetric_phong_fast", FastSpan::<f32>::symmetric_phong),
+        (
+            "corrected_euler_fast",
+            Mode::Kernel(FastSpan::<f32>::corrected_euler),
+        ),
+        ("duff_serial", Mode::Kernel(FastSpan::<f32>::duff_serial)),
+        ("phong_fast", Mode::Kernel(FastSpan::<f32>::phong)),
+        ("phong_rsqrt_simd", Mode::Kernel(phong_rsqrt_f32)),
+        (
+            "symmetric_phong_fast",
+            Mode::Kernel(FastSpan::<f32>::symmetric_phong),
+        ),
     ];
     let mut g = c.benchmark_group("frame_torus800_225");
     g.warm_up_time(Duration::from_millis(500))

@@ -1,10 +1,18 @@
 #!/usr/bin/env python3
 """Turns criterion's results (target/criterion) into the Markdown tables of
 docs/performance.md: ns per pixel per kernel and n, ratios to glam per-pixel Phong
-and to the store floor, the set-up at n = 8, and the frame benchmark in pixels/s."""
-import json, os, sys
+and to the store floor, the set-up at n = 8, the frame benchmark in pixels/s, the
+triangle table, and the table "at the paper's polygon size": every triangle method's
+ns per pixel at S = 8, 32, 128 beside its levels from Phong on the 800-polygon torus,
+read from `phong-approx compare`'s table2_extended.csv.
+
+    python3 benches/summarize.py [CRITERION_DIR [COMPARE_CSV]]
+
+(defaults: target/criterion and out/compare/table2_extended.csv)."""
+import csv, json, os, sys
 
 root = sys.argv[1] if len(sys.argv) > 1 else "target/criterion"
+compare_csv = sys.argv[2] if len(sys.argv) > 2 else "out/compare/table2_extended.csv"
 
 def est(path):
     with open(os.path.join(path, "new", "estimates.json")) as f:
@@ -83,3 +91,76 @@ if os.path.isdir(base):
         cells = [f"{per_px[(k, s)]:.2f}" if (k, s) in per_px else "" for s in sizes]
         r = per_px[(k, big)] / per_px[("glam_phong", big)] if ("glam_phong", big) in per_px else float("nan")
         print(f"| {k} | " + " | ".join(cells) + f" | {r:.2f} |")
+
+# The bench's triangle methods and the `compare` column whose levels they produce:
+# the same values up to rounding (the per-pixel glam Phong normalizes the field at
+# every pixel in f32, as phong-field does; the fast_* and span_* rows compute their
+# span method's values).
+LEVELS_OF = {
+    "glam_phong": "phong-field",
+    "glam_phong_plain_field": "phong-field",
+    "vertex_gouraud": "gouraud-vertex",
+    "vertex_angle": "vertex-angle",
+    "bishop_weimer": "bishop-weimer-triangle",
+    "seiler": "seiler",
+    "fast_fence": "gouraud",
+    "fast_corrected_euler": "corrected-euler",
+    "fast_phong": "phong",
+    "fast_phong_rsqrt": "phong",
+    "batched_fence": "gouraud-batched",
+    "batched_corrected_euler": "corrected-euler-batched",
+    "batched_phong": "phong-batched",
+    "batched_phong_rsqrt": "phong-batched-rsqrt",
+    "stepped_corrected_euler": "corrected-euler-stepped",
+    "field_phong": "phong-field",
+    "field_phong_rsqrt": "phong-field-rsqrt",
+    "span_phong": "phong",
+    "span_duff": "duff",
+    "span_fence": "gouraud",
+    "span_euler": "euler",
+    "span_corrected_euler": "corrected-euler",
+    "span_angular": "angular",
+    "span_spherical": "spherical",
+    "span_binary": "binary",
+    "span_bishop_weimer": "bishop-weimer",
+}
+
+def levels_800():
+    """compare's diffuse mean and max levels on the 800-polygon torus, per column."""
+    out = {}
+    if not os.path.isfile(compare_csv):
+        return out
+    with open(compare_csv, newline="") as f:
+        for row in csv.DictReader(f):
+            if row["polygons"] == "800" and row["term"] == "diffuse":
+                out[row["method"]] = (float(row["mean"]), int(row["max"]))
+    return out
+
+base = os.path.join(root, "triangle_f32")
+if os.path.isdir(base):
+    lv = levels_800()
+    per_px = {}
+    for k in os.listdir(base):
+        if k == "report":
+            continue
+        for sz in os.listdir(os.path.join(base, k)):
+            p = os.path.join(base, k, sz)
+            if sz.isdigit() and os.path.isdir(p):
+                per_px[(k, int(sz))] = est(p) / elements(p)
+    sizes = sorted({sz for _, sz in per_px})
+    small = min(sizes)
+    print(f"\n### At the paper's polygon size: ns per pixel on one triangle (f32, set-up included), "
+          f"levels from Phong on the 800-polygon torus\n")
+    print("| method | " + " | ".join(f"S = {sz}" for sz in sizes)
+          + f" | ÷ glam Phong (S = {small}) | ÷ Seiler (S = {small}) | mean levels | max levels | as `compare` column |")
+    print("|---|" + "---:|" * (len(sizes) + 4) + "---|")
+    glam, seiler = per_px.get(("glam_phong", small)), per_px.get(("seiler", small))
+    methods = sorted({k for k, _ in per_px}, key=lambda k: per_px.get((k, small), 0))
+    for k in methods:
+        cells = [f"{per_px[(k, sz)]:.2f}" if (k, sz) in per_px else "" for sz in sizes]
+        t = per_px.get((k, small))
+        rg = f"{t / glam:.2f}" if t and glam else ""
+        rs = f"{t / seiler:.2f}" if t and seiler else ""
+        col = LEVELS_OF.get(k, "")
+        mean, mx = (f"{lv[col][0]:.3f}", str(lv[col][1])) if col in lv else ("", "")
+        print(f"| {k} | " + " | ".join(cells) + f" | {rg} | {rs} | {mean} | {mx} | {col} |")

@@ -2,7 +2,8 @@
 //! `valgrind --tool=callgrind target/release/examples/row_counts METHOD S REPS`
 //! shades the triangle with legs `S` with `METHOD` (a name of
 //! `benches/common/triangle.rs`, or `none`) `REPS` times. `benches/callgrind.sh`
-//! runs it for every method and prints instructions per pixel.
+//! runs it for every method and prints instructions per pixel; `row_counts --list`
+//! prints the names.
 
 #[path = "../benches/common/triangle.rs"]
 #[allow(dead_code)]
@@ -12,6 +13,12 @@ use std::hint::black_box;
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
+    if args.get(1).map(String::as_str) == Some("--list") {
+        for (name, _) in triangle::METHODS.iter().chain(&triangle::STAGES) {
+            println!("{name}");
+        }
+        return;
+    }
     let usage = "usage: row_counts METHOD S REPS";
     let (Some(method), Some(s), Some(reps)) = (args.get(1), args.get(2), args.get(3)) else {
         eprintln!("{usage}");

@@ -29,6 +29,11 @@ fn f64_harness_agrees_with_exact_rationals() {
     assert!(exact.rows > 30, "too few rows: {}", exact.rows);
     for (c, sh) in COLUMNS.iter().enumerate() {
         let d = &exact.vs_f64[c];
+        if !sh.runs_in("exact") {
+            // The row set-ups are f32/f64 kernels: not run in rationals.
+            assert_eq!((d.pixels, exact.failed_rows[c]), (0, 0), "{}", sh.label());
+            continue;
+        }
         assert_eq!(exact.failed_rows[c], 0, "{}", sh.label());
         assert!(d.pixels > 100, "{}: {} pixels", sh.label(), d.pixels);
         assert!(d.max <= 1, "{}: max {}", sh.label(), d.max);
@@ -177,5 +182,64 @@ fn cli_compare_rejects_bad_arguments() {
         let err = String::from_utf8_lossy(&o.stderr);
         assert_eq!(err.trim().lines().count(), 1, "{err}");
         assert!(err.contains(needle), "{err}");
+    }
+}
+
+/// The row set-ups of `fast_rows` as columns: on one frame each is within one level of
+/// its span method at every pixel's level statistics (same mean to 0.01, max within
+/// one), corrected Euler's and Phong's within one level of the reference, Phong of
+/// the field as close to the reference as the reference's own `f32` run; they run in
+/// `f32` and `f64` (the `rsqrt` ones in `f32`) and in no other precision.
+#[test]
+fn row_setups_match_their_span_methods() {
+    use phong_approx::raster::shader::{RowSetup, Shader as S};
+    let (mesh, scene) = small();
+    let f = render_compare(&mesh, &scene, 7, CompareOptions::default());
+    let st = &f.stats;
+    assert_eq!(st.dropped_rows, 0);
+    let d = |s: Shader| &st.diffuse[index(s)];
+    for r in RowSetup::ALL {
+        let (row, span) = (d(S::Rows(r)), d(S::Span(r.method())));
+        assert_eq!(row.pixels, st.pixels, "{r:?}");
+        if r == RowSetup::FieldPhong || r == RowSetup::FieldPhongRsqrt {
+            assert!(
+                row.max <= 1 && row.mean() < 0.001,
+                "{r:?}: {} / {}",
+                row.mean(),
+                row.max
+            );
+        } else {
+            assert!(
+                (row.mean() - span.mean()).abs() < 0.01,
+                "{r:?}: {} vs {}",
+                row.mean(),
+                span.mean()
+            );
+            assert!(
+                row.max <= span.max + 1,
+                "{r:?}: max {} vs {}",
+                row.max,
+                span.max
+            );
+        }
+        if r.method() != Method::Gouraud {
+            assert!(row.max <= 1, "{r:?}: max {}", row.max);
+        }
+        assert!(S::Rows(r).runs_in("f32"));
+        for p in ["f16", "I16F16", "I8F8", "exact"] {
+            assert!(!S::Rows(r).runs_in(p), "{r:?} in {p}");
+        }
+    }
+    let stepped = d(S::Rows(RowSetup::SteppedCorrectedEuler));
+    let batched = d(S::Rows(RowSetup::BatchedCorrectedEuler));
+    assert!((stepped.mean() - batched.mean()).abs() < 0.005);
+    // The precision study fills the row set-ups' cells in f32 and f64 only.
+    let p32 = precision::frame::<f32>(&mesh, &scene, 2);
+    let p16 = precision::frame::<phong_approx::lowp::f16>(&mesh, &scene, 2);
+    for r in RowSetup::ALL {
+        let c = index(S::Rows(r));
+        assert!(p32.vs_phong[c].pixels > 100, "{r:?} in f32");
+        assert_eq!(p16.vs_phong[c].pixels, 0, "{r:?} in f16");
+        assert_eq!(p16.failed_rows[c], 0, "{r:?} in f16");
     }
 }

@@ -453,9 +453,9 @@ fn field_edge_cases() -> Vec<FieldCase> {
         c.y = 0.0;
         c.n = 20;
     }));
-    v.push(with("long row, n = 400", &|c| {
-        c.n1 = [0.0007, 0.0, -0.0002];
-        c.n = 400;
+    v.push(with("long row, n = 256", &|c| {
+        c.n1 = [0.001, 0.0, -0.0003];
+        c.n = 256;
     }));
     v.push(with("large coordinates", &|c| {
         c.n1 = [0.00003, -0.00001, 0.0];
@@ -492,8 +492,9 @@ fn field_edge_cases() -> Vec<FieldCase> {
 }
 
 /// `count` seeded random rows: mesh-like fields (gradients up to 0.05 per pixel) and
-/// coarse ones (up to 0.3), lights anywhere, rows of 0–64 steps (some to 300),
-/// 0–20 edge steps of whole or half pixels.
+/// coarse ones (up to 0.3), lights anywhere, rows of 0–64 steps (one in twenty to
+/// 200), 0–20 edge steps of whole or half pixels; one in four targeted at a field that
+/// cancels.
 fn field_random_cases(count: usize) -> Vec<FieldCase> {
     struct Rng(u64);
     impl Rng {
@@ -699,7 +700,7 @@ fn within(what: &str, got: &[f64], exact: &[Q], bound: f64) -> Result<(), String
 macro_rules! row_tests {
     ($name:ident, $f:ident) => {
         /// Every row kernel of `fast_rows` in this type against the exact run, within
-        /// its derived bound, on the enumerated and 300 random rows; the direct,
+        /// its derived bound, on the enumerated and 160 seeded rows; the direct,
         /// batched and edge-stepped set-ups, and Phong of the field.
         #[test]
         fn $name() {
@@ -707,7 +708,7 @@ macro_rules! row_tests {
             let u = <$f as Scalar>::unit_roundoff();
             let mut checked = 0;
             let mut cases = field_edge_cases();
-            cases.extend(field_random_cases(300));
+            cases.extend(field_random_cases(160));
             for c in &cases {
                 let fail = |e: String| panic!("{} ({}): {e}\ninputs: {c:?}", stringify!($f), c.why);
                 let Some(ex) = exact_row(c, &round) else {
@@ -817,7 +818,7 @@ macro_rules! row_tests {
                     );
                 }
             }
-            assert!(checked > 1500, "only {checked} rows checked");
+            assert!(checked > 1000, "only {checked} rows checked");
         }
     };
 }

@@ -24,6 +24,7 @@ use super::render::{Deviation, Scene};
 use super::scan::Row;
 use super::stats::deviations;
 use crate::adaptive::Choice;
+use crate::fast_rows::{EdgeStepper, Field};
 use crate::method::Prepared;
 use crate::quantize::level;
 use crate::related::bishop_weimer::Taylor;
@@ -34,6 +35,9 @@ use crate::related::vertex_angle;
 use crate::scalar::Real;
 use crate::{Method, Span, Vec3};
 use glam::Vec3 as G3;
+use std::cell::Cell;
+
+use super::shader::RowSetup;
 
 /// The shininess values of the specular tables.
 pub const SHININESS: [u32; 3] = [10, 50, 200];
@@ -83,6 +87,155 @@ pub(crate) struct TriangleSetup<T> {
     lambda: [Affine<T>; 3],
     field: (Vec3<T>, Vec3<T>, Vec3<T>),
     dirs: Vec<Direction<T>>,
+    /// The row set-ups' fields, one per direction, when `T` is `f32` or `f64`.
+    rows: FastRows,
+}
+
+/// A triangle's field for the row set-ups of [`crate::fast_rows`] in one float type,
+/// per direction, with the edge stepper that follows the rows down the triangle.
+enum FastRows {
+    /// `T` has no `fast_rows` kernels.
+    None,
+    F32(Vec<RowsDir<f32>>),
+    F64(Vec<RowsDir<f64>>),
+}
+
+/// One direction's field, and the stepper's last row: its centroid-relative `(x0, y)`
+/// and its state (the same row asked again gets the same state; the next row down
+/// is stepped to; any other row restarts from the field).
+struct RowsDir<F> {
+    field: Field<F>,
+    stepper: Cell<Option<(f64, f64, EdgeStepper<F>)>>,
+}
+
+macro_rules! rows_for {
+    ($f:ident, $shade:ident) => {
+        /// Shades one row with a row set-up of [`crate::fast_rows`] in this type;
+        /// `None` where the set-up has no kernel in it.
+        fn $shade(
+            d: &RowsDir<$f>,
+            r: RowSetup,
+            x0: f64,
+            y: f64,
+            n: u32,
+            o: &mut [$f],
+        ) -> Option<()> {
+            let f = &d.field;
+            let (xf, yf) = (x0 as $f, y as $f);
+            match r {
+                RowSetup::BatchedGouraud => f.row(xf, yf, n).gouraud(o),
+                RowSetup::BatchedCorrectedEuler => f.row(xf, yf, n).corrected_euler(o),
+                RowSetup::BatchedPhong => f.row(xf, yf, n).phong(o),
+                RowSetup::FieldPhong => f.start(xf, yf).phong_field(f, n, o),
+                RowSetup::SteppedCorrectedEuler => {
+                    let st = match d.stepper.get() {
+                        Some((lx, ly, e)) if lx == x0 && ly == y => e,
+                        Some((lx, ly, mut e)) if (y - ly - 1.0).abs() < 1e-9 => {
+                            e.step(f, (x0 - lx).round() as $f);
+                            e
+                        }
+                        _ => EdgeStepper::<$f>::new(f, xf, yf),
+                    };
+                    d.stepper.set(Some((x0, y, st)));
+                    st.start.span(f, n).corrected_euler(o)
+                }
+                RowSetup::BatchedPhongRsqrt | RowSetup::FieldPhongRsqrt => {
+                    return rsqrt_row(f, r, xf, yf, n, o)
+                }
+            }
+            Some(())
+        }
+    };
+}
+
+rows_for!(f32, shade_rows_f32);
+rows_for!(f64, shade_rows_f64);
+
+/// The `rsqrt` row kernels, `f32` only.
+trait RsqrtRow: Sized {
+    fn rsqrt(f: &Field<Self>, r: RowSetup, x: Self, y: Self, n: u32, o: &mut [Self]) -> Option<()>;
+}
+
+impl RsqrtRow for f32 {
+    fn rsqrt(f: &Field<f32>, r: RowSetup, x: f32, y: f32, n: u32, o: &mut [f32]) -> Option<()> {
+        if r == RowSetup::FieldPhongRsqrt {
+            crate::fast_rows::phong_field_rsqrt(&f.start(x, y), f, n, o);
+        } else {
+            f.row(x, y, n).phong_rsqrt(o);
+        }
+        Some(())
+    }
+}
+
+impl RsqrtRow for f64 {
+    fn rsqrt(_: &Field<f64>, _: RowSetup, _: f64, _: f64, _: u32, _: &mut [f64]) -> Option<()> {
+        None
+    }
+}
+
+fn rsqrt_row<F: RsqrtRow>(
+    f: &Field<F>,
+    r: RowSetup,
+    x: F,
+    y: F,
+    n: u32,
+    o: &mut [F],
+) -> Option<()> {
+    F::rsqrt(f, r, x, y, n, o)
+}
+
+impl FastRows {
+    /// The fields of `field` lit by each of `dirs`, if `T` is `f32` or `f64`.
+    fn new<T: Real + 'static>(field: &(Vec3<T>, Vec3<T>, Vec3<T>), dirs: &[Direction<T>]) -> Self {
+        use std::any::TypeId;
+        macro_rules! build {
+            ($f:ident) => {
+                dirs.iter()
+                    .map(|d| {
+                        let a = |v: &Vec3<T>| {
+                            [v.x.to_f64() as $f, v.y.to_f64() as $f, v.z.to_f64() as $f]
+                        };
+                        RowsDir {
+                            field: Field::<$f>::new(
+                                a(&field.0),
+                                a(&field.1),
+                                a(&field.2),
+                                a(&d.dir),
+                            ),
+                            stepper: Cell::new(None),
+                        }
+                    })
+                    .collect()
+            };
+        }
+        // `to_f64` then `as` is exact when `T` is the type itself.
+        if TypeId::of::<T>() == TypeId::of::<f32>() {
+            FastRows::F32(build!(f32))
+        } else if TypeId::of::<T>() == TypeId::of::<f64>() {
+            FastRows::F64(build!(f64))
+        } else {
+            FastRows::None
+        }
+    }
+
+    /// Shades a row with `r` for direction `d` into `o` (of `T`, which is the
+    /// type of the fields); `None` where `T` or the set-up has no kernel.
+    fn shade<T: 'static>(
+        &self,
+        d: usize,
+        r: RowSetup,
+        x0: f64,
+        y: f64,
+        n: u32,
+        o: &mut Vec<T>,
+    ) -> Option<()> {
+        let o: &mut dyn std::any::Any = o;
+        match self {
+            FastRows::F32(v) => shade_rows_f32(&v[d], r, x0, y, n, o.downcast_mut::<Vec<f32>>()?),
+            FastRows::F64(v) => shade_rows_f64(&v[d], r, x0, y, n, o.downcast_mut::<Vec<f64>>()?),
+            FastRows::None => None,
+        }
+    }
 }
 
 fn to_vec<T: Real>(v: G3) -> Option<Vec3<T>> {
@@ -94,7 +247,7 @@ fn to_t<T: Real>(v: f64) -> T {
     T::from_rational(&r)
 }
 
-impl<T: Real> TriangleSetup<T> {
+impl<T: Real + 'static> TriangleSetup<T> {
     /// `rel`: vertex positions relative to the centroid (computed in `f64`);
     /// `normals`: unit vertex normals; `dirs`: unit directions.
     pub(crate) fn new(rel: [(f64, f64); 3], normals: [G3; 3], dirs: &[G3]) -> Option<Self> {
@@ -126,6 +279,7 @@ impl<T: Real> TriangleSetup<T> {
         }
         Some(TriangleSetup {
             lambda: tri.lambda.clone(),
+            rows: FastRows::new(&field, &out),
             field,
             dirs: out,
         })
@@ -151,7 +305,7 @@ pub(crate) struct RowInfo<T> {
 /// Shades one row of `n + 1` pixels starting at centroid-relative `(x0, y)` for
 /// direction `d`, for every shader in `which`, into `out[shader index]`.
 #[allow(clippy::too_many_arguments)]
-pub(crate) fn shade_row<T: Real>(
+pub(crate) fn shade_row<T: Real + 'static>(
     s: &TriangleSetup<T>,
     d: usize,
     x0: f64,
@@ -207,6 +361,7 @@ pub(crate) fn shade_row<T: Real>(
             }
             (Shader::BishopWeimerTriangle, _) => dir.taylor.shade_row(&tx0, &ty, o),
             (Shader::Seiler, _) => dir.seiler.shade_row(&tx0, &ty, o),
+            (Shader::Rows(r), _) => s.rows.shade(d, r, x0, y, n, o)?,
             (Shader::Span(_), None) => o[0] = p_a.clone(),
             (Shader::Span(m), Some(span)) => {
                 if let Some(d) = m.run(span, prep, o).ok()? {

@@ -10,7 +10,7 @@
 //!   accumulated error exceeds one 8-bit level: the set-up computed in `f64` and
 //!   rounded to the precision ([`Span::cast`]), the steps in the precision.
 
-use super::compare::{shade_row, triangle_inputs, TriangleSetup, COLUMNS};
+use super::compare::{shade_row, triangle_inputs, Shader, TriangleSetup, COLUMNS};
 use super::frame::{polygons, Split};
 use super::mesh::Mesh;
 use super::render::{Deviation, Scene};
@@ -70,13 +70,27 @@ impl PrecisionStats {
 
 /// Every drawn row of front-facing triangles of frame `f` (no depth test: every
 /// span counts), each shader in `T` against `f64`.
-pub fn frame<T: Real>(mesh: &Mesh, scene: &Scene, f: u32) -> PrecisionStats {
+pub fn frame<T: Real + 'static>(mesh: &Mesh, scene: &Scene, f: u32) -> PrecisionStats {
     let dirs = [scene.light];
     let table_t = Prepared::new(Method::AngularTable(crate::method::SOURCE_TABLE), T::one())
         .expect("256 entries");
     let table64 = Prepared::new(Method::AngularTable(crate::method::SOURCE_TABLE), 1.0f64)
         .expect("256 entries");
     let cols = COLUMNS.len();
+    // The shaders with a kernel in `T` (the row set-ups of `fast_rows` are `f32` and
+    // `f64` kernels); the others' cells stay empty.
+    let here: Vec<Shader> = COLUMNS
+        .iter()
+        .copied()
+        .filter(|sh| sh.runs_in(T::NAME))
+        .collect();
+    // The f64 run of every shader that has one (the `rsqrt` kernels are `f32` only:
+    // their cells against the same method in f64 stay empty).
+    let in64: Vec<Shader> = COLUMNS
+        .iter()
+        .copied()
+        .filter(|sh| sh.runs_in("f64"))
+        .collect();
     let mut st = PrecisionStats::empty();
     let mut out_t: Vec<Vec<T>> = vec![Vec::new(); cols];
     let mut out64: Vec<Vec<f64>> = vec![Vec::new(); cols];
@@ -91,7 +105,7 @@ pub fn frame<T: Real>(mesh: &Mesh, scene: &Scene, f: u32) -> PrecisionStats {
             let n = (row.x_last - row.x_first) as u32;
             let x0 = f64::from(row.x_first) + 0.5 - xc;
             let y = f64::from(row.y) + 0.5 - yc;
-            if shade_row(&s64, 0, x0, y, n, &table64, &COLUMNS[..], &mut out64).is_none() {
+            if shade_row(&s64, 0, x0, y, n, &table64, &in64, &mut out64).is_none() {
                 return;
             }
             st.rows += 1;
@@ -99,9 +113,10 @@ pub fn frame<T: Real>(mesh: &Mesh, scene: &Scene, f: u32) -> PrecisionStats {
             // All shaders at once; if that fails, each alone, to count per shader.
             let all_ok = st_t
                 .as_ref()
-                .and_then(|s| shade_row(s, 0, x0, y, n, &table_t, &COLUMNS[..], &mut out_t))
+                .and_then(|s| shade_row(s, 0, x0, y, n, &table_t, &here, &mut out_t))
                 .is_some();
-            for (c, &sh) in COLUMNS.iter().enumerate() {
+            for &sh in &here {
+                let c = super::compare::index(sh);
                 let values: &[T] = if all_ok {
                     &out_t[c]
                 } else {
@@ -120,7 +135,9 @@ pub fn frame<T: Real>(mesh: &Mesh, scene: &Scene, f: u32) -> PrecisionStats {
                     // quantizer in 8.8 cannot even form 255·v).
                     let l = level(&val.to_f64());
                     st.vs_phong[c].add(l, reference[j]);
-                    st.vs_f64[c].add(l, level(&out64[c][j]));
+                    if sh.runs_in("f64") {
+                        st.vs_f64[c].add(l, level(&out64[c][j]));
+                    }
                 }
             }
         });
@@ -138,7 +155,7 @@ pub fn torus(
     tick: &(dyn Fn() + Sync),
 ) -> Option<PrecisionStats> {
     use rayon::prelude::*;
-    fn go<T: Real>(
+    fn go<T: Real + 'static>(
         mesh: &Mesh,
         scene: &Scene,
         frames: u32,

@@ -24,21 +24,104 @@ pub enum Shader {
     BishopWeimerTriangle,
     /// Seiler: six-point quadratic, forward differences.
     Seiler,
+    /// A span method's fast `f32`/`f64` kernel on a cheap row set-up of
+    /// [`crate::fast_rows`] (from the polygon's normal field, per row).
+    Rows(RowSetup),
+}
+
+/// The cheap row set-ups of [`crate::fast_rows`], each with the kernel run on it:
+/// `f32` and `f64` kernels (the `rsqrt` ones `f32` only), so the comparison runs
+/// them in those precisions only.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum RowSetup {
+    /// Gouraud on the batched set-up (`Batch`, `RowSpan::gouraud`).
+    BatchedGouraud,
+    /// Corrected Euler on the batched set-up (`RowSpan::corrected_euler`).
+    BatchedCorrectedEuler,
+    /// Corrected Euler on the edge-stepped set-up (`EdgeStepper`).
+    SteppedCorrectedEuler,
+    /// The paper's Phong on the batched set-up (`RowSpan::phong`).
+    BatchedPhong,
+    /// The same with `rsqrtps` and one Newton step (`f32`).
+    BatchedPhongRsqrt,
+    /// Phong of the field, normalized at every pixel (`RowStart::phong_field`).
+    FieldPhong,
+    /// The same with `rsqrtps` and one Newton step (`f32`).
+    FieldPhongRsqrt,
+}
+
+impl RowSetup {
+    /// Every row set-up, in the order of the tables.
+    pub const ALL: [RowSetup; 7] = [
+        RowSetup::BatchedGouraud,
+        RowSetup::BatchedCorrectedEuler,
+        RowSetup::SteppedCorrectedEuler,
+        RowSetup::BatchedPhong,
+        RowSetup::BatchedPhongRsqrt,
+        RowSetup::FieldPhong,
+        RowSetup::FieldPhongRsqrt,
+    ];
+
+    /// The span method whose values it computes (Phong of the field: Phong's, with the
+    /// normal normalized at every pixel rather than at the edges).
+    pub fn method(self) -> Method {
+        match self {
+            RowSetup::BatchedGouraud => Method::Gouraud,
+            RowSetup::BatchedCorrectedEuler | RowSetup::SteppedCorrectedEuler => {
+                Method::CorrectedEuler
+            }
+            _ => Method::Phong,
+        }
+    }
+
+    /// Whether it has a kernel in the precision named `precision` (`f32`: all;
+    /// `f64`: all but the `rsqrt` ones; none in the others).
+    pub fn runs_in(self, precision: &str) -> bool {
+        match precision {
+            "f32" => true,
+            "f64" => !matches!(
+                self,
+                RowSetup::BatchedPhongRsqrt | RowSetup::FieldPhongRsqrt
+            ),
+            _ => false,
+        }
+    }
 }
 
 /// The shaders that are not span methods.
-pub const POLYGON_SHADERS: [Shader; 5] = [
+pub const POLYGON_SHADERS: [Shader; 12] = [
     Shader::PhongPixel,
     Shader::VertexGouraud,
     Shader::VertexAngle,
     Shader::BishopWeimerTriangle,
     Shader::Seiler,
+    Shader::Rows(RowSetup::BatchedGouraud),
+    Shader::Rows(RowSetup::BatchedCorrectedEuler),
+    Shader::Rows(RowSetup::SteppedCorrectedEuler),
+    Shader::Rows(RowSetup::BatchedPhong),
+    Shader::Rows(RowSetup::BatchedPhongRsqrt),
+    Shader::Rows(RowSetup::FieldPhong),
+    Shader::Rows(RowSetup::FieldPhongRsqrt),
 ];
 
 /// Where the comparison shows each polygon method: after the span method it is the
-/// polygon form of (or is compared with).
-pub const POLYGON_AFTER: [(Method, Shader); 4] = [
+/// polygon form of (or is compared with); the row set-ups after the method they
+/// compute.
+pub const POLYGON_AFTER: [(Method, Shader); 11] = [
     (Method::Gouraud, Shader::VertexGouraud),
+    (Method::Gouraud, Shader::Rows(RowSetup::BatchedGouraud)),
+    (
+        Method::CorrectedEuler,
+        Shader::Rows(RowSetup::BatchedCorrectedEuler),
+    ),
+    (
+        Method::CorrectedEuler,
+        Shader::Rows(RowSetup::SteppedCorrectedEuler),
+    ),
+    (Method::Phong, Shader::Rows(RowSetup::BatchedPhong)),
+    (Method::Phong, Shader::Rows(RowSetup::BatchedPhongRsqrt)),
+    (Method::Phong, Shader::Rows(RowSetup::FieldPhong)),
+    (Method::Phong, Shader::Rows(RowSetup::FieldPhongRsqrt)),
     (
         Method::AngularTable(crate::method::SOURCE_TABLE),
         Shader::VertexAngle,
@@ -58,7 +141,26 @@ impl Shader {
             Shader::VertexAngle => "vertex-angle",
             Shader::BishopWeimerTriangle => "bishop-weimer-triangle",
             Shader::Seiler => "seiler",
+            Shader::Rows(r) => match r {
+                RowSetup::BatchedGouraud => "gouraud-batched",
+                RowSetup::BatchedCorrectedEuler => "corrected-euler-batched",
+                RowSetup::SteppedCorrectedEuler => "corrected-euler-stepped",
+                RowSetup::BatchedPhong => "phong-batched",
+                RowSetup::BatchedPhongRsqrt => "phong-batched-rsqrt",
+                RowSetup::FieldPhong => "phong-field",
+                RowSetup::FieldPhongRsqrt => "phong-field-rsqrt",
+            },
         })
+    }
+
+    /// Whether the shader runs in the precision named `precision` (one of
+    /// [`super::precision::PRECISIONS`]): every one but the row set-ups, which are
+    /// `f32`/`f64` kernels.
+    pub fn runs_in(&self, precision: &str) -> bool {
+        match self {
+            Shader::Rows(r) => r.runs_in(precision),
+            _ => true,
+        }
     }
 
     /// Who the method is by.
@@ -70,6 +172,7 @@ impl Shader {
             Shader::VertexAngle => "Mortensen 1995",
             Shader::BishopWeimerTriangle => "Bishop & Weimer 1986",
             Shader::Seiler => "Seiler 1998",
+            Shader::Rows(r) => r.method().info().source,
         }
     }
 

@@ -248,22 +248,12 @@ macro_rules! fast_impl {
                 }
                 base += 8.0;
             }
-            // The last (or only) partial chunk as a whole one through a buffer, so
-            // that a short row is one vector pass too; the lanes past the row are
-            // computed and dropped.
-            let rem = chunks.into_remainder();
-            if !rem.is_empty() {
-                let mut tmp: [$f; 8] = [0.0; 8];
-                copy_short(&mut tmp[..rem.len()], rem);
-                for j in 0..8 {
-                    g(&mut tmp[j], base + OFF[j]);
-                }
-                copy_short(rem, &tmp[..rem.len()]);
+            for (j, o) in chunks.into_remainder().iter_mut().enumerate() {
+                g(o, base + OFF[j]);
             }
         }
 
-        /// `out[i] = f(i)`, eight pixels at a time as [`chunked`] (the partial chunk
-        /// needs no read of `out`).
+        /// `out[i] = f(i)`, eight pixels at a time as [`chunked`].
         #[inline(always)]
         fn each_x(out: &mut [$f], f: impl Fn($f) -> $f) {
             const OFF: [$f; 8] = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0];
@@ -275,10 +265,17 @@ macro_rules! fast_impl {
                 }
                 base += 8.0;
             }
+            // A partial chunk of four pixels or more (all of a short row) as a whole
+            // one into a buffer, one vector pass; fewer one at a time, cheaper than a
+            // pass for one to three pixels.
             let rem = chunks.into_remainder();
-            if !rem.is_empty() {
+            if rem.len() >= 4 {
                 let tmp: [$f; 8] = std::array::from_fn(|j| f(base + OFF[j]));
                 copy_short(rem, &tmp[..rem.len()]);
+            } else {
+                for (j, o) in rem.iter_mut().enumerate() {
+                    *o = f(base + OFF[j]);
+                }
             }
         }
 
@@ -443,6 +440,6 @@ unsafe fn phong_rsqrt_sse(coef: [f32; 5], out: &mut [f32]) {
     // last pixels take the same operations as the others.
     let rem = chunks.into_remainder();
     if !rem.is_empty() {
-        rem.copy_from_slice(&four(x)[..rem.len()]);
+        copy_short(rem, &four(x)[..rem.len()]);
     }
 }

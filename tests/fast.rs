@@ -990,8 +990,8 @@ fn edge_stepped_setup_exact() {
                     + qi(2) * dx.clone() * c(&n1, &n2)
                     + c(&n2, &n2),
             ];
-            x = x + dx.clone();
-            y = y + qi(1);
+            x += dx.clone();
+            y += qi(1);
             assert_eq!(st, state(&x, &y), "rationals, case {t} at ({x}, {y})");
             e.step(&field, dx.to_f64());
             let direct = field.start(x.to_f64(), y.to_f64());

@@ -220,6 +220,8 @@ impl FastRows {
 
     /// Shades a row with `r` for direction `d` into `o` (of `T`, which is the
     /// type of the fields); `None` where `T` or the set-up has no kernel.
+    // A `Vec`, not a slice: `Any` downcasts only sized types.
+    #[allow(clippy::ptr_arg)]
     fn shade<T: 'static>(
         &self,
         d: usize,

@@ -23,42 +23,36 @@ use std::time::Duration;
 
 #[path = "common/triangle.rs"]
 mod triangle;
-use triangle::{inputs, pixels, shade, Ctx, METHODS, STAGES};
+use triangle::{inputs, pixels, shade, Ctx, Which, METHODS, STAGES};
 
 /// Leg lengths of the right triangle `(0, 0), (S, 0), (0, S)`.
 const SIZES: [u32; 3] = [8, 32, 128];
 
-fn related(c: &mut Criterion) {
-    triangle::smoke();
+/// Times every entry of `list` on the triangles with legs `sizes`, in group `group`.
+fn group(c: &mut Criterion, group: &str, list: &[(&str, Which)], sizes: &[u32], ctx: &mut Ctx) {
     let (normals, l) = inputs();
-    let mut ctx = Ctx::new();
-    let mut g = c.benchmark_group("triangle_f32");
+    let mut g = c.benchmark_group(group);
     g.warm_up_time(Duration::from_millis(300))
         .measurement_time(Duration::from_millis(900))
         .sample_size(30);
-    for s in SIZES {
+    for &s in sizes {
         g.throughput(Throughput::Elements(pixels(s)));
         let mut out = vec![0f32; s as usize + 1];
-        for (name, w) in METHODS {
+        for &(name, w) in list {
             g.bench_with_input(BenchmarkId::new(name, s), &s, |b, &s| {
-                b.iter(|| shade(w, s, black_box(&normals), black_box(&l), &mut ctx, &mut out))
+                b.iter(|| shade(w, s, black_box(&normals), black_box(&l), ctx, &mut out))
             });
         }
     }
     g.finish();
-    let mut g = c.benchmark_group("triangle_stages_f32");
-    g.warm_up_time(Duration::from_millis(300))
-        .measurement_time(Duration::from_millis(900))
-        .sample_size(30);
-    let s = 8;
-    g.throughput(Throughput::Elements(pixels(s)));
-    let mut out = vec![0f32; s as usize + 1];
-    for (name, w) in STAGES {
-        g.bench_with_input(BenchmarkId::new(name, s), &s, |b, &s| {
-            b.iter(|| shade(w, s, black_box(&normals), black_box(&l), &mut ctx, &mut out))
-        });
-    }
-    g.finish();
+}
+
+fn related(c: &mut Criterion) {
+    triangle::smoke();
+    let mut ctx = Ctx::new();
+    group(c, "triangle_f32", &METHODS, &SIZES, &mut ctx);
+    // The stages at the paper's polygon size.
+    group(c, "triangle_stages_f32", &STAGES, &[8], &mut ctx);
 }
 
 criterion_group!(benches, related);

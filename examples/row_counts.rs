@@ -13,8 +13,13 @@ use std::hint::black_box;
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
+    let names: Vec<&str> = triangle::METHODS
+        .iter()
+        .chain(&triangle::STAGES)
+        .map(|(n, _)| *n)
+        .collect();
     if args.get(1).map(String::as_str) == Some("--list") {
-        for (name, _) in triangle::METHODS.iter().chain(&triangle::STAGES) {
+        for name in names {
             println!("{name}");
         }
         return;
@@ -30,11 +35,6 @@ fn main() {
     };
     let which = triangle::which(method);
     if !(1..=4096).contains(&s) || !(which.is_some() || method == "none") {
-        let names: Vec<&str> = triangle::METHODS
-            .iter()
-            .chain(&triangle::STAGES)
-            .map(|(n, _)| *n)
-            .collect();
         eprintln!("{usage}: S in 1..=4096, METHOD one of {names:?} or none");
         std::process::exit(2);
     }

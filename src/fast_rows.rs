@@ -21,8 +21,9 @@
 //!
 //! [`Batch`] computes the [`RowSpan`]s of [`BATCH`] rows in one pass over fixed
 //! arrays, which LLVM vectorizes: the square roots and divisions of four (SSE) rows
-//! go in one instruction; [`Field::for_each_row`] feeds a polygon's rows through it. [`EdgeStepper`] instead steps `s`, `g`, `q` (and `h = U·n2`) from one
-//! row to the next by forward differences (`edge_stepped_setup_exact`), the paper's
+//! go in one instruction; [`Field::for_each_row`] feeds a polygon's rows through it.
+//! [`EdgeStepper`] instead steps `s`, `g`, `q` (and `h = U·n2`) from one row to the
+//! next by forward differences (`edge_stepped_setup_exact`), the paper's
 //! own device applied down the edge, and restarts from the field every
 //! [`EdgeStepper::RESTART`] rows so that rounding cannot pile up.
 //!
@@ -31,6 +32,10 @@
 //! normals, eqs. 2–3), [`RowSpan::phong_rsqrt`]; and, without any per-row square
 //! root, Phong of the field itself, [`RowStart::phong_field`] (the per-pixel normal
 //! normalized at every pixel, as per-pixel Phong does, in closed form).
+//!
+//! Like [`crate::fast::FastSpan`]'s, these kernels do not check their input (a
+//! non-finite field gives non-finite values; [`crate::Span`] is the checked path),
+//! and each fills `out[..=n]`, panicking if `out` holds fewer than `n + 1` values.
 //!
 //! Error bounds (derived in `docs/float.md`, "The row set-up") are in
 //! [`crate::tolerance::rows`]; tests against the exact run: `tests/fast.rs`.
@@ -272,17 +277,17 @@ macro_rules! rows_impl {
             /// Corrected Euler as Gouraud plus a parabola
             /// (`fast_rows_ce_from_span_invariants`):
             /// `p_a + i·(a1 + (n − i)·a2)`, `a1 = (p_b − p_a)/n`,
-            /// `a2 = (1 − c)(p_a + p_b)/(2n²)`; every pixel independent. Fills
-            /// `out[..=n]`.
+            /// `a2 = (1 − c)(p_a + p_b)/(2n²)`: on rows of [`SHORT`] pixels or more
+            /// in closed form, every pixel independent; on shorter rows by the
+            /// paper's recurrence. Fills `out[..=n]`.
             #[inline]
             pub fn corrected_euler(&self, out: &mut [$f]) {
                 let out = &mut out[..=self.n as usize];
-                let (p_a, a1, a2) = (self.p_a, self.a1, self.a2);
+                let (p_a, a1, a2, nf) = (self.p_a, self.a1, self.a2, self.n as $f);
                 if out.len() < SHORT {
                     // The paper's recurrence (eqs. 16–17), `p += t; t += ds` with
                     // `t_0 = a1 + (n − 1)·a2`, `ds = −2·a2`: two additions a pixel,
                     // cheaper than a vector pass on a row this short.
-                    let nf = self.n as $f;
                     let (mut p, mut t, ds) = (p_a, a1 + (nf - 1.0) * a2, -2.0 * a2);
                     for o in out.iter_mut() {
                         *o = p;
@@ -290,7 +295,6 @@ macro_rules! rows_impl {
                         t += ds;
                     }
                 } else {
-                    let nf = self.n as $f;
                     crate::fast::each_index(out, |x| p_a + x * (a1 + (nf - x) * a2));
                 }
             }
@@ -517,6 +521,28 @@ mod tests {
                 seen.push(r);
             });
             assert_eq!(seen, (0..count).collect::<Vec<_>>());
+        }
+    }
+
+    /// A degenerate or non-finite triangle has no field; a proper one takes its vertex
+    /// normals at its vertices.
+    #[test]
+    fn from_triangle_refuses_bad_triangles() {
+        let nrm = [[0.0, 0.0, 1.0], [0.6, 0.0, 0.8], [0.0, 0.6, 0.8]];
+        let l = [0.0, 0.0, 1.0];
+        for v in [
+            [[0.0, 0.0], [1.0, 1.0], [2.0, 2.0]],
+            [[0.0, 0.0], [0.0, 0.0], [0.0, 3.0]],
+            [[0.0, 0.0], [f64::NAN, 0.0], [0.0, 3.0]],
+            [[0.0, 0.0], [f64::INFINITY, 0.0], [0.0, 3.0]],
+        ] {
+            assert!(Field::<f64>::from_triangle(v, nrm, l).is_none(), "{v:?}");
+        }
+        let v = [[0.0, 0.0], [4.0, 0.0], [0.0, 2.0]];
+        let f = Field::<f64>::from_triangle(v, nrm, l).expect("a proper triangle");
+        for (p, n) in v.iter().zip(nrm) {
+            let u = f.at(p[0], p[1]);
+            assert!((0..3).all(|j| (u[j] - n[j]).abs() < 1e-15), "{p:?}: {u:?}");
         }
     }
 

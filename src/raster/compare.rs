@@ -109,7 +109,7 @@ struct RowsDir<F> {
 }
 
 macro_rules! rows_for {
-    ($f:ident, $shade:ident) => {
+    ($f:ident, $shade:ident, $rsqrt:ident) => {
         /// Shades one row with a row set-up of [`crate::fast_rows`] in this type;
         /// `None` where the set-up has no kernel in it.
         fn $shade(
@@ -140,7 +140,7 @@ macro_rules! rows_for {
                     st.start.span(f, n).corrected_euler(o)
                 }
                 RowSetup::BatchedPhongRsqrt | RowSetup::FieldPhongRsqrt => {
-                    return rsqrt_row(f, r, xf, yf, n, o)
+                    return $rsqrt(f, r, xf, yf, n, o)
                 }
             }
             Some(())
@@ -148,40 +148,22 @@ macro_rules! rows_for {
     };
 }
 
-rows_for!(f32, shade_rows_f32);
-rows_for!(f64, shade_rows_f64);
+rows_for!(f32, shade_rows_f32, rsqrt_f32);
+rows_for!(f64, shade_rows_f64, rsqrt_f64);
 
 /// The `rsqrt` row kernels, `f32` only.
-trait RsqrtRow: Sized {
-    fn rsqrt(f: &Field<Self>, r: RowSetup, x: Self, y: Self, n: u32, o: &mut [Self]) -> Option<()>;
-}
-
-impl RsqrtRow for f32 {
-    fn rsqrt(f: &Field<f32>, r: RowSetup, x: f32, y: f32, n: u32, o: &mut [f32]) -> Option<()> {
-        if r == RowSetup::FieldPhongRsqrt {
-            crate::fast_rows::phong_field_rsqrt(&f.start(x, y), f, n, o);
-        } else {
-            f.row(x, y, n).phong_rsqrt(o);
-        }
-        Some(())
+fn rsqrt_f32(f: &Field<f32>, r: RowSetup, x: f32, y: f32, n: u32, o: &mut [f32]) -> Option<()> {
+    if r == RowSetup::FieldPhongRsqrt {
+        crate::fast_rows::phong_field_rsqrt(&f.start(x, y), f, n, o);
+    } else {
+        f.row(x, y, n).phong_rsqrt(o);
     }
+    Some(())
 }
 
-impl RsqrtRow for f64 {
-    fn rsqrt(_: &Field<f64>, _: RowSetup, _: f64, _: f64, _: u32, _: &mut [f64]) -> Option<()> {
-        None
-    }
-}
-
-fn rsqrt_row<F: RsqrtRow>(
-    f: &Field<F>,
-    r: RowSetup,
-    x: F,
-    y: F,
-    n: u32,
-    o: &mut [F],
-) -> Option<()> {
-    F::rsqrt(f, r, x, y, n, o)
+/// `f64` has no `rsqrt` row kernel.
+fn rsqrt_f64(_: &Field<f64>, _: RowSetup, _: f64, _: f64, _: u32, _: &mut [f64]) -> Option<()> {
+    None
 }
 
 impl FastRows {

@@ -130,12 +130,13 @@ pub fn frame<T: Real + 'static>(mesh: &Mesh, scene: &Scene, f: u32) -> Precision
                     }
                     &one[c]
                 };
+                let has64 = sh.runs_in("f64");
                 for (j, val) in values.iter().enumerate() {
                     // The level of the value the precision holds, taken exactly (a
                     // quantizer in 8.8 cannot even form 255·v).
                     let l = level(&val.to_f64());
                     st.vs_phong[c].add(l, reference[j]);
-                    if sh.runs_in("f64") {
+                    if has64 {
                         st.vs_f64[c].add(l, level(&out64[c][j]));
                     }
                 }

@@ -7,6 +7,7 @@ From PhongApprox Require Import Span Duff Euler Derivative Symmetry Adaptive Ang
 From PhongApprox Require Import ClosedForms Angle.
 From PhongApprox Require Import FastSetup.
 From PhongApprox Require Import FloatModel Float Fixed.
+From PhongApprox Require Import FloatModelK Profiles.
 
 (** Span.v *)
 Check eq_2_p_is_linear.
@@ -195,3 +196,27 @@ Check fixed_point_gouraud_error.
 Print Assumptions fixed_point_gouraud_error.
 Check fixed_point_half_level_bits.
 Print Assumptions fixed_point_half_level_bits.
+
+(** Profiles.v *)
+Check profile_ieee_gouraud_binary32.
+Print Assumptions profile_ieee_gouraud_binary32.
+Check profile_ieee_gouraud_binary64.
+Print Assumptions profile_ieee_gouraud_binary64.
+Check profile_ieee_gouraud_binary64_large.
+Print Assumptions profile_ieee_gouraud_binary64_large.
+Check profile_shader_gouraud_binary32.
+Print Assumptions profile_shader_gouraud_binary32.
+Check profile_ieee_corrected_euler_binary32.
+Print Assumptions profile_ieee_corrected_euler_binary32.
+Check profile_ieee_corrected_euler_binary64.
+Print Assumptions profile_ieee_corrected_euler_binary64.
+Check profile_shader_corrected_euler_binary32.
+Print Assumptions profile_shader_corrected_euler_binary32.
+Check profile_ieee_corrected_euler_closed_binary32.
+Print Assumptions profile_ieee_corrected_euler_closed_binary32.
+Check profile_ieee_corrected_euler_closed_binary64.
+Print Assumptions profile_ieee_corrected_euler_closed_binary64.
+Check profile_ieee_corrected_euler_binary64_large.
+Print Assumptions profile_ieee_corrected_euler_binary64_large.
+Check profile_ieee_corrected_euler_closed_binary64_large.
+Print Assumptions profile_ieee_corrected_euler_closed_binary64_large.

@@ -42,12 +42,16 @@ pub enum SpanError {
         input: Input,
     },
     /// The vector is not of unit length within the scalar's tolerance.
-    #[error("{input}: not a unit vector (length² = {length_squared}, allowed |length² − 1| ≤ {tolerance}); normalize it first")]
+    #[error("{input}: not a unit vector (length² = {length_squared}, |length² − 1| = {deviation}, allowed ≤ {tolerance:e}); normalize it first")]
     NotUnit {
         /// The vector.
         input: Input,
-        /// Its squared length, rounded to `f64`.
-        length_squared: f64,
+        /// Its squared length in the span's number type, to 6 significant digits
+        /// (exact rationals print `1e-800` for `(0, 0, 1e-400)`, not `0`).
+        length_squared: String,
+        /// `|length² − 1|` in the span's number type, to 3 significant digits (so a
+        /// near-unit input shows how far it is, where its length² prints as 1).
+        deviation: String,
         /// The tolerance on `|length² − 1|`, rounded to `f64`.
         tolerance: f64,
     },
@@ -83,11 +87,12 @@ pub enum SpanError {
         /// The slice's length.
         got: usize,
     },
-    /// A method parameter is out of range.
-    /// A computed value is NaN or infinite: in floats, the interpolated normal's
-    /// squared length `q` rounded to zero or below at that pixel (edge normals nearly
-    /// opposite), so a method that divides by `√q` has no value there.
-    #[error("pixel {pixel} of n = {n}: the value is not finite (q = N·N rounds to zero there: the edge normals are nearly opposite)")]
+    /// A computed value is NaN or infinite: in floats, a divisor rounded to zero at
+    /// that pixel — the interpolated normal's squared length `q` (Phong, Duff,
+    /// symmetric Phong), `sin Ω` (spherical and binary interpolation) or a power of
+    /// `|N|` (Bishop–Weimer) — or a value overflowed, with edge normals nearly opposite.
+    /// Every method's values are checked ([`crate::Method::run`]).
+    #[error("pixel {pixel} of n = {n}: the value is not finite in this number type (a divisor such as q = N·N or sin Ω rounds to zero there: the edge normals are nearly opposite)")]
     NotFiniteValue {
         /// The pixel, `0..=n`.
         pixel: usize,

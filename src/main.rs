@@ -52,8 +52,132 @@ fn main() -> ExitCode {
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            eprintln!("phong-approx: {}", cli::one_line(&e.to_string()));
+            cli::report(&e.to_string());
             ExitCode::from(e.code())
+        }
+    }
+}
+
+/// Argument checks that need no process: each bad `span` request is parsed and run in
+/// this process and must fail with exit code 2 and a one-line message naming the
+/// problem. (`tests/cli.rs` and `tests/reliability.rs` keep the end-to-end runs that
+/// need a process: exit codes, stderr, pipes and files.)
+#[cfg(test)]
+mod tests {
+    use super::{cli, Cli, Command};
+    use clap::Parser;
+
+    /// A valid `span` request with `extra` replacing or adding arguments.
+    fn args(extra: &[(&str, &str)]) -> Vec<String> {
+        let mut args: Vec<(String, String)> = [
+            ("--method", "corrected-euler"),
+            ("--na", "0,3/5,4/5"),
+            ("--nb", "2/7,3/7,6/7"),
+            ("--light", "2/3,1/3,2/3"),
+            ("--steps", "4"),
+        ]
+        .iter()
+        .map(|(a, b)| (a.to_string(), b.to_string()))
+        .collect();
+        for (k, v) in extra {
+            match args.iter_mut().find(|(a, _)| a == k) {
+                Some(slot) => slot.1 = v.to_string(),
+                None => args.push((k.to_string(), v.to_string())),
+            }
+        }
+        let mut v = vec!["phong-approx".to_string(), "span".to_string()];
+        v.extend(args.iter().map(|(k, v)| format!("{k}={v}")));
+        v
+    }
+
+    /// The request fails before printing anything, with exit code 2 and one line
+    /// containing `needle`.
+    fn bad(extra: &[(&str, &str)], needle: &str) {
+        let message = match Cli::try_parse_from(args(extra)) {
+            Err(e) => {
+                assert_ne!(e.exit_code(), 0, "{extra:?}");
+                e.to_string()
+            }
+            Ok(Cli {
+                command: Command::Span(a),
+            }) => {
+                let e = cli::span::run(&a).expect_err("a bad request");
+                assert_eq!(e.code(), 2, "{extra:?}: {e}");
+                e.to_string()
+            }
+            Ok(other) => panic!("not a span request: {other:?}"),
+        };
+        let line = cli::one_line(&message);
+        assert!(!line.contains('\n'), "{extra:?}: not one line: {line}");
+        assert!(
+            line.contains(needle),
+            "{extra:?}: '{line}' lacks '{needle}'"
+        );
+    }
+
+    #[test]
+    fn bad_span_requests_are_refused_in_process() {
+        bad(
+            &[("--na", "0.6,x,0.8")],
+            "--na: component 2 'x' is not a number",
+        );
+        bad(
+            &[("--na", "0.6,0")],
+            "--na: expected three components x,y,z, got 2",
+        );
+        bad(
+            &[("--nb", "1,2,3,4")],
+            "--nb: expected three components x,y,z, got 4",
+        );
+        bad(&[("--light", "0,0,0")], "--light: the vector is zero");
+        bad(&[("--na", "1,1,1")], "--na: not a unit vector");
+        bad(&[("--na", "1,1,1")], "--normalize");
+        // Nb = −Na: Phong is undefined at the middle pixel of an even n, and says which.
+        bad(
+            &[("--nb", "0,-3/5,-4/5"), ("--method", "phong")],
+            "pixel 2 of n = 4: the interpolated normal is zero",
+        );
+        bad(&[("--steps", "0")], "--steps: n must be between 1");
+        bad(&[("--steps", "-3")], "--steps: '-3' is not a whole number");
+        bad(
+            &[("--steps", "abc")],
+            "--steps: 'abc' is not a whole number",
+        );
+        bad(
+            &[("--steps", "99999999999")],
+            "--steps: n must be between 1 and 16777216",
+        );
+        bad(
+            &[("--method", "bishop")],
+            "--method: unknown method 'bishop'",
+        );
+        bad(&[("--scalar", "f16")], "--scalar: unknown scalar 'f16'");
+        bad(&[("--format", "xml")], "--format: unknown format 'xml'");
+        bad(
+            &[("--na", "1/0,0,1")],
+            "--na: component 1 '1/0' has a zero denominator",
+        );
+        bad(
+            &[("--na", "nan,0,1")],
+            "--na: component 1 'nan' is not a number",
+        );
+        bad(&[("--na", "1e999999,0,1")], "exponent");
+        bad(&[("--light", "1e300,0,0"), ("--scalar", "f32")], "--light:");
+        bad(&[("--kd", "one")], "--kd:");
+        bad(&[("--kd", "-1")], "--kd:");
+        bad(
+            &[("--table-size", "256")],
+            "--table-size: only the angular method",
+        );
+        bad(
+            &[("--method", "angular"), ("--table-size", "1")],
+            "--table-size: the table size must be between 2",
+        );
+        bad(&[("--precision", "0")], "--precision:");
+        bad(&[("--digits", "0")], "--digits:");
+        bad(&[("--bogus", "1")], "--bogus");
+        if !cfg!(feature = "mpfr") {
+            bad(&[("--scalar", "mpfr")], "--features mpfr");
         }
     }
 }

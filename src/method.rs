@@ -254,11 +254,30 @@ impl Method {
     /// Shades `span` into `out` (`n + 1` values) with the prepared parameters; the
     /// adaptive method returns its decision (eqs. 23–24 with `prep.kd`).
     ///
+    /// Every method's values pass the same finiteness check here, before anything
+    /// returns them: a float run whose value overflows or divides by a `√q`, `sin Ω`
+    /// or `|N|` that rounded to zero (Phong's family, spherical and binary
+    /// interpolation, Bishop–Weimer on nearly opposite normals) is an error naming the
+    /// pixel, never an infinity or NaN.
+    ///
     /// # Errors
     /// [`SpanError::OutputLength`] for a wrong `out`; [`SpanError::Parameter`] for a
     /// bad table size; the method's own refusals ([`SpanError::Opposite`],
-    /// [`SpanError::ZeroNormal`], [`SpanError::NotFiniteValue`]).
+    /// [`SpanError::ZeroNormal`]); [`SpanError::NotFiniteValue`] for a value that is
+    /// not finite.
     pub fn run<T: Real>(
+        &self,
+        span: &Span<T>,
+        prep: &Prepared<T>,
+        out: &mut [T],
+    ) -> Result<Option<Decision<T>>, SpanError> {
+        let decision = self.dispatch(span, prep, out)?;
+        span.check_finite(out)?;
+        Ok(decision)
+    }
+
+    /// [`Method::run`] before the finiteness check.
+    fn dispatch<T: Real>(
         &self,
         span: &Span<T>,
         prep: &Prepared<T>,
@@ -278,17 +297,30 @@ impl Method {
             Method::Spherical => spherical::shade(span, out)?,
             Method::Binary => binary::shade(span, out)?,
             Method::BishopWeimer => bishop_weimer::shade(span, out)?,
-            m => return m.run_field(span, &prep.kd, out),
+            m => return m.dispatch_field(span, &prep.kd, out),
         }
         Ok(None)
     }
 
-    /// [`Method::run`] in a number type with field operations only.
+    /// [`Method::run`] in a number type with field operations only (with the same
+    /// finiteness check).
     ///
     /// # Errors
     /// As [`Method::run`]; [`SpanError::Parameter`] for a method that needs square
     /// roots or trigonometry.
     pub fn run_field<T: Scalar>(
+        &self,
+        span: &Span<T>,
+        kd: &T,
+        out: &mut [T],
+    ) -> Result<Option<Decision<T>>, SpanError> {
+        let decision = self.dispatch_field(span, kd, out)?;
+        span.check_finite(out)?;
+        Ok(decision)
+    }
+
+    /// [`Method::run_field`] before the finiteness check.
+    fn dispatch_field<T: Scalar>(
         &self,
         span: &Span<T>,
         kd: &T,

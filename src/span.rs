@@ -118,15 +118,18 @@ fn check_vector<T: Scalar>(v: &Vec3<T>, input: Input, tol: &T) -> Result<(), Spa
         } else {
             SpanError::NotUnit {
                 input,
-                length_squared: len2.to_f64(),
+                length_squared: len2.to_decimal(6),
+                deviation: "not finite".to_string(),
                 tolerance: tol.to_f64(),
             }
         });
     }
-    if (len2.clone() - T::one()).magnitude() > *tol {
+    let deviation = (len2.clone() - T::one()).magnitude();
+    if deviation > *tol {
         return Err(SpanError::NotUnit {
             input,
-            length_squared: len2.to_f64(),
+            length_squared: len2.to_decimal(6),
+            deviation: deviation.to_decimal(3),
             tolerance: tol.to_f64(),
         });
     }
@@ -347,12 +350,17 @@ impl<T: Real> Span<T> {
     /// # Errors
     /// As [`Span::new`], except that non-unit lengths are accepted.
     pub fn normalized(na: Vec3<T>, nb: Vec3<T>, l: Vec3<T>, n: u32) -> Result<Self, SpanError> {
-        let big = T::from_i64(1 << 20);
         for (v, input) in [(&na, Input::Na), (&nb, Input::Nb), (&l, Input::L)] {
-            // Only finiteness and non-zero length are checked here.
-            match check_vector(v, input, &big) {
-                Err(SpanError::NotUnit { .. }) | Ok(()) => {}
-                Err(e) => return Err(e),
+            // Only finiteness and a non-zero component are checked here: the squared
+            // length of (1e-170, 0, 1e-170) underflows in f64, but the vector is
+            // normalized after scaling by its largest component below.
+            for (component, c) in v.components().into_iter().enumerate() {
+                if !c.is_finite() {
+                    return Err(SpanError::NonFinite { input, component });
+                }
+            }
+            if v.components().iter().all(|c| c.is_zero()) {
+                return Err(SpanError::ZeroVector { input });
             }
         }
         // Exact types normalize through a 2^-256-accurate square root, so the result

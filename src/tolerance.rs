@@ -25,6 +25,7 @@
 //! The related span methods (spherical, binary, Bishop–Weimer): [`related`]
 //! (`docs/float.md` §16, tested in `tests/float_bounds_related.rs`).
 
+pub mod profile;
 pub mod related;
 pub mod rows;
 
@@ -47,6 +48,9 @@ mod coef {
     /// Corrected Euler, recurrence `p += t; t += ds` on the `Span` set-up: theorem
     /// `float_corrected_euler_binary32`/`_binary64` (proofs/Float.v).
     pub const CORRECTED_EULER: (f64, f64) = (2.2, 42.0);
+    /// Corrected Euler past `n = 4096` (binary64): theorem
+    /// `profile_ieee_corrected_euler_binary64_large` (proofs/Profiles.v).
+    pub const CORRECTED_EULER_LARGE: (f64, f64) = (2.2, 51.21);
     /// Plain Euler (eqs. 12–14) on the `Span` set-up: `docs/float.md`, Euler.
     pub const EULER: (f64, f64) = (5.6, 115.0);
     /// Duff's `p` recurrence (`p += A`).
@@ -211,23 +215,34 @@ fn edges(shape: Option<&Shape>) -> Option<(f64, f64)> {
     shape.map(|s| (s.p_a, s.p_b))
 }
 
-/// Gouraud along the span: `(1.001n + 10)u` (docs/float.md §5; proved,
-/// `float_gouraud_binary32`/`_binary64`).
+/// Gouraud along the span: `(1.001n + 10)u` (docs/float.md §5; proved for
+/// `n ≤ 4096`, `float_gouraud_binary32`/`_binary64`). Past 4096 (binary64 only) the
+/// crate's code is one member of the `ieee` profile's class, whose theorem
+/// `profile_ieee_gouraud_binary64_large` gives `(1.0006n + 11.001)u` up to `2^24`:
+/// below `(1.001n + 10)u` there, so this bound is proved over the whole range.
 pub fn gouraud(_: Method, n: u32, _: f64, _: Option<&Shape>, u: f64) -> Option<f64> {
     Some(linear(coef::GOURAUD, in_range(n, u)?) * u)
 }
 
-/// Corrected Euler: `(2.2n + 42)u` (docs/float.md §6; proved,
-/// `float_corrected_euler_binary32`/`_binary64`).
+/// Corrected Euler: `(2.2n + 42)u` for `n ≤ 4096` (docs/float.md §6; proved,
+/// `float_corrected_euler_binary32`/`_binary64`); past 4096 (binary64 only)
+/// `(2.2n + 51.21)u`, the `ieee` profile's theorem
+/// `profile_ieee_corrected_euler_binary64_large` (the crate's code is in its class),
+/// proved up to `2^24`.
 pub fn corrected_euler(_: Method, n: u32, _: f64, _: Option<&Shape>, u: f64) -> Option<f64> {
-    Some(linear(coef::CORRECTED_EULER, in_range(n, u)?) * u)
+    let nf = in_range(n, u)?;
+    let coef = if n > 4096 {
+        coef::CORRECTED_EULER_LARGE
+    } else {
+        coef::CORRECTED_EULER
+    };
+    Some(linear(coef, nf) * u)
 }
 
 /// The adaptive scheme: the larger of Gouraud's and corrected Euler's (docs/float.md
 /// §10).
-pub fn adaptive(_: Method, n: u32, _: f64, _: Option<&Shape>, u: f64) -> Option<f64> {
-    let nf = in_range(n, u)?;
-    Some(linear(coef::CORRECTED_EULER, nf).max(linear(coef::GOURAUD, nf)) * u)
+pub fn adaptive(m: Method, n: u32, q: f64, _: Option<&Shape>, u: f64) -> Option<f64> {
+    Some(corrected_euler(m, n, q, None, u)?.max(gouraud(m, n, q, None, u)?))
 }
 
 /// Euler: `(5.6n + 115)u` (docs/float.md §7).

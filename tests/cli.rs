@@ -265,7 +265,7 @@ fn every_method_and_float_scalar_is_within_its_bound_of_exact() {
         let exact = values(&exact_json);
         for scalar in ["f32", "f64"] {
             let j = run_json(&span_args(&name, "12", scalar));
-            let bound: f64 = j["error_bound"]
+            let bound: f64 = j["error_bound"]["reference"]
                 .as_str()
                 .unwrap_or_else(|| panic!("{name} {scalar}: no bound"))
                 .parse()
@@ -414,64 +414,21 @@ fn bad(extra: &[(&str, &str)], needle: &str) {
     assert!(out.stdout.is_empty());
 }
 
+/// End to end, as a process: exit code 2, one line on stderr, nothing on stdout. The
+/// full table of bad requests is checked in process (`src/main.rs`,
+/// `bad_span_requests_are_refused_in_process`); these need the process.
 #[test]
 fn bad_input_gets_one_line_and_exit_2() {
     bad(
         &[("--na", "0.6,x,0.8")],
         "--na: component 2 'x' is not a number",
     );
-    bad(
-        &[("--na", "0.6,0")],
-        "--na: expected three components x,y,z, got 2",
-    );
-    bad(
-        &[("--nb", "1,2,3,4")],
-        "--nb: expected three components x,y,z, got 4",
-    );
     bad(&[("--light", "0,0,0")], "--light: the vector is zero");
-    bad(&[("--na", "1,1,1")], "--na: not a unit vector");
-    bad(&[("--na", "1,1,1")], "--normalize");
-    // Nb = −Na: Phong is undefined at the middle pixel of an even n, and says which.
     bad(
         &[("--nb", "0,-3/5,-4/5"), ("--method", "phong")],
         "pixel 2 of n = 4: the interpolated normal is zero",
     );
-    bad(&[("--steps", "0")], "--steps: n must be between 1");
-    bad(&[("--steps", "-3")], "--steps: '-3' is not a whole number");
-    bad(
-        &[("--steps", "abc")],
-        "--steps: 'abc' is not a whole number",
-    );
-    bad(
-        &[("--method", "bishop")],
-        "--method: unknown method 'bishop'",
-    );
-    bad(&[("--scalar", "f16")], "--scalar: unknown scalar 'f16'");
-    bad(&[("--format", "xml")], "--format: unknown format 'xml'");
-    bad(
-        &[("--na", "1/0,0,1")],
-        "--na: component 1 '1/0' has a zero denominator",
-    );
-    bad(
-        &[("--na", "nan,0,1")],
-        "--na: component 1 'nan' is not a number",
-    );
-    bad(&[("--na", "1e999999,0,1")], "exponent");
-    bad(&[("--light", "1e300,0,0"), ("--scalar", "f32")], "--light:");
-    bad(&[("--kd", "one")], "--kd:");
-    bad(
-        &[("--table-size", "256")],
-        "--table-size: only the angular method",
-    );
-    bad(
-        &[("--method", "angular"), ("--table-size", "1")],
-        "--table-size: the table size must be between 2",
-    );
-    bad(&[("--precision", "0")], "--precision:");
     bad(&[("--bogus", "1")], "--bogus");
-    if !cfg!(feature = "mpfr") {
-        bad(&[("--scalar", "mpfr")], "--features mpfr");
-    }
     // Missing required arguments: clap's message, folded to one line.
     let out = bin().args(["span", "--method", "phong"]).output().unwrap();
     assert_eq!(out.status.code(), Some(2));

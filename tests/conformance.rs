@@ -5,7 +5,7 @@
 
 use phong_approx::conformance::check::{check, parse_results, Tolerance};
 use phong_approx::conformance::vectors::{
-    generate, inputs_csv, method_key, to_csv, Case, VectorFile, METHODS, SETS,
+    self as vectors, generate, inputs_csv, method_key, to_csv, Case, VectorFile, METHODS, SETS,
 };
 use phong_approx::parse::parse_rational;
 use phong_approx::{Method, Real, Scalar, Span, Vec3};
@@ -32,8 +32,82 @@ fn committed(set: &str) -> &'static VectorFile {
     &files[SETS.iter().position(|s| *s == set).unwrap()]
 }
 
+/// Default tier: the committed files' headers; a sample of the cases regenerated and
+/// compared value by value (every ninth `typical` case — n = 2, 3, 5, 8, 13, with and
+/// without specular —, every `edge` and `paper` case of at most 64 steps), on all
+/// cores; the CSV twins are what the committed JSON gives. Every case, and the files
+/// byte for byte, are the extensive tier's
+/// (`committed_vectors_are_what_the_code_generates_byte_for_byte`).
 #[test]
 fn committed_vectors_are_what_the_code_generates() {
+    let read = |set: &str, ext: &str| {
+        std::fs::read_to_string(root().join(format!("vectors/{set}{ext}"))).unwrap()
+    };
+    let mut sample = Vec::new();
+    let mut raws = Vec::new();
+    for set in SETS {
+        let text = read(set, ".json");
+        let raw: serde_json::Value = serde_json::from_str(&text).unwrap();
+        let stale = format!(
+            "vectors/{set}.json is stale: run `cargo run --release -- vectors --out vectors --force`"
+        );
+        // The header (every field but the cases).
+        let file = committed(set);
+        let specs = vectors::specs(set).unwrap();
+        let header = serde_json::to_value(vectors::file_of(set, Vec::new())).unwrap();
+        for (key, want) in header.as_object().unwrap() {
+            if key != "cases" && key != "number_of_cases" {
+                assert!(raw[key] == *want, "{stale}: {key}");
+            }
+        }
+        assert_eq!(raw["number_of_cases"], specs.len(), "{stale}");
+        for (k, spec) in specs.into_iter().enumerate() {
+            assert_eq!(spec.id, file.cases[k].id, "{stale}");
+            let keep = if set == "typical" {
+                k % 9 == 0
+            } else {
+                spec.n <= 64
+            };
+            if keep {
+                sample.push((raws.len(), k, spec, stale.clone()));
+            }
+        }
+        assert!(
+            read(set, ".csv") == to_csv(file),
+            "vectors/{set}.csv is stale"
+        );
+        assert!(
+            read(set, "-inputs.csv") == inputs_csv(file),
+            "vectors/{set}-inputs.csv is stale"
+        );
+        raws.push(raw);
+    }
+    assert!(sample.len() >= 15, "only {} cases sampled", sample.len());
+    // Largest first, spread over the cores.
+    sample.sort_by_key(|(_, _, spec, _)| std::cmp::Reverse(spec.n));
+    let threads = std::thread::available_parallelism().map_or(2, |n| n.get());
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    std::thread::scope(|scope| {
+        for _ in 0..threads {
+            scope.spawn(|| loop {
+                let j = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+                let Some((set, k, spec, stale)) = sample.get(j) else {
+                    break;
+                };
+                let id = spec.id.clone();
+                let case = spec.clone().compute().unwrap();
+                let got: serde_json::Value =
+                    serde_json::from_str(&serde_json::to_string(&case).unwrap()).unwrap();
+                assert!(got == raws[*set]["cases"][*k], "{stale}: case {id}");
+            });
+        }
+    });
+}
+
+/// Extensive tier: every file regenerated in full and compared byte for byte.
+#[test]
+#[ignore = "extensive tier"]
+fn committed_vectors_are_what_the_code_generates_byte_for_byte() {
     for set in SETS {
         let file = generate(set).unwrap();
         let json = serde_json::to_string_pretty(&file).unwrap() + "\n";
@@ -493,4 +567,59 @@ fn published_digests_are_those_of_the_committed_files() {
         sha256_hex(b"abc"),
         "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad"
     );
+}
+
+/// `check --profile`: the crate's own Gouraud and corrected-Euler results pass under
+/// every profile on every published set (the crate's code is one member of each
+/// class); a method with no proved bound under a profile fails naming why; the summary
+/// names the profile; `shader` needs `--precision f32`; a bad name is one line.
+#[test]
+fn check_profiles_judge_by_the_proved_bounds() {
+    for set in SETS {
+        let path = root()
+            .join(format!("vectors/{set}.json"))
+            .display()
+            .to_string();
+        let file = committed(set);
+        for m in [Method::Gouraud, Method::CorrectedEuler] {
+            let good = tmp(
+                &format!("{set}-{m}.csv"),
+                &own_results::<f32>(file, m, false),
+            );
+            for profile in ["reference", "ieee", "shader"] {
+                let (code, out, err) =
+                    run_check(&path, &good, &["--method", &m.name(), "--profile", profile]);
+                assert_eq!(code, 0, "{set} {m} {profile}: {out}{err}");
+                assert!(
+                    out.contains(&format!("the {profile} profile's bound")),
+                    "{out}"
+                );
+            }
+        }
+    }
+    let file = committed("typical");
+    let phong = tmp(
+        "phong-f32.csv",
+        &own_results::<f32>(file, Method::Phong, false),
+    );
+    let (code, out, _) = run_check(
+        &typical_path(),
+        &phong,
+        &["--method", "phong", "--profile", "ieee"],
+    );
+    assert_eq!(code, 1, "{out}");
+    assert!(out.contains("no proved ieee bound"), "{out}");
+    let (code, _, err) = run_check(
+        &typical_path(),
+        &phong,
+        &["--profile", "shader", "--precision", "f64"],
+    );
+    assert_eq!(code, 2);
+    assert!(
+        err.contains("--profile: the shader profile is for 32-bit floats"),
+        "{err}"
+    );
+    let (code, _, err) = run_check(&typical_path(), &phong, &["--profile", "gpu"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("unknown profile 'gpu'"), "{err}");
 }

@@ -116,10 +116,14 @@ const BINS: [(f64, f64); 5] = [
 ];
 
 /// Spans drawn per bin.
-const PER_BIN: usize = 120;
+/// Spans per bin: 40 in the default tier, 120 in the extensive tier (the published
+/// figures, docs/errata.md, are the extensive tier's).
+fn per_bin() -> usize {
+    tiered(40, 120)
+}
 
 /// The sample of the Mortensen measurements, drawn once: for every bin of [`BINS`],
-/// [`PER_BIN`] exact unit spans whose edge normals are `θ` apart, lit at one edge at
+/// [`per_bin`] exact unit spans whose edge normals are `θ` apart, lit at one edge at
 /// least (`max(p_a, p_b) > 0`), with `n` uniform in `2..=16`. Normals come from
 /// stereographic points at several scales (so that every bin fills), the light from a
 /// uniform stereographic point; a fixed 64-bit LCG seeds everything, so the sample is
@@ -137,7 +141,7 @@ fn mortensen_sample() -> &'static [(usize, Span<Q>)] {
         let mut out = Vec::new();
         let mut filled = [0usize; BINS.len()];
         for attempt in 0..200_000 {
-            if filled.iter().all(|&f| f == PER_BIN) {
+            if filled.iter().all(|&f| f == per_bin()) {
                 break;
             }
             // Scales 64, 16, 4 and 1 give mostly θ below 5°, 5–20°, 20–60° and anything.
@@ -166,13 +170,13 @@ fn mortensen_sample() -> &'static [(usize, Span<Q>)] {
             let Some(bin) = BINS.iter().position(|&(lo, hi)| lo <= theta && theta < hi) else {
                 continue;
             };
-            if filled[bin] < PER_BIN {
+            if filled[bin] < per_bin() {
                 filled[bin] += 1;
                 out.push((bin, s));
             }
         }
         assert!(
-            filled.iter().all(|&f| f == PER_BIN),
+            filled.iter().all(|&f| f == per_bin()),
             "the sampler did not fill every bin: {filled:?}"
         );
         out

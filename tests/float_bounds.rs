@@ -2,12 +2,14 @@
 //! rounded to the float type) stays within the derived bound of
 //! `phong_approx::tolerance` (`docs/float.md`) of the exact run on the exact inputs.
 //!
-//! Inputs: the enumerated edge cases, 200 random spans from a fixed seed (n from 1 to
-//! 4096), the targeted cases where rounding errors pile up (`targeted_cases`, among
-//! them the span that broke the old measured bound) and a proptest search in those
-//! regions. A failure prints the method, type, pixel, the exact inputs, both values
-//! and the bound. The tests named `float_*_binary32/64` check the theorems of
-//! `proofs/Float.v` of the same names.
+//! Inputs: the enumerated edge cases, random spans from a fixed seed (100 with n from 1
+//! to 1000 and two of n = 4096 in the default tier; 200 and six in the extensive tier),
+//! the targeted cases where rounding errors pile up (`targeted_cases`, among them the
+//! span that broke the old measured bound) and a proptest search in those regions. A
+//! failure prints the method, type, pixel, the exact inputs, both values and the bound.
+//! The tests named `float_*_binary32/64` check the theorems of `proofs/Float.v` of the
+//! same names. The exact run of each (method, case) is computed once and shared by the
+//! `f32` and `f64` tests (`exact_values`). `bound_ratio_report` is in the extensive tier.
 
 mod common;
 
@@ -17,22 +19,20 @@ use phong_approx::adaptive;
 use phong_approx::tolerance::{bound, span_bound, Shape};
 use phong_approx::{Method, Real, Scalar, Span};
 use proptest::strategy::{Strategy, ValueTree};
-use proptest::test_runner::{
-    Config as ProptestConfig, FileFailurePersistence, TestCaseError, TestRunner,
-};
+use proptest::test_runner::{TestCaseError, TestRunner};
 
 /// Edge cases plus random spans at several lengths, from a fixed seed.
 fn cases() -> Vec<Case> {
     let mut runner = TestRunner::deterministic();
     let mut v = edge_cases();
     let lens = [1u32, 2, 3, 7, 16, 64, 255, 1000];
-    for j in 0..200 {
+    for j in 0..tiered(100, 200) {
         let mut c = arb_case().new_tree(&mut runner).unwrap().current();
         c.n = lens[j % lens.len()];
         v.push(c);
     }
     // A few long random spans (the rational reference is slower there).
-    for _ in 0..6 {
+    for _ in 0..tiered(2, 6) {
         let mut c = arb_case().new_tree(&mut runner).unwrap().current();
         c.n = 4096;
         v.push(c);
@@ -70,9 +70,9 @@ fn check_case<T: Real>(method: Method, c: &Case) -> Result<Option<(f64, f64)>, S
         },
         m => m,
     };
-    let want = want_method.values(&exact_span).unwrap();
+    let want = exact_values(want_method, c, &exact_span);
     let mut worst: f64 = 0.0;
-    for (i, (g, w)) in got.iter().zip(&want).enumerate() {
+    for (i, (g, w)) in got.iter().zip(want.iter()).enumerate() {
         let e = abs_err(g, w);
         worst = worst.max(e);
         if e > b {
@@ -169,16 +169,11 @@ fn reproducer_of_the_false_bound_is_within_the_derived_one() {
 }
 
 /// A search for spans that break a bound: random spans in the regions where the
-/// errors pile up (`arb_targeted`), every method, `f32` and `f64`.
+/// errors pile up (`arb_targeted`), every method, `f32` and `f64`. In the default tier
+/// both formats search the same cases (a fixed seed, so the exact runs are shared); in
+/// the extensive tier each draws its own, four times as many.
 fn search<T: Real>() {
-    let config = ProptestConfig {
-        cases: 24,
-        failure_persistence: Some(Box::new(FileFailurePersistence::Direct(
-            "proptest-regressions/float_bounds.txt",
-        ))),
-        ..ProptestConfig::default()
-    };
-    let mut runner = TestRunner::new(config);
+    let mut runner = runner(24, "proptest-regressions/float_bounds.txt");
     let result = runner.run(&arb_targeted(), |c| {
         for m in Method::ALL {
             check_case::<T>(m, &c).map_err(TestCaseError::fail)?;
@@ -202,10 +197,10 @@ fn bound_search_f64() {
 
 /// The ratio (derived bound) / (worst error found) per method and format, over the
 /// edge, random and targeted cases and a longer search: the table of
-/// `docs/float.md`. Run with `cargo test --release --test float_bounds -- --ignored
-/// --nocapture`.
+/// `docs/float.md`. Extensive tier: run with `PHONG_APPROX_TIER=extensive cargo test
+/// --release --test float_bounds -- --ignored --nocapture`.
 #[test]
-#[ignore]
+#[ignore = "extensive tier"]
 fn bound_ratio_report() {
     let mut all = cases();
     all.extend(targeted_cases());

@@ -25,9 +25,7 @@ use phong_approx::tolerance::{related, Shape};
 use phong_approx::{BigRational, Real, Scalar, Span};
 use proptest::prelude::*;
 use proptest::strategy::ValueTree;
-use proptest::test_runner::{
-    Config as ProptestConfig, FileFailurePersistence, TestCaseError, TestRunner,
-};
+use proptest::test_runner::{TestCaseError, TestRunner};
 
 /// The three methods.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -212,7 +210,7 @@ fn cases() -> Vec<Case> {
     let mut runner = TestRunner::deterministic();
     let mut v = edge_cases();
     let lens = [1u32, 2, 3, 7, 16, 64, 255];
-    for j in 0..28 {
+    for j in 0..tiered(28, 112) {
         let mut c = arb_case().new_tree(&mut runner).unwrap().current();
         c.n = lens[j % lens.len()];
         v.push(c);
@@ -299,14 +297,7 @@ fn arb_hard() -> impl Strategy<Value = Case> {
 /// A search for spans that break a bound, every method, `f32` and `f64`.
 #[test]
 fn related_bound_search() {
-    let config = ProptestConfig {
-        cases: 12,
-        failure_persistence: Some(Box::new(FileFailurePersistence::Direct(
-            "proptest-regressions/float_bounds_related.txt",
-        ))),
-        ..ProptestConfig::default()
-    };
-    let mut runner = TestRunner::new(config);
+    let mut runner = runner(12, "proptest-regressions/float_bounds_related.txt");
     let result = runner.run(&arb_hard(), |c| {
         for m in ALL {
             check_case(m, &c).map_err(TestCaseError::fail)?;
@@ -364,7 +355,7 @@ fn binary_truncated_run_is_the_exact_run() {
 /// cases and 200 more spans of `arb_hard`: the rows of `docs/float.md` §13. Run with
 /// `cargo test --release --test float_bounds_related -- --ignored --nocapture`.
 #[test]
-#[ignore]
+#[ignore = "extensive tier"]
 fn related_bound_ratio_report() {
     let mut all = cases();
     let mut runner = TestRunner::deterministic();

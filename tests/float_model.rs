@@ -14,83 +14,13 @@
 mod common;
 
 use common::*;
-use num_bigint::BigInt;
-use num_traits::{One, Signed, Zero};
+use num_traits::Zero;
 use phong_approx::{BigRational, Method, Real, Scalar, Span, Vec3};
 use proptest::prelude::*;
 use proptest::strategy::ValueTree;
-use proptest::test_runner::{FileFailurePersistence, TestRunner};
+use proptest::test_runner::TestRunner;
 
-/// A binary floating-point format.
-#[derive(Clone, Copy, Debug)]
-struct Format {
-    /// Significand bits, the hidden one included (24, 53).
-    prec: u32,
-    /// Exponent of the smallest subnormal, `2^emin` (−149, −1074).
-    emin: i64,
-    /// Largest finite values are below `2^emax` (128, 1024).
-    emax: i64,
-}
-
-const BINARY32: Format = Format {
-    prec: 24,
-    emin: -149,
-    emax: 128,
-};
-const BINARY64: Format = Format {
-    prec: 53,
-    emin: -1074,
-    emax: 1024,
-};
-
-fn pow2(e: i64) -> BigRational {
-    let one = BigInt::one();
-    if e >= 0 {
-        BigRational::from_integer(one << (e as usize))
-    } else {
-        BigRational::new(one.clone(), one << ((-e) as usize))
-    }
-}
-
-/// `⌊log2 |x|⌋` for `x ≠ 0`.
-fn ilog2(x: &BigRational) -> i64 {
-    let (n, d) = (x.numer().abs(), x.denom().abs());
-    let mut e = n.bits() as i64 - d.bits() as i64;
-    // 2^e ≤ |x| < 2^(e+1), adjusted from the bit-length estimate (off by one at most).
-    let a = x.abs();
-    if a < pow2(e) {
-        e -= 1;
-    }
-    if a >= pow2(e + 1) {
-        e += 1;
-    }
-    e
-}
-
-/// `x` rounded to the nearest number of `f`, ties to even; panics on overflow (the
-/// bounded inputs here never overflow).
-fn round(x: &BigRational, f: Format) -> BigRational {
-    if x.is_zero() {
-        return x.clone();
-    }
-    let quantum = (ilog2(x) - i64::from(f.prec) + 1).max(f.emin);
-    let scaled = x.abs() / pow2(quantum);
-    let floor = scaled.floor();
-    let frac = &scaled - &floor;
-    let half = BigRational::new(1.into(), 2.into());
-    let mut m = floor.to_integer();
-    let odd = (&m % BigInt::from(2)) == BigInt::one();
-    if frac > half || (frac == half && odd) {
-        m += 1;
-    }
-    let r = BigRational::from_integer(m) * pow2(quantum);
-    assert!(r < pow2(f.emax), "overflow in the model: {x}");
-    if x.is_negative() {
-        -r
-    } else {
-        r
-    }
-}
+use common::emu::{pow2, round, Format, BINARY32, BINARY64};
 
 /// The model's arithmetic: exact operation, then one rounding.
 struct Model(Format);
@@ -274,14 +204,7 @@ fn check_cases<T: Real>(f: Format, cases: &[Case]) {
 }
 
 fn search<T: Real>(f: Format, strategy: impl Strategy<Value = Case>, cases: u32) {
-    let config = ProptestConfig {
-        cases,
-        failure_persistence: Some(Box::new(FileFailurePersistence::Direct(
-            "proptest-regressions/float_model.txt",
-        ))),
-        ..ProptestConfig::default()
-    };
-    let mut runner = TestRunner::new(config);
+    let mut runner = runner(cases, "proptest-regressions/float_model.txt");
     if let Err(e) = runner.run(&strategy, |c| {
         compare::<T>(f, &c).map_err(|e| TestCaseError::fail(format!("{e}\ninputs: {c:?}")))
     }) {

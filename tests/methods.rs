@@ -225,3 +225,75 @@ fn every_method_matches_its_closed_form_exactly() {
         Ok(())
     });
 }
+
+/// Issue item "no infinity with exit 0": on nearly opposite normals every method's
+/// float values are finite or the run is [`SpanError::NotFiniteValue`] (one check in
+/// `Method::run` for every method, the related ones included) — never an infinity or
+/// NaN handed back. The two spans are the reproductions that printed `inf` (binary, an
+/// exact unit `N_b` 179.99° from `N_a`) and NaN (Bishop–Weimer, normalized).
+#[test]
+fn every_method_returns_finite_values_or_a_typed_error() {
+    use phong_approx::method::Prepared;
+    use phong_approx::parse::parse_vec3;
+    use phong_approx::{Real, Scalar};
+    fn all_methods<T: Real>(na: &str, nb: &str, l: &str, n: u32, normalize: bool) -> usize {
+        let v = |s: &str| parse_vec3(s).unwrap().cast::<T>().unwrap();
+        let span = if normalize {
+            Span::normalized(v(na), v(nb), v(l), n)
+        } else {
+            Span::new(v(na), v(nb), v(l), n)
+        }
+        .unwrap();
+        let mut refused = 0;
+        for m in Method::ALL {
+            let mut out = vec![T::zero(); span.len()];
+            let prep = Prepared::new(m, T::one()).unwrap();
+            match m.run(&span, &prep, &mut out) {
+                Ok(_) => assert!(
+                    out.iter().all(Scalar::is_finite),
+                    "{m} in {}: a value is not finite",
+                    T::NAME
+                ),
+                Err(SpanError::NotFiniteValue { pixel, n: sn }) => {
+                    assert!(pixel <= sn as usize);
+                    refused += 1;
+                }
+                Err(SpanError::Opposite | SpanError::ZeroNormal { .. }) => {}
+                Err(e) => panic!("{m} in {}: {e}", T::NAME),
+            }
+        }
+        refused
+    }
+    let far = "200000/10000000001,0,-9999999999/10000000001";
+    for normalize in [false, true] {
+        assert!(all_methods::<f32>("0,0,1", far, "0.6,0,0.8", 2, normalize) > 0);
+        all_methods::<f64>("0,0,1", far, "0.6,0,0.8", 2, normalize);
+    }
+    assert!(all_methods::<f32>("0,0,1", "1e-10,0,-1", "0.6,0,0.8", 2, true) > 0);
+    all_methods::<f64>("0,0,1", "1e-10,0,-1", "0.6,0,0.8", 2, true);
+}
+
+/// Item 10 of the third reliability round: `Span::normalized` accepts any finite
+/// non-zero vector in floats too — its squared length may underflow (1e-170 in f64,
+/// 1e-23 in f32) or overflow, since it scales by the largest component first.
+#[test]
+fn normalize_takes_tiny_and_huge_float_vectors() {
+    let up64 = Vec3::new(0.0f64, 0.0, 1.0);
+    for v in [
+        Vec3::new(1e-170, 0.0, 1e-170),
+        Vec3::new(1e-300, 0.0, 1e-300),
+        Vec3::new(1e300, 0.0, 1e300),
+    ] {
+        let s = Span::normalized(v, up64.clone(), up64.clone(), 2).unwrap();
+        assert!((s.p_a - std::f64::consts::FRAC_1_SQRT_2).abs() < 1e-15);
+    }
+    let up32 = v32(0.0, 0.0, 1.0);
+    for v in [v32(1e-23, 0.0, 1e-23), v32(1e-40, 0.0, 1e-40)] {
+        let s = Span::normalized(v, up32.clone(), up32.clone(), 2).unwrap();
+        assert!((s.p_a - std::f32::consts::FRAC_1_SQRT_2).abs() < 1e-6);
+    }
+    assert_eq!(
+        Span::normalized(v32(0.0, 0.0, 0.0), up32.clone(), up32, 2).unwrap_err(),
+        SpanError::ZeroVector { input: Input::Na }
+    );
+}

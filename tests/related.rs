@@ -50,7 +50,7 @@ fn phong_value(span: &Span<Q>, i: u32) -> Q {
 
 fn config(cases: u32) -> ProptestConfig {
     ProptestConfig {
-        cases,
+        cases: common::proptest_cases(cases),
         failure_persistence: None,
         ..ProptestConfig::default()
     }

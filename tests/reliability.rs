@@ -247,6 +247,55 @@ fn d3_non_finite_values_are_errors_naming_the_pixel() {
         "f32",
     ]);
     refused(&o, "not finite");
+    // Binary and Bishop–Weimer printed inf / NaN with exit 0 on these (exact unit
+    // inputs, no --normalize; and a normalized tilt of 1e-10).
+    for method in ["binary", "bishop-weimer", "spherical"] {
+        let o = run(&[
+            "span",
+            "--method",
+            method,
+            "--na",
+            "0,0,1",
+            "--nb=200000/10000000001,0,-9999999999/10000000001",
+            "--light",
+            "0.6,0,0.8",
+            "--steps",
+            "2",
+            "--scalar",
+            "f32",
+            "--format",
+            "table",
+        ]);
+        let out = String::from_utf8_lossy(&o.stdout);
+        assert!(
+            code(&o) == 2 || !(out.contains("inf") || out.contains("NaN")),
+            "{method}: {out}"
+        );
+        if code(&o) == 2 {
+            refused(&o, "not finite");
+        }
+        let o = run(&[
+            "span",
+            "--method",
+            method,
+            "--na",
+            "0,0,1",
+            "--nb",
+            "1e-10,0,-1",
+            "--normalize",
+            "--light",
+            "0.6,0,0.8",
+            "--steps",
+            "2",
+            "--scalar",
+            "f32",
+        ]);
+        let out = String::from_utf8_lossy(&o.stdout);
+        assert!(
+            code(&o) == 2 || !(out.contains("inf") || out.contains("NaN")),
+            "{method}: {out}"
+        );
+    }
 }
 
 #[test]
@@ -493,7 +542,15 @@ fn d7_outputs_never_replace_a_users_file_or_follow_a_link() {
     std::fs::create_dir_all(&out).unwrap();
     std::fs::write(out.join("tables.md"), "mine").unwrap();
     std::fs::write(out.join(".write-test"), "mine too").unwrap();
-    let o = run(&["reproduce", "--frames", "1", "--out", out.to_str().unwrap()]);
+    let o = run(&[
+        "reproduce",
+        "--frames",
+        "1",
+        "--size",
+        "80x60",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
     refused(&o, "was not written by phong-approx");
     assert_eq!(
         std::fs::read_to_string(out.join("tables.md")).unwrap(),
@@ -508,12 +565,22 @@ fn d7_outputs_never_replace_a_users_file_or_follow_a_link() {
         "reproduce",
         "--frames",
         "1",
+        "--size",
+        "80x60",
         "--out",
         out.to_str().unwrap(),
         "--force",
     ]);
     assert_eq!(code(&o), 0, "{}", stderr(&o));
-    let o = run(&["reproduce", "--frames", "1", "--out", out.to_str().unwrap()]);
+    let o = run(&[
+        "reproduce",
+        "--frames",
+        "1",
+        "--size",
+        "80x60",
+        "--out",
+        out.to_str().unwrap(),
+    ]);
     assert_eq!(code(&o), 0, "{}", stderr(&o));
     // A symbolic link among the outputs is not written through.
     let target = d.join("precious.csv");
@@ -524,6 +591,8 @@ fn d7_outputs_never_replace_a_users_file_or_follow_a_link() {
         "reproduce",
         "--frames",
         "1",
+        "--size",
+        "80x60",
         "--out",
         out.to_str().unwrap(),
         "--force",
@@ -718,7 +787,7 @@ fn d13_pictures_follow_size() {
         "--frames",
         "1",
         "--size",
-        "500x300",
+        "150x100",
         "--out",
         d.to_str().unwrap(),
     ]);
@@ -726,6 +795,164 @@ fn d13_pictures_follow_size() {
     // Scaled by a whole factor to at least 400 pixels on the shorter side.
     assert_eq!(
         png_size(&d.join("fig4_torus800_corrected_euler.png")),
-        (1000, 600)
+        (600, 400)
     );
+}
+
+// ---------------------------------------------------------------------------------
+// Third round (the hostile-input run): each test reproduces one finding.
+
+/// Item 8: writing to a standard error that cannot take it never panics (exit 2, not
+/// 101); `--help` and `--version` to a full disk exit 2.
+#[test]
+fn r8_stderr_and_stdout_failures_keep_the_exit_code_contract() {
+    let full = || {
+        std::fs::OpenOptions::new()
+            .write(true)
+            .open("/dev/full")
+            .unwrap()
+    };
+    // A bad request whose one line cannot be written.
+    let o = bin()
+        .args(["span", "--method", "nope"])
+        .stderr(full())
+        .output()
+        .unwrap();
+    assert_eq!(code(&o), 2);
+    let o = bin()
+        .args(["span", "--bogus"])
+        .stderr(full())
+        .output()
+        .unwrap();
+    assert_eq!(code(&o), 2);
+    for args in [&["span", "--help"][..], &["--version"], &["--help"]] {
+        let o = bin().args(args).stdout(full()).output().unwrap();
+        assert_eq!(code(&o), 2, "{args:?}");
+        assert!(stderr(&o).contains("standard output"), "{args:?}");
+        // And to a pipe that stays open, exit 0.
+        let o = run(args);
+        assert_eq!(code(&o), 0, "{args:?}");
+    }
+    // stderr is a closed pipe.
+    let mut child = bin()
+        .args(["span", "--method", "nope"])
+        .stderr(Stdio::piped())
+        .spawn()
+        .unwrap();
+    drop(child.stderr.take());
+    assert_eq!(child.wait().unwrap().code(), Some(2));
+}
+
+/// Item 13: the not-a-unit message shows the squared length in the number type (not
+/// rounded to a float) and how far it is from 1; a bare `phong-approx` is one line.
+#[test]
+fn r13_not_unit_message_and_bare_command() {
+    let o = run(&[
+        "span",
+        "--method",
+        "phong",
+        "--na",
+        "0,0,1e-400",
+        "--nb",
+        "0,0,1",
+        "--light",
+        "0,0,1",
+        "--steps",
+        "2",
+        "--scalar",
+        "exact",
+    ]);
+    refused(
+        &o,
+        "length² = 1.00000e-800, |length² − 1| = 1.00, exact arithmetic allows only exactly 1",
+    );
+    let near = format!("0,0,1.{}1", "0".repeat(380));
+    let o = run(&[
+        "span", "--method", "phong", "--na", &near, "--nb", "0,0,1", "--light", "0,0,1", "--steps",
+        "2", "--scalar", "exact",
+    ]);
+    refused(&o, "(length² = 1.00000, |length² − 1| = 2.00e-381,");
+    let o = run(&[]);
+    refused(&o, "a subcommand is needed");
+}
+
+/// A quick `reproduce` into `out` (small images, one frame).
+fn quick_reproduce(out: &Path, extra: &[&str]) -> Output {
+    let mut args = vec![
+        "reproduce",
+        "--frames",
+        "1",
+        "--size",
+        "80x60",
+        "--out",
+        out.to_str().unwrap(),
+    ];
+    args.extend_from_slice(extra);
+    run(&args)
+}
+
+/// Item 5: an `--out` folder that is a symbolic link is refused (nothing is written
+/// into the folder it points to), by `reproduce`, `compare` and `vectors`.
+#[test]
+fn r5_an_out_folder_that_is_a_symlink_is_refused() {
+    let d = scratch("r5");
+    let real = d.join("real");
+    std::fs::create_dir_all(&real).unwrap();
+    let link = d.join("link");
+    std::os::unix::fs::symlink(&real, &link).unwrap();
+    let o = quick_reproduce(&link, &[]);
+    refused(&o, "symbolic link");
+    let o = run(&[
+        "compare",
+        "--frames",
+        "1",
+        "--size",
+        "80x60",
+        "--out",
+        link.to_str().unwrap(),
+    ]);
+    refused(&o, "symbolic link");
+    let o = run(&["vectors", "--out", link.to_str().unwrap()]);
+    refused(&o, "symbolic link");
+    assert_eq!(std::fs::read_dir(&real).unwrap().count(), 0);
+}
+
+/// Item 7: a commit that was killed during its renames (its journal left behind) is
+/// completed by the next run in the folder, stale temporary files of dead runs are
+/// removed, and a manifest that is a folder is refused before any output is written.
+#[test]
+fn r7_interrupted_commits_are_completed_and_stale_temporaries_removed() {
+    let d = scratch("r7");
+    let out = d.join("out");
+    std::fs::create_dir_all(&out).unwrap();
+    // As a run killed between two renames leaves it: one temporary not yet renamed,
+    // listed in the journal. (PID 4294967295 is no process.)
+    std::fs::write(out.join(".partial-4294967295-1.extra.txt"), "NEW").unwrap();
+    std::fs::write(
+        out.join(".phong-approx-commit"),
+        ".partial-4294967295-1.extra.txt\textra.txt\n",
+    )
+    .unwrap();
+    std::fs::write(out.join(".partial-4294967295-2.table1.csv"), "stale").unwrap();
+    let o = quick_reproduce(&out, &[]);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    assert_eq!(
+        std::fs::read_to_string(out.join("extra.txt")).unwrap(),
+        "NEW"
+    );
+    assert!(!out.join(".phong-approx-commit").exists());
+    let manifest = std::fs::read_to_string(out.join(".phong-approx-written")).unwrap();
+    assert!(manifest.lines().any(|l| l == "extra.txt"), "{manifest}");
+    let partials: Vec<_> = std::fs::read_dir(&out)
+        .unwrap()
+        .flatten()
+        .filter(|e| e.file_name().to_string_lossy().starts_with(".partial-"))
+        .collect();
+    assert!(partials.is_empty(), "{partials:?}");
+    // A manifest that is a folder: refused before anything is written.
+    let out2 = d.join("out2");
+    std::fs::create_dir_all(out2.join(".phong-approx-written")).unwrap();
+    let o = quick_reproduce(&out2, &[]);
+    refused(&o, "not a regular file");
+    assert_eq!(std::fs::read_dir(&out2).unwrap().count(), 1);
 }

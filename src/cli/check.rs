@@ -8,6 +8,7 @@ use phong_approx::conformance::check::{
 use phong_approx::conformance::integrity::{published_set, sha256_hex, validate};
 use phong_approx::conformance::shown;
 use phong_approx::conformance::vectors::{method_key, VectorFile};
+use phong_approx::tolerance::profile::Profile;
 use phong_approx::Method;
 
 /// Arguments of `phong-approx check`.
@@ -30,6 +31,13 @@ pub struct CheckArgs {
     /// The implementation's arithmetic, for the default tolerance: f32 or f64.
     #[arg(long, value_name = "TYPE", default_value = "f32")]
     pub precision: String,
+    /// The arithmetic profile the results are judged by (docs/float.md §18):
+    /// reference (this crate's operation order, round to nearest, no FMA: the bounds
+    /// of every method), ieee (any order, FMA, reciprocals; proved for Gouraud and
+    /// corrected Euler) or shader (Vulkan/WGSL 32-bit rules: truncation, 2.5-ulp
+    /// division, flushed denormals; proved for Gouraud and corrected Euler in f32).
+    #[arg(long, value_name = "NAME", default_value = "reference")]
+    pub profile: String,
     /// Check the specular expectations (max(0, method(N·H))^s) instead of diffuse.
     #[arg(long)]
     pub specular: bool,
@@ -62,9 +70,19 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
             ))
         }
     };
+    let profile: Profile = a
+        .profile
+        .parse()
+        .map_err(|e| CliError::arg("--profile", e))?;
+    if profile == Profile::Shader && a.precision != "f32" {
+        return Err(CliError::arg(
+            "--profile",
+            "the shader profile is for 32-bit floats: pass --precision f32",
+        ));
+    }
     let tol = match &a.tolerance {
         Some(t) => Tolerance::parse(t).map_err(|e| CliError::arg("--tolerance", e))?,
-        None => Tolerance::Default { u },
+        None => Tolerance::Profile { profile, u },
     };
     let vtext = read_capped(&a.vectors, "--vectors", MAX_RESULTS_BYTES)?;
     let digest = sha256_hex(vtext.as_bytes());
@@ -111,6 +129,12 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
     let reports = check(&vectors, &results, method, &key, tol, a.specular)
         .map_err(|e| CliError::arg("--method", e))?;
     print_report(&vectors, &reports, &key, a.specular)?;
+    if a.tolerance.is_none() {
+        outln!(
+            "tolerance: the {profile} profile's bound for {} (docs/float.md §18)",
+            a.precision
+        )?;
+    }
     let failed: Vec<&CaseReport> = reports.iter().filter(|r| !r.pass).collect();
     if failed.is_empty() {
         Ok(())

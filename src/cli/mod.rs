@@ -110,20 +110,39 @@ pub fn parse_whole(arg: &str, s: &str, lo: u32, hi: u32, what: &str) -> Result<u
     Ok(v as u32)
 }
 
-/// Prints clap's error as one line (help and version as clap prints them) and exits
-/// with 2 for errors, 0 for help/version.
+/// Writes one line `phong-approx: MESSAGE` to standard error. Never panics: when
+/// standard error itself cannot be written (`2>/dev/full`, a closed pipe) there is no
+/// one left to tell, and the exit code says it.
+pub fn report(message: &str) {
+    let _ = writeln!(
+        std::io::stderr().lock(),
+        "phong-approx: {}",
+        one_line(message)
+    );
+}
+
+/// Prints clap's error as one line and exits with 2; help and version go to standard
+/// output as clap prints them and exit 0, or 2 when standard output cannot take them
+/// (a full disk). A bare `phong-approx` (no subcommand) is one line too.
 pub fn clap_error(e: clap::Error) -> ExitCode {
     use clap::error::ErrorKind;
     match e.kind() {
-        ErrorKind::DisplayHelp
-        | ErrorKind::DisplayVersion
-        | ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
-            let _ = e.print();
-            if e.kind() == ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand {
-                ExitCode::from(2)
-            } else {
-                ExitCode::SUCCESS
+        ErrorKind::DisplayHelp | ErrorKind::DisplayVersion => {
+            let text = e.render().to_string();
+            let mut lock = std::io::stdout().lock();
+            match lock.write_all(text.as_bytes()).and_then(|()| lock.flush()) {
+                Ok(()) => ExitCode::SUCCESS,
+                // A reader that went away has what it wanted (`--help | head`).
+                Err(err) if err.kind() == std::io::ErrorKind::BrokenPipe => ExitCode::SUCCESS,
+                Err(err) => {
+                    report(&format!("standard output: {err}"));
+                    ExitCode::from(2)
+                }
             }
+        }
+        ErrorKind::DisplayHelpOnMissingArgumentOrSubcommand => {
+            report("a subcommand is needed: span, reproduce, compare, vectors or check (see phong-approx --help)");
+            ExitCode::from(2)
         }
         _ => {
             let text = e.render().to_string();
@@ -138,7 +157,7 @@ pub fn clap_error(e: clap::Error) -> ExitCode {
                 .collect();
             let line = line.join(" ");
             let line = line.strip_prefix("error: ").unwrap_or(&line);
-            eprintln!("phong-approx: {}", one_line(line));
+            report(line);
             ExitCode::from(2)
         }
     }

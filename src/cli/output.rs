@@ -2,11 +2,17 @@
 //!
 //! Every file a command writes goes first to a new temporary file in the target
 //! folder (created exclusively, so never through a symbolic link), and all of them are
-//! renamed into place together when the command has succeeded ([`OutDir::commit`]):
-//! an interrupted or failed run leaves the previous complete output, never a mix.
+//! renamed into place together when the command has succeeded ([`OutDir::commit`]).
+//! The renames are all-or-nothing as far as the file system allows: the list of
+//! renames is written first ([`JOURNAL`]), interrupts (SIGINT, SIGTERM, SIGHUP) are
+//! held off while they run, and a run that was killed during them anyway is completed
+//! by the next run in that folder before it does anything else. A failed or
+//! interrupted run before the renames leaves the previous complete output; stale
+//! temporary files of runs that died are removed by the next run.
 //! A name that exists is replaced only if this tool wrote it before (the folder's
 //! manifest, [`MANIFEST`], lists what it wrote) or with `--force`; a name that is a
-//! symbolic link is never written through. Nothing of the user's is deleted.
+//! symbolic link is never written through, and neither is an output folder that is a
+//! symbolic link. Nothing of the user's is deleted.
 
 use super::{read_capped, CliError};
 use phong_approx::conformance::shown;
@@ -19,6 +25,10 @@ use std::sync::atomic::{AtomicU64, Ordering};
 /// The file in an output folder that lists (one name a line) the files this tool
 /// wrote there, which it may therefore replace.
 pub const MANIFEST: &str = ".phong-approx-written";
+
+/// The list of renames of a commit under way (`TEMPORARY NAME` tab `FINAL NAME`, a line
+/// each), written before the first rename and removed after the last.
+pub const JOURNAL: &str = ".phong-approx-commit";
 
 static COUNTER: AtomicU64 = AtomicU64::new(0);
 
@@ -40,18 +50,32 @@ impl OutDir {
     /// A [`CliError`] for `arg` when the folder cannot be created or written.
     pub fn open(dir: &Path, force: bool, arg: &'static str) -> Result<Self, CliError> {
         let name = shown(&dir.display().to_string());
+        if fs::symlink_metadata(dir).is_ok_and(|m| m.file_type().is_symlink()) {
+            return Err(CliError::arg(
+                arg,
+                format!("{name} is a symbolic link: not writing through it (give the folder it points to, or another folder)"),
+            ));
+        }
         fs::create_dir_all(dir)
             .map_err(|e| CliError::arg(arg, format!("cannot create {name}: {e}")))?;
-        let manifest_path = dir.join(MANIFEST);
-        let manifest = match fs::symlink_metadata(&manifest_path) {
-            Ok(m) if m.is_file() => {
-                read_capped(&manifest_path.display().to_string(), arg, 1 << 20)?
-                    .lines()
-                    .map(str::to_string)
-                    .collect()
+        // Our own bookkeeping files must be regular files (or absent) before any work.
+        for own in [MANIFEST, JOURNAL] {
+            if let Ok(m) = fs::symlink_metadata(dir.join(own)) {
+                if !m.is_file() {
+                    return Err(CliError::arg(
+                        arg,
+                        format!(
+                            "{} exists and is not a regular file (remove it)",
+                            shown(&dir.join(own).display().to_string())
+                        ),
+                    ));
+                }
             }
-            _ => BTreeSet::new(),
-        };
+        }
+        let mut manifest = read_manifest(dir, arg)?;
+        finish_interrupted_commit(dir, arg, &mut manifest)?;
+        remove_stale_partials(dir);
+        let manifest = manifest;
         let out = OutDir {
             dir: dir.to_path_buf(),
             force,
@@ -165,41 +189,192 @@ impl OutDir {
         &self.dir
     }
 
-    /// Renames every written file into place and records them in the manifest.
+    /// Renames every written file into place and records them in the manifest: the
+    /// journal of renames first, then the renames with interrupts held off, then the
+    /// manifest, then the journal is removed (see the module docs).
     ///
     /// # Errors
-    /// A [`CliError`] when a rename fails (the files renamed before it stay).
+    /// A [`CliError`] when the journal, a rename or the manifest cannot be written
+    /// (the next run in the folder completes the renames of the journal).
     pub fn commit(mut self) -> Result<(), CliError> {
         let pending = std::mem::take(self.pending.get_mut());
-        for (_, name) in &pending {
-            self.manifest.insert(name.clone());
+        let journal: String = pending
+            .iter()
+            .map(|(tmp, name)| {
+                let tmp = tmp.file_name().map(|t| t.to_string_lossy().into_owned());
+                format!("{}\t{name}\n", tmp.unwrap_or_default())
+            })
+            .collect();
+        let journal_tmp = self.temp_file("journal")?;
+        fs::write(&journal_tmp, journal)
+            .and_then(|()| fs::rename(&journal_tmp, self.dir.join(JOURNAL)))
+            .map_err(|e| {
+                CliError::arg(self.arg, format!("cannot write the commit journal: {e}"))
+            })?;
+        let _held = HeldSignals::new();
+        let renames = pending.into_iter().map(|(tmp, name)| {
+            let tmp = tmp.file_name().map(|t| t.to_string_lossy().into_owned());
+            (tmp.unwrap_or_default(), name)
+        });
+        finish_commit(&self.dir, self.arg, &mut self.manifest, renames.collect())
+    }
+}
+
+/// The names the folder's manifest lists (empty when there is none).
+fn read_manifest(dir: &Path, arg: &'static str) -> Result<BTreeSet<String>, CliError> {
+    let path = dir.join(MANIFEST);
+    Ok(match fs::symlink_metadata(&path) {
+        Ok(m) if m.is_file() => read_capped(&path.display().to_string(), arg, 1 << 20)?
+            .lines()
+            .map(str::to_string)
+            .collect(),
+        _ => BTreeSet::new(),
+    })
+}
+
+/// Renames each `(temporary name, final name)` in `dir` whose temporary file exists,
+/// adds the final names to `manifest`, writes the manifest and removes the journal.
+fn finish_commit(
+    dir: &Path,
+    arg: &'static str,
+    manifest: &mut BTreeSet<String>,
+    renames: Vec<(String, String)>,
+) -> Result<(), CliError> {
+    for (tmp, name) in renames {
+        // Only our own temporary files, to plain names in this folder.
+        if !tmp.starts_with(".partial-") || name.contains('/') || name.starts_with('.') {
+            continue;
         }
-        for (tmp, name) in pending {
-            fs::rename(&tmp, self.dir.join(&name)).map_err(|e| {
+        let from = dir.join(&tmp);
+        if fs::symlink_metadata(&from).is_ok_and(|m| m.is_file()) {
+            if fs::symlink_metadata(dir.join(&name)).is_ok_and(|m| m.file_type().is_symlink()) {
+                continue;
+            }
+            fs::rename(&from, dir.join(&name)).map_err(|e| {
                 CliError::arg(
-                    self.arg,
+                    arg,
                     format!(
                         "cannot move {} into place: {e}",
-                        shown(&self.dir.join(&name).display().to_string())
+                        shown(&dir.join(&name).display().to_string())
                     ),
                 )
             })?;
         }
-        // Last: a run cut short before this leaves files the manifest does not list,
-        // which the next run then refuses to replace without --force (the safe side).
-        let list: String = self.manifest.iter().map(|n| format!("{n}\n")).collect();
-        let manifest_tmp = self.temp_file("manifest")?;
-        fs::write(&manifest_tmp, list)
-            .and_then(|()| fs::rename(&manifest_tmp, self.dir.join(MANIFEST)))
-            .map_err(|e| CliError::arg(self.arg, format!("cannot write the manifest: {e}")))
+        manifest.insert(name);
+    }
+    let list: String = manifest.iter().map(|n| format!("{n}\n")).collect();
+    let manifest_tmp = dir.join(format!(
+        ".partial-{}-{}.manifest",
+        std::process::id(),
+        COUNTER.fetch_add(1, Ordering::Relaxed)
+    ));
+    fs::write(&manifest_tmp, list)
+        .and_then(|()| fs::rename(&manifest_tmp, dir.join(MANIFEST)))
+        .map_err(|e| CliError::arg(arg, format!("cannot write the manifest: {e}")))?;
+    match fs::remove_file(dir.join(JOURNAL)) {
+        Err(e) if e.kind() != std::io::ErrorKind::NotFound => Err(CliError::arg(
+            arg,
+            format!("cannot remove the commit journal: {e}"),
+        )),
+        _ => Ok(()),
     }
 }
 
-impl Drop for OutDir {
-    /// Removes the temporary files of a run that did not commit.
+/// Completes the renames of a commit that was killed while it ran (its journal is
+/// still there), so the folder holds the whole new output, never a mix.
+fn finish_interrupted_commit(
+    dir: &Path,
+    arg: &'static str,
+    manifest: &mut BTreeSet<String>,
+) -> Result<(), CliError> {
+    let path = dir.join(JOURNAL);
+    if !fs::symlink_metadata(&path).is_ok_and(|m| m.is_file()) {
+        return Ok(());
+    }
+    let text = read_capped(&path.display().to_string(), arg, 1 << 20)?;
+    let renames = text
+        .lines()
+        .filter_map(|l| l.split_once('\t'))
+        .map(|(a, b)| (a.to_string(), b.to_string()))
+        .collect();
+    finish_commit(dir, arg, manifest, renames)
+}
+
+/// Removes the temporary files (`.partial-PID-…`) that runs which died left behind:
+/// those whose process is gone (a journal, if any, has been completed before).
+fn remove_stale_partials(dir: &Path) {
+    let Ok(entries) = fs::read_dir(dir) else {
+        return;
+    };
+    for e in entries.flatten() {
+        let name = e.file_name().to_string_lossy().into_owned();
+        let Some(pid) = name
+            .strip_prefix(".partial-")
+            .and_then(|r| r.split('-').next())
+            .and_then(|p| p.parse::<u32>().ok())
+        else {
+            continue;
+        };
+        let alive = pid == std::process::id() || Path::new(&format!("/proc/{pid}")).exists();
+        if !alive && e.file_type().is_ok_and(|t| t.is_file()) {
+            let _ = fs::remove_file(e.path());
+        }
+    }
+}
+
+/// The signals a commit holds off.
+const HELD: [libc::c_int; 3] = [libc::SIGINT, libc::SIGTERM, libc::SIGHUP];
+
+/// The first held signal that arrived during a commit (0: none).
+static ARRIVED: std::sync::atomic::AtomicI32 = std::sync::atomic::AtomicI32::new(0);
+
+extern "C" fn note_signal(sig: libc::c_int) {
+    let _ = ARRIVED.compare_exchange(0, sig, Ordering::SeqCst, Ordering::SeqCst);
+}
+
+/// Holds off SIGINT, SIGTERM and SIGHUP while it lives, for the whole process (every
+/// thread): a handler notes the first that arrives, and when the hold ends the old
+/// dispositions come back and that signal is raised again, so an interrupt cannot
+/// land between two renames of a commit but still ends the program after it.
+struct HeldSignals {
+    old: Vec<(libc::c_int, libc::sigaction)>,
+}
+
+impl HeldSignals {
+    fn new() -> Self {
+        let mut old = Vec::new();
+        for sig in HELD {
+            // SAFETY: a zeroed sigaction with an empty mask and a handler that only
+            // stores to an atomic is a valid, async-signal-safe disposition;
+            // sigaction writes the previous one into `prev`.
+            unsafe {
+                let mut act: libc::sigaction = std::mem::zeroed();
+                act.sa_sigaction = note_signal as extern "C" fn(libc::c_int) as usize;
+                libc::sigemptyset(&mut act.sa_mask);
+                let mut prev: libc::sigaction = std::mem::zeroed();
+                if libc::sigaction(sig, &act, &mut prev) == 0 {
+                    old.push((sig, prev));
+                }
+            }
+        }
+        HeldSignals { old }
+    }
+}
+
+impl Drop for HeldSignals {
     fn drop(&mut self) {
-        for (tmp, _) in self.pending.get_mut().drain(..) {
-            let _ = fs::remove_file(tmp);
+        for (sig, prev) in &self.old {
+            // SAFETY: restores the disposition saved by `new`.
+            unsafe {
+                libc::sigaction(*sig, prev, std::ptr::null_mut());
+            }
+        }
+        let sig = ARRIVED.swap(0, Ordering::SeqCst);
+        if sig != 0 {
+            // SAFETY: raising a signal with its original disposition restored.
+            unsafe {
+                libc::raise(sig);
+            }
         }
     }
 }

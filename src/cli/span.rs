@@ -246,18 +246,33 @@ fn span_error(e: SpanError, normalize: bool) -> CliError {
     match e {
         SpanError::NonFinite { input, component } => CliError::arg(
             arg(input),
-            format!("component {} is not finite in this number type", component + 1),
+            format!(
+                "component {} is not finite in this number type",
+                component + 1
+            ),
         ),
         SpanError::ZeroVector { input } => CliError::arg(arg(input), "the vector is zero"),
         SpanError::NotUnit {
             input,
             length_squared,
+            deviation,
             tolerance,
         } => CliError::arg(
             arg(input),
             format!(
-                "not a unit vector (length² = {length_squared}, allowed |length² − 1| ≤ {tolerance:e}){}",
-                if normalize { "" } else { "; pass --normalize to normalize it" }
+                "not a unit vector (length² = {}, |length² − 1| = {}, {}){}",
+                shown(&length_squared),
+                shown(&deviation),
+                if tolerance == 0.0 {
+                    "exact arithmetic allows only exactly 1".to_string()
+                } else {
+                    format!("allowed ≤ {tolerance:.3e}")
+                },
+                if normalize {
+                    ""
+                } else {
+                    "; pass --normalize to normalize it"
+                }
             ),
         ),
         SpanError::Opposite => CliError::arg(
@@ -345,6 +360,27 @@ fn error_bound(r: &Request, u: f64) -> Option<f64> {
     let exact = Span::new(r.na.clone(), r.nb.clone(), r.l.clone(), r.n).ok()?;
     let shape = phong_approx::tolerance::Shape::of(&exact);
     phong_approx::tolerance::span_bound(r.method, &shape, u)
+}
+
+/// `error_bound` of the JSON output: an object keyed by profile — `reference` (this
+/// crate's own operation order, [`error_bound`]), `ieee` and `shader` (proved for
+/// every implementation of the profile, `phong_approx::tolerance::profile`; `shader`
+/// only for `f32`). `null` where none is derived or proved (and for every profile
+/// with `--normalize`, whose float normalization no derivation covers).
+fn error_bounds(r: &Request, u: f64) -> Value {
+    use phong_approx::tolerance::profile::{proved_bound, Profile};
+    let shown = |b: Option<f64>| b.map_or(Value::Null, |b| json!(round_up_3(b)));
+    let mut m = serde_json::Map::new();
+    for p in Profile::ALL {
+        let b = match p {
+            _ if r.normalize => None,
+            Profile::Reference => error_bound(r, u),
+            Profile::Shader if u != f64::from(f32::EPSILON) / 2.0 => continue,
+            p => proved_bound(r.method, p, r.n, u),
+        };
+        m.insert(p.name().to_string(), shown(b));
+    }
+    Value::Object(m)
 }
 
 /// Refuses `--digits` beyond what is known of values that are not exact: a value's
@@ -580,9 +616,9 @@ pub fn run(a: &SpanArgs) -> Result<(), CliError> {
             ScalarKind::F64 => Some(f64::unit_roundoff()),
             _ => None,
         } {
-            // Rounded up to 3 significant digits: a bound, never understated.
-            let b = error_bound(&r, u).map_or(Value::Null, |b| json!(round_up_3(b)));
-            fields.push(("error_bound", Field::One(b)));
+            // Per profile (docs/float.md §18), rounded up to 3 significant digits: a
+            // bound, never understated; null where none is derived or proved.
+            fields.push(("error_bound", Field::One(error_bounds(&r, u))));
         }
         if let Method::AngularTable(size) = r.method {
             fields.push(("table_size", Field::One(json!(size))));

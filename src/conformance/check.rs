@@ -48,8 +48,19 @@ pub enum Tolerance {
     /// At most this many `f32` ulps (of the expected value) from it.
     Ulps(f64),
     /// The crate's documented float bound for the method, case and precision
-    /// (`src/tolerance.rs`): `f32` (u = 2^-24) or `f64` (u = 2^-53).
+    /// (`src/tolerance.rs`): `f32` (u = 2^-24) or `f64` (u = 2^-53). The `reference`
+    /// profile.
     Default {
+        /// The unit roundoff of the implementation's arithmetic.
+        u: f64,
+    },
+    /// The bound proved for every implementation of an arithmetic profile
+    /// ([`crate::tolerance::profile`], `docs/float.md` §18); `Reference` is
+    /// [`Tolerance::Default`]. A case with no proved bound for the profile fails,
+    /// naming why.
+    Profile {
+        /// The profile.
+        profile: crate::tolerance::profile::Profile,
         /// The unit roundoff of the implementation's arithmetic.
         u: f64,
     },
@@ -437,8 +448,18 @@ fn case_report(
     tol: Tolerance,
     specular: bool,
 ) -> CaseReport {
+    use crate::tolerance::profile::{proved_bound, Profile};
+    let tol = match tol {
+        Tolerance::Profile {
+            profile: Profile::Reference,
+            u,
+        } => Tolerance::Default { u },
+        t => t,
+    };
     let allowed_abs = match tol {
         Tolerance::Abs(x) => Some(x),
+        // Proved for diffuse values only (the theorems bound N·L along the span).
+        Tolerance::Profile { profile, u } if !specular => proved_bound(method, profile, c.n, u),
         Tolerance::Default { u } => {
             // Specular raises the value to the power s: its error grows by up to s×.
             let s = if specular {
@@ -457,7 +478,8 @@ fn case_report(
         }
         _ => None,
     };
-    let unbounded = matches!(tol, Tolerance::Default { .. }) && allowed_abs.is_none();
+    let unbounded = matches!(tol, Tolerance::Default { .. } | Tolerance::Profile { .. })
+        && allowed_abs.is_none();
     let (mut max_levels, mut sum_levels, mut max_abs, mut max_ulps) = (0u32, 0u64, 0f64, 0f64);
     let (mut worst, mut worst_excess, mut pass) = (0usize, f64::NEG_INFINITY, true);
     // The vector file was validated, so both lists have n + 1 values; a shorter list
@@ -497,6 +519,9 @@ fn case_report(
     let allowed = match tol {
         Tolerance::Levels(n) => format!("{n} levels"),
         Tolerance::Ulps(n) => format!("{n} ulps"),
+        Tolerance::Profile { profile, .. } if unbounded => {
+            format!("no proved {profile} bound for this method, format and n (pass --tolerance)")
+        }
         _ if unbounded => "no derived bound (pass --tolerance)".to_string(),
         _ => format!("{:.3e}", allowed_abs.unwrap_or(0.0)),
     };

@@ -149,8 +149,71 @@ fn expected(method: Method, span: &Span<BigRational>) -> Result<Expected, String
     })
 }
 
-/// A case from exact unit inputs.
+/// One case of a set before its expectations are computed: its id, comment and exact
+/// unit inputs. [`specs`] lists a set's cases; [`CaseSpec::compute`] computes one, so a
+/// part of a set can be regenerated without the rest (the default test tier checks the
+/// short cases, the extensive tier every file byte for byte).
+#[derive(Clone, Debug)]
+pub struct CaseSpec {
+    /// The case id, e.g. `edge-003`.
+    pub id: String,
+    /// Why the case is there.
+    pub comment: &'static str,
+    /// `N_a`, exactly unit.
+    pub na: Vec3<BigRational>,
+    /// `N_b`, exactly unit.
+    pub nb: Vec3<BigRational>,
+    /// `L`, exactly unit.
+    pub l: Vec3<BigRational>,
+    /// Steps.
+    pub n: u32,
+    /// The half vector and exponent of the specular expectations, if any.
+    pub h: Option<(Vec3<BigRational>, u32)>,
+}
+
+/// A case spec from its parts.
 fn make_case(
+    id: String,
+    comment: &'static str,
+    na: Vec3<BigRational>,
+    nb: Vec3<BigRational>,
+    l: Vec3<BigRational>,
+    n: u32,
+    h: Option<(Vec3<BigRational>, u32)>,
+) -> CaseSpec {
+    CaseSpec {
+        id,
+        comment,
+        na,
+        nb,
+        l,
+        n,
+        h,
+    }
+}
+
+impl CaseSpec {
+    /// The case with its exact expectations.
+    ///
+    /// # Errors
+    /// A level at some pixel that the exact run cannot decide (named, with the method
+    /// and pixel).
+    pub fn compute(self) -> Result<Case, String> {
+        let CaseSpec {
+            id,
+            comment,
+            na,
+            nb,
+            l,
+            n,
+            h,
+        } = self;
+        compute_case(id, comment, na, nb, l, n, h)
+    }
+}
+
+/// A case from exact unit inputs.
+fn compute_case(
     id: String,
     comment: &str,
     na: Vec3<BigRational>,
@@ -246,7 +309,7 @@ impl Rng {
 
 /// The `typical` set: spans like a torus produces — unit normals a few degrees apart,
 /// a light anywhere in front, 2 to 64 steps.
-fn typical() -> Vec<Result<Case, String>> {
+fn typical() -> Vec<CaseSpec> {
     let mut rng = Rng(0x5EED_0001);
     let mut cases = Vec::new();
     for k in 0..40 {
@@ -282,7 +345,7 @@ type EdgeCase = (
 );
 
 /// The `edge` set: the cases an implementation most often gets wrong.
-fn edge() -> Vec<Result<Case, String>> {
+fn edge() -> Vec<CaseSpec> {
     let up = stereo(0, 0, 1);
     let tilt = stereo(1, 0, 3); // (3/5, 0, 4/5)
     let tilt_back = stereo(-1, 0, 3); // (−3/5, 0, 4/5)
@@ -407,7 +470,7 @@ fn edge() -> Vec<Result<Case, String>> {
 /// The `paper` set: the spans behind Figures 1–3 — unit normals 60° apart in the x–z
 /// plane (exact rational approximations, 60.0000° to 10^-4), the reproduction's light,
 /// and the same with specular highlights.
-fn paper() -> Vec<Result<Case, String>> {
+fn paper() -> Vec<CaseSpec> {
     // tan(15°) = 2 − √3 ≈ 0.267949: stereographic parameters of (∓sin 30°, 0, cos 30°).
     let na = stereo(-267_949, 0, 1_000_000);
     let nb = stereo(267_949, 0, 1_000_000);
@@ -455,24 +518,38 @@ fn paper() -> Vec<Result<Case, String>> {
     ]
 }
 
+/// The cases of `set`, not yet computed.
+///
+/// # Errors
+/// The unknown set's name.
+pub fn specs(set: &str) -> Result<Vec<CaseSpec>, String> {
+    match set {
+        "typical" => Ok(typical()),
+        "edge" => Ok(edge()),
+        "paper" => Ok(paper()),
+        other => Err(format!(
+            "unknown set '{other}' (expected typical, edge or paper)"
+        )),
+    }
+}
+
 /// Generates the vector file of `set`.
 ///
 /// # Errors
 /// The unknown set's name; a case whose level at some pixel the exact run cannot
 /// decide (named, with the method and pixel).
 pub fn generate(set: &str) -> Result<VectorFile, String> {
-    let cases = match set {
-        "typical" => typical(),
-        "edge" => edge(),
-        "paper" => paper(),
-        other => {
-            return Err(format!(
-                "unknown set '{other}' (expected typical, edge or paper)"
-            ))
-        }
-    };
-    let cases = cases.into_iter().collect::<Result<Vec<Case>, String>>()?;
-    Ok(VectorFile {
+    let cases = specs(set)?
+        .into_iter()
+        .map(CaseSpec::compute)
+        .collect::<Result<Vec<Case>, String>>()?;
+    Ok(file_of(set, cases))
+}
+
+/// The vector file of `set` with these cases: the header (format version, generator,
+/// notes, methods) and the cases.
+pub fn file_of(set: &str, cases: Vec<Case>) -> VectorFile {
+    VectorFile {
         version: FORMAT_VERSION.to_string(),
         generator: format!("phong-approx {}", env!("CARGO_PKG_VERSION")),
         set: set.to_string(),
@@ -484,7 +561,7 @@ pub fn generate(set: &str) -> Result<VectorFile, String> {
         methods: METHODS.iter().map(|&m| method_key(m)).collect(),
         number_of_cases: cases.len(),
         cases,
-    })
+    }
 }
 
 /// The CSV twin of a vector file: one row per case, method and pixel:

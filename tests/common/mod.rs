@@ -2,12 +2,66 @@
 //! that a failing case prints (and shrinks to) a few small numbers.
 #![allow(dead_code)]
 
+pub mod emu;
+
 use phong_approx::reference::unit::unit_from_ints;
 use phong_approx::{BigRational, Span, Vec3};
 use proptest::prelude::*;
+use proptest::test_runner::{RngAlgorithm, TestRng, TestRunner};
+use std::collections::HashMap;
+use std::sync::{Arc, Mutex, OnceLock};
 
 /// Exact rationals.
 pub type Q = BigRational;
+
+/// The extensive tier is on: `PHONG_APPROX_TIER=extensive` (see `docs/testing.md`).
+///
+/// The default `cargo test` runs every claim, every method and every bad-input check on
+/// a representative sample; the extensive tier, run by CI as
+/// `PHONG_APPROX_TIER=extensive cargo test --release --all-features -- --include-ignored`,
+/// runs the same tests on the larger samples (the `n = 4096` exact spans, more random
+/// cases) plus the `#[ignore]`d long searches and reports.
+pub fn extensive() -> bool {
+    std::env::var("PHONG_APPROX_TIER").is_ok_and(|t| t == "extensive")
+}
+
+/// `default` in the default tier, `extensive` in the extensive tier.
+pub fn tiered<T>(default: T, extensive_value: T) -> T {
+    if extensive() {
+        extensive_value
+    } else {
+        default
+    }
+}
+
+/// The number of random cases of a proptest search: `PROPTEST_CASES` when set (as
+/// proptest's own default configuration reads it), else `default` in the default
+/// tier and four times as many in the extensive tier.
+pub fn proptest_cases(default: u32) -> u32 {
+    std::env::var("PROPTEST_CASES")
+        .ok()
+        .and_then(|s| s.trim().parse().ok())
+        .unwrap_or_else(|| tiered(default, default.saturating_mul(4)))
+}
+
+/// The one proptest configuration of the claim tests: [`proptest_cases`] cases, failures
+/// kept in `file` (so they run first next time).
+pub fn proptest_config(default_cases: u32, file: &'static str) -> proptest::test_runner::Config {
+    proptest::test_runner::Config {
+        cases: proptest_cases(default_cases),
+        failure_persistence: Some(Box::new(
+            proptest::test_runner::FileFailurePersistence::Direct(file),
+        )),
+        ..proptest::test_runner::Config::default()
+    }
+}
+
+/// The length of the long edge spans: 4096 (the longest of the float bounds' range) in
+/// the extensive tier, 512 in the default tier (exact work grows with `n`, and the
+/// `n = 4096` claims are the extensive tier's).
+pub fn long_n() -> u32 {
+    tiered(512, 4096)
+}
 
 /// `n/d` as a rational.
 pub fn q(n: i64, d: i64) -> Q {
@@ -77,7 +131,8 @@ pub fn arb_case() -> impl Strategy<Value = Case> {
 }
 
 /// Edge cases enumerated on purpose: n = 1 and 2, N_a = N_b, normals 170° apart,
-/// N·L < 0 on part of the span, grazing light, n = 4096.
+/// N·L < 0 on part of the span, grazing light, a long span ([`long_n`]: 4096 in the
+/// extensive tier).
 pub fn edge_cases() -> Vec<Case> {
     let up = Stereo(0, 0, 1); // (0, 0, 1)
     let tilt = Stereo(1, 0, 3); // (3/5, 0, 4/5)
@@ -144,18 +199,18 @@ pub fn edge_cases() -> Vec<Case> {
             n: 5,
         },
         Case {
-            why: "n = 4096",
+            why: "long span",
             na: up,
             nb: tilt,
             l: light_oblique,
-            n: 4096,
+            n: long_n(),
         },
         Case {
-            why: "n = 4096, 170° apart",
+            why: "long span, 170° apart",
             na: up,
             nb: far,
             l: light_oblique,
-            n: 4096,
+            n: long_n(),
         },
     ];
     v.push(Case {
@@ -166,6 +221,38 @@ pub fn edge_cases() -> Vec<Case> {
         n: 16,
     });
     v
+}
+
+/// The exact run of `method` on `span` (the exact span of `c`), computed once per test
+/// binary and shared by every test that asks: the `f32` and `f64` tests of a method,
+/// and the tests that compare different things with the same exact values, run the
+/// same cases (the default tier's searches have a fixed seed). A second asker waits
+/// for the first.
+pub fn exact_values(method: phong_approx::Method, c: &Case, span: &Span<Q>) -> Arc<Vec<Q>> {
+    type Cell = Arc<OnceLock<Arc<Vec<Q>>>>;
+    static CACHE: OnceLock<Mutex<HashMap<String, Cell>>> = OnceLock::new();
+    let key = format!("{method} {:?} {:?} {:?} {}", c.na, c.nb, c.l, c.n);
+    let cell = CACHE
+        .get_or_init(Default::default)
+        .lock()
+        .unwrap()
+        .entry(key)
+        .or_default()
+        .clone();
+    cell.get_or_init(|| Arc::new(method.values(span).unwrap()))
+        .clone()
+}
+
+/// A proptest runner for `cases` cases (see [`proptest_config`]): with a fixed seed in
+/// the default tier, so that every run (and every test of a binary) checks the same
+/// sample, and a fresh seed per run in the extensive tier.
+pub fn runner(cases: u32, file: &'static str) -> TestRunner {
+    let config = proptest_config(cases, file);
+    if extensive() {
+        TestRunner::new(config)
+    } else {
+        TestRunner::new_with_rng(config, TestRng::deterministic_rng(RngAlgorithm::ChaCha))
+    }
 }
 
 /// Runs `check` on every edge case, then on `cases` random ones; a failure panics
@@ -191,14 +278,7 @@ fn search(
     file: &'static str,
     check: &SpanCheck<'_>,
 ) {
-    let config = ProptestConfig {
-        cases,
-        failure_persistence: Some(Box::new(
-            proptest::test_runner::FileFailurePersistence::Direct(file),
-        )),
-        ..ProptestConfig::default()
-    };
-    let mut runner = proptest::test_runner::TestRunner::new(config);
+    let mut runner = runner(cases, file);
     let result = runner.run(&strategy, |c| {
         let Some(span) = c.span() else {
             return Ok(());
@@ -248,7 +328,10 @@ pub fn targeted_cases() -> Vec<Case> {
         l: up,
         n: 4095,
     }];
-    for k in [1u32, 3, 6, 8, 10, 11, 12] {
+    // n next to 2^11 and 2^12 in the extensive tier only (the exact reference's cost
+    // grows with n); the reproducer above (n = 4095) runs in both.
+    let ks: &[u32] = tiered(&[1, 3, 6, 8, 10], &[1, 3, 6, 8, 10, 11, 12]);
+    for &k in ks {
         for n in [(1u32 << k) - 1, 1 << k, (1 << k) + 1] {
             if n == 0 || n > 4096 {
                 continue;
@@ -291,7 +374,8 @@ pub fn targeted_cases() -> Vec<Case> {
 pub fn arb_targeted() -> impl Strategy<Value = Case> {
     let na = (-3i64..=3, -3i64..=3, 1i64..=16).prop_map(|(a, b, d)| Stereo(a, b, d));
     let far = (8i64..=3000, -200i64..=200, 1i64..=3).prop_map(|(a, b, d)| Stereo(a, b, d));
-    let n = (1u32..=12, 0u32..=2).prop_map(|(k, j)| ((1u32 << k) + j - 1).clamp(1, 4096));
+    let n =
+        (1u32..=tiered(10, 12), 0u32..=2).prop_map(|(k, j)| ((1u32 << k) + j - 1).clamp(1, 4096));
     let l = prop_oneof![Just(Stereo(0, 0, 1)), Just(Stereo(1, 0, 1)), arb_stereo(),];
     (na, far, l, n).prop_map(|(na, nb, l, n)| Case {
         why: "targeted",

@@ -1,0 +1,1661 @@
+(** * Profiles.v — acceptance profiles: error bounds for the Gouraud and
+    corrected-Euler (eqs. 16-17) computations that hold for EVERY
+    implementation of a class (model of FloatModelK.v), against the exact
+    real values [gouraud s i] (Adaptive.v) and [ceuler s i] (Euler.v) on the
+    exact inputs.
+
+    The computation is Float.v's (src/span.rs set-up, src/gouraud.rs and
+    src/corrected_euler.rs loops), but every operation is only known to be
+    within its class's bound (FloatModelK.approx) of the exact result of that
+    operation on the computed operands, each operation with its own rounding:
+      inputs   na, nb, l         ap_in  of Na, Nb, L (componentwise)
+      k_j      t_j ap_add (nb_j - na_j), k_j ap_div t_j / n
+      a = k.l, pa = na.l, c = k.k, pb = nb.l   dot products (fdot_ok: any
+               order of the three-term sum, each product rounded or fused)
+      d        e = k.na (fdot_ok), d ap_mul 2 e
+      dqb      q ap_mul (2n) c, dqb ap_add q + d
+      dia      h ap_div pa/2, x ap_mul h d, dia ap_add a - x
+      dib      h' ap_div pb/2, x' ap_mul h' dqb, dib ap_add a - x'
+      ds       w ap_add dib - dia, ds ap_div w / n
+      pn       q2 ap_mul n dia, q3 ap_mul (n(n-1)/2) ds,
+               pn = pa + q2 + q3 in ANY order (sum3)
+      eps ap_add pn - pb, deps ap_div eps / n, t0 ap_add dia - deps,
+      dp       w' ap_add pb - pa, dp ap_div w' / n;
+      corrected Euler: P_0 = pa, S_0 = t0, P_{j+1} ap_add P_j + S_j,
+                       S_{j+1} ap_add S_j + ds;
+      Gouraud: G_0 = pa, G_{j+1} ap_add G_j + dp.
+    A product that feeds an addition may be exact (fused multiply-add): an
+    exact result satisfies every bound.  n, 2n, n(n-1)/2 are exact reals
+    (integers of the format).  Division is either one rounded division or a
+    reciprocal followed by a product ([recip_mul_covered]).  Nothing else is
+    assumed: each relation may be met by a different rounding (direction,
+    flushing) at each operation, each three-term sum in its own order.
+
+    Profiles (u = unit roundoff):
+      ieee    k_in = k_add = k_mul = 1 (round to nearest, any tie rule:
+              [rn_covered], [ieee32_covered], [ieee64_covered]),
+              k_div = 2 + 2^-20 (correctly rounded division, or reciprocal
+              then product, [recip_mul_covered]); binary32 u = 2^-24,
+              eta = 2^-150; binary64 u = 2^-53, eta = 2^-1075 (subnormals kept).
+      shader  k_in = k_add = k_mul = 2 (any rounding of binary32: nearest,
+              toward zero, ..., [faithful_covered]), k_div = 5 (within 2.5 ulp,
+              [shader32_div_covered]), u = 2^-24, eta = 2^-126 (results and
+              inputs may be flushed to zero, [flush_covered], [shader32_covered]).
+
+    Theorems (unit Na, Nb, L; every pixel i <= n):
+      profile_ieee_gouraud_binary32 / _binary64   1 <= n <= 4096:
+          |G_i - gouraud s i|  <= (1.0006 n + 11.001) u
+      profile_ieee_gouraud_binary64_large         1 <= n <= 2^24: the same
+      profile_shader_gouraud_binary32             1 <= n <= 4096:
+          |G_i - gouraud s i|  <= (2.0012 n + 24.002) 2^-24
+      profile_ieee_corrected_euler_binary32 / _binary64   1 <= n <= 4096:
+          |P_i - ceuler s i|   <= (2.2 n + 51.21) u
+      profile_ieee_corrected_euler_binary64_large         1 <= n <= 2^24: the same
+      profile_shader_corrected_euler_binary32     1 <= n <= 4096:
+          |P_i - ceuler s i|   <= (4.4 n + 109.7) 2^-24
+      profile_ieee_corrected_euler_closed_binary32 / _binary64   1 <= n <= 4096:
+          p_i = p_a + i (t0 + (i-1)/2 ds) evaluated in the model (h = (i-1)/2 ds,
+          g = t0 + h, m = i g, p = pa + m, fused or not) on an ieee set-up:
+          |p_i - ceuler s i|   <= 59.61 u   (independent of n)
+      profile_ieee_corrected_euler_closed_binary64_large  1 <= n <= 2^24: the same
+    They are instances of [profile_gouraud_generic]
+    ((1.0006 k_add n + 2.0001 k_in + 1.0001 k_mul + 4.0001 k_add + 2.0001 k_div
+    + 10^-6) u) and [profile_corrected_euler_generic]
+    ((2.2 k_add n + 36.6 K1 + 7.3 k_div) u, K1 >= k_in, k_add, k_mul), under
+    [model_ok] and n k_add u <= 2^-11, and of
+    [profile_corrected_euler_closed_generic] ((45 K1 + 7.3 k_div) u). *)
+
+From Coq Require Import Reals Lra Lia.
+From Flocq Require Import Core Relative.
+From PhongApprox Require Import Span Euler Adaptive FloatModel Float FloatModelK.
+Open Scope R_scope.
+
+(** ** The computation as a relation *)
+
+(** The computed values of the set-up (the intermediates are quantified in
+    [ce_setup_ok] and [gouraud_setup_ok]). *)
+Record fsetup := mkSetup {
+  fs_na : vec; fs_nb : vec; fs_l : vec; fs_k : vec;
+  fs_a : R; fs_pa : R; fs_c : R; fs_d : R; fs_pb : R; fs_dqb : R;
+  fs_dia : R; fs_dib : R; fs_ds : R; fs_pn : R; fs_eps : R; fs_deps : R;
+  fs_t0 : R; fs_dp : R }.
+
+Definition vap (M : fmodel) (vh v : vec) : Prop :=
+  ap_in M (vx vh) (vx v) /\ ap_in M (vy vh) (vy v) /\ ap_in M (vz vh) (vz v).
+
+Definition inputs_ok (M : fmodel) (s : span) (F : fsetup) : Prop :=
+  vap M (fs_na F) (Na s) /\ vap M (fs_nb F) (Nb s) /\ vap M (fs_l F) (L s).
+
+Definition kcomp_ok (M : fmodel) (m kj a b : R) : Prop :=
+  exists t, ap_add M t (b - a) /\ ap_div M kj (t / m).
+
+Definition gouraud_setup_ok (M : fmodel) (s : span) (F : fsetup) : Prop :=
+  inputs_ok M s F /\
+  fdot_ok M (fs_na F) (fs_l F) (fs_pa F) /\ fdot_ok M (fs_nb F) (fs_l F) (fs_pb F) /\
+  exists w, ap_add M w (fs_pb F - fs_pa F) /\ ap_div M (fs_dp F) (w / INR (n s)).
+
+Definition ce_setup_ok (M : fmodel) (s : span) (F : fsetup) : Prop :=
+  inputs_ok M s F /\
+  kcomp_ok M (INR (n s)) (vx (fs_k F)) (vx (fs_na F)) (vx (fs_nb F)) /\
+  kcomp_ok M (INR (n s)) (vy (fs_k F)) (vy (fs_na F)) (vy (fs_nb F)) /\
+  kcomp_ok M (INR (n s)) (vz (fs_k F)) (vz (fs_na F)) (vz (fs_nb F)) /\
+  fdot_ok M (fs_k F) (fs_l F) (fs_a F) /\
+  fdot_ok M (fs_na F) (fs_l F) (fs_pa F) /\
+  fdot_ok M (fs_k F) (fs_k F) (fs_c F) /\
+  (exists e, fdot_ok M (fs_k F) (fs_na F) e /\ ap_mul M (fs_d F) (2 * e)) /\
+  fdot_ok M (fs_nb F) (fs_l F) (fs_pb F) /\
+  (exists q, ap_mul M q (2 * INR (n s) * fs_c F) /\ ap_add M (fs_dqb F) (q + fs_d F)) /\
+  (exists h x, ap_div M h (fs_pa F / 2) /\ ap_mul M x (h * fs_d F)
+               /\ ap_add M (fs_dia F) (fs_a F - x)) /\
+  (exists h x, ap_div M h (fs_pb F / 2) /\ ap_mul M x (h * fs_dqb F)
+               /\ ap_add M (fs_dib F) (fs_a F - x)) /\
+  (exists w, ap_add M w (fs_dib F - fs_dia F) /\ ap_div M (fs_ds F) (w / INR (n s))) /\
+  (exists q2 q3, ap_mul M q2 (INR (n s) * fs_dia F)
+                 /\ ap_mul M q3 (INR (n s) * (INR (n s) - 1) / 2 * fs_ds F)
+                 /\ sum3 M (fs_pa F) q2 q3 (fs_pn F)) /\
+  ap_add M (fs_eps F) (fs_pn F - fs_pb F) /\
+  ap_div M (fs_deps F) (fs_eps F / INR (n s)) /\
+  ap_add M (fs_t0 F) (fs_dia F - fs_deps F).
+
+(** The loops: any sequence each of whose steps is within the addition bound. *)
+Definition gouraud_run (M : fmodel) (F : fsetup) (m : nat) (G : nat -> R) : Prop :=
+  G O = fs_pa F /\ forall j, (j < m)%nat -> ap_add M (G (S j)) (G j + fs_dp F).
+
+Definition ceuler_run (M : fmodel) (F : fsetup) (m : nat) (P Q : nat -> R) : Prop :=
+  P O = fs_pa F /\ Q O = fs_t0 F /\
+  forall j, (j < m)%nat -> ap_add M (P (S j)) (P j + Q j) /\ ap_add M (Q (S j)) (Q j + fs_ds F).
+
+(** ** The profiles *)
+
+Definition ieee32 : fmodel := mkModel (bpow radix2 (-24)) (bpow radix2 (-150)) 1 1 1 (2 + / 1048576).
+Definition ieee64 : fmodel := mkModel (bpow radix2 (-53)) (bpow radix2 (-1075)) 1 1 1 (2 + / 1048576).
+Definition shader32 : fmodel := mkModel (bpow radix2 (-24)) (bpow radix2 (-126)) 2 2 2 5.
+
+Lemma u24 : bpow radix2 (-24) = / 16777216.
+Proof. simpl. lra. Qed.
+Lemma u53 : bpow radix2 (-53) = / 9007199254740992.
+Proof. simpl. lra. Qed.
+
+Lemma eta84 : forall e q : Z, (e + 84 <= q)%Z ->
+  bpow radix2 e * 19342813113834066795298816 <= bpow radix2 q.
+Proof.
+  intros e q H. replace 19342813113834066795298816 with (bpow radix2 84) by (simpl; lra).
+  rewrite <- bpow_plus. apply bpow_le. exact H.
+Qed.
+
+Lemma ieee32_ok : model_ok ieee32 (2 + / 1048576).
+Proof.
+  destruct (flt_fmt_ok (-149) 24 ltac:(lia) ltac:(lia)) as (H1 & _ & H3 & H4).
+  change (Z.opp 24) with (-24)%Z in *. change (-149 - 1)%Z with (-150)%Z in *.
+  pose proof (eta84 (-150) (-24) ltac:(lia)) as H5.
+  unfold ieee32, model_ok; cbn [m_u m_eta k_in k_add k_mul k_div].
+  rewrite u24 in *. repeat split; lra.
+Qed.
+
+Lemma ieee64_ok : model_ok ieee64 (2 + / 1048576).
+Proof.
+  destruct (flt_fmt_ok (-1074) 53 ltac:(lia) ltac:(lia)) as (H1 & H2 & H3 & H4).
+  change (Z.opp 53) with (-53)%Z in *. change (-1074 - 1)%Z with (-1075)%Z in *.
+  pose proof (eta84 (-1075) (-53) ltac:(lia)) as H5.
+  unfold ieee64, model_ok; cbn [m_u m_eta k_in k_add k_mul k_div].
+  rewrite u53 in *. repeat split; lra.
+Qed.
+
+Lemma shader32_ok : model_ok shader32 5.
+Proof.
+  destruct (flt_fmt_ok (-125) 24 ltac:(lia) ltac:(lia)) as (H1 & H2 & H3 & H4).
+  change (Z.opp 24) with (-24)%Z in *. change (-125 - 1)%Z with (-126)%Z in *.
+  pose proof (eta84 (-126) (-24) ltac:(lia)) as H5.
+  unfold shader32, model_ok; cbn [m_u m_eta k_in k_add k_mul k_div].
+  rewrite u24 in *. repeat split; lra.
+Qed.
+
+(** ** Inputs and dot products of unit vectors, factor by factor *)
+
+Definition vap1 (v eta : R) (vh w : vec) : Prop :=
+  ap1 v eta (vx vh) (vx w) /\ ap1 v eta (vy vh) (vy w) /\ ap1 v eta (vz vh) (vz w).
+
+Lemma comp_in : forall ui eta A a B b,
+  0 <= ui <= / 2097152 -> 0 <= eta -> eta * 1152921504606846976 <= 1 ->
+  ap1 ui eta A a -> ap1 ui eta B b -> Rabs a <= 1 -> Rabs b <= 1 ->
+  Rabs (A * B - a * b) <= (2 * ui + ui * ui) * (Rabs a * Rabs b) + 3 * eta /\
+  Rabs (A * B) <= (1 + 2 * ui + ui * ui) * (Rabs a * Rabs b) + 3 * eta.
+Proof.
+  intros ui eta A a B b Hu He He1 HA HB Ha Hb. unfold ap1 in *.
+  pose proof (Rabs_pos a). pose proof (Rabs_pos b).
+  assert (E : A * B - a * b = (A - a) * b + a * (B - b) + (A - a) * (B - b)) by ring.
+  assert (T1 : Rabs ((A - a) * b) <= (ui * Rabs a + eta) * Rabs b).
+  { rewrite Rabs_mult. apply Rmult_le_compat_r; [apply Rabs_pos | exact HA]. }
+  assert (T2 : Rabs (a * (B - b)) <= Rabs a * (ui * Rabs b + eta)).
+  { rewrite Rabs_mult. apply Rmult_le_compat_l; [apply Rabs_pos | exact HB]. }
+  assert (T3 : Rabs ((A - a) * (B - b)) <= (ui * Rabs a + eta) * (ui * Rabs b + eta)).
+  { rewrite Rabs_mult. apply Rmult_le_compat; try apply Rabs_pos; assumption. }
+  assert (K1 : eta * Rabs b <= eta * 1) by (apply Rmult_le_compat_l; lra).
+  assert (K2 : eta * Rabs a <= eta * 1) by (apply Rmult_le_compat_l; lra).
+  assert (K3 : ui * eta * Rabs b <= ui * eta * 1)
+    by (apply Rmult_le_compat_l; [apply Rmult_le_pos|]; lra).
+  assert (K4 : ui * eta * Rabs a <= ui * eta * 1)
+    by (apply Rmult_le_compat_l; [apply Rmult_le_pos|]; lra).
+  assert (K5 : ui * eta <= / 2097152 * eta) by (apply Rmult_le_compat_r; lra).
+  assert (K6 : eta * eta <= eta * / 1152921504606846976) by (apply Rmult_le_compat_l; lra).
+  assert (D : Rabs (A * B - a * b) <= (2 * ui + ui * ui) * (Rabs a * Rabs b) + 3 * eta).
+  { rewrite E. eapply Rle_trans; [apply Rabs_triang|].
+    eapply Rle_trans; [apply Rplus_le_compat_r, Rabs_triang|]. lra. }
+  split; [exact D|].
+  replace (A * B) with (a * b + (A * B - a * b)) by ring.
+  eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_mult. lra.
+Qed.
+
+Lemma dot_in : forall ui eta (A a B b : vec),
+  0 <= ui <= / 2097152 -> 0 <= eta -> eta * 1152921504606846976 <= 1 ->
+  vap1 ui eta A a -> vap1 ui eta B b -> vbounded a 1 -> vbounded b 1 ->
+  Rabs (dot A B - dot a b) <=
+    (2 * ui + ui * ui) * (Rabs (vx a) * Rabs (vx b) + Rabs (vy a) * Rabs (vy b)
+                          + Rabs (vz a) * Rabs (vz b)) + 9 * eta /\
+  Rabs (vx A * vx B) + Rabs (vy A * vy B) + Rabs (vz A * vz B) <=
+    (1 + 2 * ui + ui * ui) * (Rabs (vx a) * Rabs (vx b) + Rabs (vy a) * Rabs (vy b)
+                              + Rabs (vz a) * Rabs (vz b)) + 9 * eta.
+Proof.
+  intros ui eta A a B b Hu He He1 [A1 [A2 A3]] [B1 [B2 B3]] [a1 [a2 a3]] [b1 [b2 b3]].
+  destruct (comp_in ui eta _ _ _ _ Hu He He1 A1 B1 a1 b1) as [X1 Y1].
+  destruct (comp_in ui eta _ _ _ _ Hu He He1 A2 B2 a2 b2) as [X2 Y2].
+  destruct (comp_in ui eta _ _ _ _ Hu He He1 A3 B3 a3 b3) as [X3 Y3].
+  split; [|lra].
+  unfold dot.
+  replace (vx A * vx B + vy A * vy B + vz A * vz B - (vx a * vx b + vy a * vy b + vz a * vz b))
+    with ((vx A * vx B - vx a * vx b) + (vy A * vy B - vy a * vy b) + (vz A * vz B - vz a * vz b))
+    by ring.
+  eapply Rle_trans; [apply tri3|]. lra.
+Qed.
+
+(** A computed dot product of two rounded unit vectors (p_a, p_b). *)
+Lemma pa_err : forall ui um ua eta (a b A B : vec) (y : R),
+  0 <= ui <= / 2097152 -> 0 <= um <= / 2097152 -> 0 <= ua <= / 2097152 ->
+  0 <= eta -> eta * 1152921504606846976 <= 1 ->
+  is_unit a -> is_unit b -> vap1 ui eta A a -> vap1 ui eta B b ->
+  fdot_rel um ua eta A B y ->
+  Rabs (y - dot a b) <= (2 * ui + um + 2 * ua) * (1 + / 131072) + 18 * eta.
+Proof.
+  intros ui um ua eta a b A B y Hi Hm Ha He He1 Hua Hub HA HB Hy.
+  pose proof (unit_pair a b Hua Hub) as S1.
+  set (S := Rabs (vx a) * Rabs (vx b) + Rabs (vy a) * Rabs (vy b) + Rabs (vz a) * Rabs (vz b))
+    in *.
+  assert (S0 : 0 <= S).
+  { unfold S. pose proof (Rabs_pos (vx a)). pose proof (Rabs_pos (vy a)).
+    pose proof (Rabs_pos (vz a)). pose proof (Rabs_pos (vx b)).
+    pose proof (Rabs_pos (vy b)). pose proof (Rabs_pos (vz b)). nra. }
+  destruct (dot_in ui eta A a B b Hi He He1 HA HB (unit_bounded a Hua) (unit_bounded b Hub))
+    as [D1 D2]. fold S in D1, D2.
+  pose proof (fdot_err um ua eta A B y Hm Ha He Hy) as F.
+  set (T := Rabs (vx A * vx B) + Rabs (vy A * vy B) + Rabs (vz A * vz B)) in *.
+  set (G := um + 2 * ua) in *.
+  assert (G0 : 0 <= G <= 3 / 2097152) by (unfold G; lra).
+  assert (U1 : ui * ui <= / 2097152 * ui) by (apply Rmult_le_compat_r; lra).
+  assert (U0 : 0 <= ui * ui) by (apply Rmult_le_pos; lra).
+  assert (X1 : (2 * ui + ui * ui) * S <= (2 * ui + ui * ui) * 1)
+    by (apply Rmult_le_compat_l; lra).
+  assert (X2 : T <= 1 + 3 / 2097152 + 9 * eta).
+  { assert ((1 + 2 * ui + ui * ui) * S <= (1 + 2 * ui + ui * ui) * 1)
+      by (apply Rmult_le_compat_l; lra). lra. }
+  assert (X3 : G * (1 + / 524288) * T <= G * (1 + / 524288) * (1 + 3 / 2097152 + 9 * eta))
+    by (apply Rmult_le_compat_l; [apply Rmult_le_pos|]; lra).
+  assert (X4 : G * eta <= 3 / 2097152 * eta) by (apply Rmult_le_compat_r; lra).
+  replace (y - dot a b) with ((y - dot A B) + (dot A B - dot a b)) by ring.
+  eapply Rle_trans; [apply Rabs_triang|].
+  unfold G in *. lra.
+Qed.
+
+(** ** Gouraud, factor by factor *)
+
+Section Gouraud.
+Context (M : fmodel) (K : R) (HM : model_ok M K).
+Context (s : span) (Hua : is_unit (Na s)) (Hub : is_unit (Nb s)) (Hul : is_unit (L s))
+        (Hn1 : (1 <= n s)%nat) (Hn2 : INR (n s) <= 16777216).
+Context (F : fsetup) (HF : gouraud_setup_ok M s F).
+
+Local Notation u := (m_u M).
+Local Notation eta := (m_eta M).
+Local Notation nr := (INR (n s)).
+
+Lemma g_nr : 1 <= nr <= 16777216.
+Proof.
+  split; [apply (le_INR 1); exact Hn1 | exact Hn2].
+Qed.
+
+Lemma g_units : forall k, 0 <= k <= K -> 0 <= k * u <= / 2097152.
+Proof. intros k Hk. destruct (model_unit M K k HM Hk) as [[A B] C]. lra. Qed.
+
+Lemma g_eta : 0 <= eta /\ eta * 1152921504606846976 <= u /\ u <= / 2097152.
+Proof.
+  pose proof HM as (H1 & H2 & H3 & _ & _ & _ & _ & H8 & H9).
+  split; [lra | split; [lra|]].
+  assert (u <= K * u) by (rewrite <- (Rmult_1_l u) at 1; apply Rmult_le_compat_r; lra).
+  lra.
+Qed.
+
+Lemma vap_vap1 : forall vh w, vap M vh w -> vap1 (k_in M * u) eta vh w.
+Proof. intros vh w H. exact H. Qed.
+
+Lemma g_pa_pb :
+  Rabs (fs_pa F - pa s) <= (2 * (k_in M * u) + k_mul M * u + 2 * (k_add M * u)) * (1 + / 131072) + 18 * eta
+  /\ Rabs (fs_pb F - pb s) <= (2 * (k_in M * u) + k_mul M * u + 2 * (k_add M * u)) * (1 + / 131072) + 18 * eta.
+Proof.
+  pose proof HM as (_ & _ & _ & Ki & Ka & Km & Kd & _ & _).
+  destruct HF as ((Ina & Inb & Inl) & Hpa & Hpb & _).
+  pose proof (g_units _ Ki). pose proof (g_units _ Ka). pose proof (g_units _ Km).
+  destruct g_eta as (E1 & E2 & E3).
+  split; eapply pa_err; try eassumption; try lra; apply vap_vap1; assumption.
+Qed.
+
+Lemma g_dp : Rabs (nr * fs_dp F - (fs_pb F - fs_pa F))
+             <= (k_add M * u + k_div M * u) * (2 + / 65536) + 16777218 * eta.
+Proof.
+  pose proof HM as (_ & _ & _ & Ki & Ka & Km & Kd & _ & _).
+  destruct HF as (_ & _ & _ & w & Hw & Hdp).
+  pose proof (g_units _ Ki). pose proof (g_units _ Ka). pose proof (g_units _ Km).
+  pose proof (g_units _ Kd).
+  destruct g_eta as (E1 & E2 & E3). pose proof g_nr as Hn.
+  destruct g_pa_pb as [P1 P2].
+  pose proof (pa_le s Hua Hul). pose proof (pb_le s Hub Hul).
+  set (ui := k_in M * u) in *. set (um := k_mul M * u) in *. set (ua := k_add M * u) in *.
+  set (ud := k_div M * u) in *.
+  set (X := fs_pb F - fs_pa F).
+  assert (BX : Rabs X <= 2 + / 131072).
+  { unfold X. replace (fs_pb F - fs_pa F) with ((pb s - pa s) + (fs_pb F - pb s) + - (fs_pa F - pa s))
+      by ring.
+    eapply Rle_trans; [apply tri3|]. rewrite Rabs_Ropp.
+    pose proof (absdiff (pb s) (pa s)). lra. }
+  unfold ap_add, ap_div, approx, ap1 in Hw, Hdp. fold ua ud X in Hw, Hdp.
+  assert (W1 : ua * Rabs X <= ua * (2 + / 131072)) by (apply Rmult_le_compat_l; lra).
+  assert (BW : Rabs w <= (2 + / 131072) * (1 + / 2097152) + eta).
+  { pose proof (abs_near _ _ _ Hw).
+    assert (ua * Rabs X <= / 2097152 * (2 + / 131072)) by
+      (apply Rmult_le_compat; try lra; apply Rabs_pos). nra. }
+  assert (HD : Rabs (nr * fs_dp F - w) <= ud * Rabs w + nr * eta).
+  { replace (nr * fs_dp F - w) with (nr * (fs_dp F - w / nr)) by (field; lra).
+    rewrite Rabs_mult, (Rabs_pos_eq nr) by lra.
+    replace (ud * Rabs w) with (nr * (ud * Rabs (w / nr))).
+    - rewrite <- Rmult_plus_distr_l. apply Rmult_le_compat_l; lra.
+    - unfold Rdiv. rewrite Rabs_mult, (Rabs_pos_eq (/ nr)) by (apply Rlt_le, Rinv_0_lt_compat; lra).
+      field. lra. }
+  assert (W2 : ud * Rabs w <= ud * ((2 + / 131072) * (1 + / 2097152) + eta))
+    by (apply Rmult_le_compat_l; lra).
+  assert (W3 : ud * eta <= eta) by (rewrite <- (Rmult_1_l eta) at 2; apply Rmult_le_compat_r; lra).
+  assert (W4 : nr * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra).
+  replace (nr * fs_dp F - X) with ((nr * fs_dp F - w) + (w - X)) by ring.
+  eapply Rle_trans; [apply Rabs_triang|]. lra.
+Qed.
+
+Lemma g_ideal : forall i, (i <= n s)%nat ->
+  Rabs (fs_pa F + INR i * fs_dp F - gouraud s i) <=
+  (2 * (k_in M * u) + k_mul M * u + 2 * (k_add M * u)) * (1 + / 131072)
+  + (k_add M * u + k_div M * u) * (2 + / 65536) + 16777236 * eta.
+Proof.
+  intros i Hi. pose proof g_nr as Hn.
+  assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
+  destruct g_pa_pb as [P1 P2]. pose proof g_dp as P3.
+  unfold gouraud, dp.
+  replace (fs_pa F + INR i * fs_dp F - (pa s + INR i * ((pb s - pa s) / nr)))
+    with ((1 - INR i / nr) * (fs_pa F - pa s) + INR i / nr * (fs_pb F - pb s)
+          + INR i / nr * (nr * fs_dp F - (fs_pb F - fs_pa F)) - 0 * 0)
+    by (field; lra).
+  eapply Rle_trans.
+  { apply comb_bound; [apply theta_rng; lra | lra | apply P1 | apply P2 | apply P3
+                      | rewrite Rabs_R0; apply Rle_refl]. }
+  lra.
+Qed.
+
+Lemma g_final : forall G, gouraud_run M F (n s) G ->
+  nr * (k_add M * u) <= / 2048 ->
+  forall i, (i <= n s)%nat ->
+  Rabs (G i - gouraud s i) <=
+  (10006 / 10000 * k_add M * nr + (20001 / 10000 * k_in M + 10001 / 10000 * k_mul M
+   + 40001 / 10000 * k_add M + 20001 / 10000 * k_div M + / 1000000)) * u.
+Proof.
+  intros G [HG0 HG] Hnu i Hi.
+  pose proof HM as (_ & _ & _ & Ki & Ka & Km & Kd & _ & _).
+  pose proof (g_units _ Ki). pose proof (g_units _ Ka). pose proof (g_units _ Km).
+  pose proof (g_units _ Kd).
+  destruct g_eta as (E1 & E2 & E3). pose proof g_nr as Hn.
+  assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
+  assert (Hne : nr * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra).
+  pose proof (gseq_err (k_add M * u) eta G (fs_dp F) (n s) (10006 / 10000) ltac:(lra) E1
+                ltac:(lra) HG) as L.
+  assert (Hid : forall j, (j <= n s)%nat -> Rabs (fs_pa F + INR j * fs_dp F) <= 1 + / 65536).
+  { intros j Hj. pose proof (g_ideal j Hj) as G0. pose proof (gouraud_le s Hua Hub Hul Hn1 j Hj).
+    pose proof (abs_near _ _ _ G0). lra. }
+  rewrite HG0 in L.
+  specialize (L ltac:(intros j Hj; pose proof (Hid (S j) Hj);
+     assert (nr * (k_add M * u * (10006 / 10000) + eta) <= / 2048 * (10006 / 10000) + 16777216 * eta)
+       by lra;
+     lra) i Hi).
+  pose proof (g_ideal i Hi) as G0.
+  replace (G i - gouraud s i)
+    with ((G i - (fs_pa F + INR i * fs_dp F)) + (fs_pa F + INR i * fs_dp F - gouraud s i)) by ring.
+  eapply Rle_trans; [apply Rabs_triang|].
+  assert (K4 : INR i * (k_add M * u * (10006 / 10000) + eta)
+               <= nr * (k_add M * u * (10006 / 10000) + eta))
+    by (apply Rmult_le_compat_r; nra).
+  assert (K5 : nr * eta * 1152921504606846976 <= 16777216 * u) by nra.
+  lra.
+Qed.
+
+End Gouraud.
+
+Lemma nat_R : forall (m : nat) (z : Z), (Z.of_nat m <= z)%Z -> INR m <= IZR z.
+Proof. intros m z H. rewrite INR_IZR_INZ. apply IZR_le. exact H. Qed.
+
+(** ** Gouraud: the generic bound and the profiles *)
+
+(** Any model with the size conditions, 1 <= n <= 2^24 and n k_add u <= 2^-11. *)
+Lemma profile_gouraud_generic : forall (M : fmodel) (K : R), model_ok M K ->
+  forall (s : span) (F : fsetup) (G : nat -> R),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  (1 <= n s)%nat -> INR (n s) <= 16777216 -> INR (n s) * (k_add M * m_u M) <= / 2048 ->
+  gouraud_setup_ok M s F -> gouraud_run M F (n s) G ->
+  forall i, (i <= n s)%nat ->
+  Rabs (G i - gouraud s i) <=
+  (10006 / 10000 * k_add M * INR (n s) + (20001 / 10000 * k_in M + 10001 / 10000 * k_mul M
+   + 40001 / 10000 * k_add M + 20001 / 10000 * k_div M + / 1000000)) * m_u M.
+Proof.
+  intros M K HM s F G Ha Hb Hl Hn1 Hn2 Hnu HF HG i Hi.
+  exact (g_final M K HM s Ha Hb Hl Hn1 Hn2 F HF G HG Hnu i Hi).
+Qed.
+
+(* Note: ieee profile, binary32: round to nearest (k = 1), division correctly
+   rounded or reciprocal then product (k = 2 + 2^-20), subnormals kept. *)
+(** Gouraud, ieee profile, binary32: |G_i - gouraud i| <= (1.0006 n + 11.001) 2^-24. *)
+Theorem profile_ieee_gouraud_binary32 : forall (s : span) (F : fsetup) (G : nat -> R),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) -> (1 <= n s <= 4096)%nat ->
+  gouraud_setup_ok ieee32 s F -> gouraud_run ieee32 F (n s) G ->
+  forall i, (i <= n s)%nat ->
+  Rabs (G i - gouraud s i) <= (10006 / 10000 * INR (n s) + 11001 / 1000) * bpow radix2 (-24).
+Proof.
+  intros s F G Ha Hb Hl Hn HF HG i Hi.
+  assert (Hn' : INR (n s) <= 4096) by (apply (nat_R _ 4096); lia).
+  assert (H1 : 0 <= INR (n s)) by apply pos_INR.
+  eapply Rle_trans.
+  { apply (profile_gouraud_generic ieee32 _ ieee32_ok s F G Ha Hb Hl ltac:(lia)); try assumption.
+    - lra.
+    - unfold ieee32; cbn [m_u k_add]. rewrite u24. lra. }
+  unfold ieee32; cbn [m_u k_in k_add k_mul k_div].
+  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
+Qed.
+
+(* Note: ieee profile, binary64 (u = 2^-53, eta = 2^-1075). *)
+(** Gouraud, ieee profile, binary64: |G_i - gouraud i| <= (1.0006 n + 11.001) 2^-53. *)
+Theorem profile_ieee_gouraud_binary64 : forall (s : span) (F : fsetup) (G : nat -> R),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) -> (1 <= n s <= 4096)%nat ->
+  gouraud_setup_ok ieee64 s F -> gouraud_run ieee64 F (n s) G ->
+  forall i, (i <= n s)%nat ->
+  Rabs (G i - gouraud s i) <= (10006 / 10000 * INR (n s) + 11001 / 1000) * bpow radix2 (-53).
+Proof.
+  intros s F G Ha Hb Hl Hn HF HG i Hi.
+  assert (Hn' : INR (n s) <= 4096) by (apply (nat_R _ 4096); lia).
+  assert (H1 : 0 <= INR (n s)) by apply pos_INR.
+  eapply Rle_trans.
+  { apply (profile_gouraud_generic ieee64 _ ieee64_ok s F G Ha Hb Hl ltac:(lia)); try assumption.
+    - lra.
+    - unfold ieee64; cbn [m_u k_add]. rewrite u53. lra. }
+  unfold ieee64; cbn [m_u k_in k_add k_mul k_div].
+  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
+Qed.
+
+(* Note: ieee profile, binary64, spans up to 2^24 pixels. *)
+(** Gouraud, ieee profile, binary64, n <= 2^24: |G_i - gouraud i| <= (1.0006 n + 11.001) 2^-53. *)
+Theorem profile_ieee_gouraud_binary64_large : forall (s : span) (F : fsetup) (G : nat -> R),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  (1 <= n s)%nat -> (Z.of_nat (n s) <= 16777216)%Z ->
+  gouraud_setup_ok ieee64 s F -> gouraud_run ieee64 F (n s) G ->
+  forall i, (i <= n s)%nat ->
+  Rabs (G i - gouraud s i) <= (10006 / 10000 * INR (n s) + 11001 / 1000) * bpow radix2 (-53).
+Proof.
+  intros s F G Ha Hb Hl Hn1 Hn HF HG i Hi.
+  assert (Hn' : INR (n s) <= 16777216) by (apply nat_R; exact Hn).
+  assert (H1 : 0 <= INR (n s)) by apply pos_INR.
+  eapply Rle_trans.
+  { apply (profile_gouraud_generic ieee64 _ ieee64_ok s F G Ha Hb Hl Hn1); try assumption.
+    unfold ieee64; cbn [m_u k_add]. rewrite u53. lra. }
+  unfold ieee64; cbn [m_u k_in k_add k_mul k_div].
+  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
+Qed.
+
+(* Note: shader profile (Vulkan / WGSL float32): add, sub, mul within 2u
+   (nearest or toward zero), division within 2.5 ulp (5u), inputs and results
+   may be flushed (eta = 2^-126), any order, fused or not. *)
+(** Gouraud, shader profile: |G_i - gouraud i| <= (2.0012 n + 24.002) 2^-24. *)
+Theorem profile_shader_gouraud_binary32 : forall (s : span) (F : fsetup) (G : nat -> R),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) -> (1 <= n s <= 4096)%nat ->
+  gouraud_setup_ok shader32 s F -> gouraud_run shader32 F (n s) G ->
+  forall i, (i <= n s)%nat ->
+  Rabs (G i - gouraud s i) <= (20012 / 10000 * INR (n s) + 24002 / 1000) * bpow radix2 (-24).
+Proof.
+  intros s F G Ha Hb Hl Hn HF HG i Hi.
+  assert (Hn' : INR (n s) <= 4096) by (apply (nat_R _ 4096); lia).
+  assert (H1 : 0 <= INR (n s)) by apply pos_INR.
+  eapply Rle_trans.
+  { apply (profile_gouraud_generic shader32 _ shader32_ok s F G Ha Hb Hl ltac:(lia)); try assumption.
+    - lra.
+    - unfold shader32; cbn [m_u k_add]. rewrite u24. lra. }
+  unfold shader32; cbn [m_u k_in k_add k_mul k_div].
+  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
+Qed.
+
+(** ** Corrected Euler: the set-up, with unit v for inputs, additions and
+    products and unit d for divisions *)
+
+Section CE.
+Context (v d eta : R) (Hv : small_ok v eta) (Hdv : small_ok d eta).
+Context (s : span) (Hua : is_unit (Na s)) (Hub : is_unit (Nb s)) (Hul : is_unit (L s))
+        (Hn1 : (1 <= n s)%nat) (Hn2 : INR (n s) <= 16777216).
+Context (na nb l kk : vec) (fa fpa fc fd fpb fdqb fdia fdib fds fpn feps fdeps ft0 : R).
+Context (Ina : vap1 v eta na (Na s)) (Inb : vap1 v eta nb (Nb s)) (Inl : vap1 v eta l (L s)).
+Context (tx ty tz : R)
+        (Htx : ap1 v eta tx (vx nb - vx na)) (Hkx : ap1 d eta (vx kk) (tx / INR (n s)))
+        (Hty : ap1 v eta ty (vy nb - vy na)) (Hky : ap1 d eta (vy kk) (ty / INR (n s)))
+        (Htz : ap1 v eta tz (vz nb - vz na)) (Hkz : ap1 d eta (vz kk) (tz / INR (n s))).
+Context (Ha : fdot_rel v v eta kk l fa) (Hpa : fdot_rel v v eta na l fpa)
+        (Hc : fdot_rel v v eta kk kk fc) (e : R) (He : fdot_rel v v eta kk na e)
+        (Hd : ap1 v eta fd (2 * e)) (Hpb : fdot_rel v v eta nb l fpb).
+Context (q : R) (Hq : ap1 v eta q (2 * INR (n s) * fc)) (Hdqb : ap1 v eta fdqb (q + fd)).
+Context (h1 x1 : R) (Hh1 : ap1 d eta h1 (fpa / 2)) (Hx1 : ap1 v eta x1 (h1 * fd))
+        (Hdia : ap1 v eta fdia (fa - x1)).
+Context (h2 x2 : R) (Hh2 : ap1 d eta h2 (fpb / 2)) (Hx2 : ap1 v eta x2 (h2 * fdqb))
+        (Hdib : ap1 v eta fdib (fa - x2)).
+Context (w : R) (Hw : ap1 v eta w (fdib - fdia)) (Hds : ap1 d eta fds (w / INR (n s))).
+Context (q2 q3 : R) (Hq2 : ap1 v eta q2 (INR (n s) * fdia))
+        (Hq3 : ap1 v eta q3 (INR (n s) * (INR (n s) - 1) / 2 * fds))
+        (Hpn : sum3_rel v eta fpa q2 q3 fpn).
+Context (Heps : ap1 v eta feps (fpn - fpb)) (Hdeps : ap1 d eta fdeps (feps / INR (n s)))
+        (Ht0 : ap1 v eta ft0 (fdia - fdeps)).
+
+Local Notation nr := (INR (n s)).
+Local Notation Dl := (vsub (Nb s) (Na s)).
+Local Notation t36 := (/ 68719476736).
+
+Lemma K_nr : 1 <= nr <= 16777216.
+Proof. split; [apply (le_INR 1); exact Hn1 | exact Hn2]. Qed.
+
+Ltac basics :=
+  pose proof K_nr as Hnr; pose proof (v_pos v eta Hv) as Hu0;
+  pose proof (v_small v eta Hv) as Hu1; pose proof (v_pos d eta Hdv) as Hd0;
+  pose proof (v_small d eta Hdv) as Hd1.
+
+(** Weights v w1 + d w2 of the componentwise errors (w1, w2 unit-free). *)
+Definition vlin (x y : R) (w1 w2 : vec) : vec :=
+  mkV (x * vx w1 + y * vx w2) (x * vy w1 + y * vy w2) (x * vz w1 + y * vz w2).
+Definition vzero : vec := mkV 0 0 0.
+Definition wKv (a0 b0 : vec) : vec :=
+  mkV (2001 / 1000 * (Rabs (vx a0) + Rabs (vx b0)) + / 268435456)
+      (2001 / 1000 * (Rabs (vy a0) + Rabs (vy b0)) + / 268435456)
+      (2001 / 1000 * (Rabs (vz a0) + Rabs (vz b0)) + / 268435456).
+Definition wKd (a0 b0 : vec) : vec :=
+  mkV (1001 / 1000 * (Rabs (vx a0) + Rabs (vx b0)) + / 268435456)
+      (1001 / 1000 * (Rabs (vy a0) + Rabs (vy b0)) + / 268435456)
+      (1001 / 1000 * (Rabs (vz a0) + Rabs (vz b0)) + / 268435456).
+
+Lemma vzero_bounded : wbounded vzero.
+Proof. unfold wbounded, vzero; cbn [vx vy vz]. repeat split; lra. Qed.
+
+Lemma wKv_bounded : forall a0 b0, vbounded a0 1 -> vbounded b0 1 -> wbounded (wKv a0 b0).
+Proof.
+  intros a0 b0 [A1 [A2 A3]] [B1 [B2 B3]]. unfold wbounded, wKv; cbn [vx vy vz].
+  pose proof (Rabs_pos (vx a0)). pose proof (Rabs_pos (vy a0)). pose proof (Rabs_pos (vz a0)).
+  pose proof (Rabs_pos (vx b0)). pose proof (Rabs_pos (vy b0)). pose proof (Rabs_pos (vz b0)).
+  repeat split; lra.
+Qed.
+
+Lemma wKd_bounded : forall a0 b0, vbounded a0 1 -> vbounded b0 1 -> wbounded (wKd a0 b0).
+Proof.
+  intros a0 b0 [A1 [A2 A3]] [B1 [B2 B3]]. unfold wbounded, wKd; cbn [vx vy vz].
+  pose proof (Rabs_pos (vx a0)). pose proof (Rabs_pos (vy a0)). pose proof (Rabs_pos (vz a0)).
+  pose proof (Rabs_pos (vx b0)). pose proof (Rabs_pos (vy b0)). pose proof (Rabs_pos (vz b0)).
+  repeat split; lra.
+Qed.
+
+Lemma K_in_vec : forall vh w0, vap1 v eta vh w0 -> vapprox 1 1 vh w0 (vlin v d (wIn w0) vzero).
+Proof.
+  intros vh w0 [H1 [H2 H3]]. unfold vapprox, vlin, wIn, vzero; cbn [vx vy vz].
+  rewrite !Rmult_1_l, !Rmult_0_r, !Rplus_0_r.
+  repeat split; apply (FloatModelK.in_comp v eta Hv); assumption.
+Qed.
+
+(** One component of n k: input, subtraction (unit v), division (unit d). *)
+Lemma K_comp : forall (m a0 b0 ra rb t kj : R), 1 <= m <= 16777216 -> Rabs a0 <= 1 -> Rabs b0 <= 1 ->
+  ap1 v eta ra a0 -> ap1 v eta rb b0 -> ap1 v eta t (rb - ra) -> ap1 d eta kj (t / m) ->
+  Rabs (m * kj - (b0 - a0)) <=
+  v * (2001 / 1000 * (Rabs a0 + Rabs b0) + / 268435456)
+  + d * (1001 / 1000 * (Rabs a0 + Rabs b0) + / 268435456).
+Proof.
+  intros m a0 b0 ra rb t kj Hm Ha0 Hb0 Hra Hrb Ht Hkj.
+  pose proof (v_pos v eta Hv). pose proof (v_small v eta Hv).
+  pose proof (v_pos d eta Hdv). pose proof (v_small d eta Hdv).
+  pose proof (Rabs_pos a0). pose proof (Rabs_pos b0).
+  pose proof (FloatModelK.in_comp v eta Hv _ _ Hra) as F1.
+  pose proof (FloatModelK.in_comp v eta Hv _ _ Hrb) as F2.
+  assert (D1 : Rabs (rb - ra) <= Rabs a0 + Rabs b0 + Rabs (ra - a0) + Rabs (rb - b0)).
+  { replace (rb - ra) with ((b0 - a0) + (rb - b0) + - (ra - a0)) by ring.
+    eapply Rle_trans; [apply tri3|]. rewrite Rabs_Ropp. pose proof (absdiff b0 a0). lra. }
+  pose proof (ap_1 v eta Hv t (rb - ra) (Rabs (rb - ra)) Ht (Rle_refl _)) as F3.
+  assert (HK : m * (t / m) = t) by (field; lra).
+  pose proof (ap_sc d eta Hdv m kj (t / m) (Rabs t) Hkj ltac:(lra)
+                ltac:(rewrite HK; lra)) as F4.
+  rewrite HK in F4.
+  set (sa := Rabs a0 + Rabs b0) in *.
+  assert (P1 : v * sa <= / 2097152 * sa) by (apply Rmult_le_compat_r; unfold sa; lra).
+  assert (R1 : Rabs (rb - ra) <= (1 + / 2097152) * sa + / 1125899906842624).
+  { assert (v * / 1073741824 <= / 2097152 * / 1073741824) by (apply Rmult_le_compat_r; lra).
+    unfold sa in *. lra. }
+  assert (P2 : v * Rabs (rb - ra) <= v * ((1 + / 2097152) * sa + / 1125899906842624))
+    by (apply Rmult_le_compat_l; lra).
+  assert (T1 : Rabs t <= (1 + / 1048576) * sa + / 1099511627776).
+  { pose proof (abs_near _ _ _ F3).
+    assert (v * Rabs (rb - ra) <= / 2097152 * Rabs (rb - ra))
+      by (apply Rmult_le_compat_r; [apply Rabs_pos | lra]).
+    assert (v * / 68719476736 <= / 2097152 * / 68719476736) by (apply Rmult_le_compat_r; lra).
+    assert (0 <= sa <= 2) by (unfold sa; lra). lra. }
+  assert (P3 : d * Rabs t <= d * ((1 + / 1048576) * sa + / 1099511627776))
+    by (apply Rmult_le_compat_l; lra).
+  assert (P4 : v * sa <= / 2097152 * sa) by (apply Rmult_le_compat_r; unfold sa; lra).
+  assert (P5 : 0 <= v * sa) by (apply Rmult_le_pos; unfold sa; lra).
+  assert (P6 : 0 <= d * sa) by (apply Rmult_le_pos; unfold sa; lra).
+  replace (m * kj - (b0 - a0))
+    with ((m * kj - t) + (t - (rb - ra)) + (rb - b0) + - (ra - a0)) by ring.
+  eapply Rle_trans; [apply tri4|]. rewrite Rabs_Ropp. unfold sa in *. lra.
+Qed.
+
+Lemma K_k_vec : vapprox 1 nr kk Dl (vlin v d (wKv (Na s) (Nb s)) (wKd (Na s) (Nb s))).
+Proof.
+  pose proof K_nr as Hm.
+  destruct (unit_bounded _ Hua) as [A1 [A2 A3]].
+  destruct (unit_bounded _ Hub) as [B1 [B2 B3]].
+  destruct Ina as [I1 [I2 I3]]. destruct Inb as [J1 [J2 J3]].
+  unfold vapprox, vlin, wKv, wKd, vsub; cbn [vx vy vz]. rewrite !Rmult_1_l.
+  repeat split; eapply K_comp; eassumption.
+Qed.
+
+(** The dot-product lemma with weights v w1 + d w2. *)
+Lemma K_dot : forall (lam mu y Sb Cv Cd : R) (ah bh a0 b0 wa1 wa2 wb1 wb2 : vec),
+  fdot_rel v v eta ah bh y -> 0 < lam -> 0 < mu -> lam * mu <= 281474976710656 ->
+  vapprox 1 lam ah a0 (vlin v d wa1 wa2) -> vapprox 1 mu bh b0 (vlin v d wb1 wb2) ->
+  vbounded a0 2 -> vbounded b0 2 -> wbounded wa1 -> wbounded wa2 -> wbounded wb1 -> wbounded wb2 ->
+  Rabs (vx a0) * Rabs (vx b0) + Rabs (vy a0) * Rabs (vy b0) + Rabs (vz a0) * Rabs (vz b0) <= Sb ->
+  Sb <= 12 ->
+  wsum0 a0 b0 wa1 wb1 + 3 * Sb + / 1000 <= Cv -> wsum0 a0 b0 wa2 wb2 + / 1000 <= Cd ->
+  Rabs (lam * mu * y - dot a0 b0) <= Cv * v + Cd * d.
+Proof.
+  intros lam mu y Sb Cv Cd ah bh a0 b0 wa1 wa2 wb1 wb2 Hy Hl Hm Hlm HA HB Ba Bb
+    W1 W2 W3 W4 HS HS12 C1 C2.
+  pose proof (v_pos v eta Hv). pose proof (v_small v eta Hv).
+  pose proof (v_pos d eta Hdv). pose proof (v_small d eta Hdv).
+  pose proof (e_pos v eta Hv). pose proof (e_small v eta Hv).
+  assert (WL : forall w1 w2, wbounded w1 -> wbounded w2 -> wle (vlin v d w1 w2) (8 * (v + d))).
+  { intros w1 w2 [X1 [X2 X3]] [Y1 [Y2 Y3]]. unfold wle, vlin; cbn [vx vy vz].
+    repeat split; nra. }
+  pose proof (fdot_abs v eta Hv lam mu y (8 * (v + d)) ah bh a0 b0 _ _ Hy Hl Hm Hlm HA HB Ba Bb
+                (WL _ _ W1 W2) (WL _ _ W3 W4)) as F.
+  assert (E : wsum0 a0 b0 (vlin v d wa1 wa2) (vlin v d wb1 wb2)
+              = v * wsum0 a0 b0 wa1 wb1 + d * wsum0 a0 b0 wa2 wb2)
+    by (unfold wsum0, vlin; cbn [vx vy vz]; ring).
+  rewrite E in F.
+  set (S := Rabs (vx a0) * Rabs (vx b0) + Rabs (vy a0) * Rabs (vy b0) + Rabs (vz a0) * Rabs (vz b0))
+    in *.
+  assert (S0 : 0 <= S).
+  { unfold S. pose proof (Rabs_pos (vx a0)). pose proof (Rabs_pos (vy a0)).
+    pose proof (Rabs_pos (vz a0)). pose proof (Rabs_pos (vx b0)).
+    pose proof (Rabs_pos (vy b0)). pose proof (Rabs_pos (vz b0)). nra. }
+  assert (V1 : v * (wsum0 a0 b0 wa1 wb1 + 3 * Sb + / 1000) <= v * Cv)
+    by (apply Rmult_le_compat_l; lra).
+  assert (V2 : d * (wsum0 a0 b0 wa2 wb2 + / 1000) <= d * Cd) by (apply Rmult_le_compat_l; lra).
+  assert (F1 : v * S <= v * Sb) by (apply Rmult_le_compat_l; lra).
+  assert (F2 : v * Sb <= v * 12) by (apply Rmult_le_compat_l; lra).
+  assert (F3 : (v + d) * (v + d) <= / 1048576 * (v + d)) by (apply Rmult_le_compat_r; lra).
+  assert (F4 : v * (v + d) <= / 2097152 * (v + d)) by (apply Rmult_le_compat_r; lra).
+  assert (F5 : v * ((v + d) * (v + d)) <= / 2097152 * (v + d)).
+  { assert ((v + d) * (v + d) <= v + d) by lra.
+    apply Rmult_le_compat; try lra. apply Rmult_le_pos; lra. }
+  assert (F6 : 0 <= v * S) by (apply Rmult_le_pos; lra).
+  eapply Rle_trans; [exact F|]. lra.
+Qed.
+
+Ltac unit_facts :=
+  pose proof (unit_bounded _ Hua) as [UA1 [UA2 UA3]];
+  pose proof (unit_bounded _ Hub) as [UB1 [UB2 UB3]];
+  pose proof (unit_bounded _ Hul) as [UL1 [UL2 UL3]];
+  pose proof (diff_bounded _ _ Hua Hub) as [UD1 [UD2 UD3]];
+  pose proof (unit_pair _ _ Hua Hul); pose proof (unit_pair _ _ Hub Hul);
+  pose proof (unit_pair _ _ Hub Hua); pose proof (unit_abs_sq _ Hua);
+  pose proof (diff_pair _ _ _ Hua Hub Hul); pose proof (diff_pair _ _ _ Hua Hub Hua);
+  pose proof (diff_pair _ _ _ Hua Hub Hub); pose proof (diff_abs_sq _ _ Hua Hub);
+  pose proof (Rabs_pos (vx (Na s))); pose proof (Rabs_pos (vy (Na s)));
+  pose proof (Rabs_pos (vz (Na s))); pose proof (Rabs_pos (vx (Nb s)));
+  pose proof (Rabs_pos (vy (Nb s))); pose proof (Rabs_pos (vz (Nb s)));
+  pose proof (Rabs_pos (vx (L s))); pose proof (Rabs_pos (vy (L s)));
+  pose proof (Rabs_pos (vz (L s))); pose proof (Rabs_pos (vx (vsub (Nb s) (Na s))));
+  pose proof (Rabs_pos (vy (vsub (Nb s) (Na s)))); pose proof (Rabs_pos (vz (vsub (Nb s) (Na s)))).
+
+Ltac wKb := first [ apply vzero_bounded
+  | apply (wIn_bounded _ (unit_bounded _ Hua)) | apply (wIn_bounded _ (unit_bounded _ Hub))
+  | apply (wIn_bounded _ (unit_bounded _ Hul))
+  | apply (wKv_bounded _ _ (unit_bounded _ Hua) (unit_bounded _ Hub))
+  | apply (wKd_bounded _ _ (unit_bounded _ Hua) (unit_bounded _ Hub)) ].
+
+Lemma K_pa : Rabs (fpa - pa s) <= 5002 / 1000 * v + 1 / 1000 * d.
+Proof.
+  unit_facts.
+  pose proof (K_dot 1 1 fpa 1 (5002 / 1000) (1 / 1000) _ _ _ _ _ _ _ _ Hpa ltac:(lra) ltac:(lra)
+    ltac:(lra) (K_in_vec _ _ Ina) (K_in_vec _ _ Inl) (vb12 _ (unit_bounded _ Hua))
+    (vb12 _ (unit_bounded _ Hul)) ltac:(wKb) ltac:(wKb) ltac:(wKb) ltac:(wKb)) as HD.
+  rewrite !Rmult_1_l in HD. apply HD; unfold wsum0, wIn, vzero; cbn [vx vy vz]; lra.
+Qed.
+
+Lemma K_pb : Rabs (fpb - pb s) <= 5002 / 1000 * v + 1 / 1000 * d.
+Proof.
+  unit_facts.
+  pose proof (K_dot 1 1 fpb 1 (5002 / 1000) (1 / 1000) _ _ _ _ _ _ _ _ Hpb ltac:(lra) ltac:(lra)
+    ltac:(lra) (K_in_vec _ _ Inb) (K_in_vec _ _ Inl) (vb12 _ (unit_bounded _ Hub))
+    (vb12 _ (unit_bounded _ Hul)) ltac:(wKb) ltac:(wKb) ltac:(wKb) ltac:(wKb)) as HD.
+  rewrite !Rmult_1_l in HD. apply HD; unfold wsum0, wIn, vzero; cbn [vx vy vz]; lra.
+Qed.
+
+Lemma K_a : Rabs (nr * fa - dot Dl (L s)) <= 1201 / 100 * v + 201 / 100 * d.
+Proof.
+  unit_facts. pose proof K_nr.
+  pose proof (K_dot nr 1 fa 2 (1201 / 100) (201 / 100) _ _ _ _ _ _ _ _ Ha ltac:(lra)
+    ltac:(lra) ltac:(lra) K_k_vec (K_in_vec _ _ Inl) (diff_bounded _ _ Hua Hub)
+    (vb12 _ (unit_bounded _ Hul)) ltac:(wKb) ltac:(wKb) ltac:(wKb) ltac:(wKb)) as HD.
+  rewrite Rmult_1_r in HD. apply HD; unfold wsum0, wIn, wKv, wKd, vzero; cbn [vx vy vz]; lra.
+Qed.
+
+Lemma K_c : Rabs (nr * nr * fc - dot Dl Dl) <= 2802 / 100 * v + 801 / 100 * d.
+Proof.
+  unit_facts. pose proof K_nr.
+  assert (nr * nr <= 281474976710656) by nra.
+  pose proof (K_dot nr nr fc 4 (2802 / 100) (801 / 100) _ _ _ _ _ _ _ _ Hc
+    ltac:(lra) ltac:(lra) ltac:(lra) K_k_vec K_k_vec (diff_bounded _ _ Hua Hub)
+    (diff_bounded _ _ Hua Hub) ltac:(wKb) ltac:(wKb) ltac:(wKb) ltac:(wKb)) as HD.
+  apply HD; unfold wsum0, wKv, wKd; cbn [vx vy vz]; lra.
+Qed.
+
+Lemma K_d0 : Rabs (nr * e - dot Dl (Na s)) <= 1201 / 100 * v + 201 / 100 * d.
+Proof.
+  unit_facts. pose proof K_nr.
+  pose proof (K_dot nr 1 e 2 (1201 / 100) (201 / 100) _ _ _ _ _ _ _ _ He ltac:(lra)
+    ltac:(lra) ltac:(lra) K_k_vec (K_in_vec _ _ Ina) (diff_bounded _ _ Hua Hub)
+    (vb12 _ (unit_bounded _ Hua)) ltac:(wKb) ltac:(wKb) ltac:(wKb) ltac:(wKb)) as HD.
+  rewrite Rmult_1_r in HD. apply HD; unfold wsum0, wIn, wKv, wKd, vzero; cbn [vx vy vz]; lra.
+Qed.
+
+Lemma K_dl_dd : 0 <= dot Dl Dl <= 4.
+Proof.
+  split; [|apply diff_sq; assumption].
+  unfold dot. pose proof (Rle_0_sqr (vx Dl)). pose proof (Rle_0_sqr (vy Dl)).
+  pose proof (Rle_0_sqr (vz Dl)). unfold Rsqr in *. lra.
+Qed.
+
+Lemma K_dl_sum : dot Dl Dl + dot Dl (Na s) = dot Dl (Nb s).
+Proof. unfold dot, vsub; cbn [vx vy vz]. ring. Qed.
+
+Lemma K_d : Rabs (nr * fd - 2 * dot Dl (Na s)) <= 2803 / 100 * v + 402 / 100 * d.
+Proof.
+  basics. pose proof K_d0 as H0. pose proof (dl_dot_le s Hua Hub (Na s) Hua) as H1.
+  eapply Rle_trans.
+  { apply (ap_step v eta Hv nr fd (2 * e) (2 * (nr * e)) _ (2402 / 100 * v + 402 / 100 * d)
+             (4001 / 1000) Hd); [lra | ring | | ].
+    - rewrite <- Rmult_minus_distr_l, Rabs_mult, (Rabs_pos_eq 2) by lra. lra.
+    - rewrite Rabs_mult, (Rabs_pos_eq 2) by lra. lra. }
+  lra.
+Qed.
+
+Lemma K_c2 : Rabs (nr * q - 2 * dot Dl Dl) <= 6405 / 100 * v + 1602 / 100 * d.
+Proof.
+  basics. pose proof K_c as H0. pose proof K_dl_dd as H1.
+  eapply Rle_trans.
+  { apply (ap_step v eta Hv nr q (2 * nr * fc) (2 * (nr * nr * fc)) _
+             (5604 / 100 * v + 1602 / 100 * d) (8001 / 1000) Hq); [lra | ring | | ].
+    - rewrite <- Rmult_minus_distr_l, Rabs_mult, (Rabs_pos_eq 2) by lra. lra.
+    - rewrite Rabs_mult, (Rabs_pos_eq 2), Rabs_pos_eq by lra. lra. }
+  lra.
+Qed.
+
+Lemma K_qb : Rabs (nr * fdqb - 2 * dot Dl (Nb s)) <= 9609 / 100 * v + 2004 / 100 * d.
+Proof.
+  basics. pose proof K_c2 as H0. pose proof K_d as H1.
+  pose proof (dl_dot_le s Hua Hub (Nb s) Hub) as H2.
+  eapply Rle_trans.
+  { apply (ap_step v eta Hv nr fdqb (q + fd) (nr * q + nr * fd) _
+             (9208 / 100 * v + 2004 / 100 * d) (4001 / 1000) Hdqb); [lra | ring | | ].
+    - rewrite <- K_dl_sum.
+      replace (nr * q + nr * fd - 2 * (dot Dl Dl + dot Dl (Na s)))
+        with ((nr * q - 2 * dot Dl Dl) + (nr * fd - 2 * dot Dl (Na s))) by ring.
+      eapply Rle_trans; [apply Rabs_triang|]. lra.
+    - rewrite Rabs_mult, (Rabs_pos_eq 2) by lra. lra. }
+  lra.
+Qed.
+
+Lemma K_h : forall (x X h : R), ap1 d eta h (X / 2) -> Rabs x <= 1 ->
+  Rabs (X - x) <= 5002 / 1000 * v + 1 / 1000 * d ->
+  Rabs (h - x / 2) <= 2501 / 1000 * v + 502 / 1000 * d.
+Proof.
+  intros x X h Hh Hx HX. basics.
+  pose proof (ap_step d eta Hdv 1 h (X / 2) (X / 2) (x / 2) (2501 / 1000 * v + 5 / 10000 * d)
+                (501 / 1000) Hh ltac:(lra) ltac:(ring)) as H.
+  rewrite Rmult_1_l in H. eapply Rle_trans; [apply H|lra].
+  - replace (X / 2 - x / 2) with ((X - x) * / 2) by field.
+    rewrite Rabs_mult, (Rabs_pos_eq (/ 2)) by lra. lra.
+  - replace (x / 2) with (x * / 2) by field.
+    rewrite Rabs_mult, (Rabs_pos_eq (/ 2)) by lra. lra.
+Qed.
+
+Lemma K_xa : Rabs (nr * x1 - pa s * dot Dl (Na s)) <= 2603 / 100 * v + 402 / 100 * d.
+Proof.
+  basics. pose proof K_d as H0. pose proof (dl_dot_le s Hua Hub (Na s) Hua) as H1.
+  pose proof (pa_le s Hua Hul) as H2.
+  pose proof (K_h (pa s) fpa h1 Hh1 H2 K_pa) as H3.
+  assert (H4 : Rabs (nr * fd) <= 4001 / 1000).
+  { pose proof (abs_near _ _ _ H0).
+    assert (Rabs (2 * dot Dl (Na s)) <= 4) by (rewrite Rabs_mult, (Rabs_pos_eq 2) by lra; lra).
+    lra. }
+  assert (H5 : Rabs (pa s / 2) <= 1 / 2).
+  { replace (pa s / 2) with (pa s * / 2) by field.
+    rewrite Rabs_mult, (Rabs_pos_eq (/ 2)) by lra. lra. }
+  pose proof (prod_err h1 (pa s / 2) (nr * fd) (2 * dot Dl (Na s)) _ _ _ _ H3 H0 H4 H5) as H6.
+  replace (pa s / 2 * (2 * dot Dl (Na s))) with (pa s * dot Dl (Na s)) in H6 by field.
+  assert (H7 : Rabs (pa s * dot Dl (Na s)) <= 2).
+  { rewrite Rabs_mult. replace 2 with (1 * 2) by ring.
+    apply Rmult_le_compat; try apply Rabs_pos; assumption. }
+  eapply Rle_trans.
+  { apply (ap_step v eta Hv nr x1 (h1 * fd) (h1 * (nr * fd)) _
+             ((2501 / 1000 * v + 502 / 1000 * d) * (4001 / 1000)
+              + 1 / 2 * (2803 / 100 * v + 402 / 100 * d)) (2001 / 1000) Hx1);
+      [lra | ring | exact H6 | lra]. }
+  lra.
+Qed.
+
+Lemma K_xb : Rabs (nr * x2 - pb s * dot Dl (Nb s)) <= 6006 / 100 * v + 1203 / 100 * d.
+Proof.
+  basics. pose proof K_qb as H0. pose proof (dl_dot_le s Hua Hub (Nb s) Hub) as H1.
+  pose proof (pb_le s Hub Hul) as H2.
+  pose proof (K_h (pb s) fpb h2 Hh2 H2 K_pb) as H3.
+  assert (H4 : Rabs (nr * fdqb) <= 4001 / 1000).
+  { pose proof (abs_near _ _ _ H0).
+    assert (Rabs (2 * dot Dl (Nb s)) <= 4) by (rewrite Rabs_mult, (Rabs_pos_eq 2) by lra; lra).
+    lra. }
+  assert (H5 : Rabs (pb s / 2) <= 1 / 2).
+  { replace (pb s / 2) with (pb s * / 2) by field.
+    rewrite Rabs_mult, (Rabs_pos_eq (/ 2)) by lra. lra. }
+  pose proof (prod_err h2 (pb s / 2) (nr * fdqb) (2 * dot Dl (Nb s)) _ _ _ _ H3 H0 H4 H5) as H6.
+  replace (pb s / 2 * (2 * dot Dl (Nb s))) with (pb s * dot Dl (Nb s)) in H6 by field.
+  assert (H7 : Rabs (pb s * dot Dl (Nb s)) <= 2).
+  { rewrite Rabs_mult. replace 2 with (1 * 2) by ring.
+    apply Rmult_le_compat; try apply Rabs_pos; assumption. }
+  eapply Rle_trans.
+  { apply (ap_step v eta Hv nr x2 (h2 * fdqb) (h2 * (nr * fdqb)) _
+             ((2501 / 1000 * v + 502 / 1000 * d) * (4001 / 1000)
+              + 1 / 2 * (9609 / 100 * v + 2004 / 100 * d)) (2001 / 1000) Hx2);
+      [lra | ring | exact H6 | lra]. }
+  lra.
+Qed.
+
+Lemma K_dia_r : Rabs (nr * fdia - (nr * fa - nr * x1)) <= 2002 / 1000 * v.
+Proof.
+  basics. pose proof K_a as H0. pose proof K_xa as H1. pose proof (ndia_le s Hua Hub Hul) as H2.
+  rewrite <- Rmult_minus_distr_l.
+  eapply Rle_trans; [apply (ap_sc v eta Hv _ _ _ (2001 / 1000) Hdia); [lra|] | lra].
+  rewrite Rmult_minus_distr_l.
+  apply (Rle_trans _ (Rabs (e_ndia s) + ((1201 / 100 * v + 201 / 100 * d)
+                                         + (2603 / 100 * v + 402 / 100 * d)))); [|lra].
+  apply abs_near. unfold e_ndia.
+  replace (nr * fa - nr * x1 - (dot Dl (L s) - pa s * dot Dl (Na s)))
+    with ((nr * fa - dot Dl (L s)) - (nr * x1 - pa s * dot Dl (Na s))) by ring.
+  eapply Rle_trans; [apply absdiff|]. lra.
+Qed.
+
+Lemma K_dib_r : Rabs (nr * fdib - (nr * fa - nr * x2)) <= 2002 / 1000 * v.
+Proof.
+  basics. pose proof K_a as H0. pose proof K_xb as H1. pose proof (ndib_le s Hua Hub Hul) as H2.
+  rewrite <- Rmult_minus_distr_l.
+  eapply Rle_trans; [apply (ap_sc v eta Hv _ _ _ (2001 / 1000) Hdib); [lra|] | lra].
+  rewrite Rmult_minus_distr_l.
+  apply (Rle_trans _ (Rabs (e_ndib s) + ((1201 / 100 * v + 201 / 100 * d)
+                                         + (6006 / 100 * v + 1203 / 100 * d)))); [|lra].
+  apply abs_near. unfold e_ndib.
+  replace (nr * fa - nr * x2 - (dot Dl (L s) - pb s * dot Dl (Nb s)))
+    with ((nr * fa - dot Dl (L s)) - (nr * x2 - pb s * dot Dl (Nb s))) by ring.
+  eapply Rle_trans; [apply absdiff|]. lra.
+Qed.
+
+Lemma K_dia : Rabs (nr * fdia - e_ndia s) <= 4005 / 100 * v + 603 / 100 * d.
+Proof.
+  basics. pose proof K_a as H0. pose proof K_xa as H1. pose proof K_dia_r as H2.
+  unfold e_ndia.
+  replace (nr * fdia - (dot Dl (L s) - pa s * dot Dl (Na s)))
+    with ((nr * fdia - (nr * fa - nr * x1)) + (nr * fa - dot Dl (L s))
+          + - (nr * x1 - pa s * dot Dl (Na s))) by ring.
+  eapply Rle_trans; [apply tri3|]. rewrite Rabs_Ropp. lra.
+Qed.
+
+Lemma K_w : Rabs (nr * w - e_n2ds s) <= 9211 / 100 * v + 1605 / 100 * d.
+Proof.
+  basics. pose proof K_xa as H0. pose proof K_xb as H1. pose proof K_dia_r as H2.
+  pose proof K_dib_r as H3. pose proof (n2ds_le s Hua Hub Hul) as H4.
+  eapply Rle_trans.
+  { apply (ap_step v eta Hv nr w (fdib - fdia) (nr * fdib - nr * fdia) _
+             (9010 / 100 * v + 1605 / 100 * d) (2001 / 1000) Hw); [lra | ring | | lra].
+    unfold e_n2ds, e_ndib, e_ndia.
+    replace (nr * fdib - nr * fdia
+             - (dot Dl (L s) - pb s * dot Dl (Nb s) - (dot Dl (L s) - pa s * dot Dl (Na s))))
+      with ((nr * fdib - (nr * fa - nr * x2))
+            + - (nr * fdia - (nr * fa - nr * x1))
+            + (nr * x1 - pa s * dot Dl (Na s))
+            + - (nr * x2 - pb s * dot Dl (Nb s))) by ring.
+    eapply Rle_trans; [apply tri4|]. rewrite !Rabs_Ropp. lra. }
+  lra.
+Qed.
+
+Lemma K_ds : Rabs (nr * nr * fds - e_n2ds s) <= 9211 / 100 * v + 1806 / 100 * d.
+Proof.
+  basics. pose proof K_w as H0. pose proof (n2ds_le s Hua Hub Hul) as H1.
+  eapply Rle_trans.
+  { apply (ap_step d eta Hdv (nr * nr) fds (w / nr) (nr * w) _
+             (9211 / 100 * v + 1605 / 100 * d) (2001 / 1000) Hds); [nra | field; lra | exact H0 | lra]. }
+  lra.
+Qed.
+
+Lemma K_Y : nr * (nr - 1) / 2 * fds = (nr - 1) / (2 * nr) * (nr * nr * fds).
+Proof. basics. field. lra. Qed.
+
+Lemma K_Yb : Rabs (nr * (nr - 1) / 2 * fds) <= 1001 / 1000.
+Proof.
+  basics. pose proof K_ds as G0. pose proof (n2ds_le s Hua Hub Hul) as G1.
+  rewrite K_Y, Rabs_mult.
+  assert (Rabs ((nr - 1) / (2 * nr)) <= 1 / 2).
+  { rewrite Rabs_pos_eq.
+    - apply (Rmult_le_reg_r (2 * nr)); [lra|]. unfold Rdiv.
+      rewrite Rmult_assoc, Rinv_l by lra. lra.
+    - unfold Rdiv. apply Rmult_le_pos; [lra | apply Rlt_le, Rinv_0_lt_compat; lra]. }
+  pose proof (abs_near _ _ _ G0).
+  replace (1001 / 1000) with (1 / 2 * (2002 / 1000)) by field.
+  apply Rmult_le_compat; try apply Rabs_pos; lra.
+Qed.
+
+(** p_n = p_a + n di_a + n(n-1)/2 ds, the three terms summed in any order. *)
+Lemma K_rhon : Rabs (fpn - (fpa + nr * fdia + nr * (nr - 1) / 2 * fds)) <= 1202 / 100 * v.
+Proof.
+  basics. pose proof K_dia as G0. pose proof (ndia_le s Hua Hub Hul) as G1.
+  pose proof K_pa as G2. pose proof (pa_le s Hua Hul) as G3. pose proof K_Yb as G4.
+  pose proof (e_pos v eta Hv) as E0. pose proof (e_small v eta Hv) as E1.
+  pose proof (sum3_err v v eta fpa (nr * fdia) (nr * (nr - 1) / 2 * fds) fpa q2 q3 fpn
+                ltac:(lra) ltac:(lra) E0 (ap1_exact v eta fpa ltac:(lra) E0) Hq2 Hq3 Hpn) as S.
+  assert (B1 : Rabs (nr * fdia) <= 2001 / 1000) by (pose proof (abs_near _ _ _ G0); lra).
+  assert (B2 : Rabs fpa <= 1001 / 1000) by (pose proof (abs_near _ _ _ G2); lra).
+  assert (B3 : (v + 2 * v) * (1 + / 524288) * (Rabs fpa + Rabs (nr * fdia)
+                 + Rabs (nr * (nr - 1) / 2 * fds))
+               <= (v + 2 * v) * (1 + / 524288) * (4003 / 1000))
+    by (apply Rmult_le_compat_l; [apply Rmult_le_pos|]; lra).
+  lra.
+Qed.
+
+Lemma K_pnb : Rabs fpn <= 4005 / 1000.
+Proof.
+  basics. pose proof K_rhon as G0. pose proof K_dia as G1. pose proof (ndia_le s Hua Hub Hul).
+  pose proof K_pa as G2. pose proof (pa_le s Hua Hul). pose proof K_Yb.
+  apply (Rle_trans _ _ _ (abs_near _ _ _ G0)).
+  pose proof (tri3 fpa (nr * fdia) (nr * (nr - 1) / 2 * fds)).
+  pose proof (abs_near _ _ _ G1). pose proof (abs_near _ _ _ G2). lra.
+Qed.
+
+Lemma K_rhoe : Rabs (feps - (fpn - fpb)) <= 5007 / 1000 * v.
+Proof.
+  basics. pose proof K_pnb. pose proof K_pb as G0. pose proof (pb_le s Hub Hul).
+  eapply Rle_trans; [apply (ap_1 v eta Hv _ _ (5006 / 1000) Heps)|lra].
+  eapply Rle_trans; [apply absdiff|]. pose proof (abs_near _ _ _ G0). lra.
+Qed.
+
+Lemma K_rhod : Rabs (nr * fdeps - feps) <= 5008 / 1000 * d.
+Proof.
+  basics. pose proof K_pnb. pose proof K_pb as G0. pose proof (pb_le s Hub Hul).
+  pose proof K_rhoe as G1.
+  assert (B : Rabs feps <= 5007 / 1000).
+  { apply (Rle_trans _ _ _ (abs_near _ _ _ G1)).
+    pose proof (absdiff fpn fpb). pose proof (abs_near _ _ _ G0). lra. }
+  eapply Rle_trans.
+  { apply (ap_step d eta Hdv nr fdeps (feps / nr) feps feps 0 (5007 / 1000) Hdeps);
+      [lra | field; lra | rewrite Rminus_diag_eq, Rabs_R0 by reflexivity; lra | lra]. }
+  lra.
+Qed.
+
+Lemma K_R : Rabs (nr * ft0 - (fpb - fpa - nr * (nr - 1) / 2 * fds)) <= 2004 / 100 * v + 501 / 100 * d.
+Proof.
+  basics. pose proof K_rhon as G0. pose proof K_rhoe as G1. pose proof K_rhod as G2.
+  pose proof K_pa as G3. pose proof K_pb as G4. pose proof (pa_le s Hua Hul).
+  pose proof (pb_le s Hub Hul). pose proof K_Yb.
+  set (Y := nr * (nr - 1) / 2 * fds) in *.
+  assert (E : nr * fdia - nr * fdeps =
+              (fpb - fpa - Y)
+              - (fpn - (fpa + nr * fdia + Y))
+              - (feps - (fpn - fpb))
+              - (nr * fdeps - feps)) by ring.
+  assert (B : Rabs (nr * fdia - nr * fdeps) <= 3002 / 1000).
+  { rewrite E. unfold Rminus at 1 2 3.
+    eapply Rle_trans; [apply tri4|]. rewrite !Rabs_Ropp.
+    assert (Rabs (fpb - fpa - Y) <= 2 + 10005 / 1000 * v + 2 / 1000 * d + 1001 / 1000).
+    { unfold Rminus. eapply Rle_trans; [apply tri3|]. rewrite !Rabs_Ropp.
+      pose proof (abs_near _ _ _ G3). pose proof (abs_near _ _ _ G4). lra. }
+    lra. }
+  rewrite <- (Rmult_minus_distr_l nr fdia) in B.
+  pose proof (ap_sc v eta Hv nr ft0 (fdia - fdeps) _ Ht0 ltac:(lra) B) as RT.
+  rewrite Rmult_minus_distr_l in RT, B.
+  replace (nr * ft0 - (fpb - fpa - Y))
+    with ((nr * ft0 - (nr * fdia - nr * fdeps))
+          + - (fpn - (fpa + nr * fdia + Y))
+          + - (feps - (fpn - fpb))
+          + - (nr * fdeps - feps)) by ring.
+  eapply Rle_trans; [apply tri4|]. rewrite !Rabs_Ropp. lra.
+Qed.
+
+Lemma K_ce_ideal : forall i, (i <= n s)%nat ->
+  Rabs (fpa + INR i * ft0 + INR i * (INR i - 1) / 2 * fds - ceuler s i)
+  <= 3656 / 100 * v + 727 / 100 * d.
+Proof.
+  intros i Hi. basics.
+  assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
+  rewrite ceuler_closed_form, (t0_closed_form s ltac:(lia)), (ds_scaled s ltac:(lia)).
+  rewrite (ce_identity nr (INR i) fpa fpb) by lra.
+  pose proof K_R as G0. rewrite K_Y in G0.
+  eapply Rle_trans.
+  { apply comb_bound; [apply theta_rng; lra | apply kappa_rng; lra | apply K_pa | apply K_pb
+                      | exact G0 | apply K_ds]. }
+  lra.
+Qed.
+
+(** Computed slopes (ideal, on the computed t0 and ds) for 1 <= J <= n-1. *)
+Lemma K_slope : forall J, (J < n s)%nat ->
+  Rabs (nr * (ft0 + INR J * fds)) <= 2 + 200 * (v + d).
+Proof.
+  intros J HJ. basics.
+  assert (HJ' : 0 <= INR J <= nr) by (split; [apply pos_INR | apply le_INR; lia]).
+  pose proof (slope_le s Hua Hub Hul Hn1 J HJ) as G0.
+  rewrite (t0_closed_form s ltac:(lia)), (ds_scaled s ltac:(lia)) in G0.
+  pose proof K_R as G1. rewrite K_Y in G1. pose proof K_ds as G2.
+  pose proof K_pa as G3. pose proof K_pb as G4.
+  set (X := nr * ((pb s - pa s) / nr - (nr - 1) / 2 * (e_n2ds s / (nr * nr))
+                  + INR J * (e_n2ds s / (nr * nr)))) in *.
+  assert (E : nr * (ft0 + INR J * fds) - X =
+     (nr * ft0 - (fpb - fpa - (nr - 1) / (2 * nr) * (nr * nr * fds)))
+     + ((fpb - pb s) - (fpa - pa s))
+     + (INR J / nr - (nr - 1) / (2 * nr)) * (nr * nr * fds - e_n2ds s))
+    by (unfold X; field; lra).
+  assert (Hg : Rabs (INR J / nr - (nr - 1) / (2 * nr)) <= 1).
+  { pose proof (theta_rng nr (INR J) ltac:(lra) HJ').
+    pose proof (theta_rng nr ((nr - 1) / 2) ltac:(lra) ltac:(lra)).
+    replace ((nr - 1) / (2 * nr)) with ((nr - 1) / 2 / nr) by (field; lra).
+    apply Rabs_le. lra. }
+  assert (B : Rabs (nr * (ft0 + INR J * fds) - X) <= 200 * (v + d)).
+  { rewrite E. eapply Rle_trans; [apply tri3|]. rewrite Rabs_mult.
+    assert (Rabs (INR J / nr - (nr - 1) / (2 * nr)) * Rabs (nr * nr * fds - e_n2ds s)
+            <= 1 * (9211 / 100 * v + 1806 / 100 * d))
+      by (apply Rmult_le_compat; try apply Rabs_pos; lra).
+    pose proof (absdiff (fpb - pb s) (fpa - pa s)). lra. }
+  pose proof (abs_near _ _ _ B). lra.
+Qed.
+
+(** The loop, with its own addition unit ua <= v and n ua <= 2^-11. *)
+Lemma K_ce_final : forall (ua : R) (P Q : nat -> R), 0 <= ua <= v -> nr * ua <= / 2048 ->
+  P O = fpa -> Q O = ft0 ->
+  (forall j, (j < n s)%nat -> ap1 ua eta (P (S j)) (P j + Q j) /\ ap1 ua eta (Q (S j)) (Q j + fds)) ->
+  forall i, (i <= n s)%nat ->
+  Rabs (P i - ceuler s i) <= 22 / 10 * (nr * ua) + 366 / 10 * v + 73 / 10 * d.
+Proof.
+  intros ua P Q Hua0 Hnua HP0 HQ0 Hstep i Hi. basics.
+  pose proof (e_pos v eta Hv) as He0. pose proof (e_small v eta Hv) as He1.
+  set (Ms := 2002 / 1000 / nr). set (Mp := 1194 / 1000).
+  assert (HMs : 0 <= Ms) by (unfold Ms, Rdiv; apply Rmult_le_pos; [lra | apply Rlt_le, Rinv_0_lt_compat; lra]).
+  assert (Hnn : nr * nr <= 281474976710656) by nra.
+  assert (Hne : nr * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra).
+  assert (Hnne : nr * nr * eta <= 281474976710656 * eta) by (apply Rmult_le_compat_r; lra).
+  assert (Ems2 : nr * nr / 2 * (ua * Ms + eta) = 1001 / 1000 * (nr * ua) + nr * nr * eta / 2)
+    by (unfold Ms; field; lra).
+  assert (Hnu0 : 0 <= nr * ua) by (apply Rmult_le_pos; lra).
+  destruct (cseq_err ua eta P Q fds (n s) Ms Mp ltac:(lra) He0 HMs ltac:(unfold Mp; lra) Hstep)
+    with (i := i) as [_ HPi]; [| | exact Hi |].
+  - intros j Hj. rewrite HQ0. pose proof (K_slope (S j) Hj) as G0.
+    assert (G1 : Rabs (ft0 + INR (S j) * fds) <= (2 + 200 * (v + d)) / nr).
+    { replace (ft0 + INR (S j) * fds)
+        with (nr * (ft0 + INR (S j) * fds) / nr) by (field; lra).
+      unfold Rdiv. rewrite Rabs_mult, (Rabs_pos_eq (/ nr))
+        by (apply Rlt_le, Rinv_0_lt_compat; lra).
+      apply Rmult_le_compat_r; [apply Rlt_le, Rinv_0_lt_compat; lra | exact G0]. }
+    assert (G2 : (2 + 200 * (v + d)) / nr + nr * (ua * Ms + eta) <= Ms).
+    { unfold Ms. apply div_helper; [lra|].
+      replace (nr * (ua * (2002 / 1000 / nr) + eta) * nr)
+        with (2002 / 1000 * (nr * ua) + nr * nr * eta) by (field; lra).
+      lra. }
+    lra.
+  - intros j Hj. rewrite HP0, HQ0.
+    pose proof (K_ce_ideal (S j) Hj) as G0. pose proof (ceuler_le s Hua Hub Hul Hn1 (S j) Hj) as G1.
+    pose proof (abs_near _ _ _ G0) as G2.
+    rewrite Ems2. unfold Mp.
+    assert (nr * (ua * (1194 / 1000) + eta) = 1194 / 1000 * (nr * ua) + nr * eta) by ring.
+    lra.
+  - rewrite HP0, HQ0 in HPi. pose proof (K_ce_ideal i Hi) as G0.
+    assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
+    replace (P i - ceuler s i)
+      with ((P i - (fpa + INR i * ft0 + INR i * (INR i - 1) / 2 * fds))
+            + (fpa + INR i * ft0 + INR i * (INR i - 1) / 2 * fds - ceuler s i)) by ring.
+    eapply Rle_trans; [apply Rabs_triang|].
+    assert (Es0 : 0 <= ua * Ms + eta) by (pose proof (Rmult_le_pos ua Ms); lra).
+    assert (K1 : INR i * (INR i - 1) / 2 <= nr * (nr - 1) / 2) by nra.
+    assert (K2 : INR i * (INR i - 1) / 2 * (ua * Ms + eta) <= nr * (nr - 1) / 2 * (ua * Ms + eta))
+      by (apply Rmult_le_compat_r; lra).
+    assert (K3 : nr * (nr - 1) / 2 * (ua * Ms + eta)
+                 = 1001 / 1000 * (nr * ua) - 1001 / 1000 * ua + nr * nr * eta / 2 - nr * eta / 2)
+      by (unfold Ms; field; lra).
+    assert (K4 : INR i * (ua * Mp + eta) <= nr * (ua * Mp + eta))
+      by (apply Rmult_le_compat_r; [unfold Mp; nra | lra]).
+    assert (K6 : 0 <= nr * eta) by (apply Rmult_le_pos; lra).
+    assert (K7 : nr * (ua * Mp + eta) = 1194 / 1000 * (nr * ua) + nr * eta) by (unfold Mp; ring).
+    lra.
+Qed.
+
+(** The closed form p_i = p_a + i (t0 + (i-1)/2 ds), evaluated as
+    h = (i-1)/2 * ds, g = t0 + h, m = i * g, p = p_a + m (each within its
+    bound, h and m possibly exact: fused multiply-adds). *)
+Lemma K_closed : forall i, (i <= n s)%nat -> forall hh g m p : R,
+  ap1 v eta hh ((INR i - 1) / 2 * fds) -> ap1 v eta g (ft0 + hh) ->
+  ap1 v eta m (INR i * g) -> ap1 v eta p (fpa + m) ->
+  Rabs (p - ceuler s i) <= 45 * v + 73 / 10 * d.
+Proof.
+  intros i Hi hh g m p Hh Hg Hm Hp. basics.
+  pose proof (e_pos v eta Hv) as He0. pose proof (e_small v eta Hv) as He1.
+  assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
+  pose proof (K_slope 0 ltac:(lia)) as S0. cbn [INR] in S0.
+  rewrite Rmult_0_l, Rplus_0_r in S0.
+  pose proof K_ds as D0. pose proof (n2ds_le s Hua Hub Hul) as D1.
+  assert (D2 : Rabs (nr * nr * fds) <= 2001 / 1000) by (pose proof (abs_near _ _ _ D0); lra).
+  set (X := (INR i - 1) / 2 * fds) in *.
+  assert (EX : nr * X = (INR i - 1) / (2 * nr) * (nr * nr * fds)) by (unfold X; field; lra).
+  assert (Hci : Rabs ((INR i - 1) / (2 * nr)) <= 1 / 2).
+  { apply Rabs_le. split.
+    - apply (Rmult_le_reg_r (2 * nr)); [lra|]. unfold Rdiv.
+      rewrite Rmult_assoc, Rinv_l by lra. lra.
+    - apply (Rmult_le_reg_r (2 * nr)); [lra|]. unfold Rdiv.
+      rewrite Rmult_assoc, Rinv_l by lra. lra. }
+  assert (BX : Rabs (nr * X) <= 10005 / 10000).
+  { rewrite EX, Rabs_mult. replace (10005 / 10000) with (1 / 2 * (2001 / 1000)) by field.
+    apply Rmult_le_compat; try apply Rabs_pos; lra. }
+  set (Gx := ft0 + X).
+  assert (BG : Rabs (nr * Gx) <= 30008 / 10000).
+  { unfold Gx. rewrite Rmult_plus_distr_l. eapply Rle_trans; [apply Rabs_triang|]. lra. }
+  assert (Hnr0 : 0 < nr) by lra.
+  assert (AB : forall z, Rabs (nr * z) = nr * Rabs z)
+    by (intros z; rewrite Rabs_mult, Rabs_pos_eq by lra; reflexivity).
+  rewrite AB in BX, BG.
+  unfold ap1 in Hh, Hg, Hm, Hp.
+  (* h *)
+  assert (E1 : nr * Rabs (hh - X) <= 10006 / 10000 * v + 16777216 * eta).
+  { assert (nr * Rabs (hh - X) <= nr * (v * Rabs X + eta)) by (apply Rmult_le_compat_l; lra).
+    assert (v * (nr * Rabs X) <= v * (10005 / 10000)) by (apply Rmult_le_compat_l; lra).
+    assert (nr * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra). nra. }
+  (* g *)
+  assert (E2 : nr * Rabs (g - Gx) <= 40016 / 10000 * v + 33554433 * eta).
+  { replace (g - Gx) with ((g - (ft0 + hh)) + (hh - X)) by (unfold Gx; ring).
+    assert (Rabs (ft0 + hh) <= Rabs Gx + Rabs (hh - X)).
+    { replace (ft0 + hh) with (Gx + (hh - X)) by (unfold Gx; ring). apply Rabs_triang. }
+    assert (nr * Rabs (g - (ft0 + hh)) <= nr * (v * (Rabs Gx + Rabs (hh - X)) + eta)).
+    { apply Rmult_le_compat_l; [lra|]. eapply Rle_trans; [exact Hg|].
+      apply Rplus_le_compat_r, Rmult_le_compat_l; lra. }
+    assert (v * (nr * Rabs Gx) <= v * (30008 / 10000)) by (apply Rmult_le_compat_l; lra).
+    assert (v * (nr * Rabs (hh - X)) <= / 2097152 * (nr * Rabs (hh - X)))
+      by (apply Rmult_le_compat_r; [apply Rmult_le_pos; [lra | apply Rabs_pos] | lra]).
+    assert (nr * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra).
+    assert (nr * Rabs (g - (ft0 + hh) + (hh - X))
+            <= nr * Rabs (g - (ft0 + hh)) + nr * Rabs (hh - X)).
+    { rewrite <- Rmult_plus_distr_l. apply Rmult_le_compat_l; [lra | apply Rabs_triang]. }
+    nra. }
+  (* scaling by i <= n *)
+  assert (Ii : forall z, 0 <= z -> INR i * z <= nr * z) by (intros z Hz; apply Rmult_le_compat_r; lra).
+  assert (IG : Rabs (INR i * Gx) <= 30008 / 10000).
+  { rewrite Rabs_mult, (Rabs_pos_eq (INR i)) by lra.
+    pose proof (Ii (Rabs Gx) (Rabs_pos _)). lra. }
+  assert (IE : Rabs (INR i * (g - Gx)) <= 40016 / 10000 * v + 33554433 * eta).
+  { rewrite Rabs_mult, (Rabs_pos_eq (INR i)) by lra.
+    pose proof (Ii (Rabs (g - Gx)) (Rabs_pos _)). lra. }
+  assert (Bg : Rabs (INR i * g) <= 30009 / 10000).
+  { replace (INR i * g) with (INR i * Gx + INR i * (g - Gx)) by ring.
+    eapply Rle_trans; [apply Rabs_triang|]. lra. }
+  (* m *)
+  assert (E3 : Rabs (m - INR i * g) <= 30009 / 10000 * v + eta).
+  { assert (v * Rabs (INR i * g) <= v * (30009 / 10000)) by (apply Rmult_le_compat_l; lra).
+    lra. }
+  (* the ideal value *)
+  pose proof (K_ce_ideal i Hi) as G0. pose proof (ceuler_le s Hua Hub Hul Hn1 i Hi) as G1.
+  assert (Eid : fpa + INR i * ft0 + INR i * (INR i - 1) / 2 * fds = fpa + INR i * Gx)
+    by (unfold Gx, X; field).
+  rewrite Eid in G0.
+  assert (Bpm : Rabs (fpa + m) <= 11926 / 10000).
+  { replace (fpa + m) with ((fpa + INR i * Gx - ceuler s i) + ceuler s i
+                            + (m - INR i * g) + INR i * (g - Gx)) by ring.
+    eapply Rle_trans; [apply tri4|]. lra. }
+  assert (E4 : Rabs (p - (fpa + m)) <= 11926 / 10000 * v + eta).
+  { assert (v * Rabs (fpa + m) <= v * (11926 / 10000)) by (apply Rmult_le_compat_l; lra).
+    lra. }
+  replace (p - ceuler s i)
+    with ((p - (fpa + m)) + (m - INR i * g) + INR i * (g - Gx) + (fpa + INR i * Gx - ceuler s i))
+    by ring.
+  eapply Rle_trans; [apply tri4|]. lra.
+Qed.
+
+End CE.
+
+(** ** Corrected Euler: the generic bound and the profiles *)
+
+(** Any model with the size conditions, 1 <= n <= 2^24 and n k_add u <= 2^-11;
+    K1 >= 1 bounds k_in, k_add, k_mul (unit v = K1 u) and k_div >= 1 (unit
+    d = k_div u): the loop contributes 2.2 k_add n u, the set-up
+    36.6 v + 7.3 d. *)
+Lemma profile_corrected_euler_generic : forall (M : fmodel) (K K1 : R), model_ok M K ->
+  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 -> 1 <= k_div M ->
+  forall (s : span) (F : fsetup) (P Q : nat -> R),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  (1 <= n s)%nat -> INR (n s) <= 16777216 -> INR (n s) * (k_add M * m_u M) <= / 2048 ->
+  ce_setup_ok M s F -> ceuler_run M F (n s) P Q ->
+  forall i, (i <= n s)%nat ->
+  Rabs (P i - ceuler s i) <=
+  (22 / 10 * k_add M * INR (n s) + 366 / 10 * K1 + 73 / 10 * k_div M) * m_u M.
+Proof.
+  intros M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1 s F P Q Ha Hb Hl Hn1 Hn2 Hnu HF [HP0 [HQ0 Hst]] i Hi.
+  pose proof HM as (Hu & He0 & He2 & Ki & Ka & Km & Kd & HK0 & HK2).
+  set (u := m_u M) in *.
+  assert (HKu : K1 * u <= K * u) by (apply Rmult_le_compat_r; lra).
+  assert (HDu : k_div M * u <= K * u) by (apply Rmult_le_compat_r; lra).
+  assert (Hv : small_ok (K1 * u) (m_eta M)).
+  { repeat split; try lra.
+    - apply Rmult_lt_0_compat; lra.
+    - assert (u <= K1 * u) by (rewrite <- (Rmult_1_l u) at 1; apply Rmult_le_compat_r; lra).
+      lra. }
+  assert (Hdv : small_ok (k_div M * u) (m_eta M)).
+  { repeat split; try lra.
+    - apply Rmult_lt_0_compat; lra.
+    - assert (u <= k_div M * u) by (rewrite <- (Rmult_1_l u) at 1; apply Rmult_le_compat_r; lra).
+      lra. }
+  set (v := K1 * u) in *.
+  assert (Wa : k_add M * u <= v) by (unfold v; apply Rmult_le_compat_r; lra).
+  assert (Wm : k_mul M * u <= v) by (unfold v; apply Rmult_le_compat_r; lra).
+  assert (Wa0 : 0 <= k_add M * u) by (apply Rmult_le_pos; lra).
+  assert (AK : forall k y x, k <= K1 -> approx k u (m_eta M) y x -> ap1 v (m_eta M) y x).
+  { intros k y x Hk H. eapply ap1_mono; [|exact H]. unfold v.
+    apply Rmult_le_compat_r; lra. }
+  assert (FK : forall a b y, fdot_ok M a b y -> fdot_rel v v (m_eta M) a b y)
+    by (intros a b y H; eapply fdot_mono; [exact Wm | exact Wa | exact H]).
+  assert (VK : forall vh w0, vap M vh w0 -> vap1 v (m_eta M) vh w0).
+  { intros vh w0 (A1 & A2 & A3). repeat split; (eapply AK; [| eassumption]); lra. }
+  destruct HF as ((Ina & Inb & Inl) & (tx & Htx & Hkx) & (ty & Hty & Hky) & (tz & Htz & Hkz)
+    & Ha' & Hpa & Hc & (e & He & Hd) & Hpb & (q & Hq & Hdqb) & (h1 & x1 & Hh1 & Hx1 & Hdia)
+    & (h2 & x2 & Hh2 & Hx2 & Hdib) & (w & Hw & Hds) & (q2 & q3 & Hq2 & Hq3 & Hpn)
+    & Heps & Hdeps & Ht0).
+  pose proof (K_ce_final v (k_div M * u) (m_eta M) Hv Hdv s Ha Hb Hl Hn1 Hn2
+    _ _ _ _ _ _ _ _ _ _ _ _ _ _ _ _ _
+    (VK _ _ Ina) (VK _ _ Inb) (VK _ _ Inl) _ _ _
+    (AK _ _ _ Ha1 Htx) Hkx (AK _ _ _ Ha1 Hty) Hky (AK _ _ _ Ha1 Htz) Hkz
+    (FK _ _ _ Ha') (FK _ _ _ Hpa) (FK _ _ _ Hc) _ (FK _ _ _ He) (AK _ _ _ Hm1 Hd) (FK _ _ _ Hpb)
+    _ (AK _ _ _ Hm1 Hq) (AK _ _ _ Ha1 Hdqb)
+    _ _ Hh1 (AK _ _ _ Hm1 Hx1) (AK _ _ _ Ha1 Hdia)
+    _ _ Hh2 (AK _ _ _ Hm1 Hx2) (AK _ _ _ Ha1 Hdib)
+    _ (AK _ _ _ Ha1 Hw) Hds
+    _ _ (AK _ _ _ Hm1 Hq2) (AK _ _ _ Hm1 Hq3) (sum3_mono _ _ _ _ _ _ _ Wa Hpn)
+    (AK _ _ _ Ha1 Heps) Hdeps (AK _ _ _ Ha1 Ht0)
+    (k_add M * u) P Q ltac:(lra) Hnu HP0 HQ0 Hst i Hi) as R.
+  eapply Rle_trans; [exact R|]. unfold v. lra.
+Qed.
+
+Lemma ce_profile_nr : forall s : span, (1 <= n s <= 4096)%nat ->
+  1 <= INR (n s) <= 4096.
+Proof.
+  intros s Hn. split; [apply (le_INR 1); lia | apply (nat_R _ 4096); lia].
+Qed.
+
+(* Note: ieee profile, binary32 (see profile_ieee_gouraud_binary32). *)
+(** Corrected Euler, ieee profile, binary32: |P_i - ceuler i| <= (2.2 n + 51.21) 2^-24. *)
+Theorem profile_ieee_corrected_euler_binary32 :
+  forall (s : span) (F : fsetup) (P Q : nat -> R),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) -> (1 <= n s <= 4096)%nat ->
+  ce_setup_ok ieee32 s F -> ceuler_run ieee32 F (n s) P Q ->
+  forall i, (i <= n s)%nat ->
+  Rabs (P i - ceuler s i) <= (22 / 10 * INR (n s) + 5121 / 100) * bpow radix2 (-24).
+Proof.
+  intros s F P Q Ha Hb Hl Hn HF HR i Hi.
+  pose proof (ce_profile_nr s Hn) as Hn'.
+  eapply Rle_trans.
+  { apply (profile_corrected_euler_generic ieee32 _ 1 ieee32_ok) with (F := F) (Q := Q); unfold ieee32; cbn [m_u k_in k_add k_mul k_div];
+      try assumption; try lra; try lia.
+    rewrite u24. lra. }
+  unfold ieee32; cbn [m_u k_add k_div].
+  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
+Qed.
+
+(* Note: ieee profile, binary64 (see profile_ieee_gouraud_binary64). *)
+(** Corrected Euler, ieee profile, binary64: |P_i - ceuler i| <= (2.2 n + 51.21) 2^-53. *)
+Theorem profile_ieee_corrected_euler_binary64 :
+  forall (s : span) (F : fsetup) (P Q : nat -> R),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) -> (1 <= n s <= 4096)%nat ->
+  ce_setup_ok ieee64 s F -> ceuler_run ieee64 F (n s) P Q ->
+  forall i, (i <= n s)%nat ->
+  Rabs (P i - ceuler s i) <= (22 / 10 * INR (n s) + 5121 / 100) * bpow radix2 (-53).
+Proof.
+  intros s F P Q Ha Hb Hl Hn HF HR i Hi.
+  pose proof (ce_profile_nr s Hn) as Hn'.
+  eapply Rle_trans.
+  { apply (profile_corrected_euler_generic ieee64 _ 1 ieee64_ok) with (F := F) (Q := Q); unfold ieee64; cbn [m_u k_in k_add k_mul k_div];
+      try assumption; try lra; try lia.
+    rewrite u53. lra. }
+  unfold ieee64; cbn [m_u k_add k_div].
+  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
+Qed.
+
+(* Note: shader profile (see profile_shader_gouraud_binary32). *)
+(** Corrected Euler, shader profile: |P_i - ceuler i| <= (4.4 n + 109.7) 2^-24. *)
+Theorem profile_shader_corrected_euler_binary32 :
+  forall (s : span) (F : fsetup) (P Q : nat -> R),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) -> (1 <= n s <= 4096)%nat ->
+  ce_setup_ok shader32 s F -> ceuler_run shader32 F (n s) P Q ->
+  forall i, (i <= n s)%nat ->
+  Rabs (P i - ceuler s i) <= (44 / 10 * INR (n s) + 1097 / 10) * bpow radix2 (-24).
+Proof.
+  intros s F P Q Ha Hb Hl Hn HF HR i Hi.
+  pose proof (ce_profile_nr s Hn) as Hn'.
+  eapply Rle_trans.
+  { apply (profile_corrected_euler_generic shader32 _ 2 shader32_ok) with (F := F) (Q := Q); unfold shader32; cbn [m_u k_in k_add k_mul k_div];
+      try assumption; try lra; try lia.
+    rewrite u24. lra. }
+  unfold shader32; cbn [m_u k_add k_div].
+  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
+Qed.
+
+(** ** Corrected Euler by its closed form *)
+
+(** p_i = p_a + i (t0 + (i-1)/2 ds) evaluated in the model (h = (i-1)/2 ds,
+    g = t0 + h, m = i g, p = p_a + m; fused or not), on a set-up of the class. *)
+Lemma profile_corrected_euler_closed_generic : forall (M : fmodel) (K K1 : R), model_ok M K ->
+  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 -> 1 <= k_div M ->
+  forall (s : span) (F : fsetup),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  (1 <= n s)%nat -> INR (n s) <= 16777216 -> ce_setup_ok M s F ->
+  forall i, (i <= n s)%nat -> forall h g m p : R,
+  ap_mul M h ((INR i - 1) / 2 * fs_ds F) -> ap_add M g (fs_t0 F + h) ->
+  ap_mul M m (INR i * g) -> ap_add M p (fs_pa F + m) ->
+  Rabs (p - ceuler s i) <= (45 * K1 + 73 / 10 * k_div M) * m_u M.
+Proof.
+  intros M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1 s F Ha Hb Hl Hn1 Hn2 HF i Hi h g m p Hh Hg Hm Hp.
+  pose proof HM as (Hu & He0 & He2 & Ki & Ka & Km & Kd & HK0 & HK2).
+  set (u := m_u M) in *.
+  assert (HKu : K1 * u <= K * u) by (apply Rmult_le_compat_r; lra).
+  assert (HDu : k_div M * u <= K * u) by (apply Rmult_le_compat_r; lra).
+  assert (Hv : small_ok (K1 * u) (m_eta M)).
+  { repeat split; try lra.
+    - apply Rmult_lt_0_compat; lra.
+    - assert (u <= K1 * u) by (rewrite <- (Rmult_1_l u) at 1; apply Rmult_le_compat_r; lra).
+      lra. }
+  assert (Hdv : small_ok (k_div M * u) (m_eta M)).
+  { repeat split; try lra.
+    - apply Rmult_lt_0_compat; lra.
+    - assert (u <= k_div M * u) by (rewrite <- (Rmult_1_l u) at 1; apply Rmult_le_compat_r; lra).
+      lra. }
+  set (v := K1 * u) in *.
+  assert (Wa : k_add M * u <= v) by (unfold v; apply Rmult_le_compat_r; lra).
+  assert (Wm : k_mul M * u <= v) by (unfold v; apply Rmult_le_compat_r; lra).
+  assert (AK : forall k y x, k <= K1 -> approx k u (m_eta M) y x -> ap1 v (m_eta M) y x).
+  { intros k y x Hk H. eapply ap1_mono; [|exact H]. unfold v.
+    apply Rmult_le_compat_r; lra. }
+  assert (FK : forall a b y, fdot_ok M a b y -> fdot_rel v v (m_eta M) a b y)
+    by (intros a b y H; eapply fdot_mono; [exact Wm | exact Wa | exact H]).
+  assert (VK : forall vh w0, vap M vh w0 -> vap1 v (m_eta M) vh w0).
+  { intros vh w0 (A1 & A2 & A3). repeat split; (eapply AK; [| eassumption]); lra. }
+  destruct HF as ((Ina & Inb & Inl) & (tx & Htx & Hkx) & (ty & Hty & Hky) & (tz & Htz & Hkz)
+    & Ha' & Hpa & Hc & (e & He & Hd) & Hpb & (q & Hq & Hdqb) & (h1 & x1 & Hh1 & Hx1 & Hdia)
+    & (h2 & x2 & Hh2 & Hx2 & Hdib) & (w & Hw & Hds) & (q2 & q3 & Hq2 & Hq3 & Hpn)
+    & Heps & Hdeps & Ht0).
+  pose proof (K_closed v (k_div M * u) (m_eta M) Hv Hdv s Ha Hb Hl Hn1 Hn2
+    _ _ _ _ _ _ _ _ _ _ _ _ _ _ _ _ _
+    (VK _ _ Ina) (VK _ _ Inb) (VK _ _ Inl) _ _ _
+    (AK _ _ _ Ha1 Htx) Hkx (AK _ _ _ Ha1 Hty) Hky (AK _ _ _ Ha1 Htz) Hkz
+    (FK _ _ _ Ha') (FK _ _ _ Hpa) (FK _ _ _ Hc) _ (FK _ _ _ He) (AK _ _ _ Hm1 Hd) (FK _ _ _ Hpb)
+    _ (AK _ _ _ Hm1 Hq) (AK _ _ _ Ha1 Hdqb)
+    _ _ Hh1 (AK _ _ _ Hm1 Hx1) (AK _ _ _ Ha1 Hdia)
+    _ _ Hh2 (AK _ _ _ Hm1 Hx2) (AK _ _ _ Ha1 Hdib)
+    _ (AK _ _ _ Ha1 Hw) Hds
+    _ _ (AK _ _ _ Hm1 Hq2) (AK _ _ _ Hm1 Hq3) (sum3_mono _ _ _ _ _ _ _ Wa Hpn)
+    (AK _ _ _ Ha1 Heps) Hdeps (AK _ _ _ Ha1 Ht0)
+    i Hi h g m p (AK _ _ _ Hm1 Hh) (AK _ _ _ Ha1 Hg) (AK _ _ _ Hm1 Hm) (AK _ _ _ Ha1 Hp)) as R.
+  eapply Rle_trans; [exact R|]. unfold v. lra.
+Qed.
+
+(* Note: ieee profile, binary32; the bound does not grow with n. *)
+(** Corrected Euler by its closed form, ieee profile, binary32:
+    |p_i - ceuler i| <= 59.61 2^-24. *)
+Theorem profile_ieee_corrected_euler_closed_binary32 : forall (s : span) (F : fsetup),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) -> (1 <= n s <= 4096)%nat ->
+  ce_setup_ok ieee32 s F ->
+  forall i, (i <= n s)%nat -> forall h g m p : R,
+  ap_mul ieee32 h ((INR i - 1) / 2 * fs_ds F) -> ap_add ieee32 g (fs_t0 F + h) ->
+  ap_mul ieee32 m (INR i * g) -> ap_add ieee32 p (fs_pa F + m) ->
+  Rabs (p - ceuler s i) <= 5961 / 100 * bpow radix2 (-24).
+Proof.
+  intros s F Ha Hb Hl Hn HF i Hi h g m p Hh Hg Hm Hp.
+  pose proof (ce_profile_nr s Hn) as Hn'.
+  eapply Rle_trans.
+  { apply (profile_corrected_euler_closed_generic ieee32 _ 1 ieee32_ok) with (F := F) (h := h) (g := g) (m := m);
+      unfold ieee32; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; lia. }
+  unfold ieee32; cbn [m_u k_div].
+  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
+Qed.
+
+(* Note: ieee profile, binary64. *)
+(** Corrected Euler by its closed form, ieee profile, binary64:
+    |p_i - ceuler i| <= 59.61 2^-53. *)
+Theorem profile_ieee_corrected_euler_closed_binary64 : forall (s : span) (F : fsetup),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) -> (1 <= n s <= 4096)%nat ->
+  ce_setup_ok ieee64 s F ->
+  forall i, (i <= n s)%nat -> forall h g m p : R,
+  ap_mul ieee64 h ((INR i - 1) / 2 * fs_ds F) -> ap_add ieee64 g (fs_t0 F + h) ->
+  ap_mul ieee64 m (INR i * g) -> ap_add ieee64 p (fs_pa F + m) ->
+  Rabs (p - ceuler s i) <= 5961 / 100 * bpow radix2 (-53).
+Proof.
+  intros s F Ha Hb Hl Hn HF i Hi h g m p Hh Hg Hm Hp.
+  pose proof (ce_profile_nr s Hn) as Hn'.
+  eapply Rle_trans.
+  { apply (profile_corrected_euler_closed_generic ieee64 _ 1 ieee64_ok) with (F := F) (h := h) (g := g) (m := m);
+      unfold ieee64; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; lia. }
+  unfold ieee64; cbn [m_u k_div].
+  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
+Qed.
+
+(* Note: ieee profile, binary64, spans up to 2^24 pixels. *)
+(** Corrected Euler, ieee profile, binary64, n <= 2^24: |P_i - ceuler i| <= (2.2 n + 51.21) 2^-53. *)
+Theorem profile_ieee_corrected_euler_binary64_large :
+  forall (s : span) (F : fsetup) (P Q : nat -> R),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  (1 <= n s)%nat -> (Z.of_nat (n s) <= 16777216)%Z ->
+  ce_setup_ok ieee64 s F -> ceuler_run ieee64 F (n s) P Q ->
+  forall i, (i <= n s)%nat ->
+  Rabs (P i - ceuler s i) <= (22 / 10 * INR (n s) + 5121 / 100) * bpow radix2 (-53).
+Proof.
+  intros s F P Q Ha Hb Hl Hn1 Hn HF HR i Hi.
+  assert (Hn' : INR (n s) <= 16777216) by (apply nat_R; exact Hn).
+  assert (H1 : 0 <= INR (n s)) by apply pos_INR.
+  eapply Rle_trans.
+  { apply (profile_corrected_euler_generic ieee64 _ 1 ieee64_ok) with (F := F) (Q := Q);
+      unfold ieee64; cbn [m_u k_in k_add k_mul k_div];
+      try assumption; try lra; try lia.
+    rewrite u53. lra. }
+  unfold ieee64; cbn [m_u k_add k_div].
+  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
+Qed.
+
+(* Note: ieee profile, binary64, spans up to 2^24 pixels. *)
+(** Corrected Euler by its closed form, ieee profile, binary64, n <= 2^24:
+    |p_i - ceuler i| <= 59.61 2^-53. *)
+Theorem profile_ieee_corrected_euler_closed_binary64_large : forall (s : span) (F : fsetup),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  (1 <= n s)%nat -> (Z.of_nat (n s) <= 16777216)%Z ->
+  ce_setup_ok ieee64 s F ->
+  forall i, (i <= n s)%nat -> forall h g m p : R,
+  ap_mul ieee64 h ((INR i - 1) / 2 * fs_ds F) -> ap_add ieee64 g (fs_t0 F + h) ->
+  ap_mul ieee64 m (INR i * g) -> ap_add ieee64 p (fs_pa F + m) ->
+  Rabs (p - ceuler s i) <= 5961 / 100 * bpow radix2 (-53).
+Proof.
+  intros s F Ha Hb Hl Hn1 Hn HF i Hi h g m p Hh Hg Hm Hp.
+  assert (Hn' : INR (n s) <= 16777216) by (apply nat_R; exact Hn).
+  eapply Rle_trans.
+  { apply (profile_corrected_euler_closed_generic ieee64 _ 1 ieee64_ok) with (F := F) (h := h) (g := g) (m := m);
+      unfold ieee64; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; lia. }
+  unfold ieee64; cbn [m_u k_div].
+  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
+Qed.
+
+(** ** What the profile factors cover (Flocq) *)
+
+(** Round to nearest (any tie-breaking rule), subnormals kept:
+    k = 1, eta = 2^(emin-1) (binary32: 2^-150, binary64: 2^-1075). *)
+Lemma rn_covered : forall (emin prec : Z) (choice : Z -> bool), (0 < prec)%Z -> forall x : R,
+  approx 1 (bpow radix2 (- prec)) (bpow radix2 (emin - 1))
+    (round radix2 (FLT_exp emin prec) (Znearest choice) x) x.
+Proof.
+  intros emin prec choice Hp x. unfold approx, ap1. rewrite Rmult_1_l.
+  destruct (error_N_FLT radix2 emin prec Hp choice x) as (e & d & He & Hd & _ & Hr).
+  rewrite Hr.
+  replace (x * (1 + e) + d - x) with (x * e + d) by ring.
+  assert (H1 : / 2 * bpow radix2 (- prec + 1) = bpow radix2 (- prec)).
+  { rewrite bpow_plus, bpow_1. simpl (IZR radix2). field. }
+  assert (H2 : / 2 * bpow radix2 emin = bpow radix2 (emin - 1)).
+  { replace emin with (emin - 1 + 1)%Z at 1 by ring. rewrite bpow_plus, bpow_1.
+    simpl (IZR radix2). field. }
+  rewrite H1 in He. rewrite H2 in Hd.
+  eapply Rle_trans; [apply Rabs_triang|].
+  rewrite Rabs_mult.
+  apply Rplus_le_compat; [| exact Hd].
+  rewrite Rmult_comm. apply Rmult_le_compat_r; [apply Rabs_pos | exact He].
+Qed.
+
+(** Any rounding of the format (toward zero, up, down, to nearest, ...):
+    error below one ulp, so k = 2, eta = 2^emin. *)
+Lemma faithful_covered : forall (emin prec : Z) (rnd : R -> Z), (0 < prec)%Z -> Valid_rnd rnd ->
+  forall x : R,
+  approx 2 (bpow radix2 (- prec)) (bpow radix2 emin)
+    (round radix2 (FLT_exp emin prec) rnd x) x.
+Proof.
+  intros emin prec rnd Hp Hr x. unfold approx, ap1.
+  assert (HP : Prec_gt_0 prec) by exact Hp.
+  assert (U0 : 0 < bpow radix2 (- prec)) by apply bpow_gt_0.
+  assert (E0 : 0 < bpow radix2 emin) by apply bpow_gt_0.
+  pose proof (Rabs_pos x).
+  destruct (Req_dec x 0) as [H0 | H0].
+  - subst x. rewrite round_0 by exact Hr. rewrite Rminus_0_r, Rabs_R0. lra.
+  - pose proof (error_lt_ulp radix2 (FLT_exp emin prec) rnd x H0) as E.
+    destruct (Rlt_or_le (Rabs x) (bpow radix2 (emin + prec - 1))) as [Hs | Hb].
+    + rewrite (ulp_FLT_small radix2 emin prec x) in E.
+      * assert (0 <= 2 * bpow radix2 (- prec) * Rabs x) by nra. lra.
+      * eapply Rlt_le_trans; [exact Hs|]. apply bpow_le. lia.
+    + pose proof (ulp_FLT_le radix2 emin prec x Hb) as U.
+      replace (bpow radix2 (1 - prec)) with (2 * bpow radix2 (- prec)) in U
+        by (replace (1 - prec)%Z with (1 + - prec)%Z by ring; rewrite bpow_plus, bpow_1; reflexivity).
+      lra.
+Qed.
+
+(** Flushing a result below the smallest normal number 2^(emin+prec-1) to zero. *)
+Definition flush (emin prec : Z) (y : R) : R :=
+  if Rlt_dec (Rabs y) (bpow radix2 (emin + prec - 1)) then 0 else y.
+
+Lemma flush_covered : forall (emin prec : Z) (rnd : R -> Z), (1 < prec)%Z -> Valid_rnd rnd ->
+  forall x : R,
+  approx 2 (bpow radix2 (- prec)) (bpow radix2 (emin + prec - 1))
+    (flush emin prec (round radix2 (FLT_exp emin prec) rnd x)) x.
+Proof.
+  intros emin prec rnd Hp Hr x. unfold flush.
+  assert (U0 : 0 < bpow radix2 (- prec)) by apply bpow_gt_0.
+  pose proof (Rabs_pos x) as Hx0.
+  assert (HP : Prec_gt_0 prec) by (unfold Prec_gt_0; lia).
+  destruct (Rlt_dec _ _) as [Hl | Hl].
+  - unfold approx, ap1. rewrite Rminus_0_l, Rabs_Ropp.
+    assert (Hx : Rabs x < bpow radix2 (emin + prec - 1)).
+    { destruct (Rlt_or_le (Rabs x) (bpow radix2 (emin + prec - 1))) as [H | H]; [exact H|].
+      exfalso. apply (Rlt_not_le _ _ Hl).
+      apply abs_round_ge_generic;
+        first [exact H | exact Hr | exact (FLT_exp_valid emin prec)
+              | (apply generic_format_bpow; unfold FLT_exp; lia)]. }
+    assert (0 <= 2 * bpow radix2 (- prec) * Rabs x) by nra. lra.
+  - pose proof (faithful_covered emin prec rnd ltac:(lia) Hr x) as F.
+    unfold approx, ap1 in *.
+    assert (bpow radix2 emin <= bpow radix2 (emin + prec - 1)) by (apply bpow_le; lia).
+    lra.
+Qed.
+
+(** Division by m (1 <= m <= 2^24, e.g. n or 2) as a reciprocal rounded to
+    nearest followed by a product rounded to nearest: k = 2 + 2^-20. *)
+Lemma recip_mul_covered : forall (u eta m x r y : R),
+  0 < u <= / 16777216 -> 0 <= eta -> eta * 1152921504606846976 <= u -> 1 <= m <= 16777216 ->
+  approx 1 u eta r (/ m) -> approx 1 u eta y (x * r) ->
+  approx (2 + / 1048576) u eta y (x / m).
+Proof.
+  intros u eta m x r y Hu He He2 Hm Hr Hy. unfold approx, ap1 in *. rewrite Rmult_1_l in Hr, Hy.
+  assert (Im : 0 < / m) by (apply Rinv_0_lt_compat; lra).
+  assert (Im2 : / 16777216 <= / m) by (apply Rinv_le_contravar; lra).
+  rewrite (Rabs_pos_eq (/ m)) in Hr by lra.
+  assert (R1 : Rabs (r - / m) <= (1 + / 68719476736) * u * / m).
+  { assert (eta <= / 68719476736 * u * / m).
+    { assert (/ 68719476736 * u * / 16777216 <= / 68719476736 * u * / m)
+        by (apply Rmult_le_compat_l; nra). lra. }
+    lra. }
+  set (d := (1 + / 68719476736) * u).
+  assert (Hd : 0 <= d <= / 8388608) by (unfold d; lra).
+  assert (X1 : Rabs (x * r - x / m) <= d * Rabs (x / m)).
+  { replace (x * r - x / m) with (x * (r - / m)) by (field; lra).
+    replace (x / m) with (x * / m) by (field; lra).
+    rewrite !Rabs_mult, (Rabs_pos_eq (/ m)) by lra.
+    replace (d * (Rabs x * / m)) with (Rabs x * (d * / m)) by ring.
+    apply Rmult_le_compat_l; [apply Rabs_pos|]. unfold d. lra. }
+  assert (X2 : Rabs (x * r) <= (1 + d) * Rabs (x / m)).
+  { pose proof (abs_near _ _ _ X1). lra. }
+  assert (X3 : u * Rabs (x * r) <= u * ((1 + d) * Rabs (x / m)))
+    by (apply Rmult_le_compat_l; lra).
+  assert (X4 : u * (d * Rabs (x / m)) <= u * (/ 8388608 * Rabs (x / m)))
+    by (apply Rmult_le_compat_l; [lra | apply Rmult_le_compat_r; [apply Rabs_pos | lra]]).
+  replace (y - x / m) with ((y - x * r) + (x * r - x / m)) by ring.
+  eapply Rle_trans; [apply Rabs_triang|].
+  pose proof (Rabs_pos (x / m)).
+  assert (X5 : u * Rabs (x / m) * / 68719476736 <= u * Rabs (x / m) * / 1048576)
+    by (apply Rmult_le_compat_l; [nra | lra]).
+  unfold d in *. nra.
+Qed.
+
+(** So every operation of the ieee profile is covered: add, sub, mul, inputs
+    and division rounded to nearest (k = 1 <= 2 + 2^-20), and division as
+    reciprocal then product ([recip_mul_covered]); binary32 shown, binary64
+    is the same with (prec, emin) = (53, -1074). *)
+Lemma ieee32_covered : forall (choice : Z -> bool) (x : R),
+  let y := round radix2 (FLT_exp (-149) 24) (Znearest choice) x in
+  ap_in ieee32 y x /\ ap_add ieee32 y x /\ ap_mul ieee32 y x /\ ap_div ieee32 y x.
+Proof.
+  intros choice x y.
+  pose proof (rn_covered (-149) 24 choice ltac:(lia) x) as H.
+  change (Z.opp 24) with (-24)%Z in H. change (-149 - 1)%Z with (-150)%Z in H.
+  unfold ap_in, ap_add, ap_mul, ap_div, ieee32; cbn [m_u m_eta k_in k_add k_mul k_div].
+  repeat split; try exact H.
+  unfold approx in *. eapply ap1_mono; [|exact H].
+  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
+Qed.
+
+Lemma ieee64_covered : forall (choice : Z -> bool) (x : R),
+  let y := round radix2 (FLT_exp (-1074) 53) (Znearest choice) x in
+  ap_in ieee64 y x /\ ap_add ieee64 y x /\ ap_mul ieee64 y x /\ ap_div ieee64 y x.
+Proof.
+  intros choice x y.
+  pose proof (rn_covered (-1074) 53 choice ltac:(lia) x) as H.
+  change (Z.opp 53) with (-53)%Z in H. change (-1074 - 1)%Z with (-1075)%Z in H.
+  unfold ap_in, ap_add, ap_mul, ap_div, ieee64; cbn [m_u m_eta k_in k_add k_mul k_div].
+  repeat split; try exact H.
+  unfold approx in *. eapply ap1_mono; [|exact H].
+  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
+Qed.
+
+(** The shader profile: any rounding of binary32 (nearest or toward zero,
+    ...), with or without flushing to zero, for inputs and for add, sub and
+    mul; division within 2.5 ulp. *)
+Lemma shader32_covered : forall (rnd : R -> Z), Valid_rnd rnd -> forall x : R,
+  let y := round radix2 (FLT_exp (-149) 24) rnd x in
+  (ap_in shader32 y x /\ ap_add shader32 y x /\ ap_mul shader32 y x) /\
+  (ap_in shader32 (flush (-149) 24 y) x /\ ap_add shader32 (flush (-149) 24 y) x
+   /\ ap_mul shader32 (flush (-149) 24 y) x).
+Proof.
+  intros rnd Hr x y. subst y.
+  pose proof (faithful_covered (-149) 24 rnd ltac:(lia) Hr x) as H1.
+  pose proof (flush_covered (-149) 24 rnd ltac:(lia) Hr x) as H2.
+  change (Z.opp 24) with (-24)%Z in H1, H2. change (-149 + 24 - 1)%Z with (-126)%Z in H2.
+  assert (E : bpow radix2 (-149) <= bpow radix2 (-126)) by (apply bpow_le; lia).
+  assert (H1' : approx 2 (bpow radix2 (-24)) (bpow radix2 (-126))
+                  (round radix2 (FLT_exp (-149) 24) rnd x) x)
+    by (unfold approx, ap1 in *; lra).
+  unfold ap_in, ap_add, ap_mul, shader32; cbn [m_u m_eta k_in k_add k_mul].
+  repeat split; assumption.
+Qed.
+
+Lemma shader32_div_covered : forall (x y : R),
+  Rabs (y - x) <= 5 / 2 * ulp radix2 (FLT_exp (-149) 24) x -> ap_div shader32 y x.
+Proof.
+  intros x y H. unfold ap_div, approx, ap1, shader32; cbn [m_u m_eta k_div].
+  assert (HP : Prec_gt_0 24) by (unfold Prec_gt_0; lia).
+  assert (E : bpow radix2 (-149) <= / 4 * bpow radix2 (-126)).
+  { replace (/ 4 * bpow radix2 (-126)) with (bpow radix2 (-128)) by (simpl; lra).
+    apply bpow_le; lia. }
+  assert (U0 : 0 < bpow radix2 (-24)) by apply bpow_gt_0.
+  pose proof (Rabs_pos x).
+  assert (U : ulp radix2 (FLT_exp (-149) 24) x <= 2 * bpow radix2 (-24) * Rabs x + bpow radix2 (-149)).
+  { destruct (Rlt_or_le (Rabs x) (bpow radix2 (-149 + 24 - 1))) as [Hs | Hb].
+    - rewrite (ulp_FLT_small radix2 (-149) 24 x).
+      + assert (0 <= 2 * bpow radix2 (-24) * Rabs x) by nra. lra.
+      + eapply Rlt_le_trans; [exact Hs|]. apply bpow_le. lia.
+    - pose proof (ulp_FLT_le radix2 (-149) 24 x Hb) as U.
+      replace (bpow radix2 (1 - 24)) with (2 * bpow radix2 (-24)) in U by (simpl; lra).
+      pose proof (bpow_ge_0 radix2 (-149)). lra. }
+  pose proof (bpow_ge_0 radix2 (-126)). lra.
+Qed.

@@ -1,0 +1,599 @@
+//! The acceptance profiles (`docs/float.md` §18, `proofs/Profiles.v`): Gouraud and
+//! corrected Euler computed by *other* implementations of the class each profile
+//! allows stay within the proved bound of the exact values on the exact inputs. Each
+//! test is named like its theorem.
+//!
+//! The implementations are written here from the definitions, not taken from `src/`:
+//! - `ieee`: native `f32`/`f64` code with the dot products summed in other orders,
+//!   with fused multiply-adds (`mul_add`), with `1/n` taken once and multiplied, and
+//!   corrected Euler by its closed form `p_a + i·(t_0 + (i−1)/2·ds)`;
+//! - `shader`: an operation-by-operation software model of binary32 (`common::emu`)
+//!   that at every rounding takes what the Vulkan/WGSL precision rules allow and a
+//!   careful implementation would not: round toward zero (or down, or up) for every
+//!   addition, subtraction and multiplication, divisions 2 ulps toward zero from the
+//!   nearest (within the 2.5 ulps allowed), fused or unfused products, and every
+//!   input and result below `2^-126` flushed to zero.
+//!
+//! Inputs: the edge, targeted and random spans of `tests/common` (n up to 4096 in the
+//! extensive tier), exact values from the exact run.
+
+mod common;
+
+use common::emu::{round_dir, toward_zero, Dir, Format, BINARY32};
+use common::*;
+use num_traits::{Signed, Zero};
+use phong_approx::{Method, Scalar, Span};
+
+/// `(α·n + β)·u`, the form of every bound of `proofs/Profiles.v`.
+fn bound(alpha: f64, beta: f64, n: u32, u: f64) -> f64 {
+    (alpha * f64::from(n) + beta) * u
+}
+
+/// The worst error of `got` against the exact values of `method` on `c`, in units of
+/// the bound; panics with the case when a pixel is over.
+fn within(what: &str, c: &Case, s: &Span<Q>, method: Method, got: &[Q], b: f64) {
+    let want = exact_values(method, c, s);
+    assert_eq!(got.len(), want.len());
+    for (i, (g, w)) in got.iter().zip(want.iter()).enumerate() {
+        let e = (g.clone() - w.clone()).abs().to_f64();
+        assert!(
+            e <= b,
+            "{what}: pixel {i} of n = {}: error {e:e} > bound {b:e}\ninputs: {c:?}",
+            c.n
+        );
+    }
+}
+
+/// The spans every profile test runs on: edge, targeted and (fixed-seed) random.
+fn spans() -> Vec<(Case, Span<Q>)> {
+    use proptest::strategy::{Strategy, ValueTree};
+    let mut v: Vec<Case> = edge_cases();
+    v.extend(targeted_cases());
+    let mut runner = proptest::test_runner::TestRunner::deterministic();
+    for _ in 0..tiered(24, 96) {
+        v.push(arb_case().new_tree(&mut runner).unwrap().current());
+        v.push(arb_targeted().new_tree(&mut runner).unwrap().current());
+    }
+    v.into_iter()
+        .filter_map(|c| c.span().map(|s| (c, s)))
+        .collect()
+}
+
+// ---------------------------------------------------------------- ieee: native code
+
+/// A native float type for the `ieee` variants.
+trait Native: Copy + std::ops::Add<Output = Self> + std::ops::Sub<Output = Self> {
+    fn of(x: &Q) -> Self;
+    fn q(self) -> Q;
+    fn from_u32(n: u32) -> Self;
+    fn mul(self, b: Self) -> Self;
+    fn div(self, b: Self) -> Self;
+    fn fma(self, b: Self, c: Self) -> Self;
+    const U: f64;
+}
+
+macro_rules! native {
+    ($t:ty) => {
+        impl Native for $t {
+            fn of(x: &Q) -> Self {
+                <$t as Scalar>::from_rational(x)
+            }
+            fn q(self) -> Q {
+                Scalar::to_rational(&self).expect("finite")
+            }
+            fn from_u32(n: u32) -> Self {
+                n as $t
+            }
+            fn mul(self, b: Self) -> Self {
+                self * b
+            }
+            fn div(self, b: Self) -> Self {
+                self / b
+            }
+            fn fma(self, b: Self, c: Self) -> Self {
+                self.mul_add(b, c)
+            }
+            const U: f64 = <$t>::EPSILON as f64 / 2.0;
+        }
+    };
+}
+native!(f32);
+native!(f64);
+
+/// How a variant sums a dot product.
+#[derive(Clone, Copy, Debug)]
+enum Dot {
+    /// `(z + y) + x`, each product rounded.
+    Reversed,
+    /// `fma(x, x', fma(y, y', z·z'))`.
+    Fused,
+    /// `x + (y + z)`.
+    RightFirst,
+}
+
+fn dot<T: Native>(how: Dot, a: [T; 3], b: [T; 3]) -> T {
+    match how {
+        Dot::Reversed => a[2].mul(b[2]) + a[1].mul(b[1]) + a[0].mul(b[0]),
+        Dot::Fused => a[0].fma(b[0], a[1].fma(b[1], a[2].mul(b[2]))),
+        Dot::RightFirst => a[0].mul(b[0]) + (a[1].mul(b[1]) + a[2].mul(b[2])),
+    }
+}
+
+/// One `ieee` implementation: its dot products, whether it divides by `n` through
+/// `1/n`, and whether it fuses the products that feed an addition.
+#[derive(Clone, Copy, Debug)]
+struct Variant {
+    dot: Dot,
+    reciprocal: bool,
+    fused: bool,
+}
+
+const VARIANTS: [Variant; 3] = [
+    Variant {
+        dot: Dot::Reversed,
+        reciprocal: false,
+        fused: false,
+    },
+    Variant {
+        dot: Dot::Fused,
+        reciprocal: true,
+        fused: true,
+    },
+    Variant {
+        dot: Dot::RightFirst,
+        reciprocal: true,
+        fused: false,
+    },
+];
+
+/// The set-up of `proofs/Profiles.v` (the paper's eqs. 2–3, 10–11, 14–17) in `T`.
+struct Setup<T> {
+    pa: T,
+    dp: T,
+    ds: T,
+    t0: T,
+}
+
+fn setup<T: Native>(v: Variant, s: &Span<Q>) -> Setup<T> {
+    let vec = |x: &phong_approx::Vec3<Q>| [T::of(&x.x), T::of(&x.y), T::of(&x.z)];
+    let (na, nb, l) = (vec(&s.na), vec(&s.nb), vec(&s.l));
+    let nf = T::from_u32(s.n);
+    let inv = T::from_u32(1).div(nf);
+    let over_n = |x: T| if v.reciprocal { x.mul(inv) } else { x.div(nf) };
+    let two = T::from_u32(2);
+    let k = [0, 1, 2].map(|j| over_n(nb[j] - na[j]));
+    let a = dot(v.dot, k, l);
+    let pa = dot(v.dot, na, l);
+    let pb = dot(v.dot, nb, l);
+    let c = dot(v.dot, k, k);
+    let d = two.mul(dot(v.dot, k, na));
+    let two_n_c = two.mul(nf).mul(c);
+    let dqb = two_n_c + d;
+    let half = |x: T| x.div(two);
+    // a − (pa/2)·d: fused as fma(−pa/2, d, a).
+    let fms = |x: T, y: T, z: T| {
+        if v.fused {
+            (T::from_u32(0) - x).fma(y, z)
+        } else {
+            z - x.mul(y)
+        }
+    };
+    let dia = fms(half(pa), d, a);
+    let dib = fms(half(pb), dqb, a);
+    let ds = over_n(dib - dia);
+    let tri = T::from_u32(s.n).mul(T::from_u32(s.n - 1)).div(two);
+    let pn = if v.fused {
+        tri.fma(ds, nf.fma(dia, pa))
+    } else {
+        pa + (nf.mul(dia) + tri.mul(ds))
+    };
+    let eps = pn - pb;
+    let t0 = dia - over_n(eps);
+    let dp = over_n(pb - pa);
+    Setup { pa, dp, ds, t0 }
+}
+
+fn gouraud<T: Native>(v: Variant, s: &Span<Q>) -> Vec<Q> {
+    let st = setup::<T>(v, s);
+    let mut g = st.pa;
+    let mut out = vec![g.q()];
+    for _ in 0..s.n {
+        g = g + st.dp;
+        out.push(g.q());
+    }
+    out
+}
+
+fn corrected_euler<T: Native>(v: Variant, s: &Span<Q>) -> Vec<Q> {
+    let st = setup::<T>(v, s);
+    let (mut p, mut t) = (st.pa, st.t0);
+    let mut out = vec![p.q()];
+    for _ in 0..s.n {
+        p = p + t;
+        t = t + st.ds;
+        out.push(p.q());
+    }
+    out
+}
+
+/// Corrected Euler by its closed form `p_a + i·(t_0 + (i−1)/2·ds)`, fused or not.
+fn corrected_euler_closed<T: Native>(v: Variant, s: &Span<Q>) -> Vec<Q> {
+    let st = setup::<T>(v, s);
+    let two = T::from_u32(2);
+    (0..=s.n)
+        .map(|i| {
+            let fi = T::from_u32(i);
+            let h = (fi - T::from_u32(1)).div(two).mul(st.ds);
+            let g = st.t0 + h;
+            let p = if v.fused {
+                fi.fma(g, st.pa)
+            } else {
+                st.pa + fi.mul(g)
+            };
+            p.q()
+        })
+        .collect()
+}
+
+fn ieee<T: Native>(theorem: &str, method: Method, alpha: f64, beta: f64) {
+    let mut checked = 0;
+    for (c, s) in spans() {
+        let b = bound(alpha, beta, s.n, T::U);
+        for v in VARIANTS {
+            let got = match method {
+                Method::Gouraud => gouraud::<T>(v, &s),
+                _ => corrected_euler::<T>(v, &s),
+            };
+            within(&format!("{theorem} {v:?}"), &c, &s, method, &got, b);
+            checked += 1;
+        }
+    }
+    assert!(checked > 100, "{checked}");
+}
+
+#[test]
+fn profile_ieee_gouraud_binary32() {
+    ieee::<f32>(
+        "profile_ieee_gouraud_binary32",
+        Method::Gouraud,
+        1.0006,
+        11.001,
+    );
+}
+
+#[test]
+fn profile_ieee_gouraud_binary64() {
+    ieee::<f64>(
+        "profile_ieee_gouraud_binary64",
+        Method::Gouraud,
+        1.0006,
+        11.001,
+    );
+}
+
+#[test]
+fn profile_ieee_corrected_euler_binary32() {
+    ieee::<f32>(
+        "profile_ieee_corrected_euler_binary32",
+        Method::CorrectedEuler,
+        2.2,
+        51.21,
+    );
+}
+
+#[test]
+fn profile_ieee_corrected_euler_binary64() {
+    ieee::<f64>(
+        "profile_ieee_corrected_euler_binary64",
+        Method::CorrectedEuler,
+        2.2,
+        51.21,
+    );
+}
+
+fn closed<T: Native>(theorem: &str) {
+    for (c, s) in spans() {
+        for v in VARIANTS {
+            let got = corrected_euler_closed::<T>(v, &s);
+            within(
+                &format!("{theorem} {v:?}"),
+                &c,
+                &s,
+                Method::CorrectedEuler,
+                &got,
+                59.61 * T::U,
+            );
+        }
+    }
+}
+
+#[test]
+fn profile_ieee_corrected_euler_closed_binary32() {
+    closed::<f32>("profile_ieee_corrected_euler_closed_binary32");
+}
+
+#[test]
+fn profile_ieee_corrected_euler_closed_binary64() {
+    closed::<f64>("profile_ieee_corrected_euler_closed_binary64");
+}
+
+/// Long spans in `f64` (the `_large` theorems hold up to `2^24` pixels; here `2^16`
+/// in the default tier, `2^20` in the extensive tier), every variant; the exact value
+/// at every 4099th pixel and the last (the exact comparison is the cost).
+fn large(theorem: &str, method: Method, closed: bool, alpha: f64, beta: f64) {
+    let n = tiered(1 << 16, 1 << 20);
+    for (na, nb, l) in [
+        (Stereo(0, 0, 1), Stereo(1, 0, 3), Stereo(2, 1, 5)),
+        (Stereo(0, 0, 1), Stereo(96, 0, 1), Stereo(0, 0, 1)),
+    ] {
+        let c = Case {
+            why: "long span",
+            na,
+            nb,
+            l,
+            n,
+        };
+        let s = c.span().unwrap();
+        // Exactly: Gouraud p_a + i·dp, corrected Euler p_a + i·(t_0 + (i−1)/2·ds).
+        let exact = |i: u32| {
+            let x = qi(i);
+            if method == Method::Gouraud {
+                s.p_a.clone() + x * s.dp.clone()
+            } else {
+                let h = (x.clone() - q(1, 1)) / q(2, 1) * s.ds.clone();
+                s.p_a.clone() + x * (s.t0.clone() + h)
+            }
+        };
+        let b = bound(alpha, beta, n, f64::U);
+        for v in VARIANTS {
+            let got: Vec<(u32, f64)> = if closed {
+                let st = setup::<f64>(v, &s);
+                (0..=n)
+                    .filter(|i| i % 4099 == 0 || *i == n)
+                    .map(|i| {
+                        let fi = f64::from(i);
+                        let g = st.t0 + (fi - 1.0) / 2.0 * st.ds;
+                        (
+                            i,
+                            if v.fused {
+                                fi.mul_add(g, st.pa)
+                            } else {
+                                st.pa + fi * g
+                            },
+                        )
+                    })
+                    .collect()
+            } else {
+                let all = match method {
+                    Method::Gouraud => gouraud::<f64>(v, &s),
+                    _ => corrected_euler::<f64>(v, &s),
+                };
+                all.into_iter()
+                    .enumerate()
+                    .filter(|(i, _)| i % 4099 == 0 || *i == n as usize)
+                    .map(|(i, x)| (i as u32, x.to_f64()))
+                    .collect()
+            };
+            for (i, g) in got {
+                let e = (g.q() - exact(i)).abs().to_f64();
+                assert!(e <= b, "{theorem} {v:?} pixel {i} of {n}: {e:e} > {b:e}");
+            }
+        }
+    }
+}
+
+#[test]
+fn profile_ieee_gouraud_binary64_large() {
+    large(
+        "profile_ieee_gouraud_binary64_large",
+        Method::Gouraud,
+        false,
+        1.0006,
+        11.001,
+    );
+}
+
+#[test]
+fn profile_ieee_corrected_euler_binary64_large() {
+    large(
+        "profile_ieee_corrected_euler_binary64_large",
+        Method::CorrectedEuler,
+        false,
+        2.2,
+        51.21,
+    );
+}
+
+#[test]
+fn profile_ieee_corrected_euler_closed_binary64_large() {
+    large(
+        "profile_ieee_corrected_euler_closed_binary64_large",
+        Method::CorrectedEuler,
+        true,
+        0.0,
+        59.61,
+    );
+}
+
+// -------------------------------------------------------- shader: the software GPU
+
+/// The `shader` arithmetic: binary32 results rounded in `dir` (flushed below `2^-126`
+/// when `flush`), divisions two units toward zero from the nearest, products fused
+/// into the addition that takes them when `fused`.
+#[derive(Clone, Copy, Debug)]
+struct Gpu {
+    dir: Dir,
+    flush: bool,
+    fused: bool,
+}
+
+const F: Format = BINARY32;
+
+impl Gpu {
+    fn r(&self, x: Q) -> Q {
+        let y = round_dir(&x, F, self.dir);
+        if self.flush && !y.is_zero() && y.abs() < common::emu::pow2(-126) {
+            Q::zero()
+        } else {
+            y
+        }
+    }
+    fn input(&self, x: &Q) -> Q {
+        self.r(x.clone())
+    }
+    fn add(&self, a: &Q, b: &Q) -> Q {
+        self.r(a + b)
+    }
+    fn sub(&self, a: &Q, b: &Q) -> Q {
+        self.r(a - b)
+    }
+    fn mul(&self, a: &Q, b: &Q) -> Q {
+        self.r(a * b)
+    }
+    /// Within 2.5 ulps: the nearest, then two units toward zero.
+    fn div(&self, a: &Q, b: &Q) -> Q {
+        let y = toward_zero(&round_dir(&(a / b), F, Dir::Nearest), F, 2);
+        self.r(y)
+    }
+    /// `a − x·y`, the product fused or rounded.
+    fn fms(&self, x: &Q, y: &Q, a: &Q) -> Q {
+        if self.fused {
+            self.r(a - x * y)
+        } else {
+            self.sub(a, &self.mul(x, y))
+        }
+    }
+    fn dot(&self, a: &[Q; 3], b: &[Q; 3]) -> Q {
+        if self.fused {
+            // fma(x, x', fma(y, y', z·z'))
+            let z = self.mul(&a[2], &b[2]);
+            let y = self.r(&a[1] * &b[1] + z);
+            self.r(&a[0] * &b[0] + y)
+        } else {
+            let xy = self.add(&self.mul(&a[0], &b[0]), &self.mul(&a[1], &b[1]));
+            self.add(&xy, &self.mul(&a[2], &b[2]))
+        }
+    }
+}
+
+const GPUS: [Gpu; 4] = [
+    Gpu {
+        dir: Dir::TowardZero,
+        flush: true,
+        fused: false,
+    },
+    Gpu {
+        dir: Dir::TowardZero,
+        flush: true,
+        fused: true,
+    },
+    Gpu {
+        dir: Dir::Down,
+        flush: true,
+        fused: false,
+    },
+    Gpu {
+        dir: Dir::Up,
+        flush: false,
+        fused: true,
+    },
+];
+
+/// The set-up on the GPU model: `(p_a, dp, ds, t_0)`.
+fn gpu_setup(g: Gpu, s: &Span<Q>) -> [Q; 4] {
+    let vec = |x: &phong_approx::Vec3<Q>| [g.input(&x.x), g.input(&x.y), g.input(&x.z)];
+    let (na, nb, l) = (vec(&s.na), vec(&s.nb), vec(&s.l));
+    let nf = qi(s.n);
+    let two = q(2, 1);
+    let k = [0, 1, 2].map(|j| g.div(&g.sub(&nb[j], &na[j]), &nf));
+    let a = g.dot(&k, &l);
+    let pa = g.dot(&na, &l);
+    let pb = g.dot(&nb, &l);
+    let c = g.dot(&k, &k);
+    let d = g.mul(&two, &g.dot(&k, &na));
+    let dqb = if g.fused {
+        g.r(&two * &nf * &c + &d)
+    } else {
+        g.add(&g.mul(&(&two * &nf), &c), &d)
+    };
+    let dia = g.fms(&g.div(&pa, &two), &d, &a);
+    let dib = g.fms(&g.div(&pb, &two), &dqb, &a);
+    let ds = g.div(&g.sub(&dib, &dia), &nf);
+    let tri = qi(s.n) * qi(s.n - 1) / q(2, 1);
+    let pn = if g.fused {
+        g.r(&tri * &ds + g.r(&nf * &dia + &pa))
+    } else {
+        g.add(&g.add(&pa, &g.mul(&nf, &dia)), &g.mul(&tri, &ds))
+    };
+    let eps = g.sub(&pn, &pb);
+    let t0 = g.sub(&dia, &g.div(&eps, &nf));
+    let dp = g.div(&g.sub(&pb, &pa), &nf);
+    [pa, dp, ds, t0]
+}
+
+fn shader(theorem: &str, method: Method, alpha: f64, beta: f64) {
+    let u = f32::U;
+    // The software GPU is slow: the spans up to n = 1024 in the default tier.
+    let most = tiered(1024, 4096);
+    for (c, s) in spans().into_iter().filter(|(c, _)| c.n <= most) {
+        let b = bound(alpha, beta, s.n, u);
+        for g in GPUS {
+            let [pa, dp, ds, t0] = gpu_setup(g, &s);
+            let mut out = vec![pa.clone()];
+            let (mut p, mut t) = (pa, t0);
+            for _ in 0..s.n {
+                if method == Method::Gouraud {
+                    p = g.add(&p, &dp);
+                } else {
+                    p = g.add(&p, &t);
+                    t = g.add(&t, &ds);
+                }
+                out.push(p.clone());
+            }
+            within(&format!("{theorem} {g:?}"), &c, &s, method, &out, b);
+        }
+    }
+}
+
+#[test]
+fn profile_shader_gouraud_binary32() {
+    shader(
+        "profile_shader_gouraud_binary32",
+        Method::Gouraud,
+        2.0012,
+        24.002,
+    );
+}
+
+#[test]
+fn profile_shader_corrected_euler_binary32() {
+    shader(
+        "profile_shader_corrected_euler_binary32",
+        Method::CorrectedEuler,
+        4.4,
+        109.7,
+    );
+}
+
+/// The model's own roundings are what the profile allows: toward zero never moves
+/// away from zero, the 2.5-ulp division is within 2.5 ulps, flushing only touches
+/// values below `2^-126`. (The GPU model is checked before it is trusted.)
+#[test]
+fn the_gpu_model_rounds_as_the_shader_profile_allows() {
+    let g = GPUS[0];
+    for (a, b) in [(1i64, 3i64), (-2, 7), (10, 9), (1, 1000)] {
+        let x = q(a, b);
+        let rz = g.r(x.clone());
+        assert!(rz.abs() <= x.abs());
+        let d = g.div(&q(a, 1), &q(b, 1));
+        let ulp = common::emu::ulp(&x, F);
+        assert!(
+            (d.clone() - x.clone()).abs() <= ulp * q(5, 2),
+            "{a}/{b}: {d}"
+        );
+        assert!(d != round_dir(&x, F, Dir::Nearest));
+    }
+    let tiny = common::emu::pow2(-130);
+    assert!(g.r(tiny.clone()).is_zero());
+    assert!(!GPUS[3].r(tiny).is_zero());
+}

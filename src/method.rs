@@ -364,7 +364,9 @@ impl Method {
     /// How well the exact run ([`Method::run`] in [`BigRational`], whose square roots,
     /// `acos` and `cos` are accurate to 2^-256) knows its values: `None` when they
     /// are exact (field-only methods), else `bits` with every value within
-    /// `2^-bits` of the method's value in real arithmetic. What is lost of 2^-250:
+    /// `2^-bits` of the method's value in real arithmetic. What is lost of 2^-(b − 6), `b`
+    /// the accuracy of the square roots, `acos` and `cos` ([`crate::reference::transcendental::bits`],
+    /// 256 by default):
     /// - Phong-valued methods: `p/√q` moves by `e/√q_min` when `√q` is off by `e`,
     ///   and `q` itself is exact: `⌈log2(1/q_min)⌉/2 + 2`;
     /// - the related methods (spherical, binary, Bishop–Weimer): their set-up divides
@@ -399,7 +401,7 @@ impl Method {
         } else {
             0
         };
-        Some(250 - loss)
+        Some(i64::from(crate::reference::transcendental::bits()) - 6 - loss)
     }
 
     /// The exact 8-bit levels of `values`, the method's exact run on `span`, scaled

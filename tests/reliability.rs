@@ -2,6 +2,9 @@
 //! attacker would has a test here that reproduces it, and now passes. Numbers refer
 //! to the list in docs/conformance.md, "Limits and exit codes".
 
+use num_bigint::BigInt;
+use num_traits::{Pow, Signed};
+use phong_approx::BigRational;
 use serde_json::Value;
 use std::io::Read;
 use std::path::{Path, PathBuf};
@@ -101,44 +104,56 @@ fn d1_published_vectors_pass_and_modified_ones_are_refused() {
     assert_eq!(code(&check_edited("d1c", |_| {}, ALLOW)), 0);
 }
 
+/// `csv` with the value of `id`'s pixel `pixel` replaced by `value`.
+fn perturbed(csv: &str, id: &str, pixel: usize, value: &str) -> String {
+    let row = format!("{id},{pixel},");
+    csv.lines()
+        .map(|l| {
+            if l.starts_with(&row) {
+                format!("{row}{value}\n")
+            } else {
+                format!("{l}\n")
+            }
+        })
+        .collect()
+}
+
 #[test]
-fn d1_truncated_expectations_cannot_make_garbage_pass() {
-    let o = check_edited(
-        "d1-empty",
-        |v| {
+fn d1_truncated_or_edited_expectations_cannot_make_garbage_pass() {
+    // A modified file's expectations are not read: they are recomputed from its
+    // inputs, so emptying or editing them changes nothing (the right results pass),
+    // and a wrong result still fails.
+    type Edit = fn(&mut Value);
+    let edits: [(&str, Edit); 3] = [
+        ("d1-empty", |v| {
             for c in v["cases"].as_array_mut().unwrap() {
                 c["expected"]["corrected-euler"]["values"] = Value::Array(vec![]);
             }
-        },
-        ALLOW,
-    );
-    refused(&o, "values");
-}
-
-#[test]
-fn d1_q_min_zero_is_refused() {
-    let o = check_edited("d1-qmin", |v| v["cases"][0]["q_min"] = 0.into(), ALLOW);
-    refused(&o, "q_min");
-}
-
-#[test]
-fn d1_an_edited_value_is_caught() {
-    let o = check_edited(
-        "d1-edit",
-        |v| {
-            let x = &mut v["cases"][3]["expected"]["corrected-euler"]["values"][1];
-            let f: f64 = x.as_str().unwrap().parse().unwrap();
-            *x = Value::String(format!("{}", f + 0.5));
-        },
-        ALLOW,
-    );
-    refused(&o, "level");
-    let o = check_edited(
-        "d1-huge",
-        |v| v["cases"][3]["expected"]["corrected-euler"]["values"][1] = "1e39".into(),
-        &["--allow-modified-vectors", "--tolerance", "ulps=1"],
-    );
-    refused(&o, "out of range");
+        }),
+        ("d1-qmin", |v| v["cases"][0]["q_min"] = 0.into()),
+        ("d1-edit", |v| {
+            v["cases"][3]["expected"]["corrected-euler"]["values"][1] = "1e39".into();
+        }),
+    ];
+    for (name, edit) in edits {
+        let o = check_edited(name, edit, ALLOW);
+        assert_eq!(code(&o), 0, "{name}: {}", stderr(&o));
+        let d = scratch(&format!("{name}-bad"));
+        let mut v = typical();
+        let bad = perturbed(&results_csv(&v), "typical-004", 1, "0.25");
+        edit(&mut v);
+        let vf = write(&d, "v.json", &serde_json::to_string(&v).unwrap());
+        let rf = write(&d, "r.csv", &bad);
+        let o = run(&[
+            "check",
+            "--vectors",
+            &vf,
+            "--results",
+            &rf,
+            "--allow-modified-vectors",
+        ]);
+        assert_eq!(code(&o), 1, "{name}: {}", stderr(&o));
+    }
 }
 
 #[test]
@@ -344,7 +359,58 @@ fn d5_no_digit_is_printed_that_is_not_known() {
         "--digits",
         "200",
     ]);
-    refused(&o, "significant digits");
+    // More digits than 2^-256 gives: the run is repeated with more bits, and every
+    // printed digit is right (value² = p²/q, independently, to 2·10^-199).
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let v: Value = serde_json::from_slice(&o.stdout).unwrap();
+    let (na, nb, l) = ([0, 0, 5], [3, 0, 4], [7, 24, 0]); // ×1/5, ×1/5, ×1/25
+    for (i, x) in v["values"].as_array().unwrap().iter().enumerate() {
+        let s = x.as_str().unwrap();
+        assert!(
+            s == "0" || s.replace(['.', '-'], "").trim_start_matches('0').len() >= 200,
+            "{s}"
+        );
+        let got = phong_approx::parse::parse_rational(s).unwrap();
+        let t = BigRational::new(i.into(), 3.into());
+        let comp = |k: usize| {
+            (BigRational::from_integer(1.into()) - t.clone())
+                * BigRational::from_integer(na[k].into())
+                + t.clone() * BigRational::from_integer(nb[k].into())
+        };
+        let n = [comp(0), comp(1), comp(2)];
+        let p: BigRational = (0..3)
+            .map(|k| n[k].clone() * BigRational::from_integer(l[k].into()))
+            .sum();
+        let q: BigRational = (0..3).map(|k| n[k].clone() * n[k].clone()).sum();
+        // p/√q with the 1/5 and 1/25 scales: (p/125)² / (q/25) = p²/(625·q).
+        let want2 = p.clone() * p / (q * BigRational::from_integer(625.into()));
+        let diff = (got.clone() * got - want2).abs();
+        assert!(
+            diff < BigRational::new(2.into(), BigInt::from(10).pow(199u32)),
+            "pixel {i}"
+        );
+    }
+    // Beyond what any precision this tool uses gives: refused at once.
+    let t = Instant::now();
+    let o = run(&[
+        "span",
+        "--method",
+        "phong",
+        "--na",
+        "0,0,1",
+        "--nb",
+        "0.6,0,0.8",
+        "--light",
+        "0.28,0.96,0",
+        "--steps",
+        "3",
+        "--scalar",
+        "exact",
+        "--digits",
+        "10000",
+    ]);
+    refused(&o, "at most 2446 significant digits");
+    assert!(t.elapsed() < Duration::from_secs(5));
     // Rational methods are exact: any number of digits.
     let o = run(&[
         "span",
@@ -494,14 +560,12 @@ fn d6_work_beyond_the_budget_needs_yes() {
 }
 
 #[test]
-// The child is reaped by `wait4` (for its resource usage), not by `Child::wait`.
-#[allow(clippy::zombie_processes)]
 fn d6_float_spans_of_any_allowed_length_stream() {
-    // 2^22 pixels in f64: the JSON is written as it goes, so the process holds little
-    // more than the values (it held about 270 bytes per pixel when the whole text was
+    // 2^22 pixels: the JSON is written as it goes, so the process holds little more
+    // than the values (it held about 270 bytes per pixel when the whole text was
     // built first: 4.4 GB at 2^24).
-    let mut child = bin()
-        .args([
+    let (c, e, out) = run_within(
+        &[
             "span",
             "--method",
             "corrected-euler",
@@ -513,26 +577,12 @@ fn d6_float_spans_of_any_allowed_length_stream() {
             "0,0,1",
             "--steps",
             "4194304",
-        ])
-        .stdout(Stdio::piped())
-        .spawn()
-        .unwrap();
-    let mut stdout = child.stdout.take().unwrap();
-    let reader = std::thread::spawn(move || {
-        let mut b = Vec::new();
-        stdout.read_to_end(&mut b).unwrap();
-        b
-    });
-    let (mut status, mut usage) = (0, unsafe { std::mem::zeroed::<libc::rusage>() });
-    // SAFETY: waits for our own child; `status` and `usage` are valid out-pointers.
-    let pid = unsafe { libc::wait4(child.id() as i32, &mut status, 0, &mut usage) };
-    assert_eq!(pid, child.id() as i32);
-    assert!(libc::WIFEXITED(status) && libc::WEXITSTATUS(status) == 0);
-    let bytes = reader.join().unwrap();
-    let v: Value = serde_json::from_slice(&bytes).expect("valid JSON");
+        ],
+        BASE_MIB + 64,
+    );
+    assert_eq!(c, 0, "{e}");
+    let v: Value = serde_json::from_slice(&out).expect("valid JSON");
     assert_eq!(v["values"].as_array().unwrap().len(), 4_194_305);
-    let peak_mb = usage.ru_maxrss / 1024;
-    assert!(peak_mb < 600, "peak memory {peak_mb} MB for 2^22 pixels");
 }
 
 #[test]
@@ -710,14 +760,18 @@ fn d10_a_scene_with_no_visible_pixel_exits_2() {
 #[test]
 fn d11_echoed_input_is_cut_and_escaped() {
     let d = scratch("d11");
-    let id = format!("\x1b[31m{}", "x".repeat(10_000_000));
-    let r = write(&d, "r.csv", &format!("case,pixel,value\n{id},0,0.5\n"));
     let v = root().join("vectors/typical.json").display().to_string();
-    let o = run(&["check", "--vectors", &v, "--results", &r]);
-    refused(&o, "unknown case id");
-    let e = stderr(&o);
-    assert!(e.len() < 2000, "{} bytes of stderr", e.len());
-    assert!(!e.contains('\x1b'), "raw escape byte");
+    // An id of 10 MB is a line too long to be a row; one of 4000 characters is an
+    // unknown id, shown cut and escaped.
+    for (len, needle) in [(10_000_000, "bytes long"), (4000, "unknown case id")] {
+        let id = format!("\x1b[31m{}", "x".repeat(len));
+        let r = write(&d, "r.csv", &format!("case,pixel,value\n{id},0,0.5\n"));
+        let o = run(&["check", "--vectors", &v, "--results", &r]);
+        refused(&o, needle);
+        let e = stderr(&o);
+        assert!(e.len() < 2000, "{} bytes of stderr", e.len());
+        assert!(!e.contains('\x1b'), "raw escape byte");
+    }
 }
 
 #[test]
@@ -955,4 +1009,441 @@ fn r7_interrupted_commits_are_completed_and_stale_temporaries_removed() {
     let o = quick_reproduce(&out2, &[]);
     refused(&o, "not a regular file");
     assert_eq!(std::fs::read_dir(&out2).unwrap().count(), 1);
+}
+
+/// Runs `bin args` with its address space limited to `limit_mib` MiB
+/// (`RLIMIT_AS`, set in the child before it execs, so the limit covers only the
+/// program: a peak measured with `wait4` would include this test process's own
+/// memory, inherited at the fork). Returns the exit code (−1 if killed by a signal,
+/// as an allocation failure aborts), stderr and stdout.
+fn run_within(args: &[&str], limit_mib: u64) -> (i32, String, Vec<u8>) {
+    use std::os::unix::process::CommandExt;
+    let limit = limit_mib << 20;
+    let mut cmd = bin();
+    cmd.args(args);
+    // SAFETY: setrlimit is async-signal-safe, and the closure touches nothing else.
+    unsafe {
+        cmd.pre_exec(move || {
+            let r = libc::rlimit {
+                rlim_cur: limit,
+                rlim_max: limit,
+            };
+            if libc::setrlimit(libc::RLIMIT_AS, &r) != 0 {
+                return Err(std::io::Error::last_os_error());
+            }
+            Ok(())
+        });
+    }
+    let o = cmd.output().unwrap();
+    (
+        o.status.code().unwrap_or(-1),
+        String::from_utf8_lossy(&o.stderr).into_owned(),
+        o.stdout,
+    )
+}
+
+/// The address space every run below is allowed on top of what its input needs:
+/// the program, its libraries and allocator reserves (the published typical set's
+/// own check runs within 40 MiB).
+const BASE_MIB: u64 = 32;
+
+#[test]
+fn r2_check_memory_is_bounded_by_the_vector_file() {
+    let d = scratch("r2");
+    let v = root().join("vectors/typical.json").display().to_string();
+    // The published typical set with its own exact results, within the base.
+    let good = write(&d, "good.csv", &results_csv(&typical()));
+    let (c, e, _) = run_within(
+        &["check", "--vectors", &v, "--results", &good],
+        BASE_MIB + 8,
+    );
+    assert_eq!(c, 0, "{e}");
+    // 4 M zeros for one case (8 MB), with the id first and with it last; a CSV row
+    // of 8 M commas; 3 MB of rows of empty fields. (Reading them whole took about 37
+    // times the file: 296 MB for 8 MB of zeros.)
+    let zeros = vec!["0"; 4 << 20].join(",");
+    let cases = [
+        (
+            "first.json",
+            format!(r#"{{"cases":[{{"id":"typical-001","values":[{zeros}]}}]}}"#),
+            "typical-001 has more than",
+        ),
+        (
+            "last.json",
+            format!(r#"{{"cases":[{{"values":[{zeros}],"id":"typical-001"}}]}}"#),
+            "has more than",
+        ),
+        ("commas.csv", ",".repeat(8 << 20), "bytes long"),
+        ("empty.csv", ",,\n".repeat(1 << 20), "field is empty"),
+    ];
+    for (name, text, needle) in cases {
+        let r = write(&d, name, &text);
+        let mib = text.len() as u64 >> 20;
+        let t = Instant::now();
+        // The file's bytes once, and as much again for what is built from them.
+        let (c, e, _) = run_within(
+            &["check", "--vectors", &v, "--results", &r],
+            BASE_MIB + 8 + 2 * mib,
+        );
+        assert_eq!(c, 2, "{name}: {e}");
+        assert_eq!(e.trim_end().lines().count(), 1, "{name}: {e}");
+        assert!(e.contains(needle), "{name}: {e}");
+        assert!(t.elapsed() < Duration::from_secs(20), "{name}");
+    }
+}
+
+fn levels_of(o: &Output) -> Vec<Value> {
+    assert_eq!(code(o), 0, "{}", stderr(o));
+    let v: Value = serde_json::from_slice(&o.stdout).unwrap();
+    v["levels"].as_array().unwrap().clone()
+}
+
+#[test]
+fn r3_exact_levels_with_normalize() {
+    // (1, 0, 1) everywhere: every value is exactly 1, level 255.
+    for m in ["phong", "gouraud", "corrected-euler", "euler", "duff"] {
+        let o = run(&[
+            "span",
+            "--method",
+            m,
+            "--na",
+            "1,0,1",
+            "--nb",
+            "1,0,1",
+            "--light",
+            "1,0,1",
+            "--steps",
+            "1",
+            "--scalar",
+            "exact",
+            "--normalize",
+        ]);
+        assert_eq!(levels_of(&o), vec![Value::from(255); 2], "{m}");
+    }
+    // Symmetric normals: Phong's middle normal is parallel to L (exactly 1), the
+    // ends are 1/√2 (180.3… → 180); Gouraud is 1/√2 throughout.
+    let span = |m: &str| {
+        run(&[
+            "span",
+            "--method",
+            m,
+            "--na",
+            "1,0,1",
+            "--nb",
+            "-1,0,1",
+            "--light",
+            "0,0,3",
+            "--steps",
+            "2",
+            "--scalar",
+            "exact",
+            "--normalize",
+        ])
+    };
+    let l = |v: &[u8]| v.iter().map(|&x| Value::from(x)).collect::<Vec<_>>();
+    assert_eq!(levels_of(&span("phong")), l(&[180, 255, 180]));
+    assert_eq!(levels_of(&span("gouraud")), l(&[180, 180, 180]));
+    // The float runs are unchanged: their level is that of the float value.
+    let o = run(&[
+        "span",
+        "--method",
+        "phong",
+        "--na",
+        "1,0,1",
+        "--nb",
+        "1,0,1",
+        "--light",
+        "1,0,1",
+        "--steps",
+        "1",
+        "--scalar",
+        "f64",
+        "--normalize",
+    ]);
+    assert_eq!(code(&o), 0);
+}
+
+/// `√x` of a positive rational to `2^-bits`, independently of the crate (integer
+/// square root of `x·4^bits`).
+fn sqrt_to(x: &BigRational, bits: usize) -> BigRational {
+    let scaled = (x.numer() << (2 * bits)) / x.denom();
+    BigRational::new(scaled.sqrt(), BigInt::from(1) << bits)
+}
+
+#[test]
+fn r4_angular_digits_are_true_near_plus_and_minus_one() {
+    // N_a = (2·10^40, 0, 10^80 − 1)/(10^80 + 1) is exactly unit and 10^-40 from
+    // (0, 0, 1); with N_b = (0.6, 0, 0.8), L = (0, 0, 1), n = 2 the middle pixel is
+    // cos((θ_a + θ_b)/2) = √((1 + cos(θ_a + θ_b))/2), with cos(θ_a + θ_b) =
+    // p_a·p_b − sin θ_a·sin θ_b all rational (sin θ_a = 2·10^40/(10^80 + 1)).
+    let big = BigInt::from(10).pow(80u32);
+    let den: BigInt = big.clone() + 1;
+    let s40: BigInt = BigInt::from(10).pow(40u32) * 2;
+    for sign in [1i32, -1] {
+        let na = format!(
+            "{s}/{den},0,{}{}/{den}",
+            if sign < 0 { "-" } else { "" },
+            big.clone() - 1,
+            s = s40
+        );
+        let o = run(&[
+            "span",
+            "--method",
+            "angular",
+            "--na",
+            &na,
+            "--nb",
+            "0.6,0,0.8",
+            "--light",
+            "0,0,1",
+            "--steps",
+            "2",
+            "--scalar",
+            "exact",
+            "--digits",
+            "74",
+        ]);
+        assert_eq!(code(&o), 0, "{}", stderr(&o));
+        let v: Value = serde_json::from_slice(&o.stdout).unwrap();
+        let got = phong_approx::parse::parse_rational(v["values"][1].as_str().unwrap()).unwrap();
+        let q = |n: BigInt, d: BigInt| BigRational::new(n, d);
+        let pa = q((big.clone() - 1) * BigInt::from(sign), den.clone());
+        let sa = q(s40.clone(), den.clone());
+        let c = pa * q(4.into(), 5.into()) - sa * q(3.into(), 5.into());
+        let want = BigRational::from_integer(sign.into())
+            * sqrt_to(
+                &((BigRational::from_integer(1.into()) + c) / BigRational::from_integer(2.into())),
+                400,
+            );
+        let tol = q(1.into(), BigInt::from(10).pow(74u32));
+        assert!(
+            (got.clone() - want.clone()).abs() < tol,
+            "sign {sign}: got {} want {}",
+            v["values"][1],
+            want.to_string().len()
+        );
+    }
+}
+
+#[test]
+fn r6_modified_vectors_supply_cases_not_truth() {
+    let d = scratch("r6");
+    // Every corrected-Euler value set to 0.5 (level 127), and results of all 0.5:
+    // the expectations are recomputed, so the results fail.
+    let mut v = typical();
+    let mut rows = String::from("case,pixel,value\n");
+    for c in v["cases"].as_array_mut().unwrap() {
+        let e = &mut c["expected"]["corrected-euler"];
+        let n = e["values"].as_array().unwrap().len();
+        e["values"] = Value::Array(vec![Value::from("0.5"); n]);
+        e["levels"] = Value::Array(vec![Value::from(127); n]);
+        for i in 0..n {
+            rows.push_str(&format!("{},{i},0.5\n", c["id"].as_str().unwrap()));
+        }
+    }
+    let vf = write(&d, "half.json", &serde_json::to_string(&v).unwrap());
+    let rf = write(&d, "half.csv", &rows);
+    let o = run(&[
+        "check",
+        "--vectors",
+        &vf,
+        "--results",
+        &rf,
+        "--allow-modified-vectors",
+    ]);
+    assert_eq!(code(&o), 1, "{}", stderr(&o));
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert!(out.contains("recomputed from the file's inputs"), "{out}");
+    // The right results pass whatever the file's expectations say (even none).
+    let good = write(&d, "good.csv", &results_csv(&typical()));
+    for c in v["cases"].as_array_mut().unwrap() {
+        c["expected"] = serde_json::json!({});
+        c["q_min"] = 0.into();
+    }
+    let vf = write(&d, "none.json", &serde_json::to_string(&v).unwrap());
+    let o = run(&[
+        "check",
+        "--vectors",
+        &vf,
+        "--results",
+        &good,
+        "--allow-modified-vectors",
+    ]);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    // A float form that is not the nearest float to the exact input is refused.
+    let mut w = typical();
+    w["cases"][2]["na"]["f32"][0] = "0.5".into();
+    let wf = write(&d, "f32.json", &serde_json::to_string(&w).unwrap());
+    refused(
+        &run(&[
+            "check",
+            "--vectors",
+            &wf,
+            "--results",
+            &good,
+            "--allow-modified-vectors",
+        ]),
+        "is not the nearest f32",
+    );
+    // Echoed text is escaped and cut: no escape sequence, no line of 100 KB.
+    let mut w = typical();
+    w["set"] = format!("\u{1b}[2J{}", "s".repeat(100_000)).into();
+    w["version"] = "1.0\u{1b}[31m".into();
+    for c in w["cases"].as_array_mut().unwrap() {
+        c["comment"] = format!("\u{1b}[31mred\n{}", "c".repeat(100_000)).into();
+    }
+    let wf = write(&d, "echo.json", &serde_json::to_string(&w).unwrap());
+    let o = run(&[
+        "check",
+        "--vectors",
+        &wf,
+        "--results",
+        &good,
+        "--allow-modified-vectors",
+    ]);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let out = String::from_utf8_lossy(&o.stdout);
+    assert!(!out.contains('\u{1b}'), "an escape sequence reached stdout");
+    assert!(
+        out.lines().all(|l| l.chars().count() < 600),
+        "a long line reached stdout"
+    );
+    // A vector file of millions of values: skipped unread, not stored.
+    let mut w = typical();
+    w["cases"][0]["expected"]["corrected-euler"]["values"] =
+        Value::Array(vec![Value::from("0"); 2 << 20]);
+    let text = serde_json::to_string(&w).unwrap();
+    let wf = write(&d, "big.json", &text);
+    let mib = text.len() as u64 >> 20;
+    drop(text);
+    let (c, e, _) = run_within(
+        &[
+            "check",
+            "--vectors",
+            &wf,
+            "--results",
+            &good,
+            "--allow-modified-vectors",
+        ],
+        BASE_MIB + 8 + 2 * mib,
+    );
+    assert_eq!(c, 0, "{e}");
+}
+
+#[test]
+fn r9_exact_work_is_budgeted_by_method_and_input_size() {
+    // What would take minutes is refused at once, naming --yes: binary's square root
+    // per segment point at 65536 steps (3–4 minutes), 80-digit inputs at 65536 steps.
+    let big = BigInt::from(10).pow(80u32);
+    let na = format!(
+        "{}/{},0,{}/{}",
+        BigInt::from(10).pow(40u32) * 2,
+        big.clone() + 1,
+        big.clone() - 1,
+        big + 1
+    );
+    for (m, na) in [
+        ("binary", "0,0,1"),
+        ("phong", na.as_str()),
+        ("spherical", na.as_str()),
+    ] {
+        let t = Instant::now();
+        let o = run(&[
+            "span",
+            "--method",
+            m,
+            "--na",
+            na,
+            "--nb",
+            "0.6,0,0.8",
+            "--light",
+            "0,0,1",
+            "--steps",
+            "65536",
+            "--scalar",
+            "exact",
+        ]);
+        refused(&o, "pass --yes");
+        assert!(t.elapsed() < Duration::from_secs(5), "{m}");
+    }
+}
+
+#[test]
+fn r11_float_spans_hold_little_more_than_their_values() {
+    // 2^22 pixels in f64: 32 MiB of values, run within twice that on top of the base
+    // (a string per value took about 8 times the values: 1.06 GB at 2^24).
+    let (c, e, out) = run_within(
+        &[
+            "span",
+            "--method",
+            "corrected-euler",
+            "--na",
+            "0,0,1",
+            "--nb",
+            "0.6,0,0.8",
+            "--light",
+            "0,0,1",
+            "--steps",
+            "4194304",
+            "--scalar",
+            "f64",
+        ],
+        BASE_MIB + 64,
+    );
+    assert_eq!(c, 0, "{e}");
+    assert!(out.len() > 4_194_305 * 10);
+}
+
+#[test]
+fn r12_nearly_equal_normals_get_the_precision_they_need() {
+    for m in ["spherical", "binary", "bishop-weimer"] {
+        let o = run(&[
+            "span",
+            "--method",
+            m,
+            "--na",
+            "0,0,1",
+            "--nb",
+            "1e-20,0,1",
+            "--normalize",
+            "--light",
+            "0.6,0,0.8",
+            "--steps",
+            "2",
+            "--scalar",
+            "exact",
+        ]);
+        assert_eq!(code(&o), 0, "{m}: {}", stderr(&o));
+        // Every pixel is within 10^-25 of Phong's (the normals are 10^-20 apart:
+        // all these methods agree with Phong to second order, about 10^-40).
+        let v: Value = serde_json::from_slice(&o.stdout).unwrap();
+        let p: Value = serde_json::from_slice(
+            &run(&[
+                "span",
+                "--method",
+                "phong",
+                "--na",
+                "0,0,1",
+                "--nb",
+                "1e-20,0,1",
+                "--normalize",
+                "--light",
+                "0.6,0,0.8",
+                "--steps",
+                "2",
+                "--scalar",
+                "exact",
+            ])
+            .stdout,
+        )
+        .unwrap();
+        for i in 0..3 {
+            let a = phong_approx::parse::parse_rational(v["values"][i].as_str().unwrap()).unwrap();
+            let b = phong_approx::parse::parse_rational(p["values"][i].as_str().unwrap()).unwrap();
+            assert!(
+                (a - b).abs() < BigRational::new(1.into(), BigInt::from(10).pow(25u32)),
+                "{m} {i}"
+            );
+        }
+    }
 }

@@ -5,9 +5,12 @@ use clap::Args;
 use phong_approx::conformance::check::{
     check, parse_results, CaseReport, Tolerance, MAX_RESULTS_BYTES,
 };
+use phong_approx::conformance::integrity::{
+    exact_work, input_bits, MAX_CASES, MAX_CASE_STEPS, MAX_RECOMPUTED_WORK,
+};
 use phong_approx::conformance::integrity::{published_set, sha256_hex, validate};
 use phong_approx::conformance::shown;
-use phong_approx::conformance::vectors::{method_key, VectorFile};
+use phong_approx::conformance::vectors::{exact_input, method_key, InputsFile, VectorFile, DIGITS};
 use phong_approx::tolerance::profile::Profile;
 use phong_approx::Method;
 
@@ -86,7 +89,8 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
     };
     let vtext = read_capped(&a.vectors, "--vectors", MAX_RESULTS_BYTES)?;
     let digest = sha256_hex(vtext.as_bytes());
-    if published_set(&digest).is_none() && !a.allow_modified_vectors {
+    let published = published_set(&digest).is_some();
+    if !published && !a.allow_modified_vectors {
         return Err(CliError::arg(
             "--vectors",
             format!(
@@ -96,12 +100,22 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
             ),
         ));
     }
-    let vectors: VectorFile = serde_json::from_str(&vtext).map_err(|e| {
+    let not_vectors = |e: serde_json::Error| {
         CliError::arg(
             "--vectors",
             format!("{}:{}: not a vector file: {e}", shown(&a.vectors), e.line()),
         )
-    })?;
+    };
+    let vectors: VectorFile = if published {
+        // A published set: its expectations are this version's own (the digest says so).
+        serde_json::from_str(&vtext).map_err(not_vectors)?
+    } else {
+        // Any other file supplies cases, not truth: its inputs are read (its
+        // expectations skipped unread) and the expectations recomputed exactly.
+        let inputs: InputsFile = serde_json::from_str(&vtext).map_err(not_vectors)?;
+        drop(vtext);
+        recompute(&a.vectors, &inputs, method, a.specular)?
+    };
     validate(&vectors)
         .map_err(|e| CliError::arg("--vectors", format!("{}: {e}", shown(&a.vectors))))?;
     if !vectors.methods.contains(&key) {
@@ -109,15 +123,15 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
             "--method",
             format!(
                 "'{key}' is not in {} (it has: {})",
-                a.vectors,
-                vectors.methods.join(", ")
+                shown(&a.vectors),
+                shown(&vectors.methods.join(", "))
             ),
         ));
     }
     if a.specular && vectors.cases.iter().all(|c| c.specular.is_none()) {
         return Err(CliError::arg(
             "--specular",
-            format!("{} has no specular cases", a.vectors),
+            format!("{} has no specular cases", shown(&a.vectors)),
         ));
     }
     let rtext = read_capped(&a.results, "--results", MAX_RESULTS_BYTES)?;
@@ -144,11 +158,85 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
                 "{} of {} cases out of tolerance, first: {}",
                 failed.len(),
                 reports.len(),
-                failed[0].id
+                shown(&failed[0].id)
             ),
             code: 1,
         })
     }
+}
+
+/// The expectations of a file that is not published, computed from its inputs (within
+/// the work budget [`MAX_RECOMPUTED_WORK`]).
+fn recompute(
+    file: &str,
+    inputs: &InputsFile,
+    method: Method,
+    specular: bool,
+) -> Result<VectorFile, CliError> {
+    let bad = |m: String| CliError::arg("--vectors", format!("{}: {m}", shown(file)));
+    if inputs.cases.len() > MAX_CASES {
+        return Err(bad(format!("more than {MAX_CASES} cases")));
+    }
+    let key = method_key(method);
+    if !inputs.methods.contains(&key) {
+        return Err(CliError::arg(
+            "--method",
+            format!(
+                "'{key}' is not in {} (it has: {})",
+                shown(file),
+                shown(&inputs.methods.join(", "))
+            ),
+        ));
+    }
+    for c in &inputs.cases {
+        if c.n == 0 || c.n > MAX_CASE_STEPS {
+            return Err(bad(format!(
+                "case {}: n = {} is outside 1..={MAX_CASE_STEPS}",
+                shown(&c.id),
+                c.n
+            )));
+        }
+    }
+    let mut work = 0u64;
+    for c in &inputs.cases {
+        let mut vs = Vec::new();
+        for x in [
+            Some(&c.na),
+            Some(&c.nb),
+            Some(&c.l),
+            c.specular.as_ref().map(|s| &s.h),
+        ]
+        .into_iter()
+        .flatten()
+        {
+            vs.push(exact_input(x).ok_or_else(|| {
+                bad(format!(
+                    "case {}: an input is not three exact numbers",
+                    shown(&c.id)
+                ))
+            })?);
+        }
+        let refs: Vec<_> = vs.iter().collect();
+        let twice = if specular && c.specular.is_some() {
+            2
+        } else {
+            1
+        };
+        work = work.saturating_add(
+            exact_work(method, c.n, input_bits(&refs), DIGITS).saturating_mul(twice),
+        );
+    }
+    if work > MAX_RECOMPUTED_WORK {
+        return Err(bad(format!(
+            "recomputing the expectations of {key} for these cases is {work} units of exact work, \
+             more than {MAX_RECOMPUTED_WORK} (about half a minute); split the file"
+        )));
+    }
+    let file_out = inputs.recompute(method).map_err(bad)?;
+    outln!(
+        "vectors: not a published set; the expected values of {key} were recomputed from the file's inputs by the exact reference"
+    )?;
+    Ok(file_out)
 }
 
 fn print_report(
@@ -160,8 +248,8 @@ fn print_report(
     outln!(
         "{} {} set '{}' ({} cases), method {key}",
         if specular { "specular" } else { "diffuse" },
-        vectors.version,
-        vectors.set,
+        shown(&vectors.version),
+        shown(&vectors.set),
         reports.len()
     )?;
     outln!("| case | pixels | max Δlevel | mean Δlevel | max |Δ| | max ulps (f32) | allowed | verdict |")?;
@@ -169,7 +257,7 @@ fn print_report(
     for r in reports {
         outln!(
             "| {} | {} | {} | {:.4} | {:.3e} | {:.1} | {} | {} |",
-            r.id,
+            shown(&r.id),
             r.pixels,
             r.max_levels,
             r.mean_levels,
@@ -198,12 +286,12 @@ fn print_report(
         if let Some(c) = vectors.cases.iter().find(|c| c.id == w.id) {
             outln!(
                 "worst case {} (pixel {}): {}; Na = ({}), Nb = ({}), L = ({}), n = {}",
-                w.id,
+                shown(&w.id),
                 w.worst_pixel,
-                c.comment,
-                c.na.exact.join(", "),
-                c.nb.exact.join(", "),
-                c.l.exact.join(", "),
+                shown(&c.comment),
+                shown(&c.na.exact.join(", ")),
+                shown(&c.nb.exact.join(", ")),
+                shown(&c.l.exact.join(", ")),
                 c.n
             )?;
         }

@@ -93,9 +93,32 @@ struct Request {
     digits: usize,
 }
 
+/// A run's values, formatted as they are written: a float run keeps its numbers
+/// (8 bytes a pixel at most), not a string per pixel, so `span` holds little more
+/// than the values however long the span.
+struct Shown {
+    len: usize,
+    at: Box<dyn Fn(usize) -> String>,
+}
+
+impl Shown {
+    /// Values already formatted.
+    #[cfg_attr(not(feature = "mpfr"), allow(dead_code))]
+    fn eager(v: Vec<String>) -> Shown {
+        Shown {
+            len: v.len(),
+            at: Box::new(move |i| v[i].clone()),
+        }
+    }
+
+    fn iter(&self) -> impl ExactSizeIterator<Item = String> + '_ {
+        (0..self.len).map(|i| (self.at)(i))
+    }
+}
+
 /// What a run produced, formatted.
 struct Outcome {
-    values: Vec<String>,
+    values: Shown,
     /// For the exact scalar and the methods that use only field operations: each
     /// value as an exact fraction.
     fractions: Option<Vec<String>>,
@@ -194,6 +217,21 @@ fn parse_request(a: &SpanArgs) -> Result<(Request, ScalarKind, bool, u32), CliEr
                 "--steps",
                 format!("{n} steps in exact arithmetic take minutes or more (budget {SPAN_BUDGET}); pass --yes to run anyway"),
             ));
+        }
+        if scalar == ScalarKind::Exact {
+            use phong_approx::conformance::integrity::{
+                exact_work, input_bits, MAX_RECOMPUTED_WORK,
+            };
+            let work = exact_work(method, n, input_bits(&[&na, &nb, &l]), digits);
+            if work > MAX_RECOMPUTED_WORK {
+                return Err(CliError::arg(
+                    "--steps",
+                    format!(
+                        "{n} steps of {method} in exact arithmetic with these inputs and digits take about {}× the budget of half a minute; pass --yes to run anyway",
+                        work.div_ceil(MAX_RECOMPUTED_WORK)
+                    ),
+                ));
+            }
         }
         if let Method::AngularTable(size) = method {
             if exact && size > SPAN_BUDGET {
@@ -310,31 +348,37 @@ fn compute<T: Real>(r: &Request) -> Result<Computed<T>, CliError> {
     Ok((span, out, decision))
 }
 
-fn outcome<T: Real>(
+fn outcome<T: Real + 'static>(
     r: &Request,
-    values: &[T],
+    values: Vec<T>,
     decision: Option<Decision<T>>,
     levels: Option<Vec<Option<u8>>>,
 ) -> Outcome {
-    let fmt = |v: &T| v.to_decimal(r.digits);
+    let digits = r.digits;
+    let fmt = move |v: &T| v.to_decimal(digits);
+    let levels = levels.unwrap_or_else(|| values.iter().map(|v| Some(level(v))).collect());
+    let adaptive = decision.map(|d| {
+        (
+            fmt(&d.delta),
+            d.m.as_ref().map(fmt),
+            d.step,
+            d.choice.name(),
+        )
+    });
     Outcome {
-        values: values.iter().map(fmt).collect(),
+        values: Shown {
+            len: values.len(),
+            at: Box::new(move |i| fmt(&values[i])),
+        },
         fractions: None,
-        levels: levels.unwrap_or_else(|| values.iter().map(|v| Some(level(v))).collect()),
-        adaptive: decision.map(|d| {
-            (
-                fmt(&d.delta),
-                d.m.as_ref().map(fmt),
-                d.step,
-                d.choice.name(),
-            )
-        }),
+        levels,
+        adaptive,
     }
 }
 
-fn run_typed<T: Real>(r: &Request) -> Result<Outcome, CliError> {
+fn run_typed<T: Real + 'static>(r: &Request) -> Result<Outcome, CliError> {
     let (_, values, decision) = compute::<T>(r)?;
-    Ok(outcome(r, &values, decision, None))
+    Ok(outcome(r, values, decision, None))
 }
 
 /// A positive `x` as a decimal of three significant digits, rounded up (the slack
@@ -383,15 +427,36 @@ fn error_bounds(r: &Request, u: f64) -> Value {
     Value::Object(m)
 }
 
-/// Refuses `--digits` beyond what is known of values that are not exact: a value's
-/// digits are printed only if its lower and upper ends (±2^-bits) print the same.
-fn check_digits<T: Real>(r: &Request, values: &[T], bits: i64) -> Result<(), CliError> {
+/// Where `--digits` asks for more than is known: the first such pixel and how many
+/// significant digits of it are known.
+struct Short {
+    pixel: usize,
+    known: usize,
+}
+
+impl Short {
+    fn error(&self, bits: i64) -> CliError {
+        let what = if self.known == 0 {
+            format!("no digit of pixel {} is known", self.pixel)
+        } else {
+            format!(
+                "only {} significant digits of pixel {} are known",
+                self.known, self.pixel
+            )
+        };
+        CliError::arg(
+            "--digits",
+            format!("{what} (these values are computed to 2^-{bits}); ask for at most that many"),
+        )
+    }
+}
+
+/// Checks that every value's `--digits` digits are known: a value's digits are
+/// printed only if its lower and upper ends (±2^-bits) print the same.
+fn check_digits<T: Real>(r: &Request, values: &[T], bits: i64) -> Result<(), Short> {
     use num_traits::One;
     if bits < 4 {
-        return Err(CliError::arg(
-            "--digits",
-            "no digit of these values is known",
-        ));
+        return Err(Short { pixel: 0, known: 0 });
     }
     let e = BigRational::new(
         num_bigint::BigInt::one(),
@@ -404,16 +469,16 @@ fn check_digits<T: Real>(r: &Request, values: &[T], bits: i64) -> Result<(), Cli
         };
         let (lo, hi) = (v.clone() - e.clone(), v.clone() + e.clone());
         if lo.to_decimal(r.digits) != hi.to_decimal(r.digits) {
-            let known = (1..r.digits)
+            // About log10(|v|/e) digits are known: search down from just above that
+            // (not from --digits, which may be thousands).
+            let guess = ((v.to_f64().abs().log2() + bits as f64) * std::f64::consts::LOG10_2)
+                .max(0.0) as usize
+                + 2;
+            let known = (1..r.digits.min(guess + 1))
                 .rev()
                 .find(|&d| lo.to_decimal(d) == hi.to_decimal(d))
                 .unwrap_or(0);
-            return Err(CliError::arg(
-                "--digits",
-                format!(
-                    "only {known} significant digits of pixel {i} are known (these values are computed to 2^-{bits}); ask for at most that many"
-                ),
-            ));
+            return Err(Short { pixel: i, known });
         }
     }
     Ok(())
@@ -432,16 +497,41 @@ fn q_bits<T: Real>(span: &Span<T>) -> i64 {
     }
 }
 
-/// The bits known of the exact values ([`Method::exact_bits`]); `--normalize` makes
-/// the inputs unit only to 2^-240. Rational methods on exact inputs are exact
-/// (`None`: every digit is known).
+/// The bits known of the exact values ([`Method::exact_bits`]). Rational methods on
+/// exact inputs are exact (`None`: every digit is known).
+///
+/// With `--normalize` the inputs are normalized through square roots accurate to
+/// 2^-b (`b` = [`transcendental::bits`], 256 unless the run asks for more), so `p_a`,
+/// `p_b` and every dot product are off by at most 2^-(b − 18): what the exact run's
+/// own accounting allows for an error of 2^-(b − 6), less 16 bits, and at most
+/// `b − 76` bits (180 at the default). Angular interpolation takes `acos p`, which
+/// moves by `e/sin θ` (or at most `2.23·√e`, acos being ½-Hölder with constant `π/√2`)
+/// when `p` moves by `e`: `max(b − 19 − ⌈log2(1/sin θ)⌉, (b − 18)/2 − 2)` bits.
+///
+/// [`transcendental::bits`]: phong_approx::reference::transcendental::bits
 fn exact_bits(r: &Request, span: &Span<BigRational>) -> Option<i64> {
-    match r.method.exact_bits(span) {
-        None if r.normalize => Some(180),
-        None => None,
-        Some(bits) if r.normalize => Some(bits.min(180)),
-        Some(bits) => Some(bits),
+    if !r.normalize {
+        return r.method.exact_bits(span);
     }
+    let b = i64::from(phong_approx::reference::transcendental::bits());
+    let own = r
+        .method
+        .exact_bits(span)
+        .map_or(b - 76, |own| (own - 16).min(b - 76));
+    if !matches!(r.method, Method::Angular) {
+        return Some(own);
+    }
+    // sin²θ ≥ 1 − (|p| + e)² at both ends (the f64 rounding of p is far above e).
+    let s2 = [&span.p_a, &span.p_b]
+        .iter()
+        .map(|p| 1.0 - (p.to_f64().abs() + 1e-30).powi(2))
+        .fold(f64::INFINITY, f64::min);
+    let by_slope = if s2 > 0.0 {
+        b - 19 - (-0.5 * s2.log2()).ceil() as i64
+    } else {
+        0
+    };
+    Some(own.min(by_slope.max((b - 18) / 2 - 2)))
 }
 
 /// The bits known of MPFR values at `precision` bits: every operation is correctly
@@ -462,21 +552,111 @@ fn mpfr_bits(r: &Request, span: Option<&Span<BigRational>>, precision: u32, q_bi
     i64::from(precision) - 8 - 2 * n_bits - loss
 }
 
+/// The levels of an exact `--normalize` run: from `values` (known to `2^-bits`) where
+/// that decides them, else exactly for the normalized inputs
+/// (`phong_approx::reference::radical`) at the pixels whose value is known in closed
+/// form: Phong's `p/√q` where the method's is, Gouraud's, Euler's and corrected
+/// Euler's everywhere; undecided (`None`) elsewhere.
+fn normalized_levels(r: &Request, values: &[BigRational], bits: i64) -> Vec<Option<u8>> {
+    use num_traits::Zero;
+    use phong_approx::method::PhongPixels;
+    use phong_approx::reference::radical::{normalized_levels, Valued};
+    let phong = r.method.info().phong_pixels;
+    let cross = Vec3::new(
+        r.na.y.clone() * r.nb.z.clone() - r.na.z.clone() * r.nb.y.clone(),
+        r.na.z.clone() * r.nb.x.clone() - r.na.x.clone() * r.nb.z.clone(),
+        r.na.x.clone() * r.nb.y.clone() - r.na.y.clone() * r.nb.x.clone(),
+    );
+    // Parallel edge normals: every untabled method is the constant p_a there.
+    let parallel = cross.length_squared().is_zero()
+        && r.na.dot(&r.nb) > BigRational::zero()
+        && !matches!(phong, PhongPixels::None | PhongPixels::Table);
+    let field = match r.method {
+        Method::Gouraud => Some(Valued::Gouraud),
+        Method::Euler => Some(Valued::Euler),
+        Method::CorrectedEuler => Some(Valued::CorrectedEuler),
+        _ => None,
+    };
+    let e = BigRational::new(
+        1.into(),
+        num_bigint::BigInt::from(1) << bits.max(0) as usize,
+    );
+    let one = BigRational::from_integer(1.into());
+    normalized_levels(
+        |i| {
+            if parallel || phong.at(r.n, i) {
+                Some(Valued::Phong)
+            } else {
+                field
+            }
+        },
+        (&r.na, &r.nb, &r.l),
+        r.n,
+        &one,
+        values,
+        &e,
+    )
+}
+
 fn run_exact(r: &Request) -> Result<Outcome, CliError> {
-    let (span, values, decision) = compute::<BigRational>(r)?;
-    if let Some(bits) = exact_bits(r, &span) {
-        check_digits(r, &values, bits)?;
+    use phong_approx::reference::transcendental::{with_bits, BITS, MAX_BITS};
+    digits_within_reach(r)?;
+    let mut b = BITS;
+    loop {
+        let attempt = with_bits(b, || -> Result<Result<Outcome, (Short, i64)>, CliError> {
+            let (span, values, decision) = compute::<BigRational>(r)?;
+            if let Some(bits) = exact_bits(r, &span) {
+                if let Err(short) = check_digits(r, &values, bits) {
+                    return Ok(Err((short, bits)));
+                }
+            }
+            // Phong-valued methods: the exact level of p/√q decided with rationals
+            // only; with --normalize, in Q(√a, √b, √c) where the approximate value
+            // does not decide it.
+            let one = BigRational::from_integer(1.into());
+            let levels = Some(if r.normalize {
+                normalized_levels(r, &values, exact_bits(r, &span).unwrap_or(0))
+            } else {
+                r.method.exact_levels(&span, &values, &one)
+            });
+            let fractions = r
+                .method
+                .is_rational()
+                .then(|| values.iter().map(ToString::to_string).collect());
+            let mut o = outcome(r, values, decision, levels);
+            o.fractions = fractions;
+            // Formatted within the precision the values were computed at.
+            o.values = Shown::eager(o.values.iter().collect());
+            Ok(Ok(o))
+        })?;
+        match attempt {
+            Ok(o) => return Ok(o),
+            Err((short, bits)) if b >= MAX_BITS => return Err(short.error(bits)),
+            Err((short, _)) => {
+                let missing = r.digits.saturating_sub(short.known) as f64;
+                let more = (missing / std::f64::consts::LOG10_2).ceil() as u32 + 16;
+                b = (b + more).max(2 * b).min(MAX_BITS);
+            }
+        }
     }
-    // Phong-valued methods: the exact level of p/√q decided with rationals only.
-    let levels = (!r.normalize).then(|| {
-        let one = BigRational::from_integer(1.into());
-        r.method.exact_levels(&span, &values, &one)
-    });
-    let mut o = outcome(r, &values, decision, levels);
-    if r.method.is_rational() {
-        o.fractions = Some(values.iter().map(ToString::to_string).collect());
+}
+
+/// `--digits` for a method whose exact values are not rational: at most what
+/// 2^-`MAX_BITS` gives, refused before any work.
+fn digits_within_reach(r: &Request) -> Result<(), CliError> {
+    use phong_approx::reference::transcendental::MAX_BITS;
+    let most = (f64::from(MAX_BITS - 64) * std::f64::consts::LOG10_2) as usize;
+    if !r.method.is_rational() && r.digits > most {
+        return Err(CliError::arg(
+            "--digits",
+            format!(
+                "at most {most} significant digits of {} are computed (its square roots, acos and cos to 2^-{}); ask for at most that many",
+                r.method,
+                MAX_BITS
+            ),
+        ));
     }
-    Ok(o)
+    Ok(())
 }
 
 #[cfg(feature = "mpfr")]
@@ -490,7 +670,7 @@ fn run_mpfr(r: &Request, precision: u32) -> Result<Outcome, CliError> {
             Span::new(r.na.clone(), r.nb.clone(), r.l.clone(), r.n).ok()
         };
         let bits = mpfr_bits(r, exact.as_ref(), precision, q_bits(&span));
-        check_digits(r, &values, bits)?;
+        check_digits(r, &values, bits).map_err(|s| s.error(bits))?;
         // A level is printed only where it is known: decided exactly where the value
         // is (Phong's p/√q, p_a), else only where its error cannot cross a boundary.
         let rationals: Vec<BigRational> = values.iter().filter_map(|v| v.to_rational()).collect();
@@ -513,7 +693,10 @@ fn run_mpfr(r: &Request, precision: u32) -> Result<Outcome, CliError> {
                     .collect()
             }
         };
-        Ok(outcome(r, &values, decision, Some(levels)))
+        // Formatted here, within the precision the values were computed at.
+        let mut o = outcome(r, values, decision, Some(levels));
+        o.values = Shown::eager(o.values.iter().collect());
+        Ok(o)
     })
 }
 
@@ -526,6 +709,7 @@ fn run_mpfr(_r: &Request, _precision: u32) -> Result<Outcome, CliError> {
 enum Field<'a> {
     One(Value),
     Strings(&'a [String]),
+    Shown(&'a Shown),
     Levels(&'a [Option<u8>]),
 }
 
@@ -539,6 +723,7 @@ fn write_json(fields: &[(&str, Field)]) -> Result<(), CliError> {
         match field {
             Field::One(v) => outp!("{v}")?,
             Field::Strings(items) => write_array(items.iter().map(|x| json!(x).to_string()))?,
+            Field::Shown(items) => write_array(items.iter().map(|x| json!(x).to_string()))?,
             Field::Levels(items) => write_array(
                 items
                     .iter()
@@ -605,7 +790,7 @@ pub fn run(a: &SpanArgs) -> Result<(), CliError> {
             ("method", Field::One(json!(r.method.name()))),
             ("scalar", Field::One(json!(scalar_name))),
             ("steps", Field::One(json!(r.n))),
-            ("values", Field::Strings(&o.values)),
+            ("values", Field::Shown(&o.values)),
             ("levels", Field::Levels(&o.levels)),
         ];
         if let Some(f) = &o.fractions {
@@ -643,9 +828,10 @@ pub fn run(a: &SpanArgs) -> Result<(), CliError> {
             let step = step.map_or("none".to_string(), |s| s.to_string());
             outln!("eq. 23 m = {m} · step = {step} · eq. 24 δ = {delta} · decision: {decision}")?;
         }
-        let width = o.values.iter().map(String::len).max().unwrap_or(5).max(5);
+        let width = o.values.iter().map(|v| v.len()).max().unwrap_or(5).max(5);
         outln!("{:>6}  {:<width$}  level", "i", "value")?;
         for (i, (v, l)) in o.values.iter().zip(&o.levels).enumerate() {
+            let v = v.as_str();
             // An unknown level prints as "?" (its value is within its error of a
             // level boundary).
             let l = l.map_or_else(|| "?".to_string(), |l| l.to_string());

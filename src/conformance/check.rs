@@ -137,12 +137,30 @@ fn parse_value(file: &str, line: usize, s: &str) -> Result<f64, InputError> {
     Ok(v)
 }
 
+/// The values of one case as they are read: the value and the 1-based line of each
+/// pixel (line 0: not read yet). Twelve bytes per pixel the vector file asks for, so
+/// what is built from a results file is bounded by the vector file, not by the
+/// results file.
+struct Reading {
+    values: Vec<f64>,
+    lines: Vec<u32>,
+}
+
+impl Reading {
+    fn new(len: usize) -> Reading {
+        Reading {
+            values: vec![0.0; len],
+            lines: vec![0; len],
+        }
+    }
+}
+
 /// Checks that every needed case and pixel is present.
 fn complete(
     file: &str,
     vectors: &VectorFile,
     specular: bool,
-    got: &HashMap<String, Vec<Option<f64>>>,
+    mut got: HashMap<String, Reading>,
 ) -> Result<Results, InputError> {
     let mut out = Results::new();
     for c in vectors
@@ -150,40 +168,44 @@ fn complete(
         .iter()
         .filter(|c| !specular || c.specular.is_some())
     {
-        let Some(v) = got.get(&c.id) else {
+        let Some(r) = got.remove(&c.id) else {
             return Err(err(
                 file,
                 0,
                 format!(
                     "at end of file: case {} is missing (every case of the vector file is needed)",
-                    c.id
+                    super::shown(&c.id)
                 ),
             ));
         };
-        let mut vals = Vec::with_capacity(v.len());
-        for (i, x) in v.iter().enumerate() {
-            match x {
-                Some(x) => vals.push(*x),
-                None => {
-                    return Err(err(
-                        file,
-                        0,
-                        format!("at end of file: case {} has no value for pixel {i}", c.id),
-                    ))
-                }
-            }
+        if let Some(i) = r.lines.iter().position(|&l| l == 0) {
+            return Err(err(
+                file,
+                0,
+                format!(
+                    "at end of file: case {} has no value for pixel {i}",
+                    super::shown(&c.id)
+                ),
+            ));
         }
-        out.insert(c.id.clone(), vals);
+        out.insert(c.id.clone(), r.values);
     }
     Ok(out)
 }
 
-/// Parses CSV results (see the module docs).
+/// The longest line a CSV results file may have: a row is `case,pixel,value`, so a
+/// longer line is not a result (and a line of millions of separators would otherwise
+/// be split into millions of fields before it could be refused).
+pub const MAX_CSV_LINE: usize = 4096;
+
+/// Parses CSV results (see the module docs). Reading stops at the first problem;
+/// what it builds is twelve bytes per pixel the vector file asks for, whatever the
+/// results file holds.
 ///
 /// # Errors
-/// An [`InputError`] naming the line: a missing or extra column, a non-number, an
-/// unknown case id, a pixel out of range, a duplicate row, an empty file, or (at the
-/// end) a missing case or pixel.
+/// An [`InputError`] naming the line: a line longer than [`MAX_CSV_LINE`], a missing,
+/// extra or empty column, a non-number, an unknown case id, a pixel out of range, a
+/// duplicate row, an empty file, or (at the end) a missing case or pixel.
 pub fn parse_results_csv(
     text: &str,
     file: &str,
@@ -191,39 +213,56 @@ pub fn parse_results_csv(
     specular: bool,
 ) -> Result<Results, InputError> {
     let need = sizes(vectors, specular);
-    let mut got: HashMap<String, Vec<Option<f64>>> = HashMap::new();
-    let mut first_line: HashMap<(String, usize), usize> = HashMap::new();
-    let mut rows = 0usize;
     // RFC 4180 (quoted fields, CRLF), a UTF-8 byte-order mark, `#` comments.
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    if let Some((k, l)) = text
+        .split('\n')
+        .enumerate()
+        .find(|(_, l)| l.len() > MAX_CSV_LINE)
+    {
+        return Err(err(
+            file,
+            k + 1,
+            format!(
+                "the line is {} bytes long (at most {MAX_CSV_LINE}); a row is case,pixel,value",
+                l.len()
+            ),
+        ));
+    }
+    let mut got: HashMap<String, Reading> = HashMap::new();
+    let mut rows = 0usize;
     let mut reader = csv::ReaderBuilder::new()
         .has_headers(false)
         .flexible(true)
         .comment(Some(b'#'))
         .trim(csv::Trim::All)
         .from_reader(text.as_bytes());
-    for record in reader.records() {
-        let record = record.map_err(|e| {
-            let line = e.position().map_or(0, |p| p.line() as usize);
-            err(file, line, format!("not CSV: {e}"))
-        })?;
+    let mut record = csv::StringRecord::new();
+    loop {
+        match reader.read_record(&mut record) {
+            Ok(true) => {}
+            Ok(false) => break,
+            Err(e) => {
+                let line = e.position().map_or(0, |p| p.line() as usize);
+                return Err(err(file, line, format!("not CSV: {e}")));
+            }
+        }
         let line = record.position().map_or(0, |p| p.line() as usize);
-        let cols: Vec<&str> = record.iter().collect();
-        if cols.iter().all(|c| c.is_empty()) {
-            continue;
+        if record.len() == 1 && record[0].is_empty() {
+            continue; // a blank line
         }
         if rows == 0
-            && cols.first().is_some_and(|c| {
+            && record.get(0).is_some_and(|c| {
                 c.eq_ignore_ascii_case("case") || c.eq_ignore_ascii_case("case_id")
             })
         {
-            if cols.len() != 3 {
+            if record.len() != 3 {
                 return Err(err(
                     file,
                     line,
                     format!(
                         "the header has {} columns, expected case,pixel,value",
-                        cols.len()
+                        record.len()
                     ),
                 ));
             }
@@ -231,17 +270,20 @@ pub fn parse_results_csv(
             continue;
         }
         rows += 1;
-        if cols.len() != 3 {
+        if record.len() != 3 {
             return Err(err(
                 file,
                 line,
                 format!(
                     "expected 3 columns (case,pixel,value), found {}",
-                    cols.len()
+                    record.len()
                 ),
             ));
         }
-        let (id, px, val) = (cols[0], cols[1], cols[2]);
+        let (id, px, val) = (&record[0], &record[1], &record[2]);
+        if id.is_empty() {
+            return Err(err(file, line, "the case field is empty"));
+        }
         let Some(&len) = need.get(id) else {
             return Err(err(
                 file,
@@ -249,6 +291,11 @@ pub fn parse_results_csv(
                 format!("unknown case id '{}'", super::shown(id)),
             ));
         };
+        for (k, what) in [(px, "pixel"), (val, "value")] {
+            if k.is_empty() {
+                return Err(err(file, line, format!("the {what} field is empty")));
+            }
+        }
         let pixel: usize = px.parse().map_err(|_| {
             err(
                 file,
@@ -267,33 +314,288 @@ pub fn parse_results_csv(
             ));
         }
         let v = parse_value(file, line, val)?;
-        if let Some(prev) = first_line.insert((id.to_string(), pixel), line) {
+        let r = got
+            .entry(id.to_string())
+            .or_insert_with(|| Reading::new(len));
+        if r.lines[pixel] != 0 {
             return Err(err(
                 file,
                 line,
-                format!("duplicate row for case {id} pixel {pixel} (first at line {prev})"),
+                format!(
+                    "duplicate row for case {id} pixel {pixel} (first at line {})",
+                    r.lines[pixel]
+                ),
             ));
         }
-        got.entry(id.to_string()).or_insert_with(|| vec![None; len])[pixel] = Some(v);
+        r.values[pixel] = v;
+        r.lines[pixel] = u32::try_from(line).unwrap_or(u32::MAX).max(1);
     }
     if got.is_empty() {
         return Err(err(file, 1, "the file holds no results"));
     }
-    complete(file, vectors, specular, &got)
+    complete(file, vectors, specular, got)
 }
 
-#[derive(serde::Deserialize)]
-struct JsonResults {
-    cases: Vec<JsonCase>,
+/// Streaming JSON results: `{"cases": [{"id": …, "values": […]}, …]}` read with
+/// serde's seeds, so that each case's values go straight into a [`Reading`] of the
+/// size its vector-file case needs and reading stops at the first value too many.
+mod json {
+    use super::Reading;
+    use crate::conformance::shown;
+    use serde::de::{self, DeserializeSeed, IgnoredAny, MapAccess, SeqAccess, Visitor};
+    use std::cell::RefCell;
+    use std::collections::HashMap;
+    use std::fmt;
+
+    /// What the reader knows and has read. `problem` holds the message of the first
+    /// problem found (serde's error then only carries the line).
+    pub(super) struct Ctx<'a> {
+        pub need: &'a HashMap<&'a str, usize>,
+        pub longest: usize,
+        pub got: RefCell<HashMap<String, Reading>>,
+        pub problem: RefCell<Option<String>>,
+    }
+
+    impl Ctx<'_> {
+        fn fail<E: de::Error>(&self, message: String) -> E {
+            let e = E::custom(&message);
+            self.problem.borrow_mut().get_or_insert(message);
+            e
+        }
+    }
+
+    /// The whole file.
+    pub(super) struct File<'c, 'a>(pub &'c Ctx<'a>);
+    impl<'de> DeserializeSeed<'de> for File<'_, '_> {
+        type Value = ();
+        fn deserialize<D: de::Deserializer<'de>>(self, d: D) -> Result<(), D::Error> {
+            d.deserialize_map(self)
+        }
+    }
+    impl<'de> Visitor<'de> for File<'_, '_> {
+        type Value = ();
+        fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+            f.write_str(r#"an object {"cases": [...]}"#)
+        }
+        fn visit_map<A: MapAccess<'de>>(self, mut m: A) -> Result<(), A::Error> {
+            let mut cases = false;
+            while let Some(k) = m.next_key::<std::borrow::Cow<'de, str>>()? {
+                if k == "cases" {
+                    if cases {
+                        return Err(self.0.fail("the key \"cases\" appears twice".into()));
+                    }
+                    cases = true;
+                    m.next_value_seed(Cases(self.0))?;
+                } else {
+                    m.next_value::<IgnoredAny>()?;
+                }
+            }
+            if !cases {
+                return Err(self.0.fail("no \"cases\" array".into()));
+            }
+            Ok(())
+        }
+    }
+
+    struct Cases<'c, 'a>(&'c Ctx<'a>);
+    impl<'de> DeserializeSeed<'de> for Cases<'_, '_> {
+        type Value = ();
+        fn deserialize<D: de::Deserializer<'de>>(self, d: D) -> Result<(), D::Error> {
+            d.deserialize_seq(self)
+        }
+    }
+    impl<'de> Visitor<'de> for Cases<'_, '_> {
+        type Value = ();
+        fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+            f.write_str("an array of cases")
+        }
+        fn visit_seq<A: SeqAccess<'de>>(self, mut s: A) -> Result<(), A::Error> {
+            let mut k = 0usize;
+            while s.next_element_seed(OneCase { ctx: self.0, k })?.is_some() {
+                k += 1;
+            }
+            Ok(())
+        }
+    }
+
+    struct OneCase<'c, 'a> {
+        ctx: &'c Ctx<'a>,
+        k: usize,
+    }
+    impl<'de> DeserializeSeed<'de> for OneCase<'_, '_> {
+        type Value = ();
+        fn deserialize<D: de::Deserializer<'de>>(self, d: D) -> Result<(), D::Error> {
+            d.deserialize_map(self)
+        }
+    }
+    impl<'de> Visitor<'de> for OneCase<'_, '_> {
+        type Value = ();
+        fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+            f.write_str(r#"a case {"id": ..., "values": [...]}"#)
+        }
+        fn visit_map<A: MapAccess<'de>>(self, mut m: A) -> Result<(), A::Error> {
+            let ctx = self.ctx;
+            let at = format!("cases[{}]", self.k);
+            let mut id: Option<String> = None;
+            let mut values: Option<(Vec<f64>, usize)> = None;
+            while let Some(key) = m.next_key::<std::borrow::Cow<'de, str>>()? {
+                match key.as_ref() {
+                    "id" if id.is_some() => {
+                        return Err(ctx.fail(format!("{at}: \"id\" appears twice")))
+                    }
+                    "id" => {
+                        let s: std::borrow::Cow<'de, str> = m.next_value()?;
+                        if !ctx.need.contains_key(s.as_ref()) {
+                            return Err(
+                                ctx.fail(format!("{at}: unknown case id '{}'", shown(s.as_ref())))
+                            );
+                        }
+                        if ctx.got.borrow().contains_key(s.as_ref()) {
+                            return Err(ctx
+                                .fail(format!("{at}: duplicate case id '{}'", shown(s.as_ref()))));
+                        }
+                        id = Some(s.into_owned());
+                    }
+                    "values" if values.is_some() => {
+                        return Err(ctx.fail(format!("{at}: \"values\" appears twice")))
+                    }
+                    "values" => {
+                        // The id may come first (then its size is known) or after.
+                        let cap = id.as_deref().map_or(ctx.longest, |i| ctx.need[i]);
+                        values = Some(m.next_value_seed(Values {
+                            ctx,
+                            at: &at,
+                            id: id.as_deref(),
+                            cap,
+                        })?);
+                    }
+                    _ => {
+                        m.next_value::<IgnoredAny>()?;
+                    }
+                }
+            }
+            let Some(id) = id else {
+                return Err(ctx.fail(format!("{at}: the case has no \"id\"")));
+            };
+            let Some((vals, count)) = values else {
+                return Err(ctx.fail(format!("{at}: case {id} has no \"values\"")));
+            };
+            let len = ctx.need[id.as_str()];
+            if count != len {
+                return Err(ctx.fail(format!(
+                    "{at}: case {id} needs {len} values, found {}",
+                    if count > len {
+                        format!("more ({count} or more)")
+                    } else {
+                        count.to_string()
+                    }
+                )));
+            }
+            let mut r = Reading::new(0);
+            r.lines = vec![1; len];
+            r.values = vals;
+            ctx.got.borrow_mut().insert(id, r);
+            Ok(())
+        }
+    }
+
+    /// A case's values: at most `cap` of them are kept; one more stops the reading.
+    struct Values<'c, 'a, 's> {
+        ctx: &'c Ctx<'a>,
+        at: &'s str,
+        id: Option<&'s str>,
+        cap: usize,
+    }
+    impl<'de> DeserializeSeed<'de> for Values<'_, '_, '_> {
+        type Value = (Vec<f64>, usize);
+        fn deserialize<D: de::Deserializer<'de>>(
+            self,
+            d: D,
+        ) -> Result<(Vec<f64>, usize), D::Error> {
+            d.deserialize_seq(self)
+        }
+    }
+    impl<'de> Visitor<'de> for Values<'_, '_, '_> {
+        type Value = (Vec<f64>, usize);
+        fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+            f.write_str("an array of numbers")
+        }
+        fn visit_seq<A: SeqAccess<'de>>(self, mut s: A) -> Result<(Vec<f64>, usize), A::Error> {
+            let who = match self.id {
+                Some(id) => format!("case {id}"),
+                None => "the case".to_string(),
+            };
+            let mut out = Vec::with_capacity(self.cap.min(1 << 16));
+            loop {
+                let i = out.len();
+                let Some(x) = s.next_element_seed(Number)? else {
+                    break;
+                };
+                let Some(x) = x.filter(|x| x.is_finite()) else {
+                    return Err(self.ctx.fail(format!(
+                        "{}: value {i} of {who} is not a finite number",
+                        self.at
+                    )));
+                };
+                if i == self.cap {
+                    return Err(self.ctx.fail(format!(
+                        "{}: {who} has more than {} values",
+                        self.at, self.cap
+                    )));
+                }
+                out.push(x);
+            }
+            let n = out.len();
+            Ok((out, n))
+        }
+    }
+
+    /// One value: a number, or a string holding one; `None` for anything else.
+    struct Number;
+    impl<'de> DeserializeSeed<'de> for Number {
+        type Value = Option<f64>;
+        fn deserialize<D: de::Deserializer<'de>>(self, d: D) -> Result<Option<f64>, D::Error> {
+            d.deserialize_any(self)
+        }
+    }
+    impl<'de> Visitor<'de> for Number {
+        type Value = Option<f64>;
+        fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+            f.write_str("a number")
+        }
+        fn visit_f64<E>(self, v: f64) -> Result<Option<f64>, E> {
+            Ok(Some(v))
+        }
+        fn visit_i64<E>(self, v: i64) -> Result<Option<f64>, E> {
+            Ok(Some(v as f64))
+        }
+        fn visit_u64<E>(self, v: u64) -> Result<Option<f64>, E> {
+            Ok(Some(v as f64))
+        }
+        fn visit_str<E>(self, v: &str) -> Result<Option<f64>, E> {
+            Ok(v.trim().parse::<f64>().ok())
+        }
+        fn visit_bool<E>(self, _: bool) -> Result<Option<f64>, E> {
+            Ok(None)
+        }
+        fn visit_unit<E>(self) -> Result<Option<f64>, E> {
+            Ok(None)
+        }
+        fn visit_seq<A: SeqAccess<'de>>(self, mut s: A) -> Result<Option<f64>, A::Error> {
+            while s.next_element::<IgnoredAny>()?.is_some() {}
+            Ok(None)
+        }
+        fn visit_map<A: MapAccess<'de>>(self, mut m: A) -> Result<Option<f64>, A::Error> {
+            while m.next_entry::<IgnoredAny, IgnoredAny>()?.is_some() {}
+            Ok(None)
+        }
+    }
 }
 
-#[derive(serde::Deserialize)]
-struct JsonCase {
-    id: String,
-    values: Vec<serde_json::Value>,
-}
-
-/// Parses JSON results (see the module docs).
+/// Parses JSON results (see the module docs), streaming: each case's values are read
+/// into an array of the size its vector-file case needs, and reading stops at the
+/// first problem, so what is built is bounded by the vector file whatever the results
+/// file holds.
 ///
 /// # Errors
 /// An [`InputError`]: malformed JSON (with its line), an unknown or duplicate case id,
@@ -304,59 +606,29 @@ pub fn parse_results_json(
     vectors: &VectorFile,
     specular: bool,
 ) -> Result<Results, InputError> {
+    use serde::de::DeserializeSeed;
     if text.trim().is_empty() {
         return Err(err(file, 1, "the file holds no results"));
     }
-    let r: JsonResults = serde_json::from_str(text)
-        .map_err(|e| err(file, e.line(), format!("not a results file: {e}")))?;
     let need = sizes(vectors, specular);
-    let mut got: HashMap<String, Vec<Option<f64>>> = HashMap::new();
-    for (k, c) in r.cases.iter().enumerate() {
-        let at = format!("cases[{k}]");
-        let Some(&len) = need.get(c.id.as_str()) else {
-            return Err(err(
-                file,
-                0,
-                format!("{at}: unknown case id '{}'", super::shown(&c.id)),
-            ));
-        };
-        if c.values.len() != len {
-            return Err(err(
-                file,
-                0,
-                format!(
-                    "{at}: case {} needs {len} values, found {}",
-                    c.id,
-                    c.values.len()
-                ),
-            ));
-        }
-        let mut vals = Vec::with_capacity(len);
-        for (i, v) in c.values.iter().enumerate() {
-            let x = match v {
-                serde_json::Value::Number(n) => n.as_f64(),
-                serde_json::Value::String(s) => s.trim().parse::<f64>().ok(),
-                _ => None,
-            }
-            .filter(|x| x.is_finite())
-            .ok_or_else(|| {
-                err(
-                    file,
-                    0,
-                    format!("{at}: value {i} of case {} is not a finite number", c.id),
-                )
-            })?;
-            vals.push(Some(x));
-        }
-        if got.insert(c.id.clone(), vals).is_some() {
-            return Err(err(
-                file,
-                0,
-                format!("{at}: duplicate case id '{}'", super::shown(&c.id)),
-            ));
-        }
-    }
-    complete(file, vectors, specular, &got)
+    let ctx = json::Ctx {
+        need: &need,
+        longest: need.values().copied().max().unwrap_or(0),
+        got: std::cell::RefCell::new(HashMap::new()),
+        problem: std::cell::RefCell::new(None),
+    };
+    let mut de = serde_json::Deserializer::from_str(text);
+    json::File(&ctx)
+        .deserialize(&mut de)
+        .and_then(|()| de.end())
+        .map_err(|e| {
+            let message = match ctx.problem.borrow_mut().take() {
+                Some(m) => m,
+                None => format!("not a results file: {e}"),
+            };
+            err(file, e.line(), message)
+        })?;
+    complete(file, vectors, specular, ctx.got.into_inner())
 }
 
 /// Parses results by content: JSON when the first non-blank character is `{`.

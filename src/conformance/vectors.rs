@@ -212,7 +212,7 @@ impl CaseSpec {
     }
 }
 
-/// A case from exact unit inputs.
+/// A case from exact unit inputs, with the expectations of every method.
 fn compute_case(
     id: String,
     comment: &str,
@@ -222,21 +222,36 @@ fn compute_case(
     n: u32,
     h: Option<(Vec3<BigRational>, u32)>,
 ) -> Result<Case, String> {
+    compute_case_for(&METHODS, id, comment, na, nb, l, n, h)
+}
+
+/// A case from exact unit inputs, with the expectations of `methods`.
+#[allow(clippy::too_many_arguments)]
+fn compute_case_for(
+    methods: &[Method],
+    id: String,
+    comment: &str,
+    na: Vec3<BigRational>,
+    nb: Vec3<BigRational>,
+    l: Vec3<BigRational>,
+    n: u32,
+    h: Option<(Vec3<BigRational>, u32)>,
+) -> Result<Case, String> {
     let at = |e: String| format!("{id}: {e}");
-    let span =
-        Span::new(na.clone(), nb.clone(), l.clone(), n).expect("vector cases are valid spans");
+    let span = Span::new(na.clone(), nb.clone(), l.clone(), n).map_err(|e| format!("{id}: {e}"))?;
     let q_min = (0..=n)
         .map(|i| span.q_at(i).to_f64())
         .fold(f64::INFINITY, f64::min);
     let d = adaptive::decide(&span, &BigRational::from_i64(1));
-    let expected = METHODS
+    let expected = methods
         .iter()
         .map(|&m| Ok((method_key(m), self::expected(m, &span)?)))
         .collect::<Result<_, String>>()
         .map_err(at)?;
     let specular = h.map(|(h, s)| -> Result<SpecularCase, String> {
-        let span_h = Span::new(na.clone(), nb.clone(), h.clone(), n).expect("valid half vector");
-        let expected = METHODS
+        let span_h = Span::new(na.clone(), nb.clone(), h.clone(), n)
+            .map_err(|e| format!("specular: {e}"))?;
+        let expected = methods
             .iter()
             .map(|&m| {
                 let base = m.values(&span_h).map_err(|e| format!("{m}: {e}"))?;
@@ -269,6 +284,164 @@ fn compute_case(
         expected,
         specular,
     })
+}
+
+/// A case as `check` reads it from a vector file that is not published
+/// (`--allow-modified-vectors`): its inputs only. Whatever expectations the file holds
+/// are skipped without being stored; [`InputsFile::recompute`] computes them from the
+/// inputs with the exact reference, so a modified file supplies cases, not truth.
+#[derive(Clone, Debug, Deserialize)]
+pub struct CaseInputs {
+    /// The case id.
+    pub id: String,
+    /// Why the case is there (untrusted text: shown escaped and cut).
+    #[serde(default)]
+    pub comment: String,
+    /// `N_a`.
+    pub na: VectorInput,
+    /// `N_b`.
+    pub nb: VectorInput,
+    /// `L`.
+    pub l: VectorInput,
+    /// Steps `n`.
+    pub n: u32,
+    /// The half vector and shininess of the specular expectations, if any.
+    #[serde(default)]
+    pub specular: Option<SpecularInputs>,
+}
+
+/// The specular inputs of a [`CaseInputs`].
+#[derive(Clone, Debug, Deserialize)]
+pub struct SpecularInputs {
+    /// The unit half vector `H`.
+    pub h: VectorInput,
+    /// The shininess `s`.
+    pub s: u32,
+}
+
+/// A vector file read for its inputs only (see [`CaseInputs`]).
+#[derive(Clone, Debug, Deserialize)]
+pub struct InputsFile {
+    /// The format version.
+    pub version: String,
+    /// The set's name (untrusted text).
+    #[serde(default)]
+    pub set: String,
+    /// The method keys the file lists.
+    pub methods: Vec<String>,
+    /// Number of cases.
+    pub number_of_cases: usize,
+    /// The cases.
+    pub cases: Vec<CaseInputs>,
+}
+
+/// The exact vector of a vector-file input, `None` unless all three components are
+/// exact decimals or fractions.
+pub fn exact_input(v: &VectorInput) -> Option<Vec3<BigRational>> {
+    let [x, y, z] = &v.exact;
+    Some(Vec3::new(
+        crate::parse::parse_rational(x).ok()?,
+        crate::parse::parse_rational(y).ok()?,
+        crate::parse::parse_rational(z).ok()?,
+    ))
+}
+
+/// Whether a file's `f32` and `f64` forms of an input are the nearest floats to its
+/// exact value (`ours`, as [`input`] writes them).
+fn same_floats(theirs: &VectorInput, ours: &VectorInput) -> Result<(), String> {
+    for i in 0..3 {
+        let t32 = theirs.f32[i].trim().parse::<f32>();
+        let t64 = theirs.f64[i].trim().parse::<f64>();
+        let o32 = ours.f32[i].parse::<f32>();
+        let o64 = ours.f64[i].parse::<f64>();
+        if t32.ok().map(f32::to_bits) != o32.ok().map(f32::to_bits) {
+            return Err(format!(
+                "component {}: the f32 form '{}' is not the nearest f32 to the exact value ({})",
+                i + 1,
+                super::shown(&theirs.f32[i]),
+                ours.f32[i]
+            ));
+        }
+        if t64.ok().map(f64::to_bits) != o64.ok().map(f64::to_bits) {
+            return Err(format!(
+                "component {}: the f64 form '{}' is not the nearest f64 to the exact value ({})",
+                i + 1,
+                super::shown(&theirs.f64[i]),
+                ours.f64[i]
+            ));
+        }
+    }
+    Ok(())
+}
+
+impl InputsFile {
+    /// The file with the expectations of `method` computed from each case's inputs by
+    /// the exact reference (the specular ones for cases that have a half vector);
+    /// `q_min`, `δ` and the adaptive decision are the span's. The result passes
+    /// [`super::integrity::validate`] whenever the inputs are valid.
+    ///
+    /// # Errors
+    /// A case whose inputs are not exact unit vectors, whose `n` is out of range, or
+    /// whose level the exact run cannot decide (named).
+    pub fn recompute(&self, method: Method) -> Result<VectorFile, String> {
+        let v = |c: &CaseInputs, x: &VectorInput, what: &str| {
+            exact_input(x).ok_or_else(|| {
+                format!(
+                    "case {}: {what} is not three exact numbers",
+                    super::shown(&c.id)
+                )
+            })
+        };
+        let mut cases = Vec::with_capacity(self.cases.len());
+        for c in &self.cases {
+            if c.n == 0 || c.n > super::integrity::MAX_CASE_STEPS {
+                return Err(format!(
+                    "case {}: n = {} is outside 1..={}",
+                    super::shown(&c.id),
+                    c.n,
+                    super::integrity::MAX_CASE_STEPS
+                ));
+            }
+            let h = match &c.specular {
+                Some(sp) => Some((v(c, &sp.h, "h")?, sp.s)),
+                None => None,
+            };
+            let case = compute_case_for(
+                &[method],
+                c.id.clone(),
+                &c.comment,
+                v(c, &c.na, "na")?,
+                v(c, &c.nb, "nb")?,
+                v(c, &c.l, "l")?,
+                c.n,
+                h,
+            )?;
+            // The f32 and f64 forms an implementation reads must be the nearest floats
+            // to the exact inputs the reference runs on.
+            let mut pairs = vec![
+                ("na", &c.na, &case.na),
+                ("nb", &c.nb, &case.nb),
+                ("l", &c.l, &case.l),
+            ];
+            if let (Some(sp), Some(mine)) = (&c.specular, case.specular.as_ref()) {
+                pairs.push(("h", &sp.h, &mine.h));
+            }
+            for (what, theirs, ours) in pairs {
+                same_floats(theirs, ours)
+                    .map_err(|e| format!("case {}: {what}: {e}", super::shown(&c.id)))?;
+            }
+            cases.push(case);
+        }
+        Ok(VectorFile {
+            version: self.version.clone(),
+            generator: String::new(),
+            set: self.set.clone(),
+            notes: String::new(),
+            methods: vec![method_key(method)],
+            number_of_cases: self.number_of_cases,
+            cases,
+        })
+    }
 }
 
 fn q(n: i64, d: i64) -> BigRational {

@@ -4,6 +4,8 @@
 //!   identities (which need unit edge normals) can be tested with no tolerance.
 //! - [`level`]: the exact 8-bit level of the Phong value `p/√q`, decided with
 //!   rationals only.
+//! - [`radical`]: exact signs and levels in `Q(√a, √b, √c)`, for spans of normalized
+//!   rational inputs.
 //! - [`transcendental`]: square root, arc cosine and cosine of rationals to 2^-256.
 //! - [`decimal`]: correctly rounded decimal strings for rationals.
 //! - `mpfr` (feature `mpfr`): an MPFR scalar through `rug`.
@@ -12,5 +14,6 @@ pub mod decimal;
 pub mod level;
 #[cfg(feature = "mpfr")]
 pub mod mpfr;
+pub mod radical;
 pub mod transcendental;
 pub mod unit;

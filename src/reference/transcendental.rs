@@ -1,8 +1,9 @@
 //! Square root, arc cosine and cosine of rationals, to a fixed absolute accuracy.
 //!
 //! The results are irrational, so they cannot be exact; they are computed in
-//! fixed point with [`BITS`] + 64 fractional bits and returned as rationals whose
-//! absolute error is below 2^-[`BITS`]. This is what [`crate::scalar::Real`] means
+//! fixed point with [`bits`] + 64 fractional bits and returned as rationals whose
+//! absolute error is below 2^-[`bits`] ([`BITS`] = 256 unless a caller asks for more
+//! with [`with_bits`]). This is what [`crate::scalar::Real`] means
 //! for [`BigRational`]: the field-operation recurrences stay exact, and the one
 //! square root (or cosine) per pixel is accurate far beyond any float.
 
@@ -12,26 +13,57 @@ use num_rational::BigRational;
 use num_traits::{One, Signed, Zero};
 use std::sync::OnceLock;
 
-/// Accuracy of the results: absolute error below 2^-BITS.
+/// Accuracy of the results by default: absolute error below 2^-BITS.
 pub const BITS: u32 = 256;
 
+/// The most bits [`with_bits`] takes (about 2,400 decimal digits).
+pub const MAX_BITS: u32 = 8192;
+
+thread_local! {
+    static PRECISION: std::cell::Cell<u32> = const { std::cell::Cell::new(BITS) };
+}
+
+/// The accuracy of this thread's results: absolute error below 2^-`bits()`
+/// ([`BITS`] unless inside [`with_bits`]).
+pub fn bits() -> u32 {
+    PRECISION.with(std::cell::Cell::get)
+}
+
+/// Runs `f` with results accurate to 2^-`b` on this thread (`b` clamped to
+/// [`BITS`]`..=`[`MAX_BITS`]), as an exact run that needs more digits than the default
+/// gives does; the previous accuracy is restored afterwards, also on a panic.
+pub fn with_bits<R>(b: u32, f: impl FnOnce() -> R) -> R {
+    struct Restore(u32);
+    impl Drop for Restore {
+        fn drop(&mut self) {
+            PRECISION.with(|p| p.set(self.0));
+        }
+    }
+    let _restore = Restore(bits());
+    PRECISION.with(|p| p.set(b.clamp(BITS, MAX_BITS)));
+    f()
+}
+
 /// Working fractional bits (64 guard bits).
-const W: u32 = BITS + 64;
+#[allow(non_snake_case)]
+fn W() -> u32 {
+    bits() + 64
+}
 
 fn one_fx() -> BigInt {
-    BigInt::one() << W
+    BigInt::one() << W()
 }
 
 /// `x` in fixed point (floor of `x · 2^W`).
 fn to_fx(x: &BigRational) -> BigInt {
-    (x.numer() << W).div_floor(x.denom())
+    (x.numer() << W()).div_floor(x.denom())
 }
 
 /// A fixed-point value back to a rational, keeping [`BITS`] + 8 fractional bits
 /// (the last guard bits are noise, and fewer bits keep the rationals small).
 fn from_fx(v: &BigInt) -> BigRational {
-    let keep = BITS + 8;
-    let shift = W - keep;
+    let keep = bits() + 8;
+    let shift = W() - keep;
     let r: BigInt = (v + (BigInt::one() << (shift - 1))) >> shift;
     BigRational::new(r, BigInt::one() << keep)
 }
@@ -41,21 +73,21 @@ fn from_fx(v: &BigInt) -> BigRational {
 fn mul_fx(a: &BigInt, b: &BigInt) -> BigInt {
     let p = a * b;
     if p.is_negative() {
-        -((-p) >> W)
+        -((-p) >> W())
     } else {
-        p >> W
+        p >> W()
     }
 }
 
 fn div_fx(a: &BigInt, b: &BigInt) -> BigInt {
-    (a << W).div_floor(b)
+    (a << W()).div_floor(b)
 }
 
 fn sqrt_fx(a: &BigInt) -> BigInt {
     if a.is_negative() {
         return BigInt::zero();
     }
-    (a << W).sqrt()
+    (a << W()).sqrt()
 }
 
 /// `√x` for `x ≥ 0` (negative `x` gives 0): exact when `x` is the square of a
@@ -70,10 +102,11 @@ pub fn sqrt(x: &BigRational) -> BigRational {
         return BigRational::new(rn, rd);
     }
     // √(a/b) = √(a·b) / b, with a·b scaled by 2^(2W).
-    let ab: BigInt = (x.numer() * x.denom()) << (2 * W);
+    let w = W();
+    let ab: BigInt = (x.numer() * x.denom()) << (2 * w);
     let s = ab.sqrt();
-    // s / (b · 2^W), rounded to BITS + 8 bits.
-    let v = (s << W).div_floor(&(x.denom() << W));
+    // s / (b · 2^W), rounded to bits() + 8 bits.
+    let v = (s << w).div_floor(&(x.denom() << w));
     from_fx(&v)
 }
 
@@ -106,17 +139,35 @@ fn atan_fx(y: &BigInt) -> BigInt {
     sum << doublings
 }
 
-fn pi_fx() -> &'static BigInt {
+fn pi_fx() -> BigInt {
     static PI: OnceLock<BigInt> = OnceLock::new();
-    PI.get_or_init(|| {
-        // Machin: π = 16·atan(1/5) − 4·atan(1/239).
+    // Machin: π = 16·atan(1/5) − 4·atan(1/239).
+    let machin = || {
         let a = atan_fx(&(one_fx() / 5));
         let b = atan_fx(&(one_fx() / 239));
         a * 16 - b * 4
-    })
+    };
+    if bits() == BITS {
+        PI.get_or_init(machin).clone()
+    } else {
+        thread_local! {
+            static MORE: std::cell::RefCell<Option<(u32, BigInt)>> = const { std::cell::RefCell::new(None) };
+        }
+        MORE.with(|m| {
+            let mut m = m.borrow_mut();
+            match &*m {
+                Some((b, pi)) if *b == bits() => pi.clone(),
+                _ => {
+                    let pi = machin();
+                    *m = Some((bits(), pi.clone()));
+                    pi
+                }
+            }
+        })
+    }
 }
 
-/// π/2 to 2^-BITS.
+/// π/2 to 2^-[`bits`].
 pub fn frac_pi_2() -> BigRational {
     from_fx(&(pi_fx() >> 1))
 }
@@ -128,10 +179,13 @@ pub fn acos(x: &BigRational) -> BigRational {
         return BigRational::zero();
     }
     if *x <= -one.clone() {
-        return from_fx(pi_fx());
+        return from_fx(&pi_fx());
     }
     let xf = to_fx(x);
-    let sf = sqrt_fx(&(one_fx() - mul_fx(&xf, &xf))); // √(1 − x²)
+    // √(1 − x²) from the exact 1 − x² = (1 − x)(1 + x): near ±1 that is tiny, and a
+    // fixed-point square would lose its digits (an error e in 1 − x² moves the root
+    // by e/(2√(1 − x²))), while the root of the exact value is within 2^-W.
+    let sf = to_fx(&sqrt(&((one.clone() - x) * (one.clone() + x))));
     let half = BigRational::new(1.into(), 2.into());
     let v = if x.abs() * x.abs() <= half {
         // acos = π/2 − atan(x / √(1 − x²)), argument in [−1, 1].

@@ -16,6 +16,10 @@
 //!
 //! Inputs: the edge, targeted and random spans of `tests/common` (n up to 4096 in the
 //! extensive tier), exact values from the exact run.
+//!
+//! Phong under `ieee` has a derived (not machine-checked) bound, docs/float.md §18.4:
+//! `phong_ieee_derived_*` run Horner's closed form, the per-pixel normal and
+//! normalize-then-dot against it.
 
 mod common;
 
@@ -69,6 +73,7 @@ trait Native: Copy + std::ops::Add<Output = Self> + std::ops::Sub<Output = Self>
     fn mul(self, b: Self) -> Self;
     fn div(self, b: Self) -> Self;
     fn fma(self, b: Self, c: Self) -> Self;
+    fn sqrt(self) -> Self;
     const U: f64;
 }
 
@@ -92,6 +97,9 @@ macro_rules! native {
             }
             fn fma(self, b: Self, c: Self) -> Self {
                 self.mul_add(b, c)
+            }
+            fn sqrt(self) -> Self {
+                <$t>::sqrt(self)
             }
             const U: f64 = <$t>::EPSILON as f64 / 2.0;
         }
@@ -596,4 +604,166 @@ fn the_gpu_model_rounds_as_the_shader_profile_allows() {
     let tiny = common::emu::pow2(-130);
     assert!(g.r(tiny.clone()).is_zero());
     assert!(!GPUS[3].r(tiny).is_zero());
+}
+
+// ------------------------------------------- Phong under ieee (derived, §18.4)
+
+/// The forms of Phong that `phong_ieee` covers (docs/float.md §18.4).
+#[derive(Clone, Copy, Debug)]
+enum PhongForm {
+    /// Horner's closed form `(A·i + B)/√((C·i + D)·i + E)` (`FastSpan::phong`'s).
+    Horner,
+    /// The per-pixel normal `N_a + i·k`, then `p/√q`.
+    PerPixel,
+    /// `(1 − t)·N_a + t·N_b`, `t = i/n`, normalized by `1/√q`, dotted with `L`.
+    NormalizeThenDot,
+}
+
+fn phong<T: Native>(form: PhongForm, v: Variant, s: &Span<Q>) -> Vec<Q> {
+    let vec = |x: &phong_approx::Vec3<Q>| [T::of(&x.x), T::of(&x.y), T::of(&x.z)];
+    let (na, nb, l) = (vec(&s.na), vec(&s.nb), vec(&s.l));
+    let nf = T::from_u32(s.n);
+    let one = T::from_u32(1);
+    let inv = one.div(nf);
+    let over_n = |x: T| if v.reciprocal { x.mul(inv) } else { x.div(nf) };
+    let axpy = |a: T, x: T, y: T| if v.fused { a.fma(x, y) } else { a.mul(x) + y };
+    let ratio = |p: T, q: T| {
+        if v.reciprocal {
+            p.mul(one.div(q.sqrt()))
+        } else {
+            p.div(q.sqrt())
+        }
+    };
+    let k = [0, 1, 2].map(|j| over_n(nb[j] - na[j]));
+    let (a, b) = (dot(v.dot, k, l), dot(v.dot, na, l));
+    let (c, d, e) = (
+        dot(v.dot, k, k),
+        T::from_u32(2).mul(dot(v.dot, k, na)),
+        dot(v.dot, na, na),
+    );
+    (0..=s.n)
+        .map(|i| {
+            let fi = T::from_u32(i);
+            let value = match form {
+                PhongForm::Horner => {
+                    let p = axpy(a, fi, b);
+                    let q = axpy(axpy(c, fi, d), fi, e);
+                    ratio(p, q)
+                }
+                PhongForm::PerPixel => {
+                    let nn = [0, 1, 2].map(|j| axpy(fi, k[j], na[j]));
+                    ratio(dot(v.dot, nn, l), dot(v.dot, nn, nn))
+                }
+                PhongForm::NormalizeThenDot => {
+                    let t = over_n(fi);
+                    let nn = [0, 1, 2].map(|j| axpy(t, nb[j], (one - t).mul(na[j])));
+                    let r = one.div(dot(v.dot, nn, nn).sqrt());
+                    dot(v.dot, nn.map(|x| x.mul(r)), l)
+                }
+            };
+            value.q()
+        })
+        .collect()
+}
+
+/// Phong's exact value `p_i/√q_i` on the exact span, to 2^-256 (the square root of
+/// the exact `q_i`, `phong_approx::reference::transcendental`).
+fn phong_exact(s: &Span<Q>) -> Vec<Q> {
+    use phong_approx::reference::transcendental::sqrt;
+    (0..=s.n).map(|i| s.p_at(i) / sqrt(&s.q_at(i))).collect()
+}
+
+/// Spans for Phong: the profile spans, the two reported closed-form rejections
+/// (nearly opposite normals, `n = 255`) and nearly opposite spans of growing
+/// closeness at `n = 2^k − 1`, `2^k`.
+fn phong_spans() -> Vec<Span<Q>> {
+    let v = |x: [(i64, i64); 3]| {
+        phong_approx::Vec3::new(q(x[0].0, x[0].1), q(x[1].0, x[1].1), q(x[2].0, x[2].1))
+    };
+    let mut out: Vec<Span<Q>> = spans().into_iter().map(|(_, s)| s).collect();
+    let z = v([(0, 1), (0, 1), (1, 1)]);
+    let reported = [
+        (
+            v([(8, 801), (-7, 20025), (-20024, 20025)]),
+            v([(6, 7), (-2, 7), (3, 7)]),
+        ),
+        (
+            v([(192, 9217), (0, 1), (-9215, 9217)]),
+            v([(1, 1), (0, 1), (0, 1)]),
+        ),
+    ];
+    for (nb, l) in reported {
+        out.push(Span::new(z.clone(), nb, l, 255).unwrap());
+    }
+    // N_b = (2m, 0, 1 − m²)/(1 + m²) reflected to near −N_a: m = 1/(2^j).
+    for j in 2..tiered(9, 12) {
+        let m = q(1, 1 << j);
+        let den = Q::from_integer(1.into()) + m.clone() * m.clone();
+        let nb = phong_approx::Vec3::new(
+            q(2, 1) * m.clone() / den.clone(),
+            q(0, 1),
+            (m.clone() * m.clone() - Q::from_integer(1.into())) / den,
+        );
+        for n in [15, 16, 255, 256] {
+            out.push(Span::new(z.clone(), nb.clone(), v([(3, 5), (0, 1), (4, 5)]), n).unwrap());
+        }
+    }
+    out
+}
+
+fn phong_ieee<T: Native>(what: &str) {
+    use phong_approx::tolerance::{profile::phong_ieee, Shape};
+    let (mut checked, mut refused, mut worst) = (0, 0, 0f64);
+    for s in phong_spans() {
+        let shape = Shape::of(&s);
+        let Some(b) = phong_ieee(s.n, shape.q_min, T::U) else {
+            refused += 1;
+            continue;
+        };
+        let want = phong_exact(&s);
+        for form in [
+            PhongForm::Horner,
+            PhongForm::PerPixel,
+            PhongForm::NormalizeThenDot,
+        ] {
+            for v in VARIANTS {
+                let got = phong::<T>(form, v, &s);
+                for (i, (g, w)) in got.iter().zip(&want).enumerate() {
+                    let e = (g.clone() - w.clone()).abs().to_f64();
+                    worst = worst.max(e / b);
+                    assert!(
+                        e <= b,
+                        "{what} {form:?} {v:?}: pixel {i} of n = {}: error {e:e} > bound {b:e} (q_min {:e})",
+                        s.n,
+                        shape.q_min
+                    );
+                }
+                checked += 1;
+            }
+        }
+    }
+    assert!(
+        checked > 100,
+        "{checked} checked, {refused} without a bound"
+    );
+    // The derivation is loose (it allows for every form at once): report how loose.
+    eprintln!(
+        "{what}: {checked} runs, worst error {worst:.3} of the bound, {refused} spans without one"
+    );
+}
+
+/// Phong's derived `ieee` bound (`phong_approx::tolerance::profile::phong_ieee`,
+/// docs/float.md §18.4) holds for Horner's closed form, the per-pixel normal and
+/// normalize-then-dot, each with three orders, fused or not, with and without
+/// reciprocals, in binary32.
+#[test]
+fn phong_ieee_derived_binary32() {
+    phong_ieee::<f32>("phong_ieee_derived_binary32");
+}
+
+/// As [`phong_ieee_derived_binary32`], in binary64, including the two closed-form
+/// spans that the reference bound rejected (25,000 u against 1,600 u).
+#[test]
+fn phong_ieee_derived_binary64() {
+    phong_ieee::<f64>("phong_ieee_derived_binary64");
 }

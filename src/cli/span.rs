@@ -412,7 +412,7 @@ fn error_bound(r: &Request, u: f64) -> Option<f64> {
 /// only for `f32`). `null` where none is derived or proved (and for every profile
 /// with `--normalize`, whose float normalization no derivation covers).
 fn error_bounds(r: &Request, u: f64) -> Value {
-    use phong_approx::tolerance::profile::{proved_bound, Profile};
+    use phong_approx::tolerance::profile::{profile_bound, Profile};
     let shown = |b: Option<f64>| b.map_or(Value::Null, |b| json!(round_up_3(b)));
     let mut m = serde_json::Map::new();
     for p in Profile::ALL {
@@ -420,7 +420,12 @@ fn error_bounds(r: &Request, u: f64) -> Value {
             _ if r.normalize => None,
             Profile::Reference => error_bound(r, u),
             Profile::Shader if u != f64::from(f32::EPSILON) / 2.0 => continue,
-            p => proved_bound(r.method, p, r.n, u),
+            p => Span::new(r.na.clone(), r.nb.clone(), r.l.clone(), r.n)
+                .ok()
+                .and_then(|s| {
+                    let shape = phong_approx::tolerance::Shape::of(&s);
+                    profile_bound(r.method, p, r.n, shape.q_min, u)
+                }),
         };
         m.insert(p.name().to_string(), shown(b));
     }

@@ -12,6 +12,10 @@
 //! | `ieee` | binary64 | `profile_ieee_gouraud_binary64`, `profile_ieee_gouraud_binary64_large` | `profile_ieee_corrected_euler_binary64`, `profile_ieee_corrected_euler_binary64_large`, `profile_ieee_corrected_euler_closed_binary64`, `profile_ieee_corrected_euler_closed_binary64_large` |
 //! | `shader` | binary32 | `profile_shader_gouraud_binary32` | `profile_shader_corrected_euler_binary32` |
 //!
+//! Phong under `ieee` has a *derived* bound ([`phong_ieee`], `docs/float.md` §18.4,
+//! tested by `tests/profiles.rs::phong_ieee_derived_binary32`/`_binary64`); [`status`]
+//! says which kind a bound is. Other methods have no bound under `ieee` or `shader` yet.
+//!
 //! Tested, with other implementations written from the definitions (other orders,
 //! `mul_add`, reciprocals, the closed form, a software GPU that truncates, divides
 //! within 2.5 ulp and flushes denormals), in `tests/profiles.rs`.
@@ -171,6 +175,93 @@ pub fn proved_bound(method: crate::Method, profile: Profile, n: u32, u: f64) -> 
         .iter()
         .map(|f| f.at(n, u))
         .try_fold(0.0f64, |m, b| b.map(|b| m.max(b)))
+}
+
+/// Phong under `ieee`, derived (`docs/float.md` §18.4; not a Coq theorem): every
+/// implementation that computes `p_i = N_i·L` and `q_i = N_i·N_i` from the nearest
+/// floats of the inputs by any of the catalogued forms — Horner's `(A·i + B)` and
+/// `(C·i + D)·i + E` with `A = k·L`, `C = k·k`, `D = 2k·N_a`, `E = N_a·N_a`,
+/// `k = (N_b − N_a)/n` (or `·(1/n)`); the per-pixel normal `N_a + i·k` or
+/// `(1 − t)·N_a + t·N_b`, `t = i/n` — in any order of each dot product, fused or
+/// not, and then `p/√q`, `p·(1/√q)` or the dot product of `N·(1/√q)` with `L`.
+///
+/// Every computed product or sum is its exact value with at most 11 (for `p`) and 15
+/// (for `q`) factors `(1 + δ)`, `|δ| ≤ u`, on each monomial, so it is off by at most
+/// `γ_k` times the sum of the monomials' absolute values: at most `3` for `p`
+/// (`(1 + 2t)`, `|N_a| = |N_b| = |L| = 1`) and `9` for `q` (`(1 + 2t)²`). With
+/// `e_p = 3γ_11 + η`, `e_q = 9γ_15 + η`, `q̂ ≥ q_min − e_q` and `|p| ≤ √q`:
+///
+/// `|v̂ − v| ≤ (e_p/√(q_min − e_q) + e_q/(√(q_min − e_q)·(√q_min + √(q_min − e_q))))·(1 + γ_3) + γ_3 + η`,
+///
+/// the last factor for the square root, the division (or the reciprocal and the
+/// product). `None` where `q` may round to half of `q_min` (`e_q ≥ q_min/2`: normals
+/// that nearly cancel, where no bound of this form holds) or `n > 2^24` (`i` must be
+/// exact).
+pub fn phong_ieee(n: u32, q_min: f64, u: f64) -> Option<f64> {
+    if !(q_min > 0.0 && q_min.is_finite()) || n == 0 || n > 1 << 24 {
+        return None;
+    }
+    let gamma = |k: f64| k * u / (1.0 - k * u);
+    // Underflow: each of the at most 64 roundings of a pixel's computation may be off
+    // by half the smallest subnormal instead of relatively.
+    let eta = if u == U32 {
+        64.0 * 2f64.powi(-150)
+    } else {
+        64.0 * 2f64.powi(-1074)
+    };
+    let e_p = 3.0 * gamma(11.0) + eta;
+    let e_q = 9.0 * gamma(15.0) + eta;
+    if e_q >= q_min / 2.0 {
+        return None;
+    }
+    let lo = (q_min - e_q).sqrt();
+    let b = (e_p / lo + e_q / (lo * (q_min.sqrt() + lo))) * (1.0 + gamma(3.0)) + gamma(3.0) + eta;
+    // This evaluation in f64 rounds too: a relative 2^-40 more covers it.
+    Some(b * (1.0 + 2f64.powi(-40)))
+}
+
+/// How a profile's bound for a method is known.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Status {
+    /// A Coq theorem of `proofs/Profiles.v` (its name).
+    Proved(&'static str),
+    /// A written derivation (the `docs/float.md` section), attacked by the searches of
+    /// `tests/profiles.rs`.
+    Derived(&'static str),
+}
+
+/// Whether and how `method` has a bound under `profile` in the format of unit
+/// roundoff `u` (`None`: no bound, a case then fails naming that).
+pub fn status(method: crate::Method, profile: Profile, u: f64) -> Option<Status> {
+    if let Some(forms) = proved(method, profile, u) {
+        return Some(Status::Proved(forms[0].theorem));
+    }
+    match (method, profile) {
+        (crate::Method::Phong, Profile::Ieee) if u == U32 || u == f64::EPSILON / 2.0 => {
+            Some(Status::Derived("docs/float.md §18.4"))
+        }
+        _ => None,
+    }
+}
+
+/// The bound of `method` under `profile` (not `Reference`, whose bounds are
+/// [`crate::tolerance::bound`]) on a span of `n` steps and smallest `q_i` `q_min`, in
+/// the format of unit roundoff `u`: the proved bound ([`proved_bound`]) or the derived
+/// one ([`phong_ieee`]); `None` where neither covers it.
+pub fn profile_bound(
+    method: crate::Method,
+    profile: Profile,
+    n: u32,
+    q_min: f64,
+    u: f64,
+) -> Option<f64> {
+    match status(method, profile, u)? {
+        Status::Proved(_) => proved_bound(method, profile, n, u),
+        Status::Derived(_) => match method {
+            crate::Method::Phong => phong_ieee(n, q_min, u),
+            _ => None,
+        },
+    }
 }
 
 #[cfg(test)]

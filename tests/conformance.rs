@@ -468,10 +468,18 @@ fn malformed_results_get_one_line_naming_file_line_and_problem() {
         &with(3, "typical-001,2,abc"),
         ":4: value 'abc' is not a number",
     );
-    malformed(
-        &with(3, "typical-001,2,NaN"),
-        ":4: value 'NaN' is not finite",
-    );
+    // A NaN or an infinity is a result, and fails its pixel (exit 1, named).
+    for bad in ["NaN", "inf", "-Infinity"] {
+        let p = tmp("nonfinite.csv", &with(3, &format!("typical-001,2,{bad}")));
+        let (code, out, err) = run_check(&typical_path(), &p, &[]);
+        assert_eq!(code, 1, "{bad}: {out}{err}");
+        assert!(
+            err.contains("first: typical-001 (pixel 2 is not finite)"),
+            "{bad}: {err}"
+        );
+        assert!(out.contains("not finite at pixel 2"), "{out}");
+        assert!(!out.contains("NaN") && !out.contains(" inf"), "{out}");
+    }
     malformed(
         &with(3, "typical-001,two,0.5"),
         ":4: pixel 'two' is not a whole number",

@@ -155,10 +155,13 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
     } else {
         Err(CliError {
             message: format!(
-                "{} of {} cases out of tolerance, first: {}",
+                "{} of {} cases out of tolerance, first: {}{}",
                 failed.len(),
                 reports.len(),
-                shown(&failed[0].id)
+                shown(&failed[0].id),
+                failed[0]
+                    .not_finite
+                    .map_or(String::new(), |p| format!(" (pixel {p} is not finite)"))
             ),
             code: 1,
         })
@@ -255,14 +258,17 @@ fn print_report(
     outln!("| case | pixels | max Δlevel | mean Δlevel | max |Δ| | max ulps (f32) | allowed | verdict |")?;
     outln!("|---|---:|---:|---:|---:|---:|---:|---|")?;
     for r in reports {
+        // A NaN or infinite result fails its case; no difference is printed for it.
+        let (abs, ulps) = match r.not_finite {
+            Some(p) => (format!("not finite at pixel {p}"), "—".to_string()),
+            None => (format!("{:.3e}", r.max_abs), format!("{:.1}", r.max_ulps)),
+        };
         outln!(
-            "| {} | {} | {} | {:.4} | {:.3e} | {:.1} | {} | {} |",
+            "| {} | {} | {} | {:.4} | {abs} | {ulps} | {} | {} |",
             shown(&r.id),
             r.pixels,
             r.max_levels,
             r.mean_levels,
-            r.max_abs,
-            r.max_ulps,
             r.allowed,
             if r.pass { "pass" } else { "FAIL" }
         )?;
@@ -281,7 +287,11 @@ fn print_report(
         .iter()
         .filter(|r| !r.pass)
         .chain(reports.iter())
-        .max_by(|a, b| a.max_abs.total_cmp(&b.max_abs));
+        .max_by(|a, b| {
+            (a.not_finite.is_some(), a.max_abs)
+                .partial_cmp(&(b.not_finite.is_some(), b.max_abs))
+                .unwrap_or(std::cmp::Ordering::Equal)
+        });
     if let Some(w) = worst {
         if let Some(c) = vectors.cases.iter().find(|c| c.id == w.id) {
             outln!(

@@ -118,23 +118,18 @@ fn sizes(vectors: &VectorFile, specular: bool) -> HashMap<&str, usize> {
         .collect()
 }
 
+/// A value: a decimal number, or `nan`/`inf`/`infinity` (any case, signed), which an
+/// implementation may well produce and which then fails its pixel (exit 1, named), not
+/// the file.
 fn parse_value(file: &str, line: usize, s: &str) -> Result<f64, InputError> {
     let t = s.trim();
-    let v: f64 = t.parse().map_err(|_| {
+    t.parse().map_err(|_| {
         err(
             file,
             line,
             format!("value '{}' is not a number", super::shown(t)),
         )
-    })?;
-    if !v.is_finite() {
-        return Err(err(
-            file,
-            line,
-            format!("value '{}' is not finite", super::shown(t)),
-        ));
-    }
-    Ok(v)
+    })
 }
 
 /// The values of one case as they are read: the value and the 1-based line of each
@@ -531,11 +526,12 @@ mod json {
                 let Some(x) = s.next_element_seed(Number)? else {
                     break;
                 };
-                let Some(x) = x.filter(|x| x.is_finite()) else {
-                    return Err(self.ctx.fail(format!(
-                        "{}: value {i} of {who} is not a finite number",
-                        self.at
-                    )));
+                // "NaN" or "inf" as a string is a result (a failing pixel), not an
+                // error of the file.
+                let Some(x) = x else {
+                    return Err(self
+                        .ctx
+                        .fail(format!("{}: value {i} of {who} is not a number", self.at)));
                 };
                 if i == self.cap {
                     return Err(self.ctx.fail(format!(
@@ -676,6 +672,9 @@ pub struct CaseReport {
     pub allowed: String,
     /// Whether every pixel is within the tolerance.
     pub pass: bool,
+    /// The first pixel whose result is NaN or infinite (it fails, whatever the
+    /// tolerance), if any.
+    pub not_finite: Option<usize>,
 }
 
 /// Compares `results` with the vector file's expectations for `method`.
@@ -737,12 +736,21 @@ fn case_report(
             profile_bound(method, profile, c.n, c.q_min * (1.0 - 2f64.powi(-40)), u)
         }
         Tolerance::Default { u } => {
-            // Specular raises the value to the power s: its error grows by up to s×.
-            let s = if specular {
-                c.specular.as_ref().map_or(1.0, |sp| f64::from(sp.s.max(1)))
-            } else {
-                1.0
-            };
+            // Specular raises the value v ≥ 0 to the power s: an error e in v moves v^s
+            // by at most s·(v + e)^(s−1)·e (mean value theorem), and evaluating the
+            // power adds a relative γ_s (s − 1 products, or a pow within an ulp). The
+            // values may exceed 1 (corrected Euler reaches about 1.19), so the factor
+            // is taken at the case's largest base value, v_max = max (v^s)^(1/s).
+            let spec = specular.then(|| {
+                let s = c.specular.as_ref().map_or(1, |sp| sp.s.max(1));
+                let v_max = exp
+                    .values
+                    .iter()
+                    .filter_map(|x| x.parse::<f64>().ok())
+                    .map(|x| x.max(0.0).powf(1.0 / f64::from(s)) * (1.0 + 1e-12))
+                    .fold(0.0, f64::max);
+                (f64::from(s), v_max)
+            });
             // No derived bound (n too long for the precision, or q may round to
             // zero): the case cannot pass on the default tolerance. Specular cases
             // shade N·H, not N·L, so the bound takes no edge values there.
@@ -750,7 +758,13 @@ fn case_report(
                 Some(shape) => crate::tolerance::span_bound(method, &shape, u),
                 None => crate::tolerance::bound(method, c.n, c.q_min, u),
             }
-            .map(|b| b * s)
+            .map(|b| match spec {
+                None => b,
+                Some((s, v_max)) => {
+                    let g = s * u / (1.0 - s * u);
+                    (s * (v_max + b).powf(s - 1.0) * b + g * (v_max + b).powf(s)) * (1.0 + 1e-12)
+                }
+            })
         }
         _ => None,
     };
@@ -758,6 +772,7 @@ fn case_report(
         && allowed_abs.is_none();
     let (mut max_levels, mut sum_levels, mut max_abs, mut max_ulps) = (0u32, 0u64, 0f64, 0f64);
     let (mut worst, mut worst_excess, mut pass) = (0usize, f64::NEG_INFINITY, true);
+    let mut not_finite = None;
     // The vector file was validated, so both lists have n + 1 values; a shorter list
     // would end the comparison early, so it fails.
     if got.len() != exp.values.len() || exp.levels.len() != exp.values.len() {
@@ -768,6 +783,15 @@ fn case_report(
         .zip(exp.values.iter().zip(&exp.levels))
         .enumerate()
     {
+        if !g.is_finite() {
+            pass = false;
+            if not_finite.is_none() {
+                not_finite = Some(i);
+                worst = i;
+                worst_excess = f64::INFINITY;
+            }
+            continue;
+        }
         let e: f64 = ev.parse().unwrap_or(f64::NAN);
         let d = (g - e).abs();
         // No method comes near 16 times its exact value in magnitude: such a result
@@ -811,5 +835,6 @@ fn case_report(
         worst_pixel: worst,
         allowed,
         pass,
+        not_finite,
     }
 }

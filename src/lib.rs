@@ -27,6 +27,10 @@
 //! them on the torus harness in [`raster::compare`] and [`raster::precision`]
 //! (`phong-approx compare`, `docs/comparison.md`).
 //!
+//! To test an implementation of your own from `cargo test`: [`testkit`]
+//! (`Suite::published().method(…).profile(…).check_f32(…).assert_ok()`), the
+//! published vectors embedded and judged as `phong-approx check` judges them.
+//!
 //! The set-up of a scan line (k, A, B, C, D, E, p_a, p_b, dq_a, dq_b, di_a, di_b, ds,
 //! p_n, ε, dε, t_0, d_p) lives in [`Span`].
 //!
@@ -86,6 +90,7 @@ pub mod scalar;
 pub mod span;
 pub mod specular;
 pub mod symmetric_phong;
+pub mod testkit;
 pub mod tolerance;
 pub mod vector;
 

@@ -1,0 +1,455 @@
+//! The test kit: check your own shading code against the published vectors from your
+//! own `cargo test`, with the same verdicts as `phong-approx check`.
+//!
+//! ```
+//! use phong_approx::testkit::Suite;
+//! use phong_approx::tolerance::profile::Profile;
+//! use phong_approx::Method;
+//!
+//! // An implementation under test: corrected Euler (eqs. 15–17) in f32, written in
+//! // its own operation order.
+//! fn my_corrected_euler(na: [f32; 3], nb: [f32; 3], l: [f32; 3], n: u32) -> Vec<f32> {
+//!     let dot = |a: [f32; 3], b: [f32; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+//!     let nf = n as f32;
+//!     let k = [0, 1, 2].map(|j| (nb[j] - na[j]) / nf);
+//!     let (a, pa, pb) = (dot(k, l), dot(na, l), dot(nb, l));
+//!     let (c, d) = (dot(k, k), 2.0 * dot(k, na));
+//!     let dia = a - pa / 2.0 * d;
+//!     let dib = a - pb / 2.0 * (2.0 * nf * c + d);
+//!     let ds = (dib - dia) / nf;
+//!     let eps = pa + nf * dia + nf * (nf - 1.0) / 2.0 * ds - pb;
+//!     let (mut p, mut t) = (pa, dia - eps / nf);
+//!     let mut out = vec![p];
+//!     for _ in 0..n {
+//!         p += t;
+//!         t += ds;
+//!         out.push(p);
+//!     }
+//!     out
+//! }
+//!
+//! Suite::published()
+//!     .method(Method::CorrectedEuler)
+//!     .profile(Profile::Ieee)
+//!     .check_f32(|s| my_corrected_euler(s.na, s.nb, s.l, s.n))
+//!     .assert_ok();
+//! ```
+//!
+//! The published sets (`vectors/*.json`) are embedded in the crate and verified
+//! against their SHA-256 digests ([`crate::conformance::integrity::PUBLISHED`]) when
+//! first used; each case gives your function its inputs as the nearest floats of the
+//! exact unit vectors and the number of steps, and takes back `n + 1` values. The
+//! verdict is [`crate::conformance::check::check`]'s: the bound of the chosen
+//! [`Profile`] (`docs/float.md` §18) for the method, format and case, or a
+//! [`Tolerance`] of your own. A failing [`Report`] names, for each failing case, its
+//! id and comment, the worst pixel, the inputs in decimal and as hex bits, the
+//! expected value and level, yours, the difference in ulps and in 8-bit levels, the
+//! tolerance and its profile, and the `phong-approx span` command that reproduces the
+//! span exactly.
+
+use crate::conformance::check::{check, CaseReport, Results, Tolerance};
+use crate::conformance::integrity::{published_set, sha256_hex};
+use crate::conformance::vectors::{method_key, Case, VectorFile};
+use crate::quantize::level;
+use crate::tolerance::profile::Profile;
+use crate::Method;
+use std::fmt;
+use std::sync::OnceLock;
+
+/// The published sets, embedded: name and JSON text.
+const EMBEDDED: [(&str, &str); 3] = [
+    ("typical", include_str!("../vectors/typical.json")),
+    ("edge", include_str!("../vectors/edge.json")),
+    ("paper", include_str!("../vectors/paper.json")),
+];
+
+/// A published set, parsed once and verified against its digest.
+///
+/// # Panics
+/// If the embedded text is not the published set (the crate's own files changed
+/// without their digests: a packaging error, caught by this crate's tests).
+fn published(set: &str) -> Option<&'static VectorFile> {
+    static FILES: [OnceLock<VectorFile>; 3] = [OnceLock::new(), OnceLock::new(), OnceLock::new()];
+    let k = EMBEDDED.iter().position(|(name, _)| *name == set)?;
+    Some(FILES[k].get_or_init(|| {
+        let (name, text) = EMBEDDED[k];
+        let digest = sha256_hex(text.as_bytes());
+        assert_eq!(
+            published_set(&digest),
+            Some(name),
+            "the embedded vectors/{name}.json is not the published set (SHA-256 {digest})"
+        );
+        serde_json::from_str(text).expect("the published sets parse")
+    }))
+}
+
+/// The names of the published sets.
+pub const SETS: [&str; 3] = ["typical", "edge", "paper"];
+
+/// One span as your function receives it: the nearest floats of the exact unit inputs
+/// and the number of steps; return `n + 1` values, pixel `0` at `N_a`, pixel `n` at
+/// `N_b`.
+#[derive(Clone, Debug)]
+pub struct Inputs<'a, T> {
+    /// The case id, e.g. `edge-007`.
+    pub id: &'a str,
+    /// Why the case is there.
+    pub comment: &'a str,
+    /// `N_a`.
+    pub na: [T; 3],
+    /// `N_b`.
+    pub nb: [T; 3],
+    /// `L`.
+    pub l: [T; 3],
+    /// Steps `n`.
+    pub n: u32,
+}
+
+/// A float format your implementation computes in.
+pub trait Format: Copy + fmt::Display + fmt::LowerExp {
+    /// `f32` or `f64`.
+    const NAME: &'static str;
+    /// Its unit roundoff.
+    const U: f64;
+    /// Parses a vector file's input of this format.
+    fn parse(s: &str) -> Option<Self>;
+    /// As `f64` (exactly).
+    fn to_f64(self) -> f64;
+    /// From an `f64` that holds a value of this format (exactly).
+    fn from_f64(x: f64) -> Self;
+    /// The hex form of its bits.
+    fn hex(self) -> String;
+    /// The spacing of the format at `x` (its ulp).
+    fn ulp(x: f64) -> f64;
+}
+
+impl Format for f32 {
+    const NAME: &'static str = "f32";
+    const U: f64 = 1.0 / 16_777_216.0;
+    fn parse(s: &str) -> Option<Self> {
+        s.trim().parse().ok()
+    }
+    fn to_f64(self) -> f64 {
+        f64::from(self)
+    }
+    fn from_f64(x: f64) -> Self {
+        x as f32
+    }
+    fn hex(self) -> String {
+        format!("0x{:08x}", self.to_bits())
+    }
+    fn ulp(x: f64) -> f64 {
+        crate::conformance::check::f32_ulp(x)
+    }
+}
+
+impl Format for f64 {
+    const NAME: &'static str = "f64";
+    const U: f64 = f64::EPSILON / 2.0;
+    fn parse(s: &str) -> Option<Self> {
+        s.trim().parse().ok()
+    }
+    fn to_f64(self) -> f64 {
+        self
+    }
+    fn from_f64(x: f64) -> Self {
+        x
+    }
+    fn hex(self) -> String {
+        format!("0x{:016x}", self.to_bits())
+    }
+    fn ulp(x: f64) -> f64 {
+        let a = x.abs().max(f64::MIN_POSITIVE);
+        2f64.powi(a.log2().floor() as i32 - 52)
+    }
+}
+
+/// The published vectors for one method, judged by one profile or tolerance.
+#[derive(Clone, Debug)]
+pub struct Suite {
+    sets: Vec<&'static str>,
+    method: Method,
+    profile: Profile,
+    tolerance: Option<Tolerance>,
+}
+
+impl Suite {
+    /// Every published set (`typical`, `edge`, `paper`), for corrected Euler under the
+    /// `reference` profile until [`Suite::method`] and [`Suite::profile`] say
+    /// otherwise.
+    pub fn published() -> Suite {
+        Suite {
+            sets: SETS.to_vec(),
+            method: Method::CorrectedEuler,
+            profile: Profile::Reference,
+            tolerance: None,
+        }
+    }
+
+    /// One published set only.
+    ///
+    /// # Panics
+    /// If `set` is not `typical`, `edge` or `paper`.
+    pub fn set(set: &str) -> Suite {
+        let k = SETS
+            .iter()
+            .position(|s| *s == set)
+            .unwrap_or_else(|| panic!("no published set '{set}' (there are {SETS:?})"));
+        Suite {
+            sets: vec![SETS[k]],
+            ..Suite::published()
+        }
+    }
+
+    /// The method your function implements.
+    pub fn method(mut self, method: Method) -> Suite {
+        self.method = method;
+        self
+    }
+
+    /// The arithmetic profile your implementation belongs to (`docs/float.md` §18):
+    /// its bounds judge the results.
+    pub fn profile(mut self, profile: Profile) -> Suite {
+        self.profile = profile;
+        self
+    }
+
+    /// A tolerance of your own instead of the profile's bound (`levels`, `abs`,
+    /// `ulps`).
+    pub fn tolerance(mut self, tolerance: Tolerance) -> Suite {
+        self.tolerance = Some(tolerance);
+        self
+    }
+
+    /// Runs `shade` on every case in `f32` and judges the values.
+    pub fn check_f32<F: FnMut(&Inputs<f32>) -> Vec<f32>>(&self, shade: F) -> Report {
+        self.run(shade)
+    }
+
+    /// Runs `shade` on every case in `f64` and judges the values.
+    pub fn check_f64<F: FnMut(&Inputs<f64>) -> Vec<f64>>(&self, shade: F) -> Report {
+        self.run(shade)
+    }
+
+    fn run<T: Format, F: FnMut(&Inputs<T>) -> Vec<T>>(&self, mut shade: F) -> Report {
+        let key = method_key(self.method);
+        let tol = self.tolerance.unwrap_or(Tolerance::Profile {
+            profile: self.profile,
+            u: T::U,
+        });
+        let mut report = Report {
+            method: self.method,
+            judged_by: match self.tolerance {
+                Some(t) => format!("tolerance {t:?}"),
+                None => format!("the {} profile's bound", self.profile),
+            },
+            format: T::NAME,
+            cases: 0,
+            failures: Vec::new(),
+        };
+        for set in &self.sets {
+            let file = published(set).expect("a published set");
+            let mut results = Results::new();
+            let mut wrong_length = Vec::new();
+            for c in &file.cases {
+                let v = |x: &[String; 3]| x.clone().map(|s| T::parse(&s).expect("float input"));
+                let inputs = Inputs {
+                    id: &c.id,
+                    comment: &c.comment,
+                    na: v(if T::NAME == "f32" {
+                        &c.na.f32
+                    } else {
+                        &c.na.f64
+                    }),
+                    nb: v(if T::NAME == "f32" {
+                        &c.nb.f32
+                    } else {
+                        &c.nb.f64
+                    }),
+                    l: v(if T::NAME == "f32" { &c.l.f32 } else { &c.l.f64 }),
+                    n: c.n,
+                };
+                let got: Vec<f64> = shade(&inputs).into_iter().map(T::to_f64).collect();
+                if got.len() != c.n as usize + 1 {
+                    wrong_length.push((c, got.len()));
+                }
+                results.insert(c.id.clone(), got);
+            }
+            let reports = check(file, &results, self.method, &key, tol, false)
+                .unwrap_or_else(|e| panic!("{e}"));
+            report.cases += reports.len();
+            for r in reports.iter().filter(|r| !r.pass) {
+                let c = file.cases.iter().find(|c| c.id == r.id).expect("case");
+                let length = wrong_length
+                    .iter()
+                    .find(|(w, _)| w.id == c.id)
+                    .map(|(_, len)| *len);
+                report
+                    .failures
+                    .push(Failure::new::<T>(set, c, r, &results[&c.id], &key, length));
+            }
+        }
+        report
+    }
+}
+
+/// One failing case, at its worst pixel.
+#[derive(Clone, Debug)]
+pub struct Failure {
+    /// The set.
+    pub set: &'static str,
+    /// The case id.
+    pub id: String,
+    /// What the failure says, in the lines the report prints.
+    pub lines: Vec<String>,
+}
+
+fn shown_inputs<T: Format>(what: &str, v: &[String; 3]) -> String {
+    let parsed: Vec<String> = v
+        .iter()
+        .map(|s| match T::parse(s) {
+            Some(x) => format!("{s} ({})", x.hex()),
+            None => s.clone(),
+        })
+        .collect();
+    format!("{what:<9} = ({})", parsed.join(", "))
+}
+
+impl Failure {
+    fn new<T: Format>(
+        set: &'static str,
+        c: &Case,
+        r: &CaseReport,
+        got: &[f64],
+        key: &str,
+        length: Option<usize>,
+    ) -> Failure {
+        let pick = |v: &crate::conformance::vectors::VectorInput| {
+            if T::NAME == "f32" {
+                v.f32.clone()
+            } else {
+                v.f64.clone()
+            }
+        };
+        let mut lines = vec![format!("{set}/{} (n = {}): {}", c.id, c.n, c.comment)];
+        lines.push(shown_inputs::<T>("N_a", &pick(&c.na)));
+        lines.push(shown_inputs::<T>("N_b", &pick(&c.nb)));
+        lines.push(shown_inputs::<T>("L", &pick(&c.l)));
+        if let Some(len) = length {
+            lines.push(format!(
+                "returned {len} values; the span has n + 1 = {} pixels",
+                c.n + 1
+            ));
+        } else {
+            let i = r.worst_pixel;
+            let exp = &c.expected[key];
+            let e: f64 = exp.values[i].parse().unwrap_or(f64::NAN);
+            let g = got[i];
+            let gl = if g.is_finite() {
+                level(&g).to_string()
+            } else {
+                "none".into()
+            };
+            lines.push(format!("pixel     = {i} (the worst of the case)"));
+            lines.push(format!(
+                "expected  = {} (level {})",
+                exp.values[i], exp.levels[i]
+            ));
+            let gt = T::from_f64(g);
+            lines.push(format!("got       = {gt} ({}) (level {gl})", gt.hex()));
+            if g.is_finite() {
+                lines.push(format!(
+                    "off by    = {:.3e} = {:.1} {} ulps, {} levels",
+                    (g - e).abs(),
+                    (g - e).abs() / T::ulp(e),
+                    T::NAME,
+                    level(&g).abs_diff(exp.levels[i])
+                ));
+            } else {
+                lines.push("off by    = not finite".into());
+            }
+        }
+        lines.push(format!("allowed   = {}", r.allowed));
+        lines.push(format!(
+            "reproduce = phong-approx span --method {key} --na={} --nb={} --light={} --steps {} --scalar exact",
+            c.na.exact.join(","),
+            c.nb.exact.join(","),
+            c.l.exact.join(","),
+            c.n
+        ));
+        Failure {
+            set,
+            id: c.id.clone(),
+            lines,
+        }
+    }
+}
+
+/// The verdict on every case: inspect it, or [`Report::assert_ok`] in a test.
+#[derive(Clone, Debug)]
+pub struct Report {
+    method: Method,
+    judged_by: String,
+    format: &'static str,
+    cases: usize,
+    failures: Vec<Failure>,
+}
+
+/// How many failures a report prints in full.
+const SHOWN_FAILURES: usize = 5;
+
+impl Report {
+    /// Whether every case passed.
+    pub fn is_ok(&self) -> bool {
+        self.failures.is_empty()
+    }
+
+    /// The failing cases.
+    pub fn failures(&self) -> &[Failure] {
+        &self.failures
+    }
+
+    /// The number of cases judged.
+    pub fn cases(&self) -> usize {
+        self.cases
+    }
+
+    /// Panics with the report when a case failed.
+    ///
+    /// # Panics
+    /// When [`Report::is_ok`] is false.
+    #[track_caller]
+    pub fn assert_ok(&self) {
+        if !self.is_ok() {
+            panic!("{self}");
+        }
+    }
+}
+
+impl fmt::Display for Report {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        writeln!(
+            f,
+            "{} in {} judged by {}: {} of {} cases fail",
+            self.method,
+            self.format,
+            self.judged_by,
+            self.failures.len(),
+            self.cases
+        )?;
+        for fl in self.failures.iter().take(SHOWN_FAILURES) {
+            writeln!(f)?;
+            for l in &fl.lines {
+                writeln!(f, "  {l}")?;
+            }
+        }
+        if self.failures.len() > SHOWN_FAILURES {
+            let rest: Vec<&str> = self.failures[SHOWN_FAILURES..]
+                .iter()
+                .map(|fl| fl.id.as_str())
+                .collect();
+            writeln!(f, "\n  and {} more: {}", rest.len(), rest.join(", "))?;
+        }
+        Ok(())
+    }
+}

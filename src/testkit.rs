@@ -453,3 +453,225 @@ impl fmt::Display for Report {
         Ok(())
     }
 }
+
+// ------------------------------------------------ beyond the published vectors
+
+/// The exact reference on a span of your own: the values (exact for the rational
+/// methods, to 2^-250 for the others, [`Method::exact_bits`]), as 30-digit decimals
+/// and their 8-bit levels (decided exactly, `None` only where a non-rational
+/// method's value is within its error of a level boundary).
+#[derive(Clone, Debug)]
+pub struct Oracle {
+    /// The values, pixel `0..=n`.
+    pub values: Vec<crate::BigRational>,
+    /// The values to 30 significant digits.
+    pub decimals: Vec<String>,
+    /// The levels `floor(255·clamp(v, 0, 1))`.
+    pub levels: Vec<Option<u8>>,
+}
+
+/// The exact values and levels of `method` on `span` (exact unit inputs:
+/// [`crate::reference::unit`] makes them). Cost: exact rationals, so about `n`
+/// times a few microseconds for the rational methods and a few hundred for the ones
+/// with square roots, `acos` or `cos` (`docs/conformance.md`, budgets): keep `n` in
+/// the hundreds in property tests.
+///
+/// ```
+/// use phong_approx::reference::unit::unit_from_ints;
+/// use phong_approx::testkit::oracle;
+/// use phong_approx::{Method, Span};
+/// let span = Span::new(unit_from_ints(0, 0, 1), unit_from_ints(1, 0, 3), unit_from_ints(0, 0, 1), 4).unwrap();
+/// let o = oracle(Method::Gouraud, &span).unwrap();
+/// assert_eq!(o.decimals[0], "1.00000000000000000000000000000");
+/// assert_eq!(o.levels[4], Some(204)); // p_b = 0.8
+/// ```
+///
+/// # Errors
+/// The method's [`crate::SpanError`] on this span (a normal that vanishes, say).
+pub fn oracle(
+    method: Method,
+    span: &crate::Span<crate::BigRational>,
+) -> Result<Oracle, crate::SpanError> {
+    use crate::Scalar;
+    let values = method.values(span)?;
+    let one = crate::BigRational::from_integer(1.into());
+    let levels = method.exact_levels(span, &values, &one);
+    let decimals = values.iter().map(|v| v.to_decimal(30)).collect();
+    Ok(Oracle {
+        values,
+        decimals,
+        levels,
+    })
+}
+
+/// The interval `[lo, hi]` every pixel of a correct implementation of `method` in
+/// the format `T` (`f32`, `f64`) and `profile` falls in, on `span`: the exact value
+/// plus and minus the profile's bound for the case (its Coq theorem or derivation,
+/// `docs/float.md` §18; the crate's derived bound for `Reference`), rounded outward.
+/// `None` where the profile has no bound for the method, format and span — as
+/// `check` then fails the case.
+///
+/// ```
+/// use phong_approx::reference::unit::unit_from_ints;
+/// use phong_approx::testkit::acceptance;
+/// use phong_approx::tolerance::profile::Profile;
+/// use phong_approx::{Method, Span};
+/// let span = Span::new(unit_from_ints(0, 0, 1), unit_from_ints(1, 0, 3), unit_from_ints(0, 0, 1), 4).unwrap();
+/// let iv = acceptance::<f32>(Method::CorrectedEuler, &span, Profile::Ieee).unwrap();
+/// let mine = 0.8f32; // pixel 4 of some implementation
+/// assert!(iv[4].0 <= f64::from(mine) && f64::from(mine) <= iv[4].1);
+/// ```
+pub fn acceptance<T: Format>(
+    method: Method,
+    span: &crate::Span<crate::BigRational>,
+    profile: Profile,
+) -> Option<Vec<(f64, f64)>> {
+    use crate::Scalar;
+    let shape = crate::tolerance::Shape::of(span);
+    let b = match profile {
+        Profile::Reference => crate::tolerance::span_bound(method, &shape, T::U),
+        p => crate::tolerance::profile::profile_bound(method, p, span.n, shape.q_min, T::U),
+    }?;
+    let values = method.values(span).ok()?;
+    Some(
+        values
+            .iter()
+            .map(|v| {
+                // The f64 of the exact value is within half an f64 ulp: widen by one.
+                let x = v.to_f64();
+                let slack = f64::EPSILON * x.abs().max(f64::MIN_POSITIVE);
+                let lo = (x - b) - slack - f64::EPSILON * (x - b).abs();
+                let hi = (x + b) + slack + f64::EPSILON * (x + b).abs();
+                (lo, hi)
+            })
+            .collect(),
+    )
+}
+
+/// Exact unit vectors and spans for property tests of your own code (feature
+/// `proptest`): `prop_compose!`-style strategies whose defaults stay fast (`n ≤ 64`
+/// unless asked).
+///
+/// ```
+/// # #[cfg(feature = "proptest")] {
+/// use phong_approx::testkit::{acceptance, strategy};
+/// use phong_approx::tolerance::profile::Profile;
+/// use phong_approx::Method;
+/// use proptest::prelude::*;
+/// proptest!(ProptestConfig::with_cases(16), |(span in strategy::mesh_span(1..=16))| {
+///     let iv = acceptance::<f32>(Method::Gouraud, &span, Profile::Ieee).unwrap();
+///     prop_assert_eq!(iv.len(), span.n as usize + 1);
+/// });
+/// # }
+/// ```
+#[cfg(feature = "proptest")]
+pub mod strategy {
+    use crate::reference::unit::unit_from_ints;
+    use crate::{BigRational, Span, Vec3};
+    use proptest::prelude::*;
+
+    /// An exact unit vector from integer stereographic parameters `(a, b)/d`.
+    pub fn unit_vector() -> impl Strategy<Value = Vec3<BigRational>> {
+        (-40i64..=40, -40i64..=40, 1i64..=24).prop_map(|(a, b, d)| unit_from_ints(a, b, d))
+    }
+
+    fn span(
+        na: Vec3<BigRational>,
+        nb: Vec3<BigRational>,
+        l: Vec3<BigRational>,
+        n: u32,
+    ) -> Option<Span<BigRational>> {
+        Span::new(na, nb, l, n).ok().filter(|s| !s.is_opposite())
+    }
+
+    /// A span as a mesh gives one: nearby edge normals (a few degrees apart), light
+    /// anywhere, `n` in `steps`.
+    pub fn mesh_span(
+        steps: std::ops::RangeInclusive<u32>,
+    ) -> impl Strategy<Value = Span<BigRational>> {
+        (
+            (-30i64..=30, -30i64..=30, 1i64..=20),
+            -3i64..=3,
+            -3i64..=3,
+            unit_vector(),
+            steps,
+        )
+            .prop_filter_map("a valid span", |((a, b, d), da, db, l, n)| {
+                let na = unit_from_ints(8 * a, 8 * b, 8 * d);
+                let nb = unit_from_ints(8 * a + da, 8 * b + db, 8 * d);
+                span(na, nb, l, n)
+            })
+    }
+
+    /// Edge normals nearly opposite (`q` nearly vanishes mid-span): `(0, 0, 1)` and
+    /// the reflection of a vector `1/m` from `(0, 0, −1)`, `m` from 8 to 4096.
+    pub fn nearly_opposite(
+        steps: std::ops::RangeInclusive<u32>,
+    ) -> impl Strategy<Value = Span<BigRational>> {
+        (3u32..=12, unit_vector(), steps).prop_filter_map("a valid span", |(k, l, n)| {
+            let m = 1i64 << k;
+            // (2m, 0, 1 − m²)/(1 + m²) with m large is near (0, 0, −1).
+            let nb = unit_from_ints(m, 0, 1);
+            span(unit_from_ints(0, 0, 1), nb, l, n)
+        })
+    }
+
+    /// Any span whose `n` is `2^k − 1`, `2^k` or `2^k + 1` (`k ≤ max_k`), where
+    /// slopes sit next to powers of two.
+    pub fn around_powers_of_two(max_k: u32) -> impl Strategy<Value = Span<BigRational>> {
+        (
+            unit_vector(),
+            unit_vector(),
+            unit_vector(),
+            1u32..=max_k.max(1),
+            -1i64..=1,
+        )
+            .prop_filter_map("a valid span", |(na, nb, l, k, d)| {
+                let n = ((1i64 << k) + d).max(1) as u32;
+                span(na, nb, l, n)
+            })
+    }
+
+    /// A mesh span with the light at a grazing angle to `N_a` (`N_a·L` below about
+    /// 0.05 in magnitude).
+    pub fn grazing_light(
+        steps: std::ops::RangeInclusive<u32>,
+    ) -> impl Strategy<Value = Span<BigRational>> {
+        mesh_span(steps).prop_filter("grazing light", |s| {
+            use crate::Scalar;
+            s.p_a.to_f64().abs() < 0.05
+        })
+    }
+}
+
+/// A random span for `quickcheck` (feature `quickcheck`): a mesh-like span of 1 to
+/// 32 steps with exact unit inputs, or nearly opposite normals.
+#[cfg(feature = "quickcheck")]
+#[derive(Clone, Debug)]
+pub struct ArbSpan(pub crate::Span<crate::BigRational>);
+
+#[cfg(feature = "quickcheck")]
+impl quickcheck::Arbitrary for ArbSpan {
+    fn arbitrary(g: &mut quickcheck::Gen) -> Self {
+        use crate::reference::unit::unit_from_ints;
+        let mut int = |lo: i64, hi: i64| lo + (u64::arbitrary(g) % (hi - lo + 1) as u64) as i64;
+        loop {
+            let (a, b, d) = (int(-30, 30), int(-30, 30), int(1, 20));
+            let (da, db) = (int(-3, 3), int(-3, 3));
+            let l = unit_from_ints(int(-40, 40), int(-40, 40), int(1, 24));
+            let n = int(1, 32) as u32;
+            let na = unit_from_ints(8 * a, 8 * b, 8 * d);
+            let nb = if int(0, 7) == 0 {
+                // (2m, 0, 1 − m²)/(1 + m²): near (0, 0, −1) for large m.
+                unit_from_ints(1i64 << int(3, 10), 0, 1)
+            } else {
+                unit_from_ints(8 * a + da, 8 * b + db, 8 * d)
+            };
+            if let Ok(s) = crate::Span::new(na, nb, l, n) {
+                if !s.is_opposite() {
+                    return ArbSpan(s);
+                }
+            }
+        }
+    }
+}

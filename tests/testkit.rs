@@ -90,3 +90,68 @@ fn wrong_lengths_and_non_finite_values_are_named() {
     assert_eq!(r.failures().len(), 40);
     assert!(r.to_string().contains("off by    = not finite"), "{r}");
 }
+
+/// The generators and the oracle (features `proptest` and `quickcheck`; CI runs them
+/// with `--all-features`).
+#[cfg(all(feature = "proptest", feature = "quickcheck"))]
+mod generators {
+    use super::{corrected_euler, Profile};
+    use phong_approx::testkit::{acceptance, oracle, strategy, ArbSpan};
+    use phong_approx::{BigRational, Scalar, Span};
+    use proptest::prelude::*;
+
+    fn floats(v: &phong_approx::Vec3<BigRational>) -> [f32; 3] {
+        [
+            v.x.to_f64() as f32,
+            v.y.to_f64() as f32,
+            v.z.to_f64() as f32,
+        ]
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(48))]
+
+        /// The five-line differential test the kit is for: an implementation's values in
+        /// the acceptance interval of its profile on spans of every kind.
+        #[test]
+        fn own_code_is_within_the_acceptance_interval(
+            span in prop_oneof![
+                strategy::mesh_span(1..=32),
+                strategy::nearly_opposite(1..=32),
+                strategy::around_powers_of_two(6),
+                strategy::grazing_light(1..=32),
+            ]
+        ) {
+            let got = corrected_euler(floats(&span.na), floats(&span.nb), floats(&span.l), span.n, 0.0);
+            let iv = acceptance::<f32>(phong_approx::Method::CorrectedEuler, &span, Profile::Ieee).unwrap();
+            for (i, (g, (lo, hi))) in got.iter().zip(&iv).enumerate() {
+                prop_assert!(*lo <= f64::from(*g) && f64::from(*g) <= *hi, "pixel {}", i);
+            }
+            // And the ε/(n+1) mutant leaves it somewhere on spans with a correction.
+            let bad = corrected_euler(floats(&span.na), floats(&span.nb), floats(&span.l), span.n, 1.0);
+            let eps = span.eps.to_f64().abs();
+            if eps > 1e-3 {
+                prop_assert!(bad.iter().zip(&iv).any(|(g, (lo, hi))| f64::from(*g) < *lo || f64::from(*g) > *hi));
+            }
+        }
+    }
+
+    /// The oracle agrees with the paper's identities on any span: corrected Euler ends
+    /// at `p_a` and `p_b` exactly (eq. 17), and every level is the level of its value.
+    #[test]
+    fn the_oracle_is_exact_where_the_paper_says() {
+        fn prop(s: ArbSpan) -> bool {
+            let span: Span<BigRational> = s.0;
+            let o = oracle(phong_approx::Method::CorrectedEuler, &span).unwrap();
+            o.values[0] == span.p_a
+                && o.values[span.n as usize] == span.p_b
+                && o.values
+                    .iter()
+                    .zip(&o.levels)
+                    .all(|(v, l)| *l == Some(phong_approx::reference::level::level_of_rational(v)))
+        }
+        quickcheck::QuickCheck::new()
+            .tests(64)
+            .quickcheck(prop as fn(ArbSpan) -> bool);
+    }
+}

@@ -231,6 +231,28 @@ impl Suite {
         self.run(shade)
     }
 
+    /// Runs `shade`, an implementation that outputs 8-bit levels (fixed point, a
+    /// hardware span unit), on every case with `f64` inputs (convert them to your
+    /// format), and compares its levels with the exact levels: within
+    /// [`Suite::tolerance`]`(Tolerance::Levels(k))`, one level if not set (no profile
+    /// bounds 8-bit outputs yet; `docs/float.md` §14 derives the fractional bits that
+    /// keep corrected Euler within half a level).
+    pub fn check_levels<F: FnMut(&Inputs<f64>) -> Vec<u8>>(&self, mut shade: F) -> Report {
+        let mut suite = self.clone();
+        if !matches!(suite.tolerance, Some(Tolerance::Levels(_))) {
+            suite.tolerance = Some(Tolerance::Levels(1));
+        }
+        // Each level ℓ as the middle of its interval, (ℓ + ½)/255, whose level is ℓ.
+        let mut r = suite.run::<f64, _>(|s| {
+            shade(s)
+                .into_iter()
+                .map(|l| (f64::from(l) + 0.5) / 255.0)
+                .collect()
+        });
+        r.format = "8-bit levels";
+        r
+    }
+
     fn run<T: Format, F: FnMut(&Inputs<T>) -> Vec<T>>(&self, mut shade: F) -> Report {
         let key = method_key(self.method);
         let tol = self.tolerance.unwrap_or(Tolerance::Profile {

@@ -77,6 +77,33 @@ fn a_wrong_implementation_fails_with_a_message_that_helps() {
 }
 
 #[test]
+fn eight_bit_implementations_are_judged_in_levels() {
+    // A span unit that shades in f64 and outputs floor(255·clamp(v)): within a level.
+    let levels = |s: &phong_approx::testkit::Inputs<f64>| -> Vec<u8> {
+        let na = s.na.map(|x| x as f32);
+        let nb = s.nb.map(|x| x as f32);
+        let l = s.l.map(|x| x as f32);
+        corrected_euler(na, nb, l, s.n, 0.0)
+            .into_iter()
+            .map(|v| (255.0 * v.clamp(0.0, 1.0)).floor() as u8)
+            .collect()
+    };
+    let r = Suite::published()
+        .method(Method::CorrectedEuler)
+        .check_levels(levels);
+    assert!(r.is_ok(), "{r}");
+    // Off by two levels everywhere: fails, named in levels.
+    let r = Suite::set("paper")
+        .method(Method::CorrectedEuler)
+        .check_levels(|s| levels(s).into_iter().map(|l| l.saturating_sub(2)).collect());
+    assert!(!r.is_ok());
+    assert!(
+        r.to_string().starts_with("corrected-euler in 8-bit levels"),
+        "{r}"
+    );
+}
+
+#[test]
 fn wrong_lengths_and_non_finite_values_are_named() {
     let r = Suite::set("paper")
         .method(Method::Gouraud)

@@ -661,3 +661,107 @@ fn check_profiles_judge_by_the_proved_bounds() {
     assert_eq!(code, 2);
     assert!(err.contains("unknown profile 'gpu'"), "{err}");
 }
+
+/// `check --report junit|json FILE`: JUnit XML that parses, one test case per vector
+/// case with a failure naming the pixel, expected, got and tolerance; JSON likewise;
+/// written by the output rules (a user's file is not replaced).
+#[test]
+fn check_reports_for_other_ci_systems() {
+    let file = committed("typical");
+    let good = own_results::<f32>(file, Method::CorrectedEuler, false);
+    // typical-007, pixel 3, two levels off.
+    let bad: String = good
+        .lines()
+        .map(|l| {
+            if l.starts_with("typical-007,3,") {
+                let v: f64 = l.rsplit(',').next().unwrap().parse().unwrap();
+                format!("typical-007,3,{}\n", v + 2.0 / 255.0)
+            } else {
+                format!("{l}\n")
+            }
+        })
+        .collect();
+    let p = tmp("report-bad.csv", &bad);
+    let dir =
+        std::env::temp_dir().join(format!("phong-approx-conf-{}-reports", std::process::id()));
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).unwrap();
+    let xml_path = dir.join("check.xml");
+    let (code, out, err) = run_check(
+        &typical_path(),
+        &p,
+        &["--report", "junit", xml_path.to_str().unwrap()],
+    );
+    assert_eq!(code, 1, "{out}{err}");
+    let text = std::fs::read_to_string(&xml_path).unwrap();
+    let doc = roxmltree::Document::parse(&text).expect("JUnit XML parses");
+    let suites = doc.root_element();
+    assert_eq!(suites.tag_name().name(), "testsuites");
+    assert_eq!(suites.attribute("tests"), Some("40"));
+    assert_eq!(suites.attribute("failures"), Some("1"));
+    let cases: Vec<_> = doc
+        .descendants()
+        .filter(|n| n.has_tag_name("testcase"))
+        .collect();
+    assert_eq!(cases.len(), 40);
+    let failed: Vec<_> = cases
+        .iter()
+        .filter(|c| c.children().any(|f| f.has_tag_name("failure")))
+        .collect();
+    assert_eq!(failed.len(), 1);
+    assert_eq!(failed[0].attribute("name"), Some("typical-007"));
+    let msg = failed[0]
+        .children()
+        .find(|f| f.has_tag_name("failure"))
+        .unwrap()
+        .attribute("message")
+        .unwrap();
+    assert!(msg.starts_with("pixel 3: expected "), "{msg}");
+    assert!(
+        msg.contains(", got ") && msg.contains(", allowed "),
+        "{msg}"
+    );
+    // JSON, beside it.
+    let json_path = dir.join("check.json");
+    let (code, _, _) = run_check(
+        &typical_path(),
+        &p,
+        &["--report", "json", json_path.to_str().unwrap()],
+    );
+    assert_eq!(code, 1);
+    let v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&json_path).unwrap()).unwrap();
+    assert_eq!(v["tests"], 40);
+    assert_eq!(v["failures"], 1);
+    let c = v["cases"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|c| c["id"] == "typical-007")
+        .unwrap();
+    assert_eq!(c["pass"], false);
+    assert_eq!(c["worst_pixel"], 3);
+    // A file of the user's is not replaced; the tool's own report is.
+    let mine = dir.join("mine.xml");
+    std::fs::write(&mine, "mine").unwrap();
+    let (code, _, err) = run_check(
+        &typical_path(),
+        &p,
+        &["--report", "junit", mine.to_str().unwrap()],
+    );
+    assert_eq!(code, 2, "{err}");
+    assert_eq!(std::fs::read_to_string(&mine).unwrap(), "mine");
+    let (code, _, _) = run_check(
+        &typical_path(),
+        &p,
+        &["--report", "junit", xml_path.to_str().unwrap()],
+    );
+    assert_eq!(code, 1);
+    let (code, _, err) = run_check(
+        &typical_path(),
+        &p,
+        &["--report", "xml", xml_path.to_str().unwrap()],
+    );
+    assert_eq!(code, 2);
+    assert!(err.contains("unknown report format 'xml'"), "{err}");
+}

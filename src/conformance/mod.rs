@@ -5,11 +5,13 @@
 //!   references (committed under `vectors/`, with a JSON Schema).
 //! - [`check`]: reading an implementation's results and comparing them, with
 //!   per-method default tolerances from [`crate::tolerance`].
+//! - [`report`]: the verdict as JUnit XML or JSON, for other languages' CI.
 //!
 //! How to use it from C or a shader harness: `docs/conformance.md`.
 
 pub mod check;
 pub mod integrity;
+pub mod report;
 pub mod vectors;
 
 /// The longest piece of untrusted text a message shows.

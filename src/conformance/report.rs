@@ -1,0 +1,181 @@
+//! Machine-readable reports of a check, for other languages' CI: JUnit XML (one test
+//! case per vector case) and JSON. Every text taken from a vector file or a results
+//! file goes through [`super::shown`] (cut and escaped) and then the format's own
+//! escaping.
+
+use super::check::{CaseReport, Results};
+use super::shown;
+use super::vectors::VectorFile;
+
+/// What a report says of one case: the verdict and, at the worst pixel, the expected
+/// and the submitted value.
+struct Row<'a> {
+    r: &'a CaseReport,
+    comment: String,
+    expected: Option<String>,
+    got: Option<f64>,
+}
+
+fn rows<'a>(
+    vectors: &VectorFile,
+    reports: &'a [CaseReport],
+    results: &Results,
+    key: &str,
+    specular: bool,
+) -> Vec<Row<'a>> {
+    reports
+        .iter()
+        .map(|r| {
+            let case = vectors.cases.iter().find(|c| c.id == r.id);
+            let exp = case.and_then(|c| {
+                if specular {
+                    c.specular.as_ref().and_then(|s| s.expected.get(key))
+                } else {
+                    c.expected.get(key)
+                }
+            });
+            Row {
+                r,
+                comment: case.map_or(String::new(), |c| shown(&c.comment)),
+                expected: exp
+                    .and_then(|e| e.values.get(r.worst_pixel))
+                    .map(|v| shown(v)),
+                got: results
+                    .get(&r.id)
+                    .and_then(|v| v.get(r.worst_pixel))
+                    .copied(),
+            }
+        })
+        .collect()
+}
+
+/// `x` escaped for XML text and attribute values.
+fn xml(x: &str) -> String {
+    let mut out = String::with_capacity(x.len());
+    for c in x.chars() {
+        match c {
+            '&' => out.push_str("&amp;"),
+            '<' => out.push_str("&lt;"),
+            '>' => out.push_str("&gt;"),
+            '"' => out.push_str("&quot;"),
+            '\'' => out.push_str("&apos;"),
+            // XML 1.0 allows no other control character, even escaped.
+            c if c.is_control() && !matches!(c, '\n' | '\t') => out.push('\u{fffd}'),
+            c => out.push(c),
+        }
+    }
+    out
+}
+
+fn got_text(g: Option<f64>) -> String {
+    match g {
+        Some(g) if g.is_finite() => format!("{g:e}"),
+        Some(_) => "not finite".to_string(),
+        None => "missing".to_string(),
+    }
+}
+
+/// The failure line of a case: where, expected, got, allowed.
+fn why(row: &Row) -> String {
+    format!(
+        "pixel {}: expected {}, got {}, max |Δ| {}, allowed {}",
+        row.r.worst_pixel,
+        row.expected.as_deref().unwrap_or("?"),
+        got_text(row.got),
+        if row.r.not_finite.is_some() {
+            "not finite".to_string()
+        } else {
+            format!("{:.3e}", row.r.max_abs)
+        },
+        row.r.allowed
+    )
+}
+
+/// A JUnit XML report: one `<testsuite>` named `suite` (set, method, profile), one
+/// `<testcase>` per vector case, a `<failure>` with the worst pixel for each failing
+/// one.
+pub fn junit(
+    suite: &str,
+    vectors: &VectorFile,
+    reports: &[CaseReport],
+    results: &Results,
+    key: &str,
+    specular: bool,
+) -> String {
+    let rows = rows(vectors, reports, results, key, specular);
+    let failures = rows.iter().filter(|r| !r.r.pass).count();
+    let mut s = String::from("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
+    s += &format!(
+        "<testsuites name=\"phong-approx check\" tests=\"{}\" failures=\"{failures}\">\n",
+        rows.len()
+    );
+    s += &format!(
+        "  <testsuite name=\"{}\" tests=\"{}\" failures=\"{failures}\" errors=\"0\" skipped=\"0\">\n",
+        xml(&shown(suite)),
+        rows.len()
+    );
+    for row in &rows {
+        s += &format!(
+            "    <testcase classname=\"{}\" name=\"{}\" time=\"0\"",
+            xml(&format!("{}.{}", shown(&vectors.set), key)),
+            xml(&shown(&row.r.id))
+        );
+        if row.r.pass {
+            s += "/>\n";
+        } else {
+            s += &format!(
+                ">\n      <failure message=\"{}\" type=\"out of tolerance\">{}</failure>\n    </testcase>\n",
+                xml(&why(row)),
+                xml(&format!("{}: {} pixels, max Δlevel {}", row.comment, row.r.pixels, row.r.max_levels))
+            );
+        }
+    }
+    s += "  </testsuite>\n</testsuites>\n";
+    s
+}
+
+/// A JSON report: the suite, counts, and per case the verdict and the worst pixel.
+pub fn json(
+    suite: &str,
+    vectors: &VectorFile,
+    reports: &[CaseReport],
+    results: &Results,
+    key: &str,
+    specular: bool,
+) -> String {
+    let rows = rows(vectors, reports, results, key, specular);
+    let num = |x: f64| {
+        if x.is_finite() {
+            serde_json::json!(x)
+        } else {
+            serde_json::Value::Null
+        }
+    };
+    let cases: Vec<serde_json::Value> = rows
+        .iter()
+        .map(|row| {
+            serde_json::json!({
+                "id": shown(&row.r.id),
+                "pass": row.r.pass,
+                "pixels": row.r.pixels,
+                "worst_pixel": row.r.worst_pixel,
+                "expected": row.expected,
+                "got": row.got.map(num),
+                "not_finite_pixel": row.r.not_finite,
+                "max_abs": if row.r.not_finite.is_some() { serde_json::Value::Null } else { num(row.r.max_abs) },
+                "max_levels": row.r.max_levels,
+                "allowed": row.r.allowed,
+            })
+        })
+        .collect();
+    let failed = rows.iter().filter(|r| !r.r.pass).count();
+    let v = serde_json::json!({
+        "suite": shown(suite),
+        "set": shown(&vectors.set),
+        "method": key,
+        "tests": rows.len(),
+        "failures": failed,
+        "cases": cases,
+    });
+    serde_json::to_string_pretty(&v).expect("a JSON value") + "\n"
+}

@@ -63,12 +63,24 @@ const EMBEDDED: [(&str, &str); 3] = [
     ("paper", include_str!("../vectors/paper.json")),
 ];
 
-/// A published set, parsed once and verified against its digest.
+/// A published set (`typical`, `edge`, `paper`), parsed once and verified against its
+/// SHA-256 digest; `None` for another name. Its cases carry their inputs in exact
+/// (`case.na.exact`), `f32` and `f64` form, and
+/// [`crate::conformance::integrity::case_span`] makes a case's exact span for
+/// [`oracle`] and [`acceptance`].
+///
+/// ```
+/// let typical = phong_approx::testkit::published("typical").unwrap();
+/// let c = &typical.cases[0];
+/// assert_eq!(c.na.exact.len(), 3);
+/// let span = phong_approx::conformance::integrity::case_span(c).unwrap();
+/// assert_eq!(span.n, c.n);
+/// ```
 ///
 /// # Panics
 /// If the embedded text is not the published set (the crate's own files changed
 /// without their digests: a packaging error, caught by this crate's tests).
-fn published(set: &str) -> Option<&'static VectorFile> {
+pub fn published(set: &str) -> Option<&'static VectorFile> {
     static FILES: [OnceLock<VectorFile>; 3] = [OnceLock::new(), OnceLock::new(), OnceLock::new()];
     let k = EMBEDDED.iter().position(|(name, _)| *name == set)?;
     Some(FILES[k].get_or_init(|| {
@@ -668,6 +680,18 @@ pub mod strategy {
 
 /// A random span for `quickcheck` (feature `quickcheck`): a mesh-like span of 1 to
 /// 32 steps with exact unit inputs, or nearly opposite normals.
+///
+/// ```
+/// # #[cfg(feature = "quickcheck")] {
+/// use phong_approx::testkit::{oracle, ArbSpan};
+/// use phong_approx::Method;
+/// fn ends_exact(s: ArbSpan) -> bool {
+///     let o = oracle(Method::CorrectedEuler, &s.0).unwrap();
+///     o.values[0] == s.0.p_a && o.values[s.0.n as usize] == s.0.p_b
+/// }
+/// quickcheck::QuickCheck::new().tests(8).quickcheck(ends_exact as fn(ArbSpan) -> bool);
+/// # }
+/// ```
 #[cfg(feature = "quickcheck")]
 #[derive(Clone, Debug)]
 pub struct ArbSpan(pub crate::Span<crate::BigRational>);

@@ -378,6 +378,20 @@ fn run_check(vectors: &str, results: &Path, extra: &[&str]) -> (i32, String, Str
     )
 }
 
+/// Results CSV `good` with the value of typical-007's pixel 3 moved by two levels.
+fn two_levels_off_at_typical_007_pixel_3(good: &str) -> String {
+    good.lines()
+        .map(|l| {
+            if l.starts_with("typical-007,3,") {
+                let v: f64 = l.rsplit(',').next().unwrap().parse().unwrap();
+                format!("typical-007,3,{}\n", v + 2.0 / 255.0)
+            } else {
+                format!("{l}\n")
+            }
+        })
+        .collect()
+}
+
 fn typical_path() -> String {
     root().join("vectors/typical.json").display().to_string()
 }
@@ -391,17 +405,7 @@ fn check_cli_passes_own_results_and_fails_a_perturbed_one() {
     assert_eq!(code, 0, "{out}{err}");
     assert!(out.contains("overall:"), "{out}");
     // Perturb one value of typical-007 by two levels.
-    let bad: String = good
-        .lines()
-        .map(|l| {
-            if l.starts_with("typical-007,3,") {
-                let v: f64 = l.rsplit(',').next().unwrap().parse().unwrap();
-                format!("typical-007,3,{}\n", v + 2.0 / 255.0)
-            } else {
-                format!("{l}\n")
-            }
-        })
-        .collect();
+    let bad = two_levels_off_at_typical_007_pixel_3(&good);
     let p = tmp("bad.csv", &bad);
     let (code, out, err) = run_check(&typical_path(), &p, &[]);
     assert_eq!(code, 1, "{out}{err}");
@@ -670,17 +674,7 @@ fn check_reports_for_other_ci_systems() {
     let file = committed("typical");
     let good = own_results::<f32>(file, Method::CorrectedEuler, false);
     // typical-007, pixel 3, two levels off.
-    let bad: String = good
-        .lines()
-        .map(|l| {
-            if l.starts_with("typical-007,3,") {
-                let v: f64 = l.rsplit(',').next().unwrap().parse().unwrap();
-                format!("typical-007,3,{}\n", v + 2.0 / 255.0)
-            } else {
-                format!("{l}\n")
-            }
-        })
-        .collect();
+    let bad = two_levels_off_at_typical_007_pixel_3(&good);
     let p = tmp("report-bad.csv", &bad);
     let dir =
         std::env::temp_dir().join(format!("phong-approx-conf-{}-reports", std::process::id()));

@@ -189,6 +189,21 @@ impl Normalized {
     }
 }
 
+/// The largest `ℓ ∈ 0..=255` with `fits(ℓ)`, for a `fits` that holds at 0 and, once
+/// false, stays false (a binary search).
+fn largest_level(fits: impl Fn(u32) -> bool) -> u8 {
+    let (mut lo, mut hi) = (0u32, 255u32);
+    while lo < hi {
+        let mid = (lo + hi).div_ceil(2);
+        if fits(mid) {
+            lo = mid;
+        } else {
+            hi = mid - 1;
+        }
+    }
+    lo as u8
+}
+
 /// The largest level `ℓ ∈ 0..=255` with `ℓ ≤ 255·kd·v`, i.e. `floor(255·clamp(kd·v, 0, 1))`.
 fn level_of(v: &Radical, kd: &BigRational, r: &[BigRational]) -> u8 {
     let w = v.scale(&(kd * BigRational::from_integer(255.into())));
@@ -200,16 +215,7 @@ fn level_of(v: &Radical, kd: &BigRational, r: &[BigRational]) -> u8 {
         .sign(r)
             != Ordering::Less
     };
-    let (mut lo, mut hi) = (0u32, 255u32);
-    while lo < hi {
-        let mid = (lo + hi).div_ceil(2);
-        if fits(mid) {
-            lo = mid;
-        } else {
-            hi = mid - 1;
-        }
-    }
-    lo as u8
+    largest_level(fits)
 }
 
 /// The level of `kd·p/√q` (`q > 0`): `ℓ ≤ 255·kd·p/√q` iff `ℓ = 0` or `p > 0` and
@@ -227,16 +233,7 @@ fn phong_level_of(p: &Radical, q: &Radical, kd: &BigRational, r: &[BigRational])
         let l2 = BigRational::from_integer((l * l).into());
         p2.sub(&q.scale(&l2)).sign(r) != Ordering::Less
     };
-    let (mut lo, mut hi) = (0u32, 255u32);
-    while lo < hi {
-        let mid = (lo + hi).div_ceil(2);
-        if fits(mid) {
-            lo = mid;
-        } else {
-            hi = mid - 1;
-        }
-    }
-    Some(lo as u8)
+    Some(largest_level(fits))
 }
 
 /// Which exact value a method has on a span, for [`normalized_levels`].

@@ -759,3 +759,129 @@ fn check_reports_for_other_ci_systems() {
     assert_eq!(code, 2);
     assert!(err.contains("unknown report format 'xml'"), "{err}");
 }
+
+/// A hardware span unit in `Q m.f`: the set-up computed exactly (from the case's
+/// exact inputs) and rounded once to `f` fractional bits, then the loop in integer
+/// additions; the values as `f64` (exact for `f ≤ 52`). `eps_over` is `n` (right) or
+/// `n + 1` (the ε/(n+1) mutant).
+fn fixed_point_unit(
+    c: &phong_approx::conformance::vectors::Case,
+    frac_bits: u32,
+    mutant: bool,
+) -> Vec<f64> {
+    use num_traits::{One, Signed};
+    let span = phong_approx::conformance::integrity::case_span(c).unwrap();
+    let scale = phong_approx::BigRational::from_integer(num_bigint::BigInt::one() << frac_bits);
+    let round = |x: &phong_approx::BigRational| -> i128 {
+        let y = x * &scale;
+        let r = (y.abs() + phong_approx::BigRational::new(1.into(), 2.into())).floor();
+        let v: i128 = r.to_integer().try_into().unwrap();
+        if y.is_negative() {
+            -v
+        } else {
+            v
+        }
+    };
+    let t0 = if mutant {
+        span.di_a.clone()
+            - span.eps.clone() / phong_approx::BigRational::from_integer((c.n + 1).into())
+    } else {
+        span.t0.clone()
+    };
+    let (mut p, mut t, ds) = (round(&span.p_a), round(&t0), round(&span.ds));
+    let unit = (frac_bits as f64).exp2();
+    let mut out = vec![p as f64 / unit];
+    for _ in 0..c.n {
+        p += t;
+        t += ds;
+        out.push(p as f64 / unit);
+    }
+    out
+}
+
+/// `check --profile fixed:M.F` (proofs/Fixed.v): a span unit in Q16.16 passes every
+/// published set; the same unit with ε/(n+1) fails; registers too narrow for the
+/// slope of a one-step span are refused with a reason.
+#[test]
+fn check_profile_fixed_judges_a_span_unit() {
+    use phong_approx::conformance::check::Results;
+    use phong_approx::tolerance::profile::Profile;
+    let q = |m, f| Tolerance::Profile {
+        profile: Profile::Fixed {
+            int_bits: m,
+            frac_bits: f,
+        },
+        u: 0.0,
+    };
+    for set in SETS {
+        let file = committed(set);
+        for (mutant, want_pass) in [(false, true), (true, false)] {
+            let results: Results = file
+                .cases
+                .iter()
+                .map(|c| (c.id.clone(), fixed_point_unit(c, 16, mutant)))
+                .collect();
+            let reports = check(
+                file,
+                &results,
+                Method::CorrectedEuler,
+                "corrected-euler",
+                q(16, 16),
+                false,
+            )
+            .unwrap();
+            let failed = reports.iter().filter(|r| !r.pass).count();
+            if want_pass {
+                assert_eq!(failed, 0, "{set}: {:?}", reports.iter().find(|r| !r.pass));
+            } else if set != "edge" {
+                // The edge set's long spans allow more than the mutant moves; its
+                // short ones and the other sets catch it.
+                assert!(failed > 0, "{set}: the ε/(n+1) unit passed");
+            }
+        }
+    }
+    // Q3.16 cannot hold corrected Euler's slope on a one-step span (|t| up to 28).
+    let edge = committed("edge");
+    let results: Results = edge
+        .cases
+        .iter()
+        .map(|c| (c.id.clone(), fixed_point_unit(c, 16, false)))
+        .collect();
+    let reports = check(
+        edge,
+        &results,
+        Method::CorrectedEuler,
+        "corrected-euler",
+        q(3, 16),
+        false,
+    )
+    .unwrap();
+    let one_step = edge.cases.iter().find(|c| c.n == 1).expect("an n = 1 case");
+    let r = reports.iter().find(|r| r.id == one_step.id).unwrap();
+    assert!(
+        !r.pass && r.allowed.starts_with("no fixed:3.16 bound"),
+        "{}",
+        r.allowed
+    );
+    // The command line takes the profile and names it.
+    let path = typical_path();
+    let csv: String = std::iter::once("case,pixel,value\n".to_string())
+        .chain(committed("typical").cases.iter().flat_map(|c| {
+            fixed_point_unit(c, 16, false)
+                .into_iter()
+                .enumerate()
+                .map(|(i, v)| format!("{},{i},{v:e}\n", c.id))
+                .collect::<Vec<_>>()
+        }))
+        .collect();
+    let p = tmp("fixed.csv", &csv);
+    let (code, out, err) = run_check(&path, &p, &["--profile", "fixed:16.16"]);
+    assert_eq!(code, 0, "{out}{err}");
+    assert!(
+        out.contains("tolerance: the fixed:16.16 profile's bound (proofs/Fixed.v"),
+        "{out}"
+    );
+    let (code, _, err) = run_check(&path, &p, &["--profile", "fixed:16"]);
+    assert_eq!(code, 2);
+    assert!(err.contains("is not fixed:M.F"), "{err}");
+}

@@ -37,8 +37,11 @@ pub struct CheckArgs {
     /// The arithmetic profile the results are judged by (docs/float.md §18):
     /// reference (this crate's operation order, round to nearest, no FMA: the bounds
     /// of every method), ieee (any order, FMA, reciprocals; proved for Gouraud and
-    /// corrected Euler) or shader (Vulkan/WGSL 32-bit rules: truncation, 2.5-ulp
-    /// division, flushed denormals; proved for Gouraud and corrected Euler in f32).
+    /// corrected Euler; derived for Phong), shader (Vulkan/WGSL 32-bit rules:
+    /// truncation, 2.5-ulp division, flushed denormals; proved for Gouraud and
+    /// corrected Euler in f32) or fixed:M.F (a set-up rounded once to F fractional
+    /// bits, an exact integer loop in M-bit registers; proved for Gouraud and
+    /// corrected Euler).
     #[arg(long, value_name = "NAME", default_value = "reference")]
     pub profile: String,
     /// Check the specular expectations (max(0, method(N·H))^s) instead of diffuse.
@@ -163,10 +166,15 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
     }
     print_report(&vectors, &reports, &key, a.specular)?;
     if a.tolerance.is_none() {
-        outln!(
-            "tolerance: the {profile} profile's bound for {} (docs/float.md §18)",
-            a.precision
-        )?;
+        match profile {
+            Profile::Fixed { .. } => outln!(
+                "tolerance: the {profile} profile's bound (proofs/Fixed.v, docs/float.md §14)"
+            )?,
+            _ => outln!(
+                "tolerance: the {profile} profile's bound for {} (docs/float.md §18)",
+                a.precision
+            )?,
+        }
     }
     let failed: Vec<&CaseReport> = reports.iter().filter(|r| !r.pass).collect();
     if failed.is_empty() {

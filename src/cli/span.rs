@@ -427,7 +427,7 @@ fn error_bounds(r: &Request, u: f64) -> Value {
                     profile_bound(r.method, p, r.n, shape.q_min, u)
                 }),
         };
-        m.insert(p.name().to_string(), shown(b));
+        m.insert(p.name(), shown(b));
     }
     Value::Object(m)
 }

@@ -37,25 +37,41 @@ pub enum Profile {
     /// any direction (nearest or toward zero), division within 2.5 ulp, denormal
     /// inputs and results flushed to zero, reassociation and fusion as in `Ieee`.
     Shader,
+    /// Fixed point `Qm.f` as a hardware span unit runs it (`fixed:m.f`): the set-up
+    /// (`p_a`, `t_0`, `ds`, or Gouraud's `dp`) computed exactly or far more precisely
+    /// and rounded once to `f` fractional bits, then the loop in integer additions,
+    /// exact, in registers of `m` integer bits (the sign included) that must not
+    /// overflow (`docs/float.md` §14, `proofs/Fixed.v`).
+    Fixed {
+        /// Integer bits `m`, the sign included.
+        int_bits: u32,
+        /// Fractional bits `f`.
+        frac_bits: u32,
+    },
 }
 
 impl Profile {
-    /// Every profile, in the order of the docs.
+    /// The float profiles, in the order of the docs (fixed point takes its format
+    /// as parameters: [`Profile::Fixed`]).
     pub const ALL: [Profile; 3] = [Profile::Reference, Profile::Ieee, Profile::Shader];
 
-    /// The profile's name as `--profile` takes it.
-    pub fn name(self) -> &'static str {
+    /// The profile's name as `--profile` takes it (`fixed:16.16` for `Q16.16`).
+    pub fn name(self) -> String {
         match self {
-            Profile::Reference => "reference",
-            Profile::Ieee => "ieee",
-            Profile::Shader => "shader",
+            Profile::Reference => "reference".into(),
+            Profile::Ieee => "ieee".into(),
+            Profile::Shader => "shader".into(),
+            Profile::Fixed {
+                int_bits,
+                frac_bits,
+            } => format!("fixed:{int_bits}.{frac_bits}"),
         }
     }
 }
 
 impl fmt::Display for Profile {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.name())
+        f.write_str(&self.name())
     }
 }
 
@@ -63,16 +79,57 @@ impl FromStr for Profile {
     type Err = String;
 
     fn from_str(s: &str) -> Result<Self, String> {
+        if let Some(q) = s.strip_prefix("fixed:") {
+            let bits = q
+                .split_once('.')
+                .and_then(|(m, f)| Some((m.parse::<u32>().ok()?, f.parse::<u32>().ok()?)))
+                .filter(|&(m, f)| (1..=64).contains(&m) && (1..=62).contains(&f) && m + f <= 128);
+            return match bits {
+                Some((int_bits, frac_bits)) => Ok(Profile::Fixed {
+                    int_bits,
+                    frac_bits,
+                }),
+                None => Err(format!(
+                    "'{}' is not fixed:M.F with 1 ≤ M ≤ 64 integer bits and 1 ≤ F ≤ 62 fractional bits (e.g. fixed:16.16)",
+                    crate::conformance::shown(s)
+                )),
+            };
+        }
         Profile::ALL
             .into_iter()
             .find(|p| p.name() == s)
             .ok_or_else(|| {
                 format!(
-                    "unknown profile '{}' (expected reference, ieee or shader)",
+                    "unknown profile '{}' (expected reference, ieee, shader or fixed:M.F)",
                     crate::conformance::shown(s)
                 )
             })
     }
+}
+
+/// The bound of `method` (Gouraud or corrected Euler) computed in fixed point
+/// `Q int_bits.frac_bits` on a span of `n` steps (`proofs/Fixed.v`: with every set-up
+/// value rounded once, `|e| ≤ h = 2^-(f+1)`, pixel `i` is off by at most
+/// `h(1 + i + i(i−1)/2)` for corrected Euler and `h(1 + i)` for Gouraud, largest at
+/// `i = n`), or `None` for another method, or when the registers may overflow: the
+/// values reach `|p_i| ≤ 2.5` for corrected Euler (1 for Gouraud) plus the bound, and
+/// the slope `|t_i| ≤ 28/n` (`|dp| ≤ 2/n`) plus `h(1 + n)`, and `m` integer bits hold
+/// magnitudes below `2^(m−1)` (`docs/float.md` §14).
+pub fn fixed_bound(method: crate::Method, n: u32, int_bits: u32, frac_bits: u32) -> Option<f64> {
+    use crate::Method;
+    if n == 0 {
+        return None;
+    }
+    let h = 2f64.powi(-(frac_bits as i32) - 1);
+    let nf = f64::from(n);
+    let (bound, p_max, t_max) = match method {
+        Method::CorrectedEuler => (h * (1.0 + nf + nf * (nf - 1.0) / 2.0), 2.5, 28.0 / nf),
+        Method::Gouraud => (h * (1.0 + nf), 1.0, 2.0 / nf),
+        _ => return None,
+    };
+    let needed = (p_max + bound).max(t_max + h * (1.0 + nf));
+    // The f64 arithmetic above rounds: a relative 2^-40 covers it.
+    (needed < 2f64.powi(int_bits as i32 - 1)).then_some(bound * (1.0 + 2f64.powi(-40)))
 }
 
 /// A bound `(α·n + β)·u` proved for a class of implementations, with the largest `n`
@@ -233,6 +290,15 @@ pub enum Status {
 /// Whether and how `method` has a bound under `profile` in the format of unit
 /// roundoff `u` (`None`: no bound, a case then fails naming that).
 pub fn status(method: crate::Method, profile: Profile, u: f64) -> Option<Status> {
+    if let Profile::Fixed { .. } = profile {
+        return match method {
+            crate::Method::CorrectedEuler => {
+                Some(Status::Proved("fixed_point_corrected_euler_error"))
+            }
+            crate::Method::Gouraud => Some(Status::Proved("fixed_point_gouraud_error")),
+            _ => None,
+        };
+    }
     if let Some(forms) = proved(method, profile, u) {
         return Some(Status::Proved(forms[0].theorem));
     }
@@ -255,6 +321,13 @@ pub fn profile_bound(
     q_min: f64,
     u: f64,
 ) -> Option<f64> {
+    if let Profile::Fixed {
+        int_bits,
+        frac_bits,
+    } = profile
+    {
+        return fixed_bound(method, n, int_bits, frac_bits);
+    }
     match status(method, profile, u)? {
         Status::Proved(_) => proved_bound(method, profile, n, u),
         Status::Derived(_) => match method {
@@ -275,6 +348,36 @@ mod tests {
             assert_eq!(p.name().parse::<Profile>(), Ok(p));
         }
         assert!("gpu".parse::<Profile>().is_err());
+        let q = Profile::Fixed {
+            int_bits: 16,
+            frac_bits: 16,
+        };
+        assert_eq!("fixed:16.16".parse::<Profile>(), Ok(q));
+        assert_eq!(q.to_string(), "fixed:16.16");
+        for bad in [
+            "fixed:16",
+            "fixed:0.16",
+            "fixed:16.0",
+            "fixed:a.b",
+            "fixed:16.63",
+        ] {
+            assert!(bad.parse::<Profile>().is_err(), "{bad}");
+        }
+    }
+
+    #[test]
+    fn fixed_bounds_are_the_theorems_and_need_their_registers() {
+        // h(1 + n + n(n−1)/2), h = 2^-17: at n = 4, 11·2^-17.
+        let b = fixed_bound(Method::CorrectedEuler, 4, 16, 16).unwrap();
+        assert!((b / 2f64.powi(-17) - 11.0).abs() < 1e-9);
+        let g = fixed_bound(Method::Gouraud, 4, 16, 16).unwrap();
+        assert!((g / 2f64.powi(-17) - 5.0).abs() < 1e-9);
+        // Q3.f holds corrected Euler's values (|p| ≤ 2.5 < 4) but not its slope at
+        // n = 1 (|t| ≤ 28); from n = 12 the slope is below 2.5 too.
+        assert!(fixed_bound(Method::CorrectedEuler, 1, 3, 16).is_none());
+        assert!(fixed_bound(Method::CorrectedEuler, 1, 6, 16).is_some());
+        assert!(fixed_bound(Method::CorrectedEuler, 12, 3, 16).is_some());
+        assert!(fixed_bound(Method::Phong, 4, 16, 16).is_none());
     }
 
     #[test]

@@ -610,7 +610,8 @@ fn run_exact(r: &Request) -> Result<Outcome, CliError> {
     loop {
         let attempt = with_bits(b, || -> Result<Result<Outcome, (Short, i64)>, CliError> {
             let (span, values, decision) = compute::<BigRational>(r)?;
-            if let Some(bits) = exact_bits(r, &span) {
+            let known = exact_bits(r, &span);
+            if let Some(bits) = known {
                 if let Err(short) = check_digits(r, &values, bits) {
                     return Ok(Err((short, bits)));
                 }
@@ -620,7 +621,7 @@ fn run_exact(r: &Request) -> Result<Outcome, CliError> {
             // does not decide it.
             let one = BigRational::from_integer(1.into());
             let levels = Some(if r.normalize {
-                normalized_levels(r, &values, exact_bits(r, &span).unwrap_or(0))
+                normalized_levels(r, &values, known.unwrap_or(0))
             } else {
                 r.method.exact_levels(&span, &values, &one)
             });

@@ -6,7 +6,7 @@
 //! always refuses one that breaks an invariant of [`validate`]: so a truncated,
 //! edited or hostile file can neither make garbage pass nor exhaust memory.
 
-use super::vectors::{method_key, Case, Expected, VectorFile, METHODS};
+use super::vectors::{exact_input, method_key, Case, Expected, VectorFile, METHODS};
 use crate::parse::parse_rational;
 use crate::quantize::level;
 use crate::scalar::Scalar;
@@ -120,16 +120,6 @@ pub fn published_set(digest: &str) -> Option<&'static str> {
         .map(|(s, _)| *s)
 }
 
-/// An exact input vector of a case.
-fn exact_vector(v: &super::vectors::VectorInput) -> Option<Vec3<BigRational>> {
-    let [x, y, z] = &v.exact;
-    Some(Vec3::new(
-        parse_rational(x).ok()?,
-        parse_rational(y).ok()?,
-        parse_rational(z).ok()?,
-    ))
-}
-
 /// The exact span of a case, after checking `n` and the inputs.
 ///
 /// # Errors
@@ -143,7 +133,7 @@ pub fn case_span(c: &Case) -> Result<Span<BigRational>, String> {
         ));
     }
     let v = |x, what: &str| {
-        exact_vector(x).ok_or_else(|| format!("case {id}: {what} is not three exact numbers"))
+        exact_input(x).ok_or_else(|| format!("case {id}: {what} is not three exact numbers"))
     };
     Span::new(v(&c.na, "na")?, v(&c.nb, "nb")?, v(&c.l, "l")?, c.n)
         .map_err(|e| format!("case {id}: {e}"))
@@ -267,7 +257,7 @@ pub fn validate(file: &VectorFile) -> Result<(), String> {
             check_expected(&c.id, m, c.n, e, Some(value_range(m, &span)))?;
         }
         if let Some(sp) = &c.specular {
-            let h = exact_vector(&sp.h)
+            let h = exact_input(&sp.h)
                 .ok_or_else(|| format!("case {}: h is not three exact numbers", c.id))?;
             Span::new(span.na.clone(), span.nb.clone(), h, c.n)
                 .map_err(|e| format!("case {}: specular: {e}", c.id))?;

@@ -208,21 +208,8 @@ impl CaseSpec {
             n,
             h,
         } = self;
-        compute_case(id, comment, na, nb, l, n, h)
+        compute_case_for(&METHODS, id, comment, na, nb, l, n, h)
     }
-}
-
-/// A case from exact unit inputs, with the expectations of every method.
-fn compute_case(
-    id: String,
-    comment: &str,
-    na: Vec3<BigRational>,
-    nb: Vec3<BigRational>,
-    l: Vec3<BigRational>,
-    n: u32,
-    h: Option<(Vec3<BigRational>, u32)>,
-) -> Result<Case, String> {
-    compute_case_for(&METHODS, id, comment, na, nb, l, n, h)
 }
 
 /// A case from exact unit inputs, with the expectations of `methods`.

@@ -1,8 +1,9 @@
 //! The catalogue of span methods: one list, and per method everything the rest of the
 //! crate needs to know — its name (which parses back), source, equations, what it asks
-//! of the scalar, whether its value is Phong's `p/√q`, its float error bound, and how
-//! to run it. The CLI (`span`, `check`), the conformance vectors, the tolerances and
-//! the torus harness all read it from here.
+//! of the scalar, whether its value is Phong's `p/√q`, and how to run it. The CLI (`span`,
+//! `check`), the conformance vectors and the torus harness read it from here; the
+//! float error bounds are a table of their own, keyed by method
+//! ([`crate::tolerance::reference_bound`], [`crate::tolerance::profile::status`]).
 //!
 //! Adding a span method: its own file with `shade(span, out)`, then one entry here — a
 //! variant, its arm in [`Method::info`] and in [`Method::run`], and its place in
@@ -15,7 +16,6 @@ use crate::reference::level::{level_of_rational, level_within, phong_level_exact
 use crate::related::{binary, bishop_weimer, spherical};
 use crate::scalar::{Real, Scalar};
 use crate::span::Span;
-use crate::tolerance::{self, BoundFn};
 use crate::BigRational;
 use num_traits::One;
 use std::borrow::Cow;
@@ -85,8 +85,6 @@ pub struct Info {
     /// Whether part of the method is a reconstruction from an incomplete description
     /// (`docs/comparison.md`).
     pub reconstructed: bool,
-    /// Its float error bound ([`crate::tolerance`], derived in `docs/float.md`).
-    pub bound: BoundFn,
 }
 
 impl fmt::Debug for Info {
@@ -190,7 +188,8 @@ impl Method {
         let (field, real) = (Needs::Field, Needs::Real);
         use PhongPixels::{All, BinarySegments, Ends, EndsAndEvenMiddle, EvenMiddle};
         #[allow(clippy::type_complexity)]
-        let (name, label, source, equations, module, needs, phong_pixels, reconstructed, bound): (
+        #[rustfmt::skip]
+        let (name, label, source, equations, module, needs, phong_pixels, reconstructed): (
             &str,
             &str,
             &str,
@@ -199,20 +198,19 @@ impl Method {
             Needs,
             PhongPixels,
             bool,
-            BoundFn,
         ) = match self {
-            Method::Phong => ("phong", "Phong", "Phong 1975", "eq. 4", "phong", real, All, false, tolerance::phong),
-            Method::Duff => ("duff", "Duff", "Duff 1979", "eqs. 5–7", "duff", real, All, false, tolerance::duff),
-            Method::SymmetricPhong => ("symmetric-phong", "symmetric Phong", HBB, "§4", "symmetric_phong", real, All, false, tolerance::duff),
-            Method::Gouraud => ("gouraud", "Gouraud (fence)", "Gouraud 1971, Behrens 1994", "§1, eq. 23's d_p", "gouraud", field, Ends, false, tolerance::gouraud),
-            Method::Euler => ("euler", "Euler", HBB, "eqs. 12–14", "euler", field, PhongPixels::First, false, tolerance::euler),
-            Method::CorrectedEuler => ("corrected-euler", "corrected Euler", HBB, "eqs. 15–17", "corrected_euler", field, Ends, false, tolerance::corrected_euler),
-            Method::Adaptive => ("adaptive", "adaptive", HBB, "eqs. 23–24", "adaptive", field, Ends, false, tolerance::adaptive),
-            Method::Angular => ("angular", "angular", "Mortensen 1995", "second source", "angular", real, PhongPixels::AngularEnds, false, tolerance::angular),
-            Method::AngularTable(_) => ("angular-table", "angular, tabled", "Mortensen 1995", "second source", "angular", real, PhongPixels::Table, false, tolerance::angular_table),
-            Method::Spherical => ("spherical", "spherical", "Kuijk & Blake 1989", "Chebyshev recurrence", "related::spherical", real, EndsAndEvenMiddle, true, tolerance::spherical),
-            Method::Binary => ("binary", "binary", "Ouyang & Maynard 1996", "binary subdivision", "related::binary", real, BinarySegments, true, tolerance::binary),
-            Method::BishopWeimer => ("bishop-weimer", "Bishop–Weimer", "Bishop & Weimer 1986", "2-D Taylor, along the span", "related::bishop_weimer", real, EvenMiddle, false, tolerance::bishop_weimer),
+            Method::Phong => ("phong", "Phong", "Phong 1975", "eq. 4", "phong", real, All, false),
+            Method::Duff => ("duff", "Duff", "Duff 1979", "eqs. 5–7", "duff", real, All, false),
+            Method::SymmetricPhong => ("symmetric-phong", "symmetric Phong", HBB, "§4", "symmetric_phong", real, All, false),
+            Method::Gouraud => ("gouraud", "Gouraud (fence)", "Gouraud 1971, Behrens 1994", "§1, eq. 23's d_p", "gouraud", field, Ends, false),
+            Method::Euler => ("euler", "Euler", HBB, "eqs. 12–14", "euler", field, PhongPixels::First, false),
+            Method::CorrectedEuler => ("corrected-euler", "corrected Euler", HBB, "eqs. 15–17", "corrected_euler", field, Ends, false),
+            Method::Adaptive => ("adaptive", "adaptive", HBB, "eqs. 23–24", "adaptive", field, Ends, false),
+            Method::Angular => ("angular", "angular", "Mortensen 1995", "second source", "angular", real, PhongPixels::AngularEnds, false),
+            Method::AngularTable(_) => ("angular-table", "angular, tabled", "Mortensen 1995", "second source", "angular", real, PhongPixels::Table, false),
+            Method::Spherical => ("spherical", "spherical", "Kuijk & Blake 1989", "Chebyshev recurrence", "related::spherical", real, EndsAndEvenMiddle, true),
+            Method::Binary => ("binary", "binary", "Ouyang & Maynard 1996", "binary subdivision", "related::binary", real, BinarySegments, true),
+            Method::BishopWeimer => ("bishop-weimer", "Bishop–Weimer", "Bishop & Weimer 1986", "2-D Taylor, along the span", "related::bishop_weimer", real, EvenMiddle, false),
         };
         Info {
             name,
@@ -223,7 +221,6 @@ impl Method {
             needs,
             phong_pixels,
             reconstructed,
-            bound,
         }
     }
 

@@ -94,7 +94,7 @@ fn linear((alpha, beta): (f64, f64), n: f64) -> f64 {
 ///
 /// `|p̂/√q̂ − p/√q| ≤ e_p/√(q(1−ρ)) + ((1−ρ)^(−1/2) − 1) + roundings·u·|p̂/√q̂|`, with
 /// `ρ = e_q/q_min`.
-fn ratio_bound(e_p: f64, e_q: f64, q_min: f64, roundings: f64, u: f64) -> Option<f64> {
+pub(crate) fn ratio_bound(e_p: f64, e_q: f64, q_min: f64, roundings: f64, u: f64) -> Option<f64> {
     if !(q_min > 0.0 && q_min.is_finite()) {
         return None;
     }
@@ -150,13 +150,35 @@ fn angle_bound(edges: Option<(f64, f64)>, rounded_adds: f64, u: f64) -> f64 {
 /// float run chose (the two runs may decide differently when `|δ·255·K_d|` is within
 /// rounding of 1).
 pub fn bound(method: Method, n: u32, q_min: f64, u: f64) -> Option<f64> {
-    (method.info().bound)(method, n, q_min, None, u)
+    reference_bound(method, n, q_min, None, u)
 }
 
-/// A method's float error bound, as the catalogue ([`crate::method::Info::bound`])
-/// holds it: `(method, n, q_min, shape, u)`, with the whole [`Shape`] when the span
-/// is known.
-pub type BoundFn = fn(Method, u32, f64, Option<&Shape>, f64) -> Option<f64>;
+/// The table of the `reference` profile's bounds, one row per method (an exhaustive
+/// match: a method without a row does not compile): `(method, n, q_min, shape, u)`,
+/// with the whole [`Shape`] when the span is known. The other profiles' table is
+/// [`profile::status`].
+pub fn reference_bound(
+    method: Method,
+    n: u32,
+    q_min: f64,
+    shape: Option<&Shape>,
+    u: f64,
+) -> Option<f64> {
+    let f = match method {
+        Method::Phong => phong,
+        Method::Duff | Method::SymmetricPhong => duff,
+        Method::Gouraud => gouraud,
+        Method::Euler => euler,
+        Method::CorrectedEuler => corrected_euler,
+        Method::Adaptive => adaptive,
+        Method::Angular => angular,
+        Method::AngularTable(_) => angular_table,
+        Method::Spherical => spherical,
+        Method::Binary => binary,
+        Method::BishopWeimer => bishop_weimer,
+    };
+    f(method, n, q_min, shape, u)
+}
 
 /// What the bounds read of a span: `n`, `q_min` (rounded down) and the edge
 /// intensities `p_a`, `p_b` (angular interpolation's `acos` is ill-conditioned near
@@ -208,7 +230,7 @@ impl Shape {
 /// reads of the span (tighter for angular interpolation; the only bound of the
 /// related methods).
 pub fn span_bound(method: Method, shape: &Shape, u: f64) -> Option<f64> {
-    (method.info().bound)(method, shape.n, shape.q_min, Some(shape), u)
+    reference_bound(method, shape.n, shape.q_min, Some(shape), u)
 }
 
 fn edges(shape: Option<&Shape>) -> Option<(f64, f64)> {

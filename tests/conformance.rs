@@ -610,47 +610,63 @@ fn check_profiles_judge_by_the_proved_bounds() {
             }
         }
     }
-    // Phong has a derived ieee bound (docs/float.md §18.4): the crate's own results
-    // pass on every set; Euler has none yet, and fails naming that.
+    // Phong, Euler, Duff, symmetric Phong and adaptive have derived ieee and shader
+    // bounds (docs/float.md §18.4–18.5): the crate's own results pass on every set
+    // under the default profile (ieee) in f32 and f64, and under shader in f32.
     for set in SETS {
         let path = root()
             .join(format!("vectors/{set}.json"))
             .display()
             .to_string();
-        let phong = tmp(
-            &format!("phong-{set}-f64.csv"),
-            &own_results::<f64>(committed(set), Method::Phong, false),
-        );
-        let (code, out, err) = run_check(
-            &path,
-            &phong,
-            &[
-                "--method",
-                "phong",
-                "--profile",
-                "ieee",
-                "--precision",
-                "f64",
-            ],
-        );
-        assert_eq!(code, 0, "{set}: {out}{err}");
+        for m in [
+            Method::Phong,
+            Method::Euler,
+            Method::Duff,
+            Method::SymmetricPhong,
+            Method::Adaptive,
+        ] {
+            let r32 = tmp(
+                &format!("{m}-{set}-f32.csv"),
+                &own_results::<f32>(committed(set), m, false),
+            );
+            let r64 = tmp(
+                &format!("{m}-{set}-f64.csv"),
+                &own_results::<f64>(committed(set), m, false),
+            );
+            for (results, args) in [
+                (&r32, vec!["--method", &*m.name()]),
+                (&r64, vec!["--method", &*m.name(), "--precision", "f64"]),
+                (&r32, vec!["--method", &*m.name(), "--profile", "shader"]),
+            ] {
+                let (code, out, err) = run_check(&path, results, &args);
+                assert_eq!(code, 0, "{set} {m} {args:?}: {out}{err}");
+            }
+        }
     }
     let file = committed("typical");
     let phong = tmp(
         "phong-f32.csv",
         &own_results::<f32>(file, Method::Phong, false),
     );
-    let euler = tmp(
-        "euler-f32.csv",
-        &own_results::<f32>(file, Method::Euler, false),
+    // Angular interpolation has no ieee bound (no profile bounds acos and cos): its
+    // cases fail under the default profile, naming that and the way out.
+    let angular = tmp(
+        "angular-f32.csv",
+        &own_results::<f32>(file, Method::Angular, false),
     );
-    let (code, out, _) = run_check(
-        &typical_path(),
-        &euler,
-        &["--method", "euler", "--profile", "ieee"],
-    );
+    let (code, out, _) = run_check(&typical_path(), &angular, &["--method", "angular"]);
     assert_eq!(code, 1, "{out}");
-    assert!(out.contains("no ieee bound"), "{out}");
+    assert!(
+        out.contains("the ieee profile has no bound for angular")
+            && out.contains("--profile reference"),
+        "{out}"
+    );
+    let (code, out, err) = run_check(
+        &typical_path(),
+        &angular,
+        &["--method", "angular", "--profile", "reference"],
+    );
+    assert_eq!(code, 0, "{out}{err}");
     let (code, _, err) = run_check(
         &typical_path(),
         &phong,

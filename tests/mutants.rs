@@ -171,7 +171,9 @@ fn verdict(m: &Mutant, file: &VectorFile, profile: Profile) -> (usize, usize, bo
     let key = m.method.name().into_owned();
     let reports = check(file, &results, m.method, &key, tol, false).unwrap();
     let failed = reports.iter().filter(|r| !r.pass).count();
-    let no_bound = reports.iter().all(|r| r.allowed.starts_with("no "));
+    let no_bound = reports
+        .iter()
+        .all(|r| r.allowed.starts_with("no ") || r.allowed.contains("has no bound for"));
     (failed, reports.len(), no_bound)
 }
 

@@ -26,6 +26,7 @@ mod common;
 use common::emu::{round_dir, toward_zero, Dir, Format, BINARY32};
 use common::*;
 use num_traits::{Signed, Zero};
+use phong_approx::tolerance::profile::Profile;
 use phong_approx::{Method, Scalar, Span};
 
 /// `(α·n + β)·u`, the form of every bound of `proofs/Profiles.v`.
@@ -158,6 +159,7 @@ const VARIANTS: [Variant; 3] = [
 struct Setup<T> {
     pa: T,
     dp: T,
+    dia: T,
     ds: T,
     t0: T,
 }
@@ -198,7 +200,13 @@ fn setup<T: Native>(v: Variant, s: &Span<Q>) -> Setup<T> {
     let eps = pn - pb;
     let t0 = dia - over_n(eps);
     let dp = over_n(pb - pa);
-    Setup { pa, dp, ds, t0 }
+    Setup {
+        pa,
+        dp,
+        dia,
+        ds,
+        t0,
+    }
 }
 
 fn gouraud<T: Native>(v: Variant, s: &Span<Q>) -> Vec<Q> {
@@ -766,4 +774,375 @@ fn phong_ieee_derived_binary32() {
 #[test]
 fn phong_ieee_derived_binary64() {
     phong_ieee::<f64>("phong_ieee_derived_binary64");
+}
+
+// ------------------------- Euler, Duff, Phong under ieee and shader (derived, §18.5)
+
+/// The bound `check` applies to `method` under `profile` on `s` (`None`: no bound).
+fn profile_bound_of(method: Method, profile: Profile, s: &Span<Q>, u: f64) -> Option<f64> {
+    let shape = phong_approx::tolerance::Shape::of(s);
+    phong_approx::tolerance::profile::profile_bound(method, profile, s.n, shape.q_min, u)
+}
+
+/// Plain Euler (eqs. 12–14) as the recurrence `E += s; s += ds` from `s_0 = di_a`.
+fn euler<T: Native>(v: Variant, s: &Span<Q>) -> Vec<Q> {
+    let st = setup::<T>(v, s);
+    let (mut p, mut t) = (st.pa, st.dia);
+    let mut out = vec![p.q()];
+    for _ in 0..s.n {
+        p = p + t;
+        t = t + st.ds;
+        out.push(p.q());
+    }
+    out
+}
+
+/// Plain Euler by its closed form `p_a + i·(di_a + (i−1)/2·ds)`, fused or not.
+fn euler_closed<T: Native>(v: Variant, s: &Span<Q>) -> Vec<Q> {
+    let st = setup::<T>(v, s);
+    let half = T::of(&q(1, 2));
+    (0..=s.n)
+        .map(|i| {
+            let fi = T::from_u32(i);
+            let g = if v.fused {
+                (fi - T::from_u32(1)).mul(half).fma(st.ds, st.dia)
+            } else {
+                st.dia + (fi - T::from_u32(1)).mul(half).mul(st.ds)
+            };
+            let p = if v.fused {
+                fi.fma(g, st.pa)
+            } else {
+                st.pa + fi.mul(g)
+            };
+            p.q()
+        })
+        .collect()
+}
+
+/// Duff's forward differences (eqs. 5–7): `p += A; q += dq; dq += 2C` from `p = B`,
+/// `q = E`, `dq = C + D`, then `p/√q` (or `p·(1/√q)` with reciprocals).
+fn duff<T: Native>(v: Variant, s: &Span<Q>) -> Vec<Q> {
+    let vec = |x: &phong_approx::Vec3<Q>| [T::of(&x.x), T::of(&x.y), T::of(&x.z)];
+    let (na, nb, l) = (vec(&s.na), vec(&s.nb), vec(&s.l));
+    let nf = T::from_u32(s.n);
+    let one = T::from_u32(1);
+    let inv = one.div(nf);
+    let over_n = |x: T| if v.reciprocal { x.mul(inv) } else { x.div(nf) };
+    let k = [0, 1, 2].map(|j| over_n(nb[j] - na[j]));
+    let a = dot(v.dot, k, l);
+    let c = dot(v.dot, k, k);
+    let d = T::from_u32(2).mul(dot(v.dot, k, na));
+    let (mut p, mut qq, mut dq) = (dot(v.dot, na, l), dot(v.dot, na, na), c + d);
+    let two_c = T::from_u32(2).mul(c);
+    let mut out = Vec::with_capacity(s.n as usize + 1);
+    for i in 0..=s.n {
+        let value = if v.reciprocal {
+            p.mul(one.div(qq.sqrt()))
+        } else {
+            p.div(qq.sqrt())
+        };
+        out.push(value.q());
+        if i < s.n {
+            p = p + a;
+            qq = qq + dq;
+            dq = dq + two_c;
+        }
+    }
+    out
+}
+
+/// Runs `imp` on every profile span (and Phong's spans for the Phong-valued methods)
+/// against the `ieee` bound of `method`; the exact values from the exact run.
+fn ieee_derived<T: Native>(what: &str, method: Method, imp: impl Fn(Variant, &Span<Q>) -> Vec<Q>) {
+    let (mut checked, mut refused, mut worst) = (0, 0, 0f64);
+    let mut all: Vec<Span<Q>> = spans().into_iter().map(|(_, s)| s).collect();
+    if method.is_phong_valued() {
+        all = phong_spans();
+    }
+    for s in all {
+        let Some(b) = profile_bound_of(method, Profile::Ieee, &s, T::U) else {
+            refused += 1;
+            continue;
+        };
+        let want = if method.is_phong_valued() {
+            phong_exact(&s)
+        } else {
+            method.values(&s).unwrap()
+        };
+        for v in VARIANTS {
+            let got = imp(v, &s);
+            for (i, (g, w)) in got.iter().zip(&want).enumerate() {
+                let e = (g.clone() - w.clone()).abs().to_f64();
+                worst = worst.max(e / b);
+                assert!(
+                    e <= b,
+                    "{what} {v:?}: pixel {i} of n = {}: error {e:e} > bound {b:e}",
+                    s.n
+                );
+            }
+            checked += 1;
+        }
+    }
+    assert!(
+        checked > 100,
+        "{checked} checked, {refused} without a bound"
+    );
+    eprintln!("{what}: {checked} runs, worst {worst:.3} of the bound, {refused} spans without one");
+}
+
+/// Euler's derived `ieee` bound (`euler_derived`, docs/float.md §18.5) holds for the
+/// recurrence and the closed form, three orders each, fused or not, binary32.
+#[test]
+fn profile_ieee_euler_derived_binary32() {
+    ieee_derived::<f32>("euler recurrence", Method::Euler, euler::<f32>);
+    ieee_derived::<f32>("euler closed", Method::Euler, euler_closed::<f32>);
+}
+
+/// As [`profile_ieee_euler_derived_binary32`] in binary64.
+#[test]
+fn profile_ieee_euler_derived_binary64() {
+    ieee_derived::<f64>("euler recurrence", Method::Euler, euler::<f64>);
+    ieee_derived::<f64>("euler closed", Method::Euler, euler_closed::<f64>);
+}
+
+/// Duff's derived `ieee` bound (`duff_derived`, docs/float.md §18.5) holds for the
+/// forward differences with three orders of the set-up's dot products, `/n` or
+/// `·(1/n)`, `p/√q` or `p·(1/√q)`, binary32 and binary64.
+#[test]
+fn profile_ieee_duff_derived() {
+    ieee_derived::<f32>("duff f32", Method::Duff, duff::<f32>);
+    ieee_derived::<f64>("duff f64", Method::Duff, duff::<f64>);
+}
+
+// The shader profile's derived bounds, on the software GPU.
+
+impl Gpu {
+    /// `√x` as the shader rules allow it: `1/inversesqrt(x)`, the inverse square root
+    /// two units toward zero from the nearest (2 ulps), then the 2.5-ulp division.
+    fn sqrt(&self, x: &Q) -> Q {
+        use phong_approx::reference::transcendental::sqrt;
+        let x = self.r(x.clone());
+        if !x.is_positive() {
+            return Q::zero();
+        }
+        let inv = q(1, 1) / sqrt(&x);
+        let rs = self.r(toward_zero(&round_dir(&inv, F, Dir::Nearest), F, 2));
+        self.div(&q(1, 1), &rs)
+    }
+}
+
+/// Euler on the GPU model (the recurrence).
+fn gpu_euler(g: Gpu, s: &Span<Q>) -> Vec<Q> {
+    let [pa, _, ds, _] = gpu_setup(g, s);
+    // di_a again, as gpu_setup computes it.
+    let dia = gpu_dia(g, s);
+    let (mut p, mut t) = (pa, dia);
+    let mut out = vec![p.clone()];
+    for _ in 0..s.n {
+        p = g.add(&p, &t);
+        t = g.add(&t, &ds);
+        out.push(p.clone());
+    }
+    out
+}
+
+/// `di_a = A − (p_a/2)·D` on the GPU model, as in [`gpu_setup`].
+fn gpu_dia(g: Gpu, s: &Span<Q>) -> Q {
+    let vec = |x: &phong_approx::Vec3<Q>| [g.input(&x.x), g.input(&x.y), g.input(&x.z)];
+    let (na, nb, l) = (vec(&s.na), vec(&s.nb), vec(&s.l));
+    let nf = qi(s.n);
+    let k = [0, 1, 2].map(|j| g.div(&g.sub(&nb[j], &na[j]), &nf));
+    let a = g.dot(&k, &l);
+    let pa = g.dot(&na, &l);
+    let d = g.mul(&q(2, 1), &g.dot(&k, &na));
+    g.fms(&g.div(&pa, &q(2, 1)), &d, &a)
+}
+
+/// Duff (and, with `horner`, Phong's closed form) on the GPU model.
+fn gpu_duff_or_phong(g: Gpu, s: &Span<Q>, horner: bool) -> Vec<Q> {
+    let vec = |x: &phong_approx::Vec3<Q>| [g.input(&x.x), g.input(&x.y), g.input(&x.z)];
+    let (na, nb, l) = (vec(&s.na), vec(&s.nb), vec(&s.l));
+    let nf = qi(s.n);
+    let k = [0, 1, 2].map(|j| g.div(&g.sub(&nb[j], &na[j]), &nf));
+    let a = g.dot(&k, &l);
+    let b = g.dot(&na, &l);
+    let c = g.dot(&k, &k);
+    let d = g.mul(&q(2, 1), &g.dot(&k, &na));
+    let e = g.dot(&na, &na);
+    let axpy = |x: &Q, y: &Q, z: &Q| {
+        if g.fused {
+            g.r(x * y + z)
+        } else {
+            g.add(&g.mul(x, y), z)
+        }
+    };
+    let (mut p, mut qq, mut dq) = (b.clone(), e.clone(), g.add(&c, &d));
+    let two_c = g.mul(&q(2, 1), &c);
+    let mut out = Vec::with_capacity(s.n as usize + 1);
+    for i in 0..=s.n {
+        let (pi, qi_) = if horner {
+            let x = qi(i);
+            (axpy(&a, &x, &b), axpy(&axpy(&c, &x, &d), &x, &e))
+        } else {
+            (p.clone(), qq.clone())
+        };
+        out.push(g.div(&pi, &g.sqrt(&qi_)));
+        if !horner && i < s.n {
+            p = g.add(&p, &a);
+            qq = g.add(&qq, &dq);
+            dq = g.add(&dq, &two_c);
+        }
+    }
+    out
+}
+
+/// Runs a GPU implementation of `method` on the profile spans up to `n = 1024`
+/// (4096 in the extensive tier) against the `shader` bound.
+fn shader_derived(what: &str, method: Method, imp: impl Fn(Gpu, &Span<Q>) -> Vec<Q>) {
+    let most = tiered(256, 4096);
+    let mut all: Vec<Span<Q>> = spans().into_iter().map(|(_, s)| s).collect();
+    if method.is_phong_valued() {
+        all = phong_spans();
+    }
+    let (mut checked, mut worst) = (0, 0f64);
+    for s in all.into_iter().filter(|s| s.n <= most) {
+        let Some(b) = profile_bound_of(method, Profile::Shader, &s, f32::U) else {
+            continue;
+        };
+        let want = if method.is_phong_valued() {
+            phong_exact(&s)
+        } else {
+            method.values(&s).unwrap()
+        };
+        for g in GPUS {
+            let got = imp(g, &s);
+            for (i, (x, w)) in got.iter().zip(&want).enumerate() {
+                let e = (x.clone() - w.clone()).abs().to_f64();
+                worst = worst.max(e / b);
+                assert!(
+                    e <= b,
+                    "{what} {g:?}: pixel {i} of n = {}: {e:e} > {b:e}",
+                    s.n
+                );
+            }
+            checked += 1;
+        }
+    }
+    assert!(checked > 40, "{checked}");
+    eprintln!("{what}: {checked} runs, worst {worst:.3} of the bound");
+}
+
+/// Euler's, Duff's and Phong's derived `shader` bounds hold on the software GPUs.
+#[test]
+fn profile_shader_derived_binary32() {
+    shader_derived("euler", Method::Euler, gpu_euler);
+    shader_derived("duff", Method::Duff, |g, s| gpu_duff_or_phong(g, s, false));
+    shader_derived("phong (Horner)", Method::Phong, |g, s| {
+        gpu_duff_or_phong(g, s, true)
+    });
+}
+
+/// The GPU model's square root is within the shader profile's `κ_sqrt = 9` units.
+#[test]
+fn the_gpu_square_root_is_within_the_profile() {
+    use phong_approx::reference::transcendental::sqrt;
+    for (a, b) in [(2i64, 1i64), (1, 3), (7, 5), (1, 1000)] {
+        let x = q(a, b);
+        let got = GPUS[0].sqrt(&x);
+        let want = sqrt(&x);
+        let rel = ((got - want.clone()) / want).abs().to_f64();
+        assert!(rel <= 9.0 * f32::U, "{a}/{b}: {rel:e}");
+    }
+}
+
+// ------------------------------------------- the crate's fast kernels under ieee
+
+/// `FastSpan`'s kernels and `fast_rows::RowSpan`'s (set up from the span's own
+/// floats) pass under `ieee` at every `n` from 1 to 64 and at `2^k − 1`, `2^k` up to
+/// 4096: their set-ups (the closed form of `ds`, Gouraud plus a parabola) are not the
+/// graph of the theorems, so this is evidence, not proof (docs/float.md §18.3).
+#[test]
+fn fast_kernels_pass_under_ieee_at_every_n() {
+    use phong_approx::fast::FastSpan;
+    use phong_approx::fast_rows::RowSpan;
+    let z = Stereo(0, 0, 1);
+    let mut ns: Vec<u32> = (1..=64).collect();
+    for k in 7..=tiered(10, 12) {
+        ns.extend([(1 << k) - 1, 1 << k]);
+    }
+    let shapes = [
+        (z, Stereo(1, 0, 3), Stereo(2, 1, 5)),
+        (z, Stereo(96, 0, 1), Stereo(0, 0, 1)),
+        (Stereo(1, 2, 3), Stereo(-3, 1, 4), Stereo(1, 1, 2)),
+        (z, Stereo(7, 3, 2), Stereo(3, -1, 5)),
+    ];
+    let mut checked = 0;
+    for &n in &ns {
+        for &(na, nb, l) in &shapes {
+            let c = Case {
+                why: "fast kernels under ieee",
+                na,
+                nb,
+                l,
+                n,
+            };
+            let Some(s) = c.span() else { continue };
+            macro_rules! run {
+                ($f:ty) => {{
+                    let u = <$f as Native>::U;
+                    let fs = s.cast::<$f>().unwrap();
+                    let fast = FastSpan::<$f>::from_span(&fs);
+                    let dot = |a: [$f; 3], b: [$f; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+                    let v = |x: &phong_approx::Vec3<$f>| [x.x, x.y, x.z];
+                    let (pa, pb, cw) = (dot(v(&fs.na), v(&fs.l)), dot(v(&fs.nb), v(&fs.l)), dot(v(&fs.na), v(&fs.nb)));
+                    let inv_n = 1.0 / n as $f;
+                    let omc = 1.0 - cw;
+                    let row = RowSpan::<$f> {
+                        p_a: pa,
+                        p_b: pb,
+                        omc,
+                        inv_n,
+                        a1: (pb - pa) * inv_n,
+                        a2: 0.5 * omc * (pa + pb) * inv_n * inv_n,
+                        n,
+                    };
+                    type Run = Box<dyn Fn(&mut [$f])>;
+                    let kernels: Vec<(&str, Method, Run)> = vec![
+                        ("FastSpan::corrected_euler", Method::CorrectedEuler, Box::new(move |o| fast.corrected_euler(o))),
+                        ("FastSpan::corrected_euler_serial", Method::CorrectedEuler, Box::new(move |o| fast.corrected_euler_serial(o))),
+                        ("FastSpan::gouraud", Method::Gouraud, Box::new(move |o| fast.gouraud(o))),
+                        ("FastSpan::gouraud_serial", Method::Gouraud, Box::new(move |o| fast.gouraud_serial(o))),
+                        ("FastSpan::euler", Method::Euler, Box::new(move |o| fast.euler(o))),
+                        ("FastSpan::phong", Method::Phong, Box::new(move |o| fast.phong(o))),
+                        ("FastSpan::duff_serial", Method::Duff, Box::new(move |o| fast.duff_serial(o))),
+                        ("FastSpan::symmetric_phong", Method::SymmetricPhong, Box::new(move |o| fast.symmetric_phong(o))),
+                        ("RowSpan::corrected_euler", Method::CorrectedEuler, Box::new(move |o| row.corrected_euler(o))),
+                        ("RowSpan::gouraud", Method::Gouraud, Box::new(move |o| row.gouraud(o))),
+                        ("RowSpan::phong", Method::Phong, Box::new(move |o| row.phong(o))),
+                    ];
+                    for (name, m, run) in kernels {
+                        let Some(b) = profile_bound_of(m, Profile::Ieee, &s, u) else {
+                            continue;
+                        };
+                        let want = exact_values(m, &c, &s);
+                        let mut out = vec![0.0 as $f; s.len()];
+                        run(&mut out);
+                        for (i, (g, w)) in out.iter().zip(want.iter()).enumerate() {
+                            let e = (g.q() - w.clone()).abs().to_f64();
+                            assert!(
+                                e <= b,
+                                "{name} ({}): pixel {i} of n = {n}: {e:e} > ieee bound {b:e} ({:.2} of it)\ninputs: {c:?}",
+                                stringify!($f),
+                                e / b
+                            );
+                        }
+                        checked += 1;
+                    }
+                }};
+            }
+            run!(f32);
+            run!(f64);
+        }
+    }
+    assert!(checked > 1000, "{checked}");
 }

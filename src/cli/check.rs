@@ -34,15 +34,16 @@ pub struct CheckArgs {
     /// The implementation's arithmetic, for the default tolerance: f32 or f64.
     #[arg(long, value_name = "TYPE", default_value = "f32")]
     pub precision: String,
-    /// The arithmetic profile the results are judged by (docs/float.md §18):
-    /// reference (this crate's operation order, round to nearest, no FMA: the bounds
-    /// of every method), ieee (any order, FMA, reciprocals; proved for Gouraud and
-    /// corrected Euler; derived for Phong), shader (Vulkan/WGSL 32-bit rules:
-    /// truncation, 2.5-ulp division, flushed denormals; proved for Gouraud and
-    /// corrected Euler in f32) or fixed:M.F (a set-up rounded once to F fractional
-    /// bits, an exact integer loop in M-bit registers; proved for Gouraud and
-    /// corrected Euler).
-    #[arg(long, value_name = "NAME", default_value = "reference")]
+    /// The arithmetic profile the results are judged by (docs/float.md §18): ieee
+    /// (the default: IEEE f32/f64 with round to nearest, any order, FMA, reciprocals;
+    /// proved for Gouraud and corrected Euler, derived for Phong, Euler, Duff,
+    /// symmetric Phong and adaptive), shader (Vulkan/WGSL 32-bit rules: truncation,
+    /// 2.5-ulp division, flushed denormals; the same methods, f32), reference (this
+    /// crate's own operation order, round to nearest, no FMA: the bounds of every
+    /// method, angular and the related methods included) or fixed:M.F (a set-up
+    /// rounded once to F fractional bits, an exact integer loop in M-bit registers;
+    /// proved for Gouraud and corrected Euler).
+    #[arg(long, value_name = "NAME", default_value = "ieee")]
     pub profile: String,
     /// Check the specular expectations (max(0, method(N·H))^s) instead of diffuse.
     #[arg(long)]

@@ -727,30 +727,44 @@ fn case_report(
         } => Tolerance::Default { u },
         t => t,
     };
+    // Specular raises the value v ≥ 0 to the power s: an error e in v moves v^s by at
+    // most s·(v + e)^(s−1)·e (mean value theorem), and evaluating the power adds a
+    // relative γ_s (s − 1 products, or a pow within an ulp). The values may exceed 1
+    // (corrected Euler reaches about 1.19), so the factor is taken at the case's
+    // largest base value, v_max = max (v^s)^(1/s). Specular cases shade N·H with a
+    // unit H, so the diffuse bounds hold with H for L.
+    let spec = specular.then(|| {
+        let s = c.specular.as_ref().map_or(1, |sp| sp.s.max(1));
+        let v_max = exp
+            .values
+            .iter()
+            .filter_map(|x| x.parse::<f64>().ok())
+            .map(|x| x.max(0.0).powf(1.0 / f64::from(s)) * (1.0 + 1e-12))
+            .fold(0.0, f64::max);
+        (f64::from(s), v_max)
+    });
+    let raise = |b: f64, u: f64| match spec {
+        None => b,
+        Some((s, v_max)) => {
+            let g = s * u / (1.0 - s * u);
+            (s * (v_max + b).powf(s - 1.0) * b + g * (v_max + b).powf(s)) * (1.0 + 1e-12)
+        }
+    };
     let allowed_abs = match tol {
         Tolerance::Abs(x) => Some(x),
-        // Proved for diffuse values only (the theorems bound N·L along the span).
+        // The power is not in the shader profile's model (Vulkan's pow is exp2 of a
+        // log2, with errors relative to neither), nor in fixed point's: diffuse only.
+        Tolerance::Profile {
+            profile: Profile::Shader | Profile::Fixed { .. },
+            ..
+        } if specular => None,
         // The vector file's q_min is to nearest: a relative 2^-40 below it is below
         // the span's.
-        Tolerance::Profile { profile, u } if !specular => {
+        Tolerance::Profile { profile, u } => {
             profile_bound(method, profile, c.n, c.q_min * (1.0 - 2f64.powi(-40)), u)
+                .map(|b| raise(b, u))
         }
         Tolerance::Default { u } => {
-            // Specular raises the value v ≥ 0 to the power s: an error e in v moves v^s
-            // by at most s·(v + e)^(s−1)·e (mean value theorem), and evaluating the
-            // power adds a relative γ_s (s − 1 products, or a pow within an ulp). The
-            // values may exceed 1 (corrected Euler reaches about 1.19), so the factor
-            // is taken at the case's largest base value, v_max = max (v^s)^(1/s).
-            let spec = specular.then(|| {
-                let s = c.specular.as_ref().map_or(1, |sp| sp.s.max(1));
-                let v_max = exp
-                    .values
-                    .iter()
-                    .filter_map(|x| x.parse::<f64>().ok())
-                    .map(|x| x.max(0.0).powf(1.0 / f64::from(s)) * (1.0 + 1e-12))
-                    .fold(0.0, f64::max);
-                (f64::from(s), v_max)
-            });
             // No derived bound (n too long for the precision, or q may round to
             // zero): the case cannot pass on the default tolerance. Specular cases
             // shade N·H, not N·L, so the bound takes no edge values there.
@@ -758,13 +772,7 @@ fn case_report(
                 Some(shape) => crate::tolerance::span_bound(method, &shape, u),
                 None => crate::tolerance::bound(method, c.n, c.q_min, u),
             }
-            .map(|b| match spec {
-                None => b,
-                Some((s, v_max)) => {
-                    let g = s * u / (1.0 - s * u);
-                    (s * (v_max + b).powf(s - 1.0) * b + g * (v_max + b).powf(s)) * (1.0 + 1e-12)
-                }
-            })
+            .map(|b| raise(b, u))
         }
         _ => None,
     };
@@ -819,8 +827,21 @@ fn case_report(
     let allowed = match tol {
         Tolerance::Levels(n) => format!("{n} levels"),
         Tolerance::Ulps(n) => format!("{n} ulps"),
-        Tolerance::Profile { profile, .. } if unbounded => {
-            format!("no {profile} bound for this method, format and span (pass --tolerance)")
+        Tolerance::Profile { profile, u } if unbounded => {
+            if specular && matches!(profile, Profile::Shader | Profile::Fixed { .. }) {
+                format!(
+                    "the {profile} profile does not model the specular power (pass --tolerance)"
+                )
+            } else if crate::tolerance::profile::status(method, profile, u).is_none() {
+                format!(
+                    "the {profile} profile has no bound for {method} in this format \
+                     (--profile reference judges this crate's own evaluation; or pass --tolerance)"
+                )
+            } else {
+                format!(
+                    "no {profile} bound for this span: n past the bound's range, or q may lose half of itself (pass --tolerance)"
+                )
+            }
         }
         _ if unbounded => "no derived bound (pass --tolerance)".to_string(),
         _ => format!("{:.3e}", allowed_abs.unwrap_or(0.0)),

@@ -12,9 +12,11 @@
 //! | `ieee` | binary64 | `profile_ieee_gouraud_binary64`, `profile_ieee_gouraud_binary64_large` | `profile_ieee_corrected_euler_binary64`, `profile_ieee_corrected_euler_binary64_large`, `profile_ieee_corrected_euler_closed_binary64`, `profile_ieee_corrected_euler_closed_binary64_large` |
 //! | `shader` | binary32 | `profile_shader_gouraud_binary32` | `profile_shader_corrected_euler_binary32` |
 //!
-//! Phong under `ieee` has a *derived* bound ([`phong_ieee`], `docs/float.md` §18.4,
-//! tested by `tests/profiles.rs::phong_ieee_derived_binary32`/`_binary64`); [`status`]
-//! says which kind a bound is. Other methods have no bound under `ieee` or `shader` yet.
+//! Phong, Euler, Duff, symmetric Phong and the adaptive scheme have *derived* bounds
+//! under `ieee` and `shader` (written derivations on the same model, [`Arith`]:
+//! [`phong_derived`], [`euler_derived`], [`duff_derived`], `docs/float.md` §18.4–18.5,
+//! attacked by `tests/profiles.rs`); [`status`] says which kind a bound is. Angular
+//! interpolation and the related methods have none: a case then fails naming that.
 //!
 //! Tested, with other implementations written from the definitions (other orders,
 //! `mul_add`, reciprocals, the closed form, a software GPU that truncates, divides
@@ -234,47 +236,188 @@ pub fn proved_bound(method: crate::Method, profile: Profile, n: u32, u: f64) -> 
         .try_fold(0.0f64, |m, b| b.map(|b| m.max(b)))
 }
 
-/// Phong under `ieee`, derived (`docs/float.md` §18.4; not a Coq theorem): every
-/// implementation that computes `p_i = N_i·L` and `q_i = N_i·N_i` from the nearest
-/// floats of the inputs by any of the catalogued forms — Horner's `(A·i + B)` and
-/// `(C·i + D)·i + E` with `A = k·L`, `C = k·k`, `D = 2k·N_a`, `E = N_a·N_a`,
-/// `k = (N_b − N_a)/n` (or `·(1/n)`); the per-pixel normal `N_a + i·k` or
-/// `(1 − t)·N_a + t·N_b`, `t = i/n` — in any order of each dot product, fused or
-/// not, and then `p/√q`, `p·(1/√q)` or the dot product of `N·(1/√q)` with `L`.
+/// The standard model of a float profile (`docs/float.md` §18.1): every operation's
+/// result is within `κ·u·|y| + η` of its exact value `y` on the computed operands,
+/// with one `κ` per class of operation (in units of `u`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Arith {
+    /// The unit roundoff of the format.
+    pub u: f64,
+    /// Rounding an exact input to the format.
+    pub input: f64,
+    /// An addition or subtraction (a fused multiply-add rounds once, as an addition).
+    pub add: f64,
+    /// A product.
+    pub mul: f64,
+    /// One division (a reciprocal `1/x` is one).
+    pub div: f64,
+    /// A division by 2 (or a product by `0.5`): exact under `ieee`, a division (or a
+    /// computed `1/2` and a product) under `shader`.
+    pub half: f64,
+    /// A square root (under `shader`, `1/inversesqrt`: 2 ulps and a 2.5-ulp division).
+    pub sqrt: f64,
+    /// The absolute error of one operation near zero (subnormals, or flushed results).
+    pub eta: f64,
+}
+
+impl Arith {
+    /// A division by `n` as a division or as `1/n` and a product.
+    pub fn div_n(&self) -> f64 {
+        self.div + self.mul
+    }
+
+    /// The largest `κ` of the set-up (inputs, additions, products, divisions by `n`).
+    pub fn setup(&self) -> f64 {
+        self.input.max(self.add).max(self.mul).max(self.div_n())
+    }
+
+    /// The value `p/√q` from `p` and `q`: the square root, a division (or `1/√q`) and a
+    /// product.
+    pub fn ratio(&self) -> f64 {
+        self.sqrt + self.div + self.mul
+    }
+}
+
+/// The standard model of `profile` in the format of unit roundoff `u` (binary32 or
+/// binary64 for `ieee`, binary32 for `shader`), or `None` (`reference` is one
+/// implementation, not a model; fixed point has its own bounds).
+pub fn arith(profile: Profile, u: f64) -> Option<Arith> {
+    let b32 = u == U32;
+    let b64 = u == f64::EPSILON / 2.0;
+    match profile {
+        Profile::Ieee if b32 || b64 => Some(Arith {
+            u,
+            input: 1.0,
+            add: 1.0,
+            mul: 1.0,
+            div: 1.0,
+            half: 0.0,
+            sqrt: 1.0,
+            // Half the smallest subnormal.
+            eta: if b32 {
+                2f64.powi(-150)
+            } else {
+                2f64.powi(-1075)
+            },
+        }),
+        // Vulkan/WGSL: add, sub, mul faithful (2 units of u), division 2.5 ulp (5),
+        // sqrt inherited from 1/inversesqrt (2 ulp = 4, then the division, 5),
+        // denormals flushed (2^-126).
+        Profile::Shader if b32 => Some(Arith {
+            u,
+            input: 2.0,
+            add: 2.0,
+            mul: 2.0,
+            div: 5.0,
+            half: 7.0,
+            sqrt: 9.0,
+            eta: 2f64.powi(-126),
+        }),
+        _ => None,
+    }
+}
+
+/// `γ_w = w·u/(1 − w·u)`: the relative error of a product of factors `(1 + δ_j)`
+/// whose `|δ_j| ≤ κ_j·u` sum to `Σκ_j = w`.
+fn gamma(w: f64, u: f64) -> f64 {
+    w * u / (1.0 - w * u)
+}
+
+/// The largest `n` of the derived bounds: `i` and `(i − 1)/2` are exact, and the
+/// first-order derivations' second-order terms fit in their last factor `1.01`
+/// (`n·κ·u ≤ 2^-8`).
+fn derived_n(a: &Arith, n: u32) -> Option<f64> {
+    let nf = f64::from(n);
+    ((1..=1 << 24).contains(&n)
+        && nf * a.setup() * a.u <= 2f64.powi(-8)
+        && nf * a.u <= super::MAX_NU)
+        .then_some(nf)
+}
+
+/// What flushed or subnormal results add to a span's value: at most `η` per
+/// operation, carried by at most `n²` (the quadratic term's `i(i−1)/2`), for the at
+/// most `64` operations of the set-up and a pixel.
+fn eta_total(a: &Arith, nf: f64) -> f64 {
+    64.0 * (nf * nf + nf + 1.0) * a.eta
+}
+
+/// Plain Euler (eqs. 12–14) under a profile, derived (`docs/float.md` §18.5): the
+/// recurrence `E += s; s += ds` from `s_0 = di_a`, or the closed form
+/// `p_a + i·(di_a + (i−1)/2·ds)`, on the paper's set-up (§4) in any order of each dot
+/// product, fused or not, `/n` as a division or `·(1/n)`.
 ///
-/// Every computed product or sum is its exact value with at most 11 (for `p`) and 15
-/// (for `q`) factors `(1 + δ)`, `|δ| ≤ u`, on each monomial, so it is off by at most
-/// `γ_k` times the sum of the monomials' absolute values: at most `3` for `p`
+/// §7's count, each rounding with the largest `κ` of the set-up: `113·κ_s` for the
+/// set-up, `6·κ_half` for the two `p/2` (exact under `ieee`), then the larger of the
+/// recurrence's `5.6·n·κ_add` and the closed form's `3.8·(2κ_mul + 2κ_add + κ_half)`.
+pub fn euler_derived(a: &Arith, n: u32) -> Option<f64> {
+    let nf = derived_n(a, n)?;
+    let setup = 113.0 * a.setup() + 6.0 * a.half;
+    let recurrence = 5.6 * nf * a.add;
+    let closed = 3.8 * (2.0 * a.mul + 2.0 * a.add + a.half);
+    Some((setup + recurrence.max(closed)) * 1.01 * a.u + eta_total(a, nf))
+}
+
+/// Duff's forward differences (eqs. 5–7, and symmetric Phong, which mirrors them)
+/// under a profile, derived (`docs/float.md` §18.5): §8's `e_p = 20·κ_s + 1.01·n·κ_add`
+/// and `e_q = 118·κ_s + 3.01·n·κ_add`, then `p/√q` with the square root, a division
+/// (or `1/√q`) and a product. `None` where `q` may lose half of itself.
+pub fn duff_derived(a: &Arith, n: u32, q_min: f64) -> Option<f64> {
+    let nf = derived_n(a, n)?;
+    let e_p = 20.0 * a.setup() + 1.01 * nf * a.add;
+    let e_q = 118.0 * a.setup() + 3.01 * nf * a.add;
+    let b = super::ratio_bound(e_p, e_q, q_min, a.ratio(), a.u)?;
+    Some(b * 1.01 + eta_total(a, nf) / q_min.sqrt())
+}
+
+/// Phong under a profile, derived (`docs/float.md` §18.4): every implementation that
+/// computes `p_i = N_i·L` and `q_i = N_i·N_i` from the inputs by any of the catalogued
+/// forms — Horner's `(A·i + B)` and `(C·i + D)·i + E` with `A = k·L`, `C = k·k`,
+/// `D = 2k·N_a`, `E = N_a·N_a`, `k = (N_b − N_a)/n` (or `·(1/n)`); the per-pixel
+/// normal `N_a + i·k` or `(1 − t)·N_a + t·N_b`, `t = i/n` — in any order of each dot
+/// product, fused or not, and then `p/√q`, `p·(1/√q)` or the dot product of
+/// `N·(1/√q)` with `L`.
+///
+/// Every computed product or sum is its exact value with, on each monomial, factors
+/// `(1 + δ_j)` whose `κ_j` sum to at most `w_p` (for `p`) and `w_q` (for `q`) — 11
+/// and 15 under `ieee`, 25 and 36 under `shader` — so it is off by at most
+/// `γ_w` times the sum of the monomials' absolute values: at most `3` for `p`
 /// (`(1 + 2t)`, `|N_a| = |N_b| = |L| = 1`) and `9` for `q` (`(1 + 2t)²`). With
-/// `e_p = 3γ_11 + η`, `e_q = 9γ_15 + η`, `q̂ ≥ q_min − e_q` and `|p| ≤ √q`:
+/// `e_p = 3γ_{w_p} + η'`, `e_q = 9γ_{w_q} + η'`, `q̂ ≥ q_min − e_q` and `|p| ≤ √q`:
 ///
-/// `|v̂ − v| ≤ (e_p/√(q_min − e_q) + e_q/(√(q_min − e_q)·(√q_min + √(q_min − e_q))))·(1 + γ_3) + γ_3 + η`,
+/// `|v̂ − v| ≤ (e_p/√(q_min − e_q) + e_q/(√(q_min − e_q)·(√q_min + √(q_min − e_q))))·(1 + γ_f) + γ_f + η'`,
 ///
-/// the last factor for the square root, the division (or the reciprocal and the
-/// product). `None` where `q` may round to half of `q_min` (`e_q ≥ q_min/2`: normals
-/// that nearly cancel, where no bound of this form holds) or `n > 2^24` (`i` must be
+/// `γ_f` for the square root, the division (or the reciprocal and the product).
+/// `None` where `q` may round to half of `q_min` (`e_q ≥ q_min/2`: normals that
+/// nearly cancel, where no bound of this form holds) or `n > 2^24` (`i` must be
 /// exact).
-pub fn phong_ieee(n: u32, q_min: f64, u: f64) -> Option<f64> {
+pub fn phong_derived(a: &Arith, n: u32, q_min: f64) -> Option<f64> {
     if !(q_min > 0.0 && q_min.is_finite()) || n == 0 || n > 1 << 24 {
         return None;
     }
-    let gamma = |k: f64| k * u / (1.0 - k * u);
-    // Underflow: each of the at most 64 roundings of a pixel's computation may be off
-    // by half the smallest subnormal instead of relatively.
-    let eta = if u == U32 {
-        64.0 * 2f64.powi(-150)
-    } else {
-        64.0 * 2f64.powi(-1074)
-    };
-    let e_p = 3.0 * gamma(11.0) + eta;
-    let e_q = 9.0 * gamma(15.0) + eta;
+    let u = a.u;
+    // The longest chains of roundings: k = (N_b − N_a)/n, the normal N_a + i·k (or
+    // (1 − t)·N_a + t·N_b, the same count), its products and three-term sums.
+    let w_k = a.input + a.add + a.div_n();
+    let w_n = w_k + a.mul + a.add;
+    let w_p = w_n + a.input + a.mul + 2.0 * a.add + a.mul;
+    let w_q = 2.0 * w_n + a.mul + 2.0 * a.add;
+    // Underflow or flushing: at most η per rounding, carried by at most i ≤ n.
+    let eta = 64.0 * (f64::from(n) + 1.0) * a.eta;
+    let e_p = 3.0 * gamma(w_p, u) + eta;
+    let e_q = 9.0 * gamma(w_q, u) + eta;
     if e_q >= q_min / 2.0 {
         return None;
     }
+    let g_f = gamma(a.ratio(), u);
     let lo = (q_min - e_q).sqrt();
-    let b = (e_p / lo + e_q / (lo * (q_min.sqrt() + lo))) * (1.0 + gamma(3.0)) + gamma(3.0) + eta;
+    let b = (e_p / lo + e_q / (lo * (q_min.sqrt() + lo))) * (1.0 + g_f) + g_f + eta;
     // This evaluation in f64 rounds too: a relative 2^-40 more covers it.
     Some(b * (1.0 + 2f64.powi(-40)))
+}
+
+/// [`phong_derived`] under `ieee` in the format of unit roundoff `u`.
+pub fn phong_ieee(n: u32, q_min: f64, u: f64) -> Option<f64> {
+    phong_derived(&arith(Profile::Ieee, u)?, n, q_min)
 }
 
 /// How a profile's bound for a method is known.
@@ -289,23 +432,34 @@ pub enum Status {
 
 /// Whether and how `method` has a bound under `profile` in the format of unit
 /// roundoff `u` (`None`: no bound, a case then fails naming that).
+///
+/// This is the table of the profiles' bounds, one row per method: a method without a
+/// row here has no bound under `ieee`, `shader` or fixed point (angular
+/// interpolation, whose `acos` and `cos` no profile bounds, and the related methods,
+/// whose bounds follow this crate's own evaluation).
 pub fn status(method: crate::Method, profile: Profile, u: f64) -> Option<Status> {
+    use crate::Method;
     if let Profile::Fixed { .. } = profile {
         return match method {
-            crate::Method::CorrectedEuler => {
-                Some(Status::Proved("fixed_point_corrected_euler_error"))
-            }
-            crate::Method::Gouraud => Some(Status::Proved("fixed_point_gouraud_error")),
+            Method::CorrectedEuler => Some(Status::Proved("fixed_point_corrected_euler_error")),
+            Method::Gouraud => Some(Status::Proved("fixed_point_gouraud_error")),
             _ => None,
         };
     }
     if let Some(forms) = proved(method, profile, u) {
         return Some(Status::Proved(forms[0].theorem));
     }
-    match (method, profile) {
-        (crate::Method::Phong, Profile::Ieee) if u == U32 || u == f64::EPSILON / 2.0 => {
-            Some(Status::Derived("docs/float.md §18.4"))
+    arith(profile, u)?;
+    match method {
+        Method::Phong => Some(Status::Derived("docs/float.md §18.4")),
+        Method::Euler | Method::Duff | Method::SymmetricPhong => {
+            Some(Status::Derived("docs/float.md §18.5"))
         }
+        // The larger of the two proved bounds, against the exact run of the method
+        // the implementation chose (docs/float.md §10, §18.5).
+        Method::Adaptive => proved(Method::Gouraud, profile, u)
+            .and(proved(Method::CorrectedEuler, profile, u))
+            .map(|_| Status::Derived("docs/float.md §18.5")),
         _ => None,
     }
 }
@@ -313,7 +467,8 @@ pub fn status(method: crate::Method, profile: Profile, u: f64) -> Option<Status>
 /// The bound of `method` under `profile` (not `Reference`, whose bounds are
 /// [`crate::tolerance::bound`]) on a span of `n` steps and smallest `q_i` `q_min`, in
 /// the format of unit roundoff `u`: the proved bound ([`proved_bound`]) or the derived
-/// one ([`phong_ieee`]); `None` where neither covers it.
+/// one ([`phong_derived`], [`euler_derived`], [`duff_derived`]); `None` where neither
+/// covers it.
 pub fn profile_bound(
     method: crate::Method,
     profile: Profile,
@@ -321,6 +476,7 @@ pub fn profile_bound(
     q_min: f64,
     u: f64,
 ) -> Option<f64> {
+    use crate::Method;
     if let Profile::Fixed {
         int_bits,
         frac_bits,
@@ -330,10 +486,23 @@ pub fn profile_bound(
     }
     match status(method, profile, u)? {
         Status::Proved(_) => proved_bound(method, profile, n, u),
-        Status::Derived(_) => match method {
-            crate::Method::Phong => phong_ieee(n, q_min, u),
-            _ => None,
-        },
+        Status::Derived(_) => {
+            let a = arith(profile, u)?;
+            match method {
+                Method::Phong => phong_derived(&a, n, q_min),
+                Method::Euler => euler_derived(&a, n),
+                Method::Duff | Method::SymmetricPhong => duff_derived(&a, n, q_min),
+                Method::Adaptive => Some(
+                    proved_bound(Method::Gouraud, profile, n, u)?.max(proved_bound(
+                        Method::CorrectedEuler,
+                        profile,
+                        n,
+                        u,
+                    )?),
+                ),
+                _ => None,
+            }
+        }
     }
 }
 

@@ -1146,3 +1146,163 @@ fn fast_kernels_pass_under_ieee_at_every_n() {
     }
     assert!(checked > 1000, "{checked}");
 }
+
+// ------------------------------------- the published sets, through the test kit
+
+/// The exact spans of a published set's cases, by id.
+fn published_spans(set: &str) -> std::collections::HashMap<String, Span<Q>> {
+    let file = phong_approx::testkit::published(set).unwrap();
+    file.cases
+        .iter()
+        .map(|c| {
+            let s = phong_approx::conformance::integrity::case_span(c).unwrap();
+            (c.id.clone(), s)
+        })
+        .collect()
+}
+
+/// An implementation written here, by its method and name.
+type Imp<T> = (
+    Method,
+    &'static str,
+    fn(Variant, &Span<Q>) -> Vec<Q>,
+    std::marker::PhantomData<T>,
+);
+
+fn implementations<T: Native + 'static>() -> Vec<Imp<T>> {
+    use std::marker::PhantomData as P;
+    vec![
+        (Method::Gouraud, "g += dp", gouraud::<T>, P),
+        (
+            Method::CorrectedEuler,
+            "p += t; t += ds",
+            corrected_euler::<T>,
+            P,
+        ),
+        (
+            Method::CorrectedEuler,
+            "closed form",
+            corrected_euler_closed::<T>,
+            P,
+        ),
+        (Method::Euler, "E += s; s += ds", euler::<T>, P),
+        (Method::Euler, "closed form", euler_closed::<T>, P),
+        (Method::Duff, "forward differences", duff::<T>, P),
+        (
+            Method::Phong,
+            "Horner",
+            |v, s| phong::<T>(PhongForm::Horner, v, s),
+            P,
+        ),
+        (
+            Method::Phong,
+            "per-pixel normal",
+            |v, s| phong::<T>(PhongForm::PerPixel, v, s),
+            P,
+        ),
+        (
+            Method::Phong,
+            "normalize, then dot",
+            |v, s| phong::<T>(PhongForm::NormalizeThenDot, v, s),
+            P,
+        ),
+    ]
+}
+
+/// Every implementation of this file — Gouraud, corrected Euler (recurrence and closed
+/// form), Euler (recurrence and closed form), Duff, Phong (Horner, per-pixel normal,
+/// normalize-then-dot), each in three variants (orders, `mul_add`, reciprocals) —
+/// passes `check` under `ieee` on every published set, in `f32` and `f64`, through
+/// the test kit (the path a user's `cargo test` takes).
+#[test]
+fn correct_variants_pass_the_published_sets_under_ieee() {
+    use phong_approx::testkit::Suite;
+    let mut runs = 0;
+    for set in ["typical", "edge", "paper"] {
+        let spans = published_spans(set);
+        for v in VARIANTS {
+            for (m, name, imp, _) in implementations::<f32>() {
+                let r = Suite::set(set)
+                    .method(m)
+                    .profile(Profile::Ieee)
+                    .check_f32(|x| {
+                        imp(v, &spans[x.id])
+                            .iter()
+                            .map(|y| y.to_f64() as f32)
+                            .collect()
+                    });
+                assert!(r.is_ok(), "{set} {m} {name} {v:?} f32:\n{r}");
+                runs += 1;
+            }
+            for (m, name, imp, _) in implementations::<f64>() {
+                let r = Suite::set(set)
+                    .method(m)
+                    .profile(Profile::Ieee)
+                    .check_f64(|x| imp(v, &spans[x.id]).iter().map(|y| y.to_f64()).collect());
+                assert!(r.is_ok(), "{set} {m} {name} {v:?} f64:\n{r}");
+                runs += 1;
+            }
+        }
+    }
+    assert_eq!(runs, 3 * 3 * 9 * 2);
+}
+
+/// The software GPUs pass `check` under `shader` on every published set: Gouraud and
+/// corrected Euler (the recurrences), Euler, Duff and Phong (Horner). The default
+/// tier runs the truncating, flushing, unfused GPU; the extensive tier all four.
+#[test]
+fn the_software_gpus_pass_the_published_sets_under_shader() {
+    use phong_approx::testkit::Suite;
+    let gpus = if extensive() { &GPUS[..] } else { &GPUS[..1] };
+    let recurrence = |method: Method| {
+        move |g: Gpu, s: &Span<Q>| -> Vec<Q> {
+            let [pa, dp, ds, t0] = gpu_setup(g, s);
+            let mut out = vec![pa.clone()];
+            let (mut p, mut t) = (pa, t0);
+            for _ in 0..s.n {
+                if method == Method::Gouraud {
+                    p = g.add(&p, &dp);
+                } else {
+                    p = g.add(&p, &t);
+                    t = g.add(&t, &ds);
+                }
+                out.push(p.clone());
+            }
+            out
+        }
+    };
+    type GpuImp = Box<dyn Fn(Gpu, &Span<Q>) -> Vec<Q>>;
+    let imps: Vec<(Method, GpuImp)> = vec![
+        (Method::Gouraud, Box::new(recurrence(Method::Gouraud))),
+        (
+            Method::CorrectedEuler,
+            Box::new(recurrence(Method::CorrectedEuler)),
+        ),
+        (Method::Euler, Box::new(gpu_euler)),
+        (
+            Method::Duff,
+            Box::new(|g, s| gpu_duff_or_phong(g, s, false)),
+        ),
+        (
+            Method::Phong,
+            Box::new(|g, s| gpu_duff_or_phong(g, s, true)),
+        ),
+    ];
+    for set in ["typical", "edge", "paper"] {
+        let spans = published_spans(set);
+        for &g in gpus {
+            for (m, imp) in &imps {
+                let r = Suite::set(set)
+                    .method(*m)
+                    .profile(Profile::Shader)
+                    .check_f32(|x| {
+                        imp(g, &spans[x.id])
+                            .iter()
+                            .map(|y| y.to_f64() as f32)
+                            .collect()
+                    });
+                assert!(r.is_ok(), "{set} {m} {g:?}:\n{r}");
+            }
+        }
+    }
+}

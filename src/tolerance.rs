@@ -332,6 +332,29 @@ pub fn bishop_weimer(_: Method, n: u32, _: f64, shape: Option<&Shape>, u: f64) -
     related::bishop_weimer(shape?, u)
 }
 
+/// The bound of a specular value `max(0, v)^s` from the bound `b` of the base value
+/// `v` (`0 ≤ v ≤ v_max`): an error `e ≤ b` in `v` moves `v^s` by at most
+/// `s·(v_max + b)^(s−1)·b` (the mean value theorem), and evaluating the power adds a
+/// relative `γ_s` (`s − 1` products in any order, or a `pow` within an ulp) of at
+/// most `(v_max + b)^s`. The values may exceed 1 (corrected Euler reaches about
+/// 1.19), so the factor is taken at `v_max`, not at 1. Attacked by
+/// `tests/profiles.rs::specular_bound_holds`.
+///
+/// Each of the `s − 1` products may also underflow, off by half the smallest subnormal
+/// `η` (`2^-150` in binary32, `2^-1075` in binary64) instead of relatively, which the
+/// later products carry at most `max(1, v_max + b)^s` times: `s·η·max(1, v_max + b)^s`
+/// more (a large `s` on a small value underflows to zero: this is that term).
+pub fn specular_bound(b: f64, s: f64, v_max: f64, u: f64) -> f64 {
+    let g = s * u / (1.0 - s * u);
+    let eta = if u == f64::from(f32::EPSILON) / 2.0 {
+        2f64.powi(-150)
+    } else {
+        2f64.powi(-1075)
+    };
+    let top = (v_max + b).max(1.0).powf(s);
+    (s * (v_max + b).powf(s - 1.0) * b + g * (v_max + b).powf(s) + s * eta * top) * (1.0 + 1e-12)
+}
+
 /// One step of a cosine table of `size` entries over 0–90°: the largest difference
 /// between neighbouring entries, and so what reading the neighbour costs.
 pub fn table_step(size: u32) -> f64 {

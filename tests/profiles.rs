@@ -1306,3 +1306,109 @@ fn the_software_gpus_pass_the_published_sets_under_shader() {
         }
     }
 }
+
+/// The specular bound (`tolerance::specular_bound`) on top of the `ieee` bound of
+/// corrected Euler holds for `max(0, v)^s` computed by `s − 1` products (left to
+/// right, and by squaring) and by `powi`, in `f32` and `f64`, on spans whose values
+/// exceed 1 (up to about 1.19, where the factor `s·v_max^(s−1)` is largest) and on the
+/// profile spans, for `s` from 1 to 128; exact values `max(0, CE_i)^s` in rationals.
+#[test]
+fn specular_bound_holds() {
+    use phong_approx::tolerance::specular_bound;
+    use std::ops::Mul;
+    fn pow_by_products<T: Copy + Mul<Output = T>>(x: T, s: u32, squaring: bool) -> T {
+        if squaring {
+            let (mut r, mut b, mut e) = (None::<T>, x, s);
+            while e > 0 {
+                if e & 1 == 1 {
+                    r = Some(r.map_or(b, |r| r * b));
+                }
+                e >>= 1;
+                if e > 0 {
+                    b = b * b;
+                }
+            }
+            r.unwrap()
+        } else {
+            (1..s).fold(x, |acc, _| acc * x)
+        }
+    }
+    let mut all: Vec<Span<Q>> = spans()
+        .into_iter()
+        .map(|(_, s)| s)
+        .filter(|s| s.n <= tiered(64, 4096))
+        .collect();
+    // Normals 90° apart with L halfway: corrected Euler's values rise to about 1.19.
+    let z = Stereo(0, 0, 1);
+    for n in [2, 3, 7, 64, 255] {
+        for (nb, l) in [
+            (Stereo(1, 0, 1), Stereo(1, 0, 3)),
+            (Stereo(5, 0, 2), Stereo(3, 1, 7)),
+        ] {
+            let c = Case {
+                why: "values above 1",
+                na: z,
+                nb,
+                l,
+                n,
+            };
+            all.extend(c.span());
+        }
+    }
+    let (mut checked, mut above_one, mut worst) = (0, 0, 0f64);
+    for s in &all {
+        let exact = Method::CorrectedEuler.values(s).unwrap();
+        let v_max = exact
+            .iter()
+            .map(|x| x.to_f64().max(0.0))
+            .fold(0.0, f64::max)
+            * (1.0 + 1e-12);
+        if v_max > 1.0 {
+            above_one += 1;
+        }
+        for sh in [1u32, 3, 16, 128] {
+            let want: Vec<Q> = exact
+                .iter()
+                .map(|x| {
+                    let x = if x.is_positive() {
+                        x.clone()
+                    } else {
+                        Q::zero()
+                    };
+                    num_traits::pow(x, sh as usize)
+                })
+                .collect();
+            macro_rules! run {
+                ($t:ty) => {{
+                    let u = <$t as Native>::U;
+                    let Some(b) = profile_bound_of(Method::CorrectedEuler, Profile::Ieee, s, u) else {
+                        continue;
+                    };
+                    let bs = specular_bound(b, f64::from(sh), v_max, u);
+                    for v in &VARIANTS[..2] {
+                        let v = *v;
+                        let base: Vec<$t> = corrected_euler::<$t>(v, s).iter().map(|x| x.to_f64() as $t).collect();
+                        for how in 0..3 {
+                            for (i, (x, w)) in base.iter().zip(&want).enumerate() {
+                                let x = x.max(0.0);
+                                let y = match how {
+                                    0 => pow_by_products(x, sh, false),
+                                    1 => pow_by_products(x, sh, true),
+                                    _ => x.powi(sh as i32),
+                                };
+                                let e = (y.q() - w.clone()).abs().to_f64();
+                                worst = worst.max(e / bs);
+                                assert!(e <= bs, "{} s = {sh}, way {how}, {v:?}: pixel {i} of n = {}: {e:e} > {bs:e}", stringify!($t), s.n);
+                            }
+                        }
+                        checked += 1;
+                    }
+                }};
+            }
+            run!(f32);
+            run!(f64);
+        }
+    }
+    assert!(checked > 500 && above_one >= 5, "{checked} {above_one}");
+    eprintln!("specular: {checked} runs, {above_one} spans above 1, worst {worst:.3} of the bound");
+}

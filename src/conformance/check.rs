@@ -745,10 +745,7 @@ fn case_report(
     });
     let raise = |b: f64, u: f64| match spec {
         None => b,
-        Some((s, v_max)) => {
-            let g = s * u / (1.0 - s * u);
-            (s * (v_max + b).powf(s - 1.0) * b + g * (v_max + b).powf(s)) * (1.0 + 1e-12)
-        }
+        Some((s, v_max)) => crate::tolerance::specular_bound(b, s, v_max, u),
     };
     let allowed_abs = match tol {
         Tolerance::Abs(x) => Some(x),

@@ -36,8 +36,11 @@ pub enum Profile {
     /// division by `n` or 2 through a reciprocal.
     Ieee,
     /// The Vulkan/WGSL precision rules for 32-bit floats: add, sub and mul rounded in
-    /// any direction (nearest or toward zero), division within 2.5 ulp, denormal
-    /// inputs and results flushed to zero, reassociation and fusion as in `Ieee`.
+    /// any direction (nearest or toward zero), division within 2.5 ulp, `sqrt` as
+    /// `1/inversesqrt`, denormal inputs and results flushed to zero, any order of
+    /// each dot product and sum, fused or not. The Coq theorems (Gouraud, corrected
+    /// Euler) take a division by `n` as one 2.5-ulp division; the derived bounds
+    /// (Phong, Euler, Duff) also cover `·(1/n)`.
     Shader,
     /// Fixed point `Qm.f` as a hardware span unit runs it (`fixed:m.f`): the set-up
     /// (`p_a`, `t_0`, `ds`, or Gouraud's `dp`) computed exactly or far more precisely

@@ -348,6 +348,25 @@ impl Method {
             .map(|_| ())
     }
 
+    /// Fills `out[i]` with `max(0, v_i)^shininess`, where `v` is the method run on
+    /// `span_h` — a span whose light vector is the unit half vector `H` (§6.1: the
+    /// same recurrences for `N·H`; [`crate::specular::power`]).
+    ///
+    /// # Errors
+    /// As [`Method::shade`].
+    pub fn shade_specular<T: Real>(
+        &self,
+        span_h: &Span<T>,
+        shininess: u32,
+        out: &mut [T],
+    ) -> Result<(), SpanError> {
+        self.shade(span_h, out)?;
+        for o in out.iter_mut() {
+            *o = crate::specular::power(o, shininess);
+        }
+        Ok(())
+    }
+
     /// Shades `span` into a new vector of `n + 1` values ([`Method::shade`]).
     ///
     /// # Errors
@@ -576,7 +595,7 @@ impl FromStr for Method {
             .iter()
             .find(|m| !matches!(m, Method::AngularTable(_)) && m.info().name == s)
             .copied()
-            .ok_or_else(|| UnknownMethod(crate::conformance::shown(s)))
+            .ok_or_else(|| UnknownMethod(crate::error::shown(s)))
     }
 }
 

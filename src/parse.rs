@@ -52,7 +52,7 @@ pub fn parse_rational(s: &str) -> Result<BigRational, ParseError> {
     if t.chars().count() > MAX_NUMBER_CHARS {
         return Err(ParseError::TooLong(t.chars().count()));
     }
-    let s = &crate::conformance::shown(s);
+    let s = &crate::error::shown(s);
     if let Some((a, b)) = t.split_once('/') {
         let num = parse_decimal(a.trim()).ok_or_else(|| ParseError::NotANumber(s.to_string()))?;
         let den = parse_decimal(b.trim()).ok_or_else(|| ParseError::NotANumber(s.to_string()))?;

@@ -1,15 +1,12 @@
 //! Specular highlights (eq. 1, §6.1): any span method applied to `N·H`, then the
-//! power `s`; and the full intensity `I = K_d·max(0, N·L) + K_s·max(0, N·H)^s`.
+//! power `s` ([`crate::Method::shade_specular`]); and the full intensity `I = K_d·max(0, N·L) + K_s·max(0, N·H)^s`.
 //!
 //! Where clamping happens: the recurrences themselves are unclamped (they approximate
 //! `N·L/|N|`, which is negative where the light is behind the surface). The clamp
 //! `max(0, ·)` is applied here, before the power and in eq. 1, and the 8-bit
 //! quantiser ([`crate::quantize::level`]) clamps to `[0, 1]` last.
 
-use crate::error::SpanError;
-use crate::method::Method;
-use crate::scalar::{Real, Scalar};
-use crate::span::Span;
+use crate::scalar::Scalar;
 
 /// `max(0, v)^shininess`, by repeated squaring (field operations only: exact for rationals).
 pub fn power<T: Scalar>(v: &T, shininess: u32) -> T {
@@ -26,25 +23,6 @@ pub fn power<T: Scalar>(v: &T, shininess: u32) -> T {
         }
     }
     acc
-}
-
-/// Fills `out[i]` with `max(0, v_i)^shininess`, where `v` is `method` run on `span_h` — a span
-/// whose light vector is the unit half vector `H` (§6.1: the same recurrences for
-/// `N·H`).
-///
-/// # Errors
-/// As the method's `shade`.
-pub fn shade<T: Real>(
-    method: &Method,
-    span_h: &Span<T>,
-    shininess: u32,
-    out: &mut [T],
-) -> Result<(), SpanError> {
-    method.shade(span_h, out)?;
-    for o in out.iter_mut() {
-        *o = power(o, shininess);
-    }
-    Ok(())
 }
 
 /// Eq. 1: `I = K_d·max(0, N·L) + K_s·max(0, N·H)^shininess` from the two dot

@@ -188,7 +188,9 @@ fn specular_power_and_eq_1() {
     )
     .unwrap();
     let mut out = vec![q(0, 1); 7];
-    phong_approx::specular::shade(&Method::CorrectedEuler, &s, 3, &mut out).unwrap();
+    Method::CorrectedEuler
+        .shade_specular(&s, 3, &mut out)
+        .unwrap();
     let ce = Method::CorrectedEuler.values(&s).unwrap();
     for (o, c) in out.iter().zip(&ce) {
         assert_eq!(*o, power(c, 3));

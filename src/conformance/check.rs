@@ -336,7 +336,7 @@ pub fn parse_results_csv(
 /// size its vector-file case needs and reading stops at the first value too many.
 mod json {
     use super::Reading;
-    use crate::conformance::shown;
+    use crate::error::shown;
     use serde::de::{self, DeserializeSeed, IgnoredAny, MapAccess, SeqAccess, Visitor};
     use std::cell::RefCell;
     use std::collections::HashMap;

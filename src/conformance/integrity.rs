@@ -32,8 +32,7 @@ pub const PUBLISHED: [(&str, &str); 3] = [
     ),
 ];
 
-/// The largest `n` of a case `check` accepts (the published sets go to 4096).
-pub const MAX_CASE_STEPS: u32 = 65_536;
+pub use super::vectors::MAX_CASE_STEPS;
 
 /// The most exact work `check` does to recompute a modified file's expectations,
 /// and `span --scalar exact` does without `--yes` ([`exact_work`] units of about 8 µs

@@ -13,6 +13,9 @@ use num_bigint::BigInt;
 use num_rational::BigRational;
 use serde::{Deserialize, Serialize};
 
+/// The largest `n` of a case `check` accepts (the published sets go to 4096).
+pub const MAX_CASE_STEPS: u32 = 65_536;
+
 /// Version of the vector format (semantic: a major change breaks readers).
 pub const FORMAT_VERSION: &str = "1.1.0";
 
@@ -381,12 +384,12 @@ impl InputsFile {
         };
         let mut cases = Vec::with_capacity(self.cases.len());
         for c in &self.cases {
-            if c.n == 0 || c.n > super::integrity::MAX_CASE_STEPS {
+            if c.n == 0 || c.n > MAX_CASE_STEPS {
                 return Err(format!(
                     "case {}: n = {} is outside 1..={}",
                     super::shown(&c.id),
                     c.n,
-                    super::integrity::MAX_CASE_STEPS
+                    MAX_CASE_STEPS
                 ));
             }
             let h = match &c.specular {

@@ -73,7 +73,7 @@ pub fn index(sh: Shader) -> usize {
 }
 
 /// One triangle set up for one direction (`L` or `H`).
-pub(crate) struct Direction<T> {
+pub struct Direction<T> {
     dir: Vec3<T>,
     vertex: [T; 3],
     gouraud: Affine<T>,
@@ -87,23 +87,15 @@ pub(crate) struct TriangleSetup<T> {
     lambda: [Affine<T>; 3],
     field: (Vec3<T>, Vec3<T>, Vec3<T>),
     dirs: Vec<Direction<T>>,
-    /// The row set-ups' fields, one per direction, when `T` is `f32` or `f64`.
-    rows: FastRows,
-}
-
-/// A triangle's field for the row set-ups of [`crate::fast_rows`] in one float type,
-/// per direction, with the edge stepper that follows the rows down the triangle.
-enum FastRows {
-    /// `T` has no `fast_rows` kernels.
-    None,
-    F32(Vec<RowsDir<f32>>),
-    F64(Vec<RowsDir<f64>>),
+    /// The row set-ups' fields of [`crate::fast_rows`], one per direction (empty
+    /// when `T` has no `fast_rows` kernels: [`RowKernels`]).
+    rows: Vec<RowsDir<T>>,
 }
 
 /// One direction's field, and the stepper's last row: its centroid-relative `(x0, y)`
 /// and its state (the same row asked again gets the same state; the next row down
 /// is stepped to; any other row restarts from the field).
-struct RowsDir<F> {
+pub struct RowsDir<F> {
     field: Field<F>,
     stepper: Cell<Option<(f64, f64, EdgeStepper<F>)>>,
 }
@@ -166,61 +158,79 @@ fn rsqrt_f64(_: &Field<f64>, _: RowSetup, _: f64, _: f64, _: u32, _: &mut [f64])
     None
 }
 
-impl FastRows {
-    /// The fields of `field` lit by each of `dirs`, if `T` is `f32` or `f64`.
-    fn new<T: Real + 'static>(field: &(Vec3<T>, Vec3<T>, Vec3<T>), dirs: &[Direction<T>]) -> Self {
-        use std::any::TypeId;
-        macro_rules! build {
-            ($f:ident) => {
-                dirs.iter()
-                    .map(|d| {
-                        let a = |v: &Vec3<T>| {
-                            [v.x.to_f64() as $f, v.y.to_f64() as $f, v.z.to_f64() as $f]
-                        };
-                        RowsDir {
-                            field: Field::<$f>::new(
-                                a(&field.0),
-                                a(&field.1),
-                                a(&field.2),
-                                a(&d.dir),
-                            ),
-                            stepper: Cell::new(None),
-                        }
-                    })
-                    .collect()
-            };
-        }
-        // `to_f64` then `as` is exact when `T` is the type itself.
-        if TypeId::of::<T>() == TypeId::of::<f32>() {
-            FastRows::F32(build!(f32))
-        } else if TypeId::of::<T>() == TypeId::of::<f64>() {
-            FastRows::F64(build!(f64))
-        } else {
-            FastRows::None
-        }
-    }
+/// The number types the torus harness shades in: [`Real`] types, with the row
+/// set-ups of [`crate::fast_rows`] where the type has them (`f32`, `f64`). Sealed:
+/// implemented for `f32`, `f64`, the low-precision types of [`crate::lowp`] and
+/// [`crate::BigRational`].
+pub trait RowKernels: sealed::Rows {}
 
-    /// Shades a row with `r` for direction `d` into `o` (of `T`, which is the
-    /// type of the fields); `None` where `T` or the set-up has no kernel.
-    // A `Vec`, not a slice: `Any` downcasts only sized types.
-    #[allow(clippy::ptr_arg)]
-    fn shade<T: 'static>(
-        &self,
-        d: usize,
-        r: RowSetup,
-        x0: f64,
-        y: f64,
-        n: u32,
-        o: &mut Vec<T>,
-    ) -> Option<()> {
-        let o: &mut dyn std::any::Any = o;
-        match self {
-            FastRows::F32(v) => shade_rows_f32(&v[d], r, x0, y, n, o.downcast_mut::<Vec<f32>>()?),
-            FastRows::F64(v) => shade_rows_f64(&v[d], r, x0, y, n, o.downcast_mut::<Vec<f64>>()?),
-            FastRows::None => None,
+impl<T: sealed::Rows> RowKernels for T {}
+
+mod sealed {
+    use super::{Direction, RowSetup, RowsDir};
+    use crate::scalar::Real;
+    use crate::Vec3;
+
+    /// What [`super::RowKernels`] provides; the defaults are "no row kernels".
+    pub trait Rows: Real + 'static {
+        /// The row set-ups' field of `field` lit by each of `dirs`, with its stepper.
+        fn rows_of(
+            _field: &(Vec3<Self>, Vec3<Self>, Vec3<Self>),
+            _dirs: &[Direction<Self>],
+        ) -> Vec<RowsDir<Self>> {
+            Vec::new()
+        }
+
+        /// Shades a row with `r` for one direction's field into `o`; `None` where
+        /// the type or the set-up has no kernel.
+        fn shade_rows(
+            _d: &RowsDir<Self>,
+            _r: RowSetup,
+            _x0: f64,
+            _y: f64,
+            _n: u32,
+            _o: &mut [Self],
+        ) -> Option<()> {
+            None
         }
     }
 }
+
+macro_rules! row_kernels {
+    ($f:ident, $shade:ident) => {
+        impl sealed::Rows for $f {
+            fn rows_of(
+                field: &(Vec3<$f>, Vec3<$f>, Vec3<$f>),
+                dirs: &[Direction<$f>],
+            ) -> Vec<RowsDir<$f>> {
+                let a = |v: &Vec3<$f>| [v.x, v.y, v.z];
+                dirs.iter()
+                    .map(|d| RowsDir {
+                        field: Field::<$f>::new(a(&field.0), a(&field.1), a(&field.2), a(&d.dir)),
+                        stepper: Cell::new(None),
+                    })
+                    .collect()
+            }
+
+            fn shade_rows(
+                d: &RowsDir<$f>,
+                r: RowSetup,
+                x0: f64,
+                y: f64,
+                n: u32,
+                o: &mut [$f],
+            ) -> Option<()> {
+                $shade(d, r, x0, y, n, o)
+            }
+        }
+    };
+}
+row_kernels!(f32, shade_rows_f32);
+row_kernels!(f64, shade_rows_f64);
+impl sealed::Rows for crate::lowp::f16 {}
+impl sealed::Rows for crate::lowp::I16F16 {}
+impl sealed::Rows for crate::lowp::I8F8 {}
+impl sealed::Rows for crate::BigRational {}
 
 fn to_vec<T: Real>(v: G3) -> Option<Vec3<T>> {
     Vec3::new(f64::from(v.x), f64::from(v.y), f64::from(v.z)).cast()
@@ -231,7 +241,7 @@ fn to_t<T: Real>(v: f64) -> T {
     T::from_rational(&r)
 }
 
-impl<T: Real + 'static> TriangleSetup<T> {
+impl<T: RowKernels> TriangleSetup<T> {
     /// `rel`: vertex positions relative to the centroid (computed in `f64`);
     /// `normals`: unit vertex normals; `dirs`: unit directions.
     pub(crate) fn new(rel: [(f64, f64); 3], normals: [G3; 3], dirs: &[G3]) -> Option<Self> {
@@ -263,7 +273,7 @@ impl<T: Real + 'static> TriangleSetup<T> {
         }
         Some(TriangleSetup {
             lambda: tri.lambda.clone(),
-            rows: FastRows::new(&field, &out),
+            rows: T::rows_of(&field, &out),
             field,
             dirs: out,
         })
@@ -289,7 +299,7 @@ pub(crate) struct RowInfo<T> {
 /// Shades one row of `n + 1` pixels starting at centroid-relative `(x0, y)` for
 /// direction `d`, for every shader in `which`, into `out[shader index]`.
 #[allow(clippy::too_many_arguments)]
-pub(crate) fn shade_row<T: Real + 'static>(
+pub(crate) fn shade_row<T: RowKernels>(
     s: &TriangleSetup<T>,
     d: usize,
     x0: f64,
@@ -345,7 +355,7 @@ pub(crate) fn shade_row<T: Real + 'static>(
             }
             (Shader::BishopWeimerTriangle, _) => dir.taylor.shade_row(&tx0, &ty, o),
             (Shader::Seiler, _) => dir.seiler.shade_row(&tx0, &ty, o),
-            (Shader::Rows(r), _) => s.rows.shade(d, r, x0, y, n, o)?,
+            (Shader::Rows(r), _) => T::shade_rows(s.rows.get(d)?, r, x0, y, n, o)?,
             (Shader::Span(_), None) => o[0] = p_a.clone(),
             (Shader::Span(m), Some(span)) => {
                 if let Some(d) = m.run(span, prep, o).ok()? {

@@ -10,7 +10,7 @@
 //!   accumulated error exceeds one 8-bit level: the set-up computed in `f64` and
 //!   rounded to the precision ([`Span::cast`]), the steps in the precision.
 
-use super::compare::{shade_row, triangle_inputs, Shader, TriangleSetup, COLUMNS};
+use super::compare::{shade_row, triangle_inputs, RowKernels, Shader, TriangleSetup, COLUMNS};
 use super::frame::{polygons, Split};
 use super::mesh::Mesh;
 use super::render::{Deviation, Scene};
@@ -70,7 +70,7 @@ impl PrecisionStats {
 
 /// Every drawn row of front-facing triangles of frame `f` (no depth test: every
 /// span counts), each shader in `T` against `f64`.
-pub fn frame<T: Real + 'static>(mesh: &Mesh, scene: &Scene, f: u32) -> PrecisionStats {
+pub fn frame<T: RowKernels>(mesh: &Mesh, scene: &Scene, f: u32) -> PrecisionStats {
     let dirs = [scene.light];
     let table_t = Prepared::new(Method::AngularTable(crate::method::SOURCE_TABLE), T::one())
         .expect("256 entries");
@@ -156,7 +156,7 @@ pub fn torus(
     tick: &(dyn Fn() + Sync),
 ) -> Option<PrecisionStats> {
     use rayon::prelude::*;
-    fn go<T: Real + 'static>(
+    fn go<T: RowKernels>(
         mesh: &Mesh,
         scene: &Scene,
         frames: u32,

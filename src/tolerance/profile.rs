@@ -96,7 +96,7 @@ impl FromStr for Profile {
                 }),
                 None => Err(format!(
                     "'{}' is not fixed:M.F with 1 ≤ M ≤ 64 integer bits and 1 ≤ F ≤ 62 fractional bits (e.g. fixed:16.16)",
-                    crate::conformance::shown(s)
+                    crate::error::shown(s)
                 )),
             };
         }
@@ -106,7 +106,7 @@ impl FromStr for Profile {
             .ok_or_else(|| {
                 format!(
                     "unknown profile '{}' (expected reference, ieee, shader or fixed:M.F)",
-                    crate::conformance::shown(s)
+                    crate::error::shown(s)
                 )
             })
     }

@@ -1,0 +1,322 @@
+//! The library's layers (ARCHITECTURE.md, "Layers"): every file of `src/` (the
+//! library; the CLI is the binary's and imports the library by name) imports only
+//! from its own layer or lower ones, and no files import each other in a circle.
+//!
+//! Imports are read from the code as text: `crate::a::b` paths and `use crate::{…}`
+//! groups, `super::` paths, and the crate root's re-exports (`crate::Method` is
+//! `src/method.rs`); comments and the `#[cfg(test)]` modules at the end of a file
+//! are left out (a unit test may use any layer).
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::fs;
+use std::path::{Path, PathBuf};
+
+/// Layers from the ground up: a file's layer is that of the longest prefix of its
+/// path (relative to `src/`) listed here.
+const LAYERS: &[(&str, u32)] = &[
+    // Errors and the message helpers; exact arithmetic with no crate dependency.
+    ("error.rs", 0),
+    ("reference/decimal.rs", 0),
+    ("reference/transcendental.rs", 0),
+    // The number types.
+    ("scalar.rs", 1),
+    ("vector.rs", 2),
+    ("lowp.rs", 2),
+    ("quantize.rs", 2),
+    // The exact references and the parsers of exact numbers.
+    ("reference/", 3),
+    ("parse.rs", 3),
+    // The scan line.
+    ("span.rs", 4),
+    // The methods, each generic over the scalar.
+    ("gouraud.rs", 5),
+    ("euler.rs", 5),
+    ("corrected_euler.rs", 5),
+    ("duff.rs", 5),
+    ("phong.rs", 5),
+    ("symmetric_phong.rs", 5),
+    ("angular.rs", 5),
+    ("adaptive.rs", 5),
+    ("specular.rs", 5),
+    ("related/", 5),
+    // The catalogue.
+    ("method.rs", 6),
+    // Fast kernels.
+    ("fast.rs", 7),
+    ("fast_rows.rs", 7),
+    ("fixed_span.rs", 7),
+    // The float bounds.
+    ("tolerance.rs", 8),
+    ("tolerance/", 8),
+    // The conformance kit and the torus harness.
+    ("conformance/", 9),
+    ("raster/", 9),
+    // The test kit.
+    ("testkit.rs", 10),
+];
+
+fn src() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("src")
+}
+
+/// The library's files, relative to `src/` (the CLI, `main.rs` and `lib.rs` apart).
+fn files() -> Vec<String> {
+    fn walk(dir: &Path, base: &Path, out: &mut Vec<String>) {
+        for e in fs::read_dir(dir).unwrap() {
+            let p = e.unwrap().path();
+            if p.is_dir() {
+                walk(&p, base, out);
+            } else if p.extension().is_some_and(|x| x == "rs") {
+                out.push(
+                    p.strip_prefix(base)
+                        .unwrap()
+                        .to_string_lossy()
+                        .replace('\\', "/"),
+                );
+            }
+        }
+    }
+    let mut out = Vec::new();
+    walk(&src(), &src(), &mut out);
+    out.retain(|f| !f.starts_with("cli/") && f != "main.rs" && f != "lib.rs");
+    out.sort();
+    out
+}
+
+fn layer(file: &str) -> u32 {
+    LAYERS
+        .iter()
+        .filter(|(prefix, _)| file.starts_with(prefix))
+        .max_by_key(|(prefix, _)| prefix.len())
+        .map(|&(_, l)| l)
+        .unwrap_or_else(|| panic!("src/{file} is in no layer: add it to LAYERS (tests/layers.rs)"))
+}
+
+/// A module path (`["reference", "transcendental", "sqrt"]`) to the file that defines
+/// its longest prefix.
+fn resolve(
+    path: &[String],
+    all: &BTreeSet<String>,
+    reexports: &BTreeMap<String, String>,
+) -> Option<String> {
+    if let Some(first) = path.first() {
+        if let Some(f) = reexports.get(first) {
+            return Some(f.clone());
+        }
+    }
+    for k in (1..=path.len()).rev() {
+        let stem = path[..k].join("/");
+        for cand in [format!("{stem}.rs"), format!("{stem}/mod.rs")] {
+            if all.contains(&cand) {
+                return Some(cand);
+            }
+        }
+    }
+    None
+}
+
+/// The code of a file without comments and without its trailing test module.
+fn code(text: &str) -> String {
+    let text = match text.find("#[cfg(test)]\nmod tests") {
+        Some(i) => &text[..i],
+        None => text,
+    };
+    text.lines()
+        .filter(|l| !l.trim_start().starts_with("//"))
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+/// Every module path the code names from `crate::` (or from `super::`, resolved
+/// against the file's own module).
+fn imported_paths(file: &str, text: &str) -> Vec<Vec<String>> {
+    let module: Vec<String> = {
+        let mut m: Vec<String> = file
+            .trim_end_matches(".rs")
+            .split('/')
+            .map(String::from)
+            .collect();
+        if m.last().is_some_and(|x| x == "mod") {
+            m.pop();
+        }
+        m
+    };
+    // The path at the start of `s`: identifiers joined by `::`.
+    let ident = |s: &str| -> Vec<String> {
+        let s: String = s
+            .trim_start()
+            .chars()
+            .take_while(|&c| c.is_alphanumeric() || c == '_' || c == ':')
+            .collect();
+        s.split("::")
+            .take_while(|x| !x.is_empty())
+            .map(String::from)
+            .collect()
+    };
+    let mut out = Vec::new();
+    let code = code(text);
+    for (root, base) in [
+        ("crate::", Vec::new()),
+        ("super::", module[..module.len().saturating_sub(1)].to_vec()),
+    ] {
+        let mut rest = code.as_str();
+        while let Some(i) = rest.find(root) {
+            let before = rest[..i].chars().last();
+            rest = &rest[i + root.len()..];
+            if before.is_some_and(|c| c.is_alphanumeric() || c == '_') {
+                continue;
+            }
+            if let Some(group) = rest.strip_prefix('{') {
+                // use crate::{a::b, c::{d, e}}: each top-level item of the group.
+                let (mut depth, mut item, mut end) = (0, String::new(), 0);
+                for (k, c) in group.char_indices() {
+                    match c {
+                        '{' => depth += 1,
+                        '}' if depth == 0 => {
+                            end = k;
+                            break;
+                        }
+                        '}' => depth -= 1,
+                        ',' if depth == 0 => {
+                            out.push([base.clone(), ident(&item)].concat());
+                            item.clear();
+                            continue;
+                        }
+                        _ => {}
+                    }
+                    if depth == 0 || c != '{' {
+                        item.push(c);
+                    }
+                }
+                out.push([base.clone(), ident(&item)].concat());
+                rest = &group[end..];
+            } else {
+                out.push([base.clone(), ident(rest)].concat());
+            }
+        }
+    }
+    out.retain(|p| !p.is_empty());
+    out
+}
+
+/// The file-to-file imports of the library.
+fn imports() -> BTreeMap<String, BTreeSet<String>> {
+    let all: BTreeSet<String> = files().into_iter().collect();
+    let lib = fs::read_to_string(src().join("lib.rs")).unwrap();
+    // pub use module::{A, B}; → A, B live in module.
+    let mut reexports = BTreeMap::new();
+    for line in lib.lines().filter(|l| l.starts_with("pub use ")) {
+        let body = line.trim_start_matches("pub use ").trim_end_matches(';');
+        if let Some((module, names)) = body.split_once("::") {
+            let file = format!("{module}.rs");
+            if !all.contains(&file) {
+                continue;
+            }
+            for name in names.trim_matches(|c| c == '{' || c == '}').split(',') {
+                reexports.insert(name.trim().to_string(), file.clone());
+            }
+        }
+    }
+    let mut graph = BTreeMap::new();
+    for f in &all {
+        let text = fs::read_to_string(src().join(f)).unwrap();
+        let mut to = BTreeSet::new();
+        for p in imported_paths(f, &text) {
+            if let Some(t) = resolve(&p, &all, &reexports) {
+                if &t != f {
+                    to.insert(t);
+                }
+            }
+        }
+        graph.insert(f.clone(), to);
+    }
+    graph
+}
+
+#[test]
+fn no_file_imports_from_a_higher_layer() {
+    let mut up = Vec::new();
+    for (f, to) in imports() {
+        for t in to {
+            if layer(&t) > layer(&f) {
+                up.push(format!(
+                    "src/{f} (layer {}) imports src/{t} (layer {})",
+                    layer(&f),
+                    layer(&t)
+                ));
+            }
+        }
+    }
+    assert!(
+        up.is_empty(),
+        "imports from a higher layer:\n{}",
+        up.join("\n")
+    );
+}
+
+#[test]
+fn no_files_import_each_other_in_a_circle() {
+    let g = imports();
+    // Depth-first search for a back edge; the circle is the stack from its target.
+    fn visit(
+        f: &str,
+        g: &BTreeMap<String, BTreeSet<String>>,
+        state: &mut BTreeMap<String, u8>,
+        stack: &mut Vec<String>,
+    ) -> Option<Vec<String>> {
+        state.insert(f.to_string(), 1);
+        stack.push(f.to_string());
+        for t in g.get(f).into_iter().flatten() {
+            match state.get(t.as_str()) {
+                Some(1) => {
+                    let i = stack.iter().position(|x| x == t).unwrap();
+                    let mut c = stack[i..].to_vec();
+                    c.push(t.clone());
+                    return Some(c);
+                }
+                Some(_) => {}
+                None => {
+                    if let Some(c) = visit(t, g, state, stack) {
+                        return Some(c);
+                    }
+                }
+            }
+        }
+        stack.pop();
+        state.insert(f.to_string(), 2);
+        None
+    }
+    let mut state = BTreeMap::new();
+    for f in g.keys() {
+        if !state.contains_key(f.as_str()) {
+            if let Some(c) = visit(f, &g, &mut state, &mut Vec::new()) {
+                panic!("an import circle: {}", c.join(" → "));
+            }
+        }
+    }
+}
+
+/// The reader sees what it must: a known import of each kind is found, so the two
+/// tests above cannot pass by reading nothing.
+#[test]
+fn the_import_reader_finds_known_imports() {
+    let g = imports();
+    let has = |a: &str, b: &str| g[a].contains(b);
+    assert!(has("method.rs", "span.rs"), "use crate::span::Span");
+    assert!(
+        has("tolerance/profile.rs", "method.rs"),
+        "crate::Method through lib.rs"
+    );
+    assert!(
+        has("conformance/integrity.rs", "conformance/vectors.rs"),
+        "super::vectors"
+    );
+    assert!(
+        has("scalar.rs", "reference/transcendental.rs"),
+        "a path in code"
+    );
+    assert!(files().len() > 40);
+    for f in files() {
+        layer(&f);
+    }
+}

@@ -85,6 +85,40 @@ pub struct Info {
     /// Whether part of the method is a reconstruction from an incomplete description
     /// (`docs/comparison.md`).
     pub reconstructed: bool,
+    /// Where the method comes from: the paper, the second source, or the related work.
+    pub family: Family,
+    /// The cost of one pixel of its exact run, in units of corrected Euler's (about
+    /// 8 µs in release: `docs/performance.md`, "Exact runs"), for the budgets of
+    /// `check` and `span` (`conformance::integrity::exact_work`).
+    pub exact_cost: u64,
+    /// How far its values may range on exact unit inputs (what a vector file's
+    /// expectations are checked against).
+    pub range: ValueRange,
+}
+
+/// Where a method comes from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Family {
+    /// The paper's own methods and the ones it compares itself with (Phong, Duff,
+    /// Gouraud, Euler, corrected Euler, symmetric Phong, the adaptive scheme).
+    Paper,
+    /// The second source's angular interpolation.
+    Angular,
+    /// A related method along a span (Kuijk & Blake, Ouyang & Maynard, Bishop &
+    /// Weimer): its float bound and its exact precision read the whole span (`sin Ω`,
+    /// not only `n` and `q_min`).
+    Related,
+}
+
+/// The range of a method's values on exact unit inputs.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ValueRange {
+    /// Within `[−4, 4]` (plain Euler's overshoot, `|E_i| ≤ 3.77`, is the largest:
+    /// `docs/float.md` §3).
+    Diffuse,
+    /// Bishop–Weimer's expansion, which grows without limit as the normals near
+    /// opposite: `|v| ≤ 1 + τ + τ²/2`, `τ = tan(Ω/2)` (`docs/float.md` §16.3).
+    HalfAngleTaylor,
 }
 
 impl fmt::Debug for Info {
@@ -186,10 +220,12 @@ impl Method {
     pub fn info(&self) -> Info {
         const HBB: &str = "Hast, Barrera, Bengtsson";
         let (field, real) = (Needs::Field, Needs::Real);
+        use Family::{Paper, Related};
         use PhongPixels::{All, BinarySegments, Ends, EndsAndEvenMiddle, EvenMiddle};
+        use ValueRange::{Diffuse, HalfAngleTaylor};
         #[allow(clippy::type_complexity)]
         #[rustfmt::skip]
-        let (name, label, source, equations, module, needs, phong_pixels, reconstructed): (
+        let (name, label, source, equations, module, needs, phong_pixels, reconstructed, family, exact_cost, range): (
             &str,
             &str,
             &str,
@@ -198,19 +234,22 @@ impl Method {
             Needs,
             PhongPixels,
             bool,
+            Family,
+            u64,
+            ValueRange,
         ) = match self {
-            Method::Phong => ("phong", "Phong", "Phong 1975", "eq. 4", "phong", real, All, false),
-            Method::Duff => ("duff", "Duff", "Duff 1979", "eqs. 5–7", "duff", real, All, false),
-            Method::SymmetricPhong => ("symmetric-phong", "symmetric Phong", HBB, "§4", "symmetric_phong", real, All, false),
-            Method::Gouraud => ("gouraud", "Gouraud (fence)", "Gouraud 1971, Behrens 1994", "§1, eq. 23's d_p", "gouraud", field, Ends, false),
-            Method::Euler => ("euler", "Euler", HBB, "eqs. 12–14", "euler", field, PhongPixels::First, false),
-            Method::CorrectedEuler => ("corrected-euler", "corrected Euler", HBB, "eqs. 15–17", "corrected_euler", field, Ends, false),
-            Method::Adaptive => ("adaptive", "adaptive", HBB, "eqs. 23–24", "adaptive", field, Ends, false),
-            Method::Angular => ("angular", "angular", "Mortensen 1995", "second source", "angular", real, PhongPixels::AngularEnds, false),
-            Method::AngularTable(_) => ("angular-table", "angular, tabled", "Mortensen 1995", "second source", "angular", real, PhongPixels::Table, false),
-            Method::Spherical => ("spherical", "spherical", "Kuijk & Blake 1989", "Chebyshev recurrence", "related::spherical", real, EndsAndEvenMiddle, true),
-            Method::Binary => ("binary", "binary", "Ouyang & Maynard 1996", "binary subdivision", "related::binary", real, BinarySegments, true),
-            Method::BishopWeimer => ("bishop-weimer", "Bishop–Weimer", "Bishop & Weimer 1986", "2-D Taylor, along the span", "related::bishop_weimer", real, EvenMiddle, false),
+            Method::Phong => ("phong", "Phong", "Phong 1975", "eq. 4", "phong", real, All, false, Paper, 16, Diffuse),
+            Method::Duff => ("duff", "Duff", "Duff 1979", "eqs. 5–7", "duff", real, All, false, Paper, 16, Diffuse),
+            Method::SymmetricPhong => ("symmetric-phong", "symmetric Phong", HBB, "§4", "symmetric_phong", real, All, false, Paper, 16, Diffuse),
+            Method::Gouraud => ("gouraud", "Gouraud (fence)", "Gouraud 1971, Behrens 1994", "§1, eq. 23's d_p", "gouraud", field, Ends, false, Paper, 1, Diffuse),
+            Method::Euler => ("euler", "Euler", HBB, "eqs. 12–14", "euler", field, PhongPixels::First, false, Paper, 1, Diffuse),
+            Method::CorrectedEuler => ("corrected-euler", "corrected Euler", HBB, "eqs. 15–17", "corrected_euler", field, Ends, false, Paper, 1, Diffuse),
+            Method::Adaptive => ("adaptive", "adaptive", HBB, "eqs. 23–24", "adaptive", field, Ends, false, Paper, 1, Diffuse),
+            Method::Angular => ("angular", "angular", "Mortensen 1995", "second source", "angular", real, PhongPixels::AngularEnds, false, Family::Angular, 16, Diffuse),
+            Method::AngularTable(_) => ("angular-table", "angular, tabled", "Mortensen 1995", "second source", "angular", real, PhongPixels::Table, false, Family::Angular, 16, Diffuse),
+            Method::Spherical => ("spherical", "spherical", "Kuijk & Blake 1989", "Chebyshev recurrence", "related::spherical", real, EndsAndEvenMiddle, true, Related, 20, Diffuse),
+            Method::Binary => ("binary", "binary", "Ouyang & Maynard 1996", "binary subdivision", "related::binary", real, BinarySegments, true, Related, 300, Diffuse),
+            Method::BishopWeimer => ("bishop-weimer", "Bishop–Weimer", "Bishop & Weimer 1986", "2-D Taylor, along the span", "related::bishop_weimer", real, EvenMiddle, false, Related, 20, HalfAngleTaylor),
         };
         Info {
             name,
@@ -221,6 +260,9 @@ impl Method {
             needs,
             phong_pixels,
             reconstructed,
+            family,
+            exact_cost,
+            range,
         }
     }
 
@@ -246,6 +288,12 @@ impl Method {
     /// Whether the method's exact value is Phong's `p/√q` at every pixel.
     pub fn is_phong_valued(&self) -> bool {
         self.info().phong_pixels == PhongPixels::All
+    }
+
+    /// Whether the method is one of the related methods along a span
+    /// ([`Family::Related`]).
+    pub fn is_related(&self) -> bool {
+        self.info().family == Family::Related
     }
 
     /// Shades `span` into `out` (`n + 1` values) with the prepared parameters; the
@@ -401,10 +449,7 @@ impl Method {
         let q = log2_recip(&span.q_min());
         let loss = if self.is_phong_valued() {
             q / 2 + 2
-        } else if matches!(
-            self,
-            Method::Spherical | Method::Binary | Method::BishopWeimer
-        ) {
+        } else if self.info().family == Family::Related {
             let c = span.na.dot(&span.nb);
             let s2 = BigRational::from_integer(1.into()) - c.clone() * c;
             let n_bits = 64 - i64::from(u64::from(span.n + 1).leading_zeros());

@@ -112,7 +112,7 @@ fn long_span_directions() {
 #[test]
 fn long_span_extremes() {
     let dirs = precision::test_directions(4);
-    for m in precision::SPAN_METHODS {
+    for m in phong_approx::Method::ALL {
         let e = precision::span_errors::<f64>(m, &dirs);
         assert_eq!(longest(&e), Some(4096), "{m}");
     }

@@ -352,7 +352,7 @@ fn bounds_are_tight_enough_to_fail() {
     // level at n = 4096: that is a property of the method, see the tolerance docs.)
     let u32_ = f32::EPSILON as f64 / 2.0;
     for m in Method::ALL {
-        if matches!(m, Method::Spherical | Method::Binary | Method::BishopWeimer) {
+        if m.is_related() {
             // Their bounds read the whole span (tests/float_bounds_related.rs attacks
             // them): none without it, and spherical's grows like n², so here normals
             // 74° apart and n = 64 in f32.

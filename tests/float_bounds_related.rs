@@ -20,61 +20,46 @@
 mod common;
 
 use common::*;
-use phong_approx::related::{binary, bishop_weimer, spherical};
-use phong_approx::tolerance::{related, Shape};
-use phong_approx::{BigRational, Real, Scalar, Span};
+use phong_approx::related::{binary, spherical};
+use phong_approx::tolerance::{span_bound, Shape};
+use phong_approx::{BigRational, Method, Real, Scalar, Span};
 use proptest::prelude::*;
 use proptest::strategy::ValueTree;
 use proptest::test_runner::{TestCaseError, TestRunner};
 
-/// The three methods.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Rel {
-    Spherical,
-    Binary,
-    BishopWeimer,
+/// The related methods of the catalogue ([`Method::is_related`]), through the
+/// catalogue's own interface: their bound ([`span_bound`]), their run
+/// ([`Method::values`]) and their exact run.
+trait Rel: Copy {
+    fn bound(self, shape: &Shape, u: f64) -> Option<f64>;
+    fn run<T: Real>(self, span: &Span<T>) -> Result<Vec<T>, String>;
+    fn exact(self, span: &Span<Q>) -> Vec<Q>;
 }
 
-const ALL: [Rel; 3] = [Rel::Spherical, Rel::Binary, Rel::BishopWeimer];
-
-impl Rel {
-    fn name(self) -> &'static str {
-        match self {
-            Rel::Spherical => "spherical",
-            Rel::Binary => "binary",
-            Rel::BishopWeimer => "bishop-weimer",
-        }
-    }
-
+impl Rel for Method {
     fn bound(self, shape: &Shape, u: f64) -> Option<f64> {
-        match self {
-            Rel::Spherical => related::spherical(shape, u),
-            Rel::Binary => related::binary(shape, u),
-            Rel::BishopWeimer => related::bishop_weimer(shape, u),
-        }
+        span_bound(self, shape, u)
     }
 
     fn run<T: Real>(self, span: &Span<T>) -> Result<Vec<T>, String> {
-        let mut out = vec![T::zero(); span.len()];
-        match self {
-            Rel::Spherical => spherical::shade(span, &mut out),
-            Rel::Binary => binary::shade(span, &mut out),
-            Rel::BishopWeimer => bishop_weimer::shade(span, &mut out),
-        }
-        .map_err(|e| format!("{} in {}: {e}", self.name(), T::NAME))?;
-        Ok(out)
+        self.values(span)
+            .map_err(|e| format!("{} in {}: {e}", self.name(), T::NAME))
     }
 
     fn exact(self, span: &Span<Q>) -> Vec<Q> {
-        if self == Rel::Spherical && span.n > EXACT_SPHERICAL_N {
+        if self == Method::Spherical && span.n > EXACT_SPHERICAL_N {
             spherical_truncated(span)
-        } else if self == Rel::Binary && span.n > EXACT_BINARY_N {
+        } else if self == Method::Binary && span.n > EXACT_BINARY_N {
             binary_truncated(span)
         } else {
-            self.run(span)
-                .expect("the exact run of a span that is not opposite")
+            Rel::run(self, span).expect("the exact run of a span that is not opposite")
         }
     }
+}
+
+/// The related methods, from the catalogue.
+fn related_methods() -> impl Iterator<Item = Method> {
+    Method::ALL.into_iter().filter(Method::is_related)
 }
 
 /// Up to this `n` the exact spherical run is the crate's function in rationals.
@@ -155,8 +140,14 @@ fn abs_err<T: Scalar>(a: &T, b: &Q) -> f64 {
 type Outcome = Option<(f64, f64)>;
 
 /// The float run of `m` in `T` against `want` (the exact run), pixel by pixel.
-fn compare<T: Real>(m: Rel, c: &Case, float: &Span<T>, want: &[Q], b: f64) -> Result<f64, String> {
-    let got = m.run(float).map_err(|e| format!("{e}\ninputs: {c:?}"))?;
+fn compare<T: Real>(
+    m: Method,
+    c: &Case,
+    float: &Span<T>,
+    want: &[Q],
+    b: f64,
+) -> Result<f64, String> {
+    let got = Rel::run(m, float).map_err(|e| format!("{e}\ninputs: {c:?}"))?;
     let mut worst: f64 = 0.0;
     for (i, (g, w)) in got.iter().zip(want).enumerate() {
         let e = if g.is_finite() {
@@ -182,7 +173,7 @@ fn compare<T: Real>(m: Rel, c: &Case, float: &Span<T>, want: &[Q], b: f64) -> Re
 
 /// Runs `m` in `f32` and `f64` and exactly on `c` (once for both), and checks every
 /// pixel against the bound; `[f32, f64]`.
-fn check_case(m: Rel, c: &Case) -> Result<[Outcome; 2], String> {
+fn check_case(m: Method, c: &Case) -> Result<[Outcome; 2], String> {
     let Some(exact_span) = c.span() else {
         return Ok([None, None]);
     };
@@ -221,7 +212,7 @@ fn cases() -> Vec<Case> {
 
 /// Every case of `cases` within the bound, in both formats; each format must have a
 /// bound somewhere.
-fn check_method(m: Rel) {
+fn check_method(m: Method) {
     let mut bounded = [0, 0];
     for c in cases() {
         match check_case(m, &c) {
@@ -238,17 +229,17 @@ fn check_method(m: Rel) {
 
 #[test]
 fn spherical_error_bound() {
-    check_method(Rel::Spherical);
+    check_method(Method::Spherical);
 }
 
 #[test]
 fn binary_error_bound() {
-    check_method(Rel::Binary);
+    check_method(Method::Binary);
 }
 
 #[test]
 fn bishop_weimer_error_bound() {
-    check_method(Rel::BishopWeimer);
+    check_method(Method::BishopWeimer);
 }
 
 /// Where these methods are ill-conditioned: nearly equal normals (a few units apart
@@ -299,7 +290,7 @@ fn arb_hard() -> impl Strategy<Value = Case> {
 fn related_bound_search() {
     let mut runner = runner(12, "proptest-regressions/float_bounds_related.txt");
     let result = runner.run(&arb_hard(), |c| {
-        for m in ALL {
+        for m in related_methods() {
             check_case(m, &c).map_err(TestCaseError::fail)?;
         }
         Ok(())
@@ -315,7 +306,7 @@ fn related_bound_search() {
 fn spherical_truncated_run_is_the_exact_run() {
     for c in edge_cases().into_iter().filter(|c| c.n <= 64) {
         let span = c.span().expect("edge cases are valid spans");
-        let exact = Rel::Spherical.run(&span).expect("not opposite");
+        let exact = Rel::run(Method::Spherical, &span).expect("not opposite");
         let trunc = spherical_truncated(&span);
         let tol = Q::new(
             num_bigint::BigInt::from(u64::from(c.n + 1).pow(2)),
@@ -339,7 +330,7 @@ fn binary_truncated_run_is_the_exact_run() {
     all.extend(targeted_cases());
     for c in all.into_iter().filter(|c| c.n <= 64) {
         let Some(span) = c.span() else { continue };
-        let exact = Rel::Binary.run(&span).expect("not opposite");
+        let exact = Rel::run(Method::Binary, &span).expect("not opposite");
         let trunc = binary_truncated(&span);
         let tol = Q::new(1.into(), num_bigint::BigInt::from(1u8) << 300u32);
         for (i, (a, b)) in exact.iter().zip(&trunc).enumerate() {
@@ -364,7 +355,7 @@ fn related_bound_ratio_report() {
     }
     println!("| method | format | worst error found (u) | at n | bound there (u) | ratio |");
     println!("|---|---|---:|---:|---:|---:|");
-    for m in ALL {
+    for m in related_methods() {
         let mut best: [Option<(f64, f64, u32)>; 2] = [None, None];
         for c in &all {
             let r = check_case(m, c).unwrap_or_else(|e| panic!("{e}"));

@@ -11,7 +11,7 @@ use phong_approx::raster::compare;
 use phong_approx::raster::compare_report::{self as report, picture_names, Results, GRID, TABLES};
 use phong_approx::raster::experiment::Experiment;
 use phong_approx::raster::pictures::save_png;
-use phong_approx::raster::precision::{PRECISIONS, SPAN_METHODS};
+use phong_approx::raster::precision::PRECISIONS;
 use std::path::PathBuf;
 use std::time::Instant;
 
@@ -115,7 +115,7 @@ pub fn run(a: &CompareArgs) -> Result<(), CliError> {
     let precision = report::precision_study(&exp, pframes, &|| b.inc(1));
     b.finish_and_clear();
     let b = bar(
-        (SPAN_METHODS.len() * PRECISIONS.len()) as u64,
+        (phong_approx::Method::ALL.len() * PRECISIONS.len()) as u64,
         "long spans:",
     );
     let spans = report::span_study(span_count, &|| b.inc(1));

@@ -241,3 +241,15 @@ pub fn one_line(s: &str) -> String {
     }
     out
 }
+
+/// `--method`'s help: every method of the catalogue by name, in its order.
+pub fn methods_help() -> String {
+    let names: Vec<String> = phong_approx::Method::ALL
+        .iter()
+        .map(|m| match m {
+            phong_approx::Method::AngularTable(_) => "angular-table<SIZE>".to_string(),
+            m => m.name().into_owned(),
+        })
+        .collect();
+    format!("A method of the catalogue: {}", names.join(", "))
+}

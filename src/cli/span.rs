@@ -13,10 +13,8 @@ use serde_json::{json, Value};
 /// Arguments of `phong-approx span`.
 #[derive(Args, Debug)]
 pub struct SpanArgs {
-    /// A method of the catalogue: phong, duff, symmetric-phong, gouraud, euler,
-    /// corrected-euler, adaptive, angular, angular-table<SIZE>, spherical, binary or
-    /// bishop-weimer.
-    #[arg(long, value_name = "NAME")]
+    /// A method of the catalogue (the list is the catalogue's: `super::methods_help`).
+    #[arg(long, value_name = "NAME", help = super::methods_help())]
     pub method: String,
     /// Unit normal at the left edge, N_a: three decimals or fractions, e.g. 0.6,0,0.8.
     #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true)]

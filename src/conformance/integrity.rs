@@ -6,7 +6,8 @@
 //! always refuses one that breaks an invariant of [`validate`]: so a truncated,
 //! edited or hostile file can neither make garbage pass nor exhaust memory.
 
-use super::vectors::{exact_input, method_key, Case, Expected, VectorFile, METHODS};
+use super::vectors::{exact_input, method_key, Case, Expected, VectorFile};
+use crate::method::ValueRange;
 use crate::parse::parse_rational;
 use crate::quantize::level;
 use crate::scalar::Scalar;
@@ -60,13 +61,7 @@ pub fn input_bits(vectors: &[&Vec3<BigRational>]) -> u64 {
 /// 80-digit fractions) and, for the methods with square roots, `acos` or `cos`, with
 /// the square of the bits the digits need beyond 2^-256.
 pub fn exact_work(method: crate::Method, n: u32, input_bits: u64, digits: usize) -> u64 {
-    use crate::Method::*;
-    let per_pixel: u64 = match method {
-        Gouraud | Euler | CorrectedEuler | Adaptive => 1,
-        Phong | Duff | SymmetricPhong | Angular | AngularTable(_) => 16,
-        Spherical | BishopWeimer => 20,
-        Binary => 300,
-    };
+    let per_pixel = method.info().exact_cost;
     let size = 1 + input_bits / 64;
     let precision = if method.is_rational() {
         1
@@ -84,12 +79,15 @@ pub fn exact_work(method: crate::Method, n: u32, input_bits: u64, digits: usize)
 /// The most cases a vector file may hold.
 pub const MAX_CASES: usize = 100_000;
 
-/// The largest `|value|` a method may have on `span`: [`MAX_DIFFUSE_VALUE`], except
-/// for Bishop–Weimer's expansion, which grows without limit as the normals near
-/// opposite: `|v| ≤ 1 + τ + τ²/2`, `τ = tan(Ω/2)` (`docs/float.md` §16.3), with 0.1 %
-/// for the rounding of `τ`.
+/// The largest `|value|` a method may have on `span` (its catalogue entry's
+/// [`ValueRange`]): [`MAX_DIFFUSE_VALUE`], or for Bishop–Weimer's expansion, which
+/// grows without limit as the normals near opposite, `|v| ≤ 1 + τ + τ²/2`,
+/// `τ = tan(Ω/2)` (`docs/float.md` §16.3), with 0.1 % for the rounding of `τ`.
 fn value_range(method: &str, span: &Span<BigRational>) -> f64 {
-    if method != "bishop-weimer" {
+    let range = method
+        .parse::<crate::Method>()
+        .map_or(ValueRange::Diffuse, |m| m.info().range);
+    if range == ValueRange::Diffuse {
         return MAX_DIFFUSE_VALUE;
     }
     let c = span.na.dot(&span.nb).to_f64().clamp(-1.0, 1.0);
@@ -213,7 +211,7 @@ pub fn validate(file: &VectorFile) -> Result<(), String> {
             file.cases.len()
         ));
     }
-    let known: Vec<String> = METHODS.iter().map(|&m| method_key(m)).collect();
+    let known: Vec<String> = crate::Method::ALL.iter().map(|&m| method_key(m)).collect();
     if file.methods.is_empty() {
         return Err("the file lists no methods".into());
     }

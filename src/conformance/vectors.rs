@@ -22,9 +22,6 @@ pub const FORMAT_VERSION: &str = "1.1.0";
 /// Significant digits of the expected values.
 pub const DIGITS: usize = 30;
 
-/// The methods every case carries expected values for: the whole catalogue.
-pub const METHODS: [Method; 12] = Method::ALL;
-
 /// The name of a method in the vector files: its catalogue name
 /// ([`Method::name`], e.g. `angular-table256`), which parses back.
 pub fn method_key(m: Method) -> String {
@@ -211,7 +208,7 @@ impl CaseSpec {
             n,
             h,
         } = self;
-        compute_case_for(&METHODS, id, comment, na, nb, l, n, h)
+        compute_case_for(&Method::ALL, id, comment, na, nb, l, n, h)
     }
 }
 
@@ -712,16 +709,28 @@ pub fn generate(set: &str) -> Result<VectorFile, String> {
 /// The vector file of `set` with these cases: the header (format version, generator,
 /// notes, methods) and the cases.
 pub fn file_of(set: &str, cases: Vec<Case>) -> VectorFile {
+    // The notes name the methods of a kind from the catalogue.
+    let keys = |kind: fn(&Method) -> bool| {
+        Method::ALL
+            .iter()
+            .filter(|m| kind(m))
+            .map(|&m| method_key(m))
+            .collect::<Vec<_>>()
+            .join(", ")
+    };
     VectorFile {
         version: FORMAT_VERSION.to_string(),
         generator: format!("phong-approx {}", env!("CARGO_PKG_VERSION")),
         set: set.to_string(),
-        notes: "Inputs are exact rational unit vectors (inverse stereographic projection). Expected values are computed exactly in rationals; \
-                Phong-valued methods (phong, duff, symmetric-phong), the angular ones and the related methods (spherical, binary, bishop-weimer) use square roots, arc cosines and cosines accurate to 2^-256, \
-                and are printed to 30 significant digits. Levels are floor(255*clamp(v,0,1)), decided exactly (for p/sqrt(q) by comparing squares). \
-                Recurrences are unclamped; specular values are max(0, v)^s."
-            .to_string(),
-        methods: METHODS.iter().map(|&m| method_key(m)).collect(),
+        notes: format!(
+            "Inputs are exact rational unit vectors (inverse stereographic projection). Expected values are computed exactly in rationals; \
+             Phong-valued methods ({}), the angular ones and the related methods ({}) use square roots, arc cosines and cosines accurate to 2^-256, \
+             and are printed to 30 significant digits. Levels are floor(255*clamp(v,0,1)), decided exactly (for p/sqrt(q) by comparing squares). \
+             Recurrences are unclamped; specular values are max(0, v)^s.",
+            keys(Method::is_phong_valued),
+            keys(Method::is_related)
+        ),
+        methods: Method::ALL.iter().map(|&m| method_key(m)).collect(),
         number_of_cases: cases.len(),
         cases,
     }

@@ -11,7 +11,8 @@ use super::font;
 use super::pictures::{
     fitting_scale, heat_legend, heat_map, level_image, stack, text_strip, BACKGROUND, INK,
 };
-use super::precision::{self, PrecisionStats, PRECISIONS, SPAN_LENGTHS, SPAN_METHODS};
+use super::precision::{self, PrecisionStats, PRECISIONS, SPAN_LENGTHS};
+use crate::Method;
 use image::RgbImage;
 use rayon::prelude::*;
 use std::fmt::Write as _;
@@ -50,7 +51,8 @@ pub struct Results {
     pub tori: Vec<CompareResult>,
     /// Per precision of [`PRECISIONS`]: the 800-polygon torus.
     pub precision: Vec<(&'static str, PrecisionStats)>,
-    /// Per span shader of [`SPAN_METHODS`], per precision: errors per span length.
+    /// Per span method of the catalogue ([`Method::ALL`]: the polygon methods step
+    /// along a row by the same additions as Gouraud or Bishop–Weimer), per precision: errors per span length.
     pub spans: Vec<SpanRow>,
     /// Test spans per length.
     pub span_count: usize,
@@ -74,12 +76,12 @@ pub fn precision_study(
         .collect()
 }
 
-/// The long-span study: every span shader of [`SPAN_METHODS`] in every precision on
+/// The long-span study: every span method of the catalogue in every precision on
 /// `count` test spans per length (shaders in parallel); `tick` is called once per
 /// shader and precision.
 pub fn span_study(count: usize, tick: &(dyn Fn() + Sync)) -> Vec<SpanRow> {
     let dirs = precision::test_directions(count);
-    SPAN_METHODS
+    Method::ALL
         .par_iter()
         .map(|&sh| {
             let per: Vec<(&'static str, Vec<Option<f64>>)> = PRECISIONS
@@ -550,7 +552,7 @@ mod tests {
                 (p, st)
             })
             .collect();
-        let spans = SPAN_METHODS
+        let spans = Method::ALL
             .iter()
             .map(|&sh| {
                 let per = PRECISIONS
@@ -673,10 +675,10 @@ mod tests {
         assert_eq!(head, ["method", "precision", "n", "max_error_levels"]);
         assert_eq!(
             rows.len(),
-            SPAN_METHODS.len() * PRECISIONS.len() * SPAN_LENGTHS.len()
+            Method::ALL.len() * PRECISIONS.len() * SPAN_LENGTHS.len()
         );
-        assert_eq!(rows[0], [&*SPAN_METHODS[0].name(), "f64", "1", "0.015625"]);
-        assert_eq!(rows[12], [&*SPAN_METHODS[0].name(), "f64", "4096", "fails"]);
+        assert_eq!(rows[0], [&*Method::ALL[0].name(), "f64", "1", "0.015625"]);
+        assert_eq!(rows[12], [&*Method::ALL[0].name(), "f64", "4096", "fails"]);
     }
 
     #[test]

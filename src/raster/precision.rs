@@ -184,11 +184,6 @@ pub fn torus(
     })
 }
 
-/// The methods of the long-span study: every span method of the catalogue (the
-/// polygon methods step along a row by the same additions as Gouraud (vertex
-/// Gouraud, vertex angles) or as Bishop–Weimer (Seiler)).
-pub const SPAN_METHODS: [Method; 12] = Method::ALL;
-
 /// The span lengths tried by [`span_errors`] and [`longest`].
 pub const SPAN_LENGTHS: [u32; 13] = [1, 2, 4, 8, 16, 32, 64, 128, 256, 512, 1024, 2048, 4096];
 

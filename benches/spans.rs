@@ -86,16 +86,8 @@ macro_rules! bench_type {
                     });
                 }
                 bench_extra_!($f, g, n, na, nb, l, out);
-                for m in [
-                    Method::CorrectedEuler,
-                    Method::Phong,
-                    Method::Euler,
-                    Method::Gouraud,
-                    Method::Duff,
-                    Method::SymmetricPhong,
-                    Method::Adaptive,
-                    Method::Angular,
-                ] {
+                // Every method of the catalogue through the checked generic path.
+                for m in Method::ALL {
                     let name = format!("reference_{}", m.name());
                     g.bench_with_input(BenchmarkId::new(name, n), &n, |b, &n| {
                         b.iter(|| {

@@ -94,6 +94,8 @@ pub struct Info {
     /// How far its values may range on exact unit inputs (what a vector file's
     /// expectations are checked against).
     pub range: ValueRange,
+    /// The section of `docs/float.md` that derives its float bound (`§5`).
+    pub float_section: &'static str,
 }
 
 /// Where a method comes from.
@@ -225,7 +227,7 @@ impl Method {
         use ValueRange::{Diffuse, HalfAngleTaylor};
         #[allow(clippy::type_complexity)]
         #[rustfmt::skip]
-        let (name, label, source, equations, module, needs, phong_pixels, reconstructed, family, exact_cost, range): (
+        let (name, label, source, equations, module, needs, phong_pixels, reconstructed, family, exact_cost, range, float_section): (
             &str,
             &str,
             &str,
@@ -237,19 +239,20 @@ impl Method {
             Family,
             u64,
             ValueRange,
+            &str,
         ) = match self {
-            Method::Phong => ("phong", "Phong", "Phong 1975", "eq. 4", "phong", real, All, false, Paper, 16, Diffuse),
-            Method::Duff => ("duff", "Duff", "Duff 1979", "eqs. 5–7", "duff", real, All, false, Paper, 16, Diffuse),
-            Method::SymmetricPhong => ("symmetric-phong", "symmetric Phong", HBB, "§4", "symmetric_phong", real, All, false, Paper, 16, Diffuse),
-            Method::Gouraud => ("gouraud", "Gouraud (fence)", "Gouraud 1971, Behrens 1994", "§1, eq. 23's d_p", "gouraud", field, Ends, false, Paper, 1, Diffuse),
-            Method::Euler => ("euler", "Euler", HBB, "eqs. 12–14", "euler", field, PhongPixels::First, false, Paper, 1, Diffuse),
-            Method::CorrectedEuler => ("corrected-euler", "corrected Euler", HBB, "eqs. 15–17", "corrected_euler", field, Ends, false, Paper, 1, Diffuse),
-            Method::Adaptive => ("adaptive", "adaptive", HBB, "eqs. 23–24", "adaptive", field, Ends, false, Paper, 1, Diffuse),
-            Method::Angular => ("angular", "angular", "Mortensen 1995", "second source", "angular", real, PhongPixels::AngularEnds, false, Family::Angular, 16, Diffuse),
-            Method::AngularTable(_) => ("angular-table", "angular, tabled", "Mortensen 1995", "second source", "angular", real, PhongPixels::Table, false, Family::Angular, 16, Diffuse),
-            Method::Spherical => ("spherical", "spherical", "Kuijk & Blake 1989", "Chebyshev recurrence", "related::spherical", real, EndsAndEvenMiddle, true, Related, 20, Diffuse),
-            Method::Binary => ("binary", "binary", "Ouyang & Maynard 1996", "binary subdivision", "related::binary", real, BinarySegments, true, Related, 300, Diffuse),
-            Method::BishopWeimer => ("bishop-weimer", "Bishop–Weimer", "Bishop & Weimer 1986", "2-D Taylor, along the span", "related::bishop_weimer", real, EvenMiddle, false, Related, 20, HalfAngleTaylor),
+            Method::Phong => ("phong", "Phong", "Phong 1975", "eq. 4", "phong", real, All, false, Paper, 16, Diffuse, "§9"),
+            Method::Duff => ("duff", "Duff", "Duff 1979", "eqs. 5–7", "duff", real, All, false, Paper, 16, Diffuse, "§8"),
+            Method::SymmetricPhong => ("symmetric-phong", "symmetric Phong", HBB, "§4", "symmetric_phong", real, All, false, Paper, 16, Diffuse, "§8"),
+            Method::Gouraud => ("gouraud", "Gouraud (fence)", "Gouraud 1971, Behrens 1994", "§1, eq. 23's d_p", "gouraud", field, Ends, false, Paper, 1, Diffuse, "§5"),
+            Method::Euler => ("euler", "Euler", HBB, "eqs. 12–14", "euler", field, PhongPixels::First, false, Paper, 1, Diffuse, "§7"),
+            Method::CorrectedEuler => ("corrected-euler", "corrected Euler", HBB, "eqs. 15–17", "corrected_euler", field, Ends, false, Paper, 1, Diffuse, "§6"),
+            Method::Adaptive => ("adaptive", "adaptive", HBB, "eqs. 23–24", "adaptive", field, Ends, false, Paper, 1, Diffuse, "§10"),
+            Method::Angular => ("angular", "angular", "Mortensen 1995", "second source", "angular", real, PhongPixels::AngularEnds, false, Family::Angular, 16, Diffuse, "§11"),
+            Method::AngularTable(_) => ("angular-table", "angular, tabled", "Mortensen 1995", "second source", "angular", real, PhongPixels::Table, false, Family::Angular, 16, Diffuse, "§11"),
+            Method::Spherical => ("spherical", "spherical", "Kuijk & Blake 1989", "Chebyshev recurrence", "related::spherical", real, EndsAndEvenMiddle, true, Related, 20, Diffuse, "§16.1"),
+            Method::Binary => ("binary", "binary", "Ouyang & Maynard 1996", "binary subdivision", "related::binary", real, BinarySegments, true, Related, 300, Diffuse, "§16.2"),
+            Method::BishopWeimer => ("bishop-weimer", "Bishop–Weimer", "Bishop & Weimer 1986", "2-D Taylor, along the span", "related::bishop_weimer", real, EvenMiddle, false, Related, 20, HalfAngleTaylor, "§16.3"),
         };
         Info {
             name,
@@ -263,6 +266,7 @@ impl Method {
             family,
             exact_cost,
             range,
+            float_section,
         }
     }
 

@@ -15,7 +15,7 @@ use phong_approx::fast_rows::{self, EdgeStepper, Field, RowSpan};
 use phong_approx::related::bishop_weimer::Taylor;
 use phong_approx::related::seiler::Quadratic;
 use phong_approx::related::triangle::Triangle;
-use phong_approx::related::{binary, spherical, vertex_angle};
+use phong_approx::related::vertex_angle;
 use phong_approx::{Method, Span, Vec3};
 
 pub type V = Vec3<f32>;
@@ -58,23 +58,11 @@ pub enum Which {
     FieldPhong,
     /// Phong of the field with `rsqrt`.
     FieldPhongRsqrt,
-    /// A span method through the checked generic path (`Span::new`, the method).
-    Span(SpanMethod),
+    /// A span method of the catalogue through the checked generic path (`Span::new`,
+    /// the method).
+    Span(Method),
     /// A stage of a set-up (group `triangle_stages_f32`).
     Stage(Stage),
-}
-
-/// The span methods run through the checked generic path.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum SpanMethod {
-    /// A method of the catalogue.
-    Paper(Method),
-    /// Kuijk & Blake.
-    Spherical,
-    /// Ouyang & Maynard.
-    Binary,
-    /// Bishop & Weimer along a span.
-    BishopWeimer,
 }
 
 /// The stages of the per-row set-ups; each includes the ones before it in its group.
@@ -120,24 +108,15 @@ pub const METHODS: [(&str, Which); 26] = [
     ("stepped_corrected_euler", Which::SteppedCorrectedEuler),
     ("field_phong", Which::FieldPhong),
     ("field_phong_rsqrt", Which::FieldPhongRsqrt),
-    ("span_phong", Which::Span(SpanMethod::Paper(Method::Phong))),
-    ("span_duff", Which::Span(SpanMethod::Paper(Method::Duff))),
-    (
-        "span_fence",
-        Which::Span(SpanMethod::Paper(Method::Gouraud)),
-    ),
-    ("span_euler", Which::Span(SpanMethod::Paper(Method::Euler))),
-    (
-        "span_corrected_euler",
-        Which::Span(SpanMethod::Paper(Method::CorrectedEuler)),
-    ),
-    (
-        "span_angular",
-        Which::Span(SpanMethod::Paper(Method::Angular)),
-    ),
-    ("span_spherical", Which::Span(SpanMethod::Spherical)),
-    ("span_binary", Which::Span(SpanMethod::Binary)),
-    ("span_bishop_weimer", Which::Span(SpanMethod::BishopWeimer)),
+    ("span_phong", Which::Span(Method::Phong)),
+    ("span_duff", Which::Span(Method::Duff)),
+    ("span_fence", Which::Span(Method::Gouraud)),
+    ("span_euler", Which::Span(Method::Euler)),
+    ("span_corrected_euler", Which::Span(Method::CorrectedEuler)),
+    ("span_angular", Which::Span(Method::Angular)),
+    ("span_spherical", Which::Span(Method::Spherical)),
+    ("span_binary", Which::Span(Method::Binary)),
+    ("span_bishop_weimer", Which::Span(Method::BishopWeimer)),
 ];
 
 /// The stages with their names: `fast_corrected_euler`'s set-up cut after each
@@ -328,16 +307,10 @@ fn per_row(
 }
 
 /// A span method through the checked generic path: `Span::new`, then the method.
-fn per_span(s: u32, normals: &[V; 3], l: &V, which: SpanMethod, out: &mut [f32]) {
+fn per_span(s: u32, normals: &[V; 3], l: &V, m: Method, out: &mut [f32]) {
     per_row(s, normals, l, out, |na, nb, n, o| {
         let span = Span::new(na, nb, l.clone(), n).expect("unit normals");
-        match which {
-            SpanMethod::Spherical => spherical::shade(&span, o),
-            SpanMethod::Binary => binary::shade(&span, o),
-            SpanMethod::BishopWeimer => phong_approx::related::bishop_weimer::shade(&span, o),
-            SpanMethod::Paper(m) => m.shade(&span, o),
-        }
-        .expect("the output length is n + 1");
+        m.shade(&span, o).expect("the output length is n + 1");
     });
 }
 

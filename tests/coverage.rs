@@ -1,0 +1,143 @@
+//! Coverage of the catalogue (libm-test's `check_coverage` is the model): every
+//! method of `Method::ALL` has each of the things a method must have, and a method
+//! left out of any one of them fails here, naming the method and the place.
+//!
+//! - expected values in every published vector set;
+//! - a float bound (`tolerance::reference_bound`) on an ordinary span, in `f32` and `f64`;
+//! - a test that attacks that bound (`tests/float_bounds.rs` or
+//!   `tests/float_bounds_related.rs` names it);
+//! - at least one claim with a test of its name, cited from the method's module (and
+//!   `tests/claims_index.rs` ties every Coq theorem to its test);
+//! - the section of `docs/float.md` that derives its bound (`Info::float_section`);
+//! - a benchmark: `benches/spans.rs` times every method of the catalogue.
+
+use phong_approx::conformance::vectors::method_key;
+use phong_approx::reference::unit::unit_from_ints;
+use phong_approx::tolerance::{span_bound, Shape};
+use phong_approx::{Method, Span};
+use std::fs;
+use std::path::Path;
+
+fn read(p: &str) -> String {
+    fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join(p))
+        .unwrap_or_else(|e| panic!("{p}: {e}"))
+}
+
+/// `Method::AngularTable` for `AngularTable(256)`: how the tests name a variant.
+fn variant(m: Method) -> String {
+    let d = format!("{m:?}");
+    format!("Method::{}", d.split('(').next().unwrap())
+}
+
+#[test]
+fn every_method_has_vectors() {
+    for set in ["typical", "edge", "paper"] {
+        let file = phong_approx::testkit::published(set).unwrap();
+        for m in Method::ALL {
+            let key = method_key(m);
+            assert!(file.methods.contains(&key), "{set}: no vectors for {m}");
+            for c in &file.cases {
+                assert!(
+                    c.expected.contains_key(&key),
+                    "{set} {}: no expectation for {m}",
+                    c.id
+                );
+            }
+        }
+    }
+}
+
+#[test]
+fn every_method_has_a_bound() {
+    // Normals 60° apart, n = 16: every method's bound is defined there.
+    let span = Span::new(
+        unit_from_ints(0, 0, 1),
+        unit_from_ints(1, 0, 2),
+        unit_from_ints(1, 1, 3),
+        16,
+    )
+    .unwrap();
+    let shape = Shape::of(&span);
+    for m in Method::ALL {
+        for u in [f64::from(f32::EPSILON) / 2.0, f64::EPSILON / 2.0] {
+            let b = span_bound(m, &shape, u);
+            assert!(
+                b.is_some_and(|b| b > 0.0 && b < 1e-2),
+                "{m}: no float bound (u = {u:e}): {b:?}"
+            );
+        }
+    }
+}
+
+#[test]
+fn every_method_has_a_bound_test() {
+    let tests = read("tests/float_bounds.rs") + &read("tests/float_bounds_related.rs");
+    for m in Method::ALL {
+        assert!(
+            tests.contains(&format!("{} ", variant(m)))
+                || tests.contains(&format!("{};", variant(m)))
+                || tests.contains(&format!("{})", variant(m)))
+                || tests.contains(&format!("{}(", variant(m))),
+            "{m}: no test attacks its bound (tests/float_bounds.rs, tests/float_bounds_related.rs)"
+        );
+    }
+}
+
+#[test]
+fn every_method_cites_a_tested_claim() {
+    let mut tests = String::new();
+    for e in fs::read_dir(Path::new(env!("CARGO_MANIFEST_DIR")).join("tests")).unwrap() {
+        let p = e.unwrap().path();
+        if p.extension().is_some_and(|x| x == "rs") {
+            tests += &fs::read_to_string(p).unwrap();
+        }
+    }
+    for m in Method::ALL {
+        let file = format!("src/{}.rs", m.info().module.replace("::", "/"));
+        let text = read(&file);
+        // Names in backticks in the module's doc comments that are tests.
+        let cited: Vec<&str> = text
+            .split('`')
+            .skip(1)
+            .step_by(2)
+            .filter(|w| {
+                w.len() > 6
+                    && w.chars()
+                        .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_')
+            })
+            .filter(|w| tests.contains(&format!("fn {w}(")))
+            .collect();
+        assert!(
+            !cited.is_empty(),
+            "{m}: {file} cites no claim with a test of its name"
+        );
+    }
+}
+
+#[test]
+fn every_method_has_a_docs_section() {
+    let float = read("docs/float.md");
+    for m in Method::ALL {
+        let sec = m.info().float_section;
+        let number = sec.trim_start_matches('§');
+        let heading = float.lines().any(|l| {
+            l.starts_with('#')
+                && l.trim_start_matches('#')
+                    .trim_start()
+                    .starts_with(&format!("{number} "))
+                || l.trim_start_matches('#')
+                    .trim_start()
+                    .starts_with(&format!("{number}. "))
+        });
+        assert!(heading, "{m}: docs/float.md has no section {sec}");
+    }
+}
+
+#[test]
+fn every_method_has_a_benchmark() {
+    let bench = read("benches/spans.rs");
+    assert!(
+        bench.contains("for m in Method::ALL"),
+        "benches/spans.rs no longer times every method of the catalogue"
+    );
+}

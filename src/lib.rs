@@ -88,6 +88,7 @@ pub mod reference;
 pub mod related;
 pub mod scalar;
 pub mod span;
+pub mod span_report;
 pub mod specular;
 pub mod symmetric_phong;
 pub mod testkit;

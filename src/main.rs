@@ -25,7 +25,7 @@ struct Cli {
 #[derive(Subcommand, Debug)]
 enum Command {
     /// Shade one scan line with one method and print its values and 8-bit levels.
-    Span(cli::span::SpanArgs),
+    Span(Box<cli::span::SpanArgs>),
     /// Reproduce the paper's Tables 1–2 and Figures 1–5 on rotating tori.
     Reproduce(cli::reproduce::ReproduceArgs),
     /// Compare every method (paper and related work) on the same tori: diffuse,
@@ -96,7 +96,7 @@ mod tests {
         let message = match Cli::try_parse_from(args(extra)) {
             Err(e) => {
                 assert_ne!(e.exit_code(), 0, "{extra:?}");
-                e.to_string()
+                cli::clap_message(&e)
             }
             Ok(Cli {
                 command: Command::Span(a),
@@ -151,8 +151,11 @@ mod tests {
             &[("--method", "bishop")],
             "--method: unknown method 'bishop'",
         );
-        bad(&[("--scalar", "f16")], "--scalar: unknown scalar 'f16'");
-        bad(&[("--format", "xml")], "--format: unknown format 'xml'");
+        bad(
+            &[("--scalar", "f16")],
+            "--scalar: unknown value 'f16' (expected one of f32, f64, exact, mpfr)",
+        );
+        bad(&[("--format", "xml")], "--format: unknown value 'xml'");
         bad(
             &[("--na", "1/0,0,1")],
             "--na: component 1 '1/0' has a zero denominator",

@@ -51,8 +51,9 @@ const LAYERS: &[(&str, u32)] = &[
     // The conformance kit and the torus harness.
     ("conformance/", 9),
     ("raster/", 9),
-    // The test kit.
+    // The test kit and the span report (what `span` prints).
     ("testkit.rs", 10),
+    ("span_report.rs", 10),
 ];
 
 fn src() -> PathBuf {

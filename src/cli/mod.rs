@@ -86,28 +86,33 @@ impl fmt::Display for CliError {
     }
 }
 
-/// Parses a whole number for `arg` within `lo..=hi`; `what` names it in the range
-/// message (empty for none).
+/// Parses a whole number within `lo..=hi`; `what` names it in the range message
+/// (empty for none). The value parser of every whole-number argument.
 ///
 /// # Errors
-/// A [`CliError`] naming `arg`: not a whole number, or out of range.
-pub fn parse_whole(arg: &str, s: &str, lo: u32, hi: u32, what: &str) -> Result<u32, CliError> {
+/// Not a whole number, or out of range, in words.
+pub fn whole(s: &str, lo: u32, hi: u32, what: &str) -> Result<u32, String> {
     let v: u64 = s
         .trim()
         .parse()
-        .map_err(|_| CliError::arg(arg, format!("'{}' is not a whole number", shown(s))))?;
+        .map_err(|_| format!("'{}' is not a whole number", shown(s)))?;
     if v < u64::from(lo) || v > u64::from(hi) {
         let what = if what.is_empty() {
             String::new()
         } else {
             format!("{what} ")
         };
-        return Err(CliError::arg(
-            arg,
-            format!("{what}must be between {lo} and {hi} (got {v})"),
-        ));
+        return Err(format!("{what}must be between {lo} and {hi} (got {v})"));
     }
     Ok(v as u32)
+}
+
+/// [`whole`] for `arg`.
+///
+/// # Errors
+/// A [`CliError`] naming `arg`: not a whole number, or out of range.
+pub fn parse_whole(arg: &str, s: &str, lo: u32, hi: u32, what: &str) -> Result<u32, CliError> {
+    whole(s, lo, hi, what).map_err(|e| CliError::arg(arg, e))
 }
 
 /// Writes one line `phong-approx: MESSAGE` to standard error. Never panics: when
@@ -145,6 +150,39 @@ pub fn clap_error(e: clap::Error) -> ExitCode {
             ExitCode::from(2)
         }
         _ => {
+            report(&clap_message(&e));
+            ExitCode::from(2)
+        }
+    }
+}
+
+/// A clap error as one line in the crate's words: `--arg: why` for a value the
+/// argument refused (its parser's own message, or the values it takes), else clap's
+/// message without its usage lines.
+pub fn clap_message(e: &clap::Error) -> String {
+    use clap::error::{ContextKind, ContextValue, ErrorKind};
+    let arg = match e.get(ContextKind::InvalidArg) {
+        Some(ContextValue::String(a)) => a.split(' ').next().unwrap_or(a).to_string(),
+        _ => "argument".to_string(),
+    };
+    match e.kind() {
+        ErrorKind::ValueValidation => {
+            let why = std::error::Error::source(e)
+                .map_or_else(|| e.kind().to_string(), |s| s.to_string());
+            format!("{arg}: {why}")
+        }
+        ErrorKind::InvalidValue => {
+            let value = match e.get(ContextKind::InvalidValue) {
+                Some(ContextValue::String(v)) => shown(v),
+                _ => String::new(),
+            };
+            let valid = match e.get(ContextKind::ValidValue) {
+                Some(ContextValue::Strings(v)) => v.join(", "),
+                _ => String::new(),
+            };
+            format!("{arg}: unknown value '{value}' (expected one of {valid})")
+        }
+        _ => {
             let text = e.render().to_string();
             let line: Vec<&str> = text
                 .lines()
@@ -156,9 +194,7 @@ pub fn clap_error(e: clap::Error) -> ExitCode {
                 })
                 .collect();
             let line = line.join(" ");
-            let line = line.strip_prefix("error: ").unwrap_or(&line);
-            report(line);
-            ExitCode::from(2)
+            line.strip_prefix("error: ").unwrap_or(&line).to_string()
         }
     }
 }
@@ -252,4 +288,50 @@ pub fn methods_help() -> String {
         })
         .collect();
     format!("A method of the catalogue: {}", names.join(", "))
+}
+
+/// Standard output as an [`std::io::Write`], with [`out`]'s rules: a closed pipe
+/// drops the rest silently ([`STDOUT_CLOSED`]), any other failure is an error.
+struct Stdout;
+
+impl Write for Stdout {
+    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+        if STDOUT_CLOSED.load(Ordering::Relaxed) {
+            return Ok(buf.len());
+        }
+        match std::io::stdout().lock().write_all(buf) {
+            Err(e) if e.kind() == ErrorKind::BrokenPipe => {
+                STDOUT_CLOSED.store(true, Ordering::Relaxed);
+                Ok(buf.len())
+            }
+            r => r.map(|()| buf.len()),
+        }
+    }
+
+    fn flush(&mut self) -> std::io::Result<()> {
+        match std::io::stdout().lock().flush() {
+            Err(e) if e.kind() == ErrorKind::BrokenPipe => {
+                STDOUT_CLOSED.store(true, Ordering::Relaxed);
+                Ok(())
+            }
+            r => r,
+        }
+    }
+}
+
+/// Writes `value` to standard output as pretty JSON and a newline, streamed in
+/// pieces of 64 KiB (a report of 2^24 values is never one string in memory).
+///
+/// # Errors
+/// A [`CliError`] with code 2 when standard output fails.
+pub fn write_json(value: &impl serde::Serialize) -> Result<(), CliError> {
+    let mut w = std::io::BufWriter::with_capacity(1 << 16, Stdout);
+    serde_json::to_writer_pretty(&mut w, value)
+        .map_err(std::io::Error::from)
+        .and_then(|()| w.write_all(b"\n"))
+        .and_then(|()| w.flush())
+        .map_err(|e| CliError {
+            message: format!("standard output: {e}"),
+            code: 2,
+        })
 }

@@ -2,15 +2,13 @@
 //! closed forms computed here in rationals (not by the recurrences under test), and
 //! one clear line with exit code 2 for every kind of bad input.
 
+mod runner;
+use runner::bin;
+
 use num_bigint::BigInt;
 use num_rational::BigRational as Q;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 use serde_json::Value;
-use std::process::Command;
-
-fn bin() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_phong-approx"))
-}
 
 fn q(n: i64, d: i64) -> Q {
     Q::new(n.into(), d.into())

@@ -1,6 +1,8 @@
 //! The comparison harness (`phong-approx compare`): its reference against exact
 //! rationals, the relations the tables must show, and the command line.
 
+mod runner;
+
 use phong_approx::raster::compare::{
     index, render_compare, CompareOptions, Shader, COLUMNS, SHININESS,
 };
@@ -9,7 +11,6 @@ use phong_approx::raster::precision::{self, longest, SPAN_LENGTHS};
 use phong_approx::raster::render::Scene;
 use phong_approx::BigRational;
 use phong_approx::Method;
-use std::process::Command;
 
 fn small() -> (phong_approx::raster::mesh::Mesh, Scene) {
     (
@@ -123,7 +124,7 @@ fn long_span_extremes() {
 #[test]
 fn cli_compare_writes_its_tables_and_pictures() {
     let out = std::env::temp_dir().join(format!("phong-compare-{}", std::process::id()));
-    let o = Command::new(env!("CARGO_BIN_EXE_phong-approx"))
+    let o = runner::bin()
         .args([
             "compare",
             "--frames",
@@ -173,7 +174,7 @@ fn cli_compare_rejects_bad_arguments() {
         (vec!["--size", "5x5"], "--size"),
         (vec!["--precision-frames", "-3"], "--precision-frames"),
     ] {
-        let o = Command::new(env!("CARGO_BIN_EXE_phong-approx"))
+        let o = runner::bin()
             .arg("compare")
             .args(&args)
             .output()

@@ -3,6 +3,9 @@
 //! case), and every kind of malformed input gets one line naming file, line and
 //! problem.
 
+mod runner;
+use runner::bin;
+
 use phong_approx::conformance::check::{check, parse_results, Tolerance};
 use phong_approx::conformance::vectors::{
     self as vectors, generate, inputs_csv, method_key, to_csv, Case, VectorFile, SETS,
@@ -10,7 +13,6 @@ use phong_approx::conformance::vectors::{
 use phong_approx::parse::parse_rational;
 use phong_approx::{Method, Real, Scalar, Span, Vec3};
 use std::path::{Path, PathBuf};
-use std::process::Command;
 use std::sync::OnceLock;
 
 fn root() -> &'static Path {
@@ -352,10 +354,6 @@ fn own_specular_results_pass() {
             assert!(fails.is_empty(), "{set} {m} specular: {fails:?}");
         }
     }
-}
-
-fn bin() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_phong-approx"))
 }
 
 fn tmp(name: &str, text: &str) -> PathBuf {

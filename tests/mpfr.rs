@@ -4,6 +4,7 @@
 #![cfg(feature = "mpfr")]
 
 mod common;
+mod runner;
 
 use common::*;
 use num_traits::Signed;
@@ -85,7 +86,7 @@ fn precision_is_respected() {
 #[test]
 fn cli_mpfr_agrees_with_exact() {
     let run = |scalar: &str| {
-        let out = std::process::Command::new(env!("CARGO_BIN_EXE_phong-approx"))
+        let out = runner::bin()
             .args([
                 "span",
                 "--method",

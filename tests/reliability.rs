@@ -2,21 +2,20 @@
 //! attacker would has a test here that reproduces it, and now passes. Numbers refer
 //! to the list in docs/conformance.md, "Limits and exit codes".
 
+mod runner;
+use runner::{bin, code, refused, run, stderr};
+
 use num_bigint::BigInt;
 use num_traits::{Pow, Signed};
 use phong_approx::BigRational;
 use serde_json::Value;
 use std::io::Read;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output, Stdio};
+use std::process::{Output, Stdio};
 use std::time::{Duration, Instant};
 
 fn root() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))
-}
-
-fn bin() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_phong-approx"))
 }
 
 /// A fresh folder for one test.
@@ -25,27 +24,6 @@ fn scratch(name: &str) -> PathBuf {
     let _ = std::fs::remove_dir_all(&d);
     std::fs::create_dir_all(&d).unwrap();
     d
-}
-
-fn run(args: &[&str]) -> Output {
-    bin().args(args).output().unwrap()
-}
-
-fn code(o: &Output) -> i32 {
-    o.status.code().unwrap_or(-1)
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
-
-/// Exit code 2 with one line on stderr that contains `needle`, and no panic.
-fn refused(o: &Output, needle: &str) {
-    let e = stderr(o);
-    assert_eq!(code(o), 2, "expected exit 2, got {}: {e}", code(o));
-    assert!(!e.contains("panicked"), "panic: {e}");
-    assert_eq!(e.trim_end().lines().count(), 1, "not one line: {e}");
-    assert!(e.contains(needle), "'{needle}' not in: {e}");
 }
 
 fn typical() -> Value {

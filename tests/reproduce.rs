@@ -1,10 +1,12 @@
 //! The rasterizer and `phong-approx reproduce`, end to end on a few frames.
 
+mod runner;
+use runner::bin;
+
 use phong_approx::raster::experiment::Experiment;
 use phong_approx::raster::mesh::{torus, Mesh, NormalMode};
 use phong_approx::raster::render::{render, RenderOptions, Scene, Shader, COLUMNS};
 use phong_approx::Method;
-use std::process::Command;
 
 fn col(c: Shader) -> usize {
     COLUMNS.iter().position(|x| *x == c).unwrap()
@@ -157,10 +159,6 @@ fn exact_mode_agrees_with_the_f32_pipeline() {
         "{total} mismatches in {} pixels",
         x.pixels
     );
-}
-
-fn bin() -> Command {
-    Command::new(env!("CARGO_BIN_EXE_phong-approx"))
 }
 
 /// Runs `reproduce` with `args` into a fresh folder named after `tag`; its stdout and

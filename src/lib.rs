@@ -91,6 +91,7 @@ pub mod span;
 pub mod span_report;
 pub mod specular;
 pub mod symmetric_phong;
+pub mod table;
 pub mod testkit;
 pub mod tolerance;
 pub mod vector;

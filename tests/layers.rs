@@ -16,6 +16,7 @@ use std::path::{Path, PathBuf};
 const LAYERS: &[(&str, u32)] = &[
     // Errors and the message helpers; exact arithmetic with no crate dependency.
     ("error.rs", 0),
+    ("table.rs", 0),
     ("reference/decimal.rs", 0),
     ("reference/transcendental.rs", 0),
     // The number types.

@@ -9,7 +9,7 @@ use phong_approx::conformance::shown;
 use phong_approx::raster::experiment::Experiment;
 use phong_approx::raster::mesh::NormalMode;
 use phong_approx::raster::pictures::{save_png, Picture};
-use phong_approx::raster::report::{self, OUTPUTS};
+use phong_approx::raster::report;
 use std::path::PathBuf;
 use std::time::Instant;
 
@@ -109,7 +109,7 @@ pub fn run(a: &ReproduceArgs) -> Result<(), CliError> {
         return fit::run(a, &exp, fit_frames);
     }
     let out = OutDir::open(&a.out, a.force, "--out")?;
-    out.check_all(OUTPUTS)?;
+    out.check_all(report::outputs())?;
     let started = Instant::now();
     let bar = ProgressBar::new(u64::from(frames) * 4);
     bar.set_style(
@@ -125,11 +125,11 @@ pub fn run(a: &ReproduceArgs) -> Result<(), CliError> {
             "the scene has no visible pixel (the torus is too small, or too large, for the image)",
         ));
     }
-    let tables = report::tables_md(&exp, &results, started.elapsed().as_secs_f64());
-    outp!("{tables}")?;
-    out.write("tables.md", &tables)?;
-    out.write("table1.csv", &report::table1_csv(&results))?;
-    out.write("table2.csv", &report::table2_csv(&results))?;
+    let tables = report::tables(&exp, &results, started.elapsed().as_secs_f64());
+    outp!("{}", tables[0].1)?;
+    for (name, text) in &tables {
+        out.write(name, text)?;
+    }
     for (name, picture) in report::pictures(&exp).map_err(|e| io_err(out.dir(), e))? {
         match picture {
             Picture::Png(img) => {

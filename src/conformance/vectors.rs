@@ -739,47 +739,85 @@ pub fn file_of(set: &str, cases: Vec<Case>) -> VectorFile {
 /// The CSV twin of a vector file: one row per case, method and pixel:
 /// `set,case,method,kind,n,pixel,value,level` (`kind` is `diffuse` or `specular`).
 pub fn to_csv(file: &VectorFile) -> String {
-    let mut s = String::from("set,case,method,kind,n,pixel,value,level\n");
+    /// A line of the CSV twin.
+    #[derive(Serialize)]
+    struct Row<'a> {
+        set: &'a str,
+        case: &'a str,
+        method: &'a str,
+        kind: &'a str,
+        n: u32,
+        pixel: usize,
+        value: &'a str,
+        level: u8,
+    }
+    let mut rows = Vec::new();
     for c in &file.cases {
-        let mut emit = |kind: &str, exp: &std::collections::BTreeMap<String, Expected>| {
+        let parts = std::iter::once(("diffuse", &c.expected))
+            .chain(c.specular.iter().map(|sp| ("specular", &sp.expected)));
+        for (kind, exp) in parts {
             for (m, e) in exp {
                 for (i, (v, l)) in e.values.iter().zip(&e.levels).enumerate() {
-                    s.push_str(&format!(
-                        "{},{},{},{},{},{},{},{}\n",
-                        file.set, c.id, m, kind, c.n, i, v, l
-                    ));
+                    rows.push(Row {
+                        set: &file.set,
+                        case: &c.id,
+                        method: m,
+                        kind,
+                        n: c.n,
+                        pixel: i,
+                        value: v,
+                        level: *l,
+                    });
                 }
             }
-        };
-        emit("diffuse", &c.expected);
-        if let Some(sp) = &c.specular {
-            emit("specular", &sp.expected);
         }
     }
-    s
+    crate::table::csv(rows)
 }
 
 /// The inputs of every case as CSV: `case,n,na_x,na_y,na_z,nb_x,…,l_z,h_x,h_y,h_z,s`
 /// with exact fractions (empty H and s where a case has no specular part).
 pub fn inputs_csv(file: &VectorFile) -> String {
-    let mut s = String::from("case,n,na_x,na_y,na_z,nb_x,nb_y,nb_z,l_x,l_y,l_z,h_x,h_y,h_z,s\n");
-    for c in &file.cases {
-        let (h, sh) = match &c.specular {
-            Some(sp) => (sp.h.exact.join(","), sp.s.to_string()),
-            None => (",,".to_string(), String::new()),
-        };
-        s.push_str(&format!(
-            "{},{},{},{},{},{},{}\n",
-            c.id,
-            c.n,
-            c.na.exact.join(","),
-            c.nb.exact.join(","),
-            c.l.exact.join(","),
-            h,
-            sh
-        ));
+    /// A line of the inputs CSV (an absent specular part: empty cells).
+    #[derive(Serialize)]
+    struct Row<'a> {
+        case: &'a str,
+        n: u32,
+        na_x: &'a str,
+        na_y: &'a str,
+        na_z: &'a str,
+        nb_x: &'a str,
+        nb_y: &'a str,
+        nb_z: &'a str,
+        l_x: &'a str,
+        l_y: &'a str,
+        l_z: &'a str,
+        h_x: &'a str,
+        h_y: &'a str,
+        h_z: &'a str,
+        s: Option<u32>,
     }
-    s
+    crate::table::csv(file.cases.iter().map(|c| {
+        let h = c.specular.as_ref().map(|sp| &sp.h.exact);
+        let hc = |k: usize| h.map_or("", |h| h[k].as_str());
+        Row {
+            case: &c.id,
+            n: c.n,
+            na_x: &c.na.exact[0],
+            na_y: &c.na.exact[1],
+            na_z: &c.na.exact[2],
+            nb_x: &c.nb.exact[0],
+            nb_y: &c.nb.exact[1],
+            nb_z: &c.nb.exact[2],
+            l_x: &c.l.exact[0],
+            l_y: &c.l.exact[1],
+            l_z: &c.l.exact[2],
+            h_x: hc(0),
+            h_y: hc(1),
+            h_z: hc(2),
+            s: c.specular.as_ref().map(|sp| sp.s),
+        }
+    }))
 }
 
 /// `true` when every value parses and the levels agree with the values (a reader's

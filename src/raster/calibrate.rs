@@ -15,7 +15,7 @@
 //! to each of its values, the best scene so far is kept, and passes repeat until one
 //! changes nothing (at most [`MAX_PASSES`]). Evaluations are cached.
 
-use super::experiment::{Experiment, TorusResult, PAPER_TABLE_1, PAPER_TABLE_2};
+use super::experiment::{Experiment, PaperDeviation, TorusResult, PAPER_TABLE_1, PAPER_TABLE_2};
 use super::render::{index, Reading, Shader};
 use crate::Method;
 use std::collections::HashMap;
@@ -201,10 +201,10 @@ pub fn residuals(
     let mut out = Vec::with_capacity(28);
     for (r, p) in results.iter().zip(PAPER_TABLE_2) {
         let d = &r.stats.deviation;
-        for (col, name, mean, max) in [
-            (g, "Gouraud", p.1, p.2),
-            (e, "Euler", p.3, p.4),
-            (ce, "corrected Euler", p.5, p.6),
+        for (col, name, PaperDeviation { mean, max }) in [
+            (g, "Gouraud", p.gouraud),
+            (e, "Euler", p.euler),
+            (ce, "corrected Euler", p.corrected_euler),
         ] {
             out.push(Residual {
                 name: format!("{} {name} mean", r.polygons),
@@ -224,7 +224,7 @@ pub fn residuals(
         out.push(Residual {
             name: format!("{} Table 1 share", r.polygons),
             kind: Kind::Share,
-            paper: p.1,
+            paper: p.percent,
             ours: reading.percent(&r.stats.rows, single),
         });
     }
@@ -490,7 +490,7 @@ pub fn max_ratio_table(study: &Study) -> String {
             let get = |what: &str| {
                 f.residuals
                     .iter()
-                    .find(|r| r.name == format!("{} {what} max", p.0))
+                    .find(|r| r.name == format!("{} {what} max", p.polygons))
                     .map_or(f64::NAN, |r| r.ours)
             };
             get("Euler") / get("Gouraud")
@@ -505,8 +505,8 @@ pub fn max_ratio_table(study: &Study) -> String {
         let _ = writeln!(
             s,
             "| {} | {:.2} | {lo:.2} | {hi:.2} |",
-            p.0,
-            f64::from(p.4) / f64::from(p.2)
+            p.polygons,
+            f64::from(p.euler.max) / f64::from(p.gouraud.max)
         );
     }
     s
@@ -716,11 +716,8 @@ mod tests {
             .map(|(p, t1)| {
                 let mut deviation = vec![Deviation::default(); COLUMNS.len()];
                 let pixels = 1_000_000u64;
-                for (col, mean, max) in [
-                    (index(Shader::Span(Method::Gouraud)), p.1, p.2),
-                    (index(Shader::Span(Method::Euler)), p.3, p.4),
-                    (index(Shader::Span(Method::CorrectedEuler)), p.5, p.6),
-                ] {
+                for (m, _, PaperDeviation { mean, max }) in p.methods() {
+                    let col = index(Shader::Span(m));
                     deviation[col] = Deviation {
                         pixels,
                         sum: (mean * pixels as f64).round() as u64,
@@ -729,13 +726,13 @@ mod tests {
                 }
                 let rows = 1000u64;
                 TorusResult {
-                    polygons: p.0,
+                    polygons: p.polygons,
                     segments: (1, 1),
                     stats: Stats {
                         deviation,
                         rows: RowStats {
                             rows,
-                            truncated_difference_zero: (t1.1 * 10.0).round() as u64,
+                            truncated_difference_zero: (t1.percent * 10.0).round() as u64,
                             ..RowStats::default()
                         },
                         pixels,

@@ -176,14 +176,97 @@ impl Experiment {
     }
 }
 
-/// The paper's Table 1: percentage of scan lines that could use Gouraud.
-pub const PAPER_TABLE_1: [(u32, f64); 4] = [(288, 54.9), (512, 69.3), (800, 80.9), (1152, 89.0)];
+/// A row of the paper's Table 1.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PaperTable1 {
+    /// The torus's polygons.
+    pub polygons: u32,
+    /// The percentage of scan lines that could have been computed with Gouraud.
+    pub percent: f64,
+}
 
-/// The paper's Table 2: (polygons, Gouraud dev, max, Euler dev, max, corrected Euler
-/// dev, max).
-pub const PAPER_TABLE_2: [(u32, f64, u32, f64, u32, f64, u32); 4] = [
-    (288, 1.08, 15, 0.75, 21, 0.081, 3),
-    (512, 0.60, 9, 0.42, 10, 0.033, 1),
-    (800, 0.38, 6, 0.28, 6, 0.016, 1),
-    (1152, 0.26, 4, 0.21, 5, 0.009, 1),
+/// The paper's Table 1: percentage of scan lines that could use Gouraud.
+pub const PAPER_TABLE_1: [PaperTable1; 4] = [
+    PaperTable1 {
+        polygons: 288,
+        percent: 54.9,
+    },
+    PaperTable1 {
+        polygons: 512,
+        percent: 69.3,
+    },
+    PaperTable1 {
+        polygons: 800,
+        percent: 80.9,
+    },
+    PaperTable1 {
+        polygons: 1152,
+        percent: 89.0,
+    },
 ];
+
+/// One method's cell of the paper's Table 2: the mean and the maximum deviation from
+/// Phong, in 8-bit levels.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PaperDeviation {
+    /// The mean deviation.
+    pub mean: f64,
+    /// The largest deviation.
+    pub max: u32,
+}
+
+/// A row of the paper's Table 2.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct PaperTable2 {
+    /// The torus's polygons.
+    pub polygons: u32,
+    /// Gouraud.
+    pub gouraud: PaperDeviation,
+    /// Euler.
+    pub euler: PaperDeviation,
+    /// Corrected Euler.
+    pub corrected_euler: PaperDeviation,
+}
+
+const fn row2(polygons: u32, g: (f64, u32), e: (f64, u32), ce: (f64, u32)) -> PaperTable2 {
+    PaperTable2 {
+        polygons,
+        gouraud: PaperDeviation {
+            mean: g.0,
+            max: g.1,
+        },
+        euler: PaperDeviation {
+            mean: e.0,
+            max: e.1,
+        },
+        corrected_euler: PaperDeviation {
+            mean: ce.0,
+            max: ce.1,
+        },
+    }
+}
+
+/// The paper's Table 2: per torus, Gouraud's, Euler's and corrected Euler's
+/// deviation from Phong.
+pub const PAPER_TABLE_2: [PaperTable2; 4] = [
+    row2(288, (1.08, 15), (0.75, 21), (0.081, 3)),
+    row2(512, (0.60, 9), (0.42, 10), (0.033, 1)),
+    row2(800, (0.38, 6), (0.28, 6), (0.016, 1)),
+    row2(1152, (0.26, 4), (0.21, 5), (0.009, 1)),
+];
+
+impl PaperTable2 {
+    /// The row's three methods, each with the shader of its column and a name.
+    pub fn methods(&self) -> [(crate::Method, &'static str, PaperDeviation); 3] {
+        use crate::Method;
+        [
+            (Method::Gouraud, "Gouraud", self.gouraud),
+            (Method::Euler, "Euler", self.euler),
+            (
+                Method::CorrectedEuler,
+                "corrected Euler",
+                self.corrected_euler,
+            ),
+        ]
+    }
+}

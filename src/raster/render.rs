@@ -288,7 +288,7 @@ fn shade_row(
                     text_same = truncated_difference_is_zero(&phong, &out, kd);
                 }
             }
-            _ => {
+            Shader::VertexGouraud => {
                 // Classic Gouraud: the vertex intensities, interpolated down the
                 // polygon's edges and along the row.
                 let (a, b) = (row.left.intensity, row.right.intensity);
@@ -296,6 +296,9 @@ fn shade_row(
                     *o = a + (b - a) * (i as f32 / n as f32);
                 }
             }
+            // COLUMNS holds span methods and vertex Gouraud only
+            // (`columns_are_span_methods_and_vertex_gouraud`).
+            other => unreachable!("{other:?} is not a column of the experiment"),
         }
         levels[c].extend(out.iter().map(|v| level(&(kd * v))));
     }
@@ -306,7 +309,8 @@ fn shade_row(
             // the span's edge values (exact) are interpolated.
             let m = match col {
                 Shader::Span(m) => *m,
-                _ => Method::Gouraud,
+                Shader::VertexGouraud => Method::Gouraud,
+                other => unreachable!("{other:?} is not a column of the experiment"),
             };
             m.run(&span_h, prep, &mut out).ok()?;
             specular[c].extend(out.iter().map(|v| v.max(0.0)));
@@ -529,6 +533,16 @@ impl Shading for Tables<'_> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn columns_are_span_methods_and_vertex_gouraud() {
+        for c in COLUMNS {
+            assert!(
+                matches!(c, Shader::Span(_) | Shader::VertexGouraud),
+                "{c:?}: render_row shades span methods and vertex Gouraud only"
+            );
+        }
+    }
 
     #[test]
     fn the_text_criterion_is_not_equal_levels() {

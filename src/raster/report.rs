@@ -9,34 +9,79 @@ use super::pictures::{
 };
 use super::render::{render, Reading, RenderOptions, Scene, Shader, COLUMNS};
 use crate::{Method, Span, Vec3};
+use serde::Serialize;
 use std::fmt::Write as _;
 
-/// The files `reproduce` writes: the tables, then the pictures of [`pictures`].
-pub const OUTPUTS: [&str; 13] = [
-    "tables.md",
-    "table1.csv",
-    "table2.csv",
-    "fig4_torus800_corrected_euler.png",
-    "fig5_torus800_phong.png",
-    "torus800_gouraud_diffuse.png",
-    "diff_torus800_corrected_euler.png",
-    "diff_torus800_gouraud.png",
-    "diff_torus800_euler.png",
-    "fig1_phong_minus_gouraud.svg",
-    "fig2_phong_minus_euler.svg",
-    "fig3_phong_minus_corrected_euler.svg",
-    "fig0_curves.svg",
+/// The tables `reproduce` writes ([`tables`]).
+pub const TABLES: [&str; 3] = ["tables.md", "table1.csv", "table2.csv"];
+
+/// The renders of the 800-polygon torus, frame 37: file, method, and whether the
+/// highlights are left out (Figures 4–5 and the diffuse Gouraud render).
+const RENDERS: [(&str, Method, bool); 3] = [
+    (
+        "fig4_torus800_corrected_euler.png",
+        Method::CorrectedEuler,
+        false,
+    ),
+    ("fig5_torus800_phong.png", Method::Phong, false),
+    ("torus800_gouraud_diffuse.png", Method::Gouraud, true),
 ];
 
-/// The span method of [`Method::ALL`] named `name`.
-///
-/// # Panics
-/// If no method has that name.
-fn method(name: &str) -> Method {
-    *Method::ALL
-        .iter()
-        .find(|m| m.name() == name)
-        .unwrap_or_else(|| panic!("no method named {name}"))
+/// The heat maps of each method's difference from Phong on the same frame.
+const DIFFS: [(&str, Method); 3] = [
+    ("diff_torus800_corrected_euler.png", Method::CorrectedEuler),
+    ("diff_torus800_gouraud.png", Method::Gouraud),
+    ("diff_torus800_euler.png", Method::Euler),
+];
+
+/// Figures 1–3 (each method's difference from Phong along one scan line: file,
+/// title, method, curve label) and Figure 0 (the curves themselves).
+const FIGURES: [(&str, &str, Method, &str); 3] = [
+    (
+        "fig1_phong_minus_gouraud.svg",
+        "Figure 1: Phong − Gouraud, normals 60° apart",
+        Method::Gouraud,
+        "Phong − Gouraud",
+    ),
+    (
+        "fig2_phong_minus_euler.svg",
+        "Figure 2: Phong − Euler, normals 60° apart",
+        Method::Euler,
+        "Phong − Euler",
+    ),
+    (
+        "fig3_phong_minus_corrected_euler.svg",
+        "Figure 3: Phong − corrected Euler, normals 60° apart",
+        Method::CorrectedEuler,
+        "Phong − corrected Euler",
+    ),
+];
+
+/// Figure 0's file.
+const CURVES: &str = "fig0_curves.svg";
+
+/// The files `reproduce` writes, in order: the tables, then the pictures of
+/// [`pictures`] (derived from the lists the reports are made from, so that the two
+/// cannot drift apart).
+pub fn outputs() -> Vec<&'static str> {
+    TABLES
+        .into_iter()
+        .chain(RENDERS.map(|r| r.0))
+        .chain(DIFFS.map(|d| d.0))
+        .chain(FIGURES.map(|f| f.0))
+        .chain([CURVES])
+        .collect()
+}
+
+/// The tables of [`TABLES`] with their contents: `tables.md` ([`tables_md`]),
+/// `table1.csv`, `table2.csv`.
+pub fn tables(exp: &Experiment, results: &[TorusResult], secs: f64) -> Vec<(&'static str, String)> {
+    let [md, t1, t2] = TABLES;
+    vec![
+        (md, tables_md(exp, results, secs)),
+        (t1, table1_csv(results)),
+        (t2, table2_csv(results)),
+    ]
 }
 
 /// The Markdown report of `reproduce` (`tables.md`): the scene, Table 2 beside the
@@ -96,15 +141,15 @@ pub fn tables_md(exp: &Experiment, results: &[TorusResult], secs: f64) -> String
             s,
             "| {} | {:.2} / {} | {} | {} | {:.2} / {} | {} | {:.3} / {} | {} |",
             r.polygons,
-            p.1,
-            p.2,
+            p.gouraud.mean,
+            p.gouraud.max,
             f(g),
             f(gv),
-            p.3,
-            p.4,
+            p.euler.mean,
+            p.euler.max,
             f(e),
-            p.5,
-            p.6,
+            p.corrected_euler.mean,
+            p.corrected_euler.max,
             f(ce)
         );
     }
@@ -172,7 +217,7 @@ pub fn table1_md(results: &[TorusResult]) -> String {
     let _ = writeln!(s, "{head} δ says G, levels G ≠ CE | δ says CE, levels G = CE | rows | 1-pixel rows |\n{rule}---:|---:|---:|---:|");
     for (r, p) in results.iter().zip(PAPER_TABLE_1) {
         let t = &r.stats.rows;
-        let mut line = format!("| {} | {:.1} % |", r.polygons, p.1);
+        let mut line = format!("| {} | {:.1} % |", r.polygons, p.percent);
         for reading in Reading::ALL {
             let _ = write!(
                 line,
@@ -197,51 +242,64 @@ pub fn table1_md(results: &[TorusResult]) -> String {
 /// `table1.csv`: per torus, the paper's Table 1 percentage and our row counts (one
 /// line per torus, the header first).
 pub fn table1_csv(results: &[TorusResult]) -> String {
-    let mut s = String::from("polygons,paper_percent,rows,single_pixel_rows,truncated_difference_zero,gouraud_eq_corrected,gouraud_eq_phong,predicted_gouraud,predicted_gouraud_but_differ,predicted_corrected_but_same\n");
-    for (r, p) in results.iter().zip(PAPER_TABLE_1) {
-        let t = &r.stats.rows;
-        let _ = writeln!(
-            s,
-            "{},{},{},{},{},{},{},{},{},{}",
-            r.polygons,
-            p.1,
-            t.rows,
-            t.single_pixel_rows,
-            t.truncated_difference_zero,
-            t.gouraud_eq_corrected,
-            t.gouraud_eq_phong,
-            t.predicted_gouraud,
-            t.predicted_gouraud_but_differ,
-            t.predicted_corrected_but_same
-        );
+    /// A line of `table1.csv`.
+    #[derive(Serialize)]
+    struct Row {
+        polygons: u32,
+        paper_percent: String,
+        rows: u64,
+        single_pixel_rows: u64,
+        truncated_difference_zero: u64,
+        gouraud_eq_corrected: u64,
+        gouraud_eq_phong: u64,
+        predicted_gouraud: u64,
+        predicted_gouraud_but_differ: u64,
+        predicted_corrected_but_same: u64,
     }
-    s
+    crate::table::csv(results.iter().zip(PAPER_TABLE_1).map(|(r, p)| {
+        let t = &r.stats.rows;
+        Row {
+            polygons: r.polygons,
+            paper_percent: p.percent.to_string(),
+            rows: t.rows,
+            single_pixel_rows: t.single_pixel_rows,
+            truncated_difference_zero: t.truncated_difference_zero,
+            gouraud_eq_corrected: t.gouraud_eq_corrected,
+            gouraud_eq_phong: t.gouraud_eq_phong,
+            predicted_gouraud: t.predicted_gouraud,
+            predicted_gouraud_but_differ: t.predicted_gouraud_but_differ,
+            predicted_corrected_but_same: t.predicted_corrected_but_same,
+        }
+    }))
 }
 
 /// `table2.csv`: per torus and column of [`COLUMNS`], the pixels and the mean
 /// (6 decimals) and maximum deviation from Phong in 8-bit levels.
 pub fn table2_csv(results: &[TorusResult]) -> String {
-    let mut s = String::from("polygons,method,pixels,mean_deviation,max_deviation\n");
-    for r in results {
-        for (c, d) in COLUMNS.iter().zip(&r.stats.deviation) {
-            let _ = writeln!(
-                s,
-                "{},{},{},{:.6},{}",
-                r.polygons,
-                c.label(),
-                d.pixels,
-                d.mean(),
-                d.max
-            );
-        }
+    /// A line of `table2.csv`.
+    #[derive(Serialize)]
+    struct Row {
+        polygons: u32,
+        method: String,
+        pixels: u64,
+        mean_deviation: String,
+        max_deviation: u32,
     }
-    s
+    crate::table::csv(results.iter().flat_map(|r| {
+        COLUMNS.iter().zip(&r.stats.deviation).map(|(c, d)| Row {
+            polygons: r.polygons,
+            method: c.label().into_owned(),
+            pixels: d.pixels,
+            mean_deviation: format!("{:.6}", d.mean()),
+            max_deviation: d.max,
+        })
+    }))
 }
 
 /// Figures 4–5 (the 800-polygon torus by corrected Euler and by Phong, with
 /// highlights, frame 37), the diffuse Gouraud render, the difference heat maps with
 /// their legends, and the scan-line figures of [`scanline_figures`], each with its file
-/// name (in the order of [`OUTPUTS`]). The renders follow the experiment's size,
+/// name (in the order of [`outputs`]). The renders follow the experiment's size,
 /// scaled up by a whole factor to at least 400 pixels on the shorter side.
 ///
 /// # Errors
@@ -266,29 +324,12 @@ pub fn pictures(exp: &Experiment) -> Result<Vec<(&'static str, Picture)>, Pictur
     let look = Look::default();
     let diffuse = Look { ks: 0.0, ..look };
     let phong = Shader::Span(Method::Phong);
-    let mut out = vec![
-        (
-            "fig4_torus800_corrected_euler.png",
-            Picture::Png(shaded_image(
-                &frame,
-                Shader::Span(Method::CorrectedEuler),
-                look,
-            )),
-        ),
-        (
-            "fig5_torus800_phong.png",
-            Picture::Png(shaded_image(&frame, phong, look)),
-        ),
-        (
-            "torus800_gouraud_diffuse.png",
-            Picture::Png(shaded_image(&frame, Shader::Span(Method::Gouraud), diffuse)),
-        ),
-    ];
-    for (name, m) in [
-        ("diff_torus800_corrected_euler.png", Method::CorrectedEuler),
-        ("diff_torus800_gouraud.png", Method::Gouraud),
-        ("diff_torus800_euler.png", Method::Euler),
-    ] {
+    let mut out = Vec::new();
+    for (name, m, no_highlights) in RENDERS {
+        let l = if no_highlights { diffuse } else { look };
+        out.push((name, Picture::Png(shaded_image(&frame, Shader::Span(m), l))));
+    }
+    for (name, m) in DIFFS {
         out.push((
             name,
             Picture::Png(labelled_difference_image(&frame, Shader::Span(m), phong)),
@@ -322,34 +363,14 @@ pub fn figure_span(scene: &Scene) -> Span<f64> {
 /// [`PictureError::Svg`] if a plot fails.
 pub fn scanline_figures(scene: &Scene) -> Result<Vec<(&'static str, String)>, PictureError> {
     let span = figure_span(scene);
-    let values = |name: &str| method(name).values(&span).expect("span");
-    let phong = values("phong");
-    let curve = |name: &str| -> Vec<f64> {
-        let v = values(name);
+    let values = |m: Method| m.values(&span).expect("span");
+    let phong = values(Method::Phong);
+    let curve = |m: Method| -> Vec<f64> {
+        let v = values(m);
         phong.iter().zip(&v).map(|(p, x)| 255.0 * (p - x)).collect()
     };
-    let figs = [
-        (
-            "fig1_phong_minus_gouraud.svg",
-            "Figure 1: Phong − Gouraud, normals 60° apart",
-            "gouraud",
-            "Phong − Gouraud",
-        ),
-        (
-            "fig2_phong_minus_euler.svg",
-            "Figure 2: Phong − Euler, normals 60° apart",
-            "euler",
-            "Phong − Euler",
-        ),
-        (
-            "fig3_phong_minus_corrected_euler.svg",
-            "Figure 3: Phong − corrected Euler, normals 60° apart",
-            "corrected-euler",
-            "Phong − corrected Euler",
-        ),
-    ];
     let mut out = Vec::new();
-    for (file, title, m, label) in figs {
+    for (file, title, m, label) in FIGURES {
         out.push((
             file,
             line_plot(title, "difference (8-bit levels)", &[(label, curve(m))])?,
@@ -357,15 +378,15 @@ pub fn scanline_figures(scene: &Scene) -> Result<Vec<(&'static str, String)>, Pi
     }
     let as_levels = |v: Vec<f64>| v.into_iter().map(|x| 255.0 * x).collect::<Vec<_>>();
     out.push((
-        "fig0_curves.svg",
+        CURVES,
         line_plot(
             "One scan line, normals 60° apart",
             "intensity (8-bit levels)",
             &[
                 ("Phong", as_levels(phong.clone())),
-                ("Gouraud", as_levels(values("gouraud"))),
-                ("Euler", as_levels(values("euler"))),
-                ("corrected Euler", as_levels(values("corrected-euler"))),
+                ("Gouraud", as_levels(values(Method::Gouraud))),
+                ("Euler", as_levels(values(Method::Euler))),
+                ("corrected Euler", as_levels(values(Method::CorrectedEuler))),
             ],
         )?,
     ));
@@ -375,6 +396,7 @@ pub fn scanline_figures(scene: &Scene) -> Result<Vec<(&'static str, String)>, Pi
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::raster::experiment::PaperTable1;
     use crate::raster::pictures::tests_support::csv_rows;
     use crate::raster::render::{Deviation, ExactCheck, RowStats, Stats};
 
@@ -383,7 +405,7 @@ mod tests {
     fn results() -> Vec<TorusResult> {
         PAPER_TABLE_1
             .iter()
-            .map(|&(polygons, _)| TorusResult {
+            .map(|&PaperTable1 { polygons, .. }| TorusResult {
                 polygons,
                 segments: (1, 1),
                 stats: Stats {
@@ -533,7 +555,7 @@ mod tests {
     fn the_scanline_figures_are_labelled_svgs() {
         let figs = scanline_figures(&exp().scene()).expect("plots");
         let names: Vec<&str> = figs.iter().map(|f| f.0).collect();
-        assert_eq!(names, OUTPUTS[9..]);
+        assert_eq!(names, outputs()[9..]);
         for (name, svg) in &figs {
             assert!(svg.starts_with("<svg"), "{name}");
             assert!(

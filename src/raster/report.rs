@@ -8,6 +8,10 @@ use super::pictures::{
     labelled_difference_image, line_plot, shaded_image, Look, Picture, PictureError,
 };
 use super::render::{render, Reading, RenderOptions, Scene, Shader, COLUMNS};
+use crate::table::{
+    markdown,
+    Align::{Left, Right},
+};
 use crate::{Method, Span, Vec3};
 use serde::Serialize;
 use std::fmt::Write as _;
@@ -132,45 +136,57 @@ pub fn tables_md(exp: &Experiment, results: &[TorusResult], secs: f64) -> String
         s,
         "## Table 2: deviation from Phong in 8-bit levels (mean / max), ours beside the paper's\n"
     );
-    let _ = writeln!(s, "| polygons | Gouraud (paper) | Gouraud, span | Gouraud, vertex | Euler (paper) | Euler | Corr. Euler (paper) | Corr. Euler |");
-    let _ = writeln!(s, "|---:|---:|---:|---:|---:|---:|---:|---:|");
-    for (r, p) in results.iter().zip(PAPER_TABLE_2) {
-        let d = &r.stats.deviation;
-        let f = |i: usize| format!("{:.3} / {}", d[i].mean(), d[i].max);
-        let _ = writeln!(
-            s,
-            "| {} | {:.2} / {} | {} | {} | {:.2} / {} | {} | {:.3} / {} | {} |",
-            r.polygons,
-            p.gouraud.mean,
-            p.gouraud.max,
-            f(g),
-            f(gv),
-            p.euler.mean,
-            p.euler.max,
-            f(e),
-            p.corrected_euler.mean,
-            p.corrected_euler.max,
-            f(ce)
-        );
-    }
+    let head = [
+        "polygons",
+        "Gouraud (paper)",
+        "Gouraud, span",
+        "Gouraud, vertex",
+        "Euler (paper)",
+        "Euler",
+        "Corr. Euler (paper)",
+        "Corr. Euler",
+    ];
+    let rows: Vec<Vec<String>> = results
+        .iter()
+        .zip(PAPER_TABLE_2)
+        .map(|(r, p)| {
+            let d = &r.stats.deviation;
+            let f = |i: usize| format!("{:.3} / {}", d[i].mean(), d[i].max);
+            vec![
+                r.polygons.to_string(),
+                format!("{:.2} / {}", p.gouraud.mean, p.gouraud.max),
+                f(g),
+                f(gv),
+                format!("{:.2} / {}", p.euler.mean, p.euler.max),
+                f(e),
+                format!("{:.3} / {}", p.corrected_euler.mean, p.corrected_euler.max),
+                f(ce),
+            ]
+        })
+        .collect();
+    s.push_str(&markdown(&head, &[Right; 8], &rows));
     let _ = writeln!(
         s,
         "\n## Table 2, every method (mean / max deviation from Phong, 8-bit levels)\n"
     );
-    let mut head = String::from("| polygons |");
-    let mut rule = String::from("|---:|");
-    for c in COLUMNS.iter().skip(1) {
-        let _ = write!(head, " {} |", c.label());
-        rule.push_str("---:|");
-    }
-    let _ = writeln!(s, "{head}\n{rule}");
-    for r in results {
-        let mut line = format!("| {} |", r.polygons);
-        for d in r.stats.deviation.iter().skip(1) {
-            let _ = write!(line, " {:.3} / {} |", d.mean(), d.max);
-        }
-        let _ = writeln!(s, "{line}");
-    }
+    let head: Vec<String> = std::iter::once("polygons".to_string())
+        .chain(COLUMNS.iter().skip(1).map(|c| c.label().into_owned()))
+        .collect();
+    let rows: Vec<Vec<String>> = results
+        .iter()
+        .map(|r| {
+            std::iter::once(r.polygons.to_string())
+                .chain(
+                    r.stats
+                        .deviation
+                        .iter()
+                        .skip(1)
+                        .map(|d| format!("{:.3} / {}", d.mean(), d.max)),
+                )
+                .collect()
+        })
+        .collect();
+    s.push_str(&markdown(&head, &vec![Right; head.len()], &rows));
     let _ = writeln!(
         s,
         "\n## Table 1: scan lines that \"could have been computed with Gouraud\", every reading\n"
@@ -184,21 +200,29 @@ pub fn tables_md(exp: &Experiment, results: &[TorusResult], secs: f64) -> String
             "\n## Exact mode: the {}-polygon torus, first {} frame(s), every span also in exact rationals\n",
             r.polygons, exp.exact_frames
         );
-        let _ = writeln!(s, "| method | span pixels | f32 level ≠ exact level | of which within rounding of a level boundary |");
-        let _ = writeln!(s, "|---|---:|---:|---:|");
-        for (c, col) in COLUMNS.iter().enumerate() {
-            if c == gv || x.mismatches.is_empty() {
-                continue;
-            }
-            let _ = writeln!(
-                s,
-                "| {} | {} | {} | {} |",
-                col.label(),
-                x.pixels,
-                x.mismatches[c],
-                x.explained[c]
-            );
-        }
+        let rows: Vec<Vec<String>> = COLUMNS
+            .iter()
+            .enumerate()
+            .filter(|&(c, _)| c != gv && !x.mismatches.is_empty())
+            .map(|(c, col)| {
+                vec![
+                    col.label().into_owned(),
+                    x.pixels.to_string(),
+                    x.mismatches[c].to_string(),
+                    x.explained[c].to_string(),
+                ]
+            })
+            .collect();
+        s.push_str(&markdown(
+            &[
+                "method",
+                "span pixels",
+                "f32 level ≠ exact level",
+                "of which within rounding of a level boundary",
+            ],
+            &[Left, Right, Right, Right],
+            &rows,
+        ));
     }
     s
 }
@@ -207,36 +231,44 @@ pub fn tables_md(exp: &Experiment, results: &[TorusResult], secs: f64) -> String
 /// percentage without (and, in brackets, with) the one-pixel rows, the δ test's two
 /// kinds of disagreement with the caption, and the row counts.
 pub fn table1_md(results: &[TorusResult]) -> String {
-    let mut s = String::new();
-    let mut head = String::from("| polygons | paper |");
-    let mut rule = String::from("|---:|---:|");
-    for r in Reading::ALL {
-        let _ = write!(head, " {} |", r.label());
-        rule.push_str("---:|");
-    }
-    let _ = writeln!(s, "{head} δ says G, levels G ≠ CE | δ says CE, levels G = CE | rows | 1-pixel rows |\n{rule}---:|---:|---:|---:|");
-    for (r, p) in results.iter().zip(PAPER_TABLE_1) {
-        let t = &r.stats.rows;
-        let mut line = format!("| {} | {:.1} % |", r.polygons, p.percent);
-        for reading in Reading::ALL {
-            let _ = write!(
-                line,
-                " {:.1} % ({:.1} %) |",
-                reading.percent(t, false),
-                reading.percent(t, true)
-            );
-        }
-        let pc = |k: u64| 100.0 * k as f64 / t.rows.max(1) as f64;
-        let _ = writeln!(
-            s,
-            "{line} {:.2} % | {:.2} % | {} | {} |",
-            pc(t.predicted_gouraud_but_differ),
-            pc(t.predicted_corrected_but_same),
-            t.rows,
-            t.single_pixel_rows
-        );
-    }
-    s
+    let head: Vec<String> = ["polygons", "paper"]
+        .into_iter()
+        .map(String::from)
+        .chain(Reading::ALL.iter().map(|r| r.label().to_string()))
+        .chain(
+            [
+                "δ says G, levels G ≠ CE",
+                "δ says CE, levels G = CE",
+                "rows",
+                "1-pixel rows",
+            ]
+            .map(String::from),
+        )
+        .collect();
+    let rows: Vec<Vec<String>> = results
+        .iter()
+        .zip(PAPER_TABLE_1)
+        .map(|(r, p)| {
+            let t = &r.stats.rows;
+            let pc = |k: u64| 100.0 * k as f64 / t.rows.max(1) as f64;
+            let mut row = vec![r.polygons.to_string(), format!("{:.1} %", p.percent)];
+            row.extend(Reading::ALL.iter().map(|reading| {
+                format!(
+                    "{:.1} % ({:.1} %)",
+                    reading.percent(t, false),
+                    reading.percent(t, true)
+                )
+            }));
+            row.extend([
+                format!("{:.2} %", pc(t.predicted_gouraud_but_differ)),
+                format!("{:.2} %", pc(t.predicted_corrected_but_same)),
+                t.rows.to_string(),
+                t.single_pixel_rows.to_string(),
+            ]);
+            row
+        })
+        .collect();
+    markdown(&head, &vec![Right; head.len()], &rows)
 }
 
 /// `table1.csv`: per torus, the paper's Table 1 percentage and our row counts (one

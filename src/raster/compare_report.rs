@@ -12,6 +12,10 @@ use super::pictures::{
     fitting_scale, heat_legend, heat_map, level_image, stack, text_strip, BACKGROUND, INK,
 };
 use super::precision::{self, PrecisionStats, PRECISIONS, SPAN_LENGTHS};
+use crate::table::{
+    markdown, Align,
+    Align::{Left, Right},
+};
 use crate::Method;
 use image::RgbImage;
 use rayon::prelude::*;
@@ -113,58 +117,72 @@ pub fn report_md(exp: &Experiment, pframes: u32, r: &Results, secs: f64) -> Stri
          level|, 8-bit levels floor(255·v), over the visible pixels: mean / max. Ran in {:.0} s.\n",
         exp.frames, exp.size.0, exp.size.1, exp.radii.0, exp.radii.1, secs
     );
-    let _ = writeln!(
-        s,
-        "## Methods\n\n| column | source | reconstructed | specular power |\n|---|---|---|---|"
-    );
-    for sh in COLUMNS.iter() {
-        let pw = match sh.label().as_ref() {
-            "phong-pixel" => "exact (f64)",
-            "gouraud" => "at the span's edges, interpolated",
-            "gouraud-vertex" => "at the vertices, interpolated",
-            "vertex-angle" => "table of cos^s (byte angle)",
-            _ if sh.power_from_table() => "1024-entry table",
-            _ => "per pixel",
-        };
-        let _ = writeln!(
-            s,
-            "| {} | {} | {} | {} |",
-            sh.label(),
-            sh.source(),
-            if sh.reconstructed() { "yes" } else { "" },
-            pw
-        );
-    }
-    let header = |s: &mut String| {
-        table_header(s, r.tori.iter().map(|t| format!("{} polygons", t.polygons)));
-    };
+    let _ = writeln!(s, "## Methods\n");
+    let rows: Vec<Vec<String>> = COLUMNS
+        .iter()
+        .map(|sh| {
+            let pw = match sh.label().as_ref() {
+                "phong-pixel" => "exact (f64)",
+                "gouraud" => "at the span's edges, interpolated",
+                "gouraud-vertex" => "at the vertices, interpolated",
+                "vertex-angle" => "table of cos^s (byte angle)",
+                _ if sh.power_from_table() => "1024-entry table",
+                _ => "per pixel",
+            };
+            let reconstructed = if sh.reconstructed() { "yes" } else { "" };
+            [&*sh.label(), sh.source(), reconstructed, pw]
+                .map(String::from)
+                .to_vec()
+        })
+        .collect();
+    s.push_str(&markdown(
+        &["column", "source", "reconstructed", "specular power"],
+        &[Left; 4],
+        &rows,
+    ));
+    let tori: Vec<String> = r
+        .tori
+        .iter()
+        .map(|t| format!("{} polygons", t.polygons))
+        .collect();
+    let deviation = |d: &super::stats::Deviation| format!("{:.3} / {}", d.mean(), d.max);
     let _ = writeln!(
         s,
         "\n## Extended Table 2: diffuse (N·L), mean / max deviation\n"
     );
-    header(&mut s);
-    for (c, sh) in COLUMNS.iter().enumerate() {
-        let _ = write!(s, "| {} |", sh.label());
-        for t in &r.tori {
-            let d = &t.stats.diffuse[c];
-            let _ = write!(s, " {:.3} / {} |", d.mean(), d.max);
-        }
-        let _ = writeln!(s);
-    }
+    let rows = COLUMNS
+        .iter()
+        .enumerate()
+        .map(|(c, sh)| {
+            (
+                sh.label().into_owned(),
+                r.tori
+                    .iter()
+                    .map(|t| deviation(&t.stats.diffuse[c]))
+                    .collect(),
+            )
+        })
+        .collect();
+    s.push_str(&method_table(&tori, rows));
     for (k, sv) in SHININESS.iter().enumerate() {
         let _ = writeln!(
             s,
             "\n## Extended Table 2: specular (N·H)^{sv}, mean / max deviation\n"
         );
-        header(&mut s);
-        for (c, sh) in COLUMNS.iter().enumerate() {
-            let _ = write!(s, "| {} |", sh.label());
-            for t in &r.tori {
-                let d = &t.stats.specular[k][c];
-                let _ = write!(s, " {:.3} / {} |", d.mean(), d.max);
-            }
-            let _ = writeln!(s);
-        }
+        let rows = COLUMNS
+            .iter()
+            .enumerate()
+            .map(|(c, sh)| {
+                (
+                    sh.label().into_owned(),
+                    r.tori
+                        .iter()
+                        .map(|t| deviation(&t.stats.specular[k][c]))
+                        .collect(),
+                )
+            })
+            .collect();
+        s.push_str(&method_table(&tori, rows));
     }
     let _ = writeln!(
         s,
@@ -176,34 +194,37 @@ pub fn report_md(exp: &Experiment, pframes: u32, r: &Results, secs: f64) -> Stri
          Specular: the same test on N·H (K = 1) — the spans it gives to Gouraud, and of those, the share where \
          Gouraud's and corrected Euler's levels of (N·H)^s differ somewhere.\n"
     );
-    let _ = write!(s, "| torus | spans | diffuse → Gouraud |");
-    for sv in SHININESS {
-        let _ = write!(s, " s = {sv}: Gouraud spans that differ |");
-    }
-    let _ = write!(s, "\n|---:|---:|---:|");
-    for _ in SHININESS {
-        let _ = write!(s, "---:|");
-    }
-    let _ = writeln!(s);
-    for t in &r.tori {
-        let st = &t.stats;
-        let _ = write!(
-            s,
-            "| {} | {} | {:.1} % |",
-            t.polygons,
-            st.spans,
-            st.adaptive_gouraud_percent()
-        );
-        for d in &st.specular_delta {
-            let pct = if d.gouraud == 0 {
-                0.0
-            } else {
-                100.0 * d.gouraud_but_differ as f64 / d.gouraud as f64
-            };
-            let _ = write!(s, " {pct:.1} % of {} |", d.gouraud);
-        }
-        let _ = writeln!(s);
-    }
+    let head: Vec<String> = ["torus", "spans", "diffuse → Gouraud"]
+        .map(String::from)
+        .into_iter()
+        .chain(
+            SHININESS
+                .iter()
+                .map(|sv| format!("s = {sv}: Gouraud spans that differ")),
+        )
+        .collect();
+    let rows: Vec<Vec<String>> = r
+        .tori
+        .iter()
+        .map(|t| {
+            let st = &t.stats;
+            let mut row = vec![
+                t.polygons.to_string(),
+                st.spans.to_string(),
+                format!("{:.1} %", st.adaptive_gouraud_percent()),
+            ];
+            row.extend(st.specular_delta.iter().map(|d| {
+                let pct = if d.gouraud == 0 {
+                    0.0
+                } else {
+                    100.0 * d.gouraud_but_differ as f64 / d.gouraud as f64
+                };
+                format!("{pct:.1} % of {}", d.gouraud)
+            }));
+            row
+        })
+        .collect();
+    s.push_str(&markdown(&head, &vec![Right; head.len()], &rows));
     let _ = writeln!(
         s,
         "\n## Precision: the 800-polygon torus, {pframes} frames, every drawn pixel, mean / max deviation from \
@@ -211,45 +232,59 @@ pub fn report_md(exp: &Experiment, pframes: u32, r: &Results, secs: f64) -> Stri
          or that the method has no kernel in that precision (the row set-ups of `fast_rows` are `f32` and `f64` \
          kernels, the `rsqrt` ones `f32` only).\n"
     );
-    table_header(&mut s, PRECISIONS.iter().map(|p| p.to_string()));
-    for (c, sh) in COLUMNS.iter().enumerate() {
-        let _ = write!(s, "| {} |", sh.label());
-        for (_, st) in &r.precision {
-            let d = &st.vs_phong[c];
-            let fail = st.failed_rows[c];
-            if d.pixels == 0 {
-                let _ = write!(s, " |");
-            } else if fail > 0 {
-                let _ = write!(
-                    s,
-                    " {:.3} / {} ({:.1} % rows failed) |",
-                    d.mean(),
-                    d.max,
-                    100.0 * fail as f64 / st.rows as f64
-                );
-            } else {
-                let _ = write!(s, " {:.3} / {} |", d.mean(), d.max);
-            }
-        }
-        let _ = writeln!(s);
-    }
+    let precisions: Vec<String> = PRECISIONS.iter().map(|p| p.to_string()).collect();
+    let rows = COLUMNS
+        .iter()
+        .enumerate()
+        .map(|(c, sh)| {
+            let cells = r
+                .precision
+                .iter()
+                .map(|(_, st)| {
+                    let d = &st.vs_phong[c];
+                    let fail = st.failed_rows[c];
+                    if d.pixels == 0 {
+                        String::new()
+                    } else if fail > 0 {
+                        format!(
+                            "{:.3} / {} ({:.1} % rows failed)",
+                            d.mean(),
+                            d.max,
+                            100.0 * fail as f64 / st.rows as f64
+                        )
+                    } else {
+                        deviation(d)
+                    }
+                })
+                .collect();
+            (sh.label().into_owned(), cells)
+        })
+        .collect();
+    s.push_str(&method_table(&precisions, rows));
     let _ = writeln!(
         s,
         "\nThe arithmetic's own share: the same, against the same method in f64.\n"
     );
-    table_header(&mut s, PRECISIONS.iter().map(|p| p.to_string()));
-    for (c, sh) in COLUMNS.iter().enumerate() {
-        let _ = write!(s, "| {} |", sh.label());
-        for (_, st) in &r.precision {
-            let d = &st.vs_f64[c];
-            if d.pixels == 0 {
-                let _ = write!(s, " |");
-            } else {
-                let _ = write!(s, " {:.3} / {} |", d.mean(), d.max);
-            }
-        }
-        let _ = writeln!(s);
-    }
+    let rows = COLUMNS
+        .iter()
+        .enumerate()
+        .map(|(c, sh)| {
+            let cells = r
+                .precision
+                .iter()
+                .map(|(_, st)| {
+                    let d = &st.vs_f64[c];
+                    if d.pixels == 0 {
+                        String::new()
+                    } else {
+                        deviation(d)
+                    }
+                })
+                .collect();
+            (sh.label().into_owned(), cells)
+        })
+        .collect();
+    s.push_str(&method_table(&precisions, rows));
     let _ = writeln!(
         s,
         "\n## Longest span within one 8-bit level\n\nPer method and precision: the longest n of {:?} up to which \
@@ -258,42 +293,52 @@ pub fn report_md(exp: &Experiment, pframes: u32, r: &Results, secs: f64) -> Stri
          “—”: not even n = 1; in brackets the worst error at n = 64, in levels.\n",
         SPAN_LENGTHS, r.span_count
     );
-    table_header(&mut s, PRECISIONS.iter().map(|p| p.to_string()));
     let at64 = SPAN_LENGTHS
         .iter()
         .position(|&n| n == 64)
         .expect("64 is tried");
-    for (sh, per) in &r.spans {
-        let _ = write!(s, "| {} |", sh.name());
-        for (_, e) in per {
-            let longest = match precision::longest(e) {
-                None => "—".to_string(),
-                Some(n) if n == *SPAN_LENGTHS.last().expect("non-empty") => format!("≥ {n}"),
-                Some(n) => n.to_string(),
-            };
-            let e64 = match e[at64] {
-                Some(v) => format!("{v:.2}"),
-                None => "fails".into(),
-            };
-            let _ = write!(s, " {longest} ({e64}) |");
-        }
-        let _ = writeln!(s);
-    }
+    let rows = r
+        .spans
+        .iter()
+        .map(|(sh, per)| {
+            let cells = per
+                .iter()
+                .map(|(_, e)| {
+                    let longest = match precision::longest(e) {
+                        None => "—".to_string(),
+                        Some(n) if n == *SPAN_LENGTHS.last().expect("non-empty") => {
+                            format!("≥ {n}")
+                        }
+                        Some(n) => n.to_string(),
+                    };
+                    let e64 = match e[at64] {
+                        Some(v) => format!("{v:.2}"),
+                        None => "fails".into(),
+                    };
+                    format!("{longest} ({e64})")
+                })
+                .collect();
+            (sh.name().into_owned(), cells)
+        })
+        .collect();
+    s.push_str(&method_table(&precisions, rows));
     s
 }
 
-/// A Markdown table header: `method` and one right-aligned column per name.
-fn table_header(s: &mut String, columns: impl Iterator<Item = String>) {
-    let columns: Vec<String> = columns.collect();
-    let _ = write!(s, "| method |");
-    for c in &columns {
-        let _ = write!(s, " {c} |");
-    }
-    let _ = write!(s, "\n|---|");
-    for _ in &columns {
-        let _ = write!(s, "---:|");
-    }
-    let _ = writeln!(s);
+/// A Markdown table of `method` and one right-aligned column per name of `columns`:
+/// a row per method, its name and its cells.
+fn method_table(columns: &[String], rows: Vec<(String, Vec<String>)>) -> String {
+    let head: Vec<&str> = std::iter::once("method")
+        .chain(columns.iter().map(String::as_str))
+        .collect();
+    let align: Vec<Align> = std::iter::once(Left)
+        .chain(columns.iter().map(|_| Right))
+        .collect();
+    let rows: Vec<Vec<String>> = rows
+        .into_iter()
+        .map(|(name, cells)| std::iter::once(name).chain(cells).collect())
+        .collect();
+    markdown(&head, &align, &rows)
 }
 
 /// `table2_extended.csv`: per torus and shader of [`COLUMNS`], the diffuse and
@@ -632,7 +677,7 @@ mod tests {
         // has no pixel there (a blank cell).
         assert!(md.contains(" 0.100 / 1 (25.0 % rows failed) |\n"));
         assert!(md.contains(&format!(
-            "| duff | {m} / {c} | {m} / {c} | {m} / {c} | {m} / {c} | |\n"
+            "| duff | {m} / {c} | {m} / {c} | {m} / {c} | {m} / {c} |  |\n"
         )));
         // Longest span: up to 64 within one level, the error at 64 is 1.00.
         assert!(md.contains("on 3 test spans"));

@@ -1336,7 +1336,7 @@ fn specular_bound_holds() {
     let mut all: Vec<Span<Q>> = spans()
         .into_iter()
         .map(|(_, s)| s)
-        .filter(|s| s.n <= tiered(64, 4096))
+        .filter(|s| s.n <= tiered(64, 128))
         .collect();
     // Normals 90° apart with L halfway: corrected Euler's values rise to about 1.19.
     let z = Stereo(0, 0, 1);

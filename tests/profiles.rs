@@ -996,10 +996,10 @@ fn gpu_duff_or_phong(g: Gpu, s: &Span<Q>, horner: bool) -> Vec<Q> {
     out
 }
 
-/// Runs a GPU implementation of `method` on the profile spans up to `n = 1024`
-/// (4096 in the extensive tier) against the `shader` bound.
+/// Runs a GPU implementation of `method` on the profile spans up to `n = 256`
+/// (1024 in the extensive tier) against the `shader` bound.
 fn shader_derived(what: &str, method: Method, imp: impl Fn(Gpu, &Span<Q>) -> Vec<Q>) {
-    let most = tiered(256, 4096);
+    let most = tiered(256, 1024);
     let mut all: Vec<Span<Q>> = spans().into_iter().map(|(_, s)| s).collect();
     if method.is_phong_valued() {
         all = phong_spans();

@@ -220,16 +220,22 @@ fn gouraud<T: Native>(v: Variant, s: &Span<Q>) -> Vec<Q> {
     out
 }
 
-fn corrected_euler<T: Native>(v: Variant, s: &Span<Q>) -> Vec<Q> {
-    let st = setup::<T>(v, s);
-    let (mut p, mut t) = (st.pa, st.t0);
+/// The second-order recurrence `p += t; t += ds` from `p_a` and the slope `t`:
+/// `n + 1` values.
+fn second_order<T: Native>(pa: T, mut t: T, ds: T, n: u32) -> Vec<Q> {
+    let mut p = pa;
     let mut out = vec![p.q()];
-    for _ in 0..s.n {
+    for _ in 0..n {
         p = p + t;
-        t = t + st.ds;
+        t = t + ds;
         out.push(p.q());
     }
     out
+}
+
+fn corrected_euler<T: Native>(v: Variant, s: &Span<Q>) -> Vec<Q> {
+    let st = setup::<T>(v, s);
+    second_order(st.pa, st.t0, st.ds, s.n)
 }
 
 /// Corrected Euler by its closed form `p_a + i·(t_0 + (i−1)/2·ds)`, fused or not.
@@ -241,14 +247,18 @@ fn corrected_euler_closed<T: Native>(v: Variant, s: &Span<Q>) -> Vec<Q> {
             let fi = T::from_u32(i);
             let h = (fi - T::from_u32(1)).div(two).mul(st.ds);
             let g = st.t0 + h;
-            let p = if v.fused {
-                fi.fma(g, st.pa)
-            } else {
-                st.pa + fi.mul(g)
-            };
-            p.q()
+            pa_plus_i_times(v, st.pa, fi, g).q()
         })
         .collect()
+}
+
+/// `p_a + i·g`, the product fused into the addition or rounded.
+fn pa_plus_i_times<T: Native>(v: Variant, pa: T, i: T, g: T) -> T {
+    if v.fused {
+        i.fma(g, pa)
+    } else {
+        pa + i.mul(g)
+    }
 }
 
 fn ieee<T: Native>(theorem: &str, method: Method, alpha: f64, beta: f64) {
@@ -554,21 +564,27 @@ fn shader(theorem: &str, method: Method, alpha: f64, beta: f64) {
     for (c, s) in spans().into_iter().filter(|(c, _)| c.n <= most) {
         let b = bound(alpha, beta, s.n, u);
         for g in GPUS {
-            let [pa, dp, ds, t0] = gpu_setup(g, &s);
-            let mut out = vec![pa.clone()];
-            let (mut p, mut t) = (pa, t0);
-            for _ in 0..s.n {
-                if method == Method::Gouraud {
-                    p = g.add(&p, &dp);
-                } else {
-                    p = g.add(&p, &t);
-                    t = g.add(&t, &ds);
-                }
-                out.push(p.clone());
-            }
+            let out = gpu_recurrence(method, g, &s);
             within(&format!("{theorem} {g:?}"), &c, &s, method, &out, b);
         }
     }
+}
+
+/// Gouraud (`g += dp`) or corrected Euler (`p += t; t += ds`) on the GPU model.
+fn gpu_recurrence(method: Method, g: Gpu, s: &Span<Q>) -> Vec<Q> {
+    let [pa, dp, ds, t0] = gpu_setup(g, s);
+    let mut out = vec![pa.clone()];
+    let (mut p, mut t) = (pa, t0);
+    for _ in 0..s.n {
+        if method == Method::Gouraud {
+            p = g.add(&p, &dp);
+        } else {
+            p = g.add(&p, &t);
+            t = g.add(&t, &ds);
+        }
+        out.push(p.clone());
+    }
+    out
 }
 
 #[test]
@@ -787,14 +803,7 @@ fn profile_bound_of(method: Method, profile: Profile, s: &Span<Q>, u: f64) -> Op
 /// Plain Euler (eqs. 12–14) as the recurrence `E += s; s += ds` from `s_0 = di_a`.
 fn euler<T: Native>(v: Variant, s: &Span<Q>) -> Vec<Q> {
     let st = setup::<T>(v, s);
-    let (mut p, mut t) = (st.pa, st.dia);
-    let mut out = vec![p.q()];
-    for _ in 0..s.n {
-        p = p + t;
-        t = t + st.ds;
-        out.push(p.q());
-    }
-    out
+    second_order(st.pa, st.dia, st.ds, s.n)
 }
 
 /// Plain Euler by its closed form `p_a + i·(di_a + (i−1)/2·ds)`, fused or not.
@@ -809,12 +818,7 @@ fn euler_closed<T: Native>(v: Variant, s: &Span<Q>) -> Vec<Q> {
             } else {
                 st.dia + (fi - T::from_u32(1)).mul(half).mul(st.ds)
             };
-            let p = if v.fused {
-                fi.fma(g, st.pa)
-            } else {
-                st.pa + fi.mul(g)
-            };
-            p.q()
+            pa_plus_i_times(v, st.pa, fi, g).q()
         })
         .collect()
 }
@@ -851,16 +855,25 @@ fn duff<T: Native>(v: Variant, s: &Span<Q>) -> Vec<Q> {
     out
 }
 
-/// Runs `imp` on every profile span (and Phong's spans for the Phong-valued methods)
-/// against the `ieee` bound of `method`; the exact values from the exact run.
-fn ieee_derived<T: Native>(what: &str, method: Method, imp: impl Fn(Variant, &Span<Q>) -> Vec<Q>) {
+/// Runs `imp`, in each of `ways`, on every profile span (Phong's spans for the
+/// Phong-valued methods) of at most `most` steps against the bound of `method` under
+/// `profile` in the format of unit roundoff `u`; the exact values from the exact run.
+/// Returns the runs checked, the spans without a bound and the worst error in units
+/// of the bound.
+fn search<W: Copy + std::fmt::Debug>(
+    what: &str,
+    (method, profile, u, most): (Method, Profile, f64, u32),
+    ways: &[W],
+    imp: impl Fn(W, &Span<Q>) -> Vec<Q>,
+) -> (usize, usize, f64) {
     let (mut checked, mut refused, mut worst) = (0, 0, 0f64);
-    let mut all: Vec<Span<Q>> = spans().into_iter().map(|(_, s)| s).collect();
-    if method.is_phong_valued() {
-        all = phong_spans();
-    }
-    for s in all {
-        let Some(b) = profile_bound_of(method, Profile::Ieee, &s, T::U) else {
+    let all: Vec<Span<Q>> = if method.is_phong_valued() {
+        phong_spans()
+    } else {
+        spans().into_iter().map(|(_, s)| s).collect()
+    };
+    for s in all.into_iter().filter(|s| s.n <= most) {
+        let Some(b) = profile_bound_of(method, profile, &s, u) else {
             refused += 1;
             continue;
         };
@@ -869,25 +882,36 @@ fn ieee_derived<T: Native>(what: &str, method: Method, imp: impl Fn(Variant, &Sp
         } else {
             method.values(&s).unwrap()
         };
-        for v in VARIANTS {
-            let got = imp(v, &s);
-            for (i, (g, w)) in got.iter().zip(&want).enumerate() {
-                let e = (g.clone() - w.clone()).abs().to_f64();
+        for &w in ways {
+            let got = imp(w, &s);
+            for (i, (g, x)) in got.iter().zip(&want).enumerate() {
+                let e = (g.clone() - x.clone()).abs().to_f64();
                 worst = worst.max(e / b);
                 assert!(
                     e <= b,
-                    "{what} {v:?}: pixel {i} of n = {}: error {e:e} > bound {b:e}",
+                    "{what} {w:?} under {profile}: pixel {i} of n = {}: error {e:e} > bound {b:e}",
                     s.n
                 );
             }
             checked += 1;
         }
     }
+    eprintln!("{what}: {checked} runs, worst {worst:.3} of the bound, {refused} spans without one");
+    (checked, refused, worst)
+}
+
+/// [`search`] under `ieee` with the native variants.
+fn ieee_derived<T: Native>(what: &str, method: Method, imp: impl Fn(Variant, &Span<Q>) -> Vec<Q>) {
+    let (checked, refused, _) = search(
+        what,
+        (method, Profile::Ieee, T::U, u32::MAX),
+        &VARIANTS,
+        imp,
+    );
     assert!(
         checked > 100,
         "{checked} checked, {refused} without a bound"
     );
-    eprintln!("{what}: {checked} runs, worst {worst:.3} of the bound, {refused} spans without one");
 }
 
 /// Euler's derived `ieee` bound (`euler_derived`, docs/float.md §18.5) holds for the
@@ -996,40 +1020,12 @@ fn gpu_duff_or_phong(g: Gpu, s: &Span<Q>, horner: bool) -> Vec<Q> {
     out
 }
 
-/// Runs a GPU implementation of `method` on the profile spans up to `n = 256`
-/// (1024 in the extensive tier) against the `shader` bound.
+/// [`search`] under `shader` with the software GPUs, on the spans up to `n = 256`
+/// (1024 in the extensive tier: the emulated arithmetic is slow).
 fn shader_derived(what: &str, method: Method, imp: impl Fn(Gpu, &Span<Q>) -> Vec<Q>) {
     let most = tiered(256, 1024);
-    let mut all: Vec<Span<Q>> = spans().into_iter().map(|(_, s)| s).collect();
-    if method.is_phong_valued() {
-        all = phong_spans();
-    }
-    let (mut checked, mut worst) = (0, 0f64);
-    for s in all.into_iter().filter(|s| s.n <= most) {
-        let Some(b) = profile_bound_of(method, Profile::Shader, &s, f32::U) else {
-            continue;
-        };
-        let want = if method.is_phong_valued() {
-            phong_exact(&s)
-        } else {
-            method.values(&s).unwrap()
-        };
-        for g in GPUS {
-            let got = imp(g, &s);
-            for (i, (x, w)) in got.iter().zip(&want).enumerate() {
-                let e = (x.clone() - w.clone()).abs().to_f64();
-                worst = worst.max(e / b);
-                assert!(
-                    e <= b,
-                    "{what} {g:?}: pixel {i} of n = {}: {e:e} > {b:e}",
-                    s.n
-                );
-            }
-            checked += 1;
-        }
-    }
+    let (checked, _, _) = search(what, (method, Profile::Shader, f32::U, most), &GPUS, imp);
     assert!(checked > 40, "{checked}");
-    eprintln!("{what}: {checked} runs, worst {worst:.3} of the bound");
 }
 
 /// Euler's, Duff's and Phong's derived `shader` bounds hold on the software GPUs.
@@ -1161,6 +1157,20 @@ fn published_spans(set: &str) -> std::collections::HashMap<String, Span<Q>> {
         .collect()
 }
 
+/// `check` of the published set `set` for `method` under `profile`, on the `f32`
+/// values `run` gives for each case id (through the test kit).
+fn published_f32(
+    set: &str,
+    method: Method,
+    profile: Profile,
+    run: impl Fn(&str) -> Vec<Q>,
+) -> phong_approx::testkit::Report {
+    phong_approx::testkit::Suite::set(set)
+        .method(method)
+        .profile(profile)
+        .check_f32(|x| run(x.id).iter().map(|y| y.to_f64() as f32).collect())
+}
+
 /// An implementation written here, by its method and name.
 type Imp<T> = (
     Method,
@@ -1222,15 +1232,7 @@ fn correct_variants_pass_the_published_sets_under_ieee() {
         let spans = published_spans(set);
         for v in VARIANTS {
             for (m, name, imp, _) in implementations::<f32>() {
-                let r = Suite::set(set)
-                    .method(m)
-                    .profile(Profile::Ieee)
-                    .check_f32(|x| {
-                        imp(v, &spans[x.id])
-                            .iter()
-                            .map(|y| y.to_f64() as f32)
-                            .collect()
-                    });
+                let r = published_f32(set, m, Profile::Ieee, |id| imp(v, &spans[id]));
                 assert!(r.is_ok(), "{set} {m} {name} {v:?} f32:\n{r}");
                 runs += 1;
             }
@@ -1252,25 +1254,8 @@ fn correct_variants_pass_the_published_sets_under_ieee() {
 /// tier runs the truncating, flushing, unfused GPU; the extensive tier all four.
 #[test]
 fn the_software_gpus_pass_the_published_sets_under_shader() {
-    use phong_approx::testkit::Suite;
     let gpus = if extensive() { &GPUS[..] } else { &GPUS[..1] };
-    let recurrence = |method: Method| {
-        move |g: Gpu, s: &Span<Q>| -> Vec<Q> {
-            let [pa, dp, ds, t0] = gpu_setup(g, s);
-            let mut out = vec![pa.clone()];
-            let (mut p, mut t) = (pa, t0);
-            for _ in 0..s.n {
-                if method == Method::Gouraud {
-                    p = g.add(&p, &dp);
-                } else {
-                    p = g.add(&p, &t);
-                    t = g.add(&t, &ds);
-                }
-                out.push(p.clone());
-            }
-            out
-        }
-    };
+    let recurrence = |method: Method| move |g: Gpu, s: &Span<Q>| gpu_recurrence(method, g, s);
     type GpuImp = Box<dyn Fn(Gpu, &Span<Q>) -> Vec<Q>>;
     let imps: Vec<(Method, GpuImp)> = vec![
         (Method::Gouraud, Box::new(recurrence(Method::Gouraud))),
@@ -1292,15 +1277,7 @@ fn the_software_gpus_pass_the_published_sets_under_shader() {
         let spans = published_spans(set);
         for &g in gpus {
             for (m, imp) in &imps {
-                let r = Suite::set(set)
-                    .method(*m)
-                    .profile(Profile::Shader)
-                    .check_f32(|x| {
-                        imp(g, &spans[x.id])
-                            .iter()
-                            .map(|y| y.to_f64() as f32)
-                            .collect()
-                    });
+                let r = published_f32(set, *m, Profile::Shader, |id| imp(g, &spans[id]));
                 assert!(r.is_ok(), "{set} {m} {g:?}:\n{r}");
             }
         }

@@ -100,49 +100,6 @@ pub struct RowsDir<F> {
     stepper: Cell<Option<(f64, f64, EdgeStepper<F>)>>,
 }
 
-macro_rules! rows_for {
-    ($f:ident, $shade:ident, $rsqrt:ident) => {
-        /// Shades one row with a row set-up of [`crate::fast_rows`] in this type;
-        /// `None` where the set-up has no kernel in it.
-        fn $shade(
-            d: &RowsDir<$f>,
-            r: RowSetup,
-            x0: f64,
-            y: f64,
-            n: u32,
-            o: &mut [$f],
-        ) -> Option<()> {
-            let f = &d.field;
-            let (xf, yf) = (x0 as $f, y as $f);
-            match r {
-                RowSetup::BatchedGouraud => f.row(xf, yf, n).gouraud(o),
-                RowSetup::BatchedCorrectedEuler => f.row(xf, yf, n).corrected_euler(o),
-                RowSetup::BatchedPhong => f.row(xf, yf, n).phong(o),
-                RowSetup::FieldPhong => f.start(xf, yf).phong_field(f, n, o),
-                RowSetup::SteppedCorrectedEuler => {
-                    let st = match d.stepper.get() {
-                        Some((lx, ly, e)) if lx == x0 && ly == y => e,
-                        Some((lx, ly, mut e)) if (y - ly - 1.0).abs() < 1e-9 => {
-                            e.step(f, (x0 - lx).round() as $f);
-                            e
-                        }
-                        _ => EdgeStepper::<$f>::new(f, xf, yf),
-                    };
-                    d.stepper.set(Some((x0, y, st)));
-                    st.start.span(f, n).corrected_euler(o)
-                }
-                RowSetup::BatchedPhongRsqrt | RowSetup::FieldPhongRsqrt => {
-                    return $rsqrt(f, r, xf, yf, n, o)
-                }
-            }
-            Some(())
-        }
-    };
-}
-
-rows_for!(f32, shade_rows_f32, rsqrt_f32);
-rows_for!(f64, shade_rows_f64, rsqrt_f64);
-
 /// The `rsqrt` row kernels, `f32` only.
 fn rsqrt_f32(f: &Field<f32>, r: RowSetup, x: f32, y: f32, n: u32, o: &mut [f32]) -> Option<()> {
     if r == RowSetup::FieldPhongRsqrt {
@@ -197,7 +154,7 @@ mod sealed {
 }
 
 macro_rules! row_kernels {
-    ($f:ident, $shade:ident) => {
+    ($f:ident, $rsqrt:ident) => {
         impl sealed::Rows for $f {
             fn rows_of(
                 field: &(Vec3<$f>, Vec3<$f>, Vec3<$f>),
@@ -220,13 +177,36 @@ macro_rules! row_kernels {
                 n: u32,
                 o: &mut [$f],
             ) -> Option<()> {
-                $shade(d, r, x0, y, n, o)
+                let f = &d.field;
+                let (xf, yf) = (x0 as $f, y as $f);
+                match r {
+                    RowSetup::BatchedGouraud => f.row(xf, yf, n).gouraud(o),
+                    RowSetup::BatchedCorrectedEuler => f.row(xf, yf, n).corrected_euler(o),
+                    RowSetup::BatchedPhong => f.row(xf, yf, n).phong(o),
+                    RowSetup::FieldPhong => f.start(xf, yf).phong_field(f, n, o),
+                    RowSetup::SteppedCorrectedEuler => {
+                        let st = match d.stepper.get() {
+                            Some((lx, ly, e)) if lx == x0 && ly == y => e,
+                            Some((lx, ly, mut e)) if (y - ly - 1.0).abs() < 1e-9 => {
+                                e.step(f, (x0 - lx).round() as $f);
+                                e
+                            }
+                            _ => EdgeStepper::<$f>::new(f, xf, yf),
+                        };
+                        d.stepper.set(Some((x0, y, st)));
+                        st.start.span(f, n).corrected_euler(o)
+                    }
+                    RowSetup::BatchedPhongRsqrt | RowSetup::FieldPhongRsqrt => {
+                        return $rsqrt(f, r, xf, yf, n, o)
+                    }
+                }
+                Some(())
             }
         }
     };
 }
-row_kernels!(f32, shade_rows_f32);
-row_kernels!(f64, shade_rows_f64);
+row_kernels!(f32, rsqrt_f32);
+row_kernels!(f64, rsqrt_f64);
 impl sealed::Rows for crate::lowp::f16 {}
 impl sealed::Rows for crate::lowp::I16F16 {}
 impl sealed::Rows for crate::lowp::I8F8 {}

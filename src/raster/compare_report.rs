@@ -150,38 +150,25 @@ pub fn report_md(exp: &Experiment, pframes: u32, r: &Results, secs: f64) -> Stri
         s,
         "\n## Extended Table 2: diffuse (N·L), mean / max deviation\n"
     );
-    let rows = COLUMNS
-        .iter()
-        .enumerate()
-        .map(|(c, sh)| {
-            (
-                sh.label().into_owned(),
-                r.tori
-                    .iter()
-                    .map(|t| deviation(&t.stats.diffuse[c]))
-                    .collect(),
-            )
-        })
-        .collect();
+    // A row per shader, a cell per torus.
+    let tori_rows = |cell: &dyn Fn(&CompareResult, usize) -> String| {
+        COLUMNS
+            .iter()
+            .enumerate()
+            .map(|(c, sh)| {
+                let cells = r.tori.iter().map(|t| cell(t, c)).collect();
+                (sh.label().into_owned(), cells)
+            })
+            .collect::<Vec<_>>()
+    };
+    let rows = tori_rows(&|t, c| deviation(&t.stats.diffuse[c]));
     s.push_str(&method_table(&tori, rows));
     for (k, sv) in SHININESS.iter().enumerate() {
         let _ = writeln!(
             s,
             "\n## Extended Table 2: specular (N·H)^{sv}, mean / max deviation\n"
         );
-        let rows = COLUMNS
-            .iter()
-            .enumerate()
-            .map(|(c, sh)| {
-                (
-                    sh.label().into_owned(),
-                    r.tori
-                        .iter()
-                        .map(|t| deviation(&t.stats.specular[k][c]))
-                        .collect(),
-                )
-            })
-            .collect();
+        let rows = tori_rows(&|t, c| deviation(&t.stats.specular[k][c]));
         s.push_str(&method_table(&tori, rows));
     }
     let _ = writeln!(
@@ -233,57 +220,46 @@ pub fn report_md(exp: &Experiment, pframes: u32, r: &Results, secs: f64) -> Stri
          kernels, the `rsqrt` ones `f32` only).\n"
     );
     let precisions: Vec<String> = PRECISIONS.iter().map(|p| p.to_string()).collect();
-    let rows = COLUMNS
-        .iter()
-        .enumerate()
-        .map(|(c, sh)| {
-            let cells = r
-                .precision
-                .iter()
-                .map(|(_, st)| {
-                    let d = &st.vs_phong[c];
-                    let fail = st.failed_rows[c];
-                    if d.pixels == 0 {
-                        String::new()
-                    } else if fail > 0 {
-                        format!(
-                            "{:.3} / {} ({:.1} % rows failed)",
-                            d.mean(),
-                            d.max,
-                            100.0 * fail as f64 / st.rows as f64
-                        )
-                    } else {
-                        deviation(d)
-                    }
-                })
-                .collect();
-            (sh.label().into_owned(), cells)
-        })
-        .collect();
+    // A row per shader, a cell per precision (blank where nothing was drawn).
+    let precision_rows = |cell: &dyn Fn(&PrecisionStats, usize) -> String| {
+        COLUMNS
+            .iter()
+            .enumerate()
+            .map(|(c, sh)| {
+                let cells = r.precision.iter().map(|(_, st)| cell(st, c)).collect();
+                (sh.label().into_owned(), cells)
+            })
+            .collect::<Vec<_>>()
+    };
+    let rows = precision_rows(&|st, c| {
+        let d = &st.vs_phong[c];
+        let fail = st.failed_rows[c];
+        if d.pixels == 0 {
+            String::new()
+        } else if fail > 0 {
+            format!(
+                "{:.3} / {} ({:.1} % rows failed)",
+                d.mean(),
+                d.max,
+                100.0 * fail as f64 / st.rows as f64
+            )
+        } else {
+            deviation(d)
+        }
+    });
     s.push_str(&method_table(&precisions, rows));
     let _ = writeln!(
         s,
         "\nThe arithmetic's own share: the same, against the same method in f64.\n"
     );
-    let rows = COLUMNS
-        .iter()
-        .enumerate()
-        .map(|(c, sh)| {
-            let cells = r
-                .precision
-                .iter()
-                .map(|(_, st)| {
-                    let d = &st.vs_f64[c];
-                    if d.pixels == 0 {
-                        String::new()
-                    } else {
-                        deviation(d)
-                    }
-                })
-                .collect();
-            (sh.label().into_owned(), cells)
-        })
-        .collect();
+    let rows = precision_rows(&|st, c| {
+        let d = &st.vs_f64[c];
+        if d.pixels == 0 {
+            String::new()
+        } else {
+            deviation(d)
+        }
+    });
     s.push_str(&method_table(&precisions, rows));
     let _ = writeln!(
         s,

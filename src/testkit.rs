@@ -274,7 +274,7 @@ impl Suite {
         let mut report = Report {
             method: self.method,
             judged_by: match self.tolerance {
-                Some(t) => format!("tolerance {t:?}"),
+                Some(t) => format!("tolerance {t}"),
                 None => format!("the {} profile's bound", self.profile),
             },
             format: T::NAME,

@@ -529,7 +529,10 @@ fn malformed_results_get_one_line_naming_file_line_and_problem() {
         (vec!["--tolerance", "levels=x"], "--tolerance:"),
         (vec!["--tolerance", "rel=1"], "unknown tolerance 'rel'"),
         (vec!["--method", "bishop"], "--method: unknown method"),
-        (vec!["--precision", "f16"], "--precision: unknown precision"),
+        (
+            vec!["--precision", "f16"],
+            "--precision: unknown value 'f16'",
+        ),
     ] {
         let (code, _, err) = run_check(&typical_path(), &p, &args);
         assert_eq!(code, 2, "{args:?}");

@@ -263,8 +263,11 @@ fn bad_input_to_reproduce_gets_one_line_and_exit_2() {
     bad(&["--size", "big"], "--size: 'big' is not WxH");
     bad(&["--size", "0x0"], "--size:");
     bad(&["--radii", "1,2"], "--radii: '1,2': need 0 < r < R");
-    bad(&["--normals", "smooth"], "--normals: unknown mode 'smooth'");
-    bad(&["--scene", "nice"], "--scene: unknown scene 'nice'");
+    bad(
+        &["--normals", "smooth"],
+        "--normals: unknown value 'smooth'",
+    );
+    bad(&["--scene", "nice"], "--scene: unknown value 'nice'");
     bad(
         &["--fit", "--fit-frames", "0", "--frames", "5"],
         "--fit-frames: must be between 1 and 5",

@@ -25,15 +25,16 @@ pub struct CheckArgs {
     pub results: String,
     /// The method the results are for (default corrected-euler); `angular-table256`
     /// for the tabled angular method.
-    #[arg(long, value_name = "NAME", default_value = "corrected-euler")]
-    pub method: String,
+    #[arg(long, value_name = "NAME", default_value = "corrected-euler",
+          help = super::methods_help(), value_parser = |s: &str| s.parse::<Method>())]
+    pub method: Method,
     /// levels=N, abs=X or ulps=N; default: the crate's float bound for the method at
     /// --precision.
-    #[arg(long, value_name = "SPEC")]
-    pub tolerance: Option<String>,
+    #[arg(long, value_name = "SPEC", value_parser = Tolerance::parse)]
+    pub tolerance: Option<Tolerance>,
     /// The implementation's arithmetic, for the default tolerance: f32 or f64.
-    #[arg(long, value_name = "TYPE", default_value = "f32")]
-    pub precision: String,
+    #[arg(long, value_name = "TYPE", value_enum, default_value = "f32")]
+    pub precision: Precision,
     /// The arithmetic profile the results are judged by (docs/float.md §18): ieee
     /// (the default: IEEE f32/f64 with round to nearest, any order, FMA, reciprocals;
     /// proved for Gouraud and corrected Euler, derived for Phong, Euler, Duff,
@@ -43,8 +44,9 @@ pub struct CheckArgs {
     /// method, angular and the related methods included) or fixed:M.F (a set-up
     /// rounded once to F fractional bits, an exact integer loop in M-bit registers;
     /// proved for Gouraud and corrected Euler).
-    #[arg(long, value_name = "NAME", default_value = "ieee")]
-    pub profile: String,
+    #[arg(long, value_name = "NAME", default_value = "ieee",
+          value_parser = |s: &str| s.parse::<Profile>())]
+    pub profile: Profile,
     /// Check the specular expectations (max(0, method(N·H))^s) instead of diffuse.
     #[arg(long)]
     pub specular: bool,
@@ -60,8 +62,31 @@ pub struct CheckArgs {
     pub allow_modified_vectors: bool,
 }
 
-fn parse_method(s: &str) -> Result<Method, CliError> {
-    s.parse().map_err(|e| CliError::arg("--method", e))
+/// `--precision`: the implementation's float format.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Precision {
+    /// IEEE binary32.
+    F32,
+    /// IEEE binary64.
+    F64,
+}
+
+impl Precision {
+    /// `f32` or `f64`.
+    fn name(self) -> &'static str {
+        match self {
+            Precision::F32 => "f32",
+            Precision::F64 => "f64",
+        }
+    }
+
+    /// The format's unit roundoff.
+    fn u(self) -> f64 {
+        match self {
+            Precision::F32 => f64::from(f32::EPSILON) / 2.0,
+            Precision::F64 => f64::EPSILON / 2.0,
+        }
+    }
 }
 
 /// Runs `phong-approx check`: exit 0 when every case is within tolerance, 1 when not,
@@ -70,32 +95,17 @@ fn parse_method(s: &str) -> Result<Method, CliError> {
 /// # Errors
 /// A [`CliError`] with code 2 for bad input, 1 for results out of tolerance.
 pub fn run(a: &CheckArgs) -> Result<(), CliError> {
-    let method = parse_method(&a.method)?;
+    let method = a.method;
     let key = method_key(method);
-    let u = match a.precision.as_str() {
-        "f32" => f64::from(f32::EPSILON) / 2.0,
-        "f64" => f64::EPSILON / 2.0,
-        o => {
-            return Err(CliError::arg(
-                "--precision",
-                format!("unknown precision '{}' (expected f32 or f64)", shown(o)),
-            ))
-        }
-    };
-    let profile: Profile = a
-        .profile
-        .parse()
-        .map_err(|e| CliError::arg("--profile", e))?;
-    if profile == Profile::Shader && a.precision != "f32" {
+    let u = a.precision.u();
+    let profile = a.profile;
+    if profile == Profile::Shader && a.precision != Precision::F32 {
         return Err(CliError::arg(
             "--profile",
             "the shader profile is for 32-bit floats: pass --precision f32",
         ));
     }
-    let tol = match &a.tolerance {
-        Some(t) => Tolerance::parse(t).map_err(|e| CliError::arg("--tolerance", e))?,
-        None => Tolerance::Profile { profile, u },
-    };
+    let tol = a.tolerance.unwrap_or(Tolerance::Profile { profile, u });
     let vtext = read_capped(&a.vectors, "--vectors", MAX_RESULTS_BYTES)?;
     let digest = sha256_hex(vtext.as_bytes());
     let published = published_set(&digest).is_some();
@@ -156,10 +166,10 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
             "{} {key} {} ({})",
             vectors.set,
             match &a.tolerance {
-                Some(t) => format!("tolerance {t:?}"),
+                Some(t) => format!("tolerance {t}"),
                 None => format!("{profile} profile"),
             },
-            a.precision
+            a.precision.name()
         );
         write_report(
             &r[0], &r[1], &suite, &vectors, &reports, &results, &key, a.specular,
@@ -173,7 +183,7 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
             )?,
             _ => outln!(
                 "tolerance: the {profile} profile's bound for {} (docs/float.md §18)",
-                a.precision
+                a.precision.name()
             )?,
         }
     }

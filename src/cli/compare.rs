@@ -4,7 +4,7 @@
 
 use super::output::OutDir;
 use super::torus::TorusArgs;
-use super::{parse_whole, CliError};
+use super::CliError;
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
 use phong_approx::raster::compare;
@@ -23,25 +23,28 @@ pub struct CompareArgs {
         long,
         value_name = "N",
         default_value = "200",
-        allow_hyphen_values = true
+        allow_hyphen_values = true,
+        value_parser = |s: &str| super::whole(s, 1, 100_000, "")
     )]
-    pub frames: String,
+    pub frames: u32,
     /// Frames of the 800-polygon torus for the precision table.
     #[arg(
         long,
         value_name = "N",
         default_value = "20",
-        allow_hyphen_values = true
+        allow_hyphen_values = true,
+        value_parser = |s: &str| super::whole(s, 1, 100_000, "")
     )]
-    pub precision_frames: String,
+    pub precision_frames: u32,
     /// Test spans per length in the long-span study.
     #[arg(
         long,
         value_name = "N",
         default_value = "24",
-        allow_hyphen_values = true
+        allow_hyphen_values = true,
+        value_parser = |s: &str| super::whole(s, 1, 10_000, "")
     )]
-    pub spans: String,
+    pub spans: u32,
     /// Output folder for the tables and pictures.
     #[arg(long, value_name = "DIR", default_value = "out/compare")]
     pub out: PathBuf,
@@ -56,9 +59,10 @@ pub struct CompareArgs {
         long,
         value_name = "F",
         default_value = "30",
-        allow_hyphen_values = true
+        allow_hyphen_values = true,
+        value_parser = |s: &str| super::whole(s, 0, 1_000_000, "")
     )]
-    pub picture_frame: String,
+    pub picture_frame: u32,
 }
 
 fn bar(len: u64, what: &str) -> ProgressBar {
@@ -78,11 +82,9 @@ fn bar(len: u64, what: &str) -> ProgressBar {
 /// # Errors
 /// A [`CliError`] naming the bad argument or the file that could not be written.
 pub fn run(a: &CompareArgs) -> Result<(), CliError> {
-    let frames = parse_whole("--frames", &a.frames, 1, 100_000, "")?;
-    let pframes = parse_whole("--precision-frames", &a.precision_frames, 1, 100_000, "")?;
-    let span_count = parse_whole("--spans", &a.spans, 1, 10_000, "")? as usize;
-    let picture_frame = parse_whole("--picture-frame", &a.picture_frame, 0, 1_000_000, "")?;
-    let (size, radii) = a.torus.parse()?;
+    let (frames, pframes) = (a.frames, a.precision_frames);
+    let (span_count, picture_frame) = (a.spans as usize, a.picture_frame);
+    let (size, radii) = (a.torus.size, a.torus.radii);
     a.torus.budget(size, frames.max(pframes), 0)?;
     let out = OutDir::open(&a.out, a.force, "--out")?;
     let pictures = picture_names();

@@ -107,12 +107,20 @@ pub fn whole(s: &str, lo: u32, hi: u32, what: &str) -> Result<u32, String> {
     Ok(v as u32)
 }
 
-/// [`whole`] for `arg`.
+/// `v` for `arg` if it is within `lo..=hi` (a bound another argument sets), in
+/// [`whole`]'s words otherwise.
 ///
 /// # Errors
-/// A [`CliError`] naming `arg`: not a whole number, or out of range.
-pub fn parse_whole(arg: &str, s: &str, lo: u32, hi: u32, what: &str) -> Result<u32, CliError> {
-    whole(s, lo, hi, what).map_err(|e| CliError::arg(arg, e))
+/// A [`CliError`] naming `arg` and the range.
+pub fn within(arg: &str, v: u32, lo: u32, hi: u32) -> Result<u32, CliError> {
+    if (lo..=hi).contains(&v) {
+        Ok(v)
+    } else {
+        Err(CliError::arg(
+            arg,
+            format!("must be between {lo} and {hi} (got {v})"),
+        ))
+    }
 }
 
 /// Writes one line `phong-approx: MESSAGE` to standard error. Never panics: when

@@ -2,10 +2,9 @@
 
 use super::output::OutDir;
 use super::torus::{io_err, TorusArgs};
-use super::{parse_whole, CliError};
+use super::CliError;
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
-use phong_approx::conformance::shown;
 use phong_approx::raster::experiment::Experiment;
 use phong_approx::raster::mesh::NormalMode;
 use phong_approx::raster::pictures::{save_png, Picture};
@@ -23,9 +22,10 @@ pub struct ReproduceArgs {
         long,
         value_name = "N",
         default_value = "200",
-        allow_hyphen_values = true
+        allow_hyphen_values = true,
+        value_parser = |s: &str| super::whole(s, 1, 100_000, "")
     )]
-    pub frames: String,
+    pub frames: u32,
     /// Output folder for the CSVs and pictures.
     #[arg(long, value_name = "DIR", default_value = "out")]
     pub out: PathBuf,
@@ -36,24 +36,45 @@ pub struct ReproduceArgs {
     #[command(flatten)]
     pub torus: TorusArgs,
     /// Vertex normals: analytic (the torus's own) or averaged (from the faces).
-    #[arg(long, value_name = "MODE", default_value = "analytic")]
-    pub normals: String,
-    /// Frames of the 800-polygon torus also evaluated in exact rationals.
-    #[arg(long, value_name = "K", default_value = "1")]
-    pub exact_frames: String,
+    #[arg(long, value_name = "MODE", value_enum, default_value = "analytic")]
+    pub normals: Normals,
+    /// Frames of the 800-polygon torus also evaluated in exact rationals (at most
+    /// --frames).
+    #[arg(long, value_name = "K", default_value = "1",
+          value_parser = |s: &str| super::whole(s, 0, 100_000, ""))]
+    pub exact_frames: u32,
     /// The scene: `default` (docs/reproduction.md's choices, with --size, --radii and
     /// --normals) or `paper-fit` (the calibrated scene of `--fit`, which sets its own
     /// size and radii).
-    #[arg(long, value_name = "NAME", default_value = "default")]
-    pub scene: String,
+    #[arg(long, value_name = "NAME", value_enum, default_value = "default")]
+    pub scene: SceneArg,
     /// Run the calibration study instead: fit the scene choices the paper leaves open
     /// to its Tables 1–2 (starting from --scene), confirm the best scene at --frames,
     /// and write fit.md and fit_sensitivity.svg.
     #[arg(long)]
     pub fit: bool,
-    /// Frames per torus for each scene of the --fit search.
-    #[arg(long, value_name = "N", default_value = "40")]
-    pub fit_frames: String,
+    /// Frames per torus for each scene of the --fit search (at most --frames).
+    #[arg(long, value_name = "N", default_value = "40",
+          value_parser = |s: &str| super::whole(s, 0, 100_000, ""))]
+    pub fit_frames: u32,
+}
+
+/// `--normals`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum Normals {
+    /// The torus's own normals.
+    Analytic,
+    /// Averaged from the faces.
+    Averaged,
+}
+
+/// `--scene`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, clap::ValueEnum)]
+pub enum SceneArg {
+    /// docs/reproduction.md's choices, with --size, --radii and --normals.
+    Default,
+    /// The calibrated scene of `--fit`.
+    PaperFit,
 }
 
 /// Runs `phong-approx reproduce`.
@@ -61,24 +82,15 @@ pub struct ReproduceArgs {
 /// # Errors
 /// A [`CliError`] naming the bad argument or the file that could not be written.
 pub fn run(a: &ReproduceArgs) -> Result<(), CliError> {
-    let frames = parse_whole("--frames", &a.frames, 1, 100_000, "")?;
-    let (size, radii) = a.torus.parse()?;
-    let normals = match a.normals.as_str() {
-        "analytic" => NormalMode::Analytic,
-        "averaged" => NormalMode::Averaged,
-        o => {
-            return Err(CliError::arg(
-                "--normals",
-                format!(
-                    "unknown mode '{}' (expected analytic or averaged)",
-                    shown(o)
-                ),
-            ))
-        }
+    let frames = a.frames;
+    let (size, radii) = (a.torus.size, a.torus.radii);
+    let normals = match a.normals {
+        Normals::Analytic => NormalMode::Analytic,
+        Normals::Averaged => NormalMode::Averaged,
     };
-    let exact_frames = parse_whole("--exact-frames", &a.exact_frames, 0, frames, "")?;
-    let exp = match a.scene.as_str() {
-        "default" => Experiment {
+    let exact_frames = super::within("--exact-frames", a.exact_frames, 0, frames)?;
+    let exp = match a.scene {
+        SceneArg::Default => Experiment {
             frames,
             size,
             radii,
@@ -86,25 +98,16 @@ pub fn run(a: &ReproduceArgs) -> Result<(), CliError> {
             exact_frames,
             ..Experiment::default()
         },
-        "paper-fit" => Experiment {
+        SceneArg::PaperFit => Experiment {
             frames,
             normals,
             exact_frames,
             ..Experiment::paper_fit()
         },
-        o => {
-            return Err(CliError::arg(
-                "--scene",
-                format!(
-                    "unknown scene '{}' (expected default or paper-fit)",
-                    shown(o)
-                ),
-            ))
-        }
     };
     a.torus.budget(exp.size, frames, exact_frames)?;
     if a.fit {
-        let fit_frames = parse_whole("--fit-frames", &a.fit_frames, 1, frames, "")?;
+        let fit_frames = super::within("--fit-frames", a.fit_frames, 1, frames)?;
         fit::budget(fit_frames, a.torus.yes)?;
         return fit::run(a, &exp, fit_frames);
     }

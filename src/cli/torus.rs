@@ -9,12 +9,12 @@ use std::path::Path;
 /// The image size and torus radii, shared by `reproduce` and `compare`.
 #[derive(Args, Debug)]
 pub struct TorusArgs {
-    /// Image size in pixels.
-    #[arg(long, value_name = "WxH", default_value = "225x225")]
-    pub size: String,
-    /// Major and tube radius of the torus.
-    #[arg(long, value_name = "R,r", default_value = "1,0.4")]
-    pub radii: String,
+    /// Image size in pixels (each side 16 to 4096).
+    #[arg(long, value_name = "WxH", default_value = "225x225", value_parser = parse_size)]
+    pub size: (u32, u32),
+    /// Major and tube radius of the torus (0 < r < R).
+    #[arg(long, value_name = "R,r", default_value = "1,0.4", value_parser = parse_radii)]
+    pub radii: (f32, f32),
     /// Run even when the request exceeds the budget (more than 1024×1024 pixels, more
     /// than 200 frames of 512×512, or exact frames of more than 600,000 pixels in
     /// all), which would take many minutes to hours.
@@ -22,18 +22,7 @@ pub struct TorusArgs {
     pub yes: bool,
 }
 
-/// `((width, height), (major radius, tube radius))`.
-type SizeAndRadii = ((u32, u32), (f32, f32));
-
 impl TorusArgs {
-    /// The parsed `(size, radii)`.
-    ///
-    /// # Errors
-    /// [`CliError`] naming `--size` or `--radii` when one is malformed.
-    pub(crate) fn parse(&self) -> Result<SizeAndRadii, CliError> {
-        Ok((parse_size(&self.size)?, parse_radii(&self.radii)?))
-    }
-
     /// Refuses, unless `--yes`, a run whose work exceeds the budget: `frames` frames
     /// and `exact_frames` exact frames of `size` pixels.
     ///
@@ -72,23 +61,22 @@ impl TorusArgs {
 }
 
 /// Parses `--size` (`WxH`, each 16 to 4096).
-fn parse_size(s: &str) -> Result<(u32, u32), CliError> {
-    let bad = || CliError::arg("--size", format!("'{}' is not WxH, e.g. 200x200", shown(s)));
+fn parse_size(s: &str) -> Result<(u32, u32), String> {
+    let bad = || format!("'{}' is not WxH, e.g. 200x200", shown(s));
     let (w, h) = s.split_once(['x', 'X']).ok_or_else(bad)?;
     let w: u32 = w.trim().parse().map_err(|_| bad())?;
     let h: u32 = h.trim().parse().map_err(|_| bad())?;
     if !(16..=4096).contains(&w) || !(16..=4096).contains(&h) {
-        return Err(CliError::arg(
-            "--size",
-            format!("{w}x{h} is out of range: width and height must be between 16 and 4096"),
+        return Err(format!(
+            "{w}x{h} is out of range: width and height must be between 16 and 4096"
         ));
     }
     Ok((w, h))
 }
 
 /// Parses `--radii` (`R,r` with 0 < r < R).
-fn parse_radii(s: &str) -> Result<(f32, f32), CliError> {
-    let bad = |why: &str| CliError::arg("--radii", format!("'{}': {why}", shown(s)));
+fn parse_radii(s: &str) -> Result<(f32, f32), String> {
+    let bad = |why: &str| format!("'{}': {why}", shown(s));
     let (a, b) = s
         .split_once(',')
         .ok_or_else(|| bad("expected R,r, e.g. 1,0.4"))?;

@@ -15,11 +15,23 @@ pub struct VectorsArgs {
     #[arg(long, value_name = "PATH")]
     pub out: Option<PathBuf>,
     /// typical, edge, paper, or all (the default).
-    #[arg(long, value_name = "NAME", default_value = "all")]
+    #[arg(long, value_name = "NAME", default_value = "all", value_parser = set_name)]
     pub set: String,
     /// Replace files that phong-approx did not write.
     #[arg(long)]
     pub force: bool,
+}
+
+/// `--set`: one of the published sets, or `all`.
+fn set_name(s: &str) -> Result<String, String> {
+    if s == "all" || SETS.contains(&s) {
+        Ok(s.to_string())
+    } else {
+        Err(format!(
+            "unknown set '{}' (expected typical, edge, paper or all)",
+            shown(s)
+        ))
+    }
 }
 
 /// The three files of `set` written next to `json`: `NAME.json`, `NAME.csv` (expected
@@ -51,16 +63,7 @@ fn write_set(set: &str, json: &Path, out: &OutDir) -> Result<(), CliError> {
 pub fn run(a: &VectorsArgs) -> Result<(), CliError> {
     let sets: Vec<&str> = match a.set.as_str() {
         "all" => SETS.to_vec(),
-        s if SETS.contains(&s) => vec![s],
-        other => {
-            return Err(CliError::arg(
-                "--set",
-                format!(
-                    "unknown set '{}' (expected typical, edge, paper or all)",
-                    shown(other)
-                ),
-            ))
-        }
+        s => SETS.iter().copied().filter(|&t| t == s).collect(),
     };
     match &a.out {
         None if sets.len() == 1 => {

@@ -66,6 +66,19 @@ pub enum Tolerance {
     },
 }
 
+impl fmt::Display for Tolerance {
+    /// As `--tolerance` spells it (`levels=1`, `abs=0.001`, `ulps=4`), or the profile.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Tolerance::Levels(n) => write!(f, "levels={n}"),
+            Tolerance::Abs(x) => write!(f, "abs={x}"),
+            Tolerance::Ulps(x) => write!(f, "ulps={x}"),
+            Tolerance::Default { .. } => f.write_str("the reference profile's bound"),
+            Tolerance::Profile { profile, .. } => write!(f, "the {profile} profile's bound"),
+        }
+    }
+}
+
 impl Tolerance {
     /// Parses `levels=N`, `abs=X` or `ulps=N`.
     ///

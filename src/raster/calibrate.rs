@@ -16,6 +16,7 @@
 //! changes nothing (at most [`MAX_PASSES`]). Evaluations are cached.
 
 use super::experiment::{Experiment, PaperDeviation, TorusResult, PAPER_TABLE_1, PAPER_TABLE_2};
+use super::pictures::PictureError;
 use super::render::{index, Reading, Shader};
 use crate::Method;
 use std::collections::HashMap;
@@ -535,63 +536,75 @@ pub fn sensitivity_matrix(study: &Study) -> Vec<(Param, Vec<f64>)> {
         .collect()
 }
 
-/// The sensitivity picture (SVG): parameters down, the 28 numbers across, each cell
-/// shaded by how far that parameter moves that number (spread of the scaled residual,
-/// white 0, black 4 or more), with the spread written in the cell.
-pub fn sensitivity_svg(study: &Study) -> String {
+/// The sensitivity picture (SVG, through plotters): parameters down, the 28 numbers
+/// across (their names written upwards), each cell shaded by how far that parameter
+/// moves that number (spread of the scaled residual, white 0, black 4 or more), with
+/// the spread written in the cell.
+///
+/// # Errors
+/// [`PictureError::Svg`] if plotters fails.
+pub fn sensitivity_svg(study: &Study) -> Result<String, PictureError> {
+    use plotters::prelude::*;
+    use plotters::style::text_anchor::{HPos, Pos, VPos};
+    const TITLE: &str = "How far each scene choice moves each of the paper's 28 numbers (spread of residual/tolerance over the choice's values, at the best scene)";
     let m = sensitivity_matrix(study);
-    let names: Vec<String> = study
+    let names: Vec<&str> = study
         .best
         .fit
         .residuals
         .iter()
-        .map(|r| r.name.clone())
+        .map(|r| r.name.as_str())
         .collect();
-    let (cw, ch, left, top) = (34.0, 26.0, 150.0, 190.0);
-    let w = left + cw * names.len() as f64 + 130.0;
-    let h = top + ch * m.len() as f64 + 60.0;
-    let mut s = format!(
-        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{w}\" height=\"{h}\" font-family=\"sans-serif\" font-size=\"11\">\n<rect width=\"100%\" height=\"100%\" fill=\"white\"/>\n"
-    );
-    let _ = writeln!(
-        s,
-        "<text x=\"10\" y=\"20\" font-size=\"14\">How far each scene choice moves each of the paper's 28 numbers (spread of residual/tolerance over the choice's values, at the best scene)</text>"
-    );
-    for (j, n) in names.iter().enumerate() {
-        let x = left + cw * j as f64 + cw / 2.0;
-        let _ = writeln!(
-            s,
-            "<text transform=\"translate({x},{}) rotate(-60)\">{}</text>",
-            top - 6.0,
-            n
-        );
-    }
-    for (i, (p, row)) in m.iter().enumerate() {
-        let y = top + ch * i as f64;
-        let _ = writeln!(
-            s,
-            "<text x=\"10\" y=\"{}\">{}</text>",
-            y + ch * 0.65,
-            p.name()
-        );
-        for (j, v) in row.iter().enumerate() {
-            let x = left + cw * j as f64;
-            let g = (255.0 * (1.0 - (v / 4.0).clamp(0.0, 1.0))).round() as u8;
-            let ink = if g < 110 { "white" } else { "black" };
-            let _ = writeln!(
-                s,
-                "<rect x=\"{x}\" y=\"{y}\" width=\"{cw}\" height=\"{ch}\" fill=\"rgb({g},{g},{g})\" stroke=\"#ccc\"/><text x=\"{}\" y=\"{}\" fill=\"{ink}\" text-anchor=\"middle\" font-size=\"9\">{v:.1}</text>",
-                x + cw / 2.0,
-                y + ch * 0.65
-            );
+    let (cw, ch, left, top) = (34i32, 26i32, 150i32, 190i32);
+    let w = left + cw * names.len() as i32 + 130;
+    let h = top + ch * m.len() as i32 + 60;
+    let font = |size: f64| ("sans-serif", size).into_font();
+    let at = |h: HPos| Pos::new(h, VPos::Center);
+    let mut svg = String::new();
+    let drawn = (|| -> Result<(), Box<dyn std::error::Error>> {
+        let root = SVGBackend::with_string(&mut svg, (w as u32, h as u32)).into_drawing_area();
+        root.fill(&WHITE)?;
+        root.draw(&Text::new(TITLE, (10, 8), font(14.0)))?;
+        for (j, n) in names.iter().enumerate() {
+            let x = left + cw * j as i32 + cw / 2;
+            let style = font(11.0)
+                .transform(FontTransform::Rotate270)
+                .color(&BLACK)
+                .pos(at(HPos::Left));
+            root.draw(&Text::new(*n, (x, top - 6), style))?;
         }
-    }
-    let _ = writeln!(
-        s,
-        "<text x=\"10\" y=\"{}\">Shade: white 0 to black 4 or more. Tolerances: means 15 % of the paper's value, maxima 2 levels, Table 1 shares 5 points.</text>\n</svg>",
-        h - 20.0
-    );
-    s
+        for (i, (p, row)) in m.iter().enumerate() {
+            let y = top + ch * i as i32;
+            let style = font(11.0).color(&BLACK).pos(at(HPos::Left));
+            root.draw(&Text::new(p.name(), (10, y + ch / 2), style))?;
+            for (j, v) in row.iter().enumerate() {
+                let x = left + cw * j as i32;
+                let g = (255.0 * (1.0 - (v / 4.0).clamp(0.0, 1.0))).round() as u8;
+                let ink = if g < 110 { WHITE } else { BLACK };
+                let cell = [(x, y), (x + cw, y + ch)];
+                root.draw(&Rectangle::new(cell, RGBColor(g, g, g).filled()))?;
+                root.draw(&Rectangle::new(cell, RGBColor(204, 204, 204)))?;
+                let style = font(9.0).color(&ink).pos(at(HPos::Center));
+                root.draw(&Text::new(
+                    format!("{v:.1}"),
+                    (x + cw / 2, y + ch / 2),
+                    style,
+                ))?;
+            }
+        }
+        root.draw(&Text::new(
+            "Shade: white 0 to black 4 or more. Tolerances: means 15 % of the paper's value, maxima 2 levels, Table 1 shares 5 points.",
+            (10, h - 30),
+            font(11.0),
+        ))?;
+        root.present()?;
+        Ok(())
+    })();
+    drawn.map_err(|e| PictureError::Svg {
+        title: "fit_sensitivity".into(),
+        message: e.to_string(),
+    })?;
+    Ok(svg)
 }
 
 /// The report of the study (Markdown): the space, the distance, the search, the best
@@ -808,7 +821,7 @@ mod tests {
         // The best scene's residual row and the reach table's row.
         assert_eq!(md.matches("| 288 Gouraud mean |").count(), 2);
         assert!(md.contains("## What the space reaches"));
-        let svg = sensitivity_svg(&study);
+        let svg = sensitivity_svg(&study).expect("a plot");
         assert!(svg.starts_with("<svg") && svg.contains("light angle (°)"));
     }
 }

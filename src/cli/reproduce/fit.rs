@@ -103,7 +103,8 @@ pub(super) fn run(a: &ReproduceArgs, start: &Experiment, fit_frames: u32) -> Res
     let _ = writeln!(md, "\nRan in {:.0} s.", started.elapsed().as_secs_f64());
     outp!("{md}")?;
     out.write("fit.md", &md)?;
-    out.write("fit_sensitivity.svg", &sensitivity_svg(&study))?;
+    let svg = sensitivity_svg(&study).map_err(|e| CliError::arg("--fit", e))?;
+    out.write("fit_sensitivity.svg", &svg)?;
     out.commit()?;
     outln!(
         "\nWrote fit.md and fit_sensitivity.svg to {}",

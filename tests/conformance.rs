@@ -830,23 +830,27 @@ fn check_profile_fixed_judges_a_span_unit() {
         },
         u: 0.0,
     };
+    // The Q·.16 span unit (ε/(n+1) when `mutant`) on every case of `file`, checked.
+    let unit = |file: &VectorFile, tol: Tolerance, mutant: bool| {
+        let results: Results = file
+            .cases
+            .iter()
+            .map(|c| (c.id.clone(), fixed_point_unit(c, 16, mutant)))
+            .collect();
+        check(
+            file,
+            &results,
+            Method::CorrectedEuler,
+            "corrected-euler",
+            tol,
+            false,
+        )
+        .unwrap()
+    };
     for set in SETS {
         let file = committed(set);
         for (mutant, want_pass) in [(false, true), (true, false)] {
-            let results: Results = file
-                .cases
-                .iter()
-                .map(|c| (c.id.clone(), fixed_point_unit(c, 16, mutant)))
-                .collect();
-            let reports = check(
-                file,
-                &results,
-                Method::CorrectedEuler,
-                "corrected-euler",
-                q(16, 16),
-                false,
-            )
-            .unwrap();
+            let reports = unit(file, q(16, 16), mutant);
             let failed = reports.iter().filter(|r| !r.pass).count();
             if want_pass {
                 assert_eq!(failed, 0, "{set}: {:?}", reports.iter().find(|r| !r.pass));
@@ -859,20 +863,7 @@ fn check_profile_fixed_judges_a_span_unit() {
     }
     // Q3.16 cannot hold corrected Euler's slope on a one-step span (|t| up to 28).
     let edge = committed("edge");
-    let results: Results = edge
-        .cases
-        .iter()
-        .map(|c| (c.id.clone(), fixed_point_unit(c, 16, false)))
-        .collect();
-    let reports = check(
-        edge,
-        &results,
-        Method::CorrectedEuler,
-        "corrected-euler",
-        q(3, 16),
-        false,
-    )
-    .unwrap();
+    let reports = unit(edge, q(3, 16), false);
     let one_step = edge.cases.iter().find(|c| c.n == 1).expect("an n = 1 case");
     let r = reports.iter().find(|r| r.id == one_step.id).unwrap();
     assert!(

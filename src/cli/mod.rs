@@ -19,21 +19,17 @@ static STDOUT_CLOSED: AtomicBool = AtomicBool::new(false);
 /// # Errors
 /// A [`CliError`] with code 2 naming standard output and the failure.
 pub fn out(text: fmt::Arguments<'_>) -> Result<(), CliError> {
-    if STDOUT_CLOSED.load(Ordering::Relaxed) {
-        return Ok(());
-    }
-    let mut lock = std::io::stdout().lock();
-    let written = lock.write_fmt(text).and_then(|()| lock.flush());
-    match written {
-        Ok(()) => Ok(()),
-        Err(e) if e.kind() == ErrorKind::BrokenPipe => {
-            STDOUT_CLOSED.store(true, Ordering::Relaxed);
-            Ok(())
-        }
-        Err(e) => Err(CliError {
-            message: format!("standard output: {e}"),
-            code: 2,
-        }),
+    let mut w = Stdout;
+    w.write_fmt(text)
+        .and_then(|()| w.flush())
+        .map_err(stdout_error)
+}
+
+/// A failure of standard output other than a closed pipe: bad output, exit code 2.
+fn stdout_error(e: std::io::Error) -> CliError {
+    CliError {
+        message: format!("standard output: {e}"),
+        code: 2,
     }
 }
 
@@ -338,8 +334,5 @@ pub fn write_json(value: &impl serde::Serialize) -> Result<(), CliError> {
         .map_err(std::io::Error::from)
         .and_then(|()| w.write_all(b"\n"))
         .and_then(|()| w.flush())
-        .map_err(|e| CliError {
-            message: format!("standard output: {e}"),
-            code: 2,
-        })
+        .map_err(stdout_error)
 }

@@ -7,11 +7,11 @@ use super::compare::{
     render_compare, CompareFrame, CompareOptions, CompareResult, Shader, COLUMNS, SHININESS,
 };
 use super::experiment::Experiment;
-use super::font;
 use super::pictures::{
     fitting_scale, heat_legend, heat_map, level_image, stack, text_strip, BACKGROUND, INK,
 };
 use super::precision::{self, PrecisionStats, PRECISIONS, SPAN_LENGTHS};
+use super::text;
 use crate::table::{
     markdown, Align,
     Align::{Left, Right},
@@ -439,12 +439,12 @@ pub fn grid(frame: &CompareFrame, title: &[String]) -> RgbImage {
     let rows = n.div_ceil(per_row);
     let width = w * 2 * per_row;
     let longest = COLUMNS.iter().map(|s| s.label()).max_by_key(|l| l.len());
-    let s = if font::text_width(longest.as_deref().unwrap_or(""), 2) + 8 <= w {
+    let s = if text::text_width(longest.as_deref().unwrap_or(""), 2) + 8 <= w {
         2
     } else {
         1
     };
-    let head = font::text_height(s) + 8;
+    let head = text::text_height(s) + 8;
     let mut tiles = RgbImage::from_pixel(width, rows * (head + h), BACKGROUND);
     let reference = &frame.picture[0];
     for (c, sh) in COLUMNS.iter().enumerate() {
@@ -460,9 +460,9 @@ pub fn grid(frame: &CompareFrame, title: &[String]) -> RgbImage {
         };
         // Each label is cut to its own tile, so that neighbours never overlap.
         let room = w.saturating_sub(8);
-        let left = font::fit(&sh.label(), room, s);
-        let right = font::fit(&right, room, s);
-        font::draw_text(
+        let left = text::fit(&sh.label(), room, s);
+        let right = text::fit(&right, room, s);
+        text::draw_text(
             &mut tiles,
             i64::from(gx + 4),
             i64::from(gy + 4),
@@ -470,7 +470,7 @@ pub fn grid(frame: &CompareFrame, title: &[String]) -> RgbImage {
             INK,
             s,
         );
-        font::draw_text(
+        text::draw_text(
             &mut tiles,
             i64::from(gx + w + 4),
             i64::from(gy + 4),
@@ -763,15 +763,16 @@ mod tests {
         let title = ["title".to_string()];
         let g = grid(&f, &title);
         assert_eq!(g.width(), 8 * f.width);
-        // Tiles too narrow for scale 2: labels at scale 1, a 17-pixel head per row.
+        // Tiles too narrow for scale 2: labels at scale 1, a head of one line and 8
+        // pixels per row.
         let rows = (COLUMNS.len() as u32).div_ceil(4);
         let top = text_strip(g.width(), &title, 2).height();
         let legend = grid_legend(g.width()).height();
-        let tiles = rows * (f.height + 9 + 8);
+        let head = text::text_height(1) + 8;
+        let tiles = rows * (f.height + head);
         assert_eq!(g.height(), top + tiles + legend);
         // The heat map of shader 5 (second row, second pair) is red (5 ≥ 3) at its
         // bottom-right pixel; that of the reference is the colour of 0.
-        let head = 17;
         let y = top + (head + f.height) + head + f.height - 1;
         let heat5 = g.get_pixel(4 * f.width - 1, y);
         assert_eq!(*heat5, crate::raster::pictures::heat_colour(5));

@@ -10,7 +10,7 @@
 //! - [`compare`], [`precision`]: every method of the paper and its related work on the
 //!   same tori, and in every precision.
 //! - [`pictures`]: PNG renders, heat maps with their legends, SVG plots (Figures 1–5);
-//!   [`font`]: the built-in bitmap font of their labels.
+//!   [`text`]: their labels, in embedded-graphics' mono font.
 //! - [`report`]: `reproduce`'s tables, CSVs and pictures, as strings and images.
 //! - [`compare_report`]: `compare`'s studies, report, CSVs and labelled picture grid.
 
@@ -18,7 +18,6 @@ pub mod calibrate;
 pub mod compare;
 pub mod compare_report;
 pub mod experiment;
-pub mod font;
 pub mod frame;
 pub mod mesh;
 pub mod pictures;
@@ -29,3 +28,4 @@ pub mod scan;
 pub mod scene;
 pub mod shader;
 pub mod stats;
+pub mod text;

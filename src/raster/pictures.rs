@@ -1,8 +1,8 @@
 //! Pictures: PNG renders of a frame, difference heat maps, and SVG plots of one scan
 //! line (Figures 1–5 of the paper).
 
-use super::font;
 use super::render::{Frame, Shader, COLUMNS};
+use super::text;
 use image::{Rgb, RgbImage};
 use plotters::prelude::*;
 use std::path::Path;
@@ -187,7 +187,7 @@ pub fn level_image(width: u32, height: u32, levels: &[Option<u8>]) -> RgbImage {
 pub fn fitting_scale(width: u32, lines: &[String], extra: impl Fn(u32) -> u32) -> u32 {
     let fits = |s: u32| {
         let room = width.saturating_sub(2 * 4 * s);
-        lines.iter().all(|l| font::text_width(l, s) <= room) && extra(s) <= room
+        lines.iter().all(|l| text::text_width(l, s) <= room) && extra(s) <= room
     };
     if fits(2) {
         2
@@ -208,7 +208,7 @@ pub fn wrap(lines: &[String], width: u32, scale: u32) -> Vec<String> {
             } else {
                 format!("{cur} {word}")
             };
-            if font::text_width(&next, scale) <= width || cur.is_empty() {
+            if text::text_width(&next, scale) <= width || cur.is_empty() {
                 cur = next;
             } else {
                 out.push(std::mem::replace(&mut cur, word.to_string()));
@@ -224,14 +224,10 @@ pub fn wrap(lines: &[String], width: u32, scale: u32) -> Vec<String> {
 pub fn text_strip(width: u32, lines: &[String], scale: u32) -> RgbImage {
     let m = 4 * scale;
     let lines = wrap(lines, width.saturating_sub(2 * m), scale);
-    let n = lines.len() as u32;
-    let h = 2 * m
-        + (n * font::LINE_HEIGHT).saturating_sub(font::LINE_HEIGHT - font::GLYPH_HEIGHT) * scale;
+    let h = 2 * m + text::lines_height(lines.len() as u32, scale);
     let mut img = RgbImage::from_pixel(width, h, BACKGROUND);
-    for (k, l) in lines.iter().enumerate() {
-        let y = m + k as u32 * font::LINE_HEIGHT * scale;
-        font::draw_text(&mut img, i64::from(m), i64::from(y), l, INK, scale);
-    }
+    let m = i64::from(m);
+    text::draw_text(&mut img, m, m, &lines.join("\n"), INK, scale);
     img
 }
 
@@ -242,15 +238,15 @@ const BAR_UNIT: &str = "8-bit levels";
 /// (one swatch per class of [`HEAT_CLASSES`], its label below) followed by
 /// "8-bit levels". Text at scale 2 where it fits, else 1.
 pub fn heat_legend(width: u32, caption: &[String]) -> RgbImage {
-    let swatch = |s: u32| 4 * font::ADVANCE * s;
+    let swatch = |s: u32| 4 * text::ADVANCE * s;
     let bar_row = |s: u32| {
-        HEAT_CLASSES.len() as u32 * swatch(s) + font::ADVANCE * s + font::text_width(BAR_UNIT, s)
+        HEAT_CLASSES.len() as u32 * swatch(s) + text::ADVANCE * s + text::text_width(BAR_UNIT, s)
     };
     let s = fitting_scale(width, caption, bar_row);
     let m = 4 * s;
     let top = text_strip(width, caption, s);
     let bar_h = 5 * s;
-    let h = bar_h + 2 * s + font::text_height(s) + m;
+    let h = bar_h + 2 * s + text::text_height(s) + m;
     let mut bar = RgbImage::from_pixel(width, h, BACKGROUND);
     for (k, (label, d)) in HEAT_CLASSES.iter().enumerate() {
         let x0 = m + k as u32 * swatch(s);
@@ -259,8 +255,8 @@ pub fn heat_legend(width: u32, caption: &[String]) -> RgbImage {
                 bar.put_pixel(x, y, heat_colour(*d));
             }
         }
-        let lx = x0 + (swatch(s).saturating_sub(font::text_width(label, s))) / 2;
-        font::draw_text(
+        let lx = x0 + (swatch(s).saturating_sub(text::text_width(label, s))) / 2;
+        text::draw_text(
             &mut bar,
             i64::from(lx),
             i64::from(bar_h + 2 * s),
@@ -269,8 +265,8 @@ pub fn heat_legend(width: u32, caption: &[String]) -> RgbImage {
             s,
         );
     }
-    let ux = m + HEAT_CLASSES.len() as u32 * swatch(s) + font::ADVANCE * s;
-    font::draw_text(&mut bar, i64::from(ux), 0, BAR_UNIT, INK, s);
+    let ux = m + HEAT_CLASSES.len() as u32 * swatch(s) + text::ADVANCE * s;
+    text::draw_text(&mut bar, i64::from(ux), 0, BAR_UNIT, INK, s);
     stack(&[&top, &bar])
 }
 
@@ -464,7 +460,10 @@ mod tests {
         // The caption fits at scale 2 in 400 pixels: the legend is the strip of the
         // caption, 5·2 pixels of bar, 2·2 of gap, the labels, and the margin.
         let strip = text_strip(400, &caption, 2).height();
-        assert_eq!(img.height() - 300, strip + 10 + 4 + 18 + 8);
+        assert_eq!(
+            img.height() - 300,
+            strip + 10 + 4 + text::text_height(2) + 8
+        );
     }
 
     #[test]
@@ -476,7 +475,7 @@ mod tests {
         assert_eq!(narrow.width(), 200);
         let lines = wrap(&caption, 200 - 8, 1);
         assert!(lines.len() > 1);
-        assert!(lines.iter().all(|l| font::text_width(l, 1) <= 192));
+        assert!(lines.iter().all(|l| text::text_width(l, 1) <= 192));
         assert_eq!(lines.join(" "), caption[0]);
     }
 

@@ -1,16 +1,11 @@
 //! `phong-approx check`: compare an implementation's results with a vector file.
 
-use super::{read_capped, CliError};
+use super::{out, read_capped, CliError};
 use clap::Args;
-use phong_approx::conformance::check::{
-    check, parse_results, CaseReport, Tolerance, MAX_RESULTS_BYTES,
-};
-use phong_approx::conformance::integrity::{
-    exact_work, input_bits, MAX_CASES, MAX_CASE_STEPS, MAX_RECOMPUTED_WORK,
-};
-use phong_approx::conformance::integrity::{published_set, sha256_hex, validate};
-use phong_approx::conformance::shown;
-use phong_approx::conformance::vectors::{exact_input, method_key, InputsFile, VectorFile, DIGITS};
+use phong_approx::conformance::check::{check, parse_results, Tolerance, MAX_RESULTS_BYTES};
+use phong_approx::conformance::vectors::method_key;
+use phong_approx::conformance::verdict::{self, load_vectors, Culprit};
+use phong_approx::conformance::{report, shown};
 use phong_approx::tolerance::profile::Profile;
 use phong_approx::Method;
 
@@ -97,7 +92,6 @@ impl Precision {
 pub fn run(a: &CheckArgs) -> Result<(), CliError> {
     let method = a.method;
     let key = method_key(method);
-    let u = a.precision.u();
     let profile = a.profile;
     if profile == Profile::Shader && a.precision != Precision::F32 {
         return Err(CliError::arg(
@@ -105,54 +99,32 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
             "the shader profile is for 32-bit floats: pass --precision f32",
         ));
     }
-    let tol = a.tolerance.unwrap_or(Tolerance::Profile { profile, u });
+    let tol = a.tolerance.unwrap_or(Tolerance::Profile {
+        profile,
+        u: a.precision.u(),
+    });
     let vtext = read_capped(&a.vectors, "--vectors", MAX_RESULTS_BYTES)?;
-    let digest = sha256_hex(vtext.as_bytes());
-    let published = published_set(&digest).is_some();
-    if !published && !a.allow_modified_vectors {
-        return Err(CliError::arg(
-            "--vectors",
-            format!(
-                "{}: SHA-256 {digest} is not that of a published vector set (docs/conformance.md); \
-                 use the files of vectors/ or `phong-approx vectors`, or pass --allow-modified-vectors",
-                shown(&a.vectors)
-            ),
-        ));
+    let loaded = load_vectors(
+        vtext,
+        &a.vectors,
+        method,
+        a.specular,
+        a.allow_modified_vectors,
+    )
+    .map_err(|e| {
+        let arg = match e.culprit {
+            Culprit::Vectors => "--vectors",
+            Culprit::Method => "--method",
+            Culprit::Specular => "--specular",
+        };
+        CliError::arg(arg, e.message)
+    })?;
+    if loaded.recomputed {
+        outln!(
+            "vectors: not a published set; the expected values of {key} were recomputed from the file's inputs by the exact reference"
+        )?;
     }
-    let not_vectors = |e: serde_json::Error| {
-        CliError::arg(
-            "--vectors",
-            format!("{}:{}: not a vector file: {e}", shown(&a.vectors), e.line()),
-        )
-    };
-    let vectors: VectorFile = if published {
-        // A published set: its expectations are this version's own (the digest says so).
-        serde_json::from_str(&vtext).map_err(not_vectors)?
-    } else {
-        // Any other file supplies cases, not truth: its inputs are read (its
-        // expectations skipped unread) and the expectations recomputed exactly.
-        let inputs: InputsFile = serde_json::from_str(&vtext).map_err(not_vectors)?;
-        drop(vtext);
-        recompute(&a.vectors, &inputs, method, a.specular)?
-    };
-    validate(&vectors)
-        .map_err(|e| CliError::arg("--vectors", format!("{}: {e}", shown(&a.vectors))))?;
-    if !vectors.methods.contains(&key) {
-        return Err(CliError::arg(
-            "--method",
-            format!(
-                "'{key}' is not in {} (it has: {})",
-                shown(&a.vectors),
-                shown(&vectors.methods.join(", "))
-            ),
-        ));
-    }
-    if a.specular && vectors.cases.iter().all(|c| c.specular.is_none()) {
-        return Err(CliError::arg(
-            "--specular",
-            format!("{} has no specular cases", shown(&a.vectors)),
-        ));
-    }
+    let vectors = loaded.file;
     let rtext = read_capped(&a.results, "--results", MAX_RESULTS_BYTES)?;
     let results =
         parse_results(&rtext, &a.results, &vectors, a.specular).map_err(|e| CliError {
@@ -171,11 +143,25 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
             },
             a.precision.name()
         );
-        write_report(
-            &r[0], &r[1], &suite, &vectors, &reports, &results, &key, a.specular,
-        )?;
+        let text = match r[0].as_str() {
+            "junit" => report::junit(&suite, &vectors, &reports, &results, &key, a.specular),
+            "json" => report::json(&suite, &vectors, &reports, &results, &key, a.specular),
+            o => {
+                return Err(CliError::arg(
+                    "--report",
+                    format!(
+                        "unknown report format '{}' (expected junit or json)",
+                        shown(o)
+                    ),
+                ))
+            }
+        };
+        write_report(&r[1], &text)?;
     }
-    print_report(&vectors, &reports, &key, a.specular)?;
+    out(format_args!(
+        "{}",
+        verdict::text(&vectors, &reports, &key, a.specular)
+    ))?;
     if a.tolerance.is_none() {
         match profile {
             Profile::Fixed { .. } => outln!(
@@ -187,51 +173,14 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
             )?,
         }
     }
-    let failed: Vec<&CaseReport> = reports.iter().filter(|r| !r.pass).collect();
-    if failed.is_empty() {
-        Ok(())
-    } else {
-        Err(CliError {
-            message: format!(
-                "{} of {} cases out of tolerance, first: {}{}",
-                failed.len(),
-                reports.len(),
-                shown(&failed[0].id),
-                failed[0]
-                    .not_finite
-                    .map_or(String::new(), |p| format!(" (pixel {p} is not finite)"))
-            ),
-            code: 1,
-        })
+    match verdict::failure(&reports) {
+        None => Ok(()),
+        Some(message) => Err(CliError { message, code: 1 }),
     }
 }
 
-/// Writes the `--report FORMAT FILE` of a check, through [`OutDir`]'s rules.
-#[allow(clippy::too_many_arguments)]
-fn write_report(
-    format: &str,
-    file: &str,
-    suite: &str,
-    vectors: &VectorFile,
-    reports: &[CaseReport],
-    results: &phong_approx::conformance::check::Results,
-    key: &str,
-    specular: bool,
-) -> Result<(), CliError> {
-    use phong_approx::conformance::report;
-    let text = match format {
-        "junit" => report::junit(suite, vectors, reports, results, key, specular),
-        "json" => report::json(suite, vectors, reports, results, key, specular),
-        o => {
-            return Err(CliError::arg(
-                "--report",
-                format!(
-                    "unknown report format '{}' (expected junit or json)",
-                    shown(o)
-                ),
-            ))
-        }
-    };
+/// Writes the `--report` file `file`, through [`OutDir`](super::output::OutDir)'s rules.
+fn write_report(file: &str, text: &str) -> Result<(), CliError> {
     let path = std::path::Path::new(file);
     let name = path.file_name().and_then(|n| n.to_str()).ok_or_else(|| {
         CliError::arg("--report", format!("'{}' is not a file name", shown(file)))
@@ -241,147 +190,6 @@ fn write_report(
         _ => std::path::Path::new("."),
     };
     let out = super::output::OutDir::open(dir, false, "--report")?;
-    out.write(name, &text)?;
+    out.write(name, text)?;
     out.commit()
-}
-
-/// The expectations of a file that is not published, computed from its inputs (within
-/// the work budget [`MAX_RECOMPUTED_WORK`]).
-fn recompute(
-    file: &str,
-    inputs: &InputsFile,
-    method: Method,
-    specular: bool,
-) -> Result<VectorFile, CliError> {
-    let bad = |m: String| CliError::arg("--vectors", format!("{}: {m}", shown(file)));
-    if inputs.cases.len() > MAX_CASES {
-        return Err(bad(format!("more than {MAX_CASES} cases")));
-    }
-    let key = method_key(method);
-    if !inputs.methods.contains(&key) {
-        return Err(CliError::arg(
-            "--method",
-            format!(
-                "'{key}' is not in {} (it has: {})",
-                shown(file),
-                shown(&inputs.methods.join(", "))
-            ),
-        ));
-    }
-    for c in &inputs.cases {
-        if c.n == 0 || c.n > MAX_CASE_STEPS {
-            return Err(bad(format!(
-                "case {}: n = {} is outside 1..={MAX_CASE_STEPS}",
-                shown(&c.id),
-                c.n
-            )));
-        }
-    }
-    let mut work = 0u64;
-    for c in &inputs.cases {
-        let mut vs = Vec::new();
-        for x in [
-            Some(&c.na),
-            Some(&c.nb),
-            Some(&c.l),
-            c.specular.as_ref().map(|s| &s.h),
-        ]
-        .into_iter()
-        .flatten()
-        {
-            vs.push(exact_input(x).ok_or_else(|| {
-                bad(format!(
-                    "case {}: an input is not three exact numbers",
-                    shown(&c.id)
-                ))
-            })?);
-        }
-        let refs: Vec<_> = vs.iter().collect();
-        let twice = if specular && c.specular.is_some() {
-            2
-        } else {
-            1
-        };
-        work = work.saturating_add(
-            exact_work(method, c.n, input_bits(&refs), DIGITS).saturating_mul(twice),
-        );
-    }
-    if work > MAX_RECOMPUTED_WORK {
-        return Err(bad(format!(
-            "recomputing the expectations of {key} for these cases is {work} units of exact work, \
-             more than {MAX_RECOMPUTED_WORK} (about half a minute); split the file"
-        )));
-    }
-    let file_out = inputs.recompute(method).map_err(bad)?;
-    outln!(
-        "vectors: not a published set; the expected values of {key} were recomputed from the file's inputs by the exact reference"
-    )?;
-    Ok(file_out)
-}
-
-fn print_report(
-    vectors: &VectorFile,
-    reports: &[CaseReport],
-    key: &str,
-    specular: bool,
-) -> Result<(), CliError> {
-    outln!(
-        "{} {} set '{}' ({} cases), method {key}",
-        if specular { "specular" } else { "diffuse" },
-        shown(&vectors.version),
-        shown(&vectors.set),
-        reports.len()
-    )?;
-    outln!("| case | pixels | max Δlevel | mean Δlevel | max |Δ| | max ulps (f32) | allowed | verdict |")?;
-    outln!("|---|---:|---:|---:|---:|---:|---:|---|")?;
-    for r in reports {
-        // A NaN or infinite result fails its case; no difference is printed for it.
-        let (abs, ulps) = match r.not_finite {
-            Some(p) => (format!("not finite at pixel {p}"), "—".to_string()),
-            None => (format!("{:.3e}", r.max_abs), format!("{:.1}", r.max_ulps)),
-        };
-        outln!(
-            "| {} | {} | {} | {:.4} | {abs} | {ulps} | {} | {} |",
-            shown(&r.id),
-            r.pixels,
-            r.max_levels,
-            r.mean_levels,
-            r.allowed,
-            if r.pass { "pass" } else { "FAIL" }
-        )?;
-    }
-    let px: usize = reports.iter().map(|r| r.pixels).sum();
-    let mean = reports
-        .iter()
-        .map(|r| r.mean_levels * r.pixels as f64)
-        .sum::<f64>()
-        / px.max(1) as f64;
-    let max_l = reports.iter().map(|r| r.max_levels).max().unwrap_or(0);
-    let max_a = reports.iter().map(|r| r.max_abs).fold(0.0, f64::max);
-    let max_u = reports.iter().map(|r| r.max_ulps).fold(0.0, f64::max);
-    outln!("\noverall: {px} pixels, max Δlevel {max_l}, mean Δlevel {mean:.4}, max |Δ| {max_a:.3e}, max {max_u:.1} f32 ulps")?;
-    let worst = reports
-        .iter()
-        .filter(|r| !r.pass)
-        .chain(reports.iter())
-        .max_by(|a, b| {
-            (a.not_finite.is_some(), a.max_abs)
-                .partial_cmp(&(b.not_finite.is_some(), b.max_abs))
-                .unwrap_or(std::cmp::Ordering::Equal)
-        });
-    if let Some(w) = worst {
-        if let Some(c) = vectors.cases.iter().find(|c| c.id == w.id) {
-            outln!(
-                "worst case {} (pixel {}): {}; Na = ({}), Nb = ({}), L = ({}), n = {}",
-                shown(&w.id),
-                w.worst_pixel,
-                shown(&c.comment),
-                shown(&c.na.exact.join(", ")),
-                shown(&c.nb.exact.join(", ")),
-                shown(&c.l.exact.join(", ")),
-                c.n
-            )?;
-        }
-    }
-    Ok(())
 }

@@ -6,6 +6,8 @@
 //! - [`check`]: reading an implementation's results and comparing them, with
 //!   per-method default tolerances from [`crate::tolerance`].
 //! - [`report`]: the verdict as JUnit XML or JSON, for other languages' CI.
+//! - [`verdict`]: one check start to end: the vector file trusted or recomputed, and
+//!   the verdict as text.
 //!
 //! How to use it from C or a shader harness: `docs/conformance.md`.
 
@@ -13,5 +15,6 @@ pub mod check;
 pub mod integrity;
 pub mod report;
 pub mod vectors;
+pub mod verdict;
 
 pub use crate::error::{shown, SHOWN_CHARS};

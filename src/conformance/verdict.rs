@@ -1,0 +1,393 @@
+//! One check, start to end, as the command line's `check` runs it: the vector file read
+//! and trusted or recomputed ([`load_vectors`]), the results compared
+//! ([`super::check::check`]), and the verdict as text ([`text`]).
+//!
+//! A published set (its SHA-256 one of [`super::integrity::PUBLISHED`]) is read whole:
+//! its expectations are this version's own. Any other file supplies cases, not truth:
+//! its inputs are read (its expectations skipped unread) and the expectations of the
+//! one method checked are recomputed by the exact reference, within the work budget
+//! [`MAX_RECOMPUTED_WORK`].
+
+use super::check::CaseReport;
+use super::integrity::{
+    exact_work, input_bits, published_set, sha256_hex, validate, MAX_CASES, MAX_RECOMPUTED_WORK,
+};
+use super::vectors::{exact_input, method_key, InputsFile, VectorFile, DIGITS, MAX_CASE_STEPS};
+use crate::error::shown;
+use crate::method::Method;
+use crate::table::{markdown, Align};
+use std::fmt;
+
+/// Which input a refusal is about (the command line names it as the argument).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Culprit {
+    /// The vector file.
+    Vectors,
+    /// The method asked for.
+    Method,
+    /// The specular switch.
+    Specular,
+}
+
+/// Why a vector file cannot be checked against: the input at fault and a one-line
+/// message (the file's name in it as given, [`shown`]).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct LoadError {
+    /// The input at fault.
+    pub culprit: Culprit,
+    /// What is wrong.
+    pub message: String,
+}
+
+impl fmt::Display for LoadError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.message)
+    }
+}
+
+impl std::error::Error for LoadError {}
+
+/// A vector file ready to check against.
+#[derive(Clone, Debug)]
+pub struct Loaded {
+    /// The cases and their expectations.
+    pub file: VectorFile,
+    /// `true` when the file is not a published set and the expectations of the
+    /// method were recomputed from its inputs.
+    pub recomputed: bool,
+}
+
+/// The vector file `text` (named `name` in messages) for checking `method`: a
+/// published set as it is; any other file, only with `allow_modified`, its expectations
+/// recomputed. Then the file's consistency ([`validate`]), that it has `method`, and
+/// specular cases if `specular`.
+///
+/// # Errors
+/// A [`LoadError`] naming the input at fault: a file that is not a published set (and
+/// `allow_modified` is false), not a vector file, inconsistent, too large to recompute
+/// (more than [`MAX_CASES`] cases, a case outside `1..=MAX_CASE_STEPS` steps, more
+/// than [`MAX_RECOMPUTED_WORK`] units of exact work); a method the file lacks; no
+/// specular cases.
+pub fn load_vectors(
+    text: String,
+    name: &str,
+    method: Method,
+    specular: bool,
+    allow_modified: bool,
+) -> Result<Loaded, LoadError> {
+    let vectors_error = |m: String| LoadError {
+        culprit: Culprit::Vectors,
+        message: format!("{}: {m}", shown(name)),
+    };
+    let digest = sha256_hex(text.as_bytes());
+    let published = published_set(&digest).is_some();
+    if !published && !allow_modified {
+        return Err(vectors_error(format!(
+            "SHA-256 {digest} is not that of a published vector set (docs/conformance.md); \
+             use the files of vectors/ or `phong-approx vectors`, or pass --allow-modified-vectors"
+        )));
+    }
+    let not_vectors = |e: serde_json::Error| LoadError {
+        culprit: Culprit::Vectors,
+        message: format!("{}:{}: not a vector file: {e}", shown(name), e.line()),
+    };
+    let file: VectorFile = if published {
+        serde_json::from_str(&text).map_err(not_vectors)?
+    } else {
+        let inputs: InputsFile = serde_json::from_str(&text).map_err(not_vectors)?;
+        drop(text);
+        recompute(name, &inputs, method, specular)?
+    };
+    validate(&file).map_err(vectors_error)?;
+    let key = method_key(method);
+    if !file.methods.contains(&key) {
+        return Err(missing_method(name, &key, &file.methods));
+    }
+    if specular && file.cases.iter().all(|c| c.specular.is_none()) {
+        return Err(LoadError {
+            culprit: Culprit::Specular,
+            message: format!("{} has no specular cases", shown(name)),
+        });
+    }
+    Ok(Loaded {
+        file,
+        recomputed: !published,
+    })
+}
+
+fn missing_method(name: &str, key: &str, methods: &[String]) -> LoadError {
+    LoadError {
+        culprit: Culprit::Method,
+        message: format!(
+            "'{key}' is not in {} (it has: {})",
+            shown(name),
+            shown(&methods.join(", "))
+        ),
+    }
+}
+
+/// The expectations of `method` for a file that is not published, computed from its
+/// inputs within the work budget [`MAX_RECOMPUTED_WORK`] (the budget is checked before
+/// any exact work).
+fn recompute(
+    name: &str,
+    inputs: &InputsFile,
+    method: Method,
+    specular: bool,
+) -> Result<VectorFile, LoadError> {
+    let bad = |m: String| LoadError {
+        culprit: Culprit::Vectors,
+        message: format!("{}: {m}", shown(name)),
+    };
+    if inputs.cases.len() > MAX_CASES {
+        return Err(bad(format!("more than {MAX_CASES} cases")));
+    }
+    let key = method_key(method);
+    if !inputs.methods.contains(&key) {
+        return Err(missing_method(name, &key, &inputs.methods));
+    }
+    if let Some(c) = inputs
+        .cases
+        .iter()
+        .find(|c| c.n == 0 || c.n > MAX_CASE_STEPS)
+    {
+        return Err(bad(format!(
+            "case {}: n = {} is outside 1..={MAX_CASE_STEPS}",
+            shown(&c.id),
+            c.n
+        )));
+    }
+    let mut work = 0u64;
+    for c in &inputs.cases {
+        let mut vs = Vec::new();
+        for x in [
+            Some(&c.na),
+            Some(&c.nb),
+            Some(&c.l),
+            c.specular.as_ref().map(|s| &s.h),
+        ]
+        .into_iter()
+        .flatten()
+        {
+            vs.push(exact_input(x).ok_or_else(|| {
+                bad(format!(
+                    "case {}: an input is not three exact numbers",
+                    shown(&c.id)
+                ))
+            })?);
+        }
+        let refs: Vec<_> = vs.iter().collect();
+        let twice = if specular && c.specular.is_some() {
+            2
+        } else {
+            1
+        };
+        work = work.saturating_add(
+            exact_work(method, c.n, input_bits(&refs), DIGITS).saturating_mul(twice),
+        );
+    }
+    if work > MAX_RECOMPUTED_WORK {
+        return Err(bad(format!(
+            "recomputing the expectations of {key} for these cases is {work} units of exact work, \
+             more than {MAX_RECOMPUTED_WORK} (about half a minute); split the file"
+        )));
+    }
+    inputs.recompute(method).map_err(bad)
+}
+
+/// The verdict as text: a heading line (diffuse or specular, version, set, cases,
+/// method), a Markdown table with a row per case, the overall figures and the worst
+/// case with its inputs. Every string from the files is [`shown`].
+pub fn text(vectors: &VectorFile, reports: &[CaseReport], key: &str, specular: bool) -> String {
+    let mut s = format!(
+        "{} {} set '{}' ({} cases), method {key}\n",
+        if specular { "specular" } else { "diffuse" },
+        shown(&vectors.version),
+        shown(&vectors.set),
+        reports.len()
+    );
+    let rows: Vec<Vec<String>> = reports
+        .iter()
+        .map(|r| {
+            // A NaN or infinite result fails its case; no difference is printed for it.
+            let (abs, ulps) = match r.not_finite {
+                Some(p) => (format!("not finite at pixel {p}"), "—".to_string()),
+                None => (format!("{:.3e}", r.max_abs), format!("{:.1}", r.max_ulps)),
+            };
+            vec![
+                shown(&r.id),
+                r.pixels.to_string(),
+                r.max_levels.to_string(),
+                format!("{:.4}", r.mean_levels),
+                abs,
+                ulps,
+                r.allowed.clone(),
+                (if r.pass { "pass" } else { "FAIL" }).to_string(),
+            ]
+        })
+        .collect();
+    let (l, r) = (Align::Left, Align::Right);
+    s += &markdown(
+        &[
+            "case",
+            "pixels",
+            "max Δlevel",
+            "mean Δlevel",
+            "max |Δ|",
+            "max ulps (f32)",
+            "allowed",
+            "verdict",
+        ],
+        &[l, r, r, r, r, r, r, l],
+        &rows,
+    );
+    let px: usize = reports.iter().map(|r| r.pixels).sum();
+    let mean = reports
+        .iter()
+        .map(|r| r.mean_levels * r.pixels as f64)
+        .sum::<f64>()
+        / px.max(1) as f64;
+    let max_l = reports.iter().map(|r| r.max_levels).max().unwrap_or(0);
+    let max_a = reports.iter().map(|r| r.max_abs).fold(0.0, f64::max);
+    let max_u = reports.iter().map(|r| r.max_ulps).fold(0.0, f64::max);
+    s += &format!("\noverall: {px} pixels, max Δlevel {max_l}, mean Δlevel {mean:.4}, max |Δ| {max_a:.3e}, max {max_u:.1} f32 ulps\n");
+    let worst = reports
+        .iter()
+        .filter(|r| !r.pass)
+        .chain(reports.iter())
+        .max_by(|a, b| {
+            (a.not_finite.is_some(), a.max_abs)
+                .partial_cmp(&(b.not_finite.is_some(), b.max_abs))
+                .unwrap_or(std::cmp::Ordering::Equal)
+        });
+    if let Some(w) = worst {
+        if let Some(c) = vectors.cases.iter().find(|c| c.id == w.id) {
+            s += &format!(
+                "worst case {} (pixel {}): {}; Na = ({}), Nb = ({}), L = ({}), n = {}\n",
+                shown(&w.id),
+                w.worst_pixel,
+                shown(&c.comment),
+                shown(&c.na.exact.join(", ")),
+                shown(&c.nb.exact.join(", ")),
+                shown(&c.l.exact.join(", ")),
+                c.n
+            );
+        }
+    }
+    s
+}
+
+/// The one-line message of a failed check: how many cases are out of tolerance and the
+/// first of them (with its first non-finite pixel, if any); `None` when every case
+/// passes.
+pub fn failure(reports: &[CaseReport]) -> Option<String> {
+    let failed: Vec<&CaseReport> = reports.iter().filter(|r| !r.pass).collect();
+    let first = failed.first()?;
+    Some(format!(
+        "{} of {} cases out of tolerance, first: {}{}",
+        failed.len(),
+        reports.len(),
+        shown(&first.id),
+        first
+            .not_finite
+            .map_or(String::new(), |p| format!(" (pixel {p} is not finite)"))
+    ))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::conformance::check::{check, parse_results, Tolerance};
+
+    const EDGE: &str = include_str!("../../vectors/edge.json");
+
+    /// The edge set cut to its first `k` cases (no longer a published file).
+    fn cut(k: usize) -> String {
+        let mut v: serde_json::Value = serde_json::from_str(EDGE).unwrap();
+        v["cases"].as_array_mut().unwrap().truncate(k);
+        v["number_of_cases"] = k.into();
+        v.to_string()
+    }
+
+    #[test]
+    fn a_published_set_is_trusted_and_another_file_refused_or_recomputed() {
+        let m = Method::CorrectedEuler;
+        let l = load_vectors(EDGE.to_string(), "edge.json", m, false, false).unwrap();
+        assert!(!l.recomputed);
+        let e = load_vectors(cut(3), "cut.json", m, false, false).unwrap_err();
+        assert_eq!(e.culprit, Culprit::Vectors);
+        assert!(e.message.starts_with("cut.json: SHA-256 "), "{e}");
+        let r = load_vectors(cut(3), "cut.json", m, false, true).unwrap();
+        assert!(r.recomputed);
+        assert_eq!(r.file.cases.len(), 3);
+        // The recomputed expectations are the published ones, case by case.
+        for (a, b) in r.file.cases.iter().zip(&l.file.cases) {
+            assert_eq!(a.expected["corrected-euler"], b.expected["corrected-euler"]);
+        }
+    }
+
+    #[test]
+    fn refusals_name_the_input_at_fault() {
+        let m = Method::CorrectedEuler;
+        let e = load_vectors("{".into(), "x.json", m, false, true).unwrap_err();
+        assert_eq!(e.culprit, Culprit::Vectors);
+        let mut v: serde_json::Value = serde_json::from_str(&cut(2)).unwrap();
+        v["methods"] = serde_json::json!(["phong"]);
+        let e = load_vectors(v.to_string(), "x.json", m, false, true).unwrap_err();
+        assert_eq!(e.culprit, Culprit::Method);
+        assert!(
+            e.message.contains("'corrected-euler' is not in x.json"),
+            "{e}"
+        );
+        let mut v: serde_json::Value = serde_json::from_str(&cut(2)).unwrap();
+        v["cases"][0]["n"] = (MAX_CASE_STEPS + 1).into();
+        let e = load_vectors(v.to_string(), "x.json", m, false, true).unwrap_err();
+        assert!(e.message.contains("is outside 1..="), "{e}");
+        let paper = include_str!("../../vectors/paper.json").to_string();
+        let has_specular = serde_json::from_str::<VectorFile>(&paper)
+            .unwrap()
+            .cases
+            .iter()
+            .any(|c| c.specular.is_some());
+        if !has_specular {
+            let e = load_vectors(paper, "paper.json", m, true, false).unwrap_err();
+            assert_eq!(e.culprit, Culprit::Specular);
+        }
+    }
+
+    #[test]
+    fn the_verdict_text_and_failure_line_follow_the_reports() {
+        let m = Method::CorrectedEuler;
+        let file = load_vectors(EDGE.to_string(), "edge.json", m, false, false)
+            .unwrap()
+            .file;
+        let csv = |scale: f64| {
+            let mut s = String::new();
+            for c in &file.cases {
+                for (i, v) in c.expected["corrected-euler"].values.iter().enumerate() {
+                    let v: f64 = v.parse().unwrap();
+                    s += &format!("{},{i},{}\n", c.id, v * scale);
+                }
+            }
+            s
+        };
+        let tol = Tolerance::Levels(0);
+        let run = |scale: f64| {
+            let res = parse_results(&csv(scale), "r.csv", &file, false).unwrap();
+            check(&file, &res, m, "corrected-euler", tol, false).unwrap()
+        };
+        let good = run(1.0);
+        assert_eq!(failure(&good), None);
+        let t = text(&file, &good, "corrected-euler", false);
+        assert!(t.starts_with("diffuse 1.1.0 set 'edge'"));
+        assert_eq!(t.matches("| pass |").count(), good.len());
+        assert!(t.contains("\noverall: ") && t.contains("\nworst case "));
+        let bad = run(0.9);
+        let f = failure(&bad).unwrap();
+        let n = bad.iter().filter(|r| !r.pass).count();
+        assert!(
+            n > 0 && f.starts_with(&format!("{n} of {} cases", bad.len())),
+            "{f}"
+        );
+    }
+}

@@ -36,7 +36,7 @@
 //! ```
 //!
 //! The published sets (`vectors/*.json`) are embedded in the crate and verified
-//! against their SHA-256 digests ([`crate::conformance::integrity::PUBLISHED`]) when
+//! against their SHA-256 digests ([`crate::conformance::integrity::SHA256SUMS`]) when
 //! first used; each case gives your function its inputs as the nearest floats of the
 //! exact unit vectors and the number of steps, and takes back `n + 1` values. The
 //! verdict is [`crate::conformance::check::check`]'s: the bound of the chosen

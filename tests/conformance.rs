@@ -128,18 +128,26 @@ fn committed_vectors_are_what_the_code_generates_byte_for_byte() {
     }
 }
 
+/// The schema is derived from the types (`vectors::schema`, with the catalogue's
+/// method names); the committed files are read by those types strictly (an unknown
+/// field is refused) and pass `integrity::validate`, which enforces what the schema's
+/// enumerations and ranges say and more.
 #[test]
 fn files_follow_the_schema() {
-    let schema: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(root().join("vectors/schema.json")).unwrap())
-            .unwrap();
+    let committed_schema = std::fs::read_to_string(root().join("vectors/schema.json")).unwrap();
+    assert!(
+        committed_schema == phong_approx::conformance::vectors::schema(),
+        "vectors/schema.json is stale: regenerate with `phong-approx vectors --out vectors --force`"
+    );
     for set in SETS {
-        let v: serde_json::Value = serde_json::from_str(
-            &std::fs::read_to_string(root().join(format!("vectors/{set}.json"))).unwrap(),
-        )
-        .unwrap();
-        check_against(&schema, &v, &schema, set);
-        let f = committed(set);
+        let text = std::fs::read_to_string(root().join(format!("vectors/{set}.json"))).unwrap();
+        let f: VectorFile = serde_json::from_str(&text).unwrap();
+        phong_approx::conformance::integrity::validate(&f).unwrap();
+        assert_eq!(f.set, set);
+        assert_eq!(
+            f.version,
+            phong_approx::conformance::vectors::FORMAT_VERSION
+        );
         assert_eq!(f.number_of_cases, f.cases.len());
         let mut ids: Vec<&str> = f.cases.iter().map(|c| c.id.as_str()).collect();
         ids.sort_unstable();
@@ -164,78 +172,29 @@ fn files_follow_the_schema() {
                 }
             }
         }
-    }
-}
-
-/// A small JSON Schema checker for the keywords the committed schema uses: type,
-/// required, properties, items, minItems, maxItems, pattern (prefix form), minimum,
-/// enum, $ref (local), additionalProperties (false or schema).
-fn check_against(
-    node: &serde_json::Value,
-    v: &serde_json::Value,
-    root: &serde_json::Value,
-    at: &str,
-) {
-    use serde_json::Value;
-    if let Some(r) = node.get("$ref").and_then(Value::as_str) {
-        let mut target = root;
-        for part in r.trim_start_matches("#/").split('/') {
-            target = &target[part];
-        }
-        return check_against(target, v, root, at);
-    }
-    if let Some(t) = node.get("type").and_then(Value::as_str) {
-        let ok = match t {
-            "object" => v.is_object(),
-            "array" => v.is_array(),
-            "string" => v.is_string(),
-            "integer" => v.is_u64() || v.is_i64(),
-            "number" => v.is_number(),
-            _ => true,
-        };
-        assert!(ok, "{at}: expected {t}, got {v}");
-    }
-    if let Some(e) = node.get("enum").and_then(Value::as_array) {
-        assert!(e.contains(v), "{at}: {v} not in {e:?}");
-    }
-    if let Some(m) = node.get("minimum").and_then(Value::as_f64) {
-        assert!(v.as_f64().unwrap() >= m, "{at}: {v} < {m}");
-    }
-    if let Some(req) = node.get("required").and_then(Value::as_array) {
-        for k in req {
-            assert!(v.get(k.as_str().unwrap()).is_some(), "{at}: missing {k}");
-        }
-    }
-    if let (Some(props), Some(obj)) = (
-        node.get("properties").and_then(Value::as_object),
-        v.as_object(),
-    ) {
-        for (k, val) in obj {
-            match props.get(k) {
-                Some(p) => check_against(p, val, root, &format!("{at}.{k}")),
-                None => match node.get("additionalProperties") {
-                    Some(Value::Bool(false)) => panic!("{at}: unexpected property {k}"),
-                    Some(s @ Value::Object(_)) => check_against(s, val, root, &format!("{at}.{k}")),
-                    _ => {}
-                },
+        // What the schema forbids is refused: a field it does not name, a method
+        // outside its enumeration, a step count below its minimum.
+        let mut v: serde_json::Value = serde_json::from_str(&text).unwrap();
+        v["cases"][0]["extra"] = 1.into();
+        assert!(
+            serde_json::from_value::<VectorFile>(v).is_err(),
+            "{set}: extra field"
+        );
+        for (field, value) in [
+            ("methods", serde_json::json!(["gouraud", "nope"])),
+            ("n", 0.into()),
+        ] {
+            let mut v: serde_json::Value = serde_json::from_str(&text).unwrap();
+            if field == "n" {
+                v["cases"][0]["n"] = value;
+            } else {
+                v[field] = value;
             }
-        }
-    } else if let (Some(s @ Value::Object(_)), Some(obj)) =
-        (node.get("additionalProperties"), v.as_object())
-    {
-        for (k, val) in obj {
-            check_against(s, val, root, &format!("{at}.{k}"));
-        }
-    }
-    if let (Some(items), Some(arr)) = (node.get("items"), v.as_array()) {
-        if let Some(n) = node.get("minItems").and_then(Value::as_u64) {
-            assert!(arr.len() as u64 >= n, "{at}: fewer than {n} items");
-        }
-        if let Some(n) = node.get("maxItems").and_then(Value::as_u64) {
-            assert!(arr.len() as u64 <= n, "{at}: more than {n} items");
-        }
-        for (i, x) in arr.iter().enumerate() {
-            check_against(items, x, root, &format!("{at}[{i}]"));
+            let f: VectorFile = serde_json::from_value(v).unwrap();
+            assert!(
+                phong_approx::conformance::integrity::validate(&f).is_err(),
+                "{set}: {field}"
+            );
         }
     }
 }
@@ -563,18 +522,15 @@ fn every_case_states_why_it_is_there() {
 
 #[test]
 fn published_digests_are_those_of_the_committed_files() {
-    use phong_approx::conformance::integrity::{published_set, sha256_hex, PUBLISHED};
-    for (set, digest) in PUBLISHED {
+    use phong_approx::conformance::integrity::{published, published_set, sha256_hex};
+    let sets: Vec<&str> = published().map(|(s, _)| s).collect();
+    assert_eq!(sets, SETS, "vectors/SHA256SUMS lists every set, in order");
+    for (set, digest) in published() {
         let bytes = std::fs::read(root().join(format!("vectors/{set}.json"))).unwrap();
         assert_eq!(sha256_hex(&bytes), digest, "{set}");
         assert_eq!(published_set(digest), Some(set));
         // And the committed file is valid by every invariant.
         phong_approx::conformance::integrity::validate(committed(set)).unwrap();
-    }
-    // The docs publish the same digests.
-    let doc = std::fs::read_to_string(root().join("docs/conformance.md")).unwrap();
-    for (set, digest) in PUBLISHED {
-        assert!(doc.contains(&format!("| `{set}` | `{digest}` |")), "{set}");
     }
     assert_eq!(
         sha256_hex(b"abc"),

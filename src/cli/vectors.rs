@@ -3,15 +3,17 @@
 use super::output::OutDir;
 use super::CliError;
 use clap::Args;
+use phong_approx::conformance::integrity::sha256_hex;
 use phong_approx::conformance::shown;
-use phong_approx::conformance::vectors::{generate, inputs_csv, to_csv, SETS};
+use phong_approx::conformance::vectors::{generate, inputs_csv, schema, to_csv, SETS};
 use std::path::{Path, PathBuf};
 
 /// Arguments of `phong-approx vectors`.
 #[derive(Args, Debug)]
 pub struct VectorsArgs {
     /// Where to write: a `.json` file for one set (its CSV twins are written beside it),
-    /// or a folder for all sets. Without it, the JSON of one set goes to stdout.
+    /// or a folder (the sets with their CSV twins, `schema.json`, and with every set
+    /// their digests `SHA256SUMS`). Without it, the JSON of one set goes to stdout.
     #[arg(long, value_name = "PATH")]
     pub out: Option<PathBuf>,
     /// typical, edge, paper, or all (the default).
@@ -21,6 +23,12 @@ pub struct VectorsArgs {
     #[arg(long)]
     pub force: bool,
 }
+
+/// The JSON Schema of the sets, written beside them in a folder.
+const SCHEMA: &str = "schema.json";
+/// The SHA-256 of every set, written beside them when all are written: the digests
+/// `check` trusts (embedded from `vectors/SHA256SUMS`).
+const SUMS: &str = "SHA256SUMS";
 
 /// `--set`: one of the published sets, or `all`.
 fn set_name(s: &str) -> Result<String, String> {
@@ -45,15 +53,15 @@ fn names(set: &str, json: &Path) -> [String; 3] {
     ]
 }
 
-/// Writes the three files of `set` into `out`.
-fn write_set(set: &str, json: &Path, out: &OutDir) -> Result<(), CliError> {
+/// Writes the three files of `set` into `out`; returns the JSON's file name and text.
+fn write_set(set: &str, json: &Path, out: &OutDir) -> Result<(String, String), CliError> {
     let file = generate(set).map_err(|e| CliError::arg("--set", e))?;
     let text = serde_json::to_string_pretty(&file).expect("plain data") + "\n";
     let [j, c, i] = names(set, json);
     out.write(&j, &text)?;
     out.write(&c, &to_csv(&file))?;
     out.write(&i, &inputs_csv(&file))?;
-    Ok(())
+    Ok((j, text))
 }
 
 /// Runs `phong-approx vectors`.
@@ -95,7 +103,15 @@ pub fn run(a: &VectorsArgs) -> Result<(), CliError> {
                 .iter()
                 .map(|s| names(s, &dir.join(format!("{s}.json"))))
                 .collect();
-            out.check_all(all.iter().flatten().map(String::as_str))?;
+            // Every set: their digests too, in `sha256sum -c`'s format.
+            let sums = (sets.len() == SETS.len()).then_some(SUMS);
+            out.check_all(
+                all.iter()
+                    .flatten()
+                    .map(String::as_str)
+                    .chain([SCHEMA])
+                    .chain(sums),
+            )?;
             // Generating the exact expectations of every set takes seconds.
             let bar = indicatif::ProgressBar::new(sets.len() as u64);
             bar.set_style(
@@ -105,11 +121,17 @@ pub fn run(a: &VectorsArgs) -> Result<(), CliError> {
                 .expect("template"),
             );
             bar.enable_steady_tick(std::time::Duration::from_millis(200));
+            let mut digests = String::new();
             for s in sets {
-                write_set(s, &dir.join(format!("{s}.json")), &out)?;
+                let (name, text) = write_set(s, &dir.join(format!("{s}.json")), &out)?;
+                digests += &format!("{}  {name}\n", sha256_hex(text.as_bytes()));
                 bar.inc(1);
             }
             bar.finish_and_clear();
+            out.write(SCHEMA, &schema())?;
+            if let Some(sums) = sums {
+                out.write(sums, &digests)?;
+            }
             out.commit()?;
         }
     }

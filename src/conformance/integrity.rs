@@ -1,7 +1,7 @@
 //! A vector file that cannot be fooled: its SHA-256 against the published sets, and a
 //! full check of its own invariants before `check` uses it.
 //!
-//! `check` refuses a vector file whose digest is not one of [`PUBLISHED`] unless the
+//! `check` refuses a vector file whose digest is not one of [`SHA256SUMS`] unless the
 //! user says `--allow-modified-vectors` (for people who generate their own), and
 //! always refuses one that breaks an invariant of [`validate`]: so a truncated,
 //! edited or hostile file can neither make garbage pass nor exhaust memory.
@@ -16,22 +16,18 @@ use crate::vector::Vec3;
 use crate::BigRational;
 use sha2::{Digest, Sha256};
 
-/// SHA-256 of the published vector files `vectors/SET.json`, as written by
-/// `phong-approx vectors --set SET` of this version (tested: `tests/conformance.rs`).
-pub const PUBLISHED: [(&str, &str); 3] = [
-    (
-        "typical",
-        "c444e1de67860fc3db77fb2c4487d9de5d36e2b15e81958e2610e6b450166484",
-    ),
-    (
-        "edge",
-        "ed2a83b76b11b52aace83bd1ddd462c32dc89c1a7233ca5459957a0b8805ebc3",
-    ),
-    (
-        "paper",
-        "ff0c40cba507255299050b9c6cc6c0b20b6594559263d03507c8a6c6ca317ac2",
-    ),
-];
+/// `vectors/SHA256SUMS`: the SHA-256 of the published vector files, in `sha256sum`'s
+/// format (`DIGEST  SET.json` per line), as `phong-approx vectors` of this version
+/// writes them beside the sets; embedded at build (tested: `tests/conformance.rs`).
+pub const SHA256SUMS: &str = include_str!("../../vectors/SHA256SUMS");
+
+/// The published sets and their digests, `(set, SHA-256)`, read from [`SHA256SUMS`].
+pub fn published() -> impl Iterator<Item = (&'static str, &'static str)> {
+    SHA256SUMS.lines().filter_map(|line| {
+        let (digest, file) = line.split_once("  ")?;
+        Some((file.strip_suffix(".json")?, digest))
+    })
+}
 
 pub use super::vectors::MAX_CASE_STEPS;
 
@@ -111,10 +107,9 @@ pub fn sha256_hex(bytes: &[u8]) -> String {
 
 /// The published set whose file has this digest, if any.
 pub fn published_set(digest: &str) -> Option<&'static str> {
-    PUBLISHED
-        .iter()
+    published()
         .find(|(_, d)| d.eq_ignore_ascii_case(digest))
-        .map(|(s, _)| *s)
+        .map(|(s, _)| s)
 }
 
 /// The exact span of a case, after checking `n` and the inputs.

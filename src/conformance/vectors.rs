@@ -30,6 +30,8 @@ pub fn method_key(m: Method) -> String {
 
 /// A vector as exact fractions and as the nearest `f32` and `f64`.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(deny_unknown_fields)]
 pub struct VectorInput {
     /// Exact components as fractions, e.g. `"3/5"`.
     pub exact: [String; 3],
@@ -41,26 +43,35 @@ pub struct VectorInput {
 
 /// The expected output of one method on one case.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(deny_unknown_fields)]
 pub struct Expected {
-    /// Values at pixels `0..=n` as decimal strings with [`DIGITS`] significant digits.
+    /// Values at pixels `0..=n` as decimal strings with 30 significant digits.
+    #[cfg_attr(feature = "schema", schemars(length(min = 2)))]
     pub values: Vec<String>,
     /// The exact 8-bit levels `floor(255·clamp(v, 0, 1))`.
+    #[cfg_attr(feature = "schema", schemars(length(min = 2)))]
     pub levels: Vec<u8>,
 }
 
 /// The specular part of a case: a half vector and a shininess.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(deny_unknown_fields)]
 pub struct SpecularCase {
     /// The unit half vector `H`.
     pub h: VectorInput,
     /// The shininess `s`.
     pub s: u32,
     /// Per method: `max(0, method(N·H))^s`.
+    #[cfg_attr(feature = "schema", schemars(schema_with = "schema::per_method"))]
     pub expected: std::collections::BTreeMap<String, Expected>,
 }
 
 /// One scan-line case.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(deny_unknown_fields)]
 pub struct Case {
     /// A stable id, e.g. `edge-007`.
     pub id: String,
@@ -73,15 +84,19 @@ pub struct Case {
     /// `L`.
     pub l: VectorInput,
     /// Steps `n`; the span has `n + 1` pixels.
+    #[cfg_attr(feature = "schema", schemars(range(min = 1)))]
     pub n: u32,
     /// The smallest `q_i` of the span (to scale float tolerances; see
     /// `src/tolerance.rs`).
+    #[cfg_attr(feature = "schema", schemars(range(min = 0.0)))]
     pub q_min: f64,
     /// The adaptive test's `δ` (eq. 24) and decision with `K_d = 1`.
     pub delta: String,
     /// `"gouraud"` or `"corrected-euler"`.
+    #[cfg_attr(feature = "schema", schemars(schema_with = "schema::decision"))]
     pub decision: String,
     /// Per method: expected values and levels.
+    #[cfg_attr(feature = "schema", schemars(schema_with = "schema::per_method"))]
     pub expected: std::collections::BTreeMap<String, Expected>,
     /// Specular expectations, for some cases.
     #[serde(default, skip_serializing_if = "Option::is_none")]
@@ -90,21 +105,83 @@ pub struct Case {
 
 /// A vector file.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
+#[serde(deny_unknown_fields)]
+#[cfg_attr(
+    feature = "schema",
+    schemars(
+        title = "phong-approx scan-line test vectors",
+        description = "One set of scan-line cases with exact inputs and exact expected values per method.",
+        extend("$id" = "phong-approx/vectors/schema.json")
+    )
+)]
 pub struct VectorFile {
-    /// [`FORMAT_VERSION`].
+    /// The format version (semantic: a major change breaks readers).
+    #[cfg_attr(feature = "schema", schemars(schema_with = "schema::version"))]
     pub version: String,
     /// `phong-approx <crate version>`.
     pub generator: String,
     /// The set: `typical`, `edge` or `paper`.
+    #[cfg_attr(feature = "schema", schemars(schema_with = "schema::set"))]
     pub set: String,
     /// Notes on how the values were computed.
     pub notes: String,
     /// The method keys present in every case.
+    #[cfg_attr(feature = "schema", schemars(schema_with = "schema::methods"))]
     pub methods: Vec<String>,
     /// Number of cases.
+    #[cfg_attr(feature = "schema", schemars(range(min = 1)))]
     pub number_of_cases: usize,
     /// The cases.
     pub cases: Vec<Case>,
+}
+
+/// The JSON Schema of the vector files (`vectors/schema.json`), derived from
+/// [`VectorFile`] and its parts, with the enumerations read from the catalogue
+/// ([`Method::ALL`]), [`SETS`] and [`FORMAT_VERSION`]; written by `phong-approx
+/// vectors` beside the sets.
+#[cfg(feature = "schema")]
+pub fn schema() -> String {
+    serde_json::to_string_pretty(&schemars::schema_for!(VectorFile)).expect("plain data") + "\n"
+}
+
+/// The enumerations of [`schema`].
+#[cfg(feature = "schema")]
+mod schema {
+    use schemars::{json_schema, Schema, SchemaGenerator};
+
+    fn names() -> Vec<String> {
+        super::Method::ALL
+            .iter()
+            .map(|m| super::method_key(*m))
+            .collect()
+    }
+
+    pub fn version(_: &mut SchemaGenerator) -> Schema {
+        json_schema!({ "type": "string", "enum": [super::FORMAT_VERSION],
+            "description": "The format version (semantic: a major change breaks readers)." })
+    }
+
+    pub fn set(_: &mut SchemaGenerator) -> Schema {
+        json_schema!({ "type": "string", "enum": super::SETS })
+    }
+
+    pub fn methods(_: &mut SchemaGenerator) -> Schema {
+        json_schema!({ "type": "array", "items": { "type": "string", "enum": names() } })
+    }
+
+    pub fn decision(_: &mut SchemaGenerator) -> Schema {
+        json_schema!({ "type": "string", "enum": ["gouraud", "corrected-euler"] })
+    }
+
+    pub fn per_method(g: &mut SchemaGenerator) -> Schema {
+        let expected = g.subschema_for::<super::Expected>();
+        json_schema!({
+            "type": "object",
+            "propertyNames": { "enum": names() },
+            "additionalProperties": expected
+        })
+    }
 }
 
 /// The sets there are.

@@ -2,7 +2,7 @@
 //! and trusted or recomputed ([`load_vectors`]), the results compared
 //! ([`super::check::check`]), and the verdict as text ([`text`]).
 //!
-//! A published set (its SHA-256 one of [`super::integrity::PUBLISHED`]) is read whole:
+//! A published set (its SHA-256 one of [`super::integrity::SHA256SUMS`]) is read whole:
 //! its expectations are this version's own. Any other file supplies cases, not truth:
 //! its inputs are read (its expectations skipped unread) and the expectations of the
 //! one method checked are recomputed by the exact reference, within the work budget

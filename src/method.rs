@@ -96,6 +96,55 @@ pub struct Info {
     pub range: ValueRange,
     /// The section of `docs/float.md` that derives its float bound (`§5`).
     pub float_section: &'static str,
+    /// That bound under the `reference` profile, as data: its form and constants
+    /// ([`crate::tolerance::reference_bound`] evaluates it).
+    pub bound: Bound,
+}
+
+/// A method's float bound against its exact run under the `reference` profile, as
+/// data: the form of the derivation (the `docs/float.md` section of the catalogue
+/// row) and its constants, in units of the unit roundoff `u`. Every form holds while
+/// `n·u ≤ 2^-12`. A new method whose bound has one of these forms needs only its
+/// catalogue row; a new form needs its arm in [`crate::tolerance::reference_bound`]
+/// too.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Bound {
+    /// A recurrence's `(α·n + β)·u`, `below = (α, β)` for `n ≤ 4096`; past 4096
+    /// (binary64) the coefficients `large` where a theorem gives others.
+    Linear {
+        /// `(α, β)` for `n ≤ 4096`.
+        below: (f64, f64),
+        /// `(α, β)` past 4096, when they differ.
+        large: Option<(f64, f64)>,
+    },
+    /// The ratio `p/√q` of two recurrences whose errors are `(α·n + β)·u` each
+    /// (`docs/float.md` §8), with the square root and the division rounded.
+    Ratio {
+        /// `(α, β)` of `p`.
+        p: (f64, f64),
+        /// `(α, β)` of `q`.
+        q: (f64, f64),
+    },
+    /// A normal interpolated and normalized per pixel (§9): `(normal/√q_min + eval)·u`.
+    PerPixel {
+        /// The interpolated normal's error (Euclidean, in `u`).
+        normal: f64,
+        /// The evaluation's error (in `u`).
+        eval: f64,
+    },
+    /// The larger of two methods' bounds (the adaptive scheme runs one or the other).
+    Larger(Method, Method),
+    /// The interpolated angle's bound (§11) plus `extra·u`, and one step of a cosine
+    /// table of `table` entries when the cosine is tabled.
+    Angle {
+        /// Further roundings (in `u`).
+        extra: f64,
+        /// The cosine table's size.
+        table: Option<u32>,
+    },
+    /// A bound that reads the whole span (`sin Ω`): the related methods'
+    /// ([`crate::tolerance::related`]).
+    WholeSpan,
 }
 
 /// Where a method comes from.
@@ -222,12 +271,43 @@ impl Method {
     pub fn info(&self) -> Info {
         const HBB: &str = "Hast, Barrera, Bengtsson";
         let (field, real) = (Needs::Field, Needs::Real);
+        use Bound::{Linear, Ratio, WholeSpan};
         use Family::{Paper, Related};
         use PhongPixels::{All, BinarySegments, Ends, EndsAndEvenMiddle, EvenMiddle};
         use ValueRange::{Diffuse, HalfAngleTaylor};
+        // The reference bounds' constants (docs/float.md, the row's section): Gouraud
+        // and corrected Euler are the theorems float_gouraud_binary32/_binary64 and
+        // float_corrected_euler_binary32/_binary64 (proofs/Float.v), corrected Euler
+        // past 4096 profile_ieee_corrected_euler_binary64_large (proofs/Profiles.v;
+        // Gouraud's own theorem there, (1.0006n + 11.001)u, lies below (1.001n + 10)u).
+        const GOURAUD: Bound = Linear {
+            below: (1.001, 10.0),
+            large: None,
+        };
+        const CORRECTED_EULER: Bound = Linear {
+            below: (2.2, 42.0),
+            large: Some((2.2, 51.21)),
+        };
+        const EULER: Bound = Linear {
+            below: (5.6, 115.0),
+            large: None,
+        };
+        const DUFF: Bound = Ratio {
+            p: (1.01, 20.0),
+            q: (3.01, 118.0),
+        };
+        const PHONG: Bound = Bound::PerPixel {
+            normal: 10.01,
+            eval: 7.6,
+        };
+        const ADAPTIVE: Bound = Bound::Larger(Method::CorrectedEuler, Method::Gouraud);
+        const ANGLE: Bound = Bound::Angle {
+            extra: 2.0,
+            table: None,
+        };
         #[allow(clippy::type_complexity)]
         #[rustfmt::skip]
-        let (name, label, source, equations, module, needs, phong_pixels, reconstructed, family, exact_cost, range, float_section): (
+        let (name, label, source, equations, module, needs, phong_pixels, reconstructed, family, exact_cost, range, float_section, bound): (
             &str,
             &str,
             &str,
@@ -240,19 +320,20 @@ impl Method {
             u64,
             ValueRange,
             &str,
+            Bound,
         ) = match self {
-            Method::Phong => ("phong", "Phong", "Phong 1975", "eq. 4", "phong", real, All, false, Paper, 16, Diffuse, "§9"),
-            Method::Duff => ("duff", "Duff", "Duff 1979", "eqs. 5–7", "duff", real, All, false, Paper, 16, Diffuse, "§8"),
-            Method::SymmetricPhong => ("symmetric-phong", "symmetric Phong", HBB, "§4", "symmetric_phong", real, All, false, Paper, 16, Diffuse, "§8"),
-            Method::Gouraud => ("gouraud", "Gouraud (fence)", "Gouraud 1971, Behrens 1994", "§1, eq. 23's d_p", "gouraud", field, Ends, false, Paper, 1, Diffuse, "§5"),
-            Method::Euler => ("euler", "Euler", HBB, "eqs. 12–14", "euler", field, PhongPixels::First, false, Paper, 1, Diffuse, "§7"),
-            Method::CorrectedEuler => ("corrected-euler", "corrected Euler", HBB, "eqs. 15–17", "corrected_euler", field, Ends, false, Paper, 1, Diffuse, "§6"),
-            Method::Adaptive => ("adaptive", "adaptive", HBB, "eqs. 23–24", "adaptive", field, Ends, false, Paper, 1, Diffuse, "§10"),
-            Method::Angular => ("angular", "angular", "Mortensen 1995", "second source", "angular", real, PhongPixels::AngularEnds, false, Family::Angular, 16, Diffuse, "§11"),
-            Method::AngularTable(_) => ("angular-table", "angular, tabled", "Mortensen 1995", "second source", "angular", real, PhongPixels::Table, false, Family::Angular, 16, Diffuse, "§11"),
-            Method::Spherical => ("spherical", "spherical", "Kuijk & Blake 1989", "Chebyshev recurrence", "related::spherical", real, EndsAndEvenMiddle, true, Related, 20, Diffuse, "§16.1"),
-            Method::Binary => ("binary", "binary", "Ouyang & Maynard 1996", "binary subdivision", "related::binary", real, BinarySegments, true, Related, 300, Diffuse, "§16.2"),
-            Method::BishopWeimer => ("bishop-weimer", "Bishop–Weimer", "Bishop & Weimer 1986", "2-D Taylor, along the span", "related::bishop_weimer", real, EvenMiddle, false, Related, 20, HalfAngleTaylor, "§16.3"),
+            Method::Phong => ("phong", "Phong", "Phong 1975", "eq. 4", "phong", real, All, false, Paper, 16, Diffuse, "§9", PHONG),
+            Method::Duff => ("duff", "Duff", "Duff 1979", "eqs. 5–7", "duff", real, All, false, Paper, 16, Diffuse, "§8", DUFF),
+            Method::SymmetricPhong => ("symmetric-phong", "symmetric Phong", HBB, "§4", "symmetric_phong", real, All, false, Paper, 16, Diffuse, "§8", DUFF),
+            Method::Gouraud => ("gouraud", "Gouraud (fence)", "Gouraud 1971, Behrens 1994", "§1, eq. 23's d_p", "gouraud", field, Ends, false, Paper, 1, Diffuse, "§5", GOURAUD),
+            Method::Euler => ("euler", "Euler", HBB, "eqs. 12–14", "euler", field, PhongPixels::First, false, Paper, 1, Diffuse, "§7", EULER),
+            Method::CorrectedEuler => ("corrected-euler", "corrected Euler", HBB, "eqs. 15–17", "corrected_euler", field, Ends, false, Paper, 1, Diffuse, "§6", CORRECTED_EULER),
+            Method::Adaptive => ("adaptive", "adaptive", HBB, "eqs. 23–24", "adaptive", field, Ends, false, Paper, 1, Diffuse, "§10", ADAPTIVE),
+            Method::Angular => ("angular", "angular", "Mortensen 1995", "second source", "angular", real, PhongPixels::AngularEnds, false, Family::Angular, 16, Diffuse, "§11", ANGLE),
+            Method::AngularTable(size) => ("angular-table", "angular, tabled", "Mortensen 1995", "second source", "angular", real, PhongPixels::Table, false, Family::Angular, 16, Diffuse, "§11", Bound::Angle { extra: 20.0, table: Some(*size) }),
+            Method::Spherical => ("spherical", "spherical", "Kuijk & Blake 1989", "Chebyshev recurrence", "related::spherical", real, EndsAndEvenMiddle, true, Related, 20, Diffuse, "§16.1", WholeSpan),
+            Method::Binary => ("binary", "binary", "Ouyang & Maynard 1996", "binary subdivision", "related::binary", real, BinarySegments, true, Related, 300, Diffuse, "§16.2", WholeSpan),
+            Method::BishopWeimer => ("bishop-weimer", "Bishop–Weimer", "Bishop & Weimer 1986", "2-D Taylor, along the span", "related::bishop_weimer", real, EvenMiddle, false, Related, 20, HalfAngleTaylor, "§16.3", WholeSpan),
         };
         Info {
             name,
@@ -267,6 +348,7 @@ impl Method {
             exact_cost,
             range,
             float_section,
+            bound,
         }
     }
 

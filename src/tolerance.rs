@@ -29,7 +29,7 @@ pub mod profile;
 pub mod related;
 pub mod rows;
 
-use crate::method::Method;
+use crate::method::{Bound, Method};
 
 /// The largest `n·u` for which the derivations hold (their second-order terms are
 /// folded into the constants under this condition).
@@ -39,24 +39,10 @@ pub const MAX_NU: f64 = 1.0 / 4096.0;
 /// `x = −1`, `y = 1`; `docs/float.md`, angular).
 const ACOS_HOLDER: f64 = 2.2215;
 
-/// Coefficients `(α, β)` of a bound `(α·n + β)·u`, in one table (see `docs/float.md`
-/// for each derivation).
+/// Coefficients `(α, β)` of the fast kernels' bounds `(α·n + β)·u`, in one table (see
+/// `docs/float.md` for each derivation; the methods' own are in their catalogue rows,
+/// [`Bound`]).
 mod coef {
-    /// Gouraud, recurrence `g += dp` on the `Span` set-up: theorem
-    /// `float_gouraud_binary32`/`_binary64` (proofs/Float.v).
-    pub const GOURAUD: (f64, f64) = (1.001, 10.0);
-    /// Corrected Euler, recurrence `p += t; t += ds` on the `Span` set-up: theorem
-    /// `float_corrected_euler_binary32`/`_binary64` (proofs/Float.v).
-    pub const CORRECTED_EULER: (f64, f64) = (2.2, 42.0);
-    /// Corrected Euler past `n = 4096` (binary64): theorem
-    /// `profile_ieee_corrected_euler_binary64_large` (proofs/Profiles.v).
-    pub const CORRECTED_EULER_LARGE: (f64, f64) = (2.2, 51.21);
-    /// Plain Euler (eqs. 12–14) on the `Span` set-up: `docs/float.md`, Euler.
-    pub const EULER: (f64, f64) = (5.6, 115.0);
-    /// Duff's `p` recurrence (`p += A`).
-    pub const DUFF_P: (f64, f64) = (1.01, 20.0);
-    /// Duff's `q` recurrence (`q += dq; dq += 2C`).
-    pub const DUFF_Q: (f64, f64) = (3.01, 118.0);
     /// Fast kernels (`FastSpan`): corrected Euler in closed form (no growth in `n`).
     pub const FAST_CORRECTED_EULER: (f64, f64) = (0.0, 48.0);
     /// Fast kernels: Euler in closed form.
@@ -153,10 +139,14 @@ pub fn bound(method: Method, n: u32, q_min: f64, u: f64) -> Option<f64> {
     reference_bound(method, n, q_min, None, u)
 }
 
-/// The table of the `reference` profile's bounds, one row per method (an exhaustive
-/// match: a method without a row does not compile): `(method, n, q_min, shape, u)`,
-/// with the whole [`Shape`] when the span is known. The other profiles' table is
+/// The `reference` profile's bound of `method`: its catalogue row's [`Bound`] (form
+/// and constants, `Method::info().bound`) evaluated at `(n, q_min, shape, u)`, with
+/// the whole [`Shape`] when the span is known. The other profiles' table is
 /// [`profile::status`].
+///
+/// `None` where the form has no bound: `n·u >` [`MAX_NU`], `q` may round to zero
+/// (the ratio and per-pixel forms with a small `q_min`), or a whole-span form without
+/// the span.
 pub fn reference_bound(
     method: Method,
     n: u32,
@@ -164,20 +154,35 @@ pub fn reference_bound(
     shape: Option<&Shape>,
     u: f64,
 ) -> Option<f64> {
-    let f = match method {
-        Method::Phong => phong,
-        Method::Duff | Method::SymmetricPhong => duff,
-        Method::Gouraud => gouraud,
-        Method::Euler => euler,
-        Method::CorrectedEuler => corrected_euler,
-        Method::Adaptive => adaptive,
-        Method::Angular => angular,
-        Method::AngularTable(_) => angular_table,
-        Method::Spherical => spherical,
-        Method::Binary => binary,
-        Method::BishopWeimer => bishop_weimer,
-    };
-    f(method, n, q_min, shape, u)
+    let nf = in_range(n, u)?;
+    match method.info().bound {
+        // Recurrences: docs/float.md §5 (Gouraud), §6 (corrected Euler), §7 (Euler).
+        Bound::Linear { below, large } => {
+            let coef = match large {
+                Some(l) if n > 4096 => l,
+                _ => below,
+            };
+            Some(linear(coef, nf) * u)
+        }
+        // Duff and symmetric Phong (§8).
+        Bound::Ratio { p, q } => ratio_bound(linear(p, nf), linear(q, nf), q_min, 2.0, u),
+        // Phong per pixel (§9): the normal off by `normal·u` moves `N·L/|N|` by at
+        // most `normal·u/|N|`; evaluating it costs `eval·u` more.
+        Bound::PerPixel { normal, eval } => {
+            (q_min > 0.0 && q_min.is_finite()).then(|| (normal / q_min.sqrt() + eval) * u)
+        }
+        // The adaptive scheme (§10).
+        Bound::Larger(a, b) => {
+            Some(reference_bound(a, n, q_min, None, u)?.max(reference_bound(b, n, q_min, None, u)?))
+        }
+        // Angular interpolation (§11): the angle's bound, then a table's step and its
+        // own rounding when tabled.
+        Bound::Angle { extra, table } => {
+            Some(angle_bound(edges(shape), nf, u) + table.map_or(0.0, table_step) + extra * u)
+        }
+        // The related methods (§16).
+        Bound::WholeSpan => related::of(method, shape?, u),
+    }
 }
 
 /// What the bounds read of a span: `n`, `q_min` (rounded down) and the edge
@@ -235,101 +240,6 @@ pub fn span_bound(method: Method, shape: &Shape, u: f64) -> Option<f64> {
 
 fn edges(shape: Option<&Shape>) -> Option<(f64, f64)> {
     shape.map(|s| (s.p_a, s.p_b))
-}
-
-/// Gouraud along the span: `(1.001n + 10)u` (docs/float.md §5; proved for
-/// `n ≤ 4096`, `float_gouraud_binary32`/`_binary64`). Past 4096 (binary64 only) the
-/// crate's code is one member of the `ieee` profile's class, whose theorem
-/// `profile_ieee_gouraud_binary64_large` gives `(1.0006n + 11.001)u` up to `2^24`:
-/// below `(1.001n + 10)u` there, so this bound is proved over the whole range.
-pub fn gouraud(_: Method, n: u32, _: f64, _: Option<&Shape>, u: f64) -> Option<f64> {
-    Some(linear(coef::GOURAUD, in_range(n, u)?) * u)
-}
-
-/// Corrected Euler: `(2.2n + 42)u` for `n ≤ 4096` (docs/float.md §6; proved,
-/// `float_corrected_euler_binary32`/`_binary64`); past 4096 (binary64 only)
-/// `(2.2n + 51.21)u`, the `ieee` profile's theorem
-/// `profile_ieee_corrected_euler_binary64_large` (the crate's code is in its class),
-/// proved up to `2^24`.
-pub fn corrected_euler(_: Method, n: u32, _: f64, _: Option<&Shape>, u: f64) -> Option<f64> {
-    let nf = in_range(n, u)?;
-    let coef = if n > 4096 {
-        coef::CORRECTED_EULER_LARGE
-    } else {
-        coef::CORRECTED_EULER
-    };
-    Some(linear(coef, nf) * u)
-}
-
-/// The adaptive scheme: the larger of Gouraud's and corrected Euler's (docs/float.md
-/// §10).
-pub fn adaptive(m: Method, n: u32, q: f64, _: Option<&Shape>, u: f64) -> Option<f64> {
-    Some(corrected_euler(m, n, q, None, u)?.max(gouraud(m, n, q, None, u)?))
-}
-
-/// Euler: `(5.6n + 115)u` (docs/float.md §7).
-pub fn euler(_: Method, n: u32, _: f64, _: Option<&Shape>, u: f64) -> Option<f64> {
-    Some(linear(coef::EULER, in_range(n, u)?) * u)
-}
-
-/// Duff and symmetric Phong: the ratio `p/√q` of two recurrences (docs/float.md §8).
-pub fn duff(_: Method, n: u32, q_min: f64, _: Option<&Shape>, u: f64) -> Option<f64> {
-    let nf = in_range(n, u)?;
-    ratio_bound(
-        linear(coef::DUFF_P, nf),
-        linear(coef::DUFF_Q, nf),
-        q_min,
-        2.0,
-        u,
-    )
-}
-
-/// Phong per pixel (docs/float.md §9): the interpolated normal is off by at most
-/// `10u` (Euclidean), which moves `N·L/|N|` by at most `10u/|N|`; evaluating it costs
-/// `7.5u` more.
-pub fn phong(_: Method, n: u32, q_min: f64, _: Option<&Shape>, u: f64) -> Option<f64> {
-    in_range(n, u)?;
-    if !(q_min > 0.0 && q_min.is_finite()) {
-        return None;
-    }
-    Some((10.01 / q_min.sqrt() + 7.6) * u)
-}
-
-/// Angular interpolation (docs/float.md §11).
-pub fn angular(_: Method, n: u32, _: f64, shape: Option<&Shape>, u: f64) -> Option<f64> {
-    let nf = in_range(n, u)?;
-    Some(angle_bound(edges(shape), nf, u) + 2.0 * u)
-}
-
-/// Angular interpolation with a cosine table (docs/float.md §11): the angle's bound,
-/// one table step, and the table's own rounding.
-pub fn angular_table(m: Method, n: u32, _: f64, shape: Option<&Shape>, u: f64) -> Option<f64> {
-    let nf = in_range(n, u)?;
-    let Method::AngularTable(size) = m else {
-        return None;
-    };
-    Some(angle_bound(edges(shape), nf, u) + table_step(size) + 20.0 * u)
-}
-
-/// Kuijk & Blake's spherical interpolation along a span ([`related::spherical`],
-/// docs/float.md §16.1); only for a known span.
-pub fn spherical(_: Method, n: u32, _: f64, shape: Option<&Shape>, u: f64) -> Option<f64> {
-    in_range(n, u)?;
-    related::spherical(shape?, u)
-}
-
-/// Ouyang & Maynard's binary interpolation ([`related::binary`], docs/float.md
-/// §16.2); only for a known span.
-pub fn binary(_: Method, n: u32, _: f64, shape: Option<&Shape>, u: f64) -> Option<f64> {
-    in_range(n, u)?;
-    related::binary(shape?, u)
-}
-
-/// Bishop & Weimer along a span ([`related::bishop_weimer`], docs/float.md §16.3);
-/// only for a known span.
-pub fn bishop_weimer(_: Method, n: u32, _: f64, shape: Option<&Shape>, u: f64) -> Option<f64> {
-    in_range(n, u)?;
-    related::bishop_weimer(shape?, u)
 }
 
 /// The bound of a specular value `max(0, v)^s` from the bound `b` of the base value

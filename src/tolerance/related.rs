@@ -78,6 +78,18 @@ fn angle(shape: &Shape) -> (f64, f64, f64) {
     (s2, s, c)
 }
 
+/// The whole-span bound of a related method ([`crate::method::Bound::WholeSpan`]):
+/// [`spherical`], [`binary`] or [`bishop_weimer`]; `None` for a method without one.
+pub fn of(method: crate::Method, shape: &Shape, u: f64) -> Option<f64> {
+    use crate::Method;
+    match method {
+        Method::Spherical => spherical(shape, u),
+        Method::Binary => binary(shape, u),
+        Method::BishopWeimer => bishop_weimer(shape, u),
+        _ => None,
+    }
+}
+
 /// Kuijk & Blake's spherical interpolation,
 /// [`crate::related::spherical::shade`]: `docs/float.md` §16.1.
 ///

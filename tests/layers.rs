@@ -7,12 +7,13 @@
 //! `src/method.rs`); comments and the `#[cfg(test)]` modules at the end of a file
 //! are left out (a unit test may use any layer).
 
+use phong_approx::Method;
 use std::collections::{BTreeMap, BTreeSet};
 use std::fs;
 use std::path::{Path, PathBuf};
 
 /// Layers from the ground up: a file's layer is that of the longest prefix of its
-/// path (relative to `src/`) listed here.
+/// path (relative to `src/`) listed here, or [`METHOD_LAYER`] for a method's module.
 const LAYERS: &[(&str, u32)] = &[
     // Errors and the message helpers; exact arithmetic with no crate dependency.
     ("error.rs", 0),
@@ -29,15 +30,8 @@ const LAYERS: &[(&str, u32)] = &[
     ("parse.rs", 3),
     // The scan line.
     ("span.rs", 4),
-    // The methods, each generic over the scalar.
-    ("gouraud.rs", 5),
-    ("euler.rs", 5),
-    ("corrected_euler.rs", 5),
-    ("duff.rs", 5),
-    ("phong.rs", 5),
-    ("symmetric_phong.rs", 5),
-    ("angular.rs", 5),
-    ("adaptive.rs", 5),
+    // The methods, each generic over the scalar: the module of every catalogued
+    // method ([`METHOD_LAYER`], read from the catalogue), and beside them:
     ("specular.rs", 5),
     ("related/", 5),
     // The catalogue.
@@ -85,7 +79,20 @@ fn files() -> Vec<String> {
     out
 }
 
+/// The layer of the methods' own files: each catalogued method's module
+/// (`Method::info().module`), so that a new method's file needs no line in [`LAYERS`].
+const METHOD_LAYER: u32 = 5;
+
+fn is_method_file(file: &str) -> bool {
+    Method::ALL
+        .iter()
+        .any(|m| format!("{}.rs", m.info().module.replace("::", "/")) == file)
+}
+
 fn layer(file: &str) -> u32 {
+    if is_method_file(file) {
+        return METHOD_LAYER;
+    }
     LAYERS
         .iter()
         .filter(|(prefix, _)| file.starts_with(prefix))

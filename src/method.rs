@@ -1,13 +1,14 @@
 //! The catalogue of span methods: one list, and per method everything the rest of the
 //! crate needs to know — its name (which parses back), source, equations, what it asks
 //! of the scalar, whether its value is Phong's `p/√q`, and how to run it. The CLI (`span`,
-//! `check`), the conformance vectors and the torus harness read it from here; the
-//! float error bounds are a table of their own, keyed by method
-//! ([`crate::tolerance::reference_bound`], [`crate::tolerance::profile::status`]).
+//! `check`), the conformance vectors and the torus harness read it from here, and the
+//! float error bound under the `reference` profile as data ([`Bound`], evaluated by
+//! [`crate::tolerance::reference_bound`]; the acceptance profiles' bounds are
+//! [`crate::tolerance::profile::status`]).
 //!
 //! Adding a span method: its own file with `shade(span, out)`, then one entry here — a
-//! variant, its arm in [`Method::info`] and in [`Method::run`], and its place in
-//! [`Method::ALL`] (ARCHITECTURE.md, "Adding a span method").
+//! variant, its arm in [`Method::info`] (with its bound) and in [`Method::run`], and
+//! its place in [`Method::ALL`] (ARCHITECTURE.md, "Adding a span method").
 
 use crate::adaptive::{self, Decision};
 use crate::angular::CosTable;

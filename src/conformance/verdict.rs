@@ -75,10 +75,7 @@ pub fn load_vectors(
     specular: bool,
     allow_modified: bool,
 ) -> Result<Loaded, LoadError> {
-    let vectors_error = |m: String| LoadError {
-        culprit: Culprit::Vectors,
-        message: format!("{}: {m}", shown(name)),
-    };
+    let vectors_error = |m: String| bad_vectors(name, m);
     let digest = sha256_hex(text.as_bytes());
     let published = published_set(&digest).is_some();
     if !published && !allow_modified {
@@ -115,6 +112,14 @@ pub fn load_vectors(
     })
 }
 
+/// A refusal of the vector file `name`.
+fn bad_vectors(name: &str, message: String) -> LoadError {
+    LoadError {
+        culprit: Culprit::Vectors,
+        message: format!("{}: {message}", shown(name)),
+    }
+}
+
 fn missing_method(name: &str, key: &str, methods: &[String]) -> LoadError {
     LoadError {
         culprit: Culprit::Method,
@@ -135,10 +140,7 @@ fn recompute(
     method: Method,
     specular: bool,
 ) -> Result<VectorFile, LoadError> {
-    let bad = |m: String| LoadError {
-        culprit: Culprit::Vectors,
-        message: format!("{}: {m}", shown(name)),
-    };
+    let bad = |m: String| bad_vectors(name, m);
     if inputs.cases.len() > MAX_CASES {
         return Err(bad(format!("more than {MAX_CASES} cases")));
     }

@@ -6,7 +6,7 @@
 //! always refuses one that breaks an invariant of [`validate`]: so a truncated,
 //! edited or hostile file can neither make garbage pass nor exhaust memory.
 
-use super::vectors::{exact_input, method_key, Case, Expected, VectorFile};
+use super::vectors::{exact_input, method_keys, Case, Expected, VectorFile};
 use crate::method::ValueRange;
 use crate::parse::parse_rational;
 use crate::quantize::level;
@@ -206,7 +206,7 @@ pub fn validate(file: &VectorFile) -> Result<(), String> {
             file.cases.len()
         ));
     }
-    let known: Vec<String> = crate::Method::ALL.iter().map(|&m| method_key(m)).collect();
+    let known = method_keys();
     if file.methods.is_empty() {
         return Err("the file lists no methods".into());
     }

@@ -28,6 +28,12 @@ pub fn method_key(m: Method) -> String {
     m.name().into_owned()
 }
 
+/// The keys of every catalogued method, in the catalogue's order: the methods of a
+/// published set, and the only keys a vector file may use.
+pub fn method_keys() -> Vec<String> {
+    Method::ALL.iter().map(|&m| method_key(m)).collect()
+}
+
 /// A vector as exact fractions and as the nearest `f32` and `f64`.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]
@@ -150,13 +156,6 @@ pub fn schema() -> String {
 mod schema {
     use schemars::{json_schema, Schema, SchemaGenerator};
 
-    fn names() -> Vec<String> {
-        super::Method::ALL
-            .iter()
-            .map(|m| super::method_key(*m))
-            .collect()
-    }
-
     pub fn version(_: &mut SchemaGenerator) -> Schema {
         json_schema!({ "type": "string", "enum": [super::FORMAT_VERSION],
             "description": "The format version (semantic: a major change breaks readers)." })
@@ -167,7 +166,7 @@ mod schema {
     }
 
     pub fn methods(_: &mut SchemaGenerator) -> Schema {
-        json_schema!({ "type": "array", "items": { "type": "string", "enum": names() } })
+        json_schema!({ "type": "array", "items": { "type": "string", "enum": super::method_keys() } })
     }
 
     pub fn decision(_: &mut SchemaGenerator) -> Schema {
@@ -178,7 +177,7 @@ mod schema {
         let expected = g.subschema_for::<super::Expected>();
         json_schema!({
             "type": "object",
-            "propertyNames": { "enum": names() },
+            "propertyNames": { "enum": super::method_keys() },
             "additionalProperties": expected
         })
     }
@@ -807,7 +806,7 @@ pub fn file_of(set: &str, cases: Vec<Case>) -> VectorFile {
             keys(Method::is_phong_valued),
             keys(Method::is_related)
         ),
-        methods: Method::ALL.iter().map(|&m| method_key(m)).collect(),
+        methods: method_keys(),
         number_of_cases: cases.len(),
         cases,
     }

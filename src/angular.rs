@@ -79,8 +79,14 @@ impl<T: Real> CosTable<T> {
         }
         let last = T::from_i64(i64::from(size) - 1);
         let step = T::frac_pi_2() / last.clone();
+        // The ends exactly: cos 0° = 1 and cos 90° = 0 (a computed cos(π/2) is a
+        // rounding of π/2's error, not 0, in every number type).
         let values = (0..size)
-            .map(|j| (T::from_i64(i64::from(j)) * step.clone()).cos())
+            .map(|j| match j {
+                0 => T::one(),
+                j if j == size - 1 => T::zero(),
+                j => (T::from_i64(i64::from(j)) * step.clone()).cos(),
+            })
             .collect();
         Ok(CosTable {
             values,

@@ -57,22 +57,40 @@ impl FixedSpan {
     /// Rounds the exact set-up of `span` to `frac_bits` fractional bits.
     ///
     /// # Errors
-    /// [`SpanError::Parameter`] when `frac_bits > MAX_FRAC_BITS`.
+    /// [`SpanError::Parameter`] when `frac_bits > MAX_FRAC_BITS`, or when a set-up
+    /// value or a value the loops reach does not fit 64-bit integers (a span of unit
+    /// vectors always fits).
     pub fn new(span: &Span<BigRational>, frac_bits: u32) -> Result<Self, SpanError> {
         if frac_bits > MAX_FRAC_BITS {
             return Err(SpanError::Parameter(format!(
                 "fractional bits must be at most {MAX_FRAC_BITS} (got {frac_bits})"
             )));
         }
-        let g = |x: &BigRational| to_grid(x, frac_bits).expect("|set-up values| ≤ 4");
-        Ok(FixedSpan {
+        let too_large = || {
+            SpanError::Parameter(format!(
+                "the span's set-up or its values do not fit 64-bit integers at {frac_bits} fractional bits"
+            ))
+        };
+        let g = |x: &BigRational| to_grid(x, frac_bits).ok_or_else(too_large);
+        let f = FixedSpan {
             n: span.n,
             frac_bits,
-            p_a: g(&span.p_a),
-            t0: g(&span.t0),
-            ds: g(&span.ds),
-            dp: g(&span.dp),
-        })
+            p_a: g(&span.p_a)?,
+            t0: g(&span.t0)?,
+            ds: g(&span.ds)?,
+            dp: g(&span.dp)?,
+        };
+        // Every value and slope the loops reach is at most |p_a| + n·|t0| + n²·|ds|
+        // (or |p_a| + n·|dp|): within i64, so no addition overflows (unit spans are far
+        // inside; other spans may not be).
+        let n = i128::from(f.n);
+        let reach = i128::from(f.p_a).abs()
+            + n * (i128::from(f.t0).abs() + i128::from(f.dp).abs())
+            + n * n * i128::from(f.ds).abs();
+        if reach >= i128::from(i64::MAX) {
+            return Err(too_large());
+        }
+        Ok(f)
     }
 
     /// Corrected Euler, `p += t; t += ds` (eqs. 16–17), in exact integer additions:

@@ -68,6 +68,7 @@ pub mod errata {}
 pub mod float {}
 
 pub mod angular;
+pub mod budget;
 pub mod conformance;
 pub mod corrected_euler;
 pub mod duff;

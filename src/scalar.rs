@@ -80,11 +80,14 @@ pub trait Scalar:
     /// shortest string that reads back to the same value, whatever `digits` is).
     fn to_decimal(&self, digits: usize) -> String;
 
-    /// `self`, or for [`BigRational`] the nearest multiple of 2^-320 (ties up): long
-    /// recurrences whose values come from approximate square roots and cosines
-    /// (spherical interpolation's Chebyshev recurrence) call it each step so that
-    /// exact rationals keep a bounded size; 2^-320 per step is far below those
-    /// functions' own error of 2^-256. The identity for every other type.
+    /// `self`, or for [`BigRational`] the nearest multiple of 2^-(b + 64) (ties up),
+    /// `b` the accuracy of this thread's square roots and cosines
+    /// ([`crate::reference::transcendental::bits`]: 256 unless an exact run raised
+    /// it): long recurrences whose values come from those approximations (spherical
+    /// interpolation's Chebyshev recurrence) call it each step so that exact rationals
+    /// keep a bounded size; 2^-(b + 64) per step is far below those functions' own
+    /// error of 2^-b, at every precision a run asks for. The identity for every other
+    /// type.
     fn tidy(self) -> Self {
         self
     }
@@ -282,7 +285,8 @@ impl Scalar for BigRational {
     }
 
     fn tidy(self) -> Self {
-        let scale: num_bigint::BigInt = num_bigint::BigInt::from(1) << 320usize;
+        let bits = crate::reference::transcendental::bits() as usize + 64;
+        let scale: num_bigint::BigInt = num_bigint::BigInt::from(1) << bits;
         let scaled = self * BigRational::from_integer(scale.clone());
         let half = BigRational::new(1.into(), 2.into());
         BigRational::new((scaled + half).floor().to_integer(), scale)

@@ -108,13 +108,13 @@ impl std::error::Error for ReportError {}
 impl Request {
     /// Checks the request against the budgets: an exact or MPFR run of more than
     /// [`SPAN_BUDGET`] steps or table entries, an exact run whose estimated work
-    /// exceeds `check`'s ([`crate::conformance::integrity::exact_work`]), or more
+    /// exceeds `check`'s ([`crate::budget::exact_work`]), or more
     /// than [`OUTPUT_BUDGET`] bytes of output.
     ///
     /// # Errors
     /// A [`ReportError`] naming the argument to change (or `--yes` to run anyway).
     pub fn within_budget(&self) -> Result<(), ReportError> {
-        use crate::conformance::integrity::{exact_work, input_bits, MAX_RECOMPUTED_WORK};
+        use crate::budget::{exact_work, input_bits, MAX_RECOMPUTED_WORK};
         let (n, method, digits) = (self.n, self.method, self.digits);
         let exact = self.arithmetic.is_exact();
         if exact && n > SPAN_BUDGET {
@@ -458,24 +458,61 @@ struct Short {
 
 impl Short {
     fn error(&self, bits: i64) -> ReportError {
-        let what = if self.known == 0 {
-            format!("no digit of pixel {} is known", self.pixel)
+        let message = if self.known == 0 {
+            format!(
+                "no digit of pixel {} is known: computed to 2^-{bits}, the value lies within that of 0 or of a change of its leading digit",
+                self.pixel
+            )
         } else {
             format!(
-                "only {} significant digits of pixel {} are known",
+                "only {} significant digits of pixel {} are known (these values are computed to 2^-{bits}); ask for at most that many",
                 self.known, self.pixel
             )
         };
-        ReportError::new(
-            "--digits",
-            format!("{what} (these values are computed to 2^-{bits}); ask for at most that many"),
-        )
+        ReportError::new("--digits", message)
+    }
+}
+
+/// Where a value of exactly 0 is the method's exact value, not a rounded one: a tabled
+/// cosine's last entry, and a pixel whose exact value is Phong's `p/√q` ([`crate::method::PhongPixels::exact_at`])
+/// with `p = 0` on the exact span. With `normalize` the span's inputs are themselves
+/// rounded, and only the end pixels keep an exact zero (`N_a·L = 0` or `N_b·L = 0` on
+/// the inputs as given: normalizing scales a dot product, it cannot make it zero).
+fn exact_zeros(r: &Request) -> impl Fn(usize) -> bool + '_ {
+    use num_traits::Zero;
+    let phong = r.method.info().phong_pixels;
+    let span = (!r.normalize)
+        .then(|| Span::new(r.na.clone(), r.nb.clone(), r.l.clone(), r.n).ok())
+        .flatten();
+    move |i: usize| {
+        let Ok(i) = u32::try_from(i) else {
+            return false;
+        };
+        // A tabled cosine of 0 is the table's last entry, cos 90° = 0, held exactly
+        // (`angular::CosTable::new`).
+        if phong == crate::method::PhongPixels::Table {
+            return true;
+        }
+        match &span {
+            Some(s) => phong.exact_at(s, i).is_some_and(|(p, _)| p.is_zero()),
+            None => {
+                let end = (i == 0).then_some(&r.na).or((i == r.n).then_some(&r.nb));
+                end.is_some_and(|n| phong.at(r.n, i) && n.dot(&r.l).is_zero())
+            }
+        }
     }
 }
 
 /// Checks that every value's digits are known: a value's digits are printed only if
-/// its lower and upper ends (±2^-bits) print the same.
-fn check_digits<T: Real>(r: &Request, values: &[T], bits: i64) -> Result<(), Short> {
+/// its lower and upper ends (±2^-bits) print the same. A value of 0 is printed as `0`
+/// only where it is exactly zero (`exact_zero(pixel)`); elsewhere a computed 0 is a
+/// value within 2^-bits of zero like any other, whose first digit is not known.
+fn check_digits<T: Real>(
+    r: &Request,
+    values: &[T],
+    bits: i64,
+    exact_zero: impl Fn(usize) -> bool,
+) -> Result<(), Short> {
     use num_traits::One;
     if bits < 4 {
         return Err(Short { pixel: 0, known: 0 });
@@ -485,15 +522,18 @@ fn check_digits<T: Real>(r: &Request, values: &[T], bits: i64) -> Result<(), Sho
         num_bigint::BigInt::one() << (bits as usize),
     );
     for (i, v) in values.iter().enumerate() {
-        // A value of exactly 0 comes from an exact p = 0 (0/√q), and prints as "0".
-        let Some(v) = v.to_rational().filter(|v| !num_traits::Zero::is_zero(v)) else {
+        let Some(v) = v.to_rational() else {
             continue;
         };
+        if num_traits::Zero::is_zero(&v) && exact_zero(i) {
+            continue;
+        }
         let (lo, hi) = (v.clone() - e.clone(), v.clone() + e.clone());
         if lo.to_decimal(r.digits) != hi.to_decimal(r.digits) {
             // About log10(|v|/e) digits are known: search down from just above that
             // (not from the digits asked for, which may be thousands).
-            let guess = ((v.to_f64().abs().log2() + bits as f64) * std::f64::consts::LOG10_2)
+            let guess = ((v.to_f64().abs().max(f64::MIN_POSITIVE).log2() + bits as f64)
+                * std::f64::consts::LOG10_2)
                 .max(0.0) as usize
                 + 2;
             let known = (1..r.digits.min(guess + 1))
@@ -619,18 +659,41 @@ fn normalized_levels(r: &Request, values: &[BigRational], bits: i64) -> Vec<Opti
     )
 }
 
-fn run_exact(r: &Request) -> Result<Outcome, ReportError> {
+/// An exact run with every printed digit known: the values, the adaptive decision,
+/// the levels (`None` where undecided), the bits the values are known to (`None`:
+/// exact).
+pub struct ExactRun {
+    /// The exact run's values (within 2^-`bits` of the method's exact values).
+    pub values: Vec<BigRational>,
+    /// Each value to the request's digits, every digit known (a value is `0` only
+    /// where it is exactly zero).
+    pub decimals: Vec<String>,
+    /// The 8-bit levels, `None` where the run does not decide them.
+    pub levels: Vec<Option<u8>>,
+    /// The bits the values are known to (`None`: exact).
+    pub bits: Option<i64>,
+    decision: Option<Decision<BigRational>>,
+}
+
+/// Runs `r` in exact arithmetic (its `arithmetic` is not read) with square roots,
+/// `acos` and `cos` to more bits (from 2^-256 up to 2^-`MAX_BITS`) until every
+/// value's `r.digits` significant digits are known; the one path `span --scalar
+/// exact`, the published vectors and `check`'s recomputation of a modified file take.
+///
+/// # Errors
+/// A [`ReportError`]: inputs the span refuses, or digits not known at 2^-`MAX_BITS`.
+pub fn exact_run(r: &Request) -> Result<ExactRun, ReportError> {
     use crate::reference::transcendental::{with_bits, BITS, MAX_BITS};
     digits_within_reach(r)?;
     let mut b = BITS;
     loop {
         let attempt = with_bits(
             b,
-            || -> Result<Result<Outcome, (Short, i64)>, ReportError> {
+            || -> Result<Result<ExactRun, (Short, i64)>, ReportError> {
                 let (span, values, decision) = compute::<BigRational>(r)?;
                 let known = exact_bits(r, &span);
                 if let Some(bits) = known {
-                    if let Err(short) = check_digits(r, &values, bits) {
+                    if let Err(short) = check_digits(r, &values, bits, exact_zeros(r)) {
                         return Ok(Err((short, bits)));
                     }
                 }
@@ -638,20 +701,19 @@ fn run_exact(r: &Request) -> Result<Outcome, ReportError> {
                 // only; with normalize, in Q(√a, √b, √c) where the approximate value
                 // does not decide it.
                 let one = BigRational::from_integer(1.into());
-                let levels = Some(if r.normalize {
+                let levels = if r.normalize {
                     normalized_levels(r, &values, known.unwrap_or(0))
                 } else {
                     r.method.exact_levels(&span, &values, &one)
-                });
-                let fractions = r
-                    .method
-                    .is_rational()
-                    .then(|| values.iter().map(ToString::to_string).collect());
-                let mut o = outcome(r, values, decision, levels);
-                o.fractions = fractions;
-                // Formatted within the precision the values were computed at.
-                o.values = Values::eager(o.values.iter().collect());
-                Ok(Ok(o))
+                };
+                let decimals = values.iter().map(|v| v.to_decimal(r.digits)).collect();
+                Ok(Ok(ExactRun {
+                    values,
+                    decimals,
+                    levels,
+                    bits: known,
+                    decision,
+                }))
             },
         )?;
         match attempt {
@@ -664,6 +726,18 @@ fn run_exact(r: &Request) -> Result<Outcome, ReportError> {
             }
         }
     }
+}
+
+fn run_exact(r: &Request) -> Result<Outcome, ReportError> {
+    let run = exact_run(r)?;
+    let fractions = r
+        .method
+        .is_rational()
+        .then(|| run.values.iter().map(ToString::to_string).collect());
+    let mut o = outcome(r, run.values, run.decision, Some(run.levels));
+    o.fractions = fractions;
+    o.values = Values::eager(run.decimals);
+    Ok(o)
 }
 
 /// The digits asked of a method whose exact values are not rational: at most what
@@ -695,7 +769,7 @@ fn run_mpfr(r: &Request, precision: u32) -> Result<Outcome, ReportError> {
             Span::new(r.na.clone(), r.nb.clone(), r.l.clone(), r.n).ok()
         };
         let bits = mpfr_bits(r, exact.as_ref(), precision, q_bits(&span));
-        check_digits(r, &values, bits).map_err(|s| s.error(bits))?;
+        check_digits(r, &values, bits, exact_zeros(r)).map_err(|s| s.error(bits))?;
         // A level is printed only where it is known: decided exactly where the value
         // is (Phong's p/√q, p_a), else only where its error cannot cross a boundary.
         let rationals: Vec<BigRational> = values.iter().filter_map(|v| v.to_rational()).collect();

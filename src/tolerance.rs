@@ -168,8 +168,13 @@ pub fn reference_bound(
         Bound::Ratio { p, q } => ratio_bound(linear(p, nf), linear(q, nf), q_min, 2.0, u),
         // Phong per pixel (§9): the normal off by `normal·u` moves `N·L/|N|` by at
         // most `normal·u/|N|`; evaluating it costs `eval·u` more.
+        // The derivation's domain (docs/float.md §9): the normal's error `normal·u`
+        // at most 4 % of `|N| ≥ √q_min`, where the unit vector moves by at most
+        // `x/√(1 − x²) ≤ 1.001·x` for a relative error `x` (the 0.1 % in `normal`'s
+        // constant); beyond it no bound of this form holds.
         Bound::PerPixel { normal, eval } => {
-            (q_min > 0.0 && q_min.is_finite()).then(|| (normal / q_min.sqrt() + eval) * u)
+            (q_min > 0.0 && q_min.is_finite() && normal * u <= 0.04 * q_min.sqrt())
+                .then(|| (normal / q_min.sqrt() + eval) * u)
         }
         // The adaptive scheme (§10).
         Bound::Larger(a, b) => {

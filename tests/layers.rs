@@ -40,15 +40,18 @@ const LAYERS: &[(&str, u32)] = &[
     ("fast.rs", 7),
     ("fast_rows.rs", 7),
     ("fixed_span.rs", 7),
+    // The budgets of exact work.
+    ("budget.rs", 7),
     // The float bounds.
     ("tolerance.rs", 8),
     ("tolerance/", 8),
-    // The conformance kit and the torus harness.
+    // The span report (what `span` prints, and the exact run with every digit known
+    // that the vectors use), the conformance kit and the torus harness.
+    ("span_report.rs", 9),
     ("conformance/", 9),
     ("raster/", 9),
-    // The test kit and the span report (what `span` prints).
+    // The test kit.
     ("testkit.rs", 10),
-    ("span_report.rs", 10),
 ];
 
 fn src() -> PathBuf {

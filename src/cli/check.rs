@@ -2,7 +2,7 @@
 
 use super::{out, read_capped, CliError};
 use clap::Args;
-use phong_approx::conformance::check::{check, parse_results, Tolerance, MAX_RESULTS_BYTES};
+use phong_approx::conformance::check::{check_in, parse_results, Tolerance, MAX_RESULTS_BYTES};
 use phong_approx::conformance::vectors::method_key;
 use phong_approx::conformance::verdict::{self, load_vectors, Culprit};
 use phong_approx::conformance::{report, shown};
@@ -23,8 +23,8 @@ pub struct CheckArgs {
     #[arg(long, value_name = "NAME", default_value = "corrected-euler",
           help = super::methods_help(), value_parser = |s: &str| s.parse::<Method>())]
     pub method: Method,
-    /// levels=N, abs=X or ulps=N; default: the crate's float bound for the method at
-    /// --precision.
+    /// levels=N, abs=X or ulps=N (ulps of the --precision format); default: the
+    /// profile's bound for the method at --precision.
     #[arg(long, value_name = "SPEC", value_parser = Tolerance::parse)]
     pub tolerance: Option<Tolerance>,
     /// The implementation's arithmetic, for the default tolerance: f32 or f64.
@@ -131,8 +131,16 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
             message: e.to_string(),
             code: 2,
         })?;
-    let reports = check(&vectors, &results, method, &key, tol, a.specular)
-        .map_err(|e| CliError::arg("--method", e))?;
+    let reports = check_in(
+        &vectors,
+        &results,
+        method,
+        &key,
+        tol,
+        a.specular,
+        a.precision.u(),
+    )
+    .map_err(|e| CliError::arg("--method", e))?;
     if let Some(r) = &a.report {
         let suite = format!(
             "{} {key} {} ({})",

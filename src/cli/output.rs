@@ -12,7 +12,11 @@
 //! A name that exists is replaced only if this tool wrote it before (the folder's
 //! manifest, [`MANIFEST`], lists what it wrote) or with `--force`; a name that is a
 //! symbolic link is never written through, and neither is an output folder that is a
-//! symbolic link. Nothing of the user's is deleted.
+//! symbolic link. Nothing of the user's is deleted. A run holds an advisory lock on
+//! the folder ([`LOCK`]) from [`OutDir::open`] to the end of its commit: a second run
+//! into the same folder meanwhile exits 2 at once, naming the first, so the manifest
+//! is only ever read and written by one run at a time. Names that start with a dot
+//! are written like any other.
 
 use super::{read_capped, CliError};
 use phong_approx::conformance::shown;
@@ -30,6 +34,11 @@ pub const MANIFEST: &str = ".phong-approx-written";
 /// each), written before the first rename and removed after the last.
 pub const JOURNAL: &str = ".phong-approx-commit";
 
+/// The file in an output folder that a run holds an exclusive advisory lock on
+/// (`flock`) from [`OutDir::open`] to the end of its commit, so that two runs never
+/// write into one folder at once; it holds the process id of the run that has it.
+pub const LOCK: &str = ".phong-approx-lock";
+
 static COUNTER: AtomicU64 = AtomicU64::new(0);
 
 /// An output folder, with the files written so far waiting for [`OutDir::commit`].
@@ -40,6 +49,8 @@ pub struct OutDir {
     manifest: BTreeSet<String>,
     /// (temporary file, final name), in order of writing.
     pending: RefCell<Vec<(PathBuf, String)>>,
+    /// The folder's lock, held while this lives ([`LOCK`]).
+    _lock: fs::File,
 }
 
 impl OutDir {
@@ -59,7 +70,7 @@ impl OutDir {
         fs::create_dir_all(dir)
             .map_err(|e| CliError::arg(arg, format!("cannot create {name}: {e}")))?;
         // Our own bookkeeping files must be regular files (or absent) before any work.
-        for own in [MANIFEST, JOURNAL] {
+        for own in [MANIFEST, JOURNAL, LOCK] {
             if let Ok(m) = fs::symlink_metadata(dir.join(own)) {
                 if !m.is_file() {
                     return Err(CliError::arg(
@@ -72,6 +83,7 @@ impl OutDir {
                 }
             }
         }
+        let lock = lock_folder(dir, arg)?;
         let mut manifest = read_manifest(dir, arg)?;
         finish_interrupted_commit(dir, arg, &mut manifest)?;
         remove_stale_partials(dir);
@@ -82,6 +94,7 @@ impl OutDir {
             arg,
             manifest,
             pending: RefCell::new(Vec::new()),
+            _lock: lock,
         };
         let probe = out.temp_file("probe")?;
         let _ = fs::remove_file(probe);
@@ -118,6 +131,15 @@ impl OutDir {
     /// # Errors
     /// A [`CliError`] naming the file and what to do.
     pub fn check(&self, name: &str) -> Result<(), CliError> {
+        if !is_plain_output_name(name) {
+            return Err(CliError::arg(
+                self.arg,
+                format!(
+                    "'{}' is not a name an output can have here (a file name, not one of the folder's bookkeeping files {MANIFEST}, {JOURNAL}, {LOCK})",
+                    shown(name)
+                ),
+            ));
+        }
         let target = self.dir.join(name);
         match fs::symlink_metadata(&target) {
             Err(_) => Ok(()),
@@ -220,6 +242,52 @@ impl OutDir {
     }
 }
 
+/// Takes the folder's lock ([`LOCK`]): the lock file is opened without following a
+/// symbolic link and locked exclusively without waiting; when another run holds it,
+/// a one-line refusal naming that run (its process id, as it wrote it).
+fn lock_folder(dir: &Path, arg: &'static str) -> Result<fs::File, CliError> {
+    use std::io::{Read, Seek, Write};
+    use std::os::unix::fs::OpenOptionsExt;
+    use std::os::unix::io::AsRawFd;
+    let path = dir.join(LOCK);
+    let mut f = OpenOptions::new()
+        .read(true)
+        .write(true)
+        .create(true)
+        .truncate(false)
+        .custom_flags(libc::O_NOFOLLOW)
+        .open(&path)
+        .map_err(|e| {
+            CliError::arg(
+                arg,
+                format!("cannot open {}: {e}", shown(&path.display().to_string())),
+            )
+        })?;
+    // SAFETY: flock on a descriptor this function owns; LOCK_NB never blocks.
+    let r = unsafe { libc::flock(f.as_raw_fd(), libc::LOCK_EX | libc::LOCK_NB) };
+    if r != 0 {
+        let mut holder = String::new();
+        let _ = Read::by_ref(&mut f).take(32).read_to_string(&mut holder);
+        let holder = holder.trim();
+        let who = if holder.chars().all(|c| c.is_ascii_digit()) && !holder.is_empty() {
+            format!("another phong-approx run (process {holder})")
+        } else {
+            "another phong-approx run".to_string()
+        };
+        return Err(CliError::arg(
+            arg,
+            format!(
+                "{} is being written by {who}: wait for it to finish, or choose another folder",
+                shown(&dir.display().to_string())
+            ),
+        ));
+    }
+    let _ = f.set_len(0);
+    let _ = f.rewind();
+    let _ = write!(f, "{}", std::process::id());
+    Ok(f)
+}
+
 /// The names the folder's manifest lists (empty when there is none).
 fn read_manifest(dir: &Path, arg: &'static str) -> Result<BTreeSet<String>, CliError> {
     let path = dir.join(MANIFEST);
@@ -241,8 +309,10 @@ fn finish_commit(
     renames: Vec<(String, String)>,
 ) -> Result<(), CliError> {
     for (tmp, name) in renames {
-        // Only our own temporary files, to plain names in this folder.
-        if !tmp.starts_with(".partial-") || name.contains('/') || name.starts_with('.') {
+        // Only our own temporary files, to plain names in this folder (a name that
+        // starts with a dot is a name like any other, but never one of our own
+        // bookkeeping files).
+        if !tmp.starts_with(".partial-") || !is_plain_output_name(&name) {
             continue;
         }
         let from = dir.join(&tmp);
@@ -278,6 +348,21 @@ fn finish_commit(
         )),
         _ => Ok(()),
     }
+}
+
+/// Whether `name` may be an output's name: one path component (no `/`, not `.`,
+/// `..` or empty) and none of the folder's bookkeeping files ([`MANIFEST`],
+/// [`JOURNAL`], [`LOCK`], temporary `.partial-…` files).
+fn is_plain_output_name(name: &str) -> bool {
+    !(name.is_empty()
+        || name == "."
+        || name == ".."
+        || name.contains('/')
+        || name.contains('\0')
+        || name == MANIFEST
+        || name == JOURNAL
+        || name == LOCK
+        || name.starts_with(".partial-"))
 }
 
 /// Completes the renames of a commit that was killed while it ran (its journal is

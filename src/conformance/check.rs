@@ -45,7 +45,8 @@ pub enum Tolerance {
     Levels(u32),
     /// At most this far from the expected value.
     Abs(f64),
-    /// At most this many `f32` ulps (of the expected value) from it.
+    /// At most this many ulps (of the expected value, in the implementation's format:
+    /// `f32` unless [`check_in`] is told the format's unit roundoff) from it.
     Ulps(f64),
     /// The crate's documented float bound for the method, case and precision
     /// (`src/tolerance.rs`): `f32` (u = 2^-24) or `f64` (u = 2^-53). The `reference`
@@ -108,6 +109,71 @@ impl Tolerance {
             )),
         }
     }
+}
+
+impl Tolerance {
+    /// The unit roundoff of the format the tolerance names (`None` for levels,
+    /// absolute and ulps tolerances, which name none).
+    pub fn unit_roundoff(&self) -> Option<f64> {
+        match *self {
+            Tolerance::Default { u } | Tolerance::Profile { u, .. } => Some(u),
+            _ => None,
+        }
+    }
+
+    /// Checks that the tolerance means something: finite, non-negative numbers, a
+    /// unit roundoff in `(0, 2^-8]`, a fixed-point format the bounds take
+    /// ([`crate::tolerance::profile::Profile::validate`]).
+    ///
+    /// # Errors
+    /// A one-line message saying what is wrong.
+    pub fn validate(&self) -> Result<(), String> {
+        let ok = |x: f64| x.is_finite() && x >= 0.0;
+        match *self {
+            Tolerance::Levels(n) if n > 255 => Err(format!("levels must be at most 255 (got {n})")),
+            Tolerance::Abs(x) | Tolerance::Ulps(x) if !ok(x) => {
+                Err(format!("a tolerance must be a finite number ≥ 0 (got {x})"))
+            }
+            Tolerance::Default { u } | Tolerance::Profile { u, .. }
+                if !(u > 0.0 && u <= 1.0 / 256.0) =>
+            {
+                Err(format!("the unit roundoff must be in (0, 2^-8] (got {u})"))
+            }
+            Tolerance::Profile { profile, .. } => profile.validate(),
+            _ => Ok(()),
+        }
+    }
+}
+
+/// The name of the float format whose unit roundoff is `u` (`f32`, `f64`, `binary16`),
+/// or `format` for another.
+pub fn format_name(u: f64) -> &'static str {
+    if u == f64::from(f32::EPSILON) / 2.0 {
+        "f32"
+    } else if u == f64::EPSILON / 2.0 {
+        "f64"
+    } else if u == 2f64.powi(-11) {
+        "binary16"
+    } else {
+        "format"
+    }
+}
+
+/// The spacing at `x` of the binary floats of unit roundoff `u` (their ulp): `f32`'s
+/// and `f64`'s exactly (subnormals included), otherwise `2u·2^⌊log2 |x|⌋`.
+pub fn ulp_in(x: f64, u: f64) -> f64 {
+    if u == f64::from(f32::EPSILON) / 2.0 {
+        return f32_ulp(x);
+    }
+    if u == f64::EPSILON / 2.0 {
+        let a = x.abs().max(f64::MIN_POSITIVE);
+        if !a.is_finite() {
+            return f64::INFINITY;
+        }
+        return f64::from_bits(a.to_bits() + 1) - a;
+    }
+    let a = x.abs().max(f64::MIN_POSITIVE);
+    2.0 * u * 2f64.powi(a.log2().floor() as i32)
 }
 
 /// The results read from a file: per case id, the value at each pixel.
@@ -677,8 +743,11 @@ pub struct CaseReport {
     pub mean_levels: f64,
     /// Largest |value − expected|.
     pub max_abs: f64,
-    /// Largest |value − expected| in `f32` ulps of the expected value.
+    /// Largest |value − expected| in ulps of the expected value, in the format
+    /// [`CaseReport::format`] names.
     pub max_ulps: f64,
+    /// The format whose ulps `max_ulps` counts (`f32`, `f64`, …).
+    pub format: &'static str,
     /// The pixel where the tolerance is exceeded most (relative to it), if any.
     pub worst_pixel: usize,
     /// The tolerance applied (as an absolute value, or levels).
@@ -690,10 +759,12 @@ pub struct CaseReport {
     pub not_finite: Option<usize>,
 }
 
-/// Compares `results` with the vector file's expectations for `method`.
+/// Compares `results` with the vector file's expectations for `method`, counting ulps
+/// in the format the tolerance names (`f32` when it names none: see [`check_in`]).
 ///
 /// # Errors
-/// A message when the method is not in the file.
+/// A message when the method is not in the file, or the tolerance is not valid
+/// ([`Tolerance::validate`]).
 pub fn check(
     vectors: &VectorFile,
     results: &Results,
@@ -702,6 +773,28 @@ pub fn check(
     tol: Tolerance,
     specular: bool,
 ) -> Result<Vec<CaseReport>, String> {
+    let u = tol.unit_roundoff().unwrap_or(f64::from(f32::EPSILON) / 2.0);
+    check_in(vectors, results, method, method_key, tol, specular, u)
+}
+
+/// [`check`] for an implementation in the float format of unit roundoff `u`: ulps (of
+/// [`Tolerance::Ulps`] and of the report) are that format's.
+///
+/// # Errors
+/// As [`check`]; also a `u` outside `(0, 2^-8]`.
+pub fn check_in(
+    vectors: &VectorFile,
+    results: &Results,
+    method: Method,
+    method_key: &str,
+    tol: Tolerance,
+    specular: bool,
+    u: f64,
+) -> Result<Vec<CaseReport>, String> {
+    tol.validate()?;
+    if !(u > 0.0 && u <= 1.0 / 256.0) {
+        return Err(format!("the unit roundoff must be in (0, 2^-8] (got {u})"));
+    }
     let mut reports = Vec::new();
     for c in &vectors.cases {
         let exp: &Expected = if specular {
@@ -712,7 +805,7 @@ pub fn check(
         }
         .ok_or_else(|| format!("the vector file has no method '{method_key}'"))?;
         let got = &results[&c.id];
-        reports.push(case_report(c, exp, got, method, tol, specular));
+        reports.push(case_report(c, exp, got, method, tol, specular, u));
     }
     Ok(reports)
 }
@@ -731,6 +824,7 @@ fn case_report(
     method: Method,
     tol: Tolerance,
     specular: bool,
+    format_u: f64,
 ) -> CaseReport {
     use crate::tolerance::profile::{profile_bound, Profile};
     let tol = match tol {
@@ -816,7 +910,7 @@ fn case_report(
         // fails whatever the tolerance (levels clamp, so they alone would pass 1e300).
         let implausible = g.abs() > 16.0 * e.abs().max(1.0);
         let dl = u32::from(level(&g).abs_diff(el));
-        let du = d / f32_ulp(e);
+        let du = d / ulp_in(e, format_u);
         max_levels = max_levels.max(dl);
         sum_levels += u64::from(dl);
         max_abs = max_abs.max(d);
@@ -863,6 +957,7 @@ fn case_report(
         mean_levels: sum_levels as f64 / got.len().max(1) as f64,
         max_abs,
         max_ulps,
+        format: format_name(format_u),
         worst_pixel: worst,
         allowed,
         pass,

@@ -12,7 +12,6 @@ use crate::parse::parse_rational;
 use crate::quantize::level;
 use crate::scalar::Scalar;
 use crate::span::Span;
-use crate::vector::Vec3;
 use crate::BigRational;
 use sha2::{Digest, Sha256};
 
@@ -31,46 +30,7 @@ pub fn published() -> impl Iterator<Item = (&'static str, &'static str)> {
 
 pub use super::vectors::MAX_CASE_STEPS;
 
-/// The most exact work `check` does to recompute a modified file's expectations,
-/// and `span --scalar exact` does without `--yes` ([`exact_work`] units of about 8 µs
-/// on one core of the reference machine): about half a minute.
-pub const MAX_RECOMPUTED_WORK: u64 = 1 << 22;
-
-/// The size of exact inputs: the most bits of a numerator plus its denominator among
-/// the components.
-pub fn input_bits(vectors: &[&Vec3<BigRational>]) -> u64 {
-    vectors
-        .iter()
-        .flat_map(|v| v.components())
-        .map(|c| c.numer().bits() + c.denom().bits())
-        .max()
-        .unwrap_or(0)
-}
-
-/// The exact work of running `method` on a span of `n` steps whose inputs have
-/// `input_bits` ([`input_bits`]) with values to `digits` significant digits, in units
-/// of about 8 µs (corrected Euler's cost per pixel in exact arithmetic). Measured in
-/// release on 2 cores at `n = 4096` (`docs/performance.md`, "Exact runs"): per pixel,
-/// the rational methods cost one unit, Phong, Duff, symmetric Phong and angular about
-/// 15, spherical and Bishop–Weimer about 19, binary about 270 (a square root per
-/// segment point); the cost grows about linearly with the size of the inputs (×10 for
-/// 80-digit fractions) and, for the methods with square roots, `acos` or `cos`, with
-/// the square of the bits the digits need beyond 2^-256.
-pub fn exact_work(method: crate::Method, n: u32, input_bits: u64, digits: usize) -> u64 {
-    let per_pixel = method.info().exact_cost;
-    let size = 1 + input_bits / 64;
-    let precision = if method.is_rational() {
-        1
-    } else {
-        let b = (digits as f64 / std::f64::consts::LOG10_2) as u64 + 64;
-        let r = b.max(256).div_ceil(256);
-        r * r
-    };
-    (u64::from(n) + 1)
-        .saturating_mul(per_pixel)
-        .saturating_mul(size)
-        .saturating_mul(precision)
-}
+pub use crate::budget::{exact_work, input_bits, MAX_RECOMPUTED_WORK};
 
 /// The most cases a vector file may hold.
 pub const MAX_CASES: usize = 100_000;
@@ -253,7 +213,7 @@ pub fn validate(file: &VectorFile) -> Result<(), String> {
                 .ok_or_else(|| format!("case {}: h is not three exact numbers", c.id))?;
             Span::new(span.na.clone(), span.nb.clone(), h, c.n)
                 .map_err(|e| format!("case {}: specular: {e}", c.id))?;
-            if sp.s == 0 || sp.s > 10_000 {
+            if sp.s == 0 || sp.s > super::vectors::MAX_SHININESS {
                 return Err(format!("case {}: shininess {} out of range", c.id, sp.s));
             }
             for m in &file.methods {

@@ -213,17 +213,75 @@ fn decided(levels: Vec<Option<u8>>, method: Method, what: &str) -> Result<Vec<u8
         .collect()
 }
 
-/// The exact expectations of `method` on `span` (values to [`DIGITS`] digits; levels
-/// decided exactly, [`Method::exact_levels`]).
+/// The exact run of `method` on `span` with every one of the [`DIGITS`] digits known
+/// (square roots, `acos` and `cos` taken to more bits until they are:
+/// [`crate::span_report::exact_run`], the path `span --scalar exact` takes).
+fn exact_run(
+    method: Method,
+    span: &Span<BigRational>,
+) -> Result<crate::span_report::ExactRun, String> {
+    use crate::span_report::{exact_run, Arithmetic, Request};
+    exact_run(&Request {
+        method,
+        na: span.na.clone(),
+        nb: span.nb.clone(),
+        l: span.l.clone(),
+        n: span.n,
+        kd: BigRational::from_integer(1.into()),
+        normalize: false,
+        digits: DIGITS,
+        arithmetic: Arithmetic::Exact,
+    })
+    .map_err(|e| format!("{method}: {}", e.message))
+}
+
+/// The exact expectations of `method` on `span` (values to [`DIGITS`] digits, every
+/// one known; levels decided exactly, [`Method::exact_levels`]).
 fn expected(method: Method, span: &Span<BigRational>) -> Result<Expected, String> {
-    let values = method.values(span).map_err(|e| format!("{method}: {e}"))?;
-    let one = BigRational::from_integer(1.into());
-    let levels = decided(method.exact_levels(span, &values, &one), method, "diffuse")?;
+    let run = exact_run(method, span)?;
+    let levels = decided(run.levels, method, "diffuse")?;
     Ok(Expected {
-        values: values.iter().map(|v| v.to_decimal(DIGITS)).collect(),
+        values: run.decimals,
         levels,
     })
 }
+
+/// The specular expectations `max(0, v)^s` of `method` on `span_h` (`N·H`): the base
+/// values with every digit known, and each power's [`DIGITS`] digits checked against
+/// the powers of the base's bounds `v ± 2^-bits` (refused where they differ).
+fn specular_expected(
+    method: Method,
+    span_h: &Span<BigRational>,
+    s: u32,
+) -> Result<Expected, String> {
+    let run = exact_run(method, span_h)?;
+    let base = run.values;
+    let v: Vec<BigRational> = base.iter().map(|x| power(x, s)).collect();
+    if let Some(bits) = run.bits {
+        let e = BigRational::new(1.into(), BigInt::from(1) << bits.max(0) as usize);
+        for (i, x) in base.iter().enumerate() {
+            let (lo, hi) = (power(&(x - &e), s), power(&(x + &e), s));
+            if lo.to_decimal(DIGITS) != hi.to_decimal(DIGITS) {
+                return Err(format!(
+                    "{method}: the specular value of pixel {i} is not known to {DIGITS} digits"
+                ));
+            }
+        }
+    }
+    let levels = decided(
+        method.exact_power_levels(span_h, &base, s),
+        method,
+        "specular",
+    )?;
+    Ok(Expected {
+        values: v.iter().map(|x| x.to_decimal(DIGITS)).collect(),
+        levels,
+    })
+}
+
+/// The largest shininess `s` a vector file may give (`check` refuses a file with a
+/// larger one before any work: the exact power `v^s` grows with `s`).
+pub const MAX_SHININESS: u32 = 10_000;
 
 /// One case of a set before its expectations are computed: its id, comment and exact
 /// unit inputs. [`specs`] lists a set's cases; [`CaseSpec::compute`] computes one, so a
@@ -316,16 +374,7 @@ fn compute_case_for(
             .map_err(|e| format!("specular: {e}"))?;
         let expected = methods
             .iter()
-            .map(|&m| {
-                let base = m.values(&span_h).map_err(|e| format!("{m}: {e}"))?;
-                let v: Vec<BigRational> = base.iter().map(|x| power(x, s)).collect();
-                let levels = decided(m.exact_power_levels(&span_h, &base, s), m, "specular")?;
-                let e = Expected {
-                    values: v.iter().map(|x| x.to_decimal(DIGITS)).collect(),
-                    levels,
-                };
-                Ok((method_key(m), e))
-            })
+            .map(|&m| Ok((method_key(m), specular_expected(m, &span_h, s)?)))
             .collect::<Result<_, String>>()?;
         Ok(SpecularCase {
             h: input(&h),
@@ -439,14 +488,27 @@ fn same_floats(theirs: &VectorInput, ours: &VectorInput) -> Result<(), String> {
 
 impl InputsFile {
     /// The file with the expectations of `method` computed from each case's inputs by
-    /// the exact reference (the specular ones for cases that have a half vector);
+    /// the exact reference (with `specular`, also the specular ones for cases that
+    /// have a half vector; without, the half vectors are dropped unread);
     /// `q_min`, `δ` and the adaptive decision are the span's. The result passes
     /// [`super::integrity::validate`] whenever the inputs are valid.
     ///
     /// # Errors
-    /// A case whose inputs are not exact unit vectors, whose `n` is out of range, or
-    /// whose level the exact run cannot decide (named).
-    pub fn recompute(&self, method: Method) -> Result<VectorFile, String> {
+    /// A case whose inputs are not exact unit vectors, whose `n` is out of range, whose
+    /// shininess is outside `1..=`[`MAX_SHININESS`] (checked for every case before any
+    /// work), or whose level or digits the exact run cannot decide (named).
+    pub fn recompute(&self, method: Method, specular: bool) -> Result<VectorFile, String> {
+        if let Some(c) = self.cases.iter().find(|c| {
+            c.specular
+                .as_ref()
+                .is_some_and(|sp| sp.s == 0 || sp.s > MAX_SHININESS)
+        }) {
+            return Err(format!(
+                "case {}: shininess {} is outside 1..={MAX_SHININESS}",
+                super::shown(&c.id),
+                c.specular.as_ref().map_or(0, |sp| sp.s)
+            ));
+        }
         let v = |c: &CaseInputs, x: &VectorInput, what: &str| {
             exact_input(x).ok_or_else(|| {
                 format!(
@@ -466,8 +528,8 @@ impl InputsFile {
                 ));
             }
             let h = match &c.specular {
-                Some(sp) => Some((v(c, &sp.h, "h")?, sp.s)),
-                None => None,
+                Some(sp) if specular => Some((v(c, &sp.h, "h")?, sp.s)),
+                _ => None,
             };
             let case = compute_case_for(
                 &[method],

@@ -91,7 +91,10 @@ fn sqrt_fx(a: &BigInt) -> BigInt {
 }
 
 /// `√x` for `x ≥ 0` (negative `x` gives 0): exact when `x` is the square of a
-/// rational, otherwise with absolute error below 2^-BITS·max(1, √x).
+/// rational, otherwise with absolute error below 2^-BITS·max(1, √x) and, however small
+/// `x` is, relative error below 2^-(BITS + 8): a positive `x` never gives 0 (a caller
+/// that divides by the root never divides by zero), however far its root lies below
+/// 2^-BITS.
 pub fn sqrt(x: &BigRational) -> BigRational {
     if !x.is_positive() {
         return BigRational::zero();
@@ -101,13 +104,21 @@ pub fn sqrt(x: &BigRational) -> BigRational {
     if &(&rn * &rn) == x.numer() && &(&rd * &rd) == x.denom() {
         return BigRational::new(rn, rd);
     }
-    // √(a/b) = √(a·b) / b, with a·b scaled by 2^(2W).
-    let w = W();
+    // x ≥ 2^-(d + 1) with d the bits of the denominator beyond the numerator's, so
+    // √x ≥ 2^-(d/2 + 1): `tiny` more fractional bits keep as many significant bits of
+    // a tiny root as of a root near 1.
+    let d = i64::try_from(x.denom().bits()).unwrap_or(i64::MAX)
+        - i64::try_from(x.numer().bits()).unwrap_or(0);
+    let tiny = u32::try_from(d.max(0) / 2 + 1).unwrap_or(u32::MAX / 4);
+    let keep = bits() + 8 + tiny;
+    let w = keep + 56;
+    // √(a/b) = √(a·b) / b: s = ⌊√(a·b)·2^w⌋, v = ⌊s / b⌋ = ⌊√x·2^w⌋.
     let ab: BigInt = (x.numer() * x.denom()) << (2 * w);
-    let s = ab.sqrt();
-    // s / (b · 2^W), rounded to bits() + 8 bits.
-    let v = (s << w).div_floor(&(x.denom() << w));
-    from_fx(&v)
+    let v = ab.sqrt().div_floor(x.denom());
+    // Rounded to `keep` fractional bits (the last guard bits are noise).
+    let shift = w - keep;
+    let r: BigInt = (v + (BigInt::one() << (shift - 1))) >> shift;
+    BigRational::new(r, BigInt::one() << keep)
 }
 
 /// atan(y) for |y| ≤ 1 in fixed point.
@@ -198,12 +209,21 @@ pub fn acos(x: &BigRational) -> BigRational {
     from_fx(&v)
 }
 
-/// cos(x) for |x| ≤ 2^20, absolute error below 2^-BITS.
+/// cos(x) for any rational `x` (radians), absolute error below 2^-[`bits`].
 ///
-/// # Panics
-/// Never for the arguments the crate passes (angles in [−2π, 2π]); larger
-/// arguments are reduced by halving and lose about one bit per halving.
+/// An `|x|` beyond 4 is first reduced modulo 2π with π to as many more bits as `|x|`
+/// has bits before the point (the reduction `x − 2πk` then loses nothing: its error is
+/// below 2^-(bits + 64)); the rest is halved below ½ and the series summed, each
+/// halving undone by `cos 2a = 2cos²a − 1`, which at most quadruples the error (at
+/// most three halvings after the reduction; the 64 guard bits cover them).
 pub fn cos(x: &BigRational) -> BigRational {
+    let int_bits = i64::try_from(x.numer().bits()).unwrap_or(i64::MAX)
+        - i64::try_from(x.denom().bits()).unwrap_or(0)
+        + 1;
+    if int_bits > 2 {
+        let extra = u32::try_from(int_bits).unwrap_or(u32::MAX / 4) + 8;
+        return cos(&reduce_2pi(x, extra));
+    }
     let mut xf = to_fx(x).abs();
     // Reduce |x| below 1/2 by halving; undo with cos 2a = 2cos²a − 1.
     let mut halvings = 0u32;
@@ -229,6 +249,30 @@ pub fn cos(x: &BigRational) -> BigRational {
         sum = mul_fx(&sum, &sum) * 2 - one_fx();
     }
     from_fx(&sum)
+}
+
+/// `x − 2πk` with `k` the integer nearest `x/2π` (so `|result| ≤ π`), computed with π
+/// to `extra` more bits than this thread's [`bits`]: exact but for π's error times
+/// `|k|`, below 2^-(bits + 64) when `|x| < 2^(extra − 8)`.
+fn reduce_2pi(x: &BigRational, extra: u32) -> BigRational {
+    let b = bits().saturating_add(extra);
+    // π at b bits (not clamped to MAX_BITS: the reduction needs bits in proportion to
+    // the size of x, which the caller already holds in memory).
+    let (two_pi, w) = {
+        struct Restore(u32);
+        impl Drop for Restore {
+            fn drop(&mut self) {
+                PRECISION.with(|p| p.set(self.0));
+            }
+        }
+        let _restore = Restore(bits());
+        PRECISION.with(|p| p.set(b));
+        (pi_fx() << 1, W())
+    };
+    let scale = BigInt::one() << w;
+    let two_pi = BigRational::new(two_pi, scale);
+    let k = (x / &two_pi).round();
+    x - k * two_pi
 }
 
 #[cfg(test)]

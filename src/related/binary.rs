@@ -76,7 +76,15 @@ pub fn shade<T: Real>(span: &Span<T>, out: &mut [T]) -> Result<(), SpanError> {
             // cos of half the current angle, and the level's factor 1/(2 cos(θ/2)).
             let h = half.clone() * (T::one() + c.clone());
             c = if h > T::zero() { h.sqrt() } else { T::zero() };
-            let factor = half.clone() / c.clone();
+            // c = 0 only where rounding (or an approximate square root) took the
+            // angle to 180°, which the span is not (it is not opposite): no factor is
+            // right there, and 0 keeps the values finite; an exact run's accounting
+            // (`Method::exact_bits`, which loses log2(1/sin²Ω) bits) refuses them.
+            let factor = if c > T::zero() {
+                half.clone() / c.clone()
+            } else {
+                T::zero()
+            };
             let half_step = step / 2;
             let mut m = a + half_step;
             while m < b {

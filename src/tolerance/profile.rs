@@ -74,6 +74,26 @@ impl Profile {
     }
 }
 
+impl Profile {
+    /// Checks that the profile is one the bounds take: a fixed-point format of 1 to 64
+    /// integer bits and 1 to 62 fractional bits (what `fixed:M.F` parses); the float
+    /// profiles always are.
+    ///
+    /// # Errors
+    /// A one-line message naming the widths.
+    pub fn validate(&self) -> Result<(), String> {
+        match *self {
+            Profile::Fixed {
+                int_bits,
+                frac_bits,
+            } if !((1..=64).contains(&int_bits) && (1..=62).contains(&frac_bits)) => Err(format!(
+                "fixed point needs 1 ≤ M ≤ 64 integer bits and 1 ≤ F ≤ 62 fractional bits (got M = {int_bits}, F = {frac_bits})"
+            )),
+            _ => Ok(()),
+        }
+    }
+}
+
 impl fmt::Display for Profile {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         f.write_str(&self.name())
@@ -122,7 +142,7 @@ impl FromStr for Profile {
 /// magnitudes below `2^(m−1)` (`docs/float.md` §14).
 pub fn fixed_bound(method: crate::Method, n: u32, int_bits: u32, frac_bits: u32) -> Option<f64> {
     use crate::Method;
-    if n == 0 {
+    if n == 0 || !(1..=64).contains(&int_bits) || !(1..=62).contains(&frac_bits) {
         return None;
     }
     let h = 2f64.powi(-(frac_bits as i32) - 1);

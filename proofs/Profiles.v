@@ -1,8 +1,8 @@
-(** * Profiles.v — acceptance profiles: error bounds for the Gouraud and
-    corrected-Euler (eqs. 16-17) computations that hold for EVERY
-    implementation of a class (model of FloatModelK.v), against the exact
-    real values [gouraud s i] (Adaptive.v) and [ceuler s i] (Euler.v) on the
-    exact inputs.
+(** * Profiles.v — acceptance profiles: error bounds for the Gouraud,
+    corrected-Euler (eqs. 16-17) and Euler (eqs. 12-14) computations that
+    hold for EVERY implementation of a class (model of FloatModelK.v), against
+    the exact real values [gouraud s i] (Adaptive.v), [ceuler s i] and
+    [euler_span s i] (Euler.v) on the exact inputs.
 
     The computation is Float.v's (src/span.rs set-up, src/gouraud.rs and
     src/corrected_euler.rs loops), but every operation is only known to be
@@ -23,6 +23,8 @@
       dp       w' ap_add pb - pa, dp ap_div w' / n;
       corrected Euler: P_0 = pa, S_0 = t0, P_{j+1} ap_add P_j + S_j,
                        S_{j+1} ap_add S_j + ds;
+      Euler (src/euler.rs): the same loop from S_0 = dia, on the set-up
+                       up to ds (pn, eps, deps, t0 not computed);
       Gouraud: G_0 = pa, G_{j+1} ap_add G_j + dp.
     A product that feeds an addition may be exact (fused multiply-add): an
     exact result satisfies every bound.  n, 2n, n(n-1)/2 are exact reals
@@ -58,12 +60,26 @@
           g = t0 + h, m = i g, p = pa + m, fused or not) on an ieee set-up:
           |p_i - ceuler s i|   <= 59.61 u   (independent of n)
       profile_ieee_corrected_euler_closed_binary64_large  1 <= n <= 2^24: the same
+      profile_ieee_euler_binary32 / _binary64     1 <= n <= 4096:
+          plain Euler (eqs. 12-14) on the set-up up to ds (eu_setup_ok, the
+          part of ce_setup_ok before p_n), P_0 = pa, S_0 = dia (euler_run):
+          |P_i - euler_span s i| <= (5.55 n + 121.41) u
+      profile_ieee_euler_binary64_large           1 <= n <= 2^24: the same
+      profile_shader_euler_binary32               1 <= n <= 4096:
+          |P_i - euler_span s i| <= (11.1 n + 257.9) 2^-24
+      profile_ieee_euler_closed_binary32 / _binary64   1 <= n <= 4096:
+          p_i = p_a + i (dia + (i-1)/2 ds) evaluated in the model (h = (i-1)/2 ds,
+          g = dia + h, m = i g, p = pa + m, fused or not) on an ieee set-up:
+          |p_i - euler_span s i| <= 131.41 u   (independent of n)
+      profile_ieee_euler_closed_binary64_large    1 <= n <= 2^24: the same
     They are instances of [profile_gouraud_generic]
     ((1.0006 k_add n + 2.0001 k_in + 1.0001 k_mul + 4.0001 k_add + 2.0001 k_div
     + 10^-6) u) and [profile_corrected_euler_generic]
     ((2.2 k_add n + 36.6 K1 + 7.3 k_div) u, K1 >= k_in, k_add, k_mul), under
     [model_ok] and n k_add u <= 2^-11, and of
-    [profile_corrected_euler_closed_generic] ((45 K1 + 7.3 k_div) u). *)
+    [profile_corrected_euler_closed_generic] ((45 K1 + 7.3 k_div) u), and for
+    Euler of [profile_euler_generic] ((5.55 k_add n + 91.2 K1 + 15.1 k_div) u)
+    and [profile_euler_closed_generic] ((101.2 K1 + 15.1 k_div) u). *)
 
 From Coq Require Import Reals Lra Lia.
 From Flocq Require Import Core Relative.
@@ -123,6 +139,36 @@ Definition gouraud_run (M : fmodel) (F : fsetup) (m : nat) (G : nat -> R) : Prop
 
 Definition ceuler_run (M : fmodel) (F : fsetup) (m : nat) (P Q : nat -> R) : Prop :=
   P O = fs_pa F /\ Q O = fs_t0 F /\
+  forall j, (j < m)%nat -> ap_add M (P (S j)) (P j + Q j) /\ ap_add M (Q (S j)) (Q j + fs_ds F).
+
+(** Plain Euler (eqs. 12-14): its set-up is the part of [ce_setup_ok] up to
+    ds ([ce_setup_eu]): inputs, k, a, p_a, c, d, p_b, dq_b, di_a, di_b, ds;
+    the loop starts from s_0 = di_a. *)
+Definition eu_setup_ok (M : fmodel) (s : span) (F : fsetup) : Prop :=
+  inputs_ok M s F /\
+  kcomp_ok M (INR (n s)) (vx (fs_k F)) (vx (fs_na F)) (vx (fs_nb F)) /\
+  kcomp_ok M (INR (n s)) (vy (fs_k F)) (vy (fs_na F)) (vy (fs_nb F)) /\
+  kcomp_ok M (INR (n s)) (vz (fs_k F)) (vz (fs_na F)) (vz (fs_nb F)) /\
+  fdot_ok M (fs_k F) (fs_l F) (fs_a F) /\
+  fdot_ok M (fs_na F) (fs_l F) (fs_pa F) /\
+  fdot_ok M (fs_k F) (fs_k F) (fs_c F) /\
+  (exists e, fdot_ok M (fs_k F) (fs_na F) e /\ ap_mul M (fs_d F) (2 * e)) /\
+  fdot_ok M (fs_nb F) (fs_l F) (fs_pb F) /\
+  (exists q, ap_mul M q (2 * INR (n s) * fs_c F) /\ ap_add M (fs_dqb F) (q + fs_d F)) /\
+  (exists h x, ap_div M h (fs_pa F / 2) /\ ap_mul M x (h * fs_d F)
+               /\ ap_add M (fs_dia F) (fs_a F - x)) /\
+  (exists h x, ap_div M h (fs_pb F / 2) /\ ap_mul M x (h * fs_dqb F)
+               /\ ap_add M (fs_dib F) (fs_a F - x)) /\
+  (exists w, ap_add M w (fs_dib F - fs_dia F) /\ ap_div M (fs_ds F) (w / INR (n s))).
+
+Lemma ce_setup_eu : forall M s F, ce_setup_ok M s F -> eu_setup_ok M s F.
+Proof.
+  intros M s F (H1 & H2 & H3 & H4 & H5 & H6 & H7 & H8 & H9 & H10 & H11 & H12 & H13 & _).
+  repeat (split; [assumption|]). assumption.
+Qed.
+
+Definition euler_run (M : fmodel) (F : fsetup) (m : nat) (P Q : nat -> R) : Prop :=
+  P O = fs_pa F /\ Q O = fs_dia F /\
   forall j, (j < m)%nat -> ap_add M (P (S j)) (P j + Q j) /\ ap_add M (Q (S j)) (Q j + fs_ds F).
 
 (** ** The profiles *)
@@ -1206,6 +1252,255 @@ Proof.
   eapply Rle_trans; [apply tri4|]. lra.
 Qed.
 
+
+(** *** Plain Euler (eqs. 12-14) on the same set-up
+
+    Euler's set-up is the part of corrected Euler's up to ds (p_a, di_a, ds);
+    the lemmas below use only [K_pa], [K_dia] and [K_ds], so after the
+    section they take only those operations (not p_n, eps, d_eps, t_0).
+    The exact run is [euler_span s i] = p_a + i di_a + i(i-1)/2 ds. *)
+
+Lemma K_kap : forall i, (i <= n s)%nat ->
+  0 <= INR i * (INR i - 1) / (2 * (nr * nr)) <= 1 / 2.
+Proof.
+  intros i Hi. basics.
+  assert (Hi' : INR i <= nr) by (apply le_INR; exact Hi).
+  assert (H0 : 0 <= INR i * (INR i - 1)).
+  { destruct i as [|i'].
+    - cbn [INR]. lra.
+    - assert (1 <= INR (S i')) by (apply (le_INR 1); lia). nra. }
+  split.
+  - unfold Rdiv. apply Rmult_le_pos; [lra | apply Rlt_le, Rinv_0_lt_compat; nra].
+  - apply (Rmult_le_reg_r (2 * (nr * nr))); [nra|]. unfold Rdiv.
+    rewrite Rmult_assoc, Rinv_l by nra.
+    pose proof (pos_INR i).
+    assert (INR i * INR i <= nr * nr) by (apply Rmult_le_compat; lra). nra.
+Qed.
+
+(** The exact Euler value, scaled: p_a + (i/n) (n di_a) + i(i-1)/(2n^2) (n^2 ds). *)
+Lemma K_eu_exact : forall i, (i <= n s)%nat ->
+  euler_span s i = pa s + INR i / nr * e_ndia s
+                   + INR i * (INR i - 1) / (2 * (nr * nr)) * e_n2ds s.
+Proof.
+  intros i Hi. basics. unfold euler_span.
+  rewrite eq_14_euler_closed_form, (dia_scaled s Hn1), (ds_scaled s Hn1).
+  field. lra.
+Qed.
+
+(** |p_i| <= 1 + 2 + 1.54/2 on the exact run. *)
+Lemma K_eu_le : forall i, (i <= n s)%nat -> Rabs (euler_span s i) <= 377 / 100.
+Proof.
+  intros i Hi. basics.
+  assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
+  pose proof (theta_rng nr (INR i) ltac:(lra) Hi') as Th. pose proof (K_kap i Hi) as Ka.
+  pose proof (pa_le s Hua Hul). pose proof (ndia_le s Hua Hub Hul).
+  pose proof (n2ds_le' s Hua Hub Hul).
+  rewrite (K_eu_exact i Hi).
+  set (th := INR i / nr) in *. set (ka := INR i * (INR i - 1) / (2 * (nr * nr))) in *.
+  eapply Rle_trans; [apply tri3|]. rewrite !Rabs_mult, (Rabs_pos_eq th), (Rabs_pos_eq ka) by lra.
+  assert (th * Rabs (e_ndia s) <= 1 * 2) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
+  assert (ka * Rabs (e_n2ds s) <= 1 / 2 * (154 / 100))
+    by (apply Rmult_le_compat; try lra; apply Rabs_pos).
+  lra.
+Qed.
+
+(** The computed values on their exact recurrence: p_a, di_a, ds carried exactly. *)
+Lemma K_eu_ideal : forall i, (i <= n s)%nat ->
+  Rabs (fpa + INR i * fdia + INR i * (INR i - 1) / 2 * fds - euler_span s i)
+  <= 9111 / 100 * v + 1507 / 100 * d.
+Proof.
+  intros i Hi. basics.
+  assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
+  pose proof (theta_rng nr (INR i) ltac:(lra) Hi') as Th. pose proof (K_kap i Hi) as Ka.
+  pose proof K_pa as G0. pose proof K_dia as G1. pose proof K_ds as G2.
+  rewrite (K_eu_exact i Hi).
+  replace (fpa + INR i * fdia + INR i * (INR i - 1) / 2 * fds
+           - (pa s + INR i / nr * e_ndia s + INR i * (INR i - 1) / (2 * (nr * nr)) * e_n2ds s))
+    with ((fpa - pa s) + INR i / nr * (nr * fdia - e_ndia s)
+          + INR i * (INR i - 1) / (2 * (nr * nr)) * (nr * nr * fds - e_n2ds s))
+    by (field; lra).
+  set (th := INR i / nr) in *. set (ka := INR i * (INR i - 1) / (2 * (nr * nr))) in *.
+  eapply Rle_trans; [apply tri3|]. rewrite !Rabs_mult, (Rabs_pos_eq th), (Rabs_pos_eq ka) by lra.
+  assert (th * Rabs (nr * fdia - e_ndia s) <= 1 * (4005 / 100 * v + 603 / 100 * d))
+    by (apply Rmult_le_compat; try lra; apply Rabs_pos).
+  assert (ka * Rabs (nr * nr * fds - e_n2ds s) <= 1 / 2 * (9211 / 100 * v + 1806 / 100 * d))
+    by (apply Rmult_le_compat; try lra; apply Rabs_pos).
+  lra.
+Qed.
+
+(** Computed slopes (ideal, on the computed di_a and ds): |n (di_a + J ds)| <= 2 + 1.54. *)
+Lemma K_eu_slope : forall J, (J <= n s)%nat ->
+  Rabs (nr * (fdia + INR J * fds)) <= 354 / 100 + 200 * (v + d).
+Proof.
+  intros J HJ. basics.
+  assert (HJ' : 0 <= INR J <= nr) by (split; [apply pos_INR | apply le_INR; exact HJ]).
+  pose proof (theta_rng nr (INR J) ltac:(lra) HJ') as Th.
+  pose proof K_dia as G1. pose proof K_ds as G2.
+  pose proof (ndia_le s Hua Hub Hul). pose proof (n2ds_le' s Hua Hub Hul).
+  replace (nr * (fdia + INR J * fds))
+    with ((nr * fdia - e_ndia s) + INR J / nr * (nr * nr * fds - e_n2ds s)
+          + (e_ndia s + INR J / nr * e_n2ds s)) by (field; lra).
+  set (th := INR J / nr) in *.
+  eapply Rle_trans; [apply tri3|].
+  assert (Rabs (th * (nr * nr * fds - e_n2ds s)) <= 1 * (9211 / 100 * v + 1806 / 100 * d)).
+  { rewrite Rabs_mult, (Rabs_pos_eq th) by lra.
+    apply Rmult_le_compat; try lra; apply Rabs_pos. }
+  assert (Rabs (e_ndia s + th * e_n2ds s) <= 2 + 1 * (154 / 100)).
+  { eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_mult, (Rabs_pos_eq th) by lra.
+    assert (th * Rabs (e_n2ds s) <= 1 * (154 / 100))
+      by (apply Rmult_le_compat; try lra; apply Rabs_pos). lra. }
+  lra.
+Qed.
+
+(** The loop p += s, s += ds from (p_a, di_a), with its own addition unit
+    ua <= v and n ua <= 2^-11: the loop contributes 5.55 n ua
+    (n^2/2 max|s_k| + n max|p_j|, with n |s_k| <= 3.545 and |p_j| <= 3.775). *)
+Lemma K_eu_final : forall (ua : R) (P Q : nat -> R), 0 <= ua <= v -> nr * ua <= / 2048 ->
+  P O = fpa -> Q O = fdia ->
+  (forall j, (j < n s)%nat -> ap1 ua eta (P (S j)) (P j + Q j) /\ ap1 ua eta (Q (S j)) (Q j + fds)) ->
+  forall i, (i <= n s)%nat ->
+  Rabs (P i - euler_span s i) <= 555 / 100 * (nr * ua) + 912 / 10 * v + 151 / 10 * d.
+Proof.
+  intros ua P Q Hua0 Hnua HP0 HQ0 Hstep i Hi. basics.
+  pose proof (e_pos v eta Hv) as He0. pose proof (e_small v eta Hv) as He1.
+  set (Ms := 3545 / 1000 / nr). set (Mp := 3775 / 1000).
+  assert (HMs : 0 <= Ms) by (unfold Ms, Rdiv; apply Rmult_le_pos; [lra | apply Rlt_le, Rinv_0_lt_compat; lra]).
+  assert (Hnn : nr * nr <= 281474976710656) by nra.
+  assert (Hne : nr * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra).
+  assert (Hnne : nr * nr * eta <= 281474976710656 * eta) by (apply Rmult_le_compat_r; lra).
+  assert (Ems2 : nr * nr / 2 * (ua * Ms + eta) = 35450 / 20000 * (nr * ua) + nr * nr * eta / 2)
+    by (unfold Ms; field; lra).
+  assert (Hnu0 : 0 <= nr * ua) by (apply Rmult_le_pos; lra).
+  destruct (cseq_err ua eta P Q fds (n s) Ms Mp ltac:(lra) He0 HMs ltac:(unfold Mp; lra) Hstep)
+    with (i := i) as [_ HPi]; [| | exact Hi |].
+  - intros j Hj. rewrite HQ0. pose proof (K_eu_slope (S j) ltac:(lia)) as G0.
+    assert (G1 : Rabs (fdia + INR (S j) * fds) <= (354 / 100 + 200 * (v + d)) / nr).
+    { replace (fdia + INR (S j) * fds)
+        with (nr * (fdia + INR (S j) * fds) / nr) by (field; lra).
+      unfold Rdiv. rewrite Rabs_mult, (Rabs_pos_eq (/ nr))
+        by (apply Rlt_le, Rinv_0_lt_compat; lra).
+      apply Rmult_le_compat_r; [apply Rlt_le, Rinv_0_lt_compat; lra | exact G0]. }
+    assert (G2 : (354 / 100 + 200 * (v + d)) / nr + nr * (ua * Ms + eta) <= Ms).
+    { unfold Ms. apply div_helper; [lra|].
+      replace (nr * (ua * (3545 / 1000 / nr) + eta) * nr)
+        with (3545 / 1000 * (nr * ua) + nr * nr * eta) by (field; lra).
+      lra. }
+    lra.
+  - intros j Hj. rewrite HP0, HQ0.
+    pose proof (K_eu_ideal (S j) Hj) as G0. pose proof (K_eu_le (S j) Hj) as G1.
+    pose proof (abs_near _ _ _ G0) as G2.
+    rewrite Ems2. unfold Mp.
+    assert (nr * (ua * (3775 / 1000) + eta) = 3775 / 1000 * (nr * ua) + nr * eta) by ring.
+    lra.
+  - rewrite HP0, HQ0 in HPi. pose proof (K_eu_ideal i Hi) as G0.
+    assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
+    replace (P i - euler_span s i)
+      with ((P i - (fpa + INR i * fdia + INR i * (INR i - 1) / 2 * fds))
+            + (fpa + INR i * fdia + INR i * (INR i - 1) / 2 * fds - euler_span s i)) by ring.
+    eapply Rle_trans; [apply Rabs_triang|].
+    assert (Es0 : 0 <= ua * Ms + eta) by (pose proof (Rmult_le_pos ua Ms); lra).
+    assert (K1 : INR i * (INR i - 1) / 2 <= nr * (nr - 1) / 2) by nra.
+    assert (K2 : INR i * (INR i - 1) / 2 * (ua * Ms + eta) <= nr * (nr - 1) / 2 * (ua * Ms + eta))
+      by (apply Rmult_le_compat_r; lra).
+    assert (K3 : nr * (nr - 1) / 2 * (ua * Ms + eta)
+                 = 35450 / 20000 * (nr * ua) - 35450 / 20000 * ua + nr * nr * eta / 2 - nr * eta / 2)
+      by (unfold Ms; field; lra).
+    assert (K4 : INR i * (ua * Mp + eta) <= nr * (ua * Mp + eta))
+      by (apply Rmult_le_compat_r; [unfold Mp; nra | lra]).
+    assert (K6 : 0 <= nr * eta) by (apply Rmult_le_pos; lra).
+    assert (K7 : nr * (ua * Mp + eta) = 3775 / 1000 * (nr * ua) + nr * eta) by (unfold Mp; ring).
+    lra.
+Qed.
+
+
+(** Euler's closed form p_i = p_a + i (di_a + (i-1)/2 ds), evaluated as
+    h = (i-1)/2 * ds, g = di_a + h, m = i * g, p = p_a + m (each within its
+    bound, h and m possibly exact: fused multiply-adds). *)
+Lemma K_eu_closed : forall i, (i <= n s)%nat -> forall hh g m p : R,
+  ap1 v eta hh ((INR i - 1) / 2 * fds) -> ap1 v eta g (fdia + hh) ->
+  ap1 v eta m (INR i * g) -> ap1 v eta p (fpa + m) ->
+  Rabs (p - euler_span s i) <= 1012 / 10 * v + 151 / 10 * d.
+Proof.
+  intros i Hi hh g m p Hh Hg Hm Hp. basics.
+  pose proof (e_pos v eta Hv) as He0. pose proof (e_small v eta Hv) as He1.
+  assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
+  pose proof K_dia as A0. pose proof (ndia_le s Hua Hub Hul) as A1.
+  assert (S0 : Rabs (nr * fdia) <= 20001 / 10000) by (pose proof (abs_near _ _ _ A0); lra).
+  pose proof K_ds as D0. pose proof (n2ds_le' s Hua Hub Hul) as D1.
+  assert (D2 : Rabs (nr * nr * fds) <= 15401 / 10000) by (pose proof (abs_near _ _ _ D0); lra).
+  set (X := (INR i - 1) / 2 * fds) in *.
+  assert (EX : nr * X = (INR i - 1) / (2 * nr) * (nr * nr * fds)) by (unfold X; field; lra).
+  assert (Hci : Rabs ((INR i - 1) / (2 * nr)) <= 1 / 2).
+  { apply Rabs_le. split.
+    - apply (Rmult_le_reg_r (2 * nr)); [lra|]. unfold Rdiv.
+      rewrite Rmult_assoc, Rinv_l by lra. lra.
+    - apply (Rmult_le_reg_r (2 * nr)); [lra|]. unfold Rdiv.
+      rewrite Rmult_assoc, Rinv_l by lra. lra. }
+  assert (BX : Rabs (nr * X) <= 77005 / 100000).
+  { rewrite EX, Rabs_mult. replace (77005 / 100000) with (1 / 2 * (15401 / 10000)) by field.
+    apply Rmult_le_compat; try apply Rabs_pos; lra. }
+  set (Gx := fdia + X).
+  assert (BG : Rabs (nr * Gx) <= 27702 / 10000).
+  { unfold Gx. rewrite Rmult_plus_distr_l. eapply Rle_trans; [apply Rabs_triang|]. lra. }
+  assert (Hnr0 : 0 < nr) by lra.
+  assert (AB : forall z, Rabs (nr * z) = nr * Rabs z)
+    by (intros z; rewrite Rabs_mult, Rabs_pos_eq by lra; reflexivity).
+  rewrite AB in BX, BG.
+  unfold ap1 in Hh, Hg, Hm, Hp.
+  (* h *)
+  assert (E1 : nr * Rabs (hh - X) <= 77006 / 100000 * v + 16777216 * eta).
+  { assert (nr * Rabs (hh - X) <= nr * (v * Rabs X + eta)) by (apply Rmult_le_compat_l; lra).
+    assert (v * (nr * Rabs X) <= v * (77005 / 100000)) by (apply Rmult_le_compat_l; lra).
+    assert (nr * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra). nra. }
+  (* g *)
+  assert (E2 : nr * Rabs (g - Gx) <= 35404 / 10000 * v + 33554433 * eta).
+  { replace (g - Gx) with ((g - (fdia + hh)) + (hh - X)) by (unfold Gx; ring).
+    assert (Rabs (fdia + hh) <= Rabs Gx + Rabs (hh - X)).
+    { replace (fdia + hh) with (Gx + (hh - X)) by (unfold Gx; ring). apply Rabs_triang. }
+    assert (nr * Rabs (g - (fdia + hh)) <= nr * (v * (Rabs Gx + Rabs (hh - X)) + eta)).
+    { apply Rmult_le_compat_l; [lra|]. eapply Rle_trans; [exact Hg|].
+      apply Rplus_le_compat_r, Rmult_le_compat_l; lra. }
+    assert (v * (nr * Rabs Gx) <= v * (27702 / 10000)) by (apply Rmult_le_compat_l; lra).
+    assert (v * (nr * Rabs (hh - X)) <= / 2097152 * (nr * Rabs (hh - X)))
+      by (apply Rmult_le_compat_r; [apply Rmult_le_pos; [lra | apply Rabs_pos] | lra]).
+    assert (nr * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra).
+    assert (nr * Rabs (g - (fdia + hh) + (hh - X))
+            <= nr * Rabs (g - (fdia + hh)) + nr * Rabs (hh - X)).
+    { rewrite <- Rmult_plus_distr_l. apply Rmult_le_compat_l; [lra | apply Rabs_triang]. }
+    nra. }
+  (* scaling by i <= n *)
+  assert (Ii : forall z, 0 <= z -> INR i * z <= nr * z) by (intros z Hz; apply Rmult_le_compat_r; lra).
+  assert (IG : Rabs (INR i * Gx) <= 27702 / 10000).
+  { rewrite Rabs_mult, (Rabs_pos_eq (INR i)) by lra.
+    pose proof (Ii (Rabs Gx) (Rabs_pos _)). lra. }
+  assert (IE : Rabs (INR i * (g - Gx)) <= 35404 / 10000 * v + 33554433 * eta).
+  { rewrite Rabs_mult, (Rabs_pos_eq (INR i)) by lra.
+    pose proof (Ii (Rabs (g - Gx)) (Rabs_pos _)). lra. }
+  assert (Bg : Rabs (INR i * g) <= 27703 / 10000).
+  { replace (INR i * g) with (INR i * Gx + INR i * (g - Gx)) by ring.
+    eapply Rle_trans; [apply Rabs_triang|]. lra. }
+  (* m *)
+  assert (E3 : Rabs (m - INR i * g) <= 27703 / 10000 * v + eta).
+  { assert (v * Rabs (INR i * g) <= v * (27703 / 10000)) by (apply Rmult_le_compat_l; lra).
+    lra. }
+  (* the ideal value *)
+  pose proof (K_eu_ideal i Hi) as G0. pose proof (K_eu_le i Hi) as G1.
+  assert (Eid : fpa + INR i * fdia + INR i * (INR i - 1) / 2 * fds = fpa + INR i * Gx)
+    by (unfold Gx, X; field).
+  rewrite Eid in G0.
+  assert (Bpm : Rabs (fpa + m) <= 37702 / 10000).
+  { replace (fpa + m) with ((fpa + INR i * Gx - euler_span s i) + euler_span s i
+                            + (m - INR i * g) + INR i * (g - Gx)) by ring.
+    eapply Rle_trans; [apply tri4|]. lra. }
+  assert (E4 : Rabs (p - (fpa + m)) <= 37702 / 10000 * v + eta).
+  { assert (v * Rabs (fpa + m) <= v * (37702 / 10000)) by (apply Rmult_le_compat_l; lra).
+    lra. }
+  replace (p - euler_span s i)
+    with ((p - (fpa + m)) + (m - INR i * g) + INR i * (g - Gx) + (fpa + INR i * Gx - euler_span s i))
+    by ring.
+  eapply Rle_trans; [apply tri4|]. lra.
+Qed.
+
 End CE.
 
 (** ** Corrected Euler: the generic bound and the profiles *)
@@ -1329,6 +1624,257 @@ Proof.
       try assumption; try lra; try lia.
     rewrite u24. lra. }
   unfold shader32; cbn [m_u k_add k_div].
+  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
+Qed.
+
+(** ** Plain Euler: the generic bound and the profiles *)
+
+(** Any model with the size conditions, 1 <= n <= 2^24 and n k_add u <= 2^-11;
+    K1 as in [profile_corrected_euler_generic]: the loop contributes
+    5.55 k_add n u, the set-up 91.2 v + 15.1 d (no end-point correction:
+    the errors of di_a and ds reach pixel i multiplied by i and i(i-1)/2). *)
+Lemma profile_euler_generic : forall (M : fmodel) (K K1 : R), model_ok M K ->
+  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 -> 1 <= k_div M ->
+  forall (s : span) (F : fsetup) (P Q : nat -> R),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  (1 <= n s)%nat -> INR (n s) <= 16777216 -> INR (n s) * (k_add M * m_u M) <= / 2048 ->
+  eu_setup_ok M s F -> euler_run M F (n s) P Q ->
+  forall i, (i <= n s)%nat ->
+  Rabs (P i - euler_span s i) <=
+  (555 / 100 * k_add M * INR (n s) + 912 / 10 * K1 + 151 / 10 * k_div M) * m_u M.
+Proof.
+  intros M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1 s F P Q Ha Hb Hl Hn1 Hn2 Hnu HF [HP0 [HQ0 Hst]] i Hi.
+  pose proof HM as (Hu & He0 & He2 & Ki & Ka & Km & Kd & HK0 & HK2).
+  set (u := m_u M) in *.
+  assert (HKu : K1 * u <= K * u) by (apply Rmult_le_compat_r; lra).
+  assert (HDu : k_div M * u <= K * u) by (apply Rmult_le_compat_r; lra).
+  assert (Hv : small_ok (K1 * u) (m_eta M)).
+  { repeat split; try lra.
+    - apply Rmult_lt_0_compat; lra.
+    - assert (u <= K1 * u) by (rewrite <- (Rmult_1_l u) at 1; apply Rmult_le_compat_r; lra).
+      lra. }
+  assert (Hdv : small_ok (k_div M * u) (m_eta M)).
+  { repeat split; try lra.
+    - apply Rmult_lt_0_compat; lra.
+    - assert (u <= k_div M * u) by (rewrite <- (Rmult_1_l u) at 1; apply Rmult_le_compat_r; lra).
+      lra. }
+  set (v := K1 * u) in *.
+  assert (Wa : k_add M * u <= v) by (unfold v; apply Rmult_le_compat_r; lra).
+  assert (Wm : k_mul M * u <= v) by (unfold v; apply Rmult_le_compat_r; lra).
+  assert (Wa0 : 0 <= k_add M * u) by (apply Rmult_le_pos; lra).
+  assert (AK : forall k y x, k <= K1 -> approx k u (m_eta M) y x -> ap1 v (m_eta M) y x).
+  { intros k y x Hk H. eapply ap1_mono; [|exact H]. unfold v.
+    apply Rmult_le_compat_r; lra. }
+  assert (FK : forall a b y, fdot_ok M a b y -> fdot_rel v v (m_eta M) a b y)
+    by (intros a b y H; eapply fdot_mono; [exact Wm | exact Wa | exact H]).
+  assert (VK : forall vh w0, vap M vh w0 -> vap1 v (m_eta M) vh w0).
+  { intros vh w0 (A1 & A2 & A3). repeat split; (eapply AK; [| eassumption]); lra. }
+  destruct HF as ((Ina & Inb & Inl) & (tx & Htx & Hkx) & (ty & Hty & Hky) & (tz & Htz & Hkz)
+    & Ha' & Hpa & Hc & (e & He & Hd) & Hpb & (q & Hq & Hdqb) & (h1 & x1 & Hh1 & Hx1 & Hdia)
+    & (h2 & x2 & Hh2 & Hx2 & Hdib) & (w & Hw & Hds)).
+  pose proof (K_eu_final v (k_div M * u) (m_eta M) Hv Hdv s Ha Hb Hl Hn1 Hn2
+    _ _ _ _ _ _ _ _ _ _ _ _ _
+    (VK _ _ Ina) (VK _ _ Inb) (VK _ _ Inl) _ _ _
+    (AK _ _ _ Ha1 Htx) Hkx (AK _ _ _ Ha1 Hty) Hky (AK _ _ _ Ha1 Htz) Hkz
+    (FK _ _ _ Ha') (FK _ _ _ Hpa) (FK _ _ _ Hc) _ (FK _ _ _ He) (AK _ _ _ Hm1 Hd) (FK _ _ _ Hpb)
+    _ (AK _ _ _ Hm1 Hq) (AK _ _ _ Ha1 Hdqb)
+    _ _ Hh1 (AK _ _ _ Hm1 Hx1) (AK _ _ _ Ha1 Hdia)
+    _ _ Hh2 (AK _ _ _ Hm1 Hx2) (AK _ _ _ Ha1 Hdib)
+    _ (AK _ _ _ Ha1 Hw) Hds
+    (k_add M * u) P Q ltac:(lra) Hnu HP0 HQ0 Hst i Hi) as R.
+  eapply Rle_trans; [exact R|]. unfold v. lra.
+Qed.
+
+(* Note: ieee profile, binary32 (see profile_ieee_gouraud_binary32). *)
+(** Euler, ieee profile, binary32: |P_i - euler_span i| <= (5.55 n + 121.41) 2^-24. *)
+Theorem profile_ieee_euler_binary32 :
+  forall (s : span) (F : fsetup) (P Q : nat -> R),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) -> (1 <= n s <= 4096)%nat ->
+  eu_setup_ok ieee32 s F -> euler_run ieee32 F (n s) P Q ->
+  forall i, (i <= n s)%nat ->
+  Rabs (P i - euler_span s i) <= (555 / 100 * INR (n s) + 12141 / 100) * bpow radix2 (-24).
+Proof.
+  intros s F P Q Ha Hb Hl Hn HF HR i Hi.
+  pose proof (ce_profile_nr s Hn) as Hn'.
+  eapply Rle_trans.
+  { apply (profile_euler_generic ieee32 _ 1 ieee32_ok) with (F := F) (Q := Q);
+      unfold ieee32; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; try lia.
+    rewrite u24. lra. }
+  unfold ieee32; cbn [m_u k_add k_div].
+  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
+Qed.
+
+(* Note: ieee profile, binary64 (see profile_ieee_gouraud_binary64). *)
+(** Euler, ieee profile, binary64: |P_i - euler_span i| <= (5.55 n + 121.41) 2^-53. *)
+Theorem profile_ieee_euler_binary64 :
+  forall (s : span) (F : fsetup) (P Q : nat -> R),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) -> (1 <= n s <= 4096)%nat ->
+  eu_setup_ok ieee64 s F -> euler_run ieee64 F (n s) P Q ->
+  forall i, (i <= n s)%nat ->
+  Rabs (P i - euler_span s i) <= (555 / 100 * INR (n s) + 12141 / 100) * bpow radix2 (-53).
+Proof.
+  intros s F P Q Ha Hb Hl Hn HF HR i Hi.
+  pose proof (ce_profile_nr s Hn) as Hn'.
+  eapply Rle_trans.
+  { apply (profile_euler_generic ieee64 _ 1 ieee64_ok) with (F := F) (Q := Q);
+      unfold ieee64; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; try lia.
+    rewrite u53. lra. }
+  unfold ieee64; cbn [m_u k_add k_div].
+  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
+Qed.
+
+(* Note: ieee profile, binary64, spans up to 2^24 pixels. *)
+(** Euler, ieee profile, binary64, n <= 2^24: |P_i - euler_span i| <= (5.55 n + 121.41) 2^-53. *)
+Theorem profile_ieee_euler_binary64_large :
+  forall (s : span) (F : fsetup) (P Q : nat -> R),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  (1 <= n s)%nat -> (Z.of_nat (n s) <= 16777216)%Z ->
+  eu_setup_ok ieee64 s F -> euler_run ieee64 F (n s) P Q ->
+  forall i, (i <= n s)%nat ->
+  Rabs (P i - euler_span s i) <= (555 / 100 * INR (n s) + 12141 / 100) * bpow radix2 (-53).
+Proof.
+  intros s F P Q Ha Hb Hl Hn1 Hn HF HR i Hi.
+  assert (Hn' : INR (n s) <= 16777216) by (apply nat_R; exact Hn).
+  assert (H1 : 0 <= INR (n s)) by apply pos_INR.
+  eapply Rle_trans.
+  { apply (profile_euler_generic ieee64 _ 1 ieee64_ok) with (F := F) (Q := Q);
+      unfold ieee64; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; try lia.
+    rewrite u53. lra. }
+  unfold ieee64; cbn [m_u k_add k_div].
+  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
+Qed.
+
+(* Note: shader profile (see profile_shader_gouraud_binary32). *)
+(** Euler, shader profile: |P_i - euler_span i| <= (11.1 n + 257.9) 2^-24. *)
+Theorem profile_shader_euler_binary32 :
+  forall (s : span) (F : fsetup) (P Q : nat -> R),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) -> (1 <= n s <= 4096)%nat ->
+  eu_setup_ok shader32 s F -> euler_run shader32 F (n s) P Q ->
+  forall i, (i <= n s)%nat ->
+  Rabs (P i - euler_span s i) <= (111 / 10 * INR (n s) + 2579 / 10) * bpow radix2 (-24).
+Proof.
+  intros s F P Q Ha Hb Hl Hn HF HR i Hi.
+  pose proof (ce_profile_nr s Hn) as Hn'.
+  eapply Rle_trans.
+  { apply (profile_euler_generic shader32 _ 2 shader32_ok) with (F := F) (Q := Q);
+      unfold shader32; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; try lia.
+    rewrite u24. lra. }
+  unfold shader32; cbn [m_u k_add k_div].
+  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
+Qed.
+
+(** Euler's closed form p_i = p_a + i (di_a + (i-1)/2 ds) evaluated in the model
+    (h = (i-1)/2 ds, g = di_a + h, m = i g, p = p_a + m; fused or not), on a
+    set-up of the class. *)
+Lemma profile_euler_closed_generic : forall (M : fmodel) (K K1 : R), model_ok M K ->
+  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 -> 1 <= k_div M ->
+  forall (s : span) (F : fsetup),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  (1 <= n s)%nat -> INR (n s) <= 16777216 -> eu_setup_ok M s F ->
+  forall i, (i <= n s)%nat -> forall h g m p : R,
+  ap_mul M h ((INR i - 1) / 2 * fs_ds F) -> ap_add M g (fs_dia F + h) ->
+  ap_mul M m (INR i * g) -> ap_add M p (fs_pa F + m) ->
+  Rabs (p - euler_span s i) <= (1012 / 10 * K1 + 151 / 10 * k_div M) * m_u M.
+Proof.
+  intros M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1 s F Ha Hb Hl Hn1 Hn2 HF i Hi h g m p Hh Hg Hm Hp.
+  pose proof HM as (Hu & He0 & He2 & Ki & Ka & Km & Kd & HK0 & HK2).
+  set (u := m_u M) in *.
+  assert (HKu : K1 * u <= K * u) by (apply Rmult_le_compat_r; lra).
+  assert (HDu : k_div M * u <= K * u) by (apply Rmult_le_compat_r; lra).
+  assert (Hv : small_ok (K1 * u) (m_eta M)).
+  { repeat split; try lra.
+    - apply Rmult_lt_0_compat; lra.
+    - assert (u <= K1 * u) by (rewrite <- (Rmult_1_l u) at 1; apply Rmult_le_compat_r; lra).
+      lra. }
+  assert (Hdv : small_ok (k_div M * u) (m_eta M)).
+  { repeat split; try lra.
+    - apply Rmult_lt_0_compat; lra.
+    - assert (u <= k_div M * u) by (rewrite <- (Rmult_1_l u) at 1; apply Rmult_le_compat_r; lra).
+      lra. }
+  set (v := K1 * u) in *.
+  assert (Wa : k_add M * u <= v) by (unfold v; apply Rmult_le_compat_r; lra).
+  assert (Wm : k_mul M * u <= v) by (unfold v; apply Rmult_le_compat_r; lra).
+  assert (AK : forall k y x, k <= K1 -> approx k u (m_eta M) y x -> ap1 v (m_eta M) y x).
+  { intros k y x Hk H. eapply ap1_mono; [|exact H]. unfold v.
+    apply Rmult_le_compat_r; lra. }
+  assert (FK : forall a b y, fdot_ok M a b y -> fdot_rel v v (m_eta M) a b y)
+    by (intros a b y H; eapply fdot_mono; [exact Wm | exact Wa | exact H]).
+  assert (VK : forall vh w0, vap M vh w0 -> vap1 v (m_eta M) vh w0).
+  { intros vh w0 (A1 & A2 & A3). repeat split; (eapply AK; [| eassumption]); lra. }
+  destruct HF as ((Ina & Inb & Inl) & (tx & Htx & Hkx) & (ty & Hty & Hky) & (tz & Htz & Hkz)
+    & Ha' & Hpa & Hc & (e & He & Hd) & Hpb & (q & Hq & Hdqb) & (h1 & x1 & Hh1 & Hx1 & Hdia)
+    & (h2 & x2 & Hh2 & Hx2 & Hdib) & (w & Hw & Hds)).
+  pose proof (K_eu_closed v (k_div M * u) (m_eta M) Hv Hdv s Ha Hb Hl Hn1 Hn2
+    _ _ _ _ _ _ _ _ _ _ _ _ _
+    (VK _ _ Ina) (VK _ _ Inb) (VK _ _ Inl) _ _ _
+    (AK _ _ _ Ha1 Htx) Hkx (AK _ _ _ Ha1 Hty) Hky (AK _ _ _ Ha1 Htz) Hkz
+    (FK _ _ _ Ha') (FK _ _ _ Hpa) (FK _ _ _ Hc) _ (FK _ _ _ He) (AK _ _ _ Hm1 Hd) (FK _ _ _ Hpb)
+    _ (AK _ _ _ Hm1 Hq) (AK _ _ _ Ha1 Hdqb)
+    _ _ Hh1 (AK _ _ _ Hm1 Hx1) (AK _ _ _ Ha1 Hdia)
+    _ _ Hh2 (AK _ _ _ Hm1 Hx2) (AK _ _ _ Ha1 Hdib)
+    _ (AK _ _ _ Ha1 Hw) Hds
+    i Hi h g m p (AK _ _ _ Hm1 Hh) (AK _ _ _ Ha1 Hg) (AK _ _ _ Hm1 Hm) (AK _ _ _ Ha1 Hp)) as R.
+  eapply Rle_trans; [exact R|]. unfold v. lra.
+Qed.
+
+(* Note: ieee profile, binary32; the bound does not grow with n. *)
+(** Euler by its closed form, ieee profile, binary32:
+    |p_i - euler_span i| <= 131.41 2^-24. *)
+Theorem profile_ieee_euler_closed_binary32 : forall (s : span) (F : fsetup),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) -> (1 <= n s <= 4096)%nat ->
+  eu_setup_ok ieee32 s F ->
+  forall i, (i <= n s)%nat -> forall h g m p : R,
+  ap_mul ieee32 h ((INR i - 1) / 2 * fs_ds F) -> ap_add ieee32 g (fs_dia F + h) ->
+  ap_mul ieee32 m (INR i * g) -> ap_add ieee32 p (fs_pa F + m) ->
+  Rabs (p - euler_span s i) <= 13141 / 100 * bpow radix2 (-24).
+Proof.
+  intros s F Ha Hb Hl Hn HF i Hi h g m p Hh Hg Hm Hp.
+  pose proof (ce_profile_nr s Hn) as Hn'.
+  eapply Rle_trans.
+  { apply (profile_euler_closed_generic ieee32 _ 1 ieee32_ok) with (F := F) (h := h) (g := g) (m := m);
+      unfold ieee32; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; lia. }
+  unfold ieee32; cbn [m_u k_div].
+  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
+Qed.
+
+(* Note: ieee profile, binary64. *)
+(** Euler by its closed form, ieee profile, binary64:
+    |p_i - euler_span i| <= 131.41 2^-53. *)
+Theorem profile_ieee_euler_closed_binary64 : forall (s : span) (F : fsetup),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) -> (1 <= n s <= 4096)%nat ->
+  eu_setup_ok ieee64 s F ->
+  forall i, (i <= n s)%nat -> forall h g m p : R,
+  ap_mul ieee64 h ((INR i - 1) / 2 * fs_ds F) -> ap_add ieee64 g (fs_dia F + h) ->
+  ap_mul ieee64 m (INR i * g) -> ap_add ieee64 p (fs_pa F + m) ->
+  Rabs (p - euler_span s i) <= 13141 / 100 * bpow radix2 (-53).
+Proof.
+  intros s F Ha Hb Hl Hn HF i Hi h g m p Hh Hg Hm Hp.
+  pose proof (ce_profile_nr s Hn) as Hn'.
+  eapply Rle_trans.
+  { apply (profile_euler_closed_generic ieee64 _ 1 ieee64_ok) with (F := F) (h := h) (g := g) (m := m);
+      unfold ieee64; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; lia. }
+  unfold ieee64; cbn [m_u k_div].
+  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
+Qed.
+
+(* Note: ieee profile, binary64, spans up to 2^24 pixels. *)
+(** Euler by its closed form, ieee profile, binary64, n <= 2^24:
+    |p_i - euler_span i| <= 131.41 2^-53. *)
+Theorem profile_ieee_euler_closed_binary64_large : forall (s : span) (F : fsetup),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  (1 <= n s)%nat -> (Z.of_nat (n s) <= 16777216)%Z ->
+  eu_setup_ok ieee64 s F ->
+  forall i, (i <= n s)%nat -> forall h g m p : R,
+  ap_mul ieee64 h ((INR i - 1) / 2 * fs_ds F) -> ap_add ieee64 g (fs_dia F + h) ->
+  ap_mul ieee64 m (INR i * g) -> ap_add ieee64 p (fs_pa F + m) ->
+  Rabs (p - euler_span s i) <= 13141 / 100 * bpow radix2 (-53).
+Proof.
+  intros s F Ha Hb Hl Hn1 Hn HF i Hi h g m p Hh Hg Hm Hp.
+  assert (Hn' : INR (n s) <= 16777216) by (apply nat_R; exact Hn).
+  eapply Rle_trans.
+  { apply (profile_euler_closed_generic ieee64 _ 1 ieee64_ok) with (F := F) (h := h) (g := g) (m := m);
+      unfold ieee64; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; lia. }
+  unfold ieee64; cbn [m_u k_div].
   apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
 Qed.
 

@@ -3,6 +3,17 @@
 //!
 //! Proved: `proofs/Euler.v`, `eq_14_euler_closed_form`.
 //! Tested: `tests/claims.rs::eq_14_euler_closed_form`.
+//!
+//! Float error, for every implementation of the `ieee` profile (any order, fused
+//! multiply-adds, `/n` or `·(1/n)`; this code is one) against the exact run:
+//! `(5.55·n + 121.41)·u` for the recurrence (`profile_ieee_euler_binary32`,
+//! `profile_ieee_euler_binary64`, `profile_ieee_euler_binary64_large`) and `131.41·u`
+//! for the closed form `p_a + i·(di_a + (i−1)/2·ds)` (`profile_ieee_euler_closed_binary32`,
+//! `profile_ieee_euler_closed_binary64`, `profile_ieee_euler_closed_binary64_large`),
+//! `proofs/Profiles.v`. Under `shader`, `profile_shader_euler_binary32` proves
+//! `(11.1·n + 257.9)·2^-24` with each division one 2.5-ulp division; the bound `check`
+//! applies there is derived, as it also covers `·(1/n)`
+//! ([`crate::tolerance::profile::proved_in_part`]).
 
 use crate::error::SpanError;
 use crate::scalar::Scalar;

@@ -25,15 +25,20 @@ struct Cli {
 #[derive(Subcommand, Debug)]
 enum Command {
     /// Shade one scan line with one method and print its values and 8-bit levels.
+    #[command(allow_negative_numbers = true)]
     Span(Box<cli::span::SpanArgs>),
     /// Reproduce the paper's Tables 1–2 and Figures 1–5 on rotating tori.
+    #[command(allow_negative_numbers = true)]
     Reproduce(cli::reproduce::ReproduceArgs),
     /// Compare every method (paper and related work) on the same tori: diffuse,
     /// specular, precisions, pictures.
+    #[command(allow_negative_numbers = true)]
     Compare(cli::compare::CompareArgs),
     /// Write the conformance test vectors (JSON and CSV) from the exact references.
+    #[command(allow_negative_numbers = true)]
     Vectors(cli::vectors::VectorsArgs),
     /// Check an implementation's results against a vector file (exit 0 pass, 1 fail).
+    #[command(allow_negative_numbers = true)]
     Check(cli::check::CheckArgs),
 }
 

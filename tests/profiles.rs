@@ -1,12 +1,13 @@
-//! The acceptance profiles (`docs/float.md` §18, `proofs/Profiles.v`): Gouraud and
-//! corrected Euler computed by *other* implementations of the class each profile
-//! allows stay within the proved bound of the exact values on the exact inputs. Each
-//! test is named like its theorem.
+//! The acceptance profiles (`docs/float.md` §18, `proofs/Profiles.v`): Gouraud,
+//! corrected Euler and plain Euler computed by *other* implementations of the class
+//! each profile allows stay within the proved bound of the exact values on the exact
+//! inputs. Each test is named like its theorem.
 //!
 //! The implementations are written here from the definitions, not taken from `src/`:
 //! - `ieee`: native `f32`/`f64` code with the dot products summed in other orders,
 //!   with fused multiply-adds (`mul_add`), with `1/n` taken once and multiplied, and
-//!   corrected Euler by its closed form `p_a + i·(t_0 + (i−1)/2·ds)`;
+//!   corrected Euler and Euler by their closed forms `p_a + i·(t_0 + (i−1)/2·ds)` and
+//!   `p_a + i·(di_a + (i−1)/2·ds)`;
 //! - `shader`: an operation-by-operation software model of binary32 (`common::emu`)
 //!   that at every rounding takes what the Vulkan/WGSL precision rules allow and a
 //!   careful implementation would not: round toward zero (or down, or up) for every
@@ -36,17 +37,20 @@ fn bound(alpha: f64, beta: f64, n: u32, u: f64) -> f64 {
 
 /// The worst error of `got` against the exact values of `method` on `c`, in units of
 /// the bound; panics with the case when a pixel is over.
-fn within(what: &str, c: &Case, s: &Span<Q>, method: Method, got: &[Q], b: f64) {
+fn within(what: &str, c: &Case, s: &Span<Q>, method: Method, got: &[Q], b: f64) -> f64 {
     let want = exact_values(method, c, s);
     assert_eq!(got.len(), want.len());
+    let mut worst = 0f64;
     for (i, (g, w)) in got.iter().zip(want.iter()).enumerate() {
         let e = (g.clone() - w.clone()).abs().to_f64();
+        worst = worst.max(e / b);
         assert!(
             e <= b,
             "{what}: pixel {i} of n = {}: error {e:e} > bound {b:e}\ninputs: {c:?}",
             c.n
         );
     }
+    worst
 }
 
 /// The spans every profile test runs on: edge, targeted and (fixed-seed) random.
@@ -262,19 +266,21 @@ fn pa_plus_i_times<T: Native>(v: Variant, pa: T, i: T, g: T) -> T {
 }
 
 fn ieee<T: Native>(theorem: &str, method: Method, alpha: f64, beta: f64) {
-    let mut checked = 0;
+    let (mut checked, mut worst) = (0, 0f64);
     for (c, s) in spans() {
         let b = bound(alpha, beta, s.n, T::U);
         for v in VARIANTS {
             let got = match method {
                 Method::Gouraud => gouraud::<T>(v, &s),
+                Method::Euler => euler::<T>(v, &s),
                 _ => corrected_euler::<T>(v, &s),
             };
-            within(&format!("{theorem} {v:?}"), &c, &s, method, &got, b);
+            worst = worst.max(within(&format!("{theorem} {v:?}"), &c, &s, method, &got, b));
             checked += 1;
         }
     }
     assert!(checked > 100, "{checked}");
+    eprintln!("{theorem}: {checked} runs, worst {worst:.3} of the bound");
 }
 
 #[test]
@@ -317,30 +323,75 @@ fn profile_ieee_corrected_euler_binary64() {
     );
 }
 
-fn closed<T: Native>(theorem: &str) {
+/// Plain Euler (eqs. 12–14), the recurrence `E += s; s += ds` from `s_0 = di_a`, in
+/// the three variants, against the exact plain-Euler run.
+#[test]
+fn profile_ieee_euler_binary32() {
+    ieee::<f32>("profile_ieee_euler_binary32", Method::Euler, 5.55, 121.41);
+}
+
+/// As [`profile_ieee_euler_binary32`] in binary64.
+#[test]
+fn profile_ieee_euler_binary64() {
+    ieee::<f64>("profile_ieee_euler_binary64", Method::Euler, 5.55, 121.41);
+}
+
+/// The closed form of corrected Euler (`p_a + i·(t_0 + (i−1)/2·ds)`) or of plain Euler
+/// (`p_a + i·(di_a + (i−1)/2·ds)`) in the three variants, within `beta·u` of the
+/// method's exact run.
+fn closed<T: Native>(theorem: &str, method: Method, beta: f64) {
+    let (mut checked, mut worst) = (0, 0f64);
     for (c, s) in spans() {
         for v in VARIANTS {
-            let got = corrected_euler_closed::<T>(v, &s);
-            within(
+            let got = match method {
+                Method::Euler => euler_closed::<T>(v, &s),
+                _ => corrected_euler_closed::<T>(v, &s),
+            };
+            let w = within(
                 &format!("{theorem} {v:?}"),
                 &c,
                 &s,
-                Method::CorrectedEuler,
+                method,
                 &got,
-                59.61 * T::U,
+                beta * T::U,
             );
+            worst = worst.max(w);
+            checked += 1;
         }
     }
+    assert!(checked > 100, "{checked}");
+    eprintln!("{theorem}: {checked} runs, worst {worst:.3} of the bound");
 }
 
 #[test]
 fn profile_ieee_corrected_euler_closed_binary32() {
-    closed::<f32>("profile_ieee_corrected_euler_closed_binary32");
+    closed::<f32>(
+        "profile_ieee_corrected_euler_closed_binary32",
+        Method::CorrectedEuler,
+        59.61,
+    );
 }
 
 #[test]
 fn profile_ieee_corrected_euler_closed_binary64() {
-    closed::<f64>("profile_ieee_corrected_euler_closed_binary64");
+    closed::<f64>(
+        "profile_ieee_corrected_euler_closed_binary64",
+        Method::CorrectedEuler,
+        59.61,
+    );
+}
+
+/// Plain Euler by its closed form `p_a + i·(di_a + (i−1)/2·ds)`, fused or not, in the
+/// three variants: within `131.41·u` of the exact plain-Euler run at every `n`.
+#[test]
+fn profile_ieee_euler_closed_binary32() {
+    closed::<f32>("profile_ieee_euler_closed_binary32", Method::Euler, 131.41);
+}
+
+/// As [`profile_ieee_euler_closed_binary32`] in binary64.
+#[test]
+fn profile_ieee_euler_closed_binary64() {
+    closed::<f64>("profile_ieee_euler_closed_binary64", Method::Euler, 131.41);
 }
 
 /// Long spans in `f64` (the `_large` theorems hold up to `2^24` pixels; here `2^16`
@@ -360,25 +411,37 @@ fn large(theorem: &str, method: Method, closed: bool, alpha: f64, beta: f64) {
             n,
         };
         let s = c.span().unwrap();
-        // Exactly: Gouraud p_a + i·dp, corrected Euler p_a + i·(t_0 + (i−1)/2·ds).
+        // Exactly: Gouraud p_a + i·dp, corrected Euler p_a + i·(t_0 + (i−1)/2·ds),
+        // Euler p_a + i·(di_a + (i−1)/2·ds).
         let exact = |i: u32| {
             let x = qi(i);
+            let start = if method == Method::Euler {
+                s.di_a.clone()
+            } else {
+                s.t0.clone()
+            };
             if method == Method::Gouraud {
                 s.p_a.clone() + x * s.dp.clone()
             } else {
                 let h = (x.clone() - q(1, 1)) / q(2, 1) * s.ds.clone();
-                s.p_a.clone() + x * (s.t0.clone() + h)
+                s.p_a.clone() + x * (start + h)
             }
         };
         let b = bound(alpha, beta, n, f64::U);
+        let mut worst = 0f64;
         for v in VARIANTS {
             let got: Vec<(u32, f64)> = if closed {
                 let st = setup::<f64>(v, &s);
+                let start = if method == Method::Euler {
+                    st.dia
+                } else {
+                    st.t0
+                };
                 (0..=n)
                     .filter(|i| i % 4099 == 0 || *i == n)
                     .map(|i| {
                         let fi = f64::from(i);
-                        let g = st.t0 + (fi - 1.0) / 2.0 * st.ds;
+                        let g = start + (fi - 1.0) / 2.0 * st.ds;
                         (
                             i,
                             if v.fused {
@@ -392,6 +455,7 @@ fn large(theorem: &str, method: Method, closed: bool, alpha: f64, beta: f64) {
             } else {
                 let all = match method {
                     Method::Gouraud => gouraud::<f64>(v, &s),
+                    Method::Euler => euler::<f64>(v, &s),
                     _ => corrected_euler::<f64>(v, &s),
                 };
                 all.into_iter()
@@ -402,9 +466,11 @@ fn large(theorem: &str, method: Method, closed: bool, alpha: f64, beta: f64) {
             };
             for (i, g) in got {
                 let e = (g.q() - exact(i)).abs().to_f64();
+                worst = worst.max(e / b);
                 assert!(e <= b, "{theorem} {v:?} pixel {i} of {n}: {e:e} > {b:e}");
             }
         }
+        eprintln!("{theorem}: n = {n}, worst {worst:.3} of the bound");
     }
 }
 
@@ -438,6 +504,28 @@ fn profile_ieee_corrected_euler_closed_binary64_large() {
         true,
         0.0,
         59.61,
+    );
+}
+
+#[test]
+fn profile_ieee_euler_binary64_large() {
+    large(
+        "profile_ieee_euler_binary64_large",
+        Method::Euler,
+        false,
+        5.55,
+        121.41,
+    );
+}
+
+#[test]
+fn profile_ieee_euler_closed_binary64_large() {
+    large(
+        "profile_ieee_euler_closed_binary64_large",
+        Method::Euler,
+        true,
+        0.0,
+        131.41,
     );
 }
 
@@ -561,20 +649,30 @@ fn shader(theorem: &str, method: Method, alpha: f64, beta: f64) {
     let u = f32::U;
     // The software GPU is slow: the spans up to n = 1024 in the default tier.
     let most = tiered(1024, 4096);
+    let (mut checked, mut worst) = (0, 0f64);
     for (c, s) in spans().into_iter().filter(|(c, _)| c.n <= most) {
         let b = bound(alpha, beta, s.n, u);
         for g in GPUS {
             let out = gpu_recurrence(method, g, &s);
-            within(&format!("{theorem} {g:?}"), &c, &s, method, &out, b);
+            worst = worst.max(within(&format!("{theorem} {g:?}"), &c, &s, method, &out, b));
+            checked += 1;
         }
     }
+    assert!(checked > 100, "{checked}");
+    eprintln!("{theorem}: {checked} runs, worst {worst:.3} of the bound");
 }
 
-/// Gouraud (`g += dp`) or corrected Euler (`p += t; t += ds`) on the GPU model.
+/// Gouraud (`g += dp`), corrected Euler (`p += t; t += ds` from `t_0`) or plain Euler
+/// (the same from `s_0 = di_a`) on the GPU model.
 fn gpu_recurrence(method: Method, g: Gpu, s: &Span<Q>) -> Vec<Q> {
     let [pa, dp, ds, t0] = gpu_setup(g, s);
     let mut out = vec![pa.clone()];
-    let (mut p, mut t) = (pa, t0);
+    let start = if method == Method::Euler {
+        gpu_dia(g, s)
+    } else {
+        t0
+    };
+    let (mut p, mut t) = (pa, start);
     for _ in 0..s.n {
         if method == Method::Gouraud {
             p = g.add(&p, &dp);
@@ -605,6 +703,14 @@ fn profile_shader_corrected_euler_binary32() {
         4.4,
         109.7,
     );
+}
+
+/// Plain Euler on the four software GPUs (each division by `n` and by 2 one division
+/// within 2.5 ulp, as the theorem takes it; `·(1/n)` is the derived bound's, in
+/// [`profile_shader_derived_binary32`]).
+#[test]
+fn profile_shader_euler_binary32() {
+    shader("profile_shader_euler_binary32", Method::Euler, 11.1, 257.9);
 }
 
 /// The model's own roundings are what the profile allows: toward zero never moves
@@ -792,7 +898,7 @@ fn phong_ieee_derived_binary64() {
     phong_ieee::<f64>("phong_ieee_derived_binary64");
 }
 
-// ------------------------- Euler, Duff, Phong under ieee and shader (derived, §18.5)
+// -------- Duff, Phong under ieee and shader, Euler under shader (derived, §18.5)
 
 /// The bound `check` applies to `method` under `profile` on `s` (`None`: no bound).
 fn profile_bound_of(method: Method, profile: Profile, s: &Span<Q>, u: f64) -> Option<f64> {
@@ -914,21 +1020,6 @@ fn ieee_derived<T: Native>(what: &str, method: Method, imp: impl Fn(Variant, &Sp
     );
 }
 
-/// Euler's derived `ieee` bound (`euler_derived`, docs/float.md §18.5) holds for the
-/// recurrence and the closed form, three orders each, fused or not, binary32.
-#[test]
-fn profile_ieee_euler_derived_binary32() {
-    ieee_derived::<f32>("euler recurrence", Method::Euler, euler::<f32>);
-    ieee_derived::<f32>("euler closed", Method::Euler, euler_closed::<f32>);
-}
-
-/// As [`profile_ieee_euler_derived_binary32`] in binary64.
-#[test]
-fn profile_ieee_euler_derived_binary64() {
-    ieee_derived::<f64>("euler recurrence", Method::Euler, euler::<f64>);
-    ieee_derived::<f64>("euler closed", Method::Euler, euler_closed::<f64>);
-}
-
 /// Duff's derived `ieee` bound (`duff_derived`, docs/float.md §18.5) holds for the
 /// forward differences with three orders of the set-up's dot products, `/n` or
 /// `·(1/n)`, `p/√q` or `p·(1/√q)`, binary32 and binary64.
@@ -957,9 +1048,35 @@ impl Gpu {
 
 /// Euler on the GPU model (the recurrence).
 fn gpu_euler(g: Gpu, s: &Span<Q>) -> Vec<Q> {
-    let [pa, _, ds, _] = gpu_setup(g, s);
-    // di_a again, as gpu_setup computes it.
-    let dia = gpu_dia(g, s);
+    gpu_recurrence(Method::Euler, g, s)
+}
+
+/// Euler on the GPU model as shader source that multiplies by reciprocals: `·(1/n)`
+/// for each division by `n` and `·(1/2)` with `1/2` computed (each reciprocal a
+/// 2.5-ulp division, then a product). Outside the class of
+/// `profile_shader_euler_binary32` (one 2.5-ulp division each), inside the derived
+/// bound's (docs/float.md §18.5: `κ = 7`).
+fn gpu_euler_reciprocal(g: Gpu, s: &Span<Q>) -> Vec<Q> {
+    let vec = |x: &phong_approx::Vec3<Q>| [g.input(&x.x), g.input(&x.y), g.input(&x.z)];
+    let (na, nb, l) = (vec(&s.na), vec(&s.nb), vec(&s.l));
+    let nf = qi(s.n);
+    let two = q(2, 1);
+    let inv_n = g.div(&q(1, 1), &nf);
+    let half = g.div(&q(1, 1), &two);
+    let k = [0, 1, 2].map(|j| g.mul(&g.sub(&nb[j], &na[j]), &inv_n));
+    let a = g.dot(&k, &l);
+    let pa = g.dot(&na, &l);
+    let pb = g.dot(&nb, &l);
+    let c = g.dot(&k, &k);
+    let d = g.mul(&two, &g.dot(&k, &na));
+    let dqb = if g.fused {
+        g.r(&two * &nf * &c + &d)
+    } else {
+        g.add(&g.mul(&(&two * &nf), &c), &d)
+    };
+    let dia = g.fms(&g.mul(&pa, &half), &d, &a);
+    let dib = g.fms(&g.mul(&pb, &half), &dqb, &a);
+    let ds = g.mul(&g.sub(&dib, &dia), &inv_n);
     let (mut p, mut t) = (pa, dia);
     let mut out = vec![p.clone()];
     for _ in 0..s.n {
@@ -1028,10 +1145,13 @@ fn shader_derived(what: &str, method: Method, imp: impl Fn(Gpu, &Span<Q>) -> Vec
     assert!(checked > 40, "{checked}");
 }
 
-/// Euler's, Duff's and Phong's derived `shader` bounds hold on the software GPUs.
+/// Euler's, Duff's and Phong's derived `shader` bounds hold on the software GPUs;
+/// Euler's also with `·(1/n)` and a computed `1/2`, which its theorem
+/// (`profile_shader_euler_binary32`) does not cover.
 #[test]
 fn profile_shader_derived_binary32() {
     shader_derived("euler", Method::Euler, gpu_euler);
+    shader_derived("euler, reciprocals", Method::Euler, gpu_euler_reciprocal);
     shader_derived("duff", Method::Duff, |g, s| gpu_duff_or_phong(g, s, false));
     shader_derived("phong (Horner)", Method::Phong, |g, s| {
         gpu_duff_or_phong(g, s, true)

@@ -1402,3 +1402,526 @@ fn r12_nearly_equal_normals_get_the_precision_they_need() {
         }
     }
 }
+
+// ---------------------------------------------------------------------------------
+// Fourth round (issue 32): each test reproduces a defect of that round's list (the
+// number in its name), fails on the code before the fix, and passes now.
+// ---------------------------------------------------------------------------------
+
+/// `span`'s JSON values for `args` (exit 0 asserted).
+fn span_values(args: &[&str]) -> Vec<String> {
+    let mut all = vec!["span"];
+    all.extend_from_slice(args);
+    let o = run(&all);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let v: Value = serde_json::from_slice(&o.stdout).unwrap();
+    v["values"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|x| x.as_str().unwrap().to_string())
+        .collect()
+}
+
+/// The first `digits` significant decimal digits of `√(num/den)·10^shift` (an
+/// independent computation: integer square roots only), as a string of digits.
+fn sqrt_digits(num: &BigInt, den: &BigInt, shift: u32, digits: usize) -> String {
+    let scale = BigInt::from(10).pow(2 * shift);
+    let r = (num * &scale / den).sqrt();
+    r.to_string().chars().take(digits).collect()
+}
+
+#[test]
+fn q1_spherical_keeps_every_digit_at_high_precision() {
+    // Pixel 4 is N_b·L = 3/5·2/3 + 4/5·2/3 = 14/15 exactly; the recurrence rounded
+    // each step to 2^-320 whatever the digits asked, and printed false digits.
+    let v = span_values(&[
+        "--method",
+        "spherical",
+        "--na",
+        "0,0,1",
+        "--nb",
+        "3/5,0,4/5",
+        "--light",
+        "2/3,1/3,2/3",
+        "--steps",
+        "4",
+        "--scalar",
+        "exact",
+        "--digits",
+        "110",
+    ]);
+    assert_eq!(
+        v[4],
+        format!("0.{}", "3".repeat(109)).replacen("0.3", "0.93", 1)
+    );
+}
+
+#[test]
+fn q2_a_rounded_tiny_value_is_not_printed_as_zero() {
+    // The middle angle is π/2 − 3h/(2√5) with h = (2/3)·10^-100: its cosine is
+    // 10^-100/√5 (to 10^-200 relative) = √(1/5)·10^-100.
+    let v = span_values(&[
+        "--method",
+        "angular",
+        "--na",
+        "0,0,1",
+        "--nb",
+        "1e-100,0,-1",
+        "--light",
+        "2/3,1/3,2/3",
+        "--steps",
+        "2",
+        "--scalar",
+        "exact",
+        "--normalize",
+    ]);
+    let want = sqrt_digits(&BigInt::from(1), &BigInt::from(5), 40, 25);
+    let got: String = v[1].chars().filter(char::is_ascii_digit).take(26).collect();
+    assert!(v[1].ends_with("e-101"), "{}", v[1]);
+    assert_eq!(&got[..25], want, "{}", v[1]);
+    // A value that is exactly zero still prints as 0 (p_a = 0 at an end pixel).
+    let v = span_values(&[
+        "--method",
+        "angular",
+        "--na",
+        "0,0,1",
+        "--nb",
+        "3/5,0,4/5",
+        "--light",
+        "1,0,0",
+        "--steps",
+        "2",
+        "--scalar",
+        "exact",
+    ]);
+    assert_eq!(v[0], "0");
+}
+
+#[test]
+fn q3_check_recomputes_nearly_opposite_normals_to_every_digit() {
+    use phong_approx::conformance::vectors::InputsFile;
+    use phong_approx::Method;
+    // N_b 2·10^-60 from opposite N_a: Phong's middle value p/√q with q ≈ 10^-120,
+    // where 2^-256 square roots leave about 17 digits.
+    let a = BigInt::from(10).pow(60u32);
+    let d = &a * &a + 1;
+    let nb = [
+        format!("{}/{d}", BigInt::from(2) * &a),
+        "0".to_string(),
+        format!("{}/{d}", BigInt::from(1) - &a * &a),
+    ];
+    let exact = |c: &[String; 3]| -> Vec<BigRational> {
+        c.iter()
+            .map(|s| phong_approx::parse::parse_rational(s).unwrap())
+            .collect()
+    };
+    let forms = |c: &[String; 3]| -> Value {
+        use phong_approx::Scalar;
+        let e = exact(c);
+        serde_json::json!({
+            "exact": c,
+            "f32": e.iter().map(|x| format!("{:?}", f32::from_rational(x))).collect::<Vec<_>>(),
+            "f64": e.iter().map(|x| format!("{:?}", f64::from_rational(x))).collect::<Vec<_>>(),
+        })
+    };
+    let na = ["0".to_string(), "0".to_string(), "1".to_string()];
+    let l = ["2/3".to_string(), "1/3".to_string(), "2/3".to_string()];
+    let file = serde_json::json!({
+        "version": "1.0", "set": "opposite", "methods": ["phong"], "number_of_cases": 1,
+        "cases": [{"id": "opposite-1", "na": forms(&na), "nb": forms(&nb), "l": forms(&l), "n": 2}],
+    });
+    let inputs: InputsFile = serde_json::from_value(file).unwrap();
+    let got = inputs.recompute(Method::Phong, false).unwrap();
+    let middle = &got.cases[0].expected["phong"].values[1];
+    // Independently: N(1) = (N_a + N_b)/2 = (a, 0, 1)/d; p = (2a/3 + 2/3)/d,
+    // q = (a² + 1)/d², so p/√q = (2/3)(a + 1)/√(a² + 1).
+    let num = BigInt::from(4) * (&a + 1) * (&a + 1);
+    let den = BigInt::from(9) * (&a * &a + 1);
+    let want = sqrt_digits(&num, &den, 40, 25);
+    let digits: String = middle.chars().filter(char::is_ascii_digit).collect();
+    assert!(middle.starts_with("0.6"), "{middle}");
+    assert_eq!(&digits[1..26], want, "{middle}");
+}
+
+#[test]
+fn q4_phong_has_no_reference_bound_where_its_normals_nearly_cancel() {
+    use phong_approx::tolerance::bound;
+    use phong_approx::Method;
+    let u = f64::from(f32::EPSILON) / 2.0;
+    // Normals 10^-7 from opposite: q_min ≈ 2.5·10^-15, far below (250u)².
+    assert_eq!(bound(Method::Phong, 2, 2.5e-15, u), None);
+    assert!(bound(Method::Phong, 2, 0.5, u).is_some());
+    let v = span_values(&[
+        "--method",
+        "phong",
+        "--na",
+        "0,0,1",
+        "--nb",
+        "1e-7,0,-1",
+        "--light",
+        "2/3,1/3,2/3",
+        "--steps",
+        "2",
+        "--scalar",
+        "f32",
+        "--normalize",
+    ]);
+    assert_eq!(v.len(), 3);
+}
+
+#[test]
+fn q5_ulps_are_counted_in_the_precision_checked() {
+    use phong_approx::conformance::check::ulp_in;
+    assert_eq!(ulp_in(1.0, f64::EPSILON / 2.0), f64::EPSILON);
+    assert_eq!(
+        ulp_in(1.0, f64::from(f32::EPSILON) / 2.0),
+        f64::from(f32::EPSILON)
+    );
+    // f64 results off by a relative 2^-30 (2^22 f64 ulps) fail ulps=0.5 under f64.
+    let d = scratch("q5");
+    let csv = results_csv(&typical());
+    let off: String = csv
+        .lines()
+        .map(|l| match l.rsplit_once(',') {
+            Some((head, v)) if head != "case,pixel" => {
+                let x: f64 = v.parse().unwrap();
+                format!("{head},{:e}\n", x * (1.0 + 2f64.powi(-30)))
+            }
+            _ => format!("{l}\n"),
+        })
+        .collect();
+    let r = write(&d, "r.csv", &off);
+    let v = root().join("vectors/typical.json").display().to_string();
+    let o = run(&[
+        "check",
+        "--vectors",
+        &v,
+        "--results",
+        &r,
+        "--precision",
+        "f64",
+        "--tolerance",
+        "ulps=0.5",
+    ]);
+    assert_eq!(code(&o), 1, "{}", stderr(&o));
+    assert!(String::from_utf8_lossy(&o.stdout).contains("f64 ulps"));
+}
+
+#[test]
+fn q6_the_library_refuses_meaningless_tolerances() {
+    use phong_approx::conformance::check::Tolerance;
+    use phong_approx::testkit::Suite;
+    use phong_approx::tolerance::profile::Profile;
+    for t in [
+        Tolerance::Abs(f64::NAN),
+        Tolerance::Ulps(f64::NAN),
+        Tolerance::Abs(f64::INFINITY),
+        Tolerance::Abs(-1.0),
+        Tolerance::Profile {
+            profile: Profile::Fixed {
+                int_bits: 64,
+                frac_bits: u32::MAX,
+            },
+            u: 1e-7,
+        },
+        Tolerance::Profile {
+            profile: Profile::Fixed {
+                int_bits: 1 << 31,
+                frac_bits: 16,
+            },
+            u: 1e-7,
+        },
+    ] {
+        assert!(t.validate().is_err(), "{t:?}");
+        // The test kit fails every set with the reason (no pass, no panic).
+        let r = Suite::published()
+            .tolerance(t)
+            .check_f32(|s| vec![3.0; s.n as usize + 1]);
+        assert!(!r.is_ok(), "{t:?}");
+    }
+}
+
+#[test]
+fn q7_exact_cosine_of_large_arguments() {
+    use phong_approx::reference::transcendental::cos;
+    // cos(10^100), computed independently with Python's decimal module at 250 digits
+    // (π by Machin's formula, 10^100 reduced modulo 2π, the Taylor series).
+    use phong_approx::Scalar;
+    let x = BigRational::from_integer(BigInt::from(10).pow(100u32));
+    assert_eq!(cos(&x).to_decimal(30), "-0.928081905074655343456194643777");
+    // And cos(x)² + cos(x − π/2)² = 1 for a large x, which a wrong reduction breaks.
+    let x = BigRational::from_integer(BigInt::from(10).pow(25u32));
+    let half_pi = phong_approx::reference::transcendental::frac_pi_2();
+    let (a, b) = (cos(&x), cos(&(x.clone() - half_pi)));
+    let one = a.clone() * a + b.clone() * b - BigRational::from_integer(1.into());
+    assert!(
+        one.abs() < BigRational::new(1.into(), BigInt::from(1) << 240),
+        "{one}"
+    );
+}
+
+#[test]
+fn q8_square_roots_of_tiny_rationals_never_divide_by_zero() {
+    for args in [
+        ["binary", "1e-60,0,-1", "2"],
+        ["phong", "1e-90,1e-90,-1", "2"],
+        ["duff", "1e-90,1e-90,-1", "2"],
+        ["binary", "1e-90,1e-90,-1", "2"],
+        ["spherical", "1e-90,0,1", "2"],
+        ["bishop-weimer", "1e-280,0,-1", "3"],
+    ] {
+        let o = run(&[
+            "span",
+            "--method",
+            args[0],
+            "--na",
+            "0,0,1",
+            "--nb",
+            args[1],
+            "--light",
+            "2/3,1/3,2/3",
+            "--steps",
+            args[2],
+            "--scalar",
+            "exact",
+            "--normalize",
+        ]);
+        let e = stderr(&o);
+        assert!(!e.contains("panicked"), "{args:?}: {e}");
+        assert!(code(&o) == 0 || code(&o) == 2, "{args:?}: {e}");
+    }
+    // √(10^-200) is 10^-100, not 0.
+    let s = phong_approx::reference::transcendental::sqrt(&BigRational::new(
+        2.into(),
+        BigInt::from(10).pow(200u32),
+    ));
+    assert!(s > BigRational::new(1.into(), BigInt::from(10).pow(101u32)));
+}
+
+/// A copy of the typical set's first specular case with `s` and `n` changed, as a
+/// modified vector file, with results.
+fn specular_file(d: &Path, s: u64, n: u64) -> (String, String) {
+    let mut v = typical();
+    let mut c = v["cases"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|c| !c["specular"].is_null())
+        .unwrap()
+        .clone();
+    c["specular"]["s"] = s.into();
+    c["n"] = n.into();
+    v["cases"] = Value::Array(vec![c.clone()]);
+    v["number_of_cases"] = 1.into();
+    let id = c["id"].as_str().unwrap();
+    let rows: String = (0..=n).map(|i| format!("{id},{i},0.5\n")).collect();
+    (write(d, "v.json", &v.to_string()), write(d, "r.csv", &rows))
+}
+
+#[test]
+fn q9_specular_exponents_and_work_are_refused_before_any_work() {
+    let d = scratch("q9");
+    for (s, n, needle) in [
+        (4_294_967_295u64, 4u64, "shininess 4294967295 is outside"),
+        (1_000_000, 4, "outside 1..=10000"),
+        (10_000, 4096, "units of exact work"),
+    ] {
+        let (v, r) = specular_file(&d, s, n);
+        for extra in [&["--specular"][..], &[][..]] {
+            let t = Instant::now();
+            let mut args = vec!["check", "--vectors", &v, "--results", &r];
+            args.extend_from_slice(ALLOW);
+            args.extend_from_slice(extra);
+            let o = run(&args);
+            if extra.is_empty() && s <= 10_000 {
+                // Without --specular the powers are not computed at all.
+                assert_ne!(code(&o), 2, "{}", stderr(&o));
+            } else {
+                refused(&o, needle);
+            }
+            assert!(t.elapsed() < Duration::from_secs(20), "{s} {n}");
+        }
+    }
+}
+
+#[test]
+fn q10_a_huge_cosine_table_is_within_the_budget() {
+    use phong_approx::budget::{exact_work, MAX_RECOMPUTED_WORK};
+    use phong_approx::Method;
+    assert!(exact_work(Method::AngularTable(16_777_216), 1, 10, 30) > MAX_RECOMPUTED_WORK);
+    assert!(exact_work(Method::AngularTable(256), 1, 10, 30) < MAX_RECOMPUTED_WORK / 100);
+}
+
+#[test]
+fn q11_hostile_library_arguments_give_errors_not_panics() {
+    use phong_approx::fixed_span::FixedSpan;
+    use phong_approx::testkit::Suite;
+    use phong_approx::tolerance::profile::{fixed_bound, Profile};
+    use phong_approx::{Method, Span, Vec3};
+    assert_eq!(fixed_bound(Method::Gouraud, 4, 64, 1 << 31), None);
+    assert_eq!(fixed_bound(Method::Gouraud, 4, 1 << 31, 16), None);
+    assert!(Profile::Fixed {
+        int_bits: 64,
+        frac_bits: 1 << 31
+    }
+    .validate()
+    .is_err());
+    let r = Suite::published()
+        .method(Method::AngularTable(512))
+        .check_f32(|s| vec![0.0; s.n as usize + 1]);
+    assert!(!r.is_ok());
+    assert!(r.to_string().contains("angular-table512"), "{r}");
+    // A span that is not unit (normalized inputs of huge length): refused, not a panic.
+    let big = |x: i64| BigRational::from_integer(BigInt::from(x) << 80u32);
+    let z = BigRational::from_integer(0.into());
+    let v = Vec3::new(big(1), z.clone(), z.clone());
+    if let Ok(s) = Span::normalized(v.clone(), v.clone(), v, 4) {
+        let _ = FixedSpan::new(&s, 30);
+    }
+}
+
+/// `check` of the typical set's own exact results with `extra` arguments.
+fn check_typical(d: &Path, extra: &[&str]) -> Output {
+    let r = write(d, "r.csv", &results_csv(&typical()));
+    let v = root().join("vectors/typical.json").display().to_string();
+    let mut args = vec!["check", "--vectors", &v, "--results", &r];
+    args.extend_from_slice(extra);
+    run(&args)
+}
+
+#[test]
+fn q12_dot_named_outputs_are_written() {
+    let d = scratch("q12");
+    let out = d.join(".r.json");
+    let o = check_typical(&d, &["--report", "json", out.to_str().unwrap()]);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    assert!(out.is_file());
+}
+
+#[test]
+fn q13_a_second_run_into_a_folder_in_use_exits_2_naming_it() {
+    use std::os::unix::io::AsRawFd;
+    let d = scratch("q13");
+    let out = d.join("out");
+    std::fs::create_dir_all(&out).unwrap();
+    // Hold the folder's lock as a running phong-approx would.
+    std::fs::write(out.join(".phong-approx-lock"), "12345").unwrap();
+    let lock = std::fs::OpenOptions::new()
+        .read(true)
+        .write(true)
+        .open(out.join(".phong-approx-lock"))
+        .unwrap();
+    // SAFETY: flock on a descriptor this test owns.
+    assert_eq!(
+        unsafe { libc::flock(lock.as_raw_fd(), libc::LOCK_EX | libc::LOCK_NB) },
+        0
+    );
+    let report = out.join("r.xml");
+    let o = check_typical(&d, &["--report", "junit", report.to_str().unwrap()]);
+    refused(
+        &o,
+        "being written by another phong-approx run (process 12345)",
+    );
+    drop(lock);
+    let o = check_typical(&d, &["--report", "junit", report.to_str().unwrap()]);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    assert!(report.is_file());
+}
+
+#[test]
+fn q14_reports_once_and_valid_xml_for_any_case_id() {
+    let d = scratch("q14");
+    let (a, b) = (d.join("a.xml"), d.join("b.json"));
+    let o = check_typical(
+        &d,
+        &[
+            "--report",
+            "junit",
+            a.to_str().unwrap(),
+            "--report",
+            "json",
+            b.to_str().unwrap(),
+        ],
+    );
+    refused(&o, "more than once");
+    // A case id with U+FFFE and U+FFFF: the JUnit report stays XML.
+    let mut v = typical();
+    let id = "typical-\u{fffe}\u{ffff}";
+    let first = v["cases"][0]["id"].as_str().unwrap().to_string();
+    v["cases"][0]["id"] = id.into();
+    let csv = results_csv(&typical()).replace(&format!("{first},"), &format!("{id},"));
+    let vf = write(&d, "v.json", &v.to_string());
+    let rf = write(&d, "r2.csv", &csv);
+    let x = d.join("x.xml");
+    let o = run(&[
+        "check",
+        "--vectors",
+        &vf,
+        "--results",
+        &rf,
+        "--allow-modified-vectors",
+        "--report",
+        "junit",
+        x.to_str().unwrap(),
+    ]);
+    assert!(code(&o) <= 1, "{}", stderr(&o));
+    let text = std::fs::read_to_string(&x).unwrap();
+    assert!(roxmltree::Document::parse(&text).is_ok());
+}
+
+#[test]
+fn q15_messages_say_what_is_wrong() {
+    let span = |extra: &[&str]| {
+        let mut a = vec![
+            "span", "--method", "gouraud", "--na", "0,0,1", "--nb", "0,0,1", "--light", "0,0,1",
+            "--steps", "2",
+        ];
+        a.extend_from_slice(extra);
+        run(&a)
+    };
+    refused(
+        &span(&["--digits", "-1"]),
+        "--digits: '-1' is not a whole number",
+    );
+    refused(
+        &run(&["reproduce", "--out", ""]),
+        "--out: '' is not a valid value",
+    );
+    let v = root().join("vectors/typical.json").display().to_string();
+    refused(
+        &run(&["check", "--vectors", "-", "--results", "-"]),
+        "cannot be both --vectors and --results",
+    );
+    let d = scratch("q15");
+    let bom = write(&d, "bom.json", "\u{feff}{\"cases\": []}");
+    let o = run(&["check", "--vectors", &v, "--results", &bom]);
+    assert_eq!(code(&o), 2);
+    assert!(!stderr(&o).contains("columns"), "{}", stderr(&o));
+    let arr = write(&d, "arr.json", "[1, 2]");
+    let o = run(&["check", "--vectors", &v, "--results", &arr]);
+    assert!(!stderr(&o).contains("columns"), "{}", stderr(&o));
+    // 1e400 is refused alike in CSV and JSON.
+    let csv = write(&d, "big.csv", "typical-001,0,1e400\n");
+    refused(
+        &run(&["check", "--vectors", &v, "--results", &csv]),
+        "outside the range of f64",
+    );
+    let json = write(
+        &d,
+        "big.json",
+        "{\"cases\": [{\"id\": \"typical-001\", \"values\": [1e400]}]}",
+    );
+    refused(
+        &run(&["check", "--vectors", &v, "--results", &json]),
+        "outside the range of f64",
+    );
+    // A line of exactly the limit, with CRLF, is not refused for its length.
+    let long = format!("# {}\r\n", "x".repeat(4094));
+    let f = write(&d, "crlf.csv", &(long + &results_csv(&typical())));
+    let o = run(&["check", "--vectors", &v, "--results", &f]);
+    assert!(!stderr(&o).contains("bytes long"), "{}", stderr(&o));
+    // A closed standard output (`>&-`) cannot be told from `> /dev/null`: Rust's
+    // runtime opens /dev/null on a closed descriptor 0–2 before main (docs/conformance.md,
+    // "Limits and exit codes").
+}

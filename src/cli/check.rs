@@ -32,13 +32,14 @@ pub struct CheckArgs {
     pub precision: Precision,
     /// The arithmetic profile the results are judged by (docs/float.md §18): ieee
     /// (the default: IEEE f32/f64 with round to nearest, any order, FMA, reciprocals;
-    /// proved for Gouraud and corrected Euler, derived for Phong, Euler, Duff,
+    /// proved for Gouraud, corrected Euler and Euler, derived for Phong, Duff,
     /// symmetric Phong and adaptive), shader (Vulkan/WGSL 32-bit rules: truncation,
-    /// 2.5-ulp division, flushed denormals; the same methods, f32), reference (this
-    /// crate's own operation order, round to nearest, no FMA: the bounds of every
-    /// method, angular and the related methods included) or fixed:M.F (a set-up
-    /// rounded once to F fractional bits, an exact integer loop in M-bit registers;
-    /// proved for Gouraud and corrected Euler).
+    /// 2.5-ulp division, flushed denormals; the same methods, f32; proved for Gouraud
+    /// and corrected Euler, derived for the others, Euler included: its theorem does
+    /// not cover ·(1/n)), reference (this crate's own operation order, round to
+    /// nearest, no FMA: the bounds of every method, angular and the related methods
+    /// included) or fixed:M.F (a set-up rounded once to F fractional bits, an exact
+    /// integer loop in M-bit registers; proved for Gouraud and corrected Euler).
     #[arg(long, value_name = "NAME", default_value = "ieee",
           value_parser = |s: &str| s.parse::<Profile>())]
     pub profile: Profile,
@@ -103,6 +104,12 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
         profile,
         u: a.precision.u(),
     });
+    if a.vectors == "-" && a.results == "-" {
+        return Err(CliError::arg(
+            "--results",
+            "standard input cannot be both --vectors and --results: give one of them as a file",
+        ));
+    }
     let vtext = read_capped(&a.vectors, "--vectors", MAX_RESULTS_BYTES)?;
     let loaded = load_vectors(
         vtext,
@@ -141,6 +148,12 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
         a.precision.u(),
     )
     .map_err(|e| CliError::arg("--method", e))?;
+    if a.report.as_ref().is_some_and(|r| r.len() != 2) {
+        return Err(CliError::arg(
+            "--report",
+            "given more than once: one report per run (FORMAT FILE)",
+        ));
+    }
     if let Some(r) = &a.report {
         let suite = format!(
             "{} {key} {} ({})",

@@ -184,7 +184,11 @@ pub fn clap_message(e: &clap::Error) -> String {
                 Some(ContextValue::Strings(v)) => v.join(", "),
                 _ => String::new(),
             };
-            format!("{arg}: unknown value '{value}' (expected one of {valid})")
+            if valid.is_empty() {
+                format!("{arg}: '{value}' is not a valid value here")
+            } else {
+                format!("{arg}: unknown value '{value}' (expected one of {valid})")
+            }
         }
         _ => {
             let text = e.render().to_string();

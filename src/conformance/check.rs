@@ -202,13 +202,26 @@ fn sizes(vectors: &VectorFile, specular: bool) -> HashMap<&str, usize> {
 /// the file.
 fn parse_value(file: &str, line: usize, s: &str) -> Result<f64, InputError> {
     let t = s.trim();
-    t.parse().map_err(|_| {
+    let v: f64 = t.parse().map_err(|_| {
         err(
             file,
             line,
             format!("value '{}' is not a number", super::shown(t)),
         )
-    })
+    })?;
+    if v.is_infinite() && !t.to_ascii_lowercase().contains("inf") {
+        return Err(err(file, line, out_of_range(t)));
+    }
+    Ok(v)
+}
+
+/// The refusal of a decimal beyond `f64`'s range (CSV and JSON alike: no float
+/// implementation prints one; an infinite result is written `inf`).
+fn out_of_range(t: &str) -> String {
+    format!(
+        "value '{}' is outside the range of f64 (an infinite result is written inf, or \"inf\" in JSON)",
+        super::shown(t)
+    )
 }
 
 /// The values of one case as they are read: the value and the 1-based line of each
@@ -291,6 +304,7 @@ pub fn parse_results_csv(
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     if let Some((k, l)) = text
         .split('\n')
+        .map(|l| l.strip_suffix('\r').unwrap_or(l))
         .enumerate()
         .find(|(_, l)| l.len() > MAX_CSV_LINE)
     {
@@ -699,6 +713,9 @@ pub fn parse_results_json(
         .map_err(|e| {
             let message = match ctx.problem.borrow_mut().take() {
                 Some(m) => m,
+                None if e.to_string().starts_with("number out of range") => {
+                    out_of_range("a number")
+                }
                 None => format!("not a results file: {e}"),
             };
             err(file, e.line(), message)
@@ -716,7 +733,10 @@ pub fn parse_results(
     vectors: &VectorFile,
     specular: bool,
 ) -> Result<Results, InputError> {
-    if text.trim_start().starts_with('{') {
+    // JSON by its first character (after a byte-order mark): an object, or an array
+    // (refused by the JSON reader with its own message, not misread as CSV).
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    if text.trim_start().starts_with(['{', '[']) {
         parse_results_json(text, file, vectors, specular)
     } else {
         parse_results_csv(text, file, vectors, specular)
@@ -940,6 +960,11 @@ fn case_report(
                 format!(
                     "the {profile} profile has no bound for {method} in this format \
                      (--profile reference judges this crate's own evaluation; or pass --tolerance)"
+                )
+            } else if let Profile::Fixed { int_bits, .. } = profile {
+                format!(
+                    "the {profile} profile's registers may overflow on this span: its values and slopes must stay below 2^{} in {int_bits} integer bits (docs/float.md §14); more integer bits, or pass --tolerance",
+                    int_bits.saturating_sub(1)
                 )
             } else {
                 format!(

@@ -59,8 +59,14 @@ fn xml(x: &str) -> String {
             '>' => out.push_str("&gt;"),
             '"' => out.push_str("&quot;"),
             '\'' => out.push_str("&apos;"),
-            // XML 1.0 allows no other control character, even escaped.
-            c if c.is_control() && !matches!(c, '\n' | '\t') => out.push('\u{fffd}'),
+            // XML 1.0 allows no other control character, even escaped, nor U+FFFE
+            // and U+FFFF (its Char production: #x9 | #xA | #xD | [#x20-#xD7FF] |
+            // [#xE000-#xFFFD] | [#x10000-#x10FFFF]; surrogates cannot be in a str).
+            c if (c.is_control() && !matches!(c, '\n' | '\t'))
+                || matches!(c, '\u{fffe}' | '\u{ffff}') =>
+            {
+                out.push('\u{fffd}')
+            }
             c => out.push(c),
         }
     }

@@ -6,17 +6,18 @@
 //! proved for the whole class in Coq (`proofs/Profiles.v`, on the model of
 //! `proofs/FloatModelK.v`) where this module says *proved*:
 //!
-//! | profile | format | Gouraud | corrected Euler |
-//! |---|---|---|---|
-//! | `ieee` | binary32 | `profile_ieee_gouraud_binary32` | `profile_ieee_corrected_euler_binary32`, `profile_ieee_corrected_euler_closed_binary32` |
-//! | `ieee` | binary64 | `profile_ieee_gouraud_binary64`, `profile_ieee_gouraud_binary64_large` | `profile_ieee_corrected_euler_binary64`, `profile_ieee_corrected_euler_binary64_large`, `profile_ieee_corrected_euler_closed_binary64`, `profile_ieee_corrected_euler_closed_binary64_large` |
-//! | `shader` | binary32 | `profile_shader_gouraud_binary32` | `profile_shader_corrected_euler_binary32` |
+//! | profile | format | Gouraud | corrected Euler | Euler |
+//! |---|---|---|---|---|
+//! | `ieee` | binary32 | `profile_ieee_gouraud_binary32` | `profile_ieee_corrected_euler_binary32`, `profile_ieee_corrected_euler_closed_binary32` | `profile_ieee_euler_binary32`, `profile_ieee_euler_closed_binary32` |
+//! | `ieee` | binary64 | `profile_ieee_gouraud_binary64`, `profile_ieee_gouraud_binary64_large` | `profile_ieee_corrected_euler_binary64`, `profile_ieee_corrected_euler_binary64_large`, `profile_ieee_corrected_euler_closed_binary64`, `profile_ieee_corrected_euler_closed_binary64_large` | `profile_ieee_euler_binary64`, `profile_ieee_euler_binary64_large`, `profile_ieee_euler_closed_binary64`, `profile_ieee_euler_closed_binary64_large` |
+//! | `shader` | binary32 | `profile_shader_gouraud_binary32` | `profile_shader_corrected_euler_binary32` | derived; `profile_shader_euler_binary32` proves part of it ([`proved_in_part`]) |
 //!
-//! Phong, Euler, Duff, symmetric Phong and the adaptive scheme have *derived* bounds
-//! under `ieee` and `shader` (written derivations on the same model, [`Arith`]:
-//! [`phong_derived`], [`euler_derived`], [`duff_derived`], `docs/float.md` §18.4–18.5,
-//! attacked by `tests/profiles.rs`); [`status`] says which kind a bound is. Angular
-//! interpolation and the related methods have none: a case then fails naming that.
+//! Phong, Duff, symmetric Phong and the adaptive scheme have *derived* bounds under
+//! `ieee` and `shader`, and Euler under `shader` (written derivations on the same
+//! model, [`Arith`]: [`phong_derived`], [`euler_derived`], [`duff_derived`],
+//! `docs/float.md` §18.4–18.5, attacked by `tests/profiles.rs`); [`status`] says which
+//! kind a bound is. Angular interpolation and the related methods have none: a case
+//! then fails naming that.
 //!
 //! Tested, with other implementations written from the definitions (other orders,
 //! `mul_add`, reciprocals, the closed form, a software GPU that truncates, divides
@@ -40,7 +41,8 @@ pub enum Profile {
     /// `1/inversesqrt`, denormal inputs and results flushed to zero, any order of
     /// each dot product and sum, fused or not. The Coq theorems (Gouraud, corrected
     /// Euler) take a division by `n` as one 2.5-ulp division; the derived bounds
-    /// (Phong, Euler, Duff) also cover `·(1/n)`.
+    /// (Phong, Euler, Duff) also cover `·(1/n)` (so Euler stays derived here, although
+    /// `profile_shader_euler_binary32` proves it for one 2.5-ulp division).
     Shader,
     /// Fixed point `Qm.f` as a hardware span unit runs it (`fixed:m.f`): the set-up
     /// (`p_a`, `t_0`, `ds`, or Gouraud's `dp`) computed exactly or far more precisely
@@ -181,10 +183,20 @@ impl Proved {
 /// binary32's unit roundoff.
 const U32: f64 = 1.0 / 16_777_216.0;
 
-/// The proved bounds of a profile for Gouraud (`g += dp`) and corrected Euler (the
-/// recurrence `p += t; t += ds`, and its closed form `p_a + i·(t_0 + (i−1)/2·ds)`),
-/// in the format of unit roundoff `u`; the largest of the forms a profile allows, so
-/// that every form passes. `None` for a method, profile or format with no theorem.
+/// The proved bounds of a profile for Gouraud (`g += dp`), corrected Euler (the
+/// recurrence `p += t; t += ds`, and its closed form `p_a + i·(t_0 + (i−1)/2·ds)`)
+/// and, under `ieee`, plain Euler (eqs. 12–14: the recurrence `E += s; s += ds` from
+/// `s_0 = di_a`, and its closed form `p_a + i·(di_a + (i−1)/2·ds)`), in the format of
+/// unit roundoff `u`; the largest of the forms a profile allows, so that every form
+/// passes. `None` for a method, profile or format with no theorem.
+///
+/// Plain Euler under `ieee`: `profile_ieee_euler_binary32` and
+/// `profile_ieee_euler_closed_binary32` (`n ≤ 4096`), `profile_ieee_euler_binary64_large`
+/// and `profile_ieee_euler_closed_binary64_large` (`n ≤ 2^24`; their `n ≤ 4096`
+/// instances are `profile_ieee_euler_binary64` and `profile_ieee_euler_closed_binary64`),
+/// against the exact plain-Euler run, for every order, fusion and `/n` or `·(1/n)` of
+/// the `ieee` profile (its `κ_div = 2 + 2^-20` covers the reciprocal). Plain Euler
+/// under `shader` is not here: see [`proved_in_part`].
 pub fn proved(method: crate::Method, profile: Profile, u: f64) -> Option<Vec<Proved>> {
     use crate::Method;
     let b32 = u == U32;
@@ -243,6 +255,44 @@ pub fn proved(method: crate::Method, profile: Profile, u: f64) -> Option<Vec<Pro
             4096,
             "profile_shader_corrected_euler_binary32",
         )]),
+        (Method::Euler, Profile::Ieee) if b32 => Some(vec![
+            p(5.55, 121.41, 4096, "profile_ieee_euler_binary32"),
+            p(0.0, 131.41, 4096, "profile_ieee_euler_closed_binary32"),
+        ]),
+        (Method::Euler, Profile::Ieee) if b64 => Some(vec![
+            p(5.55, 121.41, 1 << 24, "profile_ieee_euler_binary64_large"),
+            p(
+                0.0,
+                131.41,
+                1 << 24,
+                "profile_ieee_euler_closed_binary64_large",
+            ),
+        ]),
+        _ => None,
+    }
+}
+
+/// A theorem that proves a method's bound for only part of what the profile's
+/// guarantee promises, so that the bound stays *derived* ([`status`]) and is the
+/// larger of this and the derivation ([`profile_bound`]).
+///
+/// One: plain Euler under `shader`, `profile_shader_euler_binary32`,
+/// `(11.1·n + 257.9)·2^-24` for `n ≤ 4096` against the exact plain-Euler run. Like
+/// the shader theorems of Gouraud and corrected Euler it takes each division (by `n`,
+/// by 2) as one division within 2.5 ulp; the `shader` guarantee for Euler
+/// (`docs/conformance.md`, [`Profile::Shader`]) also promises `·(1/n)` (a 2.5-ulp
+/// reciprocal and a product, `κ = 7`), which only the derivation [`euler_derived`]
+/// covers. So Euler under `shader` is labelled derived, and its bound is the larger
+/// of the two (the derived one: `tolerance::profile` tests that it is never smaller).
+pub fn proved_in_part(method: crate::Method, profile: Profile, u: f64) -> Option<Proved> {
+    use crate::Method;
+    match (method, profile) {
+        (Method::Euler, Profile::Shader) if u == U32 => Some(Proved {
+            alpha: 11.1,
+            beta: 257.9,
+            max_n: 4096,
+            theorem: "profile_shader_euler_binary32",
+        }),
         _ => None,
     }
 }
@@ -369,6 +419,10 @@ fn eta_total(a: &Arith, nf: f64) -> f64 {
 /// `p_a + i·(di_a + (i−1)/2·ds)`, on the paper's set-up (§4) in any order of each dot
 /// product, fused or not, `/n` as a division or `·(1/n)`.
 ///
+/// The bound `check` applies under `shader` (with [`proved_in_part`]). Under `ieee`
+/// the theorems of [`proved`] replace it: they cover the same forms and are smaller
+/// (`131.41·u` against about `244·u` at `n = 1`).
+///
 /// §7's count, each rounding with the largest `κ` of the set-up: `113·κ_s` for the
 /// set-up, `6·κ_half` for the two `p/2` (exact under `ieee`), then the larger of the
 /// recurrence's `5.6·n·κ_add` and the closed form's `3.8·(2κ_mul + 2κ_add + κ_half)`.
@@ -475,6 +529,8 @@ pub fn status(method: crate::Method, profile: Profile, u: f64) -> Option<Status>
     arith(profile, u)?;
     match method {
         Method::Phong => Some(Status::Derived("docs/float.md §18.4")),
+        // Euler reaches here under `shader` only: derived, although
+        // `profile_shader_euler_binary32` proves part of it ([`proved_in_part`]).
         Method::Euler | Method::Duff | Method::SymmetricPhong => {
             Some(Status::Derived("docs/float.md §18.5"))
         }
@@ -490,8 +546,8 @@ pub fn status(method: crate::Method, profile: Profile, u: f64) -> Option<Status>
 /// The bound of `method` under `profile` (not `Reference`, whose bounds are
 /// [`crate::tolerance::bound`]) on a span of `n` steps and smallest `q_i` `q_min`, in
 /// the format of unit roundoff `u`: the proved bound ([`proved_bound`]) or the derived
-/// one ([`phong_derived`], [`euler_derived`], [`duff_derived`]); `None` where neither
-/// covers it.
+/// one ([`phong_derived`], [`euler_derived`] — with [`proved_in_part`], the larger —,
+/// [`duff_derived`]); `None` where neither covers it.
 pub fn profile_bound(
     method: crate::Method,
     profile: Profile,
@@ -513,7 +569,14 @@ pub fn profile_bound(
             let a = arith(profile, u)?;
             match method {
                 Method::Phong => phong_derived(&a, n, q_min),
-                Method::Euler => euler_derived(&a, n),
+                // The larger of the derivation and the theorem that proves part of
+                // it ([`proved_in_part`]); none where the derivation has none (it is
+                // what covers `·(1/n)`).
+                Method::Euler => {
+                    let derived = euler_derived(&a, n)?;
+                    let part = proved_in_part(method, profile, u).and_then(|p| p.at(n, u));
+                    Some(part.map_or(derived, |p| derived.max(p)))
+                }
                 Method::Duff | Method::SymmetricPhong => duff_derived(&a, n, q_min),
                 Method::Adaptive => Some(
                     proved_bound(Method::Gouraud, profile, n, u)?.max(proved_bound(
@@ -590,5 +653,71 @@ mod tests {
         assert!(proved_bound(Method::Gouraud, Profile::Shader, 10, u64_).is_none());
         assert!(proved_bound(Method::Phong, Profile::Ieee, 10, u32_).is_none());
         assert!(proved_bound(Method::Gouraud, Profile::Ieee, 0, u32_).is_none());
+    }
+
+    #[test]
+    fn euler_is_proved_under_ieee() {
+        let u32_ = f64::from(f32::EPSILON) / 2.0;
+        let u64_ = f64::EPSILON / 2.0;
+        // The larger of the recurrence (5.55·n + 121.41) and the closed form (131.41).
+        let e = proved_bound(Method::Euler, Profile::Ieee, 1, u32_).unwrap();
+        assert!((e / u32_ - 131.41).abs() < 1e-9);
+        let e = proved_bound(Method::Euler, Profile::Ieee, 2, u32_).unwrap();
+        assert!((e / u32_ - 132.51).abs() < 1e-9);
+        let e = proved_bound(Method::Euler, Profile::Ieee, 100, u64_).unwrap();
+        assert!((e / u64_ - 676.41).abs() < 1e-9);
+        assert!(proved_bound(Method::Euler, Profile::Ieee, 4097, u32_).is_none());
+        assert!(proved_bound(Method::Euler, Profile::Ieee, 1 << 24, u64_).is_some());
+        assert!(proved_bound(Method::Euler, Profile::Ieee, (1 << 24) + 1, u64_).is_none());
+        assert_eq!(
+            status(Method::Euler, Profile::Ieee, u32_),
+            Some(Status::Proved("profile_ieee_euler_binary32"))
+        );
+        assert_eq!(
+            status(Method::Euler, Profile::Ieee, u64_),
+            Some(Status::Proved("profile_ieee_euler_binary64_large"))
+        );
+        // `check` applies exactly the theorems' bound, and it is below the derivation
+        // it replaces wherever both exist.
+        for (u, ns) in [
+            (u32_, vec![1, 2, 3, 255, 256, 4095, 4096]),
+            (u64_, vec![1, 2, 4096, 4097, 1 << 20, 1 << 24]),
+        ] {
+            let a = arith(Profile::Ieee, u).unwrap();
+            for n in ns {
+                let p = proved_bound(Method::Euler, Profile::Ieee, n, u).unwrap();
+                assert_eq!(
+                    profile_bound(Method::Euler, Profile::Ieee, n, 1.0, u),
+                    Some(p)
+                );
+                assert!(p < euler_derived(&a, n).unwrap(), "{n}");
+            }
+        }
+    }
+
+    #[test]
+    fn euler_under_shader_stays_derived_and_covers_its_theorem() {
+        let u32_ = f64::from(f32::EPSILON) / 2.0;
+        // The theorem does not cover `·(1/n)`, which the shader guarantee promises.
+        assert!(proved(Method::Euler, Profile::Shader, u32_).is_none());
+        assert_eq!(
+            status(Method::Euler, Profile::Shader, u32_),
+            Some(Status::Derived("docs/float.md §18.5"))
+        );
+        let t = proved_in_part(Method::Euler, Profile::Shader, u32_).unwrap();
+        assert_eq!(t.theorem, "profile_shader_euler_binary32");
+        assert!(proved_in_part(Method::Euler, Profile::Ieee, u32_).is_none());
+        assert!(proved_in_part(Method::CorrectedEuler, Profile::Shader, u32_).is_none());
+        // The bound applied is the larger of the two: never below the theorem's, and
+        // (the derivation counting more) equal to the derived one at every n.
+        let a = arith(Profile::Shader, u32_).unwrap();
+        for n in 1..=4096 {
+            let b = profile_bound(Method::Euler, Profile::Shader, n, 1.0, u32_).unwrap();
+            assert!(b >= t.at(n, u32_).unwrap(), "{n}");
+            assert_eq!(Some(b), euler_derived(&a, n), "{n}");
+        }
+        // (11.1·n + 257.9)·2^-24 at n = 100.
+        assert!((t.at(100, u32_).unwrap() / u32_ - 1367.9).abs() < 1e-9);
+        assert!(profile_bound(Method::Euler, Profile::Shader, 4097, 1.0, u32_).is_none());
     }
 }

@@ -1925,3 +1925,52 @@ fn q15_messages_say_what_is_wrong() {
     // runtime opens /dev/null on a closed descriptor 0–2 before main (docs/conformance.md,
     // "Limits and exit codes").
 }
+
+#[test]
+fn q9_the_work_estimate_grows_with_every_input_and_refuses_the_documented_examples() {
+    use phong_approx::budget::{exact_work, specular_work, CASE_WORK, MAX_RECOMPUTED_WORK};
+    use phong_approx::Method;
+    for m in [Method::CorrectedEuler, Method::Phong, Method::Binary] {
+        let w = |n, bits, digits| exact_work(m, n, bits, digits);
+        assert!(w(2, 40, 30) < w(3, 40, 30), "{m}: n");
+        assert!(w(64, 40, 30) < w(64, 700, 30), "{m}: inputs");
+        assert!(w(64, 40, 30) <= w(64, 40, 1000), "{m}: digits");
+    }
+    assert!(specular_work(4, 200, 40) < specular_work(4, 1000, 40));
+    assert!(specular_work(4, 1000, 40) < specular_work(8, 1000, 40));
+    // The documented examples (docs/conformance.md, "Limits and exit codes").
+    let ce = |n, bits| exact_work(Method::CorrectedEuler, n, bits, 30);
+    assert!(100_000 * (CASE_WORK + ce(1, 41)) > MAX_RECOMPUTED_WORK);
+    assert!(20_000 * (CASE_WORK + ce(1, 41)) < MAX_RECOMPUTED_WORK);
+    assert!(specular_work(4096, 10_000, 41) > MAX_RECOMPUTED_WORK);
+    assert!(ce(65_536, 625) < MAX_RECOMPUTED_WORK);
+    assert!(exact_work(Method::AngularTable(1 << 24), 1, 41, 30) > MAX_RECOMPUTED_WORK);
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(256))]
+    /// No public constructor or validator panics on a value its type admits (debug
+    /// build: overflow checks on).
+    #[test]
+    fn q11_public_constructors_never_panic(
+        m in proptest::prelude::any::<u32>(),
+        f in proptest::prelude::any::<u32>(),
+        n in proptest::prelude::any::<u32>(),
+        x in proptest::prelude::any::<f64>(),
+        u in proptest::prelude::any::<f64>(),
+        size in 0u32..4096,
+    ) {
+        use phong_approx::conformance::check::Tolerance;
+        use phong_approx::tolerance::profile::{fixed_bound, Profile};
+        use phong_approx::Method;
+        let p = Profile::Fixed { int_bits: m, frac_bits: f };
+        let _ = p.validate();
+        for method in [Method::Gouraud, Method::CorrectedEuler, Method::Phong] {
+            let _ = fixed_bound(method, n, m, f);
+        }
+        for t in [Tolerance::Abs(x), Tolerance::Ulps(x), Tolerance::Default { u }, Tolerance::Profile { profile: p, u }] {
+            let _ = t.validate();
+        }
+        let _ = phong_approx::angular::CosTable::<f64>::new(size);
+    }
+}

@@ -116,13 +116,18 @@ impl Tolerance {
     /// absolute and ulps tolerances, which name none).
     pub fn unit_roundoff(&self) -> Option<f64> {
         match *self {
+            Tolerance::Profile {
+                profile: crate::tolerance::profile::Profile::Fixed { .. },
+                ..
+            } => None,
             Tolerance::Default { u } | Tolerance::Profile { u, .. } => Some(u),
             _ => None,
         }
     }
 
     /// Checks that the tolerance means something: finite, non-negative numbers, a
-    /// unit roundoff in `(0, 2^-8]`, a fixed-point format the bounds take
+    /// unit roundoff in `(0, 2^-8]` (fixed point has none: its `u` is not read), a
+    /// fixed-point format the bounds take
     /// ([`crate::tolerance::profile::Profile::validate`]).
     ///
     /// # Errors
@@ -134,6 +139,10 @@ impl Tolerance {
             Tolerance::Abs(x) | Tolerance::Ulps(x) if !ok(x) => {
                 Err(format!("a tolerance must be a finite number ≥ 0 (got {x})"))
             }
+            Tolerance::Profile {
+                profile: profile @ crate::tolerance::profile::Profile::Fixed { .. },
+                ..
+            } => profile.validate(),
             Tolerance::Default { u } | Tolerance::Profile { u, .. }
                 if !(u > 0.0 && u <= 1.0 / 256.0) =>
             {

@@ -211,19 +211,25 @@ pub fn acos(x: &BigRational) -> BigRational {
 
 /// cos(x) for any rational `x` (radians), absolute error below 2^-[`bits`].
 ///
-/// An `|x|` beyond 4 is first reduced modulo 2π with π to as many more bits as `|x|`
+/// An `|x|` of 8 or more is first reduced modulo 2π with π to as many more bits as `|x|`
 /// has bits before the point (the reduction `x − 2πk` then loses nothing: its error is
 /// below 2^-(bits + 64)); the rest is halved below ½ and the series summed, each
 /// halving undone by `cos 2a = 2cos²a − 1`, which at most quadruples the error (at
-/// most three halvings after the reduction; the 64 guard bits cover them).
+/// most five halvings; the 64 guard bits cover them).
 pub fn cos(x: &BigRational) -> BigRational {
     let int_bits = i64::try_from(x.numer().bits()).unwrap_or(i64::MAX)
         - i64::try_from(x.denom().bits()).unwrap_or(0)
         + 1;
-    if int_bits > 2 {
+    if int_bits > 3 {
         let extra = u32::try_from(int_bits).unwrap_or(u32::MAX / 4) + 8;
-        return cos(&reduce_2pi(x, extra));
+        return cos_series(&reduce_2pi(x, extra));
     }
+    cos_series(x)
+}
+
+/// cos(x) by halving below ½, the series, and doubling back (|x| below about 16: at
+/// most five halvings, which the 64 guard bits cover).
+fn cos_series(x: &BigRational) -> BigRational {
     let mut xf = to_fx(x).abs();
     // Reduce |x| below 1/2 by halving; undo with cos 2a = 2cos²a − 1.
     let mut halvings = 0u32;

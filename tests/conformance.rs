@@ -823,7 +823,9 @@ fn check_profile_fixed_judges_a_span_unit() {
     let one_step = edge.cases.iter().find(|c| c.n == 1).expect("an n = 1 case");
     let r = reports.iter().find(|r| r.id == one_step.id).unwrap();
     assert!(
-        !r.pass && r.allowed.contains("fixed:3.16 profile's registers may overflow"),
+        !r.pass
+            && r.allowed
+                .contains("fixed:3.16 profile's registers may overflow"),
         "{}",
         r.allowed
     );

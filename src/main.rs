@@ -42,7 +42,32 @@ enum Command {
     Check(cli::check::CheckArgs),
 }
 
+/// Whether standard output was closed when the process started (`>&-`). Rust's runtime
+/// opens `/dev/null` on a closed descriptor 0–2 before `main`, so `main` alone cannot
+/// tell `>&-` from `> /dev/null`; this is recorded earlier, by a function in the
+/// `.init_array` section, which the C runtime runs before Rust's start-up code.
+static STDOUT_WAS_CLOSED: std::sync::atomic::AtomicBool = std::sync::atomic::AtomicBool::new(false);
+
+#[cfg(target_os = "linux")]
+#[used]
+#[link_section = ".init_array"]
+static RECORD_CLOSED_STDOUT: extern "C" fn() = record_closed_stdout;
+
+#[cfg(target_os = "linux")]
+extern "C" fn record_closed_stdout() {
+    // SAFETY: fcntl(F_GETFD) on descriptor 1 only reads its flags.
+    if unsafe { libc::fcntl(1, libc::F_GETFD) } == -1 {
+        STDOUT_WAS_CLOSED.store(true, std::sync::atomic::Ordering::Relaxed);
+    }
+}
+
 fn main() -> ExitCode {
+    if STDOUT_WAS_CLOSED.load(std::sync::atomic::Ordering::Relaxed) {
+        cli::report(
+            "standard output is closed: give it a file or a pipe (e.g. > out.txt, or > /dev/null to discard it)",
+        );
+        return ExitCode::from(2);
+    }
     let cli = match Cli::try_parse() {
         Ok(c) => c,
         Err(e) => return cli::clap_error(e),

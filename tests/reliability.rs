@@ -1552,22 +1552,26 @@ fn q4_phong_has_no_reference_bound_where_its_normals_nearly_cancel() {
     // Normals 10^-7 from opposite: q_min ≈ 2.5·10^-15, far below (250u)².
     assert_eq!(bound(Method::Phong, 2, 2.5e-15, u), None);
     assert!(bound(Method::Phong, 2, 0.5, u).is_some());
-    let v = span_values(&[
+    // The span of the report: N_b 2·10^-7 from opposite, exactly unit; span printed a
+    // reference bound of 5.97 there.
+    let o = run(&[
+        "span",
         "--method",
         "phong",
         "--na",
         "0,0,1",
         "--nb",
-        "1e-7,0,-1",
+        "20000000/100000000000001,0,-99999999999999/100000000000001",
         "--light",
         "2/3,1/3,2/3",
         "--steps",
         "2",
         "--scalar",
         "f32",
-        "--normalize",
     ]);
-    assert_eq!(v.len(), 3);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let j: Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert!(j["error_bound"]["reference"].is_null(), "{j}");
 }
 
 #[test]
@@ -1772,6 +1776,11 @@ fn q11_hostile_library_arguments_give_errors_not_panics() {
         .check_f32(|s| vec![0.0; s.n as usize + 1]);
     assert!(!r.is_ok());
     assert!(r.to_string().contains("angular-table512"), "{r}");
+    let r = Suite::set("nope").check_f32(|s| vec![0.0; s.n as usize + 1]);
+    assert!(
+        !r.is_ok() && r.to_string().contains("no published set 'nope'"),
+        "{r}"
+    );
     // A span that is not unit (normalized inputs of huge length): refused, not a panic.
     let big = |x: i64| BigRational::from_integer(BigInt::from(x) << 80u32);
     let z = BigRational::from_integer(0.into());
@@ -1921,9 +1930,19 @@ fn q15_messages_say_what_is_wrong() {
     let f = write(&d, "crlf.csv", &(long + &results_csv(&typical())));
     let o = run(&["check", "--vectors", &v, "--results", &f]);
     assert!(!stderr(&o).contains("bytes long"), "{}", stderr(&o));
-    // A closed standard output (`>&-`) cannot be told from `> /dev/null`: Rust's
-    // runtime opens /dev/null on a closed descriptor 0–2 before main (docs/conformance.md,
-    // "Limits and exit codes").
+    // A closed standard output (`>&-`) is an error, not silence; `> /dev/null` is not.
+    let sh = |redirect: &str| {
+        std::process::Command::new("sh")
+            .arg("-c")
+            .arg(format!(
+                "'{}' span --method gouraud --na 0,0,1 --nb 0,0,1 --light 0,0,1 --steps 2 {redirect}",
+                env!("CARGO_BIN_EXE_phong-approx")
+            ))
+            .output()
+            .unwrap()
+    };
+    refused(&sh(">&-"), "standard output is closed");
+    assert_eq!(code(&sh(">/dev/null")), 0);
 }
 
 #[test]

@@ -851,3 +851,55 @@ fn check_profile_fixed_judges_a_span_unit() {
     assert_eq!(code, 2);
     assert!(err.contains("is not fixed:M.F"), "{err}");
 }
+
+/// `fixed:M.F` up to the most fractional bits `check` reads exactly (51: a value below
+/// 4 is exact in `f64`): an exact fixed-point corrected-Euler unit (set-up rounded
+/// once to nearest, exact integer loop: the class `proofs/Fixed.v` proves) passes every
+/// published set, judged by its exact error, and the ε/(n+1) mutant fails one; 52 and
+/// more fractional bits are refused by the parser (issue 31: `fixed:3.60` judged a
+/// correct unit 3.76× over by comparing in `f64`).
+#[test]
+fn check_profile_fixed_is_exact_up_to_51_fractional_bits() {
+    use phong_approx::conformance::check::{check, Results, Tolerance};
+    use phong_approx::conformance::vectors::SETS;
+    use phong_approx::tolerance::profile::Profile;
+    use phong_approx::Method;
+    for f in [40u32, 48, 51] {
+        let tol = Tolerance::Profile {
+            profile: Profile::Fixed {
+                int_bits: 8,
+                frac_bits: f,
+            },
+            u: 0.0,
+        };
+        for mutant in [false, true] {
+            let mut failed = 0;
+            for set in SETS {
+                let file = committed(set);
+                let results: Results = file
+                    .cases
+                    .iter()
+                    .map(|c| (c.id.clone(), fixed_point_unit(c, f, mutant)))
+                    .collect();
+                let reports = check(
+                    file,
+                    &results,
+                    Method::CorrectedEuler,
+                    "corrected-euler",
+                    tol,
+                    false,
+                )
+                .unwrap();
+                failed += reports.iter().filter(|r| !r.pass).count();
+            }
+            assert_eq!(
+                failed == 0,
+                !mutant,
+                "F = {f}, mutant {mutant}: {failed} failing cases"
+            );
+        }
+    }
+    for bad in ["fixed:3.52", "fixed:3.60", "fixed:8.54"] {
+        assert!(bad.parse::<Profile>().is_err(), "{bad}");
+    }
+}

@@ -26,6 +26,11 @@
 use std::fmt;
 use std::str::FromStr;
 
+/// The most fractional bits of `fixed:M.F`: a fixed-point value below 4 (every
+/// method's values are) with `F ≤ 51` fractional bits is exact in `f64`, as which
+/// `check` reads results, so its verdict is on the exact error.
+pub const MAX_FRAC_BITS: u32 = 51;
+
 /// An arithmetic profile (`docs/float.md` §18.1).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Profile {
@@ -77,9 +82,10 @@ impl Profile {
 }
 
 impl Profile {
-    /// Checks that the profile is one the bounds take: a fixed-point format of 1 to 64
-    /// integer bits and 1 to 62 fractional bits (what `fixed:M.F` parses); the float
-    /// profiles always are.
+    /// Checks that the profile is one the bounds take and `check` can judge: a
+    /// fixed-point format of 1 to 64 integer bits and 1 to 51 fractional bits (what
+    /// `fixed:M.F` parses: results are read as `f64`, which holds a fixed-point value
+    /// below 4 exactly only up to 51 fractional bits); the float profiles always are.
     ///
     /// # Errors
     /// A one-line message naming the widths.
@@ -88,8 +94,8 @@ impl Profile {
             Profile::Fixed {
                 int_bits,
                 frac_bits,
-            } if !((1..=64).contains(&int_bits) && (1..=62).contains(&frac_bits)) => Err(format!(
-                "fixed point needs 1 ≤ M ≤ 64 integer bits and 1 ≤ F ≤ 62 fractional bits (got M = {int_bits}, F = {frac_bits})"
+            } if !((1..=64).contains(&int_bits) && (1..=MAX_FRAC_BITS).contains(&frac_bits)) => Err(format!(
+                "fixed point needs 1 ≤ M ≤ 64 integer bits and 1 ≤ F ≤ {MAX_FRAC_BITS} fractional bits (got M = {int_bits}, F = {frac_bits})"
             )),
             _ => Ok(()),
         }
@@ -110,14 +116,14 @@ impl FromStr for Profile {
             let bits = q
                 .split_once('.')
                 .and_then(|(m, f)| Some((m.parse::<u32>().ok()?, f.parse::<u32>().ok()?)))
-                .filter(|&(m, f)| (1..=64).contains(&m) && (1..=62).contains(&f) && m + f <= 128);
+                .filter(|&(m, f)| (1..=64).contains(&m) && (1..=MAX_FRAC_BITS).contains(&f));
             return match bits {
                 Some((int_bits, frac_bits)) => Ok(Profile::Fixed {
                     int_bits,
                     frac_bits,
                 }),
                 None => Err(format!(
-                    "'{}' is not fixed:M.F with 1 ≤ M ≤ 64 integer bits and 1 ≤ F ≤ 62 fractional bits (e.g. fixed:16.16)",
+                    "'{}' is not fixed:M.F with 1 ≤ M ≤ 64 integer bits and 1 ≤ F ≤ {MAX_FRAC_BITS} fractional bits (e.g. fixed:16.16; results are read as f64, exact up to 51 fractional bits)",
                     crate::error::shown(s)
                 )),
             };
@@ -144,7 +150,7 @@ impl FromStr for Profile {
 /// magnitudes below `2^(m−1)` (`docs/float.md` §14).
 pub fn fixed_bound(method: crate::Method, n: u32, int_bits: u32, frac_bits: u32) -> Option<f64> {
     use crate::Method;
-    if n == 0 || !(1..=64).contains(&int_bits) || !(1..=62).contains(&frac_bits) {
+    if n == 0 || !(1..=64).contains(&int_bits) || !(1..=MAX_FRAC_BITS).contains(&frac_bits) {
         return None;
     }
     let h = 2f64.powi(-(frac_bits as i32) - 1);
@@ -615,6 +621,9 @@ mod tests {
             "fixed:16.0",
             "fixed:a.b",
             "fixed:16.63",
+            "fixed:3.60",
+            "fixed:8.54",
+            "fixed:1.52",
         ] {
             assert!(bad.parse::<Profile>().is_err(), "{bad}");
         }

@@ -1641,3 +1641,72 @@ fn adaptive_threshold_accepts_either_method() {
         }
     }
 }
+
+/// One source for the constants (issue 31): every theorem the checker's proved bounds
+/// name (`tolerance::profile::proved`) is a `Theorem` of `proofs/Profiles.v` whose
+/// statement bounds the error by exactly `(α·n + β)·2^-p` with the same `α`, `β`,
+/// largest `n` and unit roundoff as the checker applies — parsed from the `.v` file,
+/// so a changed theorem fails here until the tolerance follows it.
+#[test]
+fn proved_constants_are_the_theorems_statements() {
+    use phong_approx::tolerance::profile::proved;
+    let text = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("proofs/Profiles.v"),
+    )
+    .unwrap();
+    // "a / b" as f64.
+    let frac = |s: &str| -> f64 {
+        let (a, b) = s.split_once('/').unwrap_or((s, "1"));
+        a.trim().parse::<f64>().unwrap() / b.trim().parse::<f64>().unwrap()
+    };
+    // (α, β, max n, exponent p) of a theorem's statement.
+    let statement = |name: &str| -> (f64, f64, u32, i32) {
+        let start = text
+            .find(&format!("Theorem {name} "))
+            .or_else(|| text.find(&format!("Theorem {name}\n")))
+            .unwrap_or_else(|| panic!("no Theorem {name} in proofs/Profiles.v"));
+        let body = &text[start..start + text[start..].find("Proof.").unwrap()];
+        let max_n = if body.contains("16777216") {
+            1 << 24
+        } else {
+            let at = body.find("n s <= ").unwrap() + "n s <= ".len();
+            body[at..]
+                .split(|c: char| !c.is_ascii_digit())
+                .next()
+                .unwrap()
+                .parse()
+                .unwrap()
+        };
+        let bound = &body[body.rfind("<=").unwrap() + 2..];
+        let (coef, unit) = bound.split_once("* bpow radix2 (-").unwrap();
+        let p: i32 = unit.split(')').next().unwrap().parse().unwrap();
+        let coef = coef.trim().trim_start_matches('(').trim_end_matches(')').trim();
+        let (alpha, beta) = match coef.split_once("* INR (n s) +") {
+            Some((a, b)) => (frac(a), frac(b)),
+            None => (0.0, frac(coef)),
+        };
+        (alpha, beta, max_n, p)
+    };
+    let mut seen = 0;
+    for m in Method::ALL {
+        for profile in [Profile::Ieee, Profile::Shader] {
+            for (u, p) in [(2f64.powi(-24), 24), (2f64.powi(-53), 53)] {
+                for t in proved(m, profile, u).into_iter().flatten() {
+                    let (alpha, beta, max_n, exp) = statement(t.theorem);
+                    assert_eq!(exp, p, "{}: unit roundoff", t.theorem);
+                    assert!(
+                        (t.alpha - alpha).abs() <= 1e-12 * alpha.max(1.0)
+                            && (t.beta - beta).abs() <= 1e-12 * beta,
+                        "{}: the checker applies ({}, {}), the theorem states ({alpha}, {beta})",
+                        t.theorem,
+                        t.alpha,
+                        t.beta
+                    );
+                    assert_eq!(t.max_n, max_n, "{}: largest n", t.theorem);
+                    seen += 1;
+                }
+            }
+        }
+    }
+    assert!(seen >= 10, "only {seen} proved bounds");
+}

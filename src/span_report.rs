@@ -250,6 +250,11 @@ pub struct SpanReport {
     /// For `f32` and `f64` runs: the bounds per profile.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub error_bound: Option<ErrorBounds>,
+    /// How each of those bounds is known: `proved (theorem)` or `derived (section)`
+    /// (`None` where there is no bound), from the one table of labels
+    /// ([`crate::tolerance::profile::status`]).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub error_bound_status: Option<ErrorBounds>,
     /// The cosine table's size, for the tabled angular method.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub table_size: Option<u32>,
@@ -287,6 +292,7 @@ pub fn span_report(r: &Request) -> Result<SpanReport, ReportError> {
         levels: o.levels,
         fractions: o.fractions,
         error_bound: u.map(|u| error_bounds(r, u)),
+        error_bound_status: u.map(|u| error_bound_status(r, u)),
         table_size: match r.method {
             Method::AngularTable(size) => Some(size),
             _ => None,
@@ -473,6 +479,49 @@ fn error_bounds(r: &Request, u: f64) -> ErrorBounds {
         reference: bound(Profile::Reference),
         ieee: bound(Profile::Ieee),
         shader: (u == f64::from(f32::EPSILON) / 2.0).then(|| bound(Profile::Shader)),
+    }
+}
+
+/// The labels of [`error_bounds`]' bounds: the reference profile's from the
+/// catalogue (Gouraud and corrected Euler proved in this crate's order,
+/// `proofs/Float.v`; the others derived in their `docs/float.md` section), the
+/// acceptance profiles' from [`crate::tolerance::profile::status`]; `None` where no
+/// bound is printed.
+fn error_bound_status(r: &Request, u: f64) -> ErrorBounds {
+    use crate::tolerance::profile::{status, Profile, Status};
+    let printed = error_bounds(r, u);
+    let label = |p: Profile, shown: &Option<String>| -> Option<String> {
+        shown.as_ref()?;
+        let s = match p {
+            Profile::Reference => {
+                let b32 = u == f64::from(f32::EPSILON) / 2.0;
+                match r.method {
+                    Method::Gouraud if r.n <= 4096 && b32 => {
+                        Status::Proved("float_gouraud_binary32")
+                    }
+                    Method::Gouraud if r.n <= 4096 => Status::Proved("float_gouraud_binary64"),
+                    Method::CorrectedEuler if r.n <= 4096 && b32 => {
+                        Status::Proved("float_corrected_euler_binary32")
+                    }
+                    Method::CorrectedEuler if r.n <= 4096 => {
+                        Status::Proved("float_corrected_euler_binary64")
+                    }
+                    m => {
+                        return Some(format!(
+                            "derived (docs/float.md {})",
+                            m.info().float_section
+                        ))
+                    }
+                }
+            }
+            p => status(r.method, p, u)?,
+        };
+        Some(s.label())
+    };
+    ErrorBounds {
+        reference: label(Profile::Reference, &printed.reference),
+        ieee: label(Profile::Ieee, &printed.ieee),
+        shader: printed.shader.as_ref().map(|s| label(Profile::Shader, s)),
     }
 }
 

@@ -1680,7 +1680,11 @@ fn proved_constants_are_the_theorems_statements() {
         let bound = &body[body.rfind("<=").unwrap() + 2..];
         let (coef, unit) = bound.split_once("* bpow radix2 (-").unwrap();
         let p: i32 = unit.split(')').next().unwrap().parse().unwrap();
-        let coef = coef.trim().trim_start_matches('(').trim_end_matches(')').trim();
+        let coef = coef
+            .trim()
+            .trim_start_matches('(')
+            .trim_end_matches(')')
+            .trim();
         let (alpha, beta) = match coef.split_once("* INR (n s) +") {
             Some((a, b)) => (frac(a), frac(b)),
             None => (0.0, frac(coef)),

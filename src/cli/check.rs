@@ -31,16 +31,14 @@ pub struct CheckArgs {
     #[arg(long, value_name = "TYPE", value_enum, default_value = "f32")]
     pub precision: Precision,
     /// The arithmetic profile the results are judged by (docs/float.md §18): ieee
-    /// (the default: IEEE f32/f64 with round to nearest, any order, FMA, reciprocals;
-    /// proved for Gouraud, corrected Euler and Euler, derived for Phong, Duff,
-    /// symmetric Phong and adaptive), shader (Vulkan/WGSL 32-bit rules: truncation,
-    /// 2.5-ulp division, flushed denormals; the same methods, f32; proved for Gouraud
-    /// and corrected Euler, derived for the others, Euler included: its theorem does
-    /// not cover ·(1/n)), reference (this crate's own operation order, round to
+    /// (the default: IEEE f32/f64 with round to nearest, any order, FMA, reciprocals),
+    /// shader (Vulkan/WGSL 32-bit rules: truncation, 2.5-ulp division, flushed
+    /// denormals; f32), reference (this crate's own operation order, round to
     /// nearest, no FMA: the bounds of every method, angular and the related methods
-    /// included) or fixed:M.F (a set-up rounded once to F fractional bits, an exact
-    /// integer loop in M-bit registers; proved for Gouraud and corrected Euler).
+    /// included) or fixed:M.F (a set-up rounded once to nearest at F ≤ 51 fractional
+    /// bits, an exact integer loop in M-bit registers).
     #[arg(long, value_name = "NAME", default_value = "ieee",
+          long_help = super::profile_help(),
           value_parser = |s: &str| s.parse::<Profile>())]
     pub profile: Profile,
     /// Check the specular expectations (max(0, method(N·H))^s) instead of diffuse.

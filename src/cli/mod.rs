@@ -286,6 +286,15 @@ pub fn one_line(s: &str) -> String {
     out
 }
 
+/// `check --profile`'s long help: the profiles, then how each method's bound is known
+/// under each, from the one table of labels (`tolerance::profile::status_summary`).
+pub fn profile_help() -> String {
+    format!(
+        "The arithmetic profile the results are judged by (docs/float.md §18): ieee (the default: IEEE f32/f64 with round to nearest, any order, FMA, reciprocals), shader (Vulkan/WGSL 32-bit rules: truncation, 2.5-ulp division, flushed denormals; f32), reference (this crate's own operation order, round to nearest, no FMA: the bounds of every method, angular and the related methods included) or fixed:M.F (a set-up rounded once to nearest at F ≤ 51 fractional bits, an exact integer loop in M-bit registers). Bounds: {}; reference: every method, proved for gouraud and corrected-euler in this crate's order, derived for the others.",
+        phong_approx::tolerance::profile::status_summary()
+    )
+}
+
 /// `--method`'s help: every method of the catalogue by name, in its order.
 pub fn methods_help() -> String {
     let names: Vec<String> = phong_approx::Method::ALL

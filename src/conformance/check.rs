@@ -55,7 +55,8 @@ pub enum Tolerance {
         /// The unit roundoff of the implementation's arithmetic.
         u: f64,
     },
-    /// The bound proved for every implementation of an arithmetic profile
+    /// The bound for every implementation of an arithmetic profile — proved or derived,
+    /// as [`crate::tolerance::profile::status`] labels it per method and format
     /// ([`crate::tolerance::profile`], `docs/float.md` §18); `Reference` is
     /// [`Tolerance::Default`]. A case with no proved bound for the profile fails,
     /// naming why.

@@ -50,8 +50,10 @@ pub enum Profile {
     /// `profile_shader_euler_binary32` proves it for one 2.5-ulp division).
     Shader,
     /// Fixed point `Qm.f` as a hardware span unit runs it (`fixed:m.f`): the set-up
-    /// (`p_a`, `t_0`, `ds`, or Gouraud's `dp`) computed exactly or far more precisely
-    /// and rounded once to `f` fractional bits, then the loop in integer additions,
+    /// (`p_a`, `t_0`, `ds`, or Gouraud's `dp`) computed exactly and rounded once **to
+    /// nearest** at `f ≤` [`MAX_FRAC_BITS`] fractional bits (the theorems' hypothesis
+    /// `|e| ≤ 2^-(f+1)`: a truncated set-up, off by up to `2^-f`, is not covered),
+    /// then the loop in integer additions,
     /// exact, in registers of `m` integer bits (the sign included) that must not
     /// overflow (`docs/float.md` §14, `proofs/Fixed.v`).
     Fixed {
@@ -511,6 +513,91 @@ pub enum Status {
     /// A written derivation (the `docs/float.md` section), attacked by the searches of
     /// `tests/profiles.rs`.
     Derived(&'static str),
+}
+
+impl Status {
+    /// `proved (theorem)` or `derived (section)`, as the docs and `span` label a bound.
+    pub fn label(&self) -> String {
+        match self {
+            Status::Proved(t) => format!("proved ({t})"),
+            Status::Derived(d) => format!("derived ({d})"),
+        }
+    }
+}
+
+/// The columns of [`status_table`]: the profiles and formats with bounds.
+const COLUMNS: [(&str, Profile, f64); 4] = [
+    ("ieee, binary32", Profile::Ieee, 1.0 / 16_777_216.0),
+    ("ieee, binary64", Profile::Ieee, f64::EPSILON / 2.0),
+    ("shader, binary32", Profile::Shader, 1.0 / 16_777_216.0),
+    (
+        "fixed:M.F",
+        Profile::Fixed {
+            int_bits: 16,
+            frac_bits: 16,
+        },
+        0.0,
+    ),
+];
+
+/// How each method's bound is known under each profile, as a Markdown table made from
+/// [`status`] (the one source of the labels: docs/conformance.md holds this table,
+/// `tests/coverage.rs` checks it is the current one): a row per method with a bound
+/// under some profile.
+pub fn status_table() -> String {
+    let mut s = String::from("| method |");
+    for (name, ..) in COLUMNS {
+        s += &format!(" {name} |");
+    }
+    s += "\n|---|";
+    s += &"---|".repeat(COLUMNS.len());
+    s += "\n";
+    for m in crate::Method::ALL {
+        let cells: Vec<Option<Status>> = COLUMNS.iter().map(|&(_, p, u)| status(m, p, u)).collect();
+        if cells.iter().all(Option::is_none) {
+            continue;
+        }
+        s += &format!("| `{}` |", m.name());
+        for c in cells {
+            let label = c.map_or("none".to_string(), |c| match c {
+                Status::Proved(t) => format!("proved (`{t}`)"),
+                Status::Derived(d) => format!("derived ({d})"),
+            });
+            s += &format!(" {label} |");
+        }
+        s += "\n";
+    }
+    s
+}
+
+/// One line per profile naming the methods whose bound is proved and those whose
+/// bound is derived (the `--profile` help of `check`, from [`status`]).
+pub fn status_summary() -> String {
+    let mut parts = Vec::new();
+    for (name, p, u) in COLUMNS {
+        let (mut proved, mut derived) = (Vec::new(), Vec::new());
+        for m in crate::Method::ALL {
+            match status(m, p, u) {
+                Some(Status::Proved(_)) => proved.push(m.name().into_owned()),
+                Some(Status::Derived(_)) => derived.push(m.name().into_owned()),
+                None => {}
+            }
+        }
+        let mut line = format!("{name}: proved for {}", list(&proved));
+        if !derived.is_empty() {
+            line += &format!(", derived for {}", list(&derived));
+        }
+        parts.push(line);
+    }
+    parts.join("; ")
+}
+
+fn list(names: &[String]) -> String {
+    if names.is_empty() {
+        "none".into()
+    } else {
+        names.join(", ")
+    }
 }
 
 /// Whether and how `method` has a bound under `profile` in the format of unit

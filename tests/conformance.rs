@@ -517,7 +517,21 @@ fn every_case_states_why_it_is_there() {
     assert!(committed("paper")
         .cases
         .iter()
-        .all(|c| c.comment.contains("60°") || c.comment.contains("Figures 1–3")));
+        .all(|c| c.comment.contains("60°")
+            || c.comment.contains("Figures 1–3")
+            || c.comment.starts_with("adaptive threshold")));
+    // The adaptive test on both sides of its threshold, in every set (issue 31).
+    for set in ["typical", "edge", "paper"] {
+        let f = committed(set);
+        for d in ["gouraud", "corrected-euler"] {
+            assert!(
+                f.cases
+                    .iter()
+                    .any(|c| c.decision == d && c.comment.starts_with("adaptive threshold")),
+                "{set} has no threshold case deciding {d}"
+            );
+        }
+    }
 }
 
 #[test]
@@ -664,13 +678,13 @@ fn check_reports_for_other_ci_systems() {
     let doc = roxmltree::Document::parse(&text).expect("JUnit XML parses");
     let suites = doc.root_element();
     assert_eq!(suites.tag_name().name(), "testsuites");
-    assert_eq!(suites.attribute("tests"), Some("40"));
+    assert_eq!(suites.attribute("tests"), Some("42"));
     assert_eq!(suites.attribute("failures"), Some("1"));
     let cases: Vec<_> = doc
         .descendants()
         .filter(|n| n.has_tag_name("testcase"))
         .collect();
-    assert_eq!(cases.len(), 40);
+    assert_eq!(cases.len(), 42);
     let failed: Vec<_> = cases
         .iter()
         .filter(|c| c.children().any(|f| f.has_tag_name("failure")))
@@ -698,7 +712,7 @@ fn check_reports_for_other_ci_systems() {
     assert_eq!(code, 1);
     let v: serde_json::Value =
         serde_json::from_str(&std::fs::read_to_string(&json_path).unwrap()).unwrap();
-    assert_eq!(v["tests"], 40);
+    assert_eq!(v["tests"], 42);
     assert_eq!(v["failures"], 1);
     let c = v["cases"]
         .as_array()

@@ -94,6 +94,32 @@ fn recurrence(p0: f32, t0: f32, ds: f32, n: u32) -> Vec<f64> {
     out
 }
 
+/// The adaptive scheme (eqs. 23–24, `K_d = 1`) in `f32`, with `gouraud(δ)` deciding
+/// for Gouraud, the step `⌊m⌋ + step_plus` (the paper's is `+ 1`), and the ε/(n+1)
+/// mutation in the corrected-Euler branch when `eps_bug`.
+fn adaptive(c: &Case, gouraud: fn(f32) -> bool, step_plus: i64, eps_bug: bool) -> Vec<f64> {
+    let s = setup(c, eps_bug, false);
+    let m = (s.dp - s.t0) / s.ds;
+    let trunc = if m.is_finite() {
+        m.trunc() as i64
+    } else {
+        i64::MAX / 2
+    };
+    let j = (trunc + step_plus).clamp(0, i64::from(c.n)) as f32;
+    let delta = j * s.dp - (j * s.t0 + (j * j - j) / 2.0 * s.ds);
+    if s.ds == 0.0 || gouraud(delta) {
+        let mut g = s.pa;
+        let mut out = vec![f64::from(g)];
+        for _ in 0..c.n {
+            g += s.dp;
+            out.push(f64::from(g));
+        }
+        out
+    } else {
+        recurrence(s.pa, s.t0, s.ds, c.n)
+    }
+}
+
 /// A wrong implementation of `method`.
 struct Mutant {
     name: &'static str,
@@ -101,7 +127,37 @@ struct Mutant {
     run: fn(&Case) -> Vec<f64>,
 }
 
-const MUTANTS: [Mutant; 5] = [
+const MUTANTS: [Mutant; 11] = [
+    Mutant {
+        name: "adaptive: |256δ| < 1 for |255δ| < 1",
+        method: Method::Adaptive,
+        run: |c| adaptive(c, |d| (256.0 * d).abs() < 1.0, 1, false),
+    },
+    Mutant {
+        name: "adaptive: |255δ| < 2",
+        method: Method::Adaptive,
+        run: |c| adaptive(c, |d| (255.0 * d).abs() < 2.0, 1, false),
+    },
+    Mutant {
+        name: "adaptive: |128δ| < 1",
+        method: Method::Adaptive,
+        run: |c| adaptive(c, |d| (128.0 * d).abs() < 1.0, 1, false),
+    },
+    Mutant {
+        name: "adaptive: δ halved",
+        method: Method::Adaptive,
+        run: |c| adaptive(c, |d| (255.0 * d / 2.0).abs() < 1.0, 1, false),
+    },
+    Mutant {
+        name: "adaptive: always Gouraud",
+        method: Method::Adaptive,
+        run: |c| adaptive(c, |_| true, 1, false),
+    },
+    Mutant {
+        name: "adaptive: δ at step ⌊m⌋ (eq. 24 without + 1)",
+        method: Method::Adaptive,
+        run: |c| adaptive(c, |d| (255.0 * d).abs() < 1.0, 0, false),
+    },
     Mutant {
         name: "ε/(n+1) for ε/n (eqs. 16–17)",
         method: Method::CorrectedEuler,
@@ -213,6 +269,11 @@ fn every_mutant_is_rejected_under_every_profile_on_every_set() {
 fn the_unmutated_harness_passes() {
     let good = [
         Mutant {
+            name: "adaptive",
+            method: Method::Adaptive,
+            run: |c| adaptive(c, |d| (255.0 * d).abs() < 1.0, 1, false),
+        },
+        Mutant {
             name: "corrected Euler",
             method: Method::CorrectedEuler,
             run: |c| {
@@ -239,6 +300,14 @@ fn the_unmutated_harness_passes() {
         let f = committed(set);
         for m in &good {
             for profile in profiles() {
+                // A profile without a bound for the method (the adaptive scheme in
+                // fixed point) refuses every case: nothing to pass.
+                let u = f64::from(f32::EPSILON) / 2.0;
+                if profile != Profile::Reference
+                    && phong_approx::tolerance::profile::status(m.method, profile, u).is_none()
+                {
+                    continue;
+                }
                 let (failed, total, _) = verdict(m, &f, profile);
                 assert_eq!(failed, 0, "{} {profile} {set}: {failed}/{total}", m.name);
             }

@@ -879,6 +879,8 @@ fn diffuse_bound(c: &Case, method: Method, tol: Tolerance) -> Option<f64> {
 /// subtraction's rounding: `e_δ = 1.01·(b_G + b_CE) + 2u`.
 fn adaptive_either(c: &Case, got: &[f64], tol: Tolerance, u: f64) -> Option<CaseReport> {
     let delta: f64 = c.delta.parse().ok()?;
+    // Only where the profile bounds the adaptive scheme at all (not fixed point).
+    diffuse_bound(c, Method::Adaptive, tol)?;
     let (bg, bce) = (
         diffuse_bound(c, Method::Gouraud, tol)?,
         diffuse_bound(c, Method::CorrectedEuler, tol)?,

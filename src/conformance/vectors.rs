@@ -17,7 +17,7 @@ use serde::{Deserialize, Serialize};
 pub const MAX_CASE_STEPS: u32 = 65_536;
 
 /// Version of the vector format (semantic: a major change breaks readers).
-pub const FORMAT_VERSION: &str = "1.1.0";
+pub const FORMAT_VERSION: &str = "1.2.0";
 
 /// Significant digits of the expected values.
 pub const DIGITS: usize = 30;
@@ -643,6 +643,36 @@ fn typical() -> Vec<CaseSpec> {
             h,
         ));
     }
+    // The adaptive test on both sides of its threshold (eq. 24, K_d = 1), normals
+    // about 10° apart, 3·10^-3 from it (outside what f32 rounding can move δ by at
+    // n = 2 under every profile, inside what |256δ| < 1 or |255δ| < 2 changes): an
+    // implementation with the wrong threshold, or that always picks one method, fails
+    // this set too.
+    let (na, l) = (stereo(100, -50, 1000), stereo(-200, 150, 1000));
+    for (k, (a, comment)) in [
+        (
+            209_735_223,
+            "adaptive threshold: |255δ| = 1 + 3·10^-3 (corrected Euler)",
+        ),
+        (
+            209_380_164,
+            "adaptive threshold: |255δ| = 1 − 3·10^-3 (Gouraud)",
+        ),
+    ]
+    .into_iter()
+    .enumerate()
+    {
+        let nb = stereo(a, -50_000_000, 1_000_000_000);
+        cases.push(make_case(
+            format!("typical-{:03}", 41 + k),
+            comment,
+            na.clone(),
+            nb,
+            l.clone(),
+            2,
+            None,
+        ));
+    }
     cases
 }
 
@@ -769,6 +799,66 @@ fn edge() -> Vec<CaseSpec> {
             oblique.clone(),
             4096,
         ),
+        // The adaptive test (eq. 24, K_d = 1) on both sides of its threshold: N_b =
+        // (11/61, 0, 60/61), L in the x–z plane with |255δ| = 1 ± 3·10^-3 (outside f32's
+        // rounding of δ), 1 ± 10^-3, 1 ± 10^-6, and 1 ± a few 10^-15, where f32 and f64
+        // runs may pick either method (check then accepts either, docs/float.md §10).
+        (
+            "adaptive threshold: |255δ| = 1 + 3·10^-3 (corrected Euler)",
+            up.clone(),
+            stereo(1, 0, 11),
+            stereo(182_465_060, 0, 1_000_000_000),
+            2,
+        ),
+        (
+            "adaptive threshold: |255δ| = 1 − 3·10^-3 (Gouraud)",
+            up.clone(),
+            stereo(1, 0, 11),
+            stereo(193_237_157, 0, 1_000_000_000),
+            2,
+        ),
+        (
+            "adaptive threshold: |255δ| = 1 + 10^-3 (corrected Euler)",
+            up.clone(),
+            stereo(1, 0, 11),
+            stereo(186_138_483, 0, 1_000_000_000),
+            2,
+        ),
+        (
+            "adaptive threshold: |255δ| = 1 − 10^-3 (Gouraud)",
+            up.clone(),
+            stereo(1, 0, 11),
+            stereo(189_727_128, 0, 1_000_000_000),
+            2,
+        ),
+        (
+            "adaptive threshold: |255δ| = 1 + 10^-6 (corrected Euler)",
+            up.clone(),
+            stereo(1, 0, 11),
+            stereo(187_941_205, 0, 1_000_000_000),
+            2,
+        ),
+        (
+            "adaptive threshold: |255δ| = 1 − 10^-6 (Gouraud)",
+            up.clone(),
+            stereo(1, 0, 11),
+            stereo(187_944_794, 0, 1_000_000_000),
+            2,
+        ),
+        (
+            "adaptive threshold: |255δ| = 1 + 1.9·10^-15, within float rounding (either method)",
+            up.clone(),
+            stereo(1, 0, 11),
+            stereo(187_942_999_602_488_765, 0, 1_000_000_000_000_000_000),
+            2,
+        ),
+        (
+            "adaptive threshold: |255δ| = 1 − 4.1·10^-15, within float rounding (either method)",
+            up.clone(),
+            stereo(1, 0, 11),
+            stereo(187_942_999_602_499_517, 0, 1_000_000_000_000_000_000),
+            2,
+        ),
     ];
     list.into_iter()
         .enumerate()
@@ -822,8 +912,29 @@ fn paper() -> Vec<CaseSpec> {
             "normals 60° apart, 1000 steps",
             na,
             nb,
-            l,
+            l.clone(),
             1000,
+            None,
+        ),
+        // The adaptive test (eq. 24, K_d = 1) on both sides of its threshold, with the
+        // reproduction's light: normals about 11° apart, 3·10^-3 from the threshold,
+        // n = 2 (f32's rounding of δ grows with n: at n = 100 it reaches 6·10^-3).
+        make_case(
+            "paper-005".into(),
+            "adaptive threshold: |255δ| = 1 + 3·10^-3 (corrected Euler)",
+            stereo(-49_317_329, 0, 1_000_000_000),
+            stereo(49_317_329, 0, 1_000_000_000),
+            l.clone(),
+            2,
+            None,
+        ),
+        make_case(
+            "paper-006".into(),
+            "adaptive threshold: |255δ| = 1 − 3·10^-3 (Gouraud)",
+            stereo(-49_168_155, 0, 1_000_000_000),
+            stereo(49_168_155, 0, 1_000_000_000),
+            l,
+            2,
             None,
         ),
     ]

@@ -114,7 +114,7 @@ fn wrong_lengths_and_non_finite_values_are_named() {
         .method(Method::Phong)
         .tolerance(Tolerance::Levels(1))
         .check_f64(|s| vec![f64::NAN; s.n as usize + 1]);
-    assert_eq!(r.failures().len(), 40);
+    assert_eq!(r.failures().len(), 42);
     assert!(r.to_string().contains("off by    = not finite"), "{r}");
 }
 

@@ -94,6 +94,17 @@ fn recurrence(p0: f32, t0: f32, ds: f32, n: u32) -> Vec<f64> {
     out
 }
 
+/// Gouraud, `g += dp`, in `f32`.
+fn gouraud_run(s: &Setup, n: u32) -> Vec<f64> {
+    let mut g = s.pa;
+    let mut out = vec![f64::from(g)];
+    for _ in 0..n {
+        g += s.dp;
+        out.push(f64::from(g));
+    }
+    out
+}
+
 /// The adaptive scheme (eqs. 23–24, `K_d = 1`) in `f32`, with `gouraud(δ)` deciding
 /// for Gouraud, the step `⌊m⌋ + step_plus` (the paper's is `+ 1`), and the ε/(n+1)
 /// mutation in the corrected-Euler branch when `eps_bug`.
@@ -108,13 +119,7 @@ fn adaptive(c: &Case, gouraud: fn(f32) -> bool, step_plus: i64, eps_bug: bool) -
     let j = (trunc + step_plus).clamp(0, i64::from(c.n)) as f32;
     let delta = j * s.dp - (j * s.t0 + (j * j - j) / 2.0 * s.ds);
     if s.ds == 0.0 || gouraud(delta) {
-        let mut g = s.pa;
-        let mut out = vec![f64::from(g)];
-        for _ in 0..c.n {
-            g += s.dp;
-            out.push(f64::from(g));
-        }
-        out
+        gouraud_run(&s, c.n)
     } else {
         recurrence(s.pa, s.t0, s.ds, c.n)
     }
@@ -284,16 +289,7 @@ fn the_unmutated_harness_passes() {
         Mutant {
             name: "Gouraud",
             method: Method::Gouraud,
-            run: |c| {
-                let s = setup(c, false, false);
-                let mut g = s.pa;
-                let mut out = vec![f64::from(g)];
-                for _ in 0..c.n {
-                    g += s.dp;
-                    out.push(f64::from(g));
-                }
-                out
-            },
+            run: |c| gouraud_run(&setup(c, false, false), c.n),
         },
     ];
     for set in SETS {

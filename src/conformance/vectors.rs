@@ -799,69 +799,60 @@ fn edge() -> Vec<CaseSpec> {
             oblique.clone(),
             4096,
         ),
-        // The adaptive test (eq. 24, K_d = 1) on both sides of its threshold: N_b =
-        // (11/61, 0, 60/61), L in the x–z plane with |255δ| = 1 ± 3·10^-3 (outside f32's
-        // rounding of δ), 1 ± 10^-3, 1 ± 10^-6, and 1 ± a few 10^-15, where f32 and f64
-        // runs may pick either method (check then accepts either, docs/float.md §10).
+    ];
+    // The adaptive test (eq. 24, K_d = 1) on both sides of its threshold: N_b =
+    // (11/61, 0, 60/61), L in the x–z plane, stereographic parameter a/d, with
+    // |255δ| = 1 ± 3·10^-3 (outside f32's rounding of δ), 1 ± 10^-3, 1 ± 10^-6, and
+    // 1 ± a few 10^-15, where f32 and f64 runs may pick either method (check then
+    // accepts either, docs/float.md §10).
+    let threshold: [(&'static str, i64, i64); 8] = [
         (
             "adaptive threshold: |255δ| = 1 + 3·10^-3 (corrected Euler)",
-            up.clone(),
-            stereo(1, 0, 11),
-            stereo(182_465_060, 0, 1_000_000_000),
-            2,
+            182_465_060,
+            1_000_000_000,
         ),
         (
             "adaptive threshold: |255δ| = 1 − 3·10^-3 (Gouraud)",
-            up.clone(),
-            stereo(1, 0, 11),
-            stereo(193_237_157, 0, 1_000_000_000),
-            2,
+            193_237_157,
+            1_000_000_000,
         ),
         (
             "adaptive threshold: |255δ| = 1 + 10^-3 (corrected Euler)",
-            up.clone(),
-            stereo(1, 0, 11),
-            stereo(186_138_483, 0, 1_000_000_000),
-            2,
+            186_138_483,
+            1_000_000_000,
         ),
         (
             "adaptive threshold: |255δ| = 1 − 10^-3 (Gouraud)",
-            up.clone(),
-            stereo(1, 0, 11),
-            stereo(189_727_128, 0, 1_000_000_000),
-            2,
+            189_727_128,
+            1_000_000_000,
         ),
         (
             "adaptive threshold: |255δ| = 1 + 10^-6 (corrected Euler)",
-            up.clone(),
-            stereo(1, 0, 11),
-            stereo(187_941_205, 0, 1_000_000_000),
-            2,
+            187_941_205,
+            1_000_000_000,
         ),
         (
             "adaptive threshold: |255δ| = 1 − 10^-6 (Gouraud)",
-            up.clone(),
-            stereo(1, 0, 11),
-            stereo(187_944_794, 0, 1_000_000_000),
-            2,
+            187_944_794,
+            1_000_000_000,
         ),
         (
             "adaptive threshold: |255δ| = 1 + 1.9·10^-15, within float rounding (either method)",
-            up.clone(),
-            stereo(1, 0, 11),
-            stereo(187_942_999_602_488_765, 0, 1_000_000_000_000_000_000),
-            2,
+            187_942_999_602_488_765,
+            1_000_000_000_000_000_000,
         ),
         (
             "adaptive threshold: |255δ| = 1 − 4.1·10^-15, within float rounding (either method)",
-            up.clone(),
-            stereo(1, 0, 11),
-            stereo(187_942_999_602_499_517, 0, 1_000_000_000_000_000_000),
-            2,
+            187_942_999_602_499_517,
+            1_000_000_000_000_000_000,
         ),
     ];
-    list.into_iter()
-        .enumerate()
+    let list = list.into_iter().chain(
+        threshold
+            .into_iter()
+            .map(|(c, a, d)| (c, up.clone(), stereo(1, 0, 11), stereo(a, 0, d), 2)),
+    );
+    list.enumerate()
         .map(|(k, (c, na, nb, l, n))| {
             make_case(format!("edge-{:03}", k + 1), c, na, nb, l, n, None)
         })

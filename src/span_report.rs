@@ -735,6 +735,9 @@ fn normalized_levels(r: &Request, values: &[BigRational], bits: i64) -> Vec<Opti
     )
 }
 
+/// The most bits an exact run takes to decide a level near a boundary (2^-1024).
+const LEVEL_BITS: u32 = 1024;
+
 /// An exact run with every printed digit known: the values, the adaptive decision,
 /// the levels (`None` where undecided), the bits the values are known to (`None`:
 /// exact).
@@ -753,7 +756,8 @@ pub struct ExactRun {
 
 /// Runs `r` in exact arithmetic (its `arithmetic` is not read) with square roots,
 /// `acos` and `cos` to more bits (from 2^-256 up to 2^-`MAX_BITS`) until every
-/// value's `r.digits` significant digits are known; the one path `span --scalar
+/// value's `r.digits` significant digits are known, and up to 2^-1024 while a level
+/// is within the values' error of a boundary; the one path `span --scalar
 /// exact`, the published vectors and `check`'s recomputation of a modified file take.
 ///
 /// # Errors
@@ -793,6 +797,10 @@ pub fn exact_run(r: &Request) -> Result<ExactRun, ReportError> {
             },
         )?;
         match attempt {
+            // A level within the run's error of a boundary: decided, if at all, by a
+            // few more bits (up to 2^-LEVEL_BITS; closer than that it stays undecided:
+            // `span` prints `?`, the vectors refuse the case).
+            Ok(o) if o.levels.iter().any(Option::is_none) && b < LEVEL_BITS => b = 2 * b,
             Ok(o) => return Ok(o),
             Err((short, bits)) if b >= MAX_BITS => return Err(short.error(bits)),
             Err((short, _)) => {

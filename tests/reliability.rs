@@ -1993,3 +1993,36 @@ proptest::proptest! {
         let _ = phong_approx::angular::CosTable::<f64>::new(size);
     }
 }
+
+#[test]
+fn q3b_a_level_near_a_boundary_is_decided_with_more_bits() {
+    // Angular interpolation from N_a to N_b = L = +z over 2 steps: the middle value is
+    // cos(α_a/2) = 1/√(1 + t²) for N_a of stereographic parameter t. With t just below
+    // √((255/200)² − 1) (2^-258 below), the value is k/255 + about 2^-258 (k = 200):
+    // within 2^-250 of a level boundary, so 2^-256 square roots and cosines cannot
+    // decide its level, and check's recomputation refused such a case; 512 bits do.
+    let k = BigInt::from(200);
+    let scale = BigInt::from(1) << 258u32;
+    let a = ((BigInt::from(255 * 255) - &k * &k) << 516u32).sqrt();
+    let d = &k * &scale; // t = a/d
+    let s = &a * &a + &d * &d;
+    let na = format!(
+        "{}/{},0,{}/{}",
+        BigInt::from(2) * &a * &d,
+        s,
+        &d * &d - &a * &a,
+        s
+    );
+    let o = run(&[
+        "span", "--method", "angular", "--na", &na, "--nb", "0,0,1", "--light", "0,0,1", "--steps",
+        "2", "--scalar", "exact",
+    ]);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let j: Value = serde_json::from_slice(&o.stdout).unwrap();
+    // Independently: 1/(1 + t²) > (200/255)² since t < √((255/200)² − 1), so the value
+    // is above 200/255 (and far below 201/255): level 200.
+    let t2 = BigRational::new(&a * &a, &d * &d);
+    let one = BigRational::from_integer(1.into());
+    assert!(one.clone() / (one + t2) > BigRational::new(200.into(), 255.into()).pow(2));
+    assert_eq!(j["levels"][1], 200, "{j}");
+}

@@ -800,7 +800,7 @@ pub fn exact_run(r: &Request) -> Result<ExactRun, ReportError> {
             // A level within the run's error of a boundary: decided, if at all, by a
             // few more bits (up to 2^-LEVEL_BITS; closer than that it stays undecided:
             // `span` prints `?`, the vectors refuse the case).
-            Ok(o) if o.levels.iter().any(Option::is_none) && b < LEVEL_BITS => b = 2 * b,
+            Ok(o) if o.levels.iter().any(Option::is_none) && b < LEVEL_BITS => b *= 2,
             Ok(o) => return Ok(o),
             Err((short, bits)) if b >= MAX_BITS => return Err(short.error(bits)),
             Err((short, _)) => {

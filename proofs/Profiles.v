@@ -28,8 +28,14 @@
       Gouraud: G_0 = pa, G_{j+1} ap_add G_j + dp.
     A product that feeds an addition may be exact (fused multiply-add): an
     exact result satisfies every bound.  n, 2n, n(n-1)/2 are exact reals
-    (integers of the format).  Division is either one rounded division or a
-    reciprocal followed by a product ([recip_mul_covered]).  Nothing else is
+    (integers of the format): n(n-1)/2 is formed exactly, as an integer then
+    converted (exact: n(n-1) < 2^24 for n <= 4096) or as n (n-1) 0.5 in floats
+    with the literal 0.5 (every product exact), NOT by a rounded division by
+    2 nor by a computed 1/2 (not covered by any theorem here); likewise the
+    closed forms' (i-1)/2 in [ap_mul M h ((i-1)/2 ds)], while the [_half]
+    theorems let (i-1)/2 be halved in floats ([half_ok]).  Division (by n,
+    and p_a/2, p_b/2) is either one rounded division or a reciprocal followed
+    by a product ([recip_mul_covered], [shader32_recip_mul_covered]).  Nothing else is
     assumed: each relation may be met by a different rounding (direction,
     flushing) at each operation, each three-term sum in its own order.
 
@@ -43,6 +49,11 @@
               toward zero, ..., [faithful_covered]), k_div = 5 (within 2.5 ulp,
               [shader32_div_covered]), u = 2^-24, eta = 2^-126 (results and
               inputs may be flushed to zero, [flush_covered], [shader32_covered]).
+      shader, division as .(1/n)  ([shader32_recip]): as shader, with
+              k_div = 7 + 2^-20: each division (by n, by 2) a reciprocal within
+              2.5 ulp then a shader product ([shader32_recip_mul_covered]) or
+              one 2.5-ulp division ([shader32_recip_covered]), either way at
+              each division.
 
     Theorems (unit Na, Nb, L; every pixel i <= n):
       profile_ieee_gouraud_binary32 / _binary64   1 <= n <= 4096:
@@ -72,6 +83,21 @@
           g = dia + h, m = i g, p = pa + m, fused or not) on an ieee set-up:
           |p_i - euler_span s i| <= 131.41 u   (independent of n)
       profile_ieee_euler_closed_binary64_large    1 <= n <= 2^24: the same
+      shader, 1 <= n <= 4096, u = 2^-24 (the _recip ones on shader32_recip):
+      profile_shader_gouraud_recip_binary32             (2.0012 n + 28.0014) u
+      profile_shader_corrected_euler_recip_binary32     (4.4 n + 124.31) u
+      profile_shader_euler_recip_binary32               (11.1 n + 288.11) u
+      profile_shader_corrected_euler_closed_binary32         126.5 u
+      profile_shader_corrected_euler_closed_recip_binary32   141.11 u
+      profile_shader_euler_closed_binary32                   277.9 u
+      profile_shader_euler_closed_recip_binary32             308.11 u
+          (closed forms with (i-1)/2 exact, as the ieee ones)
+      profile_shader_corrected_euler_closed_half_binary32        131.5 u
+      profile_shader_corrected_euler_closed_half_recip_binary32  148.11 u
+      profile_shader_euler_closed_half_binary32                  281.65 u
+      profile_shader_euler_closed_half_recip_binary32            313.36 u
+          (closed forms with h from [half_ok]: c = (i-1)/2 by a division
+          then h = c ds, or y = (i-1) ds then h = y/2 by a division)
     They are instances of [profile_gouraud_generic]
     ((1.0006 k_add n + 2.0001 k_in + 1.0001 k_mul + 4.0001 k_add + 2.0001 k_div
     + 10^-6) u) and [profile_corrected_euler_generic]
@@ -79,7 +105,10 @@
     [model_ok] and n k_add u <= 2^-11, and of
     [profile_corrected_euler_closed_generic] ((45 K1 + 7.3 k_div) u), and for
     Euler of [profile_euler_generic] ((5.55 k_add n + 91.2 K1 + 15.1 k_div) u)
-    and [profile_euler_closed_generic] ((101.2 K1 + 15.1 k_div) u). *)
+    and [profile_euler_closed_generic] ((101.2 K1 + 15.1 k_div) u), and with
+    the halving in floats of [profile_corrected_euler_closed_half_generic]
+    ((45 K1 + 8.3 k_div) u) and [profile_euler_closed_half_generic]
+    ((101.2 K1 + 15.85 k_div) u). *)
 
 From Coq Require Import Reals Lra Lia.
 From Flocq Require Import Core Relative.
@@ -213,6 +242,23 @@ Proof.
   change (Z.opp 24) with (-24)%Z in *. change (-125 - 1)%Z with (-126)%Z in *.
   pose proof (eta84 (-126) (-24) ltac:(lia)) as H5.
   unfold shader32, model_ok; cbn [m_u m_eta k_in k_add k_mul k_div].
+  rewrite u24 in *. repeat split; lra.
+Qed.
+
+(** The shader profile with every division (by n, by 2) allowed to be a
+    reciprocal within 2.5 ulp followed by a product rounded as the profile's
+    products (k = 5 + 2 + 2^-20: [shader32_recip_mul_covered]); a single
+    2.5-ulp division is covered too (k = 5 <= 7 + 2^-20), so the theorems on
+    [shader32_recip] hold whichever way each division is done. *)
+Definition shader32_recip : fmodel :=
+  mkModel (bpow radix2 (-24)) (bpow radix2 (-126)) 2 2 2 (7 + / 1048576).
+
+Lemma shader32_recip_ok : model_ok shader32_recip (7 + / 1048576).
+Proof.
+  destruct (flt_fmt_ok (-125) 24 ltac:(lia) ltac:(lia)) as (H1 & H2 & H3 & H4).
+  change (Z.opp 24) with (-24)%Z in *. change (-125 - 1)%Z with (-126)%Z in *.
+  pose proof (eta84 (-126) (-24) ltac:(lia)) as H5.
+  unfold shader32_recip, model_ok; cbn [m_u m_eta k_in k_add k_mul k_div].
   rewrite u24 in *. repeat split; lra.
 Qed.
 
@@ -546,6 +592,22 @@ Proof.
   unfold shader32; cbn [m_u k_in k_add k_mul k_div].
   apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
 Qed.
+
+(** ** Halving computed in floats (closed forms)
+
+    The closed forms take (i-1)/2 ds.  [half_ok] is that product with the
+    halving done in the model: c = (i-1)/2 as a division (one rounded
+    division, within 2.5 ulp, or (i-1) times a computed 1/2) then h = c ds;
+    or y = (i-1) ds then h = y/2 (a division).  The exact coefficient
+    ((i-1)/2 an integer or half-integer of the format formed exactly, e.g.
+    (i-1) * 0.5 with the literal 0.5, h = ap_mul of it) is the case c exact. *)
+Definition half_rel (v d eta : R) (i : nat) (ds hh : R) : Prop :=
+  (exists c, ap1 d eta c ((INR i - 1) / 2) /\ ap1 v eta hh (c * ds)) \/
+  (exists y, ap1 v eta y ((INR i - 1) * ds) /\ ap1 d eta hh (y / 2)).
+
+Definition half_ok (M : fmodel) (i : nat) (ds h : R) : Prop :=
+  (exists c, ap_div M c ((INR i - 1) / 2) /\ ap_mul M h (c * ds)) \/
+  (exists y, ap_mul M y ((INR i - 1) * ds) /\ ap_div M h (y / 2)).
 
 (** ** Corrected Euler: the set-up, with unit v for inputs, additions and
     products and unit d for divisions *)
@@ -1501,6 +1563,240 @@ Proof.
   eapply Rle_trans; [apply tri4|]. lra.
 Qed.
 
+
+(** *** The closed forms with the halving computed in floats ([half_rel]) *)
+
+(** h is within (v + d)(1 + 2^-21) |(i-1)/2 ds| + 4 eta of (i-1)/2 ds, in both orders. *)
+Lemma K_half : forall i hh, half_rel v d eta i fds hh ->
+  Rabs (hh - (INR i - 1) / 2 * fds)
+  <= (v + d) * (1 + / 2097152) * Rabs ((INR i - 1) / 2 * fds) + 4 * eta.
+Proof.
+  intros i hh H. basics.
+  pose proof (e_pos v eta Hv) as He0. pose proof (e_small v eta Hv) as He1.
+  pose proof K_ds as D0. pose proof (n2ds_le s Hua Hub Hul) as D1.
+  assert (D2 : Rabs (nr * nr * fds) <= 2001 / 1000) by (pose proof (abs_near _ _ _ D0); lra).
+  assert (Bds : Rabs fds <= 2001 / 1000).
+  { rewrite Rabs_mult, (Rabs_pos_eq (nr * nr)) in D2 by nra.
+    assert (1 <= nr * nr) by nra.
+    assert (1 * Rabs fds <= nr * nr * Rabs fds)
+      by (apply Rmult_le_compat_r; [apply Rabs_pos | lra]).
+    lra. }
+  set (a := (INR i - 1) / 2) in *. set (X := a * fds) in *.
+  assert (AX : Rabs X = Rabs a * Rabs fds) by (unfold X; apply Rabs_mult).
+  pose proof (Rabs_pos X) as X0. pose proof (Rabs_pos fds) as F0. pose proof (Rabs_pos a) as A0.
+  assert (VD : v * d * Rabs X <= / 2097152 * d * Rabs X).
+  { apply Rmult_le_compat_r; [lra|]. apply Rmult_le_compat_r; lra. }
+  assert (VX : 0 <= v * Rabs X) by (apply Rmult_le_pos; lra).
+  assert (DX : 0 <= d * Rabs X) by (apply Rmult_le_pos; lra).
+  destruct H as [(c & Hcc & Hhh) | (y & Hyy & Hhh)]; unfold ap1 in *.
+  - assert (E1 : Rabs ((c - a) * fds) <= d * Rabs X + eta * Rabs fds).
+    { rewrite Rabs_mult, AX.
+      assert (Rabs (c - a) * Rabs fds <= (d * Rabs a + eta) * Rabs fds)
+        by (apply Rmult_le_compat_r; [exact F0 | exact Hcc]).
+      lra. }
+    assert (E2 : Rabs (c * fds) <= Rabs X + (d * Rabs X + eta * Rabs fds)).
+    { replace (c * fds) with (X + (c - a) * fds) by (unfold X; ring).
+      eapply Rle_trans; [apply Rabs_triang|]. lra. }
+    assert (E3 : v * Rabs (c * fds) <= v * (Rabs X + (d * Rabs X + eta * Rabs fds)))
+      by (apply Rmult_le_compat_l; lra).
+    assert (E4 : eta * Rabs fds <= eta * (2001 / 1000)) by (apply Rmult_le_compat_l; lra).
+    assert (E5 : v * (eta * Rabs fds) <= / 2097152 * (eta * (2001 / 1000)))
+      by (apply Rmult_le_compat; try lra; apply Rmult_le_pos; lra).
+    replace (hh - X) with ((hh - c * fds) + (c - a) * fds) by (unfold X; ring).
+    eapply Rle_trans; [apply Rabs_triang|]. lra.
+  - assert (EY : (INR i - 1) * fds = 2 * X) by (unfold X, a; field).
+    rewrite EY in Hyy. rewrite Rabs_mult, (Rabs_pos_eq 2) in Hyy by lra.
+    assert (E1 : Rabs (y / 2 - X) <= v * Rabs X + eta / 2).
+    { replace (y / 2 - X) with (/ 2 * (y - 2 * X)) by field.
+      rewrite Rabs_mult, (Rabs_pos_eq (/ 2)) by lra. lra. }
+    assert (E2 : Rabs (y / 2) <= Rabs X + (v * Rabs X + eta / 2))
+      by (pose proof (abs_near _ _ _ E1); lra).
+    assert (E3 : d * Rabs (y / 2) <= d * (Rabs X + (v * Rabs X + eta / 2)))
+      by (apply Rmult_le_compat_l; lra).
+    assert (E4 : d * eta <= 1 * eta) by (apply Rmult_le_compat_r; lra).
+    replace (hh - X) with ((hh - y / 2) + (y / 2 - X)) by ring.
+    eapply Rle_trans; [apply Rabs_triang|]. lra.
+Qed.
+
+(** Corrected Euler's closed form with h from [half_rel]: 45 v + 8.3 d. *)
+Lemma K_closed_h : forall i, (i <= n s)%nat -> forall hh g m p : R,
+  half_rel v d eta i fds hh -> ap1 v eta g (ft0 + hh) ->
+  ap1 v eta m (INR i * g) -> ap1 v eta p (fpa + m) ->
+  Rabs (p - ceuler s i) <= 45 * v + 83 / 10 * d.
+Proof.
+  intros i Hi hh g m p Hh0 Hg Hm Hp. basics.
+  pose proof (K_half i hh Hh0) as Hh.
+  pose proof (e_pos v eta Hv) as He0. pose proof (e_small v eta Hv) as He1.
+  assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
+  pose proof (K_slope 0 ltac:(lia)) as S0. cbn [INR] in S0.
+  rewrite Rmult_0_l, Rplus_0_r in S0.
+  pose proof K_ds as D0. pose proof (n2ds_le s Hua Hub Hul) as D1.
+  assert (D2 : Rabs (nr * nr * fds) <= 2001 / 1000) by (pose proof (abs_near _ _ _ D0); lra).
+  set (X := (INR i - 1) / 2 * fds) in *.
+  assert (EX : nr * X = (INR i - 1) / (2 * nr) * (nr * nr * fds)) by (unfold X; field; lra).
+  assert (Hci : Rabs ((INR i - 1) / (2 * nr)) <= 1 / 2).
+  { apply Rabs_le. split.
+    - apply (Rmult_le_reg_r (2 * nr)); [lra|]. unfold Rdiv.
+      rewrite Rmult_assoc, Rinv_l by lra. lra.
+    - apply (Rmult_le_reg_r (2 * nr)); [lra|]. unfold Rdiv.
+      rewrite Rmult_assoc, Rinv_l by lra. lra. }
+  assert (BX : Rabs (nr * X) <= 10005 / 10000).
+  { rewrite EX, Rabs_mult. replace (10005 / 10000) with (1 / 2 * (2001 / 1000)) by field.
+    apply Rmult_le_compat; try apply Rabs_pos; lra. }
+  set (Gx := ft0 + X).
+  assert (BG : Rabs (nr * Gx) <= 30008 / 10000).
+  { unfold Gx. rewrite Rmult_plus_distr_l. eapply Rle_trans; [apply Rabs_triang|]. lra. }
+  assert (Hnr0 : 0 < nr) by lra.
+  assert (AB : forall z, Rabs (nr * z) = nr * Rabs z)
+    by (intros z; rewrite Rabs_mult, Rabs_pos_eq by lra; reflexivity).
+  rewrite AB in BX, BG.
+  unfold ap1 in Hg, Hm, Hp.
+  (* h *)
+  assert (E1 : nr * Rabs (hh - X) <= 10006 / 10000 * (v + d) + 67108864 * eta).
+  { assert (nr * Rabs (hh - X) <= nr * ((v + d) * (1 + / 2097152) * Rabs X + 4 * eta))
+      by (apply Rmult_le_compat_l; lra).
+    assert ((v + d) * (1 + / 2097152) * (nr * Rabs X) <= (v + d) * (1 + / 2097152) * (10005 / 10000))
+      by (apply Rmult_le_compat_l; lra).
+    assert (nr * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra). nra. }
+  (* g *)
+  assert (E2 : nr * Rabs (g - Gx) <= 40016 / 10000 * v + 10007 / 10000 * d + 100000000 * eta).
+  { replace (g - Gx) with ((g - (ft0 + hh)) + (hh - X)) by (unfold Gx; ring).
+    assert (Rabs (ft0 + hh) <= Rabs Gx + Rabs (hh - X)).
+    { replace (ft0 + hh) with (Gx + (hh - X)) by (unfold Gx; ring). apply Rabs_triang. }
+    assert (nr * Rabs (g - (ft0 + hh)) <= nr * (v * (Rabs Gx + Rabs (hh - X)) + eta)).
+    { apply Rmult_le_compat_l; [lra|]. eapply Rle_trans; [exact Hg|].
+      apply Rplus_le_compat_r, Rmult_le_compat_l; lra. }
+    assert (v * (nr * Rabs Gx) <= v * (30008 / 10000)) by (apply Rmult_le_compat_l; lra).
+    assert (v * (nr * Rabs (hh - X)) <= / 2097152 * (nr * Rabs (hh - X)))
+      by (apply Rmult_le_compat_r; [apply Rmult_le_pos; [lra | apply Rabs_pos] | lra]).
+    assert (nr * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra).
+    assert (nr * Rabs (g - (ft0 + hh) + (hh - X))
+            <= nr * Rabs (g - (ft0 + hh)) + nr * Rabs (hh - X)).
+    { rewrite <- Rmult_plus_distr_l. apply Rmult_le_compat_l; [lra | apply Rabs_triang]. }
+    nra. }
+  (* scaling by i <= n *)
+  assert (Ii : forall z, 0 <= z -> INR i * z <= nr * z) by (intros z Hz; apply Rmult_le_compat_r; lra).
+  assert (IG : Rabs (INR i * Gx) <= 30008 / 10000).
+  { rewrite Rabs_mult, (Rabs_pos_eq (INR i)) by lra.
+    pose proof (Ii (Rabs Gx) (Rabs_pos _)). lra. }
+  assert (IE : Rabs (INR i * (g - Gx)) <= 40016 / 10000 * v + 10007 / 10000 * d + 100000000 * eta).
+  { rewrite Rabs_mult, (Rabs_pos_eq (INR i)) by lra.
+    pose proof (Ii (Rabs (g - Gx)) (Rabs_pos _)). lra. }
+  assert (Bg : Rabs (INR i * g) <= 30009 / 10000).
+  { replace (INR i * g) with (INR i * Gx + INR i * (g - Gx)) by ring.
+    eapply Rle_trans; [apply Rabs_triang|]. lra. }
+  (* m *)
+  assert (E3 : Rabs (m - INR i * g) <= 30009 / 10000 * v + eta).
+  { assert (v * Rabs (INR i * g) <= v * (30009 / 10000)) by (apply Rmult_le_compat_l; lra).
+    lra. }
+  (* the ideal value *)
+  pose proof (K_ce_ideal i Hi) as G0. pose proof (ceuler_le s Hua Hub Hul Hn1 i Hi) as G1.
+  assert (Eid : fpa + INR i * ft0 + INR i * (INR i - 1) / 2 * fds = fpa + INR i * Gx)
+    by (unfold Gx, X; field).
+  rewrite Eid in G0.
+  assert (Bpm : Rabs (fpa + m) <= 11926 / 10000).
+  { replace (fpa + m) with ((fpa + INR i * Gx - ceuler s i) + ceuler s i
+                            + (m - INR i * g) + INR i * (g - Gx)) by ring.
+    eapply Rle_trans; [apply tri4|]. lra. }
+  assert (E4 : Rabs (p - (fpa + m)) <= 11926 / 10000 * v + eta).
+  { assert (v * Rabs (fpa + m) <= v * (11926 / 10000)) by (apply Rmult_le_compat_l; lra).
+    lra. }
+  replace (p - ceuler s i)
+    with ((p - (fpa + m)) + (m - INR i * g) + INR i * (g - Gx) + (fpa + INR i * Gx - ceuler s i))
+    by ring.
+  eapply Rle_trans; [apply tri4|]. lra.
+Qed.
+
+(** Euler's closed form with h from [half_rel]: 101.2 v + 15.85 d. *)
+Lemma K_eu_closed_h : forall i, (i <= n s)%nat -> forall hh g m p : R,
+  half_rel v d eta i fds hh -> ap1 v eta g (fdia + hh) ->
+  ap1 v eta m (INR i * g) -> ap1 v eta p (fpa + m) ->
+  Rabs (p - euler_span s i) <= 1012 / 10 * v + 1585 / 100 * d.
+Proof.
+  intros i Hi hh g m p Hh0 Hg Hm Hp. basics.
+  pose proof (K_half i hh Hh0) as Hh.
+  pose proof (e_pos v eta Hv) as He0. pose proof (e_small v eta Hv) as He1.
+  assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
+  pose proof K_dia as A0. pose proof (ndia_le s Hua Hub Hul) as A1.
+  assert (S0 : Rabs (nr * fdia) <= 20001 / 10000) by (pose proof (abs_near _ _ _ A0); lra).
+  pose proof K_ds as D0. pose proof (n2ds_le' s Hua Hub Hul) as D1.
+  assert (D2 : Rabs (nr * nr * fds) <= 15401 / 10000) by (pose proof (abs_near _ _ _ D0); lra).
+  set (X := (INR i - 1) / 2 * fds) in *.
+  assert (EX : nr * X = (INR i - 1) / (2 * nr) * (nr * nr * fds)) by (unfold X; field; lra).
+  assert (Hci : Rabs ((INR i - 1) / (2 * nr)) <= 1 / 2).
+  { apply Rabs_le. split.
+    - apply (Rmult_le_reg_r (2 * nr)); [lra|]. unfold Rdiv.
+      rewrite Rmult_assoc, Rinv_l by lra. lra.
+    - apply (Rmult_le_reg_r (2 * nr)); [lra|]. unfold Rdiv.
+      rewrite Rmult_assoc, Rinv_l by lra. lra. }
+  assert (BX : Rabs (nr * X) <= 77005 / 100000).
+  { rewrite EX, Rabs_mult. replace (77005 / 100000) with (1 / 2 * (15401 / 10000)) by field.
+    apply Rmult_le_compat; try apply Rabs_pos; lra. }
+  set (Gx := fdia + X).
+  assert (BG : Rabs (nr * Gx) <= 27702 / 10000).
+  { unfold Gx. rewrite Rmult_plus_distr_l. eapply Rle_trans; [apply Rabs_triang|]. lra. }
+  assert (Hnr0 : 0 < nr) by lra.
+  assert (AB : forall z, Rabs (nr * z) = nr * Rabs z)
+    by (intros z; rewrite Rabs_mult, Rabs_pos_eq by lra; reflexivity).
+  rewrite AB in BX, BG.
+  unfold ap1 in Hg, Hm, Hp.
+  (* h *)
+  assert (E1 : nr * Rabs (hh - X) <= 77006 / 100000 * (v + d) + 67108864 * eta).
+  { assert (nr * Rabs (hh - X) <= nr * ((v + d) * (1 + / 2097152) * Rabs X + 4 * eta))
+      by (apply Rmult_le_compat_l; lra).
+    assert ((v + d) * (1 + / 2097152) * (nr * Rabs X)
+            <= (v + d) * (1 + / 2097152) * (77005 / 100000))
+      by (apply Rmult_le_compat_l; lra).
+    assert (nr * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra). nra. }
+  (* g *)
+  assert (E2 : nr * Rabs (g - Gx) <= 35404 / 10000 * v + 7701 / 10000 * d + 100000000 * eta).
+  { replace (g - Gx) with ((g - (fdia + hh)) + (hh - X)) by (unfold Gx; ring).
+    assert (Rabs (fdia + hh) <= Rabs Gx + Rabs (hh - X)).
+    { replace (fdia + hh) with (Gx + (hh - X)) by (unfold Gx; ring). apply Rabs_triang. }
+    assert (nr * Rabs (g - (fdia + hh)) <= nr * (v * (Rabs Gx + Rabs (hh - X)) + eta)).
+    { apply Rmult_le_compat_l; [lra|]. eapply Rle_trans; [exact Hg|].
+      apply Rplus_le_compat_r, Rmult_le_compat_l; lra. }
+    assert (v * (nr * Rabs Gx) <= v * (27702 / 10000)) by (apply Rmult_le_compat_l; lra).
+    assert (v * (nr * Rabs (hh - X)) <= / 2097152 * (nr * Rabs (hh - X)))
+      by (apply Rmult_le_compat_r; [apply Rmult_le_pos; [lra | apply Rabs_pos] | lra]).
+    assert (nr * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra).
+    assert (nr * Rabs (g - (fdia + hh) + (hh - X))
+            <= nr * Rabs (g - (fdia + hh)) + nr * Rabs (hh - X)).
+    { rewrite <- Rmult_plus_distr_l. apply Rmult_le_compat_l; [lra | apply Rabs_triang]. }
+    nra. }
+  (* scaling by i <= n *)
+  assert (Ii : forall z, 0 <= z -> INR i * z <= nr * z) by (intros z Hz; apply Rmult_le_compat_r; lra).
+  assert (IG : Rabs (INR i * Gx) <= 27702 / 10000).
+  { rewrite Rabs_mult, (Rabs_pos_eq (INR i)) by lra.
+    pose proof (Ii (Rabs Gx) (Rabs_pos _)). lra. }
+  assert (IE : Rabs (INR i * (g - Gx)) <= 35404 / 10000 * v + 7701 / 10000 * d + 100000000 * eta).
+  { rewrite Rabs_mult, (Rabs_pos_eq (INR i)) by lra.
+    pose proof (Ii (Rabs (g - Gx)) (Rabs_pos _)). lra. }
+  assert (Bg : Rabs (INR i * g) <= 27703 / 10000).
+  { replace (INR i * g) with (INR i * Gx + INR i * (g - Gx)) by ring.
+    eapply Rle_trans; [apply Rabs_triang|]. lra. }
+  (* m *)
+  assert (E3 : Rabs (m - INR i * g) <= 27703 / 10000 * v + eta).
+  { assert (v * Rabs (INR i * g) <= v * (27703 / 10000)) by (apply Rmult_le_compat_l; lra).
+    lra. }
+  (* the ideal value *)
+  pose proof (K_eu_ideal i Hi) as G0. pose proof (K_eu_le i Hi) as G1.
+  assert (Eid : fpa + INR i * fdia + INR i * (INR i - 1) / 2 * fds = fpa + INR i * Gx)
+    by (unfold Gx, X; field).
+  rewrite Eid in G0.
+  assert (Bpm : Rabs (fpa + m) <= 37702 / 10000).
+  { replace (fpa + m) with ((fpa + INR i * Gx - euler_span s i) + euler_span s i
+                            + (m - INR i * g) + INR i * (g - Gx)) by ring.
+    eapply Rle_trans; [apply tri4|]. lra. }
+  assert (E4 : Rabs (p - (fpa + m)) <= 37702 / 10000 * v + eta).
+  { assert (v * Rabs (fpa + m) <= v * (37702 / 10000)) by (apply Rmult_le_compat_l; lra).
+    lra. }
+  replace (p - euler_span s i)
+    with ((p - (fpa + m)) + (m - INR i * g) + INR i * (g - Gx) + (fpa + INR i * Gx - euler_span s i))
+    by ring.
+  eapply Rle_trans; [apply tri4|]. lra.
+Qed.
+
 End CE.
 
 (** ** Corrected Euler: the generic bound and the profiles *)
@@ -2019,6 +2315,359 @@ Proof.
   apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
 Qed.
 
+(** ** The closed forms with the halving computed in floats
+
+    As [profile_corrected_euler_closed_generic] and
+    [profile_euler_closed_generic], with h from [half_ok]: (i-1)/2 rounded as
+    a division (or (i-1) ds rounded, then halved by a division) before the
+    rest of the closed form.  The halving adds about |i (i-1)/2 ds| k_div u
+    (at most 1.0007 and 0.7701 k_div u). *)
+Lemma half_ok_rel : forall (M : fmodel) (K1 : R) (i : nat) (ds h : R),
+  0 <= m_u M -> k_mul M <= K1 -> half_ok M i ds h ->
+  half_rel (K1 * m_u M) (k_div M * m_u M) (m_eta M) i ds h.
+Proof.
+  intros M K1 i ds h Hu Hm [(c & Hc & Hh) | (y & Hy & Hh)]; [left; exists c | right; exists y];
+    split; try exact Hc; try exact Hh;
+    (eapply ap1_mono; [| eassumption]); apply Rmult_le_compat_r; lra.
+Qed.
+
+Lemma profile_corrected_euler_closed_half_generic : forall (M : fmodel) (K K1 : R), model_ok M K ->
+  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 -> 1 <= k_div M ->
+  forall (s : span) (F : fsetup),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  (1 <= n s)%nat -> INR (n s) <= 16777216 -> ce_setup_ok M s F ->
+  forall i, (i <= n s)%nat -> forall h g m p : R,
+  half_ok M i (fs_ds F) h -> ap_add M g (fs_t0 F + h) ->
+  ap_mul M m (INR i * g) -> ap_add M p (fs_pa F + m) ->
+  Rabs (p - ceuler s i) <= (45 * K1 + 83 / 10 * k_div M) * m_u M.
+Proof.
+  intros M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1 s F Ha Hb Hl Hn1 Hn2 HF i Hi h g m p Hh Hg Hm Hp.
+  pose proof HM as (Hu & He0 & He2 & Ki & Ka & Km & Kd & HK0 & HK2).
+  pose proof (half_ok_rel M K1 i (fs_ds F) h ltac:(lra) Hm1 Hh) as HH.
+  set (u := m_u M) in *.
+  assert (HKu : K1 * u <= K * u) by (apply Rmult_le_compat_r; lra).
+  assert (HDu : k_div M * u <= K * u) by (apply Rmult_le_compat_r; lra).
+  assert (Hv : small_ok (K1 * u) (m_eta M)).
+  { repeat split; try lra.
+    - apply Rmult_lt_0_compat; lra.
+    - assert (u <= K1 * u) by (rewrite <- (Rmult_1_l u) at 1; apply Rmult_le_compat_r; lra).
+      lra. }
+  assert (Hdv : small_ok (k_div M * u) (m_eta M)).
+  { repeat split; try lra.
+    - apply Rmult_lt_0_compat; lra.
+    - assert (u <= k_div M * u) by (rewrite <- (Rmult_1_l u) at 1; apply Rmult_le_compat_r; lra).
+      lra. }
+  set (v := K1 * u) in *.
+  assert (Wa : k_add M * u <= v) by (unfold v; apply Rmult_le_compat_r; lra).
+  assert (Wm : k_mul M * u <= v) by (unfold v; apply Rmult_le_compat_r; lra).
+  assert (AK : forall k y x, k <= K1 -> approx k u (m_eta M) y x -> ap1 v (m_eta M) y x).
+  { intros k y x Hk H. eapply ap1_mono; [|exact H]. unfold v.
+    apply Rmult_le_compat_r; lra. }
+  assert (FK : forall a b y, fdot_ok M a b y -> fdot_rel v v (m_eta M) a b y)
+    by (intros a b y H; eapply fdot_mono; [exact Wm | exact Wa | exact H]).
+  assert (VK : forall vh w0, vap M vh w0 -> vap1 v (m_eta M) vh w0).
+  { intros vh w0 (A1 & A2 & A3). repeat split; (eapply AK; [| eassumption]); lra. }
+  destruct HF as ((Ina & Inb & Inl) & (tx & Htx & Hkx) & (ty & Hty & Hky) & (tz & Htz & Hkz)
+    & Ha' & Hpa & Hc & (e & He & Hd) & Hpb & (q & Hq & Hdqb) & (h1 & x1 & Hh1 & Hx1 & Hdia)
+    & (h2 & x2 & Hh2 & Hx2 & Hdib) & (w & Hw & Hds) & (q2 & q3 & Hq2 & Hq3 & Hpn)
+    & Heps & Hdeps & Ht0).
+  pose proof (K_closed_h v (k_div M * u) (m_eta M) Hv Hdv s Ha Hb Hl Hn1 Hn2
+    _ _ _ _ _ _ _ _ _ _ _ _ _ _ _ _ _
+    (VK _ _ Ina) (VK _ _ Inb) (VK _ _ Inl) _ _ _
+    (AK _ _ _ Ha1 Htx) Hkx (AK _ _ _ Ha1 Hty) Hky (AK _ _ _ Ha1 Htz) Hkz
+    (FK _ _ _ Ha') (FK _ _ _ Hpa) (FK _ _ _ Hc) _ (FK _ _ _ He) (AK _ _ _ Hm1 Hd) (FK _ _ _ Hpb)
+    _ (AK _ _ _ Hm1 Hq) (AK _ _ _ Ha1 Hdqb)
+    _ _ Hh1 (AK _ _ _ Hm1 Hx1) (AK _ _ _ Ha1 Hdia)
+    _ _ Hh2 (AK _ _ _ Hm1 Hx2) (AK _ _ _ Ha1 Hdib)
+    _ (AK _ _ _ Ha1 Hw) Hds
+    _ _ (AK _ _ _ Hm1 Hq2) (AK _ _ _ Hm1 Hq3) (sum3_mono _ _ _ _ _ _ _ Wa Hpn)
+    (AK _ _ _ Ha1 Heps) Hdeps (AK _ _ _ Ha1 Ht0)
+    i Hi h g m p HH (AK _ _ _ Ha1 Hg) (AK _ _ _ Hm1 Hm) (AK _ _ _ Ha1 Hp)) as R.
+  eapply Rle_trans; [exact R|]. unfold v. lra.
+Qed.
+
+Lemma profile_euler_closed_half_generic : forall (M : fmodel) (K K1 : R), model_ok M K ->
+  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 -> 1 <= k_div M ->
+  forall (s : span) (F : fsetup),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  (1 <= n s)%nat -> INR (n s) <= 16777216 -> eu_setup_ok M s F ->
+  forall i, (i <= n s)%nat -> forall h g m p : R,
+  half_ok M i (fs_ds F) h -> ap_add M g (fs_dia F + h) ->
+  ap_mul M m (INR i * g) -> ap_add M p (fs_pa F + m) ->
+  Rabs (p - euler_span s i) <= (1012 / 10 * K1 + 1585 / 100 * k_div M) * m_u M.
+Proof.
+  intros M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1 s F Ha Hb Hl Hn1 Hn2 HF i Hi h g m p Hh Hg Hm Hp.
+  pose proof HM as (Hu & He0 & He2 & Ki & Ka & Km & Kd & HK0 & HK2).
+  pose proof (half_ok_rel M K1 i (fs_ds F) h ltac:(lra) Hm1 Hh) as HH.
+  set (u := m_u M) in *.
+  assert (HKu : K1 * u <= K * u) by (apply Rmult_le_compat_r; lra).
+  assert (HDu : k_div M * u <= K * u) by (apply Rmult_le_compat_r; lra).
+  assert (Hv : small_ok (K1 * u) (m_eta M)).
+  { repeat split; try lra.
+    - apply Rmult_lt_0_compat; lra.
+    - assert (u <= K1 * u) by (rewrite <- (Rmult_1_l u) at 1; apply Rmult_le_compat_r; lra).
+      lra. }
+  assert (Hdv : small_ok (k_div M * u) (m_eta M)).
+  { repeat split; try lra.
+    - apply Rmult_lt_0_compat; lra.
+    - assert (u <= k_div M * u) by (rewrite <- (Rmult_1_l u) at 1; apply Rmult_le_compat_r; lra).
+      lra. }
+  set (v := K1 * u) in *.
+  assert (Wa : k_add M * u <= v) by (unfold v; apply Rmult_le_compat_r; lra).
+  assert (Wm : k_mul M * u <= v) by (unfold v; apply Rmult_le_compat_r; lra).
+  assert (AK : forall k y x, k <= K1 -> approx k u (m_eta M) y x -> ap1 v (m_eta M) y x).
+  { intros k y x Hk H. eapply ap1_mono; [|exact H]. unfold v.
+    apply Rmult_le_compat_r; lra. }
+  assert (FK : forall a b y, fdot_ok M a b y -> fdot_rel v v (m_eta M) a b y)
+    by (intros a b y H; eapply fdot_mono; [exact Wm | exact Wa | exact H]).
+  assert (VK : forall vh w0, vap M vh w0 -> vap1 v (m_eta M) vh w0).
+  { intros vh w0 (A1 & A2 & A3). repeat split; (eapply AK; [| eassumption]); lra. }
+  destruct HF as ((Ina & Inb & Inl) & (tx & Htx & Hkx) & (ty & Hty & Hky) & (tz & Htz & Hkz)
+    & Ha' & Hpa & Hc & (e & He & Hd) & Hpb & (q & Hq & Hdqb) & (h1 & x1 & Hh1 & Hx1 & Hdia)
+    & (h2 & x2 & Hh2 & Hx2 & Hdib) & (w & Hw & Hds)).
+  pose proof (K_eu_closed_h v (k_div M * u) (m_eta M) Hv Hdv s Ha Hb Hl Hn1 Hn2
+    _ _ _ _ _ _ _ _ _ _ _ _ _
+    (VK _ _ Ina) (VK _ _ Inb) (VK _ _ Inl) _ _ _
+    (AK _ _ _ Ha1 Htx) Hkx (AK _ _ _ Ha1 Hty) Hky (AK _ _ _ Ha1 Htz) Hkz
+    (FK _ _ _ Ha') (FK _ _ _ Hpa) (FK _ _ _ Hc) _ (FK _ _ _ He) (AK _ _ _ Hm1 Hd) (FK _ _ _ Hpb)
+    _ (AK _ _ _ Hm1 Hq) (AK _ _ _ Ha1 Hdqb)
+    _ _ Hh1 (AK _ _ _ Hm1 Hx1) (AK _ _ _ Ha1 Hdia)
+    _ _ Hh2 (AK _ _ _ Hm1 Hx2) (AK _ _ _ Ha1 Hdib)
+    _ (AK _ _ _ Ha1 Hw) Hds
+    i Hi h g m p HH (AK _ _ _ Ha1 Hg) (AK _ _ _ Hm1 Hm) (AK _ _ _ Ha1 Hp)) as R.
+  eapply Rle_trans; [exact R|]. unfold v. lra.
+Qed.
+
+(** ** The shader profile: division as .(1/n), the closed forms, the halving *)
+
+(* Note: shader profile with every division by n computed as a reciprocal
+   within 2.5 ulp then a product (or as one 2.5-ulp division):
+   [shader32_recip], k_div = 7 + 2^-20. *)
+(** Gouraud, shader profile, division as .(1/n): |G_i - gouraud i| <= (2.0012 n + 28.0014) 2^-24. *)
+Theorem profile_shader_gouraud_recip_binary32 : forall (s : span) (F : fsetup) (G : nat -> R),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) -> (1 <= n s <= 4096)%nat ->
+  gouraud_setup_ok shader32_recip s F -> gouraud_run shader32_recip F (n s) G ->
+  forall i, (i <= n s)%nat ->
+  Rabs (G i - gouraud s i) <= (20012 / 10000 * INR (n s) + 280014 / 10000) * bpow radix2 (-24).
+Proof.
+  intros s F G Ha Hb Hl Hn HF HG i Hi.
+  assert (Hn' : INR (n s) <= 4096) by (apply (nat_R _ 4096); lia).
+  assert (H1 : 0 <= INR (n s)) by apply pos_INR.
+  eapply Rle_trans.
+  { apply (profile_gouraud_generic shader32_recip _ shader32_recip_ok s F G Ha Hb Hl ltac:(lia));
+      try assumption.
+    - lra.
+    - unfold shader32_recip; cbn [m_u k_add]. rewrite u24. lra. }
+  unfold shader32_recip; cbn [m_u k_in k_add k_mul k_div].
+  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
+Qed.
+
+(* Note: shader profile, every division (by n, by 2) a reciprocal within 2.5 ulp
+   then a product, or one 2.5-ulp division ([shader32_recip]). *)
+(** Corrected Euler, shader profile, division as .(1/n): |P_i - ceuler i| <= (4.4 n + 124.31) 2^-24. *)
+Theorem profile_shader_corrected_euler_recip_binary32 :
+  forall (s : span) (F : fsetup) (P Q : nat -> R),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) -> (1 <= n s <= 4096)%nat ->
+  ce_setup_ok shader32_recip s F -> ceuler_run shader32_recip F (n s) P Q ->
+  forall i, (i <= n s)%nat ->
+  Rabs (P i - ceuler s i) <= (44 / 10 * INR (n s) + 12431 / 100) * bpow radix2 (-24).
+Proof.
+  intros s F P Q Ha Hb Hl Hn HF HR i Hi.
+  pose proof (ce_profile_nr s Hn) as Hn'.
+  eapply Rle_trans.
+  { apply (profile_corrected_euler_generic shader32_recip _ 2 shader32_recip_ok) with (F := F) (Q := Q);
+      unfold shader32_recip; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; try lia.
+    rewrite u24. lra. }
+  unfold shader32_recip; cbn [m_u k_add k_div].
+  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
+Qed.
+
+(* Note: shader profile, every division (by n, by 2) a reciprocal within 2.5 ulp
+   then a product, or one 2.5-ulp division ([shader32_recip]). *)
+(** Euler, shader profile, division as .(1/n): |P_i - euler_span i| <= (11.1 n + 288.11) 2^-24. *)
+Theorem profile_shader_euler_recip_binary32 :
+  forall (s : span) (F : fsetup) (P Q : nat -> R),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) -> (1 <= n s <= 4096)%nat ->
+  eu_setup_ok shader32_recip s F -> euler_run shader32_recip F (n s) P Q ->
+  forall i, (i <= n s)%nat ->
+  Rabs (P i - euler_span s i) <= (111 / 10 * INR (n s) + 28811 / 100) * bpow radix2 (-24).
+Proof.
+  intros s F P Q Ha Hb Hl Hn HF HR i Hi.
+  pose proof (ce_profile_nr s Hn) as Hn'.
+  eapply Rle_trans.
+  { apply (profile_euler_generic shader32_recip _ 2 shader32_recip_ok) with (F := F) (Q := Q);
+      unfold shader32_recip; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; try lia.
+    rewrite u24. lra. }
+  unfold shader32_recip; cbn [m_u k_add k_div].
+  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
+Qed.
+
+(* Note: shader profile (one 2.5-ulp division per division); the bound does
+   not grow with n. *)
+(** Corrected Euler by its closed form, shader profile: |p_i - ceuler i| <= 126.5 2^-24. *)
+Theorem profile_shader_corrected_euler_closed_binary32 : forall (s : span) (F : fsetup),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) -> (1 <= n s <= 4096)%nat ->
+  ce_setup_ok shader32 s F ->
+  forall i, (i <= n s)%nat -> forall h g m p : R,
+  ap_mul shader32 h ((INR i - 1) / 2 * fs_ds F) -> ap_add shader32 g (fs_t0 F + h) ->
+  ap_mul shader32 m (INR i * g) -> ap_add shader32 p (fs_pa F + m) ->
+  Rabs (p - ceuler s i) <= 1265 / 10 * bpow radix2 (-24).
+Proof.
+  intros s F Ha Hb Hl Hn HF i Hi h g m p Hh Hg Hm Hp.
+  pose proof (ce_profile_nr s Hn) as Hn'.
+  eapply Rle_trans.
+  { apply (profile_corrected_euler_closed_generic shader32 _ 2 shader32_ok) with (F := F) (h := h) (g := g) (m := m);
+      unfold shader32; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; lia. }
+  unfold shader32; cbn [m_u k_div].
+  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
+Qed.
+
+(* Note: shader profile, every division (by n, by 2) a reciprocal within 2.5 ulp
+   then a product, or one 2.5-ulp division ([shader32_recip]). *)
+(** Corrected Euler by its closed form, shader profile, division as .(1/n):
+    |p_i - ceuler i| <= 141.11 2^-24. *)
+Theorem profile_shader_corrected_euler_closed_recip_binary32 : forall (s : span) (F : fsetup),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) -> (1 <= n s <= 4096)%nat ->
+  ce_setup_ok shader32_recip s F ->
+  forall i, (i <= n s)%nat -> forall h g m p : R,
+  ap_mul shader32_recip h ((INR i - 1) / 2 * fs_ds F) -> ap_add shader32_recip g (fs_t0 F + h) ->
+  ap_mul shader32_recip m (INR i * g) -> ap_add shader32_recip p (fs_pa F + m) ->
+  Rabs (p - ceuler s i) <= 14111 / 100 * bpow radix2 (-24).
+Proof.
+  intros s F Ha Hb Hl Hn HF i Hi h g m p Hh Hg Hm Hp.
+  pose proof (ce_profile_nr s Hn) as Hn'.
+  eapply Rle_trans.
+  { apply (profile_corrected_euler_closed_generic shader32_recip _ 2 shader32_recip_ok) with (F := F) (h := h) (g := g) (m := m);
+      unfold shader32_recip; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; lia. }
+  unfold shader32_recip; cbn [m_u k_div].
+  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
+Qed.
+
+(* Note: shader profile; (i-1)/2 halved in floats ([half_ok]): c = (i-1)/2
+   by a division then h = c ds, or y = (i-1) ds then h = y/2. *)
+(** Corrected Euler by its closed form, shader profile, (i-1)/2 halved in floats:
+    |p_i - ceuler i| <= 131.5 2^-24. *)
+Theorem profile_shader_corrected_euler_closed_half_binary32 : forall (s : span) (F : fsetup),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) -> (1 <= n s <= 4096)%nat ->
+  ce_setup_ok shader32 s F ->
+  forall i, (i <= n s)%nat -> forall h g m p : R,
+  half_ok shader32 i (fs_ds F) h -> ap_add shader32 g (fs_t0 F + h) ->
+  ap_mul shader32 m (INR i * g) -> ap_add shader32 p (fs_pa F + m) ->
+  Rabs (p - ceuler s i) <= 1315 / 10 * bpow radix2 (-24).
+Proof.
+  intros s F Ha Hb Hl Hn HF i Hi h g m p Hh Hg Hm Hp.
+  pose proof (ce_profile_nr s Hn) as Hn'.
+  eapply Rle_trans.
+  { apply (profile_corrected_euler_closed_half_generic shader32 _ 2 shader32_ok) with (F := F) (h := h) (g := g) (m := m);
+      unfold shader32; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; lia. }
+  unfold shader32; cbn [m_u k_div].
+  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
+Qed.
+
+(* Note: shader profile, every division (by n, by 2, the halving of the
+   closed form) a reciprocal then a product, or one 2.5-ulp division. *)
+(** Corrected Euler by its closed form, shader profile, (i-1)/2 halved in floats,
+    division as .(1/n): |p_i - ceuler i| <= 148.11 2^-24. *)
+Theorem profile_shader_corrected_euler_closed_half_recip_binary32 : forall (s : span) (F : fsetup),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) -> (1 <= n s <= 4096)%nat ->
+  ce_setup_ok shader32_recip s F ->
+  forall i, (i <= n s)%nat -> forall h g m p : R,
+  half_ok shader32_recip i (fs_ds F) h -> ap_add shader32_recip g (fs_t0 F + h) ->
+  ap_mul shader32_recip m (INR i * g) -> ap_add shader32_recip p (fs_pa F + m) ->
+  Rabs (p - ceuler s i) <= 14811 / 100 * bpow radix2 (-24).
+Proof.
+  intros s F Ha Hb Hl Hn HF i Hi h g m p Hh Hg Hm Hp.
+  pose proof (ce_profile_nr s Hn) as Hn'.
+  eapply Rle_trans.
+  { apply (profile_corrected_euler_closed_half_generic shader32_recip _ 2 shader32_recip_ok) with (F := F) (h := h) (g := g) (m := m);
+      unfold shader32_recip; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; lia. }
+  unfold shader32_recip; cbn [m_u k_div].
+  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
+Qed.
+
+(* Note: shader profile (one 2.5-ulp division per division); the bound does
+   not grow with n. *)
+(** Euler by its closed form, shader profile: |p_i - euler_span i| <= 277.9 2^-24. *)
+Theorem profile_shader_euler_closed_binary32 : forall (s : span) (F : fsetup),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) -> (1 <= n s <= 4096)%nat ->
+  eu_setup_ok shader32 s F ->
+  forall i, (i <= n s)%nat -> forall h g m p : R,
+  ap_mul shader32 h ((INR i - 1) / 2 * fs_ds F) -> ap_add shader32 g (fs_dia F + h) ->
+  ap_mul shader32 m (INR i * g) -> ap_add shader32 p (fs_pa F + m) ->
+  Rabs (p - euler_span s i) <= 2779 / 10 * bpow radix2 (-24).
+Proof.
+  intros s F Ha Hb Hl Hn HF i Hi h g m p Hh Hg Hm Hp.
+  pose proof (ce_profile_nr s Hn) as Hn'.
+  eapply Rle_trans.
+  { apply (profile_euler_closed_generic shader32 _ 2 shader32_ok) with (F := F) (h := h) (g := g) (m := m);
+      unfold shader32; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; lia. }
+  unfold shader32; cbn [m_u k_div].
+  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
+Qed.
+
+(* Note: shader profile, every division (by n, by 2) a reciprocal within 2.5 ulp
+   then a product, or one 2.5-ulp division ([shader32_recip]). *)
+(** Euler by its closed form, shader profile, division as .(1/n):
+    |p_i - euler_span i| <= 308.11 2^-24. *)
+Theorem profile_shader_euler_closed_recip_binary32 : forall (s : span) (F : fsetup),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) -> (1 <= n s <= 4096)%nat ->
+  eu_setup_ok shader32_recip s F ->
+  forall i, (i <= n s)%nat -> forall h g m p : R,
+  ap_mul shader32_recip h ((INR i - 1) / 2 * fs_ds F) -> ap_add shader32_recip g (fs_dia F + h) ->
+  ap_mul shader32_recip m (INR i * g) -> ap_add shader32_recip p (fs_pa F + m) ->
+  Rabs (p - euler_span s i) <= 30811 / 100 * bpow radix2 (-24).
+Proof.
+  intros s F Ha Hb Hl Hn HF i Hi h g m p Hh Hg Hm Hp.
+  pose proof (ce_profile_nr s Hn) as Hn'.
+  eapply Rle_trans.
+  { apply (profile_euler_closed_generic shader32_recip _ 2 shader32_recip_ok) with (F := F) (h := h) (g := g) (m := m);
+      unfold shader32_recip; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; lia. }
+  unfold shader32_recip; cbn [m_u k_div].
+  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
+Qed.
+
+(* Note: shader profile; (i-1)/2 halved in floats ([half_ok]): c = (i-1)/2
+   by a division then h = c ds, or y = (i-1) ds then h = y/2. *)
+(** Euler by its closed form, shader profile, (i-1)/2 halved in floats:
+    |p_i - euler_span i| <= 281.65 2^-24. *)
+Theorem profile_shader_euler_closed_half_binary32 : forall (s : span) (F : fsetup),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) -> (1 <= n s <= 4096)%nat ->
+  eu_setup_ok shader32 s F ->
+  forall i, (i <= n s)%nat -> forall h g m p : R,
+  half_ok shader32 i (fs_ds F) h -> ap_add shader32 g (fs_dia F + h) ->
+  ap_mul shader32 m (INR i * g) -> ap_add shader32 p (fs_pa F + m) ->
+  Rabs (p - euler_span s i) <= 28165 / 100 * bpow radix2 (-24).
+Proof.
+  intros s F Ha Hb Hl Hn HF i Hi h g m p Hh Hg Hm Hp.
+  pose proof (ce_profile_nr s Hn) as Hn'.
+  eapply Rle_trans.
+  { apply (profile_euler_closed_half_generic shader32 _ 2 shader32_ok) with (F := F) (h := h) (g := g) (m := m);
+      unfold shader32; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; lia. }
+  unfold shader32; cbn [m_u k_div].
+  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
+Qed.
+
+(* Note: shader profile, every division (by n, by 2, the halving of the
+   closed form) a reciprocal then a product, or one 2.5-ulp division. *)
+(** Euler by its closed form, shader profile, (i-1)/2 halved in floats,
+    division as .(1/n): |p_i - euler_span i| <= 313.36 2^-24. *)
+Theorem profile_shader_euler_closed_half_recip_binary32 : forall (s : span) (F : fsetup),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) -> (1 <= n s <= 4096)%nat ->
+  eu_setup_ok shader32_recip s F ->
+  forall i, (i <= n s)%nat -> forall h g m p : R,
+  half_ok shader32_recip i (fs_ds F) h -> ap_add shader32_recip g (fs_dia F + h) ->
+  ap_mul shader32_recip m (INR i * g) -> ap_add shader32_recip p (fs_pa F + m) ->
+  Rabs (p - euler_span s i) <= 31336 / 100 * bpow radix2 (-24).
+Proof.
+  intros s F Ha Hb Hl Hn HF i Hi h g m p Hh Hg Hm Hp.
+  pose proof (ce_profile_nr s Hn) as Hn'.
+  eapply Rle_trans.
+  { apply (profile_euler_closed_half_generic shader32_recip _ 2 shader32_recip_ok) with (F := F) (h := h) (g := g) (m := m);
+      unfold shader32_recip; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; lia. }
+  unfold shader32_recip; cbn [m_u k_div].
+  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
+Qed.
+
 (** ** What the profile factors cover (Flocq) *)
 
 (** Round to nearest (any tie-breaking rule), subnormals kept:
@@ -2204,4 +2853,71 @@ Proof.
       replace (bpow radix2 (1 - 24)) with (2 * bpow radix2 (-24)) in U by (simpl; lra).
       pose proof (bpow_ge_0 radix2 (-149)). lra. }
   pose proof (bpow_ge_0 radix2 (-126)). lra.
+Qed.
+
+(** Division by m (1 <= m <= 2^24: n or 2) as a reciprocal within 5u (2.5 ulp,
+    the specifications' bound on 1.0/x) followed by a product within 2u (any
+    rounding of the format): k = 7 + 2^-20. *)
+Lemma recip_mul_covered_5_2 : forall (u eta m x r y : R),
+  0 < u <= / 16777216 -> 0 <= eta -> eta * 1152921504606846976 <= u -> 1 <= m <= 16777216 ->
+  approx 5 u eta r (/ m) -> approx 2 u eta y (x * r) ->
+  approx (7 + / 1048576) u eta y (x / m).
+Proof.
+  intros u eta m x r y Hu He He2 Hm Hr Hy. unfold approx, ap1 in *.
+  assert (Im : 0 < / m) by (apply Rinv_0_lt_compat; lra).
+  assert (Im2 : / 16777216 <= / m) by (apply Rinv_le_contravar; lra).
+  rewrite (Rabs_pos_eq (/ m)) in Hr by lra.
+  assert (R1 : Rabs (r - / m) <= (5 + / 68719476736) * u * / m).
+  { assert (eta <= / 68719476736 * u * / m).
+    { assert (/ 68719476736 * u * / 16777216 <= / 68719476736 * u * / m)
+        by (apply Rmult_le_compat_l; nra). lra. }
+    lra. }
+  set (d := (5 + / 68719476736) * u).
+  assert (Hd : 0 <= d <= / 3000000) by (unfold d; lra).
+  assert (X1 : Rabs (x * r - x / m) <= d * Rabs (x / m)).
+  { replace (x * r - x / m) with (x * (r - / m)) by (field; lra).
+    replace (x / m) with (x * / m) by (field; lra).
+    rewrite !Rabs_mult, (Rabs_pos_eq (/ m)) by lra.
+    replace (d * (Rabs x * / m)) with (Rabs x * (d * / m)) by ring.
+    apply Rmult_le_compat_l; [apply Rabs_pos|]. unfold d. lra. }
+  assert (X2 : Rabs (x * r) <= (1 + d) * Rabs (x / m)).
+  { pose proof (abs_near _ _ _ X1). lra. }
+  assert (X3 : 2 * u * Rabs (x * r) <= 2 * u * ((1 + d) * Rabs (x / m)))
+    by (apply Rmult_le_compat_l; lra).
+  pose proof (Rabs_pos (x / m)) as X0.
+  assert (X4 : u * (d * Rabs (x / m)) <= u * (/ 3000000 * Rabs (x / m)))
+    by (apply Rmult_le_compat_l; [lra | apply Rmult_le_compat_r; lra]).
+  assert (X5 : d * Rabs (x / m) = (5 + / 68719476736) * (u * Rabs (x / m))) by (unfold d; ring).
+  assert (X6 : 0 <= u * Rabs (x / m)) by (apply Rmult_le_pos; lra).
+  replace (y - x / m) with ((y - x * r) + (x * r - x / m)) by ring.
+  eapply Rle_trans; [apply Rabs_triang|].
+  lra.
+Qed.
+
+(** So [shader32_recip] covers every operation of [shader32] (the same
+    relation for inputs, add, sub, mul; a 2.5-ulp division has k = 5 <=
+    7 + 2^-20) and a division by n or by 2 done as a 2.5-ulp reciprocal then
+    a product of the shader profile (possibly flushed). *)
+Lemma shader32_recip_covered : forall (y x : R),
+  (ap_in shader32 y x -> ap_in shader32_recip y x) /\
+  (ap_add shader32 y x -> ap_add shader32_recip y x) /\
+  (ap_mul shader32 y x -> ap_mul shader32_recip y x) /\
+  (ap_div shader32 y x -> ap_div shader32_recip y x).
+Proof.
+  intros y x. unfold ap_in, ap_add, ap_mul, ap_div, shader32, shader32_recip;
+    cbn [m_u m_eta k_in k_add k_mul k_div].
+  repeat split; try (intros H; exact H).
+  intros H. unfold approx in *. eapply ap1_mono; [|exact H].
+  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
+Qed.
+
+Lemma shader32_recip_mul_covered : forall (m x r y : R), 1 <= m <= 16777216 ->
+  ap_div shader32 r (/ m) -> ap_mul shader32 y (x * r) -> ap_div shader32_recip y (x / m).
+Proof.
+  intros m x r y Hm Hr Hy.
+  unfold ap_div, ap_mul, shader32, shader32_recip in *; cbn [m_u m_eta k_mul k_div] in *.
+  pose proof (eta84 (-126) (-24) ltac:(lia)) as H5.
+  pose proof (bpow_ge_0 radix2 (-126)) as H6.
+  rewrite u24 in *.
+  apply (recip_mul_covered_5_2 _ _ m x r y); try assumption; lra.
 Qed.

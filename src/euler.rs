@@ -10,10 +10,15 @@
 //! `profile_ieee_euler_binary64`, `profile_ieee_euler_binary64_large`) and `131.41·u`
 //! for the closed form `p_a + i·(di_a + (i−1)/2·ds)` (`profile_ieee_euler_closed_binary32`,
 //! `profile_ieee_euler_closed_binary64`, `profile_ieee_euler_closed_binary64_large`),
-//! `proofs/Profiles.v`. Under `shader`, `profile_shader_euler_binary32` proves
-//! `(11.1·n + 257.9)·2^-24` with each division one 2.5-ulp division; the bound `check`
-//! applies there is derived, as it also covers `·(1/n)`
-//! ([`crate::tolerance::profile::proved_in_part`]).
+//! `proofs/Profiles.v`. Under `shader` (binary32, `n ≤ 4096`), with every division
+//! one 2.5-ulp division or a 2.5-ulp reciprocal then a product:
+//! `(11.1·n + 288.11)·2^-24` for the recurrence (`profile_shader_euler_recip_binary32`;
+//! `profile_shader_euler_binary32`, `(11.1·n + 257.9)·2^-24`, for one division each),
+//! `308.11·2^-24` for the closed form (`profile_shader_euler_closed_recip_binary32`,
+//! `profile_shader_euler_closed_binary32`) and `313.36·2^-24` with its `(i−1)/2` halved
+//! in floats (`profile_shader_euler_closed_half_recip_binary32`,
+//! `profile_shader_euler_closed_half_binary32`); `check` applies the largest
+//! ([`crate::tolerance::profile::proved`]).
 
 use crate::error::SpanError;
 use crate::scalar::Scalar;

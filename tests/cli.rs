@@ -529,3 +529,88 @@ fn opposite_normals_are_computed_where_defined() {
     assert_eq!(o.status.code(), Some(2));
     assert!(String::from_utf8_lossy(&o.stderr).contains("pixel 2 of n = 4"));
 }
+
+/// Every `--flag` a message of the tool suggests (in a string of `src/`, comments and
+/// tests apart) is one that the command printing it accepts: `check`'s path (its CLI
+/// file and the library's conformance kit) only `check`'s flags, `span`'s only
+/// `span`'s, and so on; no advice names an argument the user cannot pass.
+#[test]
+fn every_suggested_flag_is_accepted() {
+    use std::collections::BTreeSet;
+    /// The `--name` tokens of `text`.
+    fn flags(text: &str) -> BTreeSet<String> {
+        let mut out = BTreeSet::new();
+        let mut rest = text;
+        while let Some(at) = rest.find("--") {
+            let before = rest[..at].chars().next_back().unwrap_or(' ');
+            let tail = &rest[at + 2..];
+            let len = tail
+                .find(|c: char| !(c.is_ascii_lowercase() || c == '-'))
+                .unwrap_or(tail.len());
+            let name = tail[..len].trim_end_matches('-');
+            if !before.is_alphanumeric() && before != '-' && !name.is_empty() {
+                out.insert(name.to_string());
+            }
+            rest = &tail[len..];
+        }
+        out
+    }
+    /// The flags in the string literals of source `text`, up to its unit tests.
+    fn suggested(text: &str) -> BTreeSet<String> {
+        let code = text.split("#[cfg(test)]").next().unwrap_or(text);
+        code.lines()
+            .filter(|l| !l.trim_start().starts_with("//"))
+            .flat_map(|l| {
+                l.split('"')
+                    .enumerate()
+                    .filter(|(k, _)| k % 2 == 1)
+                    .flat_map(|(_, p)| flags(p))
+                    .collect::<Vec<_>>()
+            })
+            .collect()
+    }
+    let accepted = |cmd: &str| {
+        flags(&String::from_utf8_lossy(
+            &runner::run(&[cmd, "--help"]).stdout,
+        ))
+    };
+    let commands = ["span", "reproduce", "compare", "vectors", "check"];
+    let of: std::collections::BTreeMap<&str, BTreeSet<String>> =
+        commands.iter().map(|c| (*c, accepted(c))).collect();
+    let src = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("src");
+    let file = |f: &str| std::fs::read_to_string(src.join(f)).unwrap();
+    let mut wrong = Vec::new();
+    let mut judge = |f: &str, cmds: &[&str]| {
+        for flag in suggested(&file(f)) {
+            // `cargo run --features mpfr` is cargo's flag, named as such.
+            if flag == "features" {
+                continue;
+            }
+            if !cmds.iter().any(|c| of[c].contains(&flag)) {
+                wrong.push(format!("src/{f}: --{flag} (not a flag of {cmds:?})"));
+            }
+        }
+    };
+    judge("cli/check.rs", &["check"]);
+    for f in [
+        "check.rs",
+        "verdict.rs",
+        "integrity.rs",
+        "vectors.rs",
+        "report.rs",
+    ] {
+        judge(&format!("conformance/{f}"), &["check"]);
+    }
+    judge("cli/span.rs", &["span"]);
+    judge("span_report.rs", &["span"]);
+    judge("testkit.rs", &["span"]);
+    judge("cli/vectors.rs", &["vectors"]);
+    judge("cli/output.rs", &["reproduce", "compare", "vectors"]);
+    judge("cli/torus.rs", &["reproduce", "compare"]);
+    judge("cli/reproduce.rs", &["reproduce"]);
+    judge("cli/compare.rs", &["compare"]);
+    assert!(
+        wrong.is_empty(),
+        "advice naming flags the command does not take: {wrong:?}"
+    );
+}

@@ -581,8 +581,9 @@ fn check_profiles_judge_by_the_proved_bounds() {
             }
         }
     }
-    // Phong, Euler, Duff, symmetric Phong and adaptive have derived ieee and shader
-    // bounds (docs/float.md §18.4–18.5): the crate's own results pass on every set
+    // Euler's ieee and shader bounds are proved, Phong's, Duff's, symmetric Phong's and
+    // the adaptive scheme's derived (docs/float.md §18.2, §18.4–18.5): the crate's own
+    // results pass on every set
     // under the default profile (ieee) in f32 and f64, and under shader in f32.
     for set in SETS {
         let path = root()
@@ -655,7 +656,8 @@ fn check_profiles_judge_by_the_proved_bounds() {
 
 /// `check --report junit|json FILE`: JUnit XML that parses, one test case per vector
 /// case with a failure naming the pixel, expected, got and tolerance; JSON likewise;
-/// written by the output rules (a user's file is not replaced).
+/// written by the output rules but one: an earlier report is replaced (not a link, a
+/// folder or an input); `-` writes it to standard output.
 #[test]
 fn check_reports_for_other_ci_systems() {
     let file = committed("typical");
@@ -722,22 +724,53 @@ fn check_reports_for_other_ci_systems() {
         .unwrap();
     assert_eq!(c["pass"], false);
     assert_eq!(c["worst_pixel"], 3);
-    // A file of the user's is not replaced; the tool's own report is.
-    let mine = dir.join("mine.xml");
-    std::fs::write(&mine, "mine").unwrap();
+    // The report is the tool's own output: a report left by an earlier run (a CI
+    // run's, in a fresh checkout the folder's list does not name it) is replaced, and
+    // the verdict's exit code stands.
+    let left = dir.join("left.xml");
+    std::fs::write(&left, "an earlier run's report").unwrap();
     let (code, _, err) = run_check(
         &typical_path(),
         &p,
-        &["--report", "junit", mine.to_str().unwrap()],
+        &["--report", "junit", left.to_str().unwrap()],
     );
-    assert_eq!(code, 2, "{err}");
-    assert_eq!(std::fs::read_to_string(&mine).unwrap(), "mine");
+    assert_eq!(code, 1, "{err}");
+    assert!(std::fs::read_to_string(&left).unwrap().starts_with("<?xml"));
     let (code, _, _) = run_check(
         &typical_path(),
         &p,
         &["--report", "junit", xml_path.to_str().unwrap()],
     );
     assert_eq!(code, 1);
+    // Never an input file, a symbolic link or a folder.
+    let (code, _, err) = run_check(
+        &typical_path(),
+        &p,
+        &["--report", "junit", p.to_str().unwrap()],
+    );
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("one of the input files"), "{err}");
+    let link = dir.join("link.xml");
+    let _ = std::fs::remove_file(&link);
+    std::os::unix::fs::symlink(&left, &link).unwrap();
+    let (code, _, err) = run_check(
+        &typical_path(),
+        &p,
+        &["--report", "junit", link.to_str().unwrap()],
+    );
+    assert_eq!(code, 2, "{err}");
+    assert!(err.contains("symbolic link"), "{err}");
+    let (code, _, err) = run_check(
+        &typical_path(),
+        &p,
+        &["--report", "junit", dir.to_str().unwrap()],
+    );
+    assert_eq!(code, 2, "{err}");
+    // `-`: the report on standard output, the human verdict on standard error.
+    let (code, out, err) = run_check(&typical_path(), &p, &["--report", "junit", "-"]);
+    assert_eq!(code, 1, "{err}");
+    assert!(roxmltree::Document::parse(&out).is_ok(), "{out}");
+    assert!(err.contains("overall: "), "{err}");
     let (code, _, err) = run_check(
         &typical_path(),
         &p,

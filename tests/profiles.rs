@@ -13,7 +13,9 @@
 //!   careful implementation would not: round toward zero (or down, or up) for every
 //!   addition, subtraction and multiplication, divisions 2 ulps toward zero from the
 //!   nearest (within the 2.5 ulps allowed), fused or unfused products, and every
-//!   input and result below `2^-126` flushed to zero.
+//!   input and result below `2^-126` flushed to zero; each division by `n` or by 2
+//!   one such division or a reciprocal (`1/n`, a computed `1/2`) then a product; the
+//!   recurrences and the closed forms, with `(i−1)/2` exact or halved in floats.
 //!
 //! Inputs: the edge, targeted and random spans of `tests/common` (n up to 4096 in the
 //! extensive tier), exact values from the exact run.
@@ -613,13 +615,53 @@ const GPUS: [Gpu; 4] = [
     },
 ];
 
-/// The set-up on the GPU model: `(p_a, dp, ds, t_0)`.
-fn gpu_setup(g: Gpu, s: &Span<Q>) -> [Q; 4] {
+/// How shader source divides: by `n` (`k`, `ds`, `ε/n`, `dp`) and by 2 (`p_a/2`,
+/// `p_b/2`, and the closed forms' `(i−1)/2` when halved in floats).
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Division {
+    /// One division within 2.5 ulp each (`x/n`, `x/2`).
+    Once,
+    /// `x·(1/n)` and `x·(1/2)`: each reciprocal a 2.5-ulp division (`1/2` computed,
+    /// not the literal `0.5`), then a product.
+    Reciprocal,
+    /// Each division its own way: `x·(1/n)` for the divisions by `n`, a 2.5-ulp `x/2`
+    /// for the halvings.
+    Mixed,
+}
+
+impl Gpu {
+    /// `x/m` divided as `how` says (`halving`: a division by 2).
+    fn over(&self, how: Division, x: &Q, m: &Q, halving: bool) -> Q {
+        let reciprocal = match how {
+            Division::Once => false,
+            Division::Reciprocal => true,
+            Division::Mixed => !halving,
+        };
+        if reciprocal {
+            self.mul(x, &self.div(&q(1, 1), m))
+        } else {
+            self.div(x, m)
+        }
+    }
+}
+
+/// The set-up on the GPU model, dividing as `how` says.
+struct GpuSetup {
+    pa: Q,
+    dp: Q,
+    dia: Q,
+    ds: Q,
+    t0: Q,
+}
+
+fn gpu_setup(g: Gpu, s: &Span<Q>, how: Division) -> GpuSetup {
     let vec = |x: &phong_approx::Vec3<Q>| [g.input(&x.x), g.input(&x.y), g.input(&x.z)];
     let (na, nb, l) = (vec(&s.na), vec(&s.nb), vec(&s.l));
     let nf = qi(s.n);
     let two = q(2, 1);
-    let k = [0, 1, 2].map(|j| g.div(&g.sub(&nb[j], &na[j]), &nf));
+    let over_n = |x: &Q| g.over(how, x, &nf, false);
+    let half = |x: &Q| g.over(how, x, &two, true);
+    let k = [0, 1, 2].map(|j| over_n(&g.sub(&nb[j], &na[j])));
     let a = g.dot(&k, &l);
     let pa = g.dot(&na, &l);
     let pb = g.dot(&nb, &l);
@@ -630,9 +672,10 @@ fn gpu_setup(g: Gpu, s: &Span<Q>) -> [Q; 4] {
     } else {
         g.add(&g.mul(&(&two * &nf), &c), &d)
     };
-    let dia = g.fms(&g.div(&pa, &two), &d, &a);
-    let dib = g.fms(&g.div(&pb, &two), &dqb, &a);
-    let ds = g.div(&g.sub(&dib, &dia), &nf);
+    let dia = g.fms(&half(&pa), &d, &a);
+    let dib = g.fms(&half(&pb), &dqb, &a);
+    let ds = over_n(&g.sub(&dib, &dia));
+    // n(n−1)/2 exact, formed as an integer and converted: every theorem assumes it.
     let tri = qi(s.n) * qi(s.n - 1) / q(2, 1);
     let pn = if g.fused {
         g.r(&tri * &ds + g.r(&nf * &dia + &pa))
@@ -640,12 +683,24 @@ fn gpu_setup(g: Gpu, s: &Span<Q>) -> [Q; 4] {
         g.add(&g.add(&pa, &g.mul(&nf, &dia)), &g.mul(&tri, &ds))
     };
     let eps = g.sub(&pn, &pb);
-    let t0 = g.sub(&dia, &g.div(&eps, &nf));
-    let dp = g.div(&g.sub(&pb, &pa), &nf);
-    [pa, dp, ds, t0]
+    let t0 = g.sub(&dia, &over_n(&eps));
+    let dp = over_n(&g.sub(&pb, &pa));
+    GpuSetup {
+        pa,
+        dp,
+        dia,
+        ds,
+        t0,
+    }
 }
 
 fn shader(theorem: &str, method: Method, alpha: f64, beta: f64) {
+    shader_by(theorem, method, &[Division::Once], alpha, beta);
+}
+
+/// The recurrence of `method` on the four software GPUs, dividing in each of `ways`,
+/// within `(α·n + β)·u` of the exact run.
+fn shader_by(theorem: &str, method: Method, ways: &[Division], alpha: f64, beta: f64) {
     let u = f32::U;
     // The software GPU is slow: the spans up to n = 1024 in the default tier.
     let most = tiered(1024, 4096);
@@ -653,9 +708,12 @@ fn shader(theorem: &str, method: Method, alpha: f64, beta: f64) {
     for (c, s) in spans().into_iter().filter(|(c, _)| c.n <= most) {
         let b = bound(alpha, beta, s.n, u);
         for g in GPUS {
-            let out = gpu_recurrence(method, g, &s);
-            worst = worst.max(within(&format!("{theorem} {g:?}"), &c, &s, method, &out, b));
-            checked += 1;
+            for &how in ways {
+                let out = gpu_recurrence(method, g, how, &s);
+                let what = format!("{theorem} {g:?} {how:?}");
+                worst = worst.max(within(&what, &c, &s, method, &out, b));
+                checked += 1;
+            }
         }
     }
     assert!(checked > 100, "{checked}");
@@ -663,26 +721,102 @@ fn shader(theorem: &str, method: Method, alpha: f64, beta: f64) {
 }
 
 /// Gouraud (`g += dp`), corrected Euler (`p += t; t += ds` from `t_0`) or plain Euler
-/// (the same from `s_0 = di_a`) on the GPU model.
-fn gpu_recurrence(method: Method, g: Gpu, s: &Span<Q>) -> Vec<Q> {
-    let [pa, dp, ds, t0] = gpu_setup(g, s);
-    let mut out = vec![pa.clone()];
+/// (the same from `s_0 = di_a`) on the GPU model, dividing as `how` says.
+fn gpu_recurrence(method: Method, g: Gpu, how: Division, s: &Span<Q>) -> Vec<Q> {
+    let st = gpu_setup(g, s, how);
+    let mut out = vec![st.pa.clone()];
     let start = if method == Method::Euler {
-        gpu_dia(g, s)
+        st.dia
     } else {
-        t0
+        st.t0
     };
-    let (mut p, mut t) = (pa, start);
+    let (mut p, mut t) = (st.pa, start);
     for _ in 0..s.n {
         if method == Method::Gouraud {
-            p = g.add(&p, &dp);
+            p = g.add(&p, &st.dp);
         } else {
             p = g.add(&p, &t);
-            t = g.add(&t, &ds);
+            t = g.add(&t, &st.ds);
         }
         out.push(p.clone());
     }
     out
+}
+
+/// How a closed form takes `(i−1)/2·ds`.
+#[derive(Clone, Copy, Debug)]
+enum Halving {
+    /// `(i−1)/2` exact (`(i−1)·0.5` with the literal `0.5`), then its product with
+    /// `ds`, fused into the addition or rounded.
+    Exact,
+    /// `c = (i−1)/2` halved in floats (a division, or `·(1/2)` with `1/2` computed),
+    /// then `c·ds`, fused into the addition or rounded.
+    First,
+    /// `y = (i−1)·ds`, then `y/2` halved in floats.
+    Last,
+}
+
+/// Corrected Euler's closed form `p_a + i·(t_0 + (i−1)/2·ds)`, or plain Euler's
+/// `p_a + i·(di_a + (i−1)/2·ds)`, on the GPU model: the set-up dividing as `how`
+/// says, `(i−1)/2·ds` as `halving` says (halved as `how` says), the product by `i`
+/// fused into the addition of `p_a` or rounded.
+fn gpu_closed(method: Method, g: Gpu, how: Division, halving: Halving, s: &Span<Q>) -> Vec<Q> {
+    let st = gpu_setup(g, s, how);
+    let start = if method == Method::Euler {
+        &st.dia
+    } else {
+        &st.t0
+    };
+    let two = q(2, 1);
+    (0..=s.n)
+        .map(|i| {
+            let x = qi(i);
+            let im1 = qi(i) - q(1, 1);
+            let gi = match halving {
+                Halving::Exact | Halving::First => {
+                    let c = match halving {
+                        Halving::Exact => im1 * q(1, 2),
+                        _ => g.over(how, &im1, &two, true),
+                    };
+                    if g.fused {
+                        g.r(start + &c * &st.ds)
+                    } else {
+                        g.add(start, &g.mul(&c, &st.ds))
+                    }
+                }
+                Halving::Last => g.add(start, &g.over(how, &g.mul(&im1, &st.ds), &two, true)),
+            };
+            if g.fused {
+                g.r(&st.pa + &x * &gi)
+            } else {
+                g.add(&st.pa, &g.mul(&x, &gi))
+            }
+        })
+        .collect()
+}
+
+/// `method`'s closed form on the four software GPUs in each of `ways` (a division
+/// and a halving), within `β·u` of the exact run at every `n`. The per-pixel
+/// divisions are slow to emulate: in the default tier each span and GPU takes one of
+/// `ways` in turn (so every way runs on every GPU, on a share of the spans), in the
+/// extensive tier all of them.
+fn shader_closed(theorem: &str, method: Method, ways: &[(Division, Halving)], beta: f64) {
+    let most = tiered(1024, 4096);
+    let (mut checked, mut worst) = (0, 0f64);
+    let spans = spans().into_iter().filter(|(c, _)| c.n <= most);
+    for (j, (c, s)) in spans.enumerate() {
+        for (k, g) in GPUS.into_iter().enumerate() {
+            let turn = [ways[(j + k) % ways.len()]];
+            for &(how, halving) in if extensive() { ways } else { &turn[..] } {
+                let out = gpu_closed(method, g, how, halving, &s);
+                let what = format!("{theorem} {g:?} {how:?} {halving:?}");
+                worst = worst.max(within(&what, &c, &s, method, &out, beta * f32::U));
+                checked += 1;
+            }
+        }
+    }
+    assert!(checked > 100, "{checked}");
+    eprintln!("{theorem}: {checked} runs, worst {worst:.3} of the bound");
 }
 
 #[test]
@@ -711,6 +845,168 @@ fn profile_shader_corrected_euler_binary32() {
 #[test]
 fn profile_shader_euler_binary32() {
     shader("profile_shader_euler_binary32", Method::Euler, 11.1, 257.9);
+}
+
+/// The ways of dividing the `_recip` theorems cover besides one 2.5-ulp division
+/// each (all three in the extensive tier).
+fn reciprocal_ways() -> &'static [Division] {
+    tiered(
+        &[Division::Reciprocal, Division::Mixed][..],
+        &[Division::Once, Division::Reciprocal, Division::Mixed][..],
+    )
+}
+
+/// Gouraud on the four software GPUs with `dp = (p_b − p_a)·(1/n)`, the reciprocal a
+/// 2.5-ulp division then a product, and with one 2.5-ulp division.
+#[test]
+fn profile_shader_gouraud_recip_binary32() {
+    shader_by(
+        "profile_shader_gouraud_recip_binary32",
+        Method::Gouraud,
+        &[Division::Reciprocal, Division::Once],
+        2.0012,
+        28.0014,
+    );
+}
+
+/// Corrected Euler's recurrence on the software GPUs with every division by `n` and
+/// by 2 through a 2.5-ulp reciprocal and a product (`1/2` computed), or `·(1/n)` with
+/// a 2.5-ulp `/2`; `n(n−1)/2` exact.
+#[test]
+fn profile_shader_corrected_euler_recip_binary32() {
+    shader_by(
+        "profile_shader_corrected_euler_recip_binary32",
+        Method::CorrectedEuler,
+        reciprocal_ways(),
+        4.4,
+        124.31,
+    );
+}
+
+/// Plain Euler's recurrence on the software GPUs, dividing as in
+/// [`profile_shader_corrected_euler_recip_binary32`].
+#[test]
+fn profile_shader_euler_recip_binary32() {
+    shader_by(
+        "profile_shader_euler_recip_binary32",
+        Method::Euler,
+        reciprocal_ways(),
+        11.1,
+        288.11,
+    );
+}
+
+/// Corrected Euler by its closed form on the software GPUs: one 2.5-ulp division
+/// each, `(i−1)/2` exact, fused or not; `126.5·u` at every `n`.
+#[test]
+fn profile_shader_corrected_euler_closed_binary32() {
+    shader_closed(
+        "profile_shader_corrected_euler_closed_binary32",
+        Method::CorrectedEuler,
+        &[(Division::Once, Halving::Exact)],
+        126.5,
+    );
+}
+
+/// As [`profile_shader_corrected_euler_closed_binary32`], every division through a
+/// 2.5-ulp reciprocal and a product, or mixed.
+#[test]
+fn profile_shader_corrected_euler_closed_recip_binary32() {
+    let ways: Vec<_> = reciprocal_ways()
+        .iter()
+        .map(|&how| (how, Halving::Exact))
+        .collect();
+    shader_closed(
+        "profile_shader_corrected_euler_closed_recip_binary32",
+        Method::CorrectedEuler,
+        &ways,
+        141.11,
+    );
+}
+
+/// Plain Euler by its closed form on the software GPUs: one 2.5-ulp division each,
+/// `(i−1)/2` exact, fused or not; `277.9·u` at every `n`.
+#[test]
+fn profile_shader_euler_closed_binary32() {
+    shader_closed(
+        "profile_shader_euler_closed_binary32",
+        Method::Euler,
+        &[(Division::Once, Halving::Exact)],
+        277.9,
+    );
+}
+
+/// As [`profile_shader_euler_closed_binary32`], every division through a 2.5-ulp
+/// reciprocal and a product, or mixed.
+#[test]
+fn profile_shader_euler_closed_recip_binary32() {
+    let ways: Vec<_> = reciprocal_ways()
+        .iter()
+        .map(|&how| (how, Halving::Exact))
+        .collect();
+    shader_closed(
+        "profile_shader_euler_closed_recip_binary32",
+        Method::Euler,
+        &ways,
+        308.11,
+    );
+}
+
+/// The ways of halving `(i−1)/2·ds` in floats, for each way of dividing in `ways`.
+fn halved(ways: &[Division]) -> Vec<(Division, Halving)> {
+    ways.iter()
+        .flat_map(|&how| [(how, Halving::First), (how, Halving::Last)])
+        .collect()
+}
+
+/// Corrected Euler's closed form with `(i−1)/2` halved in floats by a 2.5-ulp
+/// division — `c = (i−1)/2` then `c·ds`, or `(i−1)·ds` then `/2` — and one 2.5-ulp
+/// division each in the set-up; `131.5·u`.
+#[test]
+fn profile_shader_corrected_euler_closed_half_binary32() {
+    shader_closed(
+        "profile_shader_corrected_euler_closed_half_binary32",
+        Method::CorrectedEuler,
+        &halved(&[Division::Once]),
+        131.5,
+    );
+}
+
+/// As [`profile_shader_corrected_euler_closed_half_binary32`], every division (the
+/// halving included, through a computed `1/2`) a 2.5-ulp reciprocal and a product,
+/// or mixed; `148.11·u`.
+#[test]
+fn profile_shader_corrected_euler_closed_half_recip_binary32() {
+    shader_closed(
+        "profile_shader_corrected_euler_closed_half_recip_binary32",
+        Method::CorrectedEuler,
+        &halved(reciprocal_ways()),
+        148.11,
+    );
+}
+
+/// Plain Euler's closed form with `(i−1)/2` halved in floats, as in
+/// [`profile_shader_corrected_euler_closed_half_binary32`]; `281.65·u`.
+#[test]
+fn profile_shader_euler_closed_half_binary32() {
+    shader_closed(
+        "profile_shader_euler_closed_half_binary32",
+        Method::Euler,
+        &halved(&[Division::Once]),
+        281.65,
+    );
+}
+
+/// As [`profile_shader_euler_closed_half_binary32`], every division (the halving
+/// included) a 2.5-ulp reciprocal and a product, or mixed; `313.36·u`.
+#[test]
+fn profile_shader_euler_closed_half_recip_binary32() {
+    shader_closed(
+        "profile_shader_euler_closed_half_recip_binary32",
+        Method::Euler,
+        &halved(reciprocal_ways()),
+        313.36,
+    );
 }
 
 /// The model's own roundings are what the profile allows: toward zero never moves
@@ -898,7 +1194,7 @@ fn phong_ieee_derived_binary64() {
     phong_ieee::<f64>("phong_ieee_derived_binary64");
 }
 
-// -------- Duff, Phong under ieee and shader, Euler under shader (derived, §18.5)
+// ------------------------- Duff, Phong under ieee and shader (derived, §18.5)
 
 /// The bound `check` applies to `method` under `profile` on `s` (`None`: no bound).
 fn profile_bound_of(method: Method, profile: Profile, s: &Span<Q>, u: f64) -> Option<f64> {
@@ -1046,57 +1342,9 @@ impl Gpu {
     }
 }
 
-/// Euler on the GPU model (the recurrence).
+/// Euler on the GPU model (the recurrence, one 2.5-ulp division each).
 fn gpu_euler(g: Gpu, s: &Span<Q>) -> Vec<Q> {
-    gpu_recurrence(Method::Euler, g, s)
-}
-
-/// Euler on the GPU model as shader source that multiplies by reciprocals: `·(1/n)`
-/// for each division by `n` and `·(1/2)` with `1/2` computed (each reciprocal a
-/// 2.5-ulp division, then a product). Outside the class of
-/// `profile_shader_euler_binary32` (one 2.5-ulp division each), inside the derived
-/// bound's (docs/float.md §18.5: `κ = 7`).
-fn gpu_euler_reciprocal(g: Gpu, s: &Span<Q>) -> Vec<Q> {
-    let vec = |x: &phong_approx::Vec3<Q>| [g.input(&x.x), g.input(&x.y), g.input(&x.z)];
-    let (na, nb, l) = (vec(&s.na), vec(&s.nb), vec(&s.l));
-    let nf = qi(s.n);
-    let two = q(2, 1);
-    let inv_n = g.div(&q(1, 1), &nf);
-    let half = g.div(&q(1, 1), &two);
-    let k = [0, 1, 2].map(|j| g.mul(&g.sub(&nb[j], &na[j]), &inv_n));
-    let a = g.dot(&k, &l);
-    let pa = g.dot(&na, &l);
-    let pb = g.dot(&nb, &l);
-    let c = g.dot(&k, &k);
-    let d = g.mul(&two, &g.dot(&k, &na));
-    let dqb = if g.fused {
-        g.r(&two * &nf * &c + &d)
-    } else {
-        g.add(&g.mul(&(&two * &nf), &c), &d)
-    };
-    let dia = g.fms(&g.mul(&pa, &half), &d, &a);
-    let dib = g.fms(&g.mul(&pb, &half), &dqb, &a);
-    let ds = g.mul(&g.sub(&dib, &dia), &inv_n);
-    let (mut p, mut t) = (pa, dia);
-    let mut out = vec![p.clone()];
-    for _ in 0..s.n {
-        p = g.add(&p, &t);
-        t = g.add(&t, &ds);
-        out.push(p.clone());
-    }
-    out
-}
-
-/// `di_a = A − (p_a/2)·D` on the GPU model, as in [`gpu_setup`].
-fn gpu_dia(g: Gpu, s: &Span<Q>) -> Q {
-    let vec = |x: &phong_approx::Vec3<Q>| [g.input(&x.x), g.input(&x.y), g.input(&x.z)];
-    let (na, nb, l) = (vec(&s.na), vec(&s.nb), vec(&s.l));
-    let nf = qi(s.n);
-    let k = [0, 1, 2].map(|j| g.div(&g.sub(&nb[j], &na[j]), &nf));
-    let a = g.dot(&k, &l);
-    let pa = g.dot(&na, &l);
-    let d = g.mul(&q(2, 1), &g.dot(&k, &na));
-    g.fms(&g.div(&pa, &q(2, 1)), &d, &a)
+    gpu_recurrence(Method::Euler, g, Division::Once, s)
 }
 
 /// Duff (and, with `horner`, Phong's closed form) on the GPU model.
@@ -1145,13 +1393,11 @@ fn shader_derived(what: &str, method: Method, imp: impl Fn(Gpu, &Span<Q>) -> Vec
     assert!(checked > 40, "{checked}");
 }
 
-/// Euler's, Duff's and Phong's derived `shader` bounds hold on the software GPUs;
-/// Euler's also with `·(1/n)` and a computed `1/2`, which its theorem
-/// (`profile_shader_euler_binary32`) does not cover.
+/// Duff's and Phong's derived `shader` bounds hold on the software GPUs. (Plain
+/// Euler's `shader` bound is proved: the `profile_shader_euler_*` tests above, with
+/// `·(1/n)` and a computed `1/2` in the `_recip` ones.)
 #[test]
 fn profile_shader_derived_binary32() {
-    shader_derived("euler", Method::Euler, gpu_euler);
-    shader_derived("euler, reciprocals", Method::Euler, gpu_euler_reciprocal);
     shader_derived("duff", Method::Duff, |g, s| gpu_duff_or_phong(g, s, false));
     shader_derived("phong (Horner)", Method::Phong, |g, s| {
         gpu_duff_or_phong(g, s, true)
@@ -1369,21 +1615,51 @@ fn correct_variants_pass_the_published_sets_under_ieee() {
     assert_eq!(runs, 3 * 3 * 9 * 2);
 }
 
-/// The software GPUs pass `check` under `shader` on every published set: Gouraud and
-/// corrected Euler (the recurrences), Euler, Duff and Phong (Horner). The default
-/// tier runs the truncating, flushing, unfused GPU; the extensive tier all four.
+/// The software GPUs pass `check` under `shader` on every published set: Gouraud,
+/// corrected Euler and Euler (the recurrences with one 2.5-ulp division each and
+/// with reciprocals, and the closed forms halving `(i−1)/2` in floats through a
+/// computed `1/2`), Duff and Phong (Horner). The default tier runs the truncating,
+/// flushing, unfused GPU; the extensive tier all four.
 #[test]
 fn the_software_gpus_pass_the_published_sets_under_shader() {
     let gpus = if extensive() { &GPUS[..] } else { &GPUS[..1] };
-    let recurrence = |method: Method| move |g: Gpu, s: &Span<Q>| gpu_recurrence(method, g, s);
+    let recurrence = |method: Method, how: Division| {
+        move |g: Gpu, s: &Span<Q>| gpu_recurrence(method, g, how, s)
+    };
+    let closed = |method: Method, halving: Halving| {
+        move |g: Gpu, s: &Span<Q>| gpu_closed(method, g, Division::Reciprocal, halving, s)
+    };
     type GpuImp = Box<dyn Fn(Gpu, &Span<Q>) -> Vec<Q>>;
     let imps: Vec<(Method, GpuImp)> = vec![
-        (Method::Gouraud, Box::new(recurrence(Method::Gouraud))),
+        (
+            Method::Gouraud,
+            Box::new(recurrence(Method::Gouraud, Division::Once)),
+        ),
+        (
+            Method::Gouraud,
+            Box::new(recurrence(Method::Gouraud, Division::Reciprocal)),
+        ),
         (
             Method::CorrectedEuler,
-            Box::new(recurrence(Method::CorrectedEuler)),
+            Box::new(recurrence(Method::CorrectedEuler, Division::Once)),
+        ),
+        (
+            Method::CorrectedEuler,
+            Box::new(recurrence(Method::CorrectedEuler, Division::Reciprocal)),
+        ),
+        (
+            Method::CorrectedEuler,
+            Box::new(closed(Method::CorrectedEuler, Halving::Last)),
         ),
         (Method::Euler, Box::new(gpu_euler)),
+        (
+            Method::Euler,
+            Box::new(recurrence(Method::Euler, Division::Reciprocal)),
+        ),
+        (
+            Method::Euler,
+            Box::new(closed(Method::Euler, Halving::First)),
+        ),
         (
             Method::Duff,
             Box::new(|g, s| gpu_duff_or_phong(g, s, false)),

@@ -10,14 +10,20 @@
 //! |---|---|---|---|---|
 //! | `ieee` | binary32 | `profile_ieee_gouraud_binary32` | `profile_ieee_corrected_euler_binary32`, `profile_ieee_corrected_euler_closed_binary32` | `profile_ieee_euler_binary32`, `profile_ieee_euler_closed_binary32` |
 //! | `ieee` | binary64 | `profile_ieee_gouraud_binary64`, `profile_ieee_gouraud_binary64_large` | `profile_ieee_corrected_euler_binary64`, `profile_ieee_corrected_euler_binary64_large`, `profile_ieee_corrected_euler_closed_binary64`, `profile_ieee_corrected_euler_closed_binary64_large` | `profile_ieee_euler_binary64`, `profile_ieee_euler_binary64_large`, `profile_ieee_euler_closed_binary64`, `profile_ieee_euler_closed_binary64_large` |
-//! | `shader` | binary32 | `profile_shader_gouraud_binary32` | `profile_shader_corrected_euler_binary32` | derived; `profile_shader_euler_binary32` proves part of it ([`proved_in_part`]) |
+//! | `shader` | binary32 | `profile_shader_gouraud_recip_binary32`, `profile_shader_gouraud_binary32` | `profile_shader_corrected_euler_recip_binary32`, `profile_shader_corrected_euler_binary32`, `profile_shader_corrected_euler_closed_binary32`, `profile_shader_corrected_euler_closed_recip_binary32`, `profile_shader_corrected_euler_closed_half_binary32`, `profile_shader_corrected_euler_closed_half_recip_binary32` | `profile_shader_euler_recip_binary32`, `profile_shader_euler_binary32`, `profile_shader_euler_closed_binary32`, `profile_shader_euler_closed_recip_binary32`, `profile_shader_euler_closed_half_binary32`, `profile_shader_euler_closed_half_recip_binary32` |
+//!
+//! (The `shader` theorems named `_recip` take every division — by `n`, by 2, and the
+//! closed forms' halving of `i − 1` — as one 2.5-ulp division or as a 2.5-ulp
+//! reciprocal then a product, either way at each division; the others one 2.5-ulp
+//! division each; the `_half` ones let the closed forms halve `i − 1` in floats. Every
+//! corrected-Euler theorem takes the coefficient `n(n−1)/2` of `p_n` exact: [`proved`].)
 //!
 //! Phong, Duff, symmetric Phong and the adaptive scheme have *derived* bounds under
-//! `ieee` and `shader`, and Euler under `shader` (written derivations on the same
-//! model, [`Arith`]: [`phong_derived`], [`euler_derived`], [`duff_derived`],
-//! `docs/float.md` §18.4–18.5, attacked by `tests/profiles.rs`); [`status`] says which
-//! kind a bound is. Angular interpolation and the related methods have none: a case
-//! then fails naming that.
+//! `ieee` and `shader` (written derivations on the same model, [`Arith`]:
+//! [`phong_derived`], [`duff_derived`], `docs/float.md` §18.4–18.5, attacked by
+//! `tests/profiles.rs`; [`euler_derived`] is plain Euler's, which the theorems now
+//! replace under both profiles); [`status`] says which kind a bound is. Angular
+//! interpolation and the related methods have none: a case then fails naming that.
 //!
 //! Tested, with other implementations written from the definitions (other orders,
 //! `mul_add`, reciprocals, the closed form, a software GPU that truncates, divides
@@ -45,9 +51,12 @@ pub enum Profile {
     /// any direction (nearest or toward zero), division within 2.5 ulp, `sqrt` as
     /// `1/inversesqrt`, denormal inputs and results flushed to zero, any order of
     /// each dot product and sum, fused or not. The Coq theorems (Gouraud, corrected
-    /// Euler) take a division by `n` as one 2.5-ulp division; the derived bounds
-    /// (Phong, Euler, Duff) also cover `·(1/n)` (so Euler stays derived here, although
-    /// `profile_shader_euler_binary32` proves it for one 2.5-ulp division).
+    /// Euler and plain Euler, the recurrences and the closed forms) take every
+    /// division — by `n`, by 2, the closed forms' `(i−1)/2` — as one 2.5-ulp division
+    /// or a 2.5-ulp reciprocal then a product; corrected Euler's `n(n−1)/2` (in `p_n`)
+    /// must be formed exactly (an integer converted, or `n·(n−1)·0.5` with a literal
+    /// `0.5`), not by a 2.5-ulp `/2` nor with a computed `1/2`. The derived bounds
+    /// (Phong, Duff) cover `·(1/n)` too.
     Shader,
     /// Fixed point `Qm.f` as a hardware span unit runs it (`fixed:m.f`): the set-up
     /// (`p_a`, `t_0`, `ds`, or Gouraud's `dp`) computed exactly and rounded once **to
@@ -203,8 +212,33 @@ const U32: f64 = 1.0 / 16_777_216.0;
 /// and `profile_ieee_euler_closed_binary64_large` (`n ≤ 2^24`; their `n ≤ 4096`
 /// instances are `profile_ieee_euler_binary64` and `profile_ieee_euler_closed_binary64`),
 /// against the exact plain-Euler run, for every order, fusion and `/n` or `·(1/n)` of
-/// the `ieee` profile (its `κ_div = 2 + 2^-20` covers the reciprocal). Plain Euler
-/// under `shader` is not here: see [`proved_in_part`].
+/// the `ieee` profile (its `κ_div = 2 + 2^-20` covers the reciprocal).
+///
+/// Under `shader` (binary32, `n ≤ 4096`), for each method every form its guarantee
+/// promises, the largest applied: the recurrence with every division (by `n`, and
+/// `p_a/2`, `p_b/2`) one 2.5-ulp division (`profile_shader_gouraud_binary32`,
+/// `profile_shader_corrected_euler_binary32`, `profile_shader_euler_binary32`) or
+/// each either that or a 2.5-ulp reciprocal then a product (`κ_div = 7 + 2^-20`:
+/// `profile_shader_gouraud_recip_binary32` `(2.0012·n + 28.0014)·u`,
+/// `profile_shader_corrected_euler_recip_binary32` `(4.4·n + 124.31)·u`,
+/// `profile_shader_euler_recip_binary32` `(11.1·n + 288.11)·u`); the closed forms with
+/// `(i−1)/2` exact (`profile_shader_corrected_euler_closed_binary32` `126.5·u`,
+/// `profile_shader_corrected_euler_closed_recip_binary32` `141.11·u`,
+/// `profile_shader_euler_closed_binary32` `277.9·u`,
+/// `profile_shader_euler_closed_recip_binary32` `308.11·u`) or halved in floats —
+/// `c = (i−1)/2` then `c·ds`, or `(i−1)·ds` then halved
+/// (`profile_shader_corrected_euler_closed_half_binary32` `131.5·u`,
+/// `profile_shader_corrected_euler_closed_half_recip_binary32` `148.11·u`,
+/// `profile_shader_euler_closed_half_binary32` `281.65·u`,
+/// `profile_shader_euler_closed_half_recip_binary32` `313.36·u`, the `_recip` ones
+/// with the halving also through a computed `1/2`). So the bound applied is
+/// `(2.0012·n + 28.0014)·u` for Gouraud, `max(4.4·n + 124.31, 148.11)·u` for corrected
+/// Euler and `max(11.1·n + 288.11, 313.36)·u` for plain Euler. Every theorem takes
+/// `n`, `2n` (a float product `2·n` is exact in any rounding) and corrected Euler's
+/// `n(n−1)/2` (the coefficient of `ds` in `p_n`) exact: `n(n−1)/2` formed as an
+/// integer and converted (exact: `n(n−1) < 2^24`) or as `n·(n−1)·0.5` with a literal
+/// `0.5`. Not covered by any theorem: `n(n−1)/2` formed by a 2.5-ulp `/2` or with a
+/// computed `1/2`.
 pub fn proved(method: crate::Method, profile: Profile, u: f64) -> Option<Vec<Proved>> {
     use crate::Method;
     let b32 = u == U32;
@@ -228,12 +262,18 @@ pub fn proved(method: crate::Method, profile: Profile, u: f64) -> Option<Vec<Pro
             1 << 24,
             "profile_ieee_gouraud_binary64_large",
         )]),
-        (Method::Gouraud, Profile::Shader) if b32 => Some(vec![p(
-            2.0012,
-            24.002,
-            4096,
-            "profile_shader_gouraud_binary32",
-        )]),
+        // Under `shader` the `_recip` recurrence first: it covers both ways of
+        // dividing, so it names the bound ([`status`]); every form is listed, so that
+        // [`proved_bound`] takes the largest.
+        (Method::Gouraud, Profile::Shader) if b32 => Some(vec![
+            p(
+                2.0012,
+                28.0014,
+                4096,
+                "profile_shader_gouraud_recip_binary32",
+            ),
+            p(2.0012, 24.002, 4096, "profile_shader_gouraud_binary32"),
+        ]),
         (Method::CorrectedEuler, Profile::Ieee) if b32 => Some(vec![
             p(2.2, 51.21, 4096, "profile_ieee_corrected_euler_binary32"),
             p(
@@ -257,12 +297,39 @@ pub fn proved(method: crate::Method, profile: Profile, u: f64) -> Option<Vec<Pro
                 "profile_ieee_corrected_euler_closed_binary64_large",
             ),
         ]),
-        (Method::CorrectedEuler, Profile::Shader) if b32 => Some(vec![p(
-            4.4,
-            109.7,
-            4096,
-            "profile_shader_corrected_euler_binary32",
-        )]),
+        (Method::CorrectedEuler, Profile::Shader) if b32 => Some(vec![
+            p(
+                4.4,
+                124.31,
+                4096,
+                "profile_shader_corrected_euler_recip_binary32",
+            ),
+            p(4.4, 109.7, 4096, "profile_shader_corrected_euler_binary32"),
+            p(
+                0.0,
+                126.5,
+                4096,
+                "profile_shader_corrected_euler_closed_binary32",
+            ),
+            p(
+                0.0,
+                141.11,
+                4096,
+                "profile_shader_corrected_euler_closed_recip_binary32",
+            ),
+            p(
+                0.0,
+                131.5,
+                4096,
+                "profile_shader_corrected_euler_closed_half_binary32",
+            ),
+            p(
+                0.0,
+                148.11,
+                4096,
+                "profile_shader_corrected_euler_closed_half_recip_binary32",
+            ),
+        ]),
         (Method::Euler, Profile::Ieee) if b32 => Some(vec![
             p(5.55, 121.41, 4096, "profile_ieee_euler_binary32"),
             p(0.0, 131.41, 4096, "profile_ieee_euler_closed_binary32"),
@@ -276,39 +343,37 @@ pub fn proved(method: crate::Method, profile: Profile, u: f64) -> Option<Vec<Pro
                 "profile_ieee_euler_closed_binary64_large",
             ),
         ]),
-        _ => None,
-    }
-}
-
-/// A theorem that proves a method's bound for only part of what the profile's
-/// guarantee promises, so that the bound stays *derived* ([`status`]) and is the
-/// larger of this and the derivation ([`profile_bound`]).
-///
-/// One: plain Euler under `shader`, `profile_shader_euler_binary32`,
-/// `(11.1·n + 257.9)·2^-24` for `n ≤ 4096` against the exact plain-Euler run. Like
-/// the shader theorems of Gouraud and corrected Euler it takes each division (by `n`,
-/// by 2) as one division within 2.5 ulp; the `shader` guarantee for Euler
-/// (`docs/conformance.md`, [`Profile::Shader`]) also promises `·(1/n)` (a 2.5-ulp
-/// reciprocal and a product, `κ = 7`), which only the derivation [`euler_derived`]
-/// covers. So Euler under `shader` is labelled derived, and its bound is the larger
-/// of the two (the derived one: `tolerance::profile` tests that it is never smaller).
-pub fn proved_in_part(method: crate::Method, profile: Profile, u: f64) -> Option<Proved> {
-    use crate::Method;
-    match (method, profile) {
-        (Method::Euler, Profile::Shader) if u == U32 => Some(Proved {
-            alpha: 11.1,
-            beta: 257.9,
-            max_n: 4096,
-            theorem: "profile_shader_euler_binary32",
-        }),
+        (Method::Euler, Profile::Shader) if b32 => Some(vec![
+            p(11.1, 288.11, 4096, "profile_shader_euler_recip_binary32"),
+            p(11.1, 257.9, 4096, "profile_shader_euler_binary32"),
+            p(0.0, 277.9, 4096, "profile_shader_euler_closed_binary32"),
+            p(
+                0.0,
+                308.11,
+                4096,
+                "profile_shader_euler_closed_recip_binary32",
+            ),
+            p(
+                0.0,
+                281.65,
+                4096,
+                "profile_shader_euler_closed_half_binary32",
+            ),
+            p(
+                0.0,
+                313.36,
+                4096,
+                "profile_shader_euler_closed_half_recip_binary32",
+            ),
+        ]),
         _ => None,
     }
 }
 
 /// The proved bound of `method` under `profile` at `n` in the format of unit
-/// roundoff `u`: the largest over the forms the profile allows (the recurrence and,
-/// for corrected Euler under `ieee`, the closed form), or `None` where no theorem
-/// covers it.
+/// roundoff `u`: the largest over the forms the profile allows (every theorem
+/// [`proved`] lists: the recurrences, the closed forms, and under `shader` the ways
+/// of dividing and of halving), or `None` where no theorem covers it.
 pub fn proved_bound(method: crate::Method, profile: Profile, n: u32, u: f64) -> Option<f64> {
     let forms = proved(method, profile, u)?;
     forms
@@ -427,9 +492,13 @@ fn eta_total(a: &Arith, nf: f64) -> f64 {
 /// `p_a + i·(di_a + (i−1)/2·ds)`, on the paper's set-up (§4) in any order of each dot
 /// product, fused or not, `/n` as a division or `·(1/n)`.
 ///
-/// The bound `check` applies under `shader` (with [`proved_in_part`]). Under `ieee`
-/// the theorems of [`proved`] replace it: they cover the same forms and are smaller
-/// (`131.41·u` against about `244·u` at `n = 1`).
+/// Not applied by `check` under any profile: under `ieee` and `shader` the theorems
+/// of [`proved`] cover the same forms (under `shader` with every division, the
+/// halvings included, one 2.5-ulp division or a 2.5-ulp reciprocal and a product) and
+/// are smaller at every `n` (`ieee`: `131.41·u` against about `244·u` at `n = 1`;
+/// `shader`: `313.36·u` against about `899·u` at `n = 1`, `45,754·u` against
+/// `47,176·u` at `n = 4096`). Kept as the derivation `docs/float.md` §18.5 compares
+/// with.
 ///
 /// §7's count, each rounding with the largest `κ` of the set-up: `113·κ_s` for the
 /// set-up, `6·κ_half` for the two `p/2` (exact under `ieee`), then the larger of the
@@ -622,11 +691,8 @@ pub fn status(method: crate::Method, profile: Profile, u: f64) -> Option<Status>
     arith(profile, u)?;
     match method {
         Method::Phong => Some(Status::Derived("docs/float.md §18.4")),
-        // Euler reaches here under `shader` only: derived, although
-        // `profile_shader_euler_binary32` proves part of it ([`proved_in_part`]).
-        Method::Euler | Method::Duff | Method::SymmetricPhong => {
-            Some(Status::Derived("docs/float.md §18.5"))
-        }
+        // Plain Euler never reaches here: proved under `ieee` and `shader` ([`proved`]).
+        Method::Duff | Method::SymmetricPhong => Some(Status::Derived("docs/float.md §18.5")),
         // The larger of the two proved bounds, against the exact run of the method
         // the implementation chose (docs/float.md §10, §18.5).
         Method::Adaptive => proved(Method::Gouraud, profile, u)
@@ -639,8 +705,7 @@ pub fn status(method: crate::Method, profile: Profile, u: f64) -> Option<Status>
 /// The bound of `method` under `profile` (not `Reference`, whose bounds are
 /// [`crate::tolerance::bound`]) on a span of `n` steps and smallest `q_i` `q_min`, in
 /// the format of unit roundoff `u`: the proved bound ([`proved_bound`]) or the derived
-/// one ([`phong_derived`], [`euler_derived`] — with [`proved_in_part`], the larger —,
-/// [`duff_derived`]); `None` where neither covers it.
+/// one ([`phong_derived`], [`duff_derived`]); `None` where neither covers it.
 pub fn profile_bound(
     method: crate::Method,
     profile: Profile,
@@ -662,14 +727,6 @@ pub fn profile_bound(
             let a = arith(profile, u)?;
             match method {
                 Method::Phong => phong_derived(&a, n, q_min),
-                // The larger of the derivation and the theorem that proves part of
-                // it ([`proved_in_part`]); none where the derivation has none (it is
-                // what covers `·(1/n)`).
-                Method::Euler => {
-                    let derived = euler_derived(&a, n)?;
-                    let part = proved_in_part(method, profile, u).and_then(|p| p.at(n, u));
-                    Some(part.map_or(derived, |p| derived.max(p)))
-                }
                 Method::Duff | Method::SymmetricPhong => duff_derived(&a, n, q_min),
                 Method::Adaptive => Some(
                     proved_bound(Method::Gouraud, profile, n, u)?.max(proved_bound(
@@ -792,28 +849,85 @@ mod tests {
     }
 
     #[test]
-    fn euler_under_shader_stays_derived_and_covers_its_theorem() {
+    fn shader_bounds_are_the_largest_of_every_form() {
         let u32_ = f64::from(f32::EPSILON) / 2.0;
-        // The theorem does not cover `·(1/n)`, which the shader guarantee promises.
-        assert!(proved(Method::Euler, Profile::Shader, u32_).is_none());
-        assert_eq!(
-            status(Method::Euler, Profile::Shader, u32_),
-            Some(Status::Derived("docs/float.md §18.5"))
-        );
-        let t = proved_in_part(Method::Euler, Profile::Shader, u32_).unwrap();
-        assert_eq!(t.theorem, "profile_shader_euler_binary32");
-        assert!(proved_in_part(Method::Euler, Profile::Ieee, u32_).is_none());
-        assert!(proved_in_part(Method::CorrectedEuler, Profile::Shader, u32_).is_none());
-        // The bound applied is the larger of the two: never below the theorem's, and
-        // (the derivation counting more) equal to the derived one at every n.
+        // Every shader theorem of each method, the `_recip` recurrence first.
+        let theorems: [(Method, &[&str]); 3] = [
+            (
+                Method::Gouraud,
+                &[
+                    "profile_shader_gouraud_recip_binary32",
+                    "profile_shader_gouraud_binary32",
+                ],
+            ),
+            (
+                Method::CorrectedEuler,
+                &[
+                    "profile_shader_corrected_euler_recip_binary32",
+                    "profile_shader_corrected_euler_binary32",
+                    "profile_shader_corrected_euler_closed_binary32",
+                    "profile_shader_corrected_euler_closed_recip_binary32",
+                    "profile_shader_corrected_euler_closed_half_binary32",
+                    "profile_shader_corrected_euler_closed_half_recip_binary32",
+                ],
+            ),
+            (
+                Method::Euler,
+                &[
+                    "profile_shader_euler_recip_binary32",
+                    "profile_shader_euler_binary32",
+                    "profile_shader_euler_closed_binary32",
+                    "profile_shader_euler_closed_recip_binary32",
+                    "profile_shader_euler_closed_half_binary32",
+                    "profile_shader_euler_closed_half_recip_binary32",
+                ],
+            ),
+        ];
+        for (m, names) in theorems {
+            let forms = proved(m, Profile::Shader, u32_).unwrap();
+            let got: Vec<&str> = forms.iter().map(|f| f.theorem).collect();
+            assert_eq!(got, names, "{m}");
+            assert_eq!(
+                status(m, Profile::Shader, u32_),
+                Some(Status::Proved(names[0])),
+                "{m}"
+            );
+            // The bound applied is never below any form's theorem, and is one of them.
+            for n in 1..=4096 {
+                let b = profile_bound(m, Profile::Shader, n, 1.0, u32_).unwrap();
+                assert_eq!(Some(b), proved_bound(m, Profile::Shader, n, u32_));
+                let each: Vec<f64> = forms.iter().map(|f| f.at(n, u32_).unwrap()).collect();
+                assert!(each.iter().all(|&x| x <= b), "{m} {n}");
+                assert!(each.contains(&b), "{m} {n}");
+            }
+            assert!(profile_bound(m, Profile::Shader, 4097, 1.0, u32_).is_none());
+            assert!(proved(m, Profile::Shader, f64::EPSILON / 2.0).is_none());
+        }
+        let at = |m, n| proved_bound(m, Profile::Shader, n, u32_).unwrap() / u32_;
+        // Gouraud: the `_recip` recurrence, (2.0012·n + 28.0014)·u.
+        assert!((at(Method::Gouraud, 1) - 30.0026).abs() < 1e-9);
+        assert!((at(Method::Gouraud, 100) - 228.1214).abs() < 1e-9);
+        // Corrected Euler: the halved closed form through reciprocals (148.11) up to
+        // n = 5, then the `_recip` recurrence (4.4·n + 124.31).
+        assert!((at(Method::CorrectedEuler, 1) - 148.11).abs() < 1e-9);
+        assert!((at(Method::CorrectedEuler, 5) - 148.11).abs() < 1e-9);
+        assert!((at(Method::CorrectedEuler, 6) - 150.71).abs() < 1e-9);
+        assert!((at(Method::CorrectedEuler, 100) - 564.31).abs() < 1e-9);
+        // Plain Euler: 313.36 up to n = 2, then (11.1·n + 288.11).
+        assert!((at(Method::Euler, 1) - 313.36).abs() < 1e-9);
+        assert!((at(Method::Euler, 2) - 313.36).abs() < 1e-9);
+        assert!((at(Method::Euler, 3) - 321.41).abs() < 1e-9);
+        assert!((at(Method::Euler, 100) - 1398.11).abs() < 1e-9);
+        // The derivation plain Euler's theorems replace is larger at every n.
         let a = arith(Profile::Shader, u32_).unwrap();
         for n in 1..=4096 {
-            let b = profile_bound(Method::Euler, Profile::Shader, n, 1.0, u32_).unwrap();
-            assert!(b >= t.at(n, u32_).unwrap(), "{n}");
-            assert_eq!(Some(b), euler_derived(&a, n), "{n}");
+            let p = proved_bound(Method::Euler, Profile::Shader, n, u32_).unwrap();
+            assert!(p < euler_derived(&a, n).unwrap(), "{n}");
         }
-        // (11.1·n + 257.9)·2^-24 at n = 100.
-        assert!((t.at(100, u32_).unwrap() / u32_ - 1367.9).abs() < 1e-9);
-        assert!(profile_bound(Method::Euler, Profile::Shader, 4097, 1.0, u32_).is_none());
+        // The adaptive scheme takes the larger of Gouraud's and corrected Euler's.
+        assert_eq!(
+            profile_bound(Method::Adaptive, Profile::Shader, 1, 1.0, u32_),
+            Some(148.11 * u32_)
+        );
     }
 }

@@ -284,6 +284,7 @@ pub fn span_report(r: &Request) -> Result<SpanReport, ReportError> {
         Arithmetic::F64 => Some(f64::unit_roundoff()),
         _ => None,
     };
+    let bounds = u.map(|u| error_bounds(r, u));
     Ok(SpanReport {
         method: r.method.name().into_owned(),
         scalar: r.arithmetic.name(),
@@ -291,8 +292,10 @@ pub fn span_report(r: &Request) -> Result<SpanReport, ReportError> {
         values: o.values,
         levels: o.levels,
         fractions: o.fractions,
-        error_bound: u.map(|u| error_bounds(r, u)),
-        error_bound_status: u.map(|u| error_bound_status(r, u)),
+        error_bound_status: u
+            .zip(bounds.as_ref())
+            .map(|(u, b)| error_bound_status(r, u, b)),
+        error_bound: bounds,
         table_size: match r.method {
             Method::AngularTable(size) => Some(size),
             _ => None,
@@ -447,9 +450,8 @@ fn error_bounds(r: &Request, u: f64) -> ErrorBounds {
             p => profile_bound(m, p, r.n, shape.q_min, u),
         }
     };
-    // The adaptive scheme where its test is too close to call (`|255·K_d·δ|` within
-    // `255·K_d·e_δ` of 1, `e_δ = 1.01·(b_G + b_CE) + 2u`: `conformance::check`): the
-    // float run may pick the other method, whose values differ from the exact pick's
+    // The adaptive scheme where its test is too close to call
+    // (`tolerance::adaptive_too_close`): the float run may pick the other method, whose values differ from the exact pick's
     // by at most `|δ|` (eq. 24's δ is the largest difference, `eq_24_delta_is_max_difference`),
     // so the bound against the exact run's pick is the larger bound plus `|δ|`.
     let delta = (r.method == Method::Adaptive && !r.normalize)
@@ -464,8 +466,7 @@ fn error_bounds(r: &Request, u: f64) -> ErrorBounds {
         let b = match delta {
             Some((d, kd)) => {
                 let (bg, bce) = (of(Method::Gouraud, p)?, of(Method::CorrectedEuler, p)?);
-                let e = 1.01 * (bg + bce) + 2.0 * u;
-                if ((255.0 * kd * d) - 1.0).abs() <= 255.0 * kd * e + 1e-25 {
+                if crate::tolerance::adaptive_too_close(d, kd, bg, bce, u) {
                     bg.max(bce) + d * (1.0 + 1e-12)
                 } else {
                     b
@@ -482,14 +483,13 @@ fn error_bounds(r: &Request, u: f64) -> ErrorBounds {
     }
 }
 
-/// The labels of [`error_bounds`]' bounds: the reference profile's from the
+/// The labels of the bounds `printed` ([`error_bounds`]): the reference profile's from the
 /// catalogue (Gouraud and corrected Euler proved in this crate's order,
 /// `proofs/Float.v`; the others derived in their `docs/float.md` section), the
 /// acceptance profiles' from [`crate::tolerance::profile::status`]; `None` where no
 /// bound is printed.
-fn error_bound_status(r: &Request, u: f64) -> ErrorBounds {
+fn error_bound_status(r: &Request, u: f64, printed: &ErrorBounds) -> ErrorBounds {
     use crate::tolerance::profile::{status, Profile, Status};
-    let printed = error_bounds(r, u);
     let label = |p: Profile, shown: &Option<String>| -> Option<String> {
         shown.as_ref()?;
         let s = match p {

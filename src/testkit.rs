@@ -612,8 +612,7 @@ pub fn acceptance<T: Format>(
         };
         let (bg, bce) = (bound(Method::Gouraud)?, bound(Method::CorrectedEuler)?);
         let d = crate::adaptive::decide(span, &crate::BigRational::from_integer(1.into()));
-        let e = 1.01 * (bg + bce) + 2.0 * T::U;
-        if ((255.0 * d.delta.to_f64()).abs() - 1.0).abs() <= 255.0 * e + 1e-25 {
+        if crate::tolerance::adaptive_too_close(d.delta.to_f64(), 1.0, bg, bce, T::U) {
             for (m, b) in [(Method::Gouraud, bg), (Method::CorrectedEuler, bce)] {
                 for (i, v) in m.values(span).ok()?.iter().enumerate() {
                     let (lo, hi) = interval(v.to_f64(), b);

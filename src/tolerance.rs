@@ -190,6 +190,20 @@ pub fn reference_bound(
     }
 }
 
+/// Whether the adaptive test (eq. 24) is too close to call for an implementation:
+/// `|255·K_d·δ|` (the exact `δ`) within `255·K_d·e_δ` of 1, where `e_δ` bounds how far
+/// the implementation's own `δ` may be from it. Derived (`docs/float.md` §10): `δ̂ =
+/// Ĝ(j) − Ĉ(j)` at `j = ⌈n/2⌉` is the difference of the two methods' values at one
+/// pixel, each within its bound `b_G`, `b_CE` (both cover the recurrence and the closed
+/// form the test evaluates), plus the subtraction's rounding:
+/// `e_δ = 1.01·(b_G + b_CE) + 2u`. `1e-25` more covers a `δ` read from 30 significant digits. Where this holds,
+/// `check` accepts either method's values, `span`'s bound adds `|δ|`, and the test
+/// kit's acceptance intervals take both methods'.
+pub fn adaptive_too_close(delta: f64, kd: f64, b_g: f64, b_ce: f64, u: f64) -> bool {
+    let e = 1.01 * (b_g + b_ce) + 2.0 * u;
+    ((255.0 * kd * delta).abs() - 1.0).abs() <= 255.0 * kd * e + 1e-25
+}
+
 /// What the bounds read of a span: `n`, `q_min` (rounded down) and the edge
 /// intensities `p_a`, `p_b` (angular interpolation's `acos` is ill-conditioned near
 /// ±1, so its bound is smaller when they are known).

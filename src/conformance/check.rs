@@ -846,18 +846,22 @@ pub fn check_in(
     Ok(reports)
 }
 
-/// The diffuse bound a profile (or the reference bounds) gives `method` on case `c`.
-fn diffuse_bound(c: &Case, method: Method, tol: Tolerance) -> Option<f64> {
+/// The bound a profile (or the reference bounds) gives `method` on case `c`, before the
+/// specular power: `None` for the other tolerances and where no bound holds. Specular
+/// cases shade `N·H`, not `N·L`, so the reference bound takes no edge values there.
+fn case_bound(c: &Case, method: Method, tol: Tolerance, specular: bool) -> Option<f64> {
     use crate::tolerance::profile::{profile_bound, Profile};
     match tol {
         Tolerance::Profile {
             profile: Profile::Reference,
             u,
         }
-        | Tolerance::Default { u } => match case_shape(c) {
+        | Tolerance::Default { u } => match case_shape(c).filter(|_| !specular) {
             Some(shape) => crate::tolerance::span_bound(method, &shape, u),
             None => crate::tolerance::bound(method, c.n, c.q_min, u),
         },
+        // The vector file's q_min is to nearest: a relative 2^-40 below it is below
+        // the span's.
         Tolerance::Profile { profile, u } => {
             profile_bound(method, profile, c.n, c.q_min * (1.0 - 2f64.powi(-40)), u)
         }
@@ -873,21 +877,16 @@ fn diffuse_bound(c: &Case, method: Method, tol: Tolerance) -> Option<f64> {
 /// within corrected Euler's bound of the exact corrected-Euler run (one method for the
 /// whole span, as an implementation runs it); `None` elsewhere (judged as usual).
 ///
-/// `e_δ` (derived, `docs/float.md` §10): `δ = Ĝ(j) − Ĉ(j)` at `j = ⌈n/2⌉` is the
-/// difference of the two methods' values at one pixel, each within its bound (both
-/// bounds cover the recurrence and the closed form the test evaluates), plus the
-/// subtraction's rounding: `e_δ = 1.01·(b_G + b_CE) + 2u`.
+/// `e_δ`: [`crate::tolerance::adaptive_too_close`].
 fn adaptive_either(c: &Case, got: &[f64], tol: Tolerance, u: f64) -> Option<CaseReport> {
     let delta: f64 = c.delta.parse().ok()?;
     // Only where the profile bounds the adaptive scheme at all (not fixed point).
-    diffuse_bound(c, Method::Adaptive, tol)?;
+    case_bound(c, Method::Adaptive, tol, false)?;
     let (bg, bce) = (
-        diffuse_bound(c, Method::Gouraud, tol)?,
-        diffuse_bound(c, Method::CorrectedEuler, tol)?,
+        case_bound(c, Method::Gouraud, tol, false)?,
+        case_bound(c, Method::CorrectedEuler, tol, false)?,
     );
-    let e = 1.01 * (bg + bce) + 2.0 * u;
-    // The case's δ has 30 significant digits: 1e-25 covers its rounding.
-    if ((255.0 * delta).abs() - 1.0).abs() > 255.0 * e + 1e-25 {
+    if !crate::tolerance::adaptive_too_close(delta, 1.0, bg, bce, u) {
         return None;
     }
     let either = [
@@ -958,7 +957,7 @@ fn case_report(
     specular: bool,
     format_u: f64,
 ) -> CaseReport {
-    use crate::tolerance::profile::{profile_bound, Profile};
+    use crate::tolerance::profile::Profile;
     let tol = match tol {
         Tolerance::Profile {
             profile: Profile::Reference,
@@ -994,21 +993,10 @@ fn case_report(
             profile: Profile::Shader | Profile::Fixed { .. },
             ..
         } if specular => None,
-        // The vector file's q_min is to nearest: a relative 2^-40 below it is below
-        // the span's.
-        Tolerance::Profile { profile, u } => {
-            profile_bound(method, profile, c.n, c.q_min * (1.0 - 2f64.powi(-40)), u)
-                .map(|b| raise(b, u))
-        }
-        Tolerance::Default { u } => {
-            // No derived bound (n too long for the precision, or q may round to
-            // zero): the case cannot pass on the default tolerance. Specular cases
-            // shade N·H, not N·L, so the bound takes no edge values there.
-            match case_shape(c).filter(|_| !specular) {
-                Some(shape) => crate::tolerance::span_bound(method, &shape, u),
-                None => crate::tolerance::bound(method, c.n, c.q_min, u),
-            }
-            .map(|b| raise(b, u))
+        // No bound (n too long for the precision, or q may round to zero): the case
+        // cannot pass on the profile's tolerance.
+        Tolerance::Profile { u, .. } | Tolerance::Default { u } => {
+            case_bound(c, method, tol, specular).map(|b| raise(b, u))
         }
         _ => None,
     };

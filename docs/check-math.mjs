@@ -13,16 +13,24 @@ import { readFileSync, existsSync, mkdirSync, statSync } from "node:fs";
 import { createRequire } from "node:module";
 import { extname, join, normalize } from "node:path";
 
+// A crash (no browser, a page that does not load) is "could not check" (2), not "the
+// math is wrong" (1).
+for (const ev of ["uncaughtException", "unhandledRejection"]) {
+  process.on(ev, (e) => { console.error(`math check could not run: ${e?.stack ?? e}`); process.exit(2); });
+}
 const [docDir, katexDir, modules, shots] = process.argv.slice(2);
 const { chromium } = createRequire(join(modules, "x.js"))("playwright-core");
 const pages = ["derivations", "errata", "float"];
 
 // The math segments of a Markdown text, found independently of build/math.rs: fenced
 // code and code spans removed, then `$$…$$` and `$…$` (GitHub's rules, simplified).
+// Inline math opens at a `$` before a non-blank and closes at the next unescaped `$`
+// that is not after a blank nor before a digit, within the paragraph; its last character
+// may be an escaped one (`$t \in \{0, 1\}$`, `$a\,$`).
 function segments(md) {
   md = md.replace(/^[ \t]*(```|~~~)[\s\S]*?^[ \t]*\1[^\n]*$/gm, "");
   md = md.replace(/(`+)[\s\S]*?[^`]\1(?!`)/g, "");
-  const re = /\$\$([\s\S]+?)\$\$|\$(?=[^\s$])((?:\\.|[^$\\])*?[^\s\\])\$(?!\d)/g;
+  const re = /\$\$([\s\S]+?)\$\$|\$(?=[^\s$])((?:\\[\s\S]|[^$\\\n]|\n(?![ \t]*\n))*?(?:\\\S|[^\s\\]))\$(?!\d)/g;
   return [...md.matchAll(re)].map((m) => ({ display: m[1] !== undefined, tex: m[1] ?? m[2] }));
 }
 const norm = (s) => s.replace(/\s+/g, " ").trim();

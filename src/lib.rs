@@ -78,6 +78,7 @@ pub mod fast;
 pub mod fast_rows;
 pub mod fixed_span;
 pub mod gouraud;
+#[cfg(feature = "lowp")]
 pub mod lowp;
 pub mod method;
 pub mod parse;

@@ -76,6 +76,13 @@ pub trait Scalar:
     /// The unit roundoff `u` of one field operation (0 for exact types).
     fn unit_roundoff() -> f64;
 
+    /// The value as text that reads back exactly where the type allows: a fraction
+    /// `a/b` for rationals, the shortest round-trip decimal for floats (what a span's
+    /// `Display` and `Debug` print).
+    fn exact_text(&self) -> String {
+        format!("{self:?}")
+    }
+
     /// `self` as a decimal string with `digits` significant digits (floats print the
     /// shortest string that reads back to the same value, whatever `digits` is).
     fn to_decimal(&self, digits: usize) -> String;
@@ -290,6 +297,10 @@ impl Scalar for BigRational {
         let scaled = self * BigRational::from_integer(scale.clone());
         let half = BigRational::new(1.into(), 2.into());
         BigRational::new((scaled + half).floor().to_integer(), scale)
+    }
+
+    fn exact_text(&self) -> String {
+        self.to_string()
     }
 
     fn to_decimal(&self, digits: usize) -> String {

@@ -26,7 +26,7 @@ pub const MAX_STEPS: u32 = 1 << 24;
 /// measuring float inputs against an exact run on the same, not-quite-unit, values).
 ///
 /// Fields are the paper's quantities with the paper's names.
-#[derive(Clone, Debug)]
+#[derive(Clone)]
 pub struct Span<T> {
     /// Normal at the left edge, `N_a` (pixel 0).
     pub na: Vec3<T>,
@@ -134,6 +134,34 @@ fn check_vector<T: Scalar>(v: &Vec3<T>, input: Input, tol: &T) -> Result<(), Spa
         });
     }
     Ok(())
+}
+
+/// One line: the inputs (exact fractions for rationals) and `n`, e.g.
+/// `N_a = (0, 0, 1), N_b = (3/5, 0, 4/5), L = (0, 0, 1), n = 4` — what a shrunk
+/// property-test failure shows.
+impl<T: Scalar> std::fmt::Display for Span<T> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let v = |v: &Vec3<T>| {
+            let [x, y, z] = v.components().map(Scalar::exact_text);
+            format!("({x}, {y}, {z})")
+        };
+        write!(
+            f,
+            "N_a = {}, N_b = {}, L = {}, n = {}",
+            v(&self.na),
+            v(&self.nb),
+            v(&self.l),
+            self.n
+        )
+    }
+}
+
+/// The inputs only, on one line (the derived quantities follow from them):
+/// `Span { N_a = (…), N_b = (…), L = (…), n = 4 }`.
+impl<T: Scalar> std::fmt::Debug for Span<T> {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "Span {{ {self} }}")
+    }
 }
 
 impl<T: Scalar> Span<T> {

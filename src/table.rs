@@ -2,6 +2,7 @@
 //! quoting is the crate's, not ours), and Markdown from rows of cells (one helper
 //! for every report's tables).
 
+#[cfg(feature = "csv")]
 use serde::Serialize;
 
 /// The CSV of `rows`: a header from the row type's field names, then one line per
@@ -10,6 +11,7 @@ use serde::Serialize;
 /// # Panics
 /// Never for the plain row structs of this crate (strings and integers); a row type
 /// that `csv` cannot write (a nested sequence) is a bug, and panics naming it.
+#[cfg(feature = "csv")]
 pub fn csv<R: Serialize>(rows: impl IntoIterator<Item = R>) -> String {
     let mut w = csv::Writer::from_writer(Vec::new());
     for r in rows {
@@ -56,7 +58,8 @@ pub fn markdown<S: AsRef<str>>(head: &[S], align: &[Align], rows: &[Vec<String>]
     s
 }
 
-#[cfg(test)]
+// The tests read and write CSV.
+#[cfg(all(test, feature = "csv"))]
 mod tests {
     use super::*;
 

@@ -90,18 +90,21 @@ impl<T: Real> Vec3<T> {
     }
 }
 
+#[cfg(feature = "glam")]
 impl From<glam::Vec3> for Vec3<f32> {
     fn from(v: glam::Vec3) -> Self {
         Vec3::new(v.x, v.y, v.z)
     }
 }
 
+#[cfg(feature = "glam")]
 impl From<glam::DVec3> for Vec3<f64> {
     fn from(v: glam::DVec3) -> Self {
         Vec3::new(v.x, v.y, v.z)
     }
 }
 
+#[cfg(feature = "glam")]
 impl From<Vec3<f32>> for glam::Vec3 {
     fn from(v: Vec3<f32>) -> Self {
         glam::Vec3::new(v.x, v.y, v.z)

@@ -603,7 +603,9 @@ fn every_suggested_flag_is_accepted() {
     }
     judge("cli/span.rs", &["span"]);
     judge("span_report.rs", &["span"]);
-    judge("testkit.rs", &["span"]);
+    for f in ["mod.rs", "report.rs", "span.rs"] {
+        judge(&format!("testkit/{f}"), &["span"]);
+    }
     judge("cli/vectors.rs", &["vectors"]);
     judge("cli/output.rs", &["reproduce", "compare", "vectors"]);
     judge("cli/torus.rs", &["reproduce", "compare"]);

@@ -51,7 +51,7 @@ const LAYERS: &[(&str, u32)] = &[
     ("conformance/", 9),
     ("raster/", 9),
     // The test kit.
-    ("testkit.rs", 10),
+    ("testkit/", 10),
 ];
 
 fn src() -> PathBuf {

@@ -54,13 +54,15 @@ fn a_wrong_implementation_fails_with_a_message_that_helps() {
     println!("{text}");
     assert!(text.starts_with("corrected-euler in f32 judged by the ieee profile's bound: "));
     for needle in [
-        "typical/typical-",
+        "  worst: edge/edge-003 pixel 2, 24 levels off, ",
+        "  per set: typical ",
         "N_a       = (",
         "(0x",
         "pixel     = ",
         "expected  = ",
         "got       = ",
-        " f32 ulps, ",
+        " f32 ulps at the span's scale ",
+        " × this)",
         " levels",
         "allowed   = ",
         "reproduce = phong-approx span --method corrected-euler --na=",
@@ -70,6 +72,35 @@ fn a_wrong_implementation_fails_with_a_message_that_helps() {
     }
     // At most five failures in full, then the ids of the rest.
     assert_eq!(text.matches("reproduce = ").count(), 5);
+    // Ranked by harm: the 24-level case first (its ratio ties edge-010's, 0 levels
+    // off), never a mild one before a worse one.
+    let f = r.failures();
+    assert_eq!(f[0].case, "edge-003", "{text}");
+    assert_eq!(f[0].levels, Some(24));
+    assert!(f[0].ratio > 1e4, "{}", f[0].ratio);
+    assert!(f.windows(2).all(|w| w[0].ratio >= w[1].ratio), "{text}");
+    let first_full = text.find("\n  edge/edge-003 (n = 2)").unwrap();
+    assert!(text[..first_full].find("\n  typical/").is_none(), "{text}");
+    // The worst pixel as values: exact expected, got, allowed, the command.
+    let w = r.worst().unwrap();
+    assert_eq!(w.pixel, Some(2));
+    assert_eq!(
+        w.expected.as_deref(),
+        Some("0.800000000000000000000000000000")
+    );
+    assert_eq!(w.expected_level, Some(204));
+    assert_eq!(w.got, Some(f64::from(0.89599997f32)));
+    let allowed = w.allowed.unwrap();
+    assert!((w.got.unwrap() - 0.8).abs() / allowed == w.ratio, "{w:?}");
+    let inputs = w.inputs.as_ref().unwrap();
+    assert_eq!(inputs.exact[0], ["3/5", "0", "4/5"].map(String::from));
+    assert_eq!(inputs.floats[0][0], f64::from(0.6f32));
+    assert!(w
+        .command
+        .as_ref()
+        .unwrap()
+        .starts_with("phong-approx span --method corrected-euler --na=3/5,0,4/5 "));
+    assert_eq!(w.profile, "the ieee profile's bound");
     // assert_ok panics with the same text.
     let panic = std::panic::catch_unwind(|| r.assert_ok()).unwrap_err();
     let msg = panic.downcast_ref::<String>().unwrap();
@@ -138,8 +169,8 @@ mod generators {
     proptest! {
         #![proptest_config(ProptestConfig::with_cases(48))]
 
-        /// The five-line differential test the kit is for: an implementation's values in
-        /// the acceptance interval of its profile on spans of every kind.
+        /// The acceptance intervals hold a correct implementation on spans of every
+        /// kind, and the ε/(n+1) mutant leaves them where there is a correction.
         #[test]
         fn own_code_is_within_the_acceptance_interval(
             span in prop_oneof![
@@ -151,10 +182,10 @@ mod generators {
         ) {
             let got = corrected_euler(floats(&span.na), floats(&span.nb), floats(&span.l), span.n, 0.0);
             let iv = acceptance::<f32>(phong_approx::Method::CorrectedEuler, &span, Profile::Ieee).unwrap();
+            prop_assert_eq!(got.len(), iv.len());
             for (i, (g, (lo, hi))) in got.iter().zip(&iv).enumerate() {
                 prop_assert!(*lo <= f64::from(*g) && f64::from(*g) <= *hi, "pixel {}", i);
             }
-            // And the ε/(n+1) mutant leaves it somewhere on spans with a correction.
             let bad = corrected_euler(floats(&span.na), floats(&span.nb), floats(&span.l), span.n, 1.0);
             let eps = span.eps.to_f64().abs();
             if eps > 1e-3 {
@@ -180,5 +211,322 @@ mod generators {
         quickcheck::QuickCheck::new()
             .tests(64)
             .quickcheck(prop as fn(ArbSpan) -> bool);
+    }
+}
+
+#[test]
+fn a_passing_report_gives_its_margin_per_set() {
+    let r = Suite::published()
+        .method(Method::CorrectedEuler)
+        .profile(Profile::Ieee)
+        .check_f32(|s| corrected_euler(s.na, s.nb, s.l, s.n, 0.0));
+    assert!(r.is_ok(), "{r}");
+    let sets: Vec<&str> = r.sets().iter().map(|s| s.set).collect();
+    assert_eq!(sets, ["typical", "edge", "paper"]);
+    // A float run uses some of its allowance and none uses all of it.
+    for s in r.sets() {
+        assert!(s.margin > 0.0 && s.margin <= 1.0, "{s:?}");
+        assert_eq!(s.failed, 0);
+        assert!(s.worst_case.is_some());
+    }
+    assert_eq!(
+        r.margin(),
+        r.sets().iter().map(|s| s.margin).fold(0.0, f64::max)
+    );
+    assert!(r.to_string().contains("margin: uses "), "{r}");
+}
+
+#[test]
+fn one_case_runs_by_id_and_an_unknown_id_is_a_failure() {
+    let mut seen = Vec::new();
+    let r = Suite::published()
+        .method(Method::CorrectedEuler)
+        .case("edge-003")
+        .check_f32(|s| {
+            seen.push(s.id.to_string());
+            corrected_euler(s.na, s.nb, s.l, s.n, 1.0)
+        });
+    assert_eq!(seen, ["edge-003"]);
+    assert_eq!(r.cases(), 1);
+    assert_eq!(r.failures().len(), 1);
+    assert_eq!(r.worst().unwrap().levels, Some(24));
+    let r = Suite::set("paper")
+        .case("edge-003")
+        .check_f64(|s| vec![0.0; s.n as usize + 1]);
+    assert!(!r.is_ok());
+    assert!(
+        r.to_string()
+            .contains("no case 'edge-003' in the chosen sets (paper)"),
+        "{r}"
+    );
+}
+
+/// Gouraud's specular in `f64`: `N·H` interpolated, clamped, raised to `s`.
+fn gouraud_specular(s: &phong_approx::testkit::Inputs<f64>, bias: f64) -> Vec<f64> {
+    let h = s.h.expect("a specular case has H");
+    let (pa, pb) = (dot(s.na, h), dot(s.nb, h));
+    let n = f64::from(s.n);
+    (0..=s.n)
+        .map(|i| {
+            let v = pa + (pb - pa) * f64::from(i) / n + bias;
+            v.max(0.0).powi(s.s.expect("and s") as i32)
+        })
+        .collect()
+}
+
+#[test]
+fn specular_cases_give_h_and_s_and_are_judged() {
+    let r = Suite::published()
+        .method(Method::Gouraud)
+        .specular()
+        .check_f64(|s| gouraud_specular(s, 0.0));
+    assert!(r.is_ok(), "{r}");
+    let specular_cases: usize = SETS_SPECULAR.iter().sum();
+    assert_eq!(r.cases(), specular_cases);
+    // Off by 2^-30 before the power: far outside f64's bound.
+    let r = Suite::published()
+        .method(Method::Gouraud)
+        .specular()
+        .check_f64(|s| gouraud_specular(s, 2f64.powi(-30)));
+    assert!(!r.is_ok());
+    let text = r.to_string();
+    assert!(
+        text.contains("H         = (") && text.contains("s         = "),
+        "{text}"
+    );
+    assert!(text.contains(" --scalar exact (then max(0, v)^"), "{text}");
+    // The shader profile does not model the power: every case fails, saying so.
+    let r = Suite::published()
+        .method(Method::Gouraud)
+        .profile(Profile::Shader)
+        .specular()
+        .check_f64(|s| gouraud_specular(s, 0.0));
+    assert_eq!(r.failures().len(), specular_cases);
+    assert!(
+        r.to_string().contains("does not model the specular power"),
+        "{r}"
+    );
+}
+
+/// The number of specular cases per published set, counted from the files.
+static SETS_SPECULAR: std::sync::LazyLock<Vec<usize>> = std::sync::LazyLock::new(|| {
+    phong_approx::testkit::SETS
+        .iter()
+        .map(|s| {
+            let f = phong_approx::testkit::published(s).unwrap();
+            f.cases.iter().filter(|c| c.specular.is_some()).count()
+        })
+        .collect()
+});
+
+mod own_spans {
+    use super::corrected_euler;
+    use phong_approx::reference::unit::unit_from_ints;
+    use phong_approx::testkit::prelude::*;
+    use phong_approx::testkit::KitError;
+    use phong_approx::{BigRational, Span};
+
+    fn span(n: u32) -> Span<BigRational> {
+        Span::new(
+            unit_from_ints(0, 0, 1),
+            unit_from_ints(3, 1, 4),
+            unit_from_ints(1, 2, 5),
+            n,
+        )
+        .unwrap()
+    }
+
+    #[test]
+    fn check_span_passes_correct_code_and_names_wrong_code() {
+        let s = span(9);
+        let ok = check_span(
+            Method::CorrectedEuler,
+            &s,
+            Profile::Ieee,
+            |i: &Inputs<f32>| corrected_euler(i.na, i.nb, i.l, i.n, 0.0),
+        )
+        .unwrap();
+        assert!(ok.is_ok(), "{ok}");
+        assert_eq!(ok.cases(), 1);
+        let bad = check_span(
+            Method::CorrectedEuler,
+            &s,
+            Profile::Ieee,
+            |i: &Inputs<f32>| corrected_euler(i.na, i.nb, i.l, i.n, 1.0),
+        )
+        .unwrap();
+        assert!(!bad.is_ok());
+        let text = bad.to_string();
+        assert!(
+            text.contains("span/span (n = 9): N_a = (0, 0, 1), N_b = (12/13, 4/13, 3/13)"),
+            "{text}"
+        );
+        assert!(text.contains("reproduce = phong-approx span --method corrected-euler --na=0,0,1 --nb=12/13,4/13,3/13"), "{text}");
+        // Wrong lengths, NaN and infinities fail; they do not panic.
+        for shade in [
+            (|i: &Inputs<f64>| vec![0.5; i.n as usize]) as fn(&Inputs<f64>) -> Vec<f64>,
+            |i| vec![0.5; i.n as usize + 2],
+            |i| vec![f64::NAN; i.n as usize + 1],
+            |i| vec![f64::INFINITY; i.n as usize + 1],
+            |_| Vec::new(),
+        ] {
+            let r = check_span(Method::Gouraud, &s, Profile::Ieee, shade).unwrap();
+            assert!(!r.is_ok(), "{r}");
+            assert!(r.worst().unwrap().ratio.is_infinite());
+        }
+    }
+
+    #[test]
+    fn check_span_refuses_spans_the_bounds_do_not_cover() {
+        let unit = |a, b, d| unit_from_ints(a, b, d);
+        // Within a float tolerance of unit, not exactly: refused.
+        let third = BigRational::new(1.into(), 3.into());
+        let near = phong_approx::Vec3::new(third.clone(), third.clone(), third);
+        let tol = BigRational::new(1.into(), 1.into());
+        let s = Span::with_tolerance(unit(0, 0, 1), unit(1, 0, 3), near, 4, &tol).unwrap();
+        let e = check_span(Method::Gouraud, &s, Profile::Ieee, |i: &Inputs<f32>| {
+            vec![0.0; i.n as usize + 1]
+        });
+        assert_eq!(e.unwrap_err(), KitError::NotUnit("L"));
+        let long = span(phong_approx::testkit::MAX_STEPS + 1);
+        let e = check_span(Method::Gouraud, &long, Profile::Ieee, |i: &Inputs<f32>| {
+            vec![0.0; i.n as usize + 1]
+        });
+        assert!(matches!(e, Err(KitError::TooLong(_))));
+        assert!(e.unwrap_err().to_string().contains("more steps than"));
+    }
+
+    #[test]
+    fn nearest_inputs_are_the_published_ones() {
+        for set in phong_approx::testkit::SETS {
+            for c in &phong_approx::testkit::published(set).unwrap().cases {
+                let s = phong_approx::conformance::integrity::case_span(c).unwrap();
+                let i = Inputs::<f32>::nearest(&s);
+                let want = |v: &[String; 3]| v.clone().map(|x| x.parse::<f32>().unwrap());
+                assert_eq!(
+                    (i.na, i.nb, i.l),
+                    (want(&c.na.f32), want(&c.nb.f32), want(&c.l.f32)),
+                    "{}",
+                    c.id
+                );
+                let i = Inputs::<f64>::nearest(&s);
+                let want = |v: &[String; 3]| v.clone().map(|x| x.parse::<f64>().unwrap());
+                assert_eq!(
+                    (i.na, i.nb, i.l),
+                    (want(&c.na.f64), want(&c.nb.f64), want(&c.l.f64)),
+                    "{}",
+                    c.id
+                );
+            }
+        }
+    }
+
+    #[test]
+    fn a_span_prints_on_one_line_in_exact_fractions() {
+        let s = span(4);
+        assert_eq!(
+            format!("{s:?}"),
+            "Span { N_a = (0, 0, 1), N_b = (12/13, 4/13, 3/13), L = (1/3, 2/3, 2/3), n = 4 }"
+        );
+        assert_eq!(format!("{s:#?}").lines().count(), 1);
+    }
+}
+
+/// The property test docs/conformance.md §4 shows, as written there (between the
+/// `documented property test` markers; `the_documented_property_test_is_this_one`
+/// compares the two).
+#[cfg(feature = "proptest")]
+mod documented {
+    use super::corrected_euler;
+
+    fn my_corrected_euler(na: [f32; 3], nb: [f32; 3], l: [f32; 3], n: u32) -> Vec<f32> {
+        corrected_euler(na, nb, l, n, 0.0)
+    }
+
+    // documented property test: begin
+    use phong_approx::testkit::prelude::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        #[test]
+        fn my_corrected_euler_is_within_ieee(span in strategy::mesh_span(1..=64)) {
+            let r = check_span(Method::CorrectedEuler, &span, Profile::Ieee, |s: &Inputs<f32>| {
+                my_corrected_euler(s.na, s.nb, s.l, s.n)
+            })?;
+            prop_assert!(r.is_ok(), "{}", r);
+        }
+    }
+    // documented property test: end
+
+    /// The same property on the ε/(n+1) mutant fails, and the shrunk failure reads in
+    /// a few lines: the span on one line in exact fractions, the worst pixel, the
+    /// command that reproduces it.
+    #[test]
+    fn the_documented_property_catches_the_planted_bug_readably() {
+        use proptest::test_runner::{Config, TestError, TestRunner};
+        let mut runner = TestRunner::new(Config {
+            cases: 64,
+            failure_persistence: None,
+            ..Config::default()
+        });
+        let result = runner.run(&strategy::mesh_span(1..=64), |span| {
+            let r = check_span(
+                Method::CorrectedEuler,
+                &span,
+                Profile::Ieee,
+                |s: &Inputs<f32>| corrected_euler(s.na, s.nb, s.l, s.n, 1.0),
+            )?;
+            prop_assert!(r.is_ok(), "{}", r);
+            Ok(())
+        });
+        let Err(TestError::Fail(reason, span)) = result else {
+            panic!("the ε/(n+1) mutant passed: {result:?}");
+        };
+        let shown = format!("minimal failing input: span = {span:?}\n{reason}");
+        println!("{shown}");
+        assert_eq!(format!("{span:?}").lines().count(), 1);
+        assert!(
+            format!("{span:?}").starts_with("Span { N_a = ("),
+            "{span:?}"
+        );
+        let reason = reason.to_string();
+        assert!(reason.contains("1 of 1 cases fail"), "{reason}");
+        assert!(
+            reason.contains("reproduce = phong-approx span --method corrected-euler --na="),
+            "{reason}"
+        );
+        assert!(reason.lines().count() <= 16, "{reason}");
+    }
+
+    #[test]
+    fn the_documented_property_test_is_this_one() {
+        let doc =
+            std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/conformance.md"))
+                .unwrap();
+        let src = std::fs::read_to_string(file!()).unwrap();
+        let between = |t: &str, a: &str, b: &str| -> String {
+            let i = t.find(a).unwrap_or_else(|| panic!("no '{a}'")) + a.len();
+            let j = i + t[i..].find(b).unwrap();
+            t[i..j]
+                .lines()
+                .map(str::trim)
+                .filter(|l| !l.is_empty())
+                .collect::<Vec<_>>()
+                .join("\n")
+        };
+        let here = between(
+            &src,
+            "// documented property test: begin",
+            "// documented property test: end",
+        );
+        let there = between(
+            &doc,
+            "<!-- documented property test: begin -->\n```rust",
+            "```\n<!-- documented property test: end -->",
+        );
+        assert_eq!(
+            here, there,
+            "docs/conformance.md §4 shows another property test than tests/testkit.rs runs"
+        );
     }
 }

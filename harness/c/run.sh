@@ -1,58 +1,166 @@
 #!/usr/bin/env bash
-# Builds the C harness twice — plain, and with fused multiply-adds
-# (`-mfma -ffp-contract=fast`: on x86-64 GCC fuses only when FMA instructions are
-# enabled) — runs it on every published set for the paper's methods, and checks the
-# results with `phong-approx check`: the plain build under the reference profile and
-# under the default ieee profile, the fused build under ieee, for every method (each
-# has an ieee bound: proved for gouraud and corrected-euler, derived for euler, phong
-# and duff). The two builds must differ somewhere.
+# SPDX-License-Identifier: MIT OR Apache-2.0
+#
+# Tests your C shading code on phong-approx's published vectors.
+#
+#   harness/c/run.sh YOUR_SOURCE.c [CHECKER] [--method M] [--precision f32|f64]
+#                    [--specular] [-- CHECK_OPTIONS...]
+#
+# YOUR_SOURCE.c holds your shading function and a main that calls pk_main
+# (harness/c/phong_kit.h; harness/c/example_corrected_euler.c is one). It is built
+# twice with phong_kit.c, found next to this script:
+#   plain: -O2 -std=c99 -ffp-contract=off
+#   fused: -O2 -std=c99 -ffp-contract=fast, and -mfma on x86-64 (where GCC fuses
+#          only when FMA instructions are enabled)
+# Each build shades every published set (typical, edge, paper) and
+# `CHECKER check --vectors SET.json --results R.csv --method M --precision P` judges
+# it, by its default profile (ieee: any order of operations, FMA, reciprocals).
+# One line per set and build; the exit code is 0 if all pass, 1 if any fails, 2 for
+# bad arguments, missing files or a build that does not compile.
+#
+#   CHECKER          the phong-approx binary (default: phong-approx on PATH,
+#                    from `cargo install --path .` in the phong-approx repository)
+#   --method M       the method your code implements (default corrected-euler)
+#   --precision P    f32 (default) or f64: the shading function pk_main runs, and
+#                    the checker's --precision
+#   --specular       also check the specular part (pk_main --specular, check
+#                    --specular) on the sets that have specular cases
+#   -- OPTIONS       more options for `check`, e.g. `-- --profile reference`
+#
+# Environment: PHONG_KIT_VECTORS (the folder of SET.json and SET-inputs.csv;
+# default: vectors/ of the repository this script is in), CC (default cc), CFLAGS
+# (added to both builds' flags), LDLIBS (default -lm), PHONG_KIT_RESULTS (a folder
+# to keep the results CSVs in, as SET-BUILD[-specular].csv).
 set -euo pipefail
-cd "$(dirname "$0")/../.."
-tmp=$(mktemp -d)
-trap 'rm -rf "$tmp"' EXIT
-cc -O2 -std=c99 -Wall -Wextra -Werror -o "$tmp/plain" harness/c/harness.c -lm
-cc -O2 -std=c99 -Wall -Wextra -Werror -mfma -ffp-contract=fast -o "$tmp/fused" harness/c/harness.c -lm
-bin=${PHONG_APPROX_BIN:-target/release/phong-approx}
-# exact_input.h rounds each exact fraction once: its floats and doubles are the
-# vector files' nearest-f32 and nearest-f64 forms, bit for bit.
-for set in typical edge paper; do
-  "$tmp/plain" inputs < "vectors/$set-inputs.csv" > "$tmp/inputs.csv"
-  python3 - "vectors/$set.json" "$tmp/inputs.csv" <<'PY'
-import csv, json, struct, sys
-# A shortest round-trip f32 decimal, to its f32 (through the double, which is far
-# closer to it than half an f32 ulp, so the second rounding cannot move it).
-f32 = lambda s: struct.unpack("f", struct.pack("f", float(s)))[0]
-cases = {c["id"]: c for c in json.load(open(sys.argv[1]))["cases"]}
-bad = 0
-for row in csv.DictReader(open(sys.argv[2])):
-    c, j = cases[row["case"]], int(row["component"])
-    v = [c["na"], c["nb"], c["l"]][j // 3]
-    want32, want64 = f32(v["f32"][j % 3]), float(v["f64"][j % 3])
-    got32, got64 = float.fromhex(row["f32"]), float.fromhex(row["f64"])
-    if got32 != want32 or got64 != want64:
-        bad += 1
-        print(f"{row['case']} component {j}: {got32!r}/{got64!r}, want {want32!r}/{want64!r}")
-sys.exit(1 if bad else 0)
-PY
+
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+usage() {
+  echo "usage: run.sh YOUR_SOURCE.c [CHECKER] [--method M] [--precision f32|f64] [--specular] [-- CHECK_OPTIONS...]"
+}
+bad() { echo "run.sh: $*" >&2; exit 2; }
+
+src= checker= method=corrected-euler precision=f32 specular=0
+check_extra=()
+while [ $# -gt 0 ]; do
+  case $1 in
+    --method) [ $# -ge 2 ] || bad "--method needs a method name"; method=$2; shift 2 ;;
+    --method=*) method=${1#*=}; shift ;;
+    --precision) [ $# -ge 2 ] || bad "--precision needs f32 or f64"; precision=$2; shift 2 ;;
+    --precision=*) precision=${1#*=}; shift ;;
+    --specular) specular=1; shift ;;
+    -h|--help) usage; exit 0 ;;
+    --) shift; check_extra=("$@"); break ;;
+    -*) usage >&2; bad "unknown option $1" ;;
+    *)
+      if [ -z "$src" ]; then src=$1
+      elif [ -z "$checker" ]; then checker=$1
+      else usage >&2; bad "one source file and one checker only (more sources: #include them)"
+      fi
+      shift ;;
+  esac
 done
-echo "  exact_input.h: every input rounds to the vector files' f32 and f64"
-differ=0
-for set in typical edge paper; do
-  for m in gouraud euler corrected-euler phong duff; do
-    "$tmp/plain" "$m" < "vectors/$set-inputs.csv" > "$tmp/plain.csv"
-    "$bin" check --vectors "vectors/$set.json" --results "$tmp/plain.csv" --method "$m" \
-      --profile reference > "$tmp/out" || { cat "$tmp/out"; echo "plain $set $m failed" >&2; exit 1; }
-    "$bin" check --vectors "vectors/$set.json" --results "$tmp/plain.csv" --method "$m" \
-      > "$tmp/out" || { cat "$tmp/out"; echo "plain $set $m failed under ieee" >&2; exit 1; }
-    "$tmp/fused" "$m" < "vectors/$set-inputs.csv" > "$tmp/fused.csv"
-    "$bin" check --vectors "vectors/$set.json" --results "$tmp/fused.csv" --method "$m" \
-      --profile ieee > "$tmp/out" || { cat "$tmp/out"; echo "fused $set $m failed" >&2; exit 1; }
-    cmp -s "$tmp/plain.csv" "$tmp/fused.csv" || differ=$((differ + 1))
-    echo "  $set $m: pass"
+[ -n "$src" ] || { usage >&2; exit 2; }
+case $precision in f32|f64) ;; *) bad "--precision takes f32 or f64, not $precision" ;; esac
+[ -f "$src" ] || bad "no such source file: $src"
+[ -f "$here/phong_kit.c" ] && [ -f "$here/phong_kit.h" ] || bad "phong_kit.c and phong_kit.h are not next to run.sh ($here)"
+
+if [ -z "$checker" ]; then
+  checker=$(command -v phong-approx) ||
+    bad "phong-approx is not on PATH: run \`cargo install --path .\` in the phong-approx repository, or give the checker's path after the source file"
+elif [[ $checker != */* ]]; then
+  checker=$(command -v "$checker") || bad "no checker $checker on PATH"
+fi
+[ -x "$checker" ] || bad "the checker $checker is not an executable file"
+
+vectors=${PHONG_KIT_VECTORS:-$here/../../vectors}
+sets=(typical edge paper)
+for set in "${sets[@]}"; do
+  for f in "$set.json" "$set-inputs.csv"; do
+    [ -f "$vectors/$f" ] || bad "no $vectors/$f (set PHONG_KIT_VECTORS to the folder of the vector files)"
   done
 done
-if [ "$differ" -eq 0 ]; then
-  echo "the fused build gave the same results as the plain one: no FMA was used" >&2
+results=${PHONG_KIT_RESULTS:-}
+if [ -n "$results" ]; then mkdir -p "$results"; fi
+
+cc=${CC:-cc}
+read -r -a extra <<< "${CFLAGS:-}"
+read -r -a libs <<< "${LDLIBS--lm}"
+plain_flags=(-O2 -std=c99 -ffp-contract=off)
+fused_flags=(-O2 -std=c99 -ffp-contract=fast)
+target=$("$cc" -dumpmachine 2>/dev/null || uname -m)
+case $target in
+  x86_64*|amd64*)
+    if [ -r /proc/cpuinfo ] && ! grep -qw fma /proc/cpuinfo; then
+      echo "run.sh: this CPU has no FMA instructions: the fused build is contracted without -mfma (GCC then fuses nothing)" >&2
+    else
+      fused_flags+=(-mfma)
+    fi ;;
+esac
+
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+trap 'exit 129' HUP
+trap 'exit 130' INT
+trap 'exit 143' TERM
+
+builds=(plain fused)
+for build in "${builds[@]}"; do
+  if [ "$build" = plain ]; then flags=("${plain_flags[@]}"); else flags=("${fused_flags[@]}"); fi
+  if ! "$cc" "${flags[@]}" ${extra[@]+"${extra[@]}"} -I"$here" -o "$tmp/$build" \
+      "$src" "$here/phong_kit.c" ${libs[@]+"${libs[@]}"}; then
+    bad "building $src ($build: $cc ${flags[*]} ${extra[*]-}) failed"
+  fi
+done
+
+echo "phong_kit: $src as $method in $precision, checked by $checker ($("$checker" --version 2>/dev/null || echo "version unknown"))"
+echo "  plain: ${plain_flags[*]} ${extra[*]-}"
+echo "  fused: ${fused_flags[*]} ${extra[*]-}"
+failed=0 passed=0
+
+# check_one SET BUILD PART: runs the build on the set and checks its results.
+check_one() {
+  local set=$1 build=$2 part=$3 label rc suffix=
+  local opts=(--precision "$precision") copts=()
+  if [ "$part" = specular ]; then opts+=(--specular); copts+=(--specular); suffix=-specular; fi
+  label=$(printf '%-8s %-5s%s' "$set" "$build" "${suffix/-/ }")
+  rc=0
+  "$tmp/$build" "${opts[@]}" "$vectors/$set-inputs.csv" > "$tmp/r.csv" 2> "$tmp/err" || rc=$?
+  if [ "$rc" -ne 0 ]; then
+    printf '  %s FAIL: the program exited with %s: %s\n' "$label" "$rc" "$(head -n 1 "$tmp/err" | sed "s|$tmp/||")"
+    failed=$((failed + 1))
+    return
+  fi
+  if [ -n "$results" ]; then
+    cp "$tmp/r.csv" "$results/$set-$build$suffix.csv"
+  fi
+  if [ "$part" = specular ] && [ "$(wc -l < "$tmp/r.csv")" -le 1 ]; then
+    printf '  %s (no specular cases)\n' "$label"
+    return
+  fi
+  rc=0
+  "$checker" check --vectors "$vectors/$set.json" --results "$tmp/r.csv" --method "$method" \
+    --precision "$precision" ${copts[@]+"${copts[@]}"} ${check_extra[@]+"${check_extra[@]}"} \
+    > "$tmp/out" 2> "$tmp/err" || rc=$?
+  if [ "$rc" -eq 0 ]; then
+    printf '  %s pass: %s\n' "$label" "$(grep -m 1 '^overall: ' "$tmp/out" | sed 's/^overall: //')"
+    passed=$((passed + 1))
+  else
+    printf '  %s FAIL: %s\n' "$label" "$(head -n 1 "$tmp/err" | sed 's/^phong-approx: //')"
+    grep -m 1 '^overall: ' "$tmp/out" | sed 's/^/      /' || true
+    grep -m 1 '^worst case ' "$tmp/out" | cut -c 1-300 | sed 's/^/      /' || true
+    failed=$((failed + 1))
+  fi
+}
+
+for set in "${sets[@]}"; do
+  for build in "${builds[@]}"; do
+    check_one "$set" "$build" diffuse
+    if [ "$specular" -eq 1 ]; then check_one "$set" "$build" specular; fi
+  done
+done
+
+if [ "$failed" -gt 0 ]; then
+  echo "phong_kit: $failed of $((failed + passed)) runs FAIL ($method, $precision)"
   exit 1
 fi
-echo "C harness: every set and method passes; the fused build differs on $differ of 15 set-method pairs"
+echo "phong_kit: all $passed runs pass ($method, $precision; ${#sets[@]} sets, plain and fused)"

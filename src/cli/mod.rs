@@ -290,9 +290,23 @@ pub fn one_line(s: &str) -> String {
 /// under each, from the one table of labels (`tolerance::profile::status_summary`).
 pub fn profile_help() -> String {
     format!(
-        "The arithmetic profile the results are judged by (docs/float.md §18): ieee (the default: IEEE f32/f64 with round to nearest, any order, FMA, reciprocals), shader (Vulkan/WGSL 32-bit rules: truncation, 2.5-ulp division, flushed denormals; f32), reference (this crate's own operation order, round to nearest, no FMA: the bounds of every method, angular and the related methods included) or fixed:M.F (a set-up rounded once to nearest at F ≤ 51 fractional bits, an exact integer loop in M-bit registers). Bounds: {}; reference: every method, proved for gouraud and corrected-euler in this crate's order, derived for the others.",
-        phong_approx::tolerance::profile::status_summary()
+        "The arithmetic profile the results are judged by (docs/float.md §18): ieee (the default: IEEE f32/f64 with round to nearest, any order, FMA, reciprocals), shader (Vulkan/WGSL 32-bit rules: truncation, 2.5-ulp division, flushed denormals; f32), reference (this crate's own operation order, round to nearest, no FMA: the bounds of every method, angular and the related methods included) or fixed:M.F (a set-up rounded once to nearest at F ≤ 51 fractional bits, an exact integer loop in M-bit registers). Bounds: {}; reference: every method, proved for gouraud and corrected-euler in this crate's order, derived for the others. The default (ieee) bounds, u = 2^-24 for f32 and 2^-53 for f64: {} (docs/conformance.md §3 has them with values).",
+        phong_approx::tolerance::profile::status_summary(),
+        ieee_formulas()
     )
+}
+
+/// The `ieee` profile's bound for each method with one, `method formula`, from
+/// [`phong_approx::tolerance::profile::formula`].
+fn ieee_formulas() -> String {
+    use phong_approx::tolerance::profile::{formula, Profile};
+    phong_approx::Method::ALL
+        .iter()
+        .filter_map(|&m| {
+            formula(m, Profile::Ieee, 1.0 / 16_777_216.0).map(|f| format!("{} {f}", m.name()))
+        })
+        .collect::<Vec<_>>()
+        .join("; ")
 }
 
 /// `--method`'s help: every method of the catalogue by name, in its order.

@@ -45,8 +45,11 @@ pub enum Tolerance {
     Levels(u32),
     /// At most this far from the expected value.
     Abs(f64),
-    /// At most this many ulps (of the expected value, in the implementation's format:
-    /// `f32` unless [`check_in`] is told the format's unit roundoff) from it.
+    /// At most this many ulps from it, in the implementation's format (`f32` unless
+    /// [`check_in`] is told the format's unit roundoff), counted at the case's scale:
+    /// the ulp of the largest `|expected value|` of the span. The methods' errors are
+    /// absolute, on values of that magnitude; the ulp of a value near zero would make
+    /// a tiny absolute error look like tens of thousands of ulps.
     Ulps(f64),
     /// The crate's documented float bound for the method, case and precision
     /// (`src/tolerance.rs`): `f32` (u = 2^-24) or `f64` (u = 2^-53). The `reference`
@@ -210,6 +213,7 @@ fn sizes(vectors: &VectorFile, specular: bool) -> HashMap<&str, usize> {
 /// A value: a decimal number, or `nan`/`inf`/`infinity` (any case, signed), which an
 /// implementation may well produce and which then fails its pixel (exit 1, named), not
 /// the file.
+#[cfg(feature = "csv")]
 fn parse_value(file: &str, line: usize, s: &str) -> Result<f64, InputError> {
     let t = s.trim();
     let v: f64 = t.parse().map_err(|_| {
@@ -303,6 +307,7 @@ pub const MAX_CSV_LINE: usize = 4096;
 /// An [`InputError`] naming the line: a line longer than [`MAX_CSV_LINE`], a missing,
 /// extra or empty column, a non-number, an unknown case id, a pixel out of range, a
 /// duplicate row, an empty file, or (at the end) a missing case or pixel.
+#[cfg(feature = "csv")]
 pub fn parse_results_csv(
     text: &str,
     file: &str,
@@ -737,6 +742,7 @@ pub fn parse_results_json(
 ///
 /// # Errors
 /// As [`parse_results_csv`] / [`parse_results_json`].
+#[cfg(feature = "csv")]
 pub fn parse_results(
     text: &str,
     file: &str,
@@ -773,13 +779,22 @@ pub struct CaseReport {
     pub mean_levels: f64,
     /// Largest |value − expected|.
     pub max_abs: f64,
-    /// Largest |value − expected| in ulps of the expected value, in the format
+    /// Largest |value − expected| in ulps of the case's scale (the largest
+    /// `|expected value|` of the span; [`Tolerance::Ulps`]), in the format
     /// [`CaseReport::format`] names.
     pub max_ulps: f64,
     /// The format whose ulps `max_ulps` counts (`f32`, `f64`, …).
     pub format: &'static str,
     /// The pixel where the tolerance is exceeded most (relative to it), if any.
     pub worst_pixel: usize,
+    /// How much of the tolerance the worst pixel uses: `|value − expected|` over the
+    /// allowed absolute error (or levels over allowed levels, ulps over allowed ulps);
+    /// above 1 the case fails. Infinite where a value is missing or not finite, or no
+    /// bound holds.
+    pub ratio: f64,
+    /// The allowed absolute error, where the tolerance is one (a profile's bound, the
+    /// reference bound, [`Tolerance::Abs`]).
+    pub allowed_abs: Option<f64>,
     /// The tolerance applied (as an absolute value, or levels).
     pub allowed: String,
     /// Whether every pixel is within the tolerance.
@@ -1004,11 +1019,19 @@ fn case_report(
         && allowed_abs.is_none();
     let (mut max_levels, mut sum_levels, mut max_abs, mut max_ulps) = (0u32, 0u64, 0f64, 0f64);
     let (mut worst, mut worst_excess, mut pass) = (0usize, f64::NEG_INFINITY, true);
+    let mut ratio = 0f64;
+    // Ulps are counted at the case's scale (Tolerance::Ulps).
+    let scale = exp
+        .values
+        .iter()
+        .filter_map(|v| v.parse::<f64>().ok())
+        .fold(0f64, |m, v| m.max(v.abs()));
     let mut not_finite = None;
     // The vector file was validated, so both lists have n + 1 values; a shorter list
     // would end the comparison early, so it fails.
     if got.len() != exp.values.len() || exp.levels.len() != exp.values.len() {
         pass = false;
+        ratio = f64::INFINITY;
     }
     for (i, (&g, (ev, &el))) in got
         .iter()
@@ -1021,6 +1044,7 @@ fn case_report(
                 not_finite = Some(i);
                 worst = i;
                 worst_excess = f64::INFINITY;
+                ratio = f64::INFINITY;
             }
             continue;
         }
@@ -1030,7 +1054,7 @@ fn case_report(
         // fails whatever the tolerance (levels clamp, so they alone would pass 1e300).
         let implausible = g.abs() > 16.0 * e.abs().max(1.0);
         let dl = u32::from(level(&g).abs_diff(el));
-        let du = d / ulp_in(e, format_u);
+        let du = d / ulp_in(scale.max(e.abs()), format_u);
         max_levels = max_levels.max(dl);
         sum_levels += u64::from(dl);
         max_abs = max_abs.max(d);
@@ -1051,7 +1075,22 @@ fn case_report(
         if excess > worst_excess {
             worst_excess = excess;
             worst = i;
+            ratio = ratio.max(match tol {
+                Tolerance::Levels(n) => f64::from(dl) / f64::from(n),
+                Tolerance::Ulps(n) => du / n,
+                _ => d / allowed_abs.unwrap_or(0.0),
+            });
         }
+        if implausible || d.is_nan() {
+            ratio = f64::INFINITY;
+        }
+    }
+    if unbounded {
+        ratio = f64::INFINITY;
+    }
+    // 0/0 (an exact result under a zero tolerance) uses none of it.
+    if ratio.is_nan() {
+        ratio = 0.0;
     }
     let allowed = match tol {
         Tolerance::Levels(n) => format!("{n} levels"),
@@ -1089,6 +1128,8 @@ fn case_report(
         max_ulps,
         format: format_name(format_u),
         worst_pixel: worst,
+        ratio,
+        allowed_abs,
         allowed,
         pass,
         not_finite,

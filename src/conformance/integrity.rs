@@ -13,7 +13,6 @@ use crate::quantize::level;
 use crate::scalar::Scalar;
 use crate::span::Span;
 use crate::BigRational;
-use sha2::{Digest, Sha256};
 
 /// `vectors/SHA256SUMS`: the SHA-256 of the published vector files, in `sha256sum`'s
 /// format (`DIGEST  SET.json` per line), as `phong-approx vectors` of this version
@@ -59,7 +58,7 @@ pub const MAX_DIFFUSE_VALUE: f64 = 4.0;
 
 /// The hexadecimal SHA-256 of `bytes`.
 pub fn sha256_hex(bytes: &[u8]) -> String {
-    Sha256::digest(bytes)
+    hmac_sha256::Hash::hash(bytes)
         .iter()
         .map(|b| format!("{b:02x}"))
         .collect()

@@ -346,6 +346,21 @@ impl CaseSpec {
     }
 }
 
+/// A case from an exact span (exactly unit inputs), with the expectations of
+/// `methods` only: what the test kit's `check_span` judges against.
+///
+/// # Errors
+/// As [`CaseSpec::compute`].
+pub(crate) fn case_for_span(
+    methods: &[Method],
+    id: &str,
+    comment: &str,
+    span: &Span<BigRational>,
+) -> Result<Case, String> {
+    let (na, nb, l) = (span.na.clone(), span.nb.clone(), span.l.clone());
+    compute_case_for(methods, id.to_string(), comment, na, nb, l, span.n, None)
+}
+
 /// A case from exact unit inputs, with the expectations of `methods`.
 #[allow(clippy::too_many_arguments)]
 fn compute_case_for(
@@ -991,6 +1006,7 @@ pub fn file_of(set: &str, cases: Vec<Case>) -> VectorFile {
 
 /// The CSV twin of a vector file: one row per case, method and pixel:
 /// `set,case,method,kind,n,pixel,value,level` (`kind` is `diffuse` or `specular`).
+#[cfg(feature = "csv")]
 pub fn to_csv(file: &VectorFile) -> String {
     /// A line of the CSV twin.
     #[derive(Serialize)]
@@ -1028,49 +1044,59 @@ pub fn to_csv(file: &VectorFile) -> String {
     crate::table::csv(rows)
 }
 
-/// The inputs of every case as CSV: `case,n,na_x,na_y,na_z,nb_x,…,l_z,h_x,h_y,h_z,s`
-/// with exact fractions (empty H and s where a case has no specular part).
+/// The names of the inputs CSV's twelve input columns (`h_*` for the specular half
+/// vector), in order.
+#[cfg(feature = "csv")]
+const INPUT_COLUMNS: [&str; 12] = [
+    "na_x", "na_y", "na_z", "nb_x", "nb_y", "nb_z", "l_x", "l_y", "l_z", "h_x", "h_y", "h_z",
+];
+
+/// The inputs of every case as CSV, for readers in any language: `case,n`, the twelve
+/// inputs as exact fractions (`na_x … l_z, h_x, h_y, h_z`), `s`, then the nearest
+/// `f32` of each input as its bit pattern (`na_x_f32 … h_z_f32`, `0x` and 8 hex
+/// digits) and the nearest `f64` likewise (`na_x_f64 … h_z_f64`, 16 hex digits), so a
+/// C harness reads floats with `strtoul` and `memcpy` and parses no fraction. The
+/// cells of H and s are empty where a case has no specular part.
+///
+/// # Panics
+/// If a case's float forms do not parse (the file was not validated).
+#[cfg(feature = "csv")]
 pub fn inputs_csv(file: &VectorFile) -> String {
-    /// A line of the inputs CSV (an absent specular part: empty cells).
-    #[derive(Serialize)]
-    struct Row<'a> {
-        case: &'a str,
-        n: u32,
-        na_x: &'a str,
-        na_y: &'a str,
-        na_z: &'a str,
-        nb_x: &'a str,
-        nb_y: &'a str,
-        nb_z: &'a str,
-        l_x: &'a str,
-        l_y: &'a str,
-        l_z: &'a str,
-        h_x: &'a str,
-        h_y: &'a str,
-        h_z: &'a str,
-        s: Option<u32>,
+    let mut w = csv::Writer::from_writer(Vec::new());
+    let mut head = vec!["case".to_string(), "n".to_string()];
+    head.extend(INPUT_COLUMNS.map(String::from));
+    head.push("s".into());
+    for suffix in ["_f32", "_f64"] {
+        head.extend(INPUT_COLUMNS.map(|c| format!("{c}{suffix}")));
     }
-    crate::table::csv(file.cases.iter().map(|c| {
-        let h = c.specular.as_ref().map(|sp| &sp.h.exact);
-        let hc = |k: usize| h.map_or("", |h| h[k].as_str());
-        Row {
-            case: &c.id,
-            n: c.n,
-            na_x: &c.na.exact[0],
-            na_y: &c.na.exact[1],
-            na_z: &c.na.exact[2],
-            nb_x: &c.nb.exact[0],
-            nb_y: &c.nb.exact[1],
-            nb_z: &c.nb.exact[2],
-            l_x: &c.l.exact[0],
-            l_y: &c.l.exact[1],
-            l_z: &c.l.exact[2],
-            h_x: hc(0),
-            h_y: hc(1),
-            h_z: hc(2),
-            s: c.specular.as_ref().map(|sp| sp.s),
-        }
-    }))
+    w.write_record(&head).expect("writing to memory");
+    for c in &file.cases {
+        let h = c.specular.as_ref().map(|sp| &sp.h);
+        let inputs: [Option<&VectorInput>; 4] = [Some(&c.na), Some(&c.nb), Some(&c.l), h];
+        let cells = |pick: &dyn Fn(&VectorInput, usize) -> String| -> Vec<String> {
+            inputs
+                .iter()
+                .flat_map(|v| (0..3).map(move |k| v.map_or(String::new(), |v| pick(v, k))))
+                .collect()
+        };
+        let mut row = vec![c.id.clone(), c.n.to_string()];
+        row.extend(cells(&|v, k| v.exact[k].clone()));
+        row.push(
+            c.specular
+                .as_ref()
+                .map_or(String::new(), |sp| sp.s.to_string()),
+        );
+        row.extend(cells(&|v, k| {
+            let x: f32 = v.f32[k].parse().expect("a validated f32 input");
+            format!("0x{:08x}", x.to_bits())
+        }));
+        row.extend(cells(&|v, k| {
+            let x: f64 = v.f64[k].parse().expect("a validated f64 input");
+            format!("0x{:016x}", x.to_bits())
+        }));
+        w.write_record(&row).expect("writing to memory");
+    }
+    String::from_utf8(w.into_inner().expect("writing to memory")).expect("the cells are UTF-8")
 }
 
 /// `true` when every value parses and the levels agree with the values (a reader's

@@ -319,7 +319,8 @@ pub fn failure(reports: &[CaseReport]) -> Option<String> {
     ))
 }
 
-#[cfg(test)]
+// The tests read and write CSV.
+#[cfg(all(test, feature = "csv"))]
 mod tests {
     use super::*;
     use crate::conformance::check::{check, parse_results, Tolerance};

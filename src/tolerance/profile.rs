@@ -639,6 +639,75 @@ pub fn status_table() -> String {
     s
 }
 
+/// A profile's bound for `method` in the format of unit roundoff `u`, in words: the
+/// proved forms `(α·n + β)·u` (the largest applies), or the section of the derivation
+/// for the derived bounds (which depend on the span's `q_min` too).
+pub fn formula(method: crate::Method, profile: Profile, u: f64) -> Option<String> {
+    match status(method, profile, u)? {
+        Status::Proved(_) => {
+            let mut forms: Vec<String> = proved(method, profile, u)?
+                .iter()
+                .map(|f| {
+                    if f.alpha == 0.0 {
+                        format!("{}·u", f.beta)
+                    } else {
+                        format!("({}·n + {})·u", f.alpha, f.beta)
+                    }
+                })
+                .collect();
+            forms.dedup();
+            Some(if forms.len() == 1 {
+                forms.remove(0)
+            } else {
+                format!("max({})", forms.join(", "))
+            })
+        }
+        Status::Derived(section) => Some(match method {
+            crate::Method::Adaptive => "the larger of Gouraud's and corrected Euler's".into(),
+            _ => format!("from n and q_min ({section})"),
+        }),
+    }
+}
+
+/// The bounds `check` applies by default — the `ieee` profile's, in binary32 and
+/// binary64 — as a Markdown table made from [`formula`], [`profile_bound`] and
+/// [`status`] (docs/conformance.md §3 holds it, `tests/coverage.rs` checks it is the
+/// current one), with each bound's value in units of `u` on two spans: `n = 8`,
+/// `q_min = 1` and `n = 256`, `q_min = 1/4`.
+pub fn ieee_table() -> String {
+    let spans = [(8u32, 1.0f64), (256, 0.25)];
+    let mut s = String::from(
+        "| method | `ieee` bound on the error at each pixel | binary32, n = 8, q_min = 1 | binary32, n = 256, q_min = 1/4 | binary64, n = 256, q_min = 1/4 | status (binary32) |\n|---|---|---|---|---|---|\n",
+    );
+    let (u32_, u64_) = (U32, f64::EPSILON / 2.0);
+    for m in crate::Method::ALL {
+        let Some(f) = formula(m, Profile::Ieee, u32_) else {
+            continue;
+        };
+        let at = |n: u32, q: f64, u: f64| {
+            profile_bound(m, Profile::Ieee, n, q, u).map_or("none".to_string(), |b| {
+                // In units of u, rounded up to 4 significant digits.
+                let x = b / u;
+                let d = (3 - x.log10().floor() as i32).max(0) as usize;
+                let e = 10f64.powi(-(d as i32));
+                format!("{:.d$}·u", (x / e).ceil() * e)
+            })
+        };
+        let label = status(m, Profile::Ieee, u32_).map_or(String::new(), |st| match st {
+            Status::Proved(t) => format!("proved (`{t}`)"),
+            Status::Derived(d) => format!("derived ({d})"),
+        });
+        s += &format!(
+            "| `{}` | {f} | {} | {} | {} | {label} |\n",
+            m.name(),
+            at(spans[0].0, spans[0].1, u32_),
+            at(spans[1].0, spans[1].1, u32_),
+            at(spans[1].0, spans[1].1, u64_),
+        );
+    }
+    s
+}
+
 /// One line per profile naming the methods whose bound is proved and those whose
 /// bound is derived (the `--profile` help of `check`, from [`status`]).
 pub fn status_summary() -> String {

@@ -2,9 +2,7 @@
 //! profile (any IEEE round-to-nearest implementation of the method).
 
 use glam::Vec3;
-use phong_approx::testkit::Suite;
-use phong_approx::tolerance::profile::Profile;
-use phong_approx::Method;
+use phong_approx::testkit::prelude::*;
 use shader_under_test::{corrected_euler, phong};
 
 fn v(x: [f32; 3]) -> Vec3 {
@@ -40,6 +38,10 @@ fn a_planted_bug_is_caught() {
     assert!(!r.is_ok());
     println!("{r}");
     assert!(r.to_string().contains("reproduce = phong-approx span"));
+    // The worst case first: 24 levels off, far over its allowance.
+    let worst = r.worst().unwrap();
+    assert_eq!((worst.case.as_str(), worst.levels), ("edge-003", Some(24)));
+    assert!(worst.ratio > 1e3);
 }
 
 /// `corrected_euler` with the bug planted.

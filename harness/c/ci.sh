@@ -1,0 +1,132 @@
+#!/usr/bin/env bash
+# SPDX-License-Identifier: MIT OR Apache-2.0
+#
+# The C stage of this repository's CI:
+#
+#   harness/c/ci.sh [CHECKER]     (default: $PHONG_APPROX_BIN, else target/release/phong-approx)
+#
+# 1. Builds methods.c (gouraud, euler, corrected-euler, phong, duff in float and
+#    double, against phong_kit.h) twice — plain, and with fused multiply-adds
+#    (-ffp-contract=fast, with -mfma on x86-64, where GCC fuses only when FMA
+#    instructions are enabled) — with -Wall -Wextra -Werror.
+# 2. Checks that phong_kit reads every input as the vector file's f32 and f64 forms,
+#    bit for bit (methods inputs, compared with SET.json).
+# 3. For f32 and f64, every published set and every method: the plain build under
+#    the reference profile and the default ieee profile, the fused build under ieee
+#    (each method has an ieee bound: proved for gouraud, euler and corrected-euler,
+#    derived for phong and duff); the same for the specular part of the sets that
+#    have one. The fused f32 build must differ from the plain one somewhere.
+# 4. The user's route: run.sh on example_corrected_euler.c must pass, and on a copy
+#    with the first step corrected by ε/(n+1) instead of ε/n (made here, in a
+#    temporary folder) must fail.
+#
+# PHONG_KIT_VECTORS overrides the folder of the vector files, as for run.sh.
+set -euo pipefail
+
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+bin=${1:-${PHONG_APPROX_BIN:-$here/../../target/release/phong-approx}}
+[ -x "$bin" ] || { echo "ci.sh: no checker at $bin (build it: cargo build --release)" >&2; exit 2; }
+bin=$(cd "$(dirname "$bin")" && pwd)/$(basename "$bin")
+vectors=${PHONG_KIT_VECTORS:-$here/../../vectors}
+sets=(typical edge paper)
+methods=(gouraud euler corrected-euler phong duff)
+
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+trap 'exit 129' HUP
+trap 'exit 130' INT
+trap 'exit 143' TERM
+
+warn=(-Wall -Wextra -Werror)
+fused=(-ffp-contract=fast)
+case $(cc -dumpmachine 2>/dev/null || uname -m) in x86_64*|amd64*) fused+=(-mfma) ;; esac
+cc -O2 -std=c99 -ffp-contract=off "${warn[@]}" -o "$tmp/plain" "$here/methods.c" "$here/phong_kit.c" -lm
+cc -O2 -std=c99 "${fused[@]}" "${warn[@]}" -o "$tmp/fused" "$here/methods.c" "$here/phong_kit.c" -lm
+
+# phong_kit's floats and doubles are the vector files' nearest-f32 and nearest-f64
+# forms, bit for bit.
+for set in "${sets[@]}"; do
+  "$tmp/plain" inputs "$vectors/$set-inputs.csv" > "$tmp/inputs.csv"
+  python3 - "$vectors/$set.json" "$tmp/inputs.csv" <<'PY'
+import csv, json, struct, sys
+# A shortest round-trip f32 decimal, to its f32 (through the double, which is far
+# closer to it than half an f32 ulp, so the second rounding cannot move it).
+f32 = lambda s: struct.unpack("f", struct.pack("f", float(s)))[0]
+cases = {c["id"]: c for c in json.load(open(sys.argv[1]))["cases"]}
+seen, bad = set(), 0
+for row in csv.DictReader(open(sys.argv[2])):
+    c = cases[row["case"]]
+    name, axis = row["component"].split("_")
+    v = c["specular"]["h"] if name == "h" else c[name]
+    text = v[row["precision"]]["xyz".index(axis)]
+    want = f32(text) if row["precision"] == "f32" else float(text)
+    got = float.fromhex(row["value"])
+    if got != want or str(got) != str(want):  # str: -0.0 is not 0.0
+        bad += 1
+        print(f"{row['case']} {row['component']} {row['precision']}: {got!r}, want {want!r}")
+    seen.add((row["case"], row["component"], row["precision"]))
+want = sum((12 if "specular" in c else 9) * 2 for c in cases.values())
+if len(seen) != want:
+    bad += 1
+    print(f"{len(seen)} inputs read, the vector file has {want}")
+sys.exit(1 if bad else 0)
+PY
+done
+echo "  phong_kit: every input is the vector files' f32 and f64, bit for bit"
+
+# check BUILD PROFILE PRECISION SET METHOD [--specular]
+check() {
+  local build=$1 profile=$2 precision=$3 set=$4 method=$5 part=${6:-}
+  if ! "$bin" check --vectors "$vectors/$set.json" --results "$tmp/$build.csv" --method "$method" \
+      --precision "$precision" --profile "$profile" ${part:+"$part"} > "$tmp/out" 2>&1; then
+    cat "$tmp/out"
+    echo "$build $precision $set $method ${part:+specular }failed under $profile" >&2
+    exit 1
+  fi
+}
+
+differ=0 differ64=0
+for precision in f32 f64; do
+  for set in "${sets[@]}"; do
+    spec=$(awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == "s") c = i; next }
+                    $c != "" { n++ } END { print n + 0 }' "$vectors/$set-inputs.csv")
+    for m in "${methods[@]}"; do
+      parts=("")
+      if [ "$spec" -gt 0 ]; then parts+=(--specular); fi
+      for part in "${parts[@]}"; do
+        "$tmp/plain" "$m" --precision "$precision" $part "$vectors/$set-inputs.csv" > "$tmp/plain.csv"
+        "$tmp/fused" "$m" --precision "$precision" $part "$vectors/$set-inputs.csv" > "$tmp/fused.csv"
+        check plain reference "$precision" "$set" "$m" $part
+        check plain ieee "$precision" "$set" "$m" $part
+        check fused ieee "$precision" "$set" "$m" $part
+        if ! cmp -s "$tmp/plain.csv" "$tmp/fused.csv"; then
+          if [ "$precision" = f32 ] && [ -z "$part" ]; then differ=$((differ + 1)); fi
+          if [ "$precision" = f64 ] && [ -z "$part" ]; then differ64=$((differ64 + 1)); fi
+        fi
+      done
+      echo "  $precision $set $m: pass${parts[1]:+ (and specular, $spec cases)}"
+    done
+  done
+done
+if [ "$differ" -eq 0 ]; then
+  echo "the fused build gave the same f32 results as the plain one: no FMA was used" >&2
+  exit 1
+fi
+echo "  methods.c: every set and method passes in f32 and f64; the fused build differs on $differ of 15 f32 and $differ64 of 15 f64 set-method pairs"
+
+# The user's route, as the README gives it.
+CFLAGS="${warn[*]}" bash "$here/run.sh" "$here/example_corrected_euler.c" "$bin" --method corrected-euler
+sed 's|t0 = dia - eps / nf;|t0 = dia - eps / (nf + 1);|' "$here/example_corrected_euler.c" > "$tmp/planted.c"
+if cmp -s "$here/example_corrected_euler.c" "$tmp/planted.c"; then
+  echo "ci.sh: could not plant ε/(n+1) in example_corrected_euler.c (its line changed?)" >&2
+  exit 1
+fi
+rc=0
+CFLAGS="${warn[*]}" bash "$here/run.sh" "$tmp/planted.c" "$bin" --method corrected-euler > "$tmp/out" || rc=$?
+if [ "$rc" -ne 1 ] || grep -q ' pass: ' "$tmp/out"; then
+  cat "$tmp/out"
+  echo "ci.sh: run.sh let the planted ε/(n+1) through (exit $rc)" >&2
+  exit 1
+fi
+echo "  run.sh: the planted ε/(n+1) fails every set and build ($(grep -c ' FAIL: ' "$tmp/out") of 6)"
+echo "C harness: every set, method and precision passes; the example passes and its planted bug fails"

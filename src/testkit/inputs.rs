@@ -1,0 +1,169 @@
+//! What the kit gives your function: the published sets, embedded and verified
+//! ([`published`]), and one span's inputs in your float format ([`Inputs`],
+//! [`Format`]).
+
+use crate::conformance::integrity::{published_set, sha256_hex};
+use crate::conformance::vectors::{VectorFile, VectorInput};
+use std::fmt;
+use std::sync::OnceLock;
+
+/// The published sets, embedded: name and JSON text.
+const EMBEDDED: [(&str, &str); 3] = [
+    ("typical", include_str!("../../vectors/typical.json")),
+    ("edge", include_str!("../../vectors/edge.json")),
+    ("paper", include_str!("../../vectors/paper.json")),
+];
+
+/// A published set (`typical`, `edge`, `paper`), parsed once and verified against its
+/// SHA-256 digest; `None` for another name. Its cases carry their inputs in exact
+/// (`case.na.exact`), `f32` and `f64` form, and
+/// [`crate::conformance::integrity::case_span`] makes a case's exact span for
+/// [`super::oracle`] and [`super::acceptance`].
+///
+/// ```
+/// let typical = phong_approx::testkit::published("typical").unwrap();
+/// let c = &typical.cases[0];
+/// assert_eq!(c.na.exact.len(), 3);
+/// let span = phong_approx::conformance::integrity::case_span(c).unwrap();
+/// assert_eq!(span.n, c.n);
+/// ```
+///
+/// # Panics
+/// If the embedded text is not the published set (the crate's own files changed
+/// without their digests: a packaging error, caught by this crate's tests).
+pub fn published(set: &str) -> Option<&'static VectorFile> {
+    static FILES: [OnceLock<VectorFile>; 3] = [OnceLock::new(), OnceLock::new(), OnceLock::new()];
+    let k = EMBEDDED.iter().position(|(name, _)| *name == set)?;
+    Some(FILES[k].get_or_init(|| {
+        let (name, text) = EMBEDDED[k];
+        let digest = sha256_hex(text.as_bytes());
+        assert_eq!(
+            published_set(&digest),
+            Some(name),
+            "the embedded vectors/{name}.json is not the published set (SHA-256 {digest})"
+        );
+        serde_json::from_str(text).expect("the published sets parse")
+    }))
+}
+
+/// The names of the published sets.
+pub const SETS: [&str; 3] = ["typical", "edge", "paper"];
+
+/// One span as your function receives it: the nearest floats of the exact unit inputs
+/// and the number of steps; return `n + 1` values, pixel `0` at `N_a`, pixel `n` at
+/// `N_b`. For [`super::Suite::specular`] the half vector `H` and the shininess `s` too: shade
+/// `max(0, v)^s` with `v` your method's value on `N·H`.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Inputs<'a, T> {
+    /// The case id, e.g. `edge-007` (`span` for [`super::check_span`]).
+    pub id: &'a str,
+    /// Why the case is there.
+    pub comment: &'a str,
+    /// `N_a`.
+    pub na: [T; 3],
+    /// `N_b`.
+    pub nb: [T; 3],
+    /// `L`.
+    pub l: [T; 3],
+    /// Steps `n`.
+    pub n: u32,
+    /// The unit half vector `H` of a specular case.
+    pub h: Option<[T; 3]>,
+    /// The shininess `s` of a specular case.
+    pub s: Option<u32>,
+}
+
+impl<T: Format> Inputs<'static, T> {
+    /// The inputs of an exact span of your own as your function receives them: each
+    /// component of `N_a`, `N_b` and `L` rounded once to the nearest `T` (ties to
+    /// even), as the published sets give theirs. The id is `span`.
+    ///
+    /// ```
+    /// use phong_approx::reference::unit::unit_from_ints;
+    /// use phong_approx::testkit::Inputs;
+    /// use phong_approx::Span;
+    /// let span = Span::new(unit_from_ints(1, 0, 3), unit_from_ints(0, 1, 3), unit_from_ints(0, 0, 1), 4).unwrap();
+    /// let i = Inputs::<f32>::nearest(&span);
+    /// assert_eq!(i.na, [0.6, 0.0, 0.8]); // (2·1, 0, 3² − 1)/(3² + 1), to nearest
+    /// assert_eq!(i.n, 4);
+    /// ```
+    pub fn nearest(span: &crate::Span<crate::BigRational>) -> Inputs<'static, T> {
+        let v = |x: &crate::Vec3<crate::BigRational>| x.components().map(T::nearest);
+        Inputs {
+            id: "span",
+            comment: "",
+            na: v(&span.na),
+            nb: v(&span.nb),
+            l: v(&span.l),
+            n: span.n,
+            h: None,
+            s: None,
+        }
+    }
+}
+
+/// A float format your implementation computes in: `f32` or `f64`.
+pub trait Format: Copy + fmt::Display + fmt::LowerExp + 'static {
+    /// `f32` or `f64`.
+    const NAME: &'static str;
+    /// Its unit roundoff.
+    const U: f64;
+    /// Parses a vector file's input of this format.
+    fn parse(s: &str) -> Option<Self>;
+    /// The vector file's inputs of this format (`VectorInput::f32` or `::f64`).
+    fn inputs(v: &VectorInput) -> &[String; 3];
+    /// The nearest value of this format to an exact rational (ties to even).
+    fn nearest(x: &crate::BigRational) -> Self;
+    /// As `f64` (exactly).
+    fn to_f64(self) -> f64;
+    /// From an `f64` that holds a value of this format (exactly).
+    fn from_f64(x: f64) -> Self;
+    /// The hex form of its bits.
+    fn hex(self) -> String;
+}
+
+impl Format for f32 {
+    const NAME: &'static str = "f32";
+    const U: f64 = 1.0 / 16_777_216.0;
+    fn parse(s: &str) -> Option<Self> {
+        s.trim().parse().ok()
+    }
+    fn inputs(v: &VectorInput) -> &[String; 3] {
+        &v.f32
+    }
+    fn nearest(x: &crate::BigRational) -> Self {
+        <f32 as crate::Scalar>::from_rational(x)
+    }
+    fn to_f64(self) -> f64 {
+        f64::from(self)
+    }
+    fn from_f64(x: f64) -> Self {
+        x as f32
+    }
+    fn hex(self) -> String {
+        format!("0x{:08x}", self.to_bits())
+    }
+}
+
+impl Format for f64 {
+    const NAME: &'static str = "f64";
+    const U: f64 = f64::EPSILON / 2.0;
+    fn parse(s: &str) -> Option<Self> {
+        s.trim().parse().ok()
+    }
+    fn inputs(v: &VectorInput) -> &[String; 3] {
+        &v.f64
+    }
+    fn nearest(x: &crate::BigRational) -> Self {
+        <f64 as crate::Scalar>::from_rational(x)
+    }
+    fn to_f64(self) -> f64 {
+        self
+    }
+    fn from_f64(x: f64) -> Self {
+        x
+    }
+    fn hex(self) -> String {
+        format!("0x{:016x}", self.to_bits())
+    }
+}

@@ -1,0 +1,273 @@
+//! [`Suite`]: the published vectors for one method, run through your function and
+//! judged as `check` judges them.
+
+use super::inputs::{published, Format, Inputs, SETS};
+use super::report::{self, case_inputs, Failure, Report};
+use crate::conformance::check::{check_in, Results, Tolerance};
+use crate::conformance::vectors::{method_key, Case, VectorFile};
+use crate::tolerance::profile::Profile;
+use crate::Method;
+
+/// The published vectors for one method, judged by one profile or tolerance.
+#[derive(Clone, Debug)]
+pub struct Suite {
+    sets: Vec<&'static str>,
+    method: Method,
+    profile: Profile,
+    tolerance: Option<Tolerance>,
+    specular: bool,
+    /// One case only ([`Suite::case`]).
+    case: Option<String>,
+    /// A set asked for by a name that is not published (reported as a failure).
+    unknown_set: Option<String>,
+}
+
+impl Suite {
+    /// Every published set (`typical`, `edge`, `paper`), for corrected Euler under the
+    /// `ieee` profile (what outside code is: any order, FMA, reciprocals) until
+    /// [`Suite::method`] and [`Suite::profile`] say otherwise.
+    pub fn published() -> Suite {
+        Suite {
+            sets: SETS.to_vec(),
+            method: Method::CorrectedEuler,
+            profile: Profile::Ieee,
+            tolerance: None,
+            specular: false,
+            case: None,
+            unknown_set: None,
+        }
+    }
+
+    /// One published set only (`typical`, `edge` or `paper`); any other name gives a
+    /// suite whose report fails, naming it (no panic: the test that asked sees why).
+    pub fn set(set: &str) -> Suite {
+        match SETS.iter().position(|s| *s == set) {
+            Some(k) => Suite {
+                sets: vec![SETS[k]],
+                ..Suite::published()
+            },
+            None => Suite {
+                sets: Vec::new(),
+                unknown_set: Some(crate::error::shown(set)),
+                ..Suite::published()
+            },
+        }
+    }
+
+    /// One case only, by id (`edge-003`), to rerun the one a report names; an id no
+    /// chosen set holds gives a report that fails, naming it.
+    ///
+    /// ```
+    /// use phong_approx::testkit::Suite;
+    /// let r = Suite::published().case("paper-001").check_f64(|s| vec![0.0; s.n as usize + 1]);
+    /// assert_eq!(r.cases(), 1);
+    /// assert_eq!(r.worst().unwrap().case, "paper-001");
+    /// ```
+    pub fn case(mut self, id: &str) -> Suite {
+        self.case = Some(id.to_string());
+        self
+    }
+
+    /// The method your function implements.
+    pub fn method(mut self, method: Method) -> Suite {
+        self.method = method;
+        self
+    }
+
+    /// The arithmetic profile your implementation belongs to (`docs/float.md` §18):
+    /// its bounds judge the results.
+    pub fn profile(mut self, profile: Profile) -> Suite {
+        self.profile = profile;
+        self
+    }
+
+    /// A tolerance of your own instead of the profile's bound (`levels`, `abs`,
+    /// `ulps`).
+    pub fn tolerance(mut self, tolerance: Tolerance) -> Suite {
+        self.tolerance = Some(tolerance);
+        self
+    }
+
+    /// The specular cases instead of the diffuse ones: each case with a specular part
+    /// gives your function the half vector [`Inputs::h`] and shininess [`Inputs::s`],
+    /// and takes back `max(0, v_i)^s` with `v_i` your method's values on `N·H` (the
+    /// same as `phong-approx check --specular`). Judged by the `ieee` and `reference`
+    /// bounds raised to the power (`docs/float.md` §18.6) or a tolerance; the `shader`
+    /// and fixed-point profiles do not model the power, and their reports say so.
+    ///
+    /// ```
+    /// use phong_approx::testkit::Suite;
+    /// use phong_approx::Method;
+    /// // Gouraud's specular in f64: interpolate N·H, then raise it.
+    /// let r = Suite::published().method(Method::Gouraud).specular().check_f64(|s| {
+    ///     let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    ///     let h = s.h.unwrap();
+    ///     let (pa, pb) = (dot(s.na, h), dot(s.nb, h));
+    ///     (0..=s.n)
+    ///         .map(|i| (pa + (pb - pa) * f64::from(i) / f64::from(s.n)).max(0.0).powi(s.s.unwrap() as i32))
+    ///         .collect()
+    /// });
+    /// assert!(r.is_ok(), "{r}");
+    /// assert!(r.cases() > 0);
+    /// ```
+    pub fn specular(mut self) -> Suite {
+        self.specular = true;
+        self
+    }
+
+    /// Runs `shade` on every case in `f32` and judges the values.
+    pub fn check_f32<F: FnMut(&Inputs<f32>) -> Vec<f32>>(&self, shade: F) -> Report {
+        self.run(shade)
+    }
+
+    /// Runs `shade` on every case in `f64` and judges the values.
+    pub fn check_f64<F: FnMut(&Inputs<f64>) -> Vec<f64>>(&self, shade: F) -> Report {
+        self.run(shade)
+    }
+
+    /// Runs `shade`, an implementation that outputs 8-bit levels (fixed point, a
+    /// hardware span unit), on every case with `f64` inputs (convert them to your
+    /// format), and compares its levels with the exact levels: within
+    /// [`Suite::tolerance`]`(Tolerance::Levels(k))`, one level if not set (no profile
+    /// bounds 8-bit outputs yet; `docs/float.md` §14 derives the fractional bits that
+    /// keep corrected Euler within half a level).
+    pub fn check_levels<F: FnMut(&Inputs<f64>) -> Vec<u8>>(&self, mut shade: F) -> Report {
+        let mut suite = self.clone();
+        if !matches!(suite.tolerance, Some(Tolerance::Levels(_))) {
+            suite.tolerance = Some(Tolerance::Levels(1));
+        }
+        // Each level ℓ as the middle of its interval, (ℓ + ½)/255, whose level is ℓ.
+        let mut r = suite.run::<f64, _>(|s| {
+            shade(s)
+                .into_iter()
+                .map(|l| (f64::from(l) + 0.5) / 255.0)
+                .collect()
+        });
+        r.format = "8-bit levels";
+        r
+    }
+
+    /// What judges the results, in words.
+    fn judged_by(&self) -> String {
+        match self.tolerance {
+            Some(t) => format!("tolerance {t}"),
+            None => format!("the {} profile's bound", self.profile),
+        }
+    }
+
+    fn run<T: Format, F: FnMut(&Inputs<T>) -> Vec<T>>(&self, mut shade: F) -> Report {
+        let judged_by = self.judged_by();
+        let tol = self.tolerance.unwrap_or(Tolerance::Profile {
+            profile: self.profile,
+            u: T::U,
+        });
+        let mut report = Report::new(self.method, judged_by.clone(), T::NAME);
+        if let Some(name) = &self.unknown_set {
+            report.add_failure(Failure::of_suite(
+                "?",
+                format!("(set '{name}')"),
+                &judged_by,
+                format!("no published set '{name}' (there are {})", SETS.join(", ")),
+            ));
+        }
+        let mut found = false;
+        for set in &self.sets {
+            let Some(file) = published(set) else {
+                continue;
+            };
+            let chosen;
+            let file = match &self.case {
+                None => file,
+                Some(id) => {
+                    let cases: Vec<Case> =
+                        file.cases.iter().filter(|c| &c.id == id).cloned().collect();
+                    if cases.is_empty() {
+                        continue;
+                    }
+                    chosen = crate::conformance::vectors::file_of(&file.set, cases);
+                    &chosen
+                }
+            };
+            found = true;
+            judge(
+                &mut report,
+                set,
+                file,
+                self.method,
+                tol,
+                self.specular,
+                &mut shade,
+            );
+        }
+        if let (Some(id), false) = (&self.case, found) {
+            report.add_failure(Failure::of_suite(
+                "?",
+                format!("(case '{}')", crate::error::shown(id)),
+                &judged_by,
+                format!(
+                    "no case '{}' in the chosen sets ({})",
+                    crate::error::shown(id),
+                    self.sets.join(", ")
+                ),
+            ));
+        }
+        report
+    }
+}
+
+/// Runs `shade` on every case of `file` (the specular ones for `specular`), judges the
+/// values as `check` does, and adds the set to `report`.
+pub(crate) fn judge<T: Format>(
+    report: &mut Report,
+    set: &'static str,
+    file: &VectorFile,
+    method: Method,
+    tol: Tolerance,
+    specular: bool,
+    shade: &mut dyn FnMut(&Inputs<T>) -> Vec<T>,
+) {
+    let key = method_key(method);
+    let mut results = Results::new();
+    for c in file
+        .cases
+        .iter()
+        .filter(|c| !specular || c.specular.is_some())
+    {
+        let got: Vec<f64> = shade(&case_inputs::<T>(c))
+            .into_iter()
+            .map(T::to_f64)
+            .collect();
+        results.insert(c.id.clone(), got);
+    }
+    let judged_by = report.judged_by.clone();
+    let reports = match check_in(file, &results, method, &key, tol, specular, T::U) {
+        Ok(r) => r,
+        // A method the published sets do not hold (a cosine table of another size), or
+        // a tolerance that means nothing: a failure, not a panic.
+        Err(e) => {
+            report.add_failure(Failure::of_suite(
+                set,
+                format!("(the {set} set)"),
+                &judged_by,
+                e,
+            ));
+            return;
+        }
+    };
+    let j = report::Judged {
+        set,
+        key: &key,
+        profile: &judged_by,
+        specular,
+        u: T::U,
+    };
+    let failures = reports
+        .iter()
+        .filter(|r| !r.pass)
+        .filter_map(|r| {
+            let c = file.cases.iter().find(|c| c.id == r.id)?;
+            Some(Failure::new::<T>(&j, c, r, &results[&c.id]))
+        })
+        .collect();
+    report.add_set(set, &reports, failures);
+}

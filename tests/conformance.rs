@@ -371,7 +371,8 @@ fn check_cli_passes_own_results_and_fails_a_perturbed_one() {
         out.contains("| typical-007 |") && out.contains("FAIL"),
         "{out}"
     );
-    assert!(out.contains("worst case typical-007 (pixel 3)"), "{out}");
+    assert!(out.contains("worst case typical-007 (pixel 3, "), "{out}");
+    assert!(err.contains("worst: typical-007 (pixel 3: "), "{err}");
     // A levels tolerance of 2 lets it through; 1 does not.
     assert_eq!(
         run_check(&typical_path(), &p, &["--tolerance", "levels=2"]).0,
@@ -435,7 +436,7 @@ fn malformed_results_get_one_line_naming_file_line_and_problem() {
         let (code, out, err) = run_check(&typical_path(), &p, &[]);
         assert_eq!(code, 1, "{bad}: {out}{err}");
         assert!(
-            err.contains("first: typical-001 (pixel 2 is not finite)"),
+            err.contains("worst: typical-001 (pixel 2 is not finite)"),
             "{bad}: {err}"
         );
         assert!(out.contains("not finite at pixel 2"), "{out}");
@@ -704,6 +705,44 @@ fn check_reports_for_other_ci_systems() {
         msg.contains(", got ") && msg.contains(", allowed "),
         "{msg}"
     );
+    // The failure's text carries the inputs (exact and as the f32 judged) and the
+    // command that reproduces the case; every case has its time.
+    let body = failed[0]
+        .children()
+        .find(|f| f.has_tag_name("failure"))
+        .unwrap()
+        .text()
+        .unwrap();
+    let c7 = file.cases.iter().find(|c| c.id == "typical-007").unwrap();
+    assert!(
+        body.contains(&format!(
+            "inputs (f32): n = {}; N_a = ({}) = ({})",
+            c7.n,
+            c7.na.exact.join(", "),
+            c7.na.f32.join(", ")
+        )),
+        "{body}"
+    );
+    assert!(
+        body.contains(&format!(
+            "reproduce: phong-approx span --method corrected-euler --na={} ",
+            c7.na.exact.join(",")
+        )),
+        "{body}"
+    );
+    for c in &cases {
+        let t: f64 = c.attribute("time").unwrap().parse().unwrap();
+        assert!((0.0..60.0).contains(&t), "{t}");
+    }
+    let suite_time: f64 = doc
+        .descendants()
+        .find(|n| n.has_tag_name("testsuite"))
+        .unwrap()
+        .attribute("time")
+        .unwrap()
+        .parse()
+        .unwrap();
+    assert!(suite_time > 0.0, "{suite_time}");
     // JSON, beside it.
     let json_path = dir.join("check.json");
     let (code, _, _) = run_check(
@@ -724,6 +763,11 @@ fn check_reports_for_other_ci_systems() {
         .unwrap();
     assert_eq!(c["pass"], false);
     assert_eq!(c["worst_pixel"], 3);
+    assert!(c["ratio"].as_f64().unwrap() > 1.0, "{c}");
+    assert!(c["reproduce"]
+        .as_str()
+        .unwrap()
+        .starts_with("phong-approx span --method corrected-euler "));
     // The report is the tool's own output: a report left by an earlier run (a CI
     // run's, in a fresh checkout the folder's list does not name it) is replaced, and
     // the verdict's exit code stands.

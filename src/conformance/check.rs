@@ -802,6 +802,8 @@ pub struct CaseReport {
     /// The first pixel whose result is NaN or infinite (it fails, whatever the
     /// tolerance), if any.
     pub not_finite: Option<usize>,
+    /// The time the verdict on this case took (seconds; the JUnit report's `time`).
+    pub seconds: f64,
 }
 
 /// Compares `results` with the vector file's expectations for `method`, counting ulps
@@ -850,13 +852,16 @@ pub fn check_in(
         }
         .ok_or_else(|| format!("the vector file has no method '{method_key}'"))?;
         let got = &results[&c.id];
-        if method == Method::Adaptive && !specular {
-            if let Some(r) = adaptive_either(c, got, tol, u) {
-                reports.push(r);
-                continue;
-            }
-        }
-        reports.push(case_report(c, exp, got, method, tol, specular, u));
+        let start = std::time::Instant::now();
+        let mut r = match (method == Method::Adaptive && !specular)
+            .then(|| adaptive_either(c, got, tol, u))
+            .flatten()
+        {
+            Some(r) => r,
+            None => case_report(c, exp, got, method, tol, specular, u),
+        };
+        r.seconds = start.elapsed().as_secs_f64();
+        reports.push(r);
     }
     Ok(reports)
 }
@@ -1133,5 +1138,6 @@ fn case_report(
         allowed,
         pass,
         not_finite,
+        seconds: 0.0,
     }
 }

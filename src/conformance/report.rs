@@ -12,6 +12,10 @@ use super::vectors::VectorFile;
 struct Row<'a> {
     r: &'a CaseReport,
     comment: String,
+    /// The case's inputs: exact, and the nearest floats of the format judged.
+    inputs: String,
+    /// The `phong-approx span` command that reproduces the case.
+    command: String,
     expected: Option<String>,
     got: Option<f64>,
 }
@@ -34,9 +38,40 @@ fn rows<'a>(
                     c.expected.get(key)
                 }
             });
+            // Each piece of text from the file is shown (cut and escaped) on its own;
+            // the vector file was validated, so its numbers are short.
+            let inputs = case.map_or(String::new(), |c| {
+                let list =
+                    |v: &[String; 3]| v.iter().map(|x| shown(x)).collect::<Vec<_>>().join(", ");
+                let floats = |v: &super::vectors::VectorInput| {
+                    list(if r.format == "f64" { &v.f64 } else { &v.f32 })
+                };
+                let mut t = format!(
+                    "n = {}; N_a = ({}) = ({}); N_b = ({}) = ({}); L = ({}) = ({})",
+                    c.n,
+                    list(&c.na.exact),
+                    floats(&c.na),
+                    list(&c.nb.exact),
+                    floats(&c.nb),
+                    list(&c.l.exact),
+                    floats(&c.l),
+                );
+                if let (Some(sp), true) = (&c.specular, specular) {
+                    t += &format!(
+                        "; H = ({}) = ({}); s = {}",
+                        list(&sp.h.exact),
+                        floats(&sp.h),
+                        sp.s
+                    );
+                }
+                t
+            });
+            let command = case.map_or(String::new(), |c| c.reproduce_shown(key, specular, shown));
             Row {
                 r,
                 comment: case.map_or(String::new(), |c| shown(&c.comment)),
+                inputs,
+                command,
                 expected: exp
                     .and_then(|e| e.values.get(r.worst_pixel))
                     .map(|v| shown(v)),
@@ -115,16 +150,18 @@ pub fn junit(
         "<testsuites name=\"phong-approx check\" tests=\"{}\" failures=\"{failures}\">\n",
         rows.len()
     );
+    let total: f64 = rows.iter().map(|r| r.r.seconds).sum();
     s += &format!(
-        "  <testsuite name=\"{}\" tests=\"{}\" failures=\"{failures}\" errors=\"0\" skipped=\"0\">\n",
+        "  <testsuite name=\"{}\" tests=\"{}\" failures=\"{failures}\" errors=\"0\" skipped=\"0\" time=\"{total:.6}\">\n",
         xml(&shown(suite)),
         rows.len()
     );
     for row in &rows {
         s += &format!(
-            "    <testcase classname=\"{}\" name=\"{}\" time=\"0\"",
+            "    <testcase classname=\"{}\" name=\"{}\" time=\"{:.6}\"",
             xml(&format!("{}.{}", shown(&vectors.set), key)),
-            xml(&shown(&row.r.id))
+            xml(&shown(&row.r.id)),
+            row.r.seconds
         );
         if row.r.pass {
             s += "/>\n";
@@ -132,7 +169,17 @@ pub fn junit(
             s += &format!(
                 ">\n      <failure message=\"{}\" type=\"out of tolerance\">{}</failure>\n    </testcase>\n",
                 xml(&why(row)),
-                xml(&format!("{}: {} pixels, max Δlevel {}", row.comment, row.r.pixels, row.r.max_levels))
+                xml(&format!(
+                    "{}\n{} pixels, max Δlevel {}, worst pixel {}: {} × allowed\ninputs ({}): {}\nreproduce: {}",
+                    row.comment,
+                    row.r.pixels,
+                    row.r.max_levels,
+                    row.r.worst_pixel,
+                    if row.r.ratio.is_finite() { format!("{:.3}", row.r.ratio) } else { "∞".into() },
+                    row.r.format,
+                    row.inputs,
+                    row.command
+                ))
             );
         }
     }
@@ -171,6 +218,11 @@ pub fn json(
                 "max_abs": if row.r.not_finite.is_some() { serde_json::Value::Null } else { num(row.r.max_abs) },
                 "max_levels": row.r.max_levels,
                 "allowed": row.r.allowed,
+                "allowed_abs": row.r.allowed_abs.map(num),
+                "ratio": num(row.r.ratio),
+                "seconds": row.r.seconds,
+                "inputs": row.inputs,
+                "reproduce": row.command,
             })
         })
         .collect();

@@ -109,6 +109,36 @@ pub struct Case {
     pub specular: Option<SpecularCase>,
 }
 
+impl Case {
+    /// The `phong-approx span` command that computes this case's exact values for the
+    /// method `key` (for the specular part, the values on `N·H` with `H` as the light:
+    /// then raise them to `s`, as the command's tail says).
+    pub fn reproduce(&self, key: &str, specular: bool) -> String {
+        self.reproduce_shown(key, specular, |x| x.to_string())
+    }
+
+    /// [`Case::reproduce`] with each number of the file passed through `show` (a
+    /// report of an untrusted file cuts and escapes them).
+    pub fn reproduce_shown(
+        &self,
+        key: &str,
+        specular: bool,
+        show: impl Fn(&str) -> String,
+    ) -> String {
+        let q = |v: &[String; 3]| v.iter().map(|x| show(x)).collect::<Vec<_>>().join(",");
+        let (light, then) = match (&self.specular, specular) {
+            (Some(sp), true) => (q(&sp.h.exact), format!(" (then max(0, v)^{})", sp.s)),
+            _ => (q(&self.l.exact), String::new()),
+        };
+        format!(
+            "phong-approx span --method {key} --na={} --nb={} --light={light} --steps {} --scalar exact{then}",
+            q(&self.na.exact),
+            q(&self.nb.exact),
+            self.n
+        )
+    }
+}
+
 /// A vector file.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[cfg_attr(feature = "schema", derive(schemars::JsonSchema))]

@@ -245,6 +245,7 @@ pub fn text(vectors: &VectorFile, reports: &[CaseReport], key: &str, specular: b
                 abs,
                 ulps,
                 r.allowed.clone(),
+                times_allowed(r.ratio),
                 (if r.pass { "pass" } else { "FAIL" }).to_string(),
             ]
         })
@@ -261,9 +262,10 @@ pub fn text(vectors: &VectorFile, reports: &[CaseReport], key: &str, specular: b
             "max |Δ|",
             &ulps_head,
             "allowed",
+            "× allowed",
             "verdict",
         ],
-        &[l, r, r, r, r, r, r, l],
+        &[l, r, r, r, r, r, r, r, l],
         &rows,
     );
     let px: usize = reports.iter().map(|r| r.pixels).sum();
@@ -275,22 +277,16 @@ pub fn text(vectors: &VectorFile, reports: &[CaseReport], key: &str, specular: b
     let max_l = reports.iter().map(|r| r.max_levels).max().unwrap_or(0);
     let max_a = reports.iter().map(|r| r.max_abs).fold(0.0, f64::max);
     let max_u = reports.iter().map(|r| r.max_ulps).fold(0.0, f64::max);
-    s += &format!("\noverall: {px} pixels, max Δlevel {max_l}, mean Δlevel {mean:.4}, max |Δ| {max_a:.3e}, max {max_u:.1} {format} ulps\n");
-    let worst = reports
-        .iter()
-        .filter(|r| !r.pass)
-        .chain(reports.iter())
-        .max_by(|a, b| {
-            (a.not_finite.is_some(), a.max_abs)
-                .partial_cmp(&(b.not_finite.is_some(), b.max_abs))
-                .unwrap_or(std::cmp::Ordering::Equal)
-        });
-    if let Some(w) = worst {
+    let margin = reports.iter().map(|r| r.ratio).fold(0.0, f64::max);
+    s += &format!("\noverall: {px} pixels, max Δlevel {max_l}, mean Δlevel {mean:.4}, max |Δ| {max_a:.3e}, max {max_u:.1} {format} ulps, largest use of the allowance {}\n", times_allowed(margin));
+    if let Some(w) = worst(reports) {
         if let Some(c) = vectors.cases.iter().find(|c| c.id == w.id) {
             s += &format!(
-                "worst case {} (pixel {}): {}; Na = ({}), Nb = ({}), L = ({}), n = {}\n",
+                "worst case {} (pixel {}, {} allowed, {} levels off): {}; Na = ({}), Nb = ({}), L = ({}), n = {}\n",
                 shown(&w.id),
                 w.worst_pixel,
+                times_allowed(w.ratio),
+                w.max_levels,
                 shown(&c.comment),
                 shown(&c.na.exact.join(", ")),
                 shown(&c.nb.exact.join(", ")),
@@ -302,20 +298,58 @@ pub fn text(vectors: &VectorFile, reports: &[CaseReport], key: &str, specular: b
     s
 }
 
+/// The case that did most harm: the failing case most over its allowance (then the
+/// most levels off), or where every case passes the one that used most of it.
+pub fn worst(reports: &[CaseReport]) -> Option<&CaseReport> {
+    let harm = |a: &&CaseReport, b: &&CaseReport| {
+        a.ratio
+            .total_cmp(&b.ratio)
+            .then(a.max_levels.cmp(&b.max_levels))
+            .then(a.max_abs.total_cmp(&b.max_abs))
+    };
+    reports
+        .iter()
+        .filter(|r| !r.pass)
+        .max_by(harm)
+        .or_else(|| reports.iter().max_by(harm))
+}
+
+/// `12.3 ×`, `0.412 ×`, `∞ ×`: a ratio to the allowance.
+fn times_allowed(r: f64) -> String {
+    if r.is_infinite() {
+        "∞ ×".into()
+    } else if r >= 1e4 {
+        format!("{r:.2e} ×")
+    } else if r >= 10.0 {
+        format!("{r:.1} ×")
+    } else {
+        format!("{r:.3} ×")
+    }
+}
+
 /// The one-line message of a failed check: how many cases are out of tolerance and the
-/// first of them (with its first non-finite pixel, if any); `None` when every case
-/// passes.
+/// worst of them ([`worst`]: how far over its allowance, or its first non-finite
+/// pixel); `None` when every case passes.
 pub fn failure(reports: &[CaseReport]) -> Option<String> {
-    let failed: Vec<&CaseReport> = reports.iter().filter(|r| !r.pass).collect();
-    let first = failed.first()?;
+    let failed = reports.iter().filter(|r| !r.pass).count();
+    if failed == 0 {
+        return None;
+    }
+    let w = worst(reports)?;
     Some(format!(
-        "{} of {} cases out of tolerance, first: {}{}",
-        failed.len(),
+        "{} of {} cases out of tolerance, worst: {}{}",
+        failed,
         reports.len(),
-        shown(&first.id),
-        first
-            .not_finite
-            .map_or(String::new(), |p| format!(" (pixel {p} is not finite)"))
+        shown(&w.id),
+        match w.not_finite {
+            Some(p) => format!(" (pixel {p} is not finite)"),
+            None => format!(
+                " (pixel {}: {} allowed, {} levels off)",
+                w.worst_pixel,
+                times_allowed(w.ratio),
+                w.max_levels
+            ),
+        }
     ))
 }
 

@@ -92,21 +92,6 @@ pub(crate) fn case_inputs<'a, T: Format>(c: &'a Case) -> Inputs<'a, T> {
     }
 }
 
-/// The `phong-approx span` command that computes case `c`'s exact values (for a
-/// specular case the values on `N·H`, with `H` as the light: raise them to `s`).
-pub(crate) fn command(key: &str, c: &Case, specular: bool) -> String {
-    let (light, then) = match (&c.specular, specular) {
-        (Some(sp), true) => (sp.h.exact.join(","), format!(" (then max(0, v)^{})", sp.s)),
-        _ => (c.l.exact.join(","), String::new()),
-    };
-    format!(
-        "phong-approx span --method {key} --na={} --nb={} --light={light} --steps {} --scalar exact{then}",
-        c.na.exact.join(","),
-        c.nb.exact.join(","),
-        c.n
-    )
-}
-
 fn shown_inputs<T: Format>(what: &str, exact: &[String; 3], v: [T; 3]) -> String {
     let parts: Vec<String> = v
         .iter()
@@ -191,7 +176,7 @@ impl Failure {
             levels: None,
             profile: j.profile.to_string(),
             allowed_text: r.allowed.clone(),
-            command: Some(command(j.key, c, j.specular)),
+            command: Some(c.reproduce(j.key, j.specular)),
             lines: Vec::new(),
         };
         match exp {

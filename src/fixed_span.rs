@@ -11,7 +11,7 @@
 //! [`bits_for_half_level`] answers the hardware implementer's question, and
 //! `docs/float.md` ("Low precision") tabulates it. Tested: `tests/lowp.rs`.
 //!
-//! (The crate's generic run on [`crate::lowp::I16F16`] computes the set-up in the
+//! (The crate's generic run on `lowp::I16F16` (feature `lowp`) computes the set-up in the
 //! format too, which costs far more than the loop: see `docs/float.md`.)
 
 use crate::error::SpanError;

@@ -23,7 +23,7 @@
 //!
 //! The methods of the paper's related work — Bishop & Weimer, Seiler, Kuijk & Blake,
 //! Mortensen's vertex angles, Ouyang & Maynard — are in [`related`]; low-precision
-//! scalars (binary16, 16.16 and 8.8 fixed point) in [`lowp`]; the comparison of all of
+//! scalars (binary16, 16.16 and 8.8 fixed point) in `lowp` (feature `lowp`); the comparison of all of
 //! them on the torus harness in `raster::compare` and `raster::precision`
 //! (`phong-approx compare`, `docs/comparison.md`).
 //!

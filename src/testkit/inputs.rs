@@ -79,9 +79,7 @@ impl<T: Format> Inputs<'static, T> {
     /// even), as the published sets give theirs. The id is `span`.
     ///
     /// ```
-    /// use phong_approx::reference::unit::unit_from_ints;
-    /// use phong_approx::testkit::Inputs;
-    /// use phong_approx::Span;
+    /// use phong_approx::testkit::prelude::*;
     /// let span = Span::new(unit_from_ints(1, 0, 3), unit_from_ints(0, 1, 3), unit_from_ints(0, 0, 1), 4).unwrap();
     /// let i = Inputs::<f32>::nearest(&span);
     /// assert_eq!(i.na, [0.6, 0.0, 0.8]); // (2·1, 0, 3² − 1)/(3² + 1), to nearest

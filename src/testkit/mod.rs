@@ -66,13 +66,43 @@ pub use span::{acceptance, check_span, oracle, KitError, Oracle, MAX_STEPS};
 pub use suite::Suite;
 
 /// Everything a test of your own needs, in one import:
-/// `use phong_approx::testkit::prelude::*;`.
+/// `use phong_approx::testkit::prelude::*;` — the suite of published vectors, the
+/// verdict on a span of your own, the oracle and the intervals, and what makes an
+/// exact span (`Span`, `unit_from_ints`).
 pub mod prelude {
     #[cfg(feature = "proptest")]
     pub use super::strategy;
+    #[cfg(feature = "quickcheck")]
+    pub use super::ArbSpan;
     pub use super::{
-        acceptance, check_span, oracle, Failure, Inputs, Method, Profile, Report, Suite, Tolerance,
+        acceptance, check_span, command, oracle, Failure, Inputs, KitError, Method, Profile,
+        Report, Suite, Tolerance,
     };
+    pub use crate::reference::unit::unit_from_ints;
+    pub use crate::Span;
+}
+
+/// The `phong-approx span` command that prints `method`'s exact values on `span` (its
+/// exact fractions), for a test's failure message.
+///
+/// ```
+/// use phong_approx::testkit::prelude::*;
+/// let span = Span::new(unit_from_ints(0, 0, 1), unit_from_ints(1, 0, 3), unit_from_ints(0, 0, 1), 4).unwrap();
+/// assert_eq!(
+///     command(Method::Gouraud, &span),
+///     "phong-approx span --method gouraud --na=0,0,1 --nb=3/5,0,4/5 --light=0,0,1 --steps 4 --scalar exact"
+/// );
+/// ```
+pub fn command(method: Method, span: &crate::Span<crate::BigRational>) -> String {
+    let v = |v: &crate::Vec3<crate::BigRational>| v.components().map(|x| x.to_string()).join(",");
+    format!(
+        "phong-approx span --method {} --na={} --nb={} --light={} --steps {} --scalar exact",
+        crate::conformance::vectors::method_key(method),
+        v(&span.na),
+        v(&span.nb),
+        v(&span.l),
+        span.n
+    )
 }
 
 /// A random span for `quickcheck` (feature `quickcheck`): a mesh-like span of 1 to
@@ -80,8 +110,7 @@ pub mod prelude {
 ///
 /// ```
 /// # #[cfg(feature = "quickcheck")] {
-/// use phong_approx::testkit::{oracle, ArbSpan};
-/// use phong_approx::Method;
+/// use phong_approx::testkit::prelude::*;
 /// fn ends_exact(s: ArbSpan) -> bool {
 ///     let o = oracle(Method::CorrectedEuler, &s.0).unwrap();
 ///     o.values[0] == s.0.p_a && o.values[s.0.n as usize] == s.0.p_b

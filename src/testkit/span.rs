@@ -40,9 +40,7 @@ pub const MAX_STEPS: u32 = 1 << 14;
 /// that reproduces the span. The helper a property test calls:
 ///
 /// ```
-/// use phong_approx::reference::unit::unit_from_ints;
 /// use phong_approx::testkit::prelude::*;
-/// use phong_approx::Span;
 /// let span = Span::new(unit_from_ints(0, 0, 1), unit_from_ints(1, 0, 3), unit_from_ints(0, 0, 1), 4).unwrap();
 /// // Gouraud in f32, as written by hand.
 /// let gouraud = |s: &Inputs<f32>| {
@@ -112,9 +110,7 @@ pub struct Oracle {
 /// the hundreds in property tests.
 ///
 /// ```
-/// use phong_approx::reference::unit::unit_from_ints;
-/// use phong_approx::testkit::oracle;
-/// use phong_approx::{Method, Span};
+/// use phong_approx::testkit::prelude::*;
 /// let span = Span::new(unit_from_ints(0, 0, 1), unit_from_ints(1, 0, 3), unit_from_ints(0, 0, 1), 4).unwrap();
 /// let o = oracle(Method::Gouraud, &span).unwrap();
 /// assert_eq!(o.decimals[0], "1.00000000000000000000000000000");
@@ -147,10 +143,7 @@ pub fn oracle(
 /// `check` then fails the case.
 ///
 /// ```
-/// use phong_approx::reference::unit::unit_from_ints;
-/// use phong_approx::testkit::acceptance;
-/// use phong_approx::tolerance::profile::Profile;
-/// use phong_approx::{Method, Span};
+/// use phong_approx::testkit::prelude::*;
 /// let span = Span::new(unit_from_ints(0, 0, 1), unit_from_ints(1, 0, 3), unit_from_ints(0, 0, 1), 4).unwrap();
 /// let iv = acceptance::<f32>(Method::CorrectedEuler, &span, Profile::Ieee).unwrap();
 /// let mine = 0.8f32; // pixel 4 of some implementation

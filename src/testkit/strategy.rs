@@ -4,9 +4,7 @@
 //!
 //! ```
 //! # #[cfg(feature = "proptest")] {
-//! use phong_approx::testkit::{acceptance, strategy};
-//! use phong_approx::tolerance::profile::Profile;
-//! use phong_approx::Method;
+//! use phong_approx::testkit::prelude::*;
 //! use proptest::prelude::*;
 //! proptest!(ProptestConfig::with_cases(16), |(span in strategy::mesh_span(1..=16))| {
 //!     let iv = acceptance::<f32>(Method::Gouraud, &span, Profile::Ieee).unwrap();

@@ -58,7 +58,7 @@ impl Suite {
     /// chosen set holds gives a report that fails, naming it.
     ///
     /// ```
-    /// use phong_approx::testkit::Suite;
+    /// use phong_approx::testkit::prelude::*;
     /// let r = Suite::published().case("paper-001").check_f64(|s| vec![0.0; s.n as usize + 1]);
     /// assert_eq!(r.cases(), 1);
     /// assert_eq!(r.worst().unwrap().case, "paper-001");
@@ -96,8 +96,7 @@ impl Suite {
     /// and fixed-point profiles do not model the power, and their reports say so.
     ///
     /// ```
-    /// use phong_approx::testkit::Suite;
-    /// use phong_approx::Method;
+    /// use phong_approx::testkit::prelude::*;
     /// // Gouraud's specular in f64: interpolate N·H, then raise it.
     /// let r = Suite::published().method(Method::Gouraud).specular().check_f64(|s| {
     ///     let dot = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];

@@ -314,8 +314,8 @@ pub fn worst(reports: &[CaseReport]) -> Option<&CaseReport> {
         .or_else(|| reports.iter().max_by(harm))
 }
 
-/// `12.3 ×`, `0.412 ×`, `∞ ×`: a ratio to the allowance.
-fn times_allowed(r: f64) -> String {
+/// `12.3 ×`, `0.412 ×`, `∞ ×`: a ratio to the allowance, as the reports print it.
+pub fn times_allowed(r: f64) -> String {
     if r.is_infinite() {
         "∞ ×".into()
     } else if r >= 1e4 {

@@ -5,6 +5,7 @@
 use super::inputs::{Format, Inputs};
 use crate::conformance::check::CaseReport;
 use crate::conformance::vectors::{Case, VectorInput};
+use crate::conformance::verdict::times_allowed;
 use crate::quantize::level;
 use crate::Method;
 use std::fmt;
@@ -241,22 +242,9 @@ impl Failure {
 /// anything.
 fn times(ratio: f64) -> String {
     if ratio.is_finite() {
-        format!(" (the worst pixel is off by {} this)", ratio_text(ratio))
+        format!(" (the worst pixel is off by {} this)", times_allowed(ratio))
     } else {
         String::new()
-    }
-}
-
-/// A ratio to the allowance, in words: `12.3 ×`, `0.42 ×`, `∞ ×`.
-fn ratio_text(r: f64) -> String {
-    if r.is_infinite() {
-        "∞ ×".into()
-    } else if r >= 1e4 {
-        format!("{r:.2e} ×")
-    } else if r >= 10.0 {
-        format!("{r:.1} ×")
-    } else {
-        format!("{r:.3} ×")
     }
 }
 
@@ -411,7 +399,7 @@ impl fmt::Display for Report {
                     } else {
                         "margin: uses"
                     },
-                    ratio_text(s.margin)
+                    times_allowed(s.margin)
                 )
             })
             .collect();
@@ -429,7 +417,7 @@ impl fmt::Display for Report {
                 "  worst: {}/{}{at} {} allowed (failures follow, worst first)",
                 w.set,
                 w.case,
-                ratio_text(w.ratio)
+                times_allowed(w.ratio)
             )?;
         }
         for fl in self.failures.iter().take(SHOWN_FAILURES) {
@@ -441,7 +429,7 @@ impl fmt::Display for Report {
         if self.failures.len() > SHOWN_FAILURES {
             let rest: Vec<String> = self.failures[SHOWN_FAILURES..]
                 .iter()
-                .map(|fl| format!("{} ({})", fl.case, ratio_text(fl.ratio)))
+                .map(|fl| format!("{} ({})", fl.case, times_allowed(fl.ratio)))
                 .collect();
             writeln!(f, "\n  and {} more: {}", rest.len(), rest.join(", "))?;
         }

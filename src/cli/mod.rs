@@ -311,14 +311,10 @@ fn ieee_formulas() -> String {
 
 /// `--method`'s help: every method of the catalogue by name, in its order.
 pub fn methods_help() -> String {
-    let names: Vec<String> = phong_approx::Method::ALL
-        .iter()
-        .map(|m| match m {
-            phong_approx::Method::AngularTable(_) => "angular-table<SIZE>".to_string(),
-            m => m.name().into_owned(),
-        })
-        .collect();
-    format!("A method of the catalogue: {}", names.join(", "))
+    format!(
+        "A method of the catalogue: {}",
+        phong_approx::method::names()
+    )
 }
 
 /// Standard output as an [`std::io::Write`], with [`out`]'s rules: a closed pipe

@@ -3,7 +3,6 @@
 
 use crate::adaptive;
 use crate::method::Method;
-use crate::quantize::level;
 use crate::reference::unit::unit_from_stereo;
 use crate::scalar::Scalar;
 use crate::span::Span;
@@ -1127,26 +1126,4 @@ pub fn inputs_csv(file: &VectorFile) -> String {
         w.write_record(&row).expect("writing to memory");
     }
     String::from_utf8(w.into_inner().expect("writing to memory")).expect("the cells are UTF-8")
-}
-
-/// `true` when every value parses and the levels agree with the values (a reader's
-/// sanity check of a file).
-pub fn self_consistent(file: &VectorFile) -> bool {
-    file.cases.iter().all(|c| {
-        c.expected.values().all(|e| {
-            e.values.len() == c.n as usize + 1
-                && e.values
-                    .iter()
-                    .zip(&e.levels)
-                    .all(|(v, &l)| match crate::parse::parse_rational(v) {
-                        Ok(x) => level(&x).abs_diff(l) <= 1,
-                        Err(_) => false,
-                    })
-        })
-    })
-}
-
-/// Real-valued helper for the checker: the value as `f64`.
-pub fn value_f64(s: &str) -> Option<f64> {
-    crate::parse::parse_rational(s).ok().map(|x| x.to_f64())
 }

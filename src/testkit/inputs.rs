@@ -2,6 +2,8 @@
 //! ([`published`]), and one span's inputs in your float format ([`Inputs`],
 //! [`Format`]).
 
+pub use crate::conformance::vectors::SETS;
+
 use crate::conformance::integrity::{published_set, sha256_hex};
 use crate::conformance::vectors::{VectorFile, VectorInput};
 use std::fmt;
@@ -45,9 +47,6 @@ pub fn published(set: &str) -> Option<&'static VectorFile> {
         serde_json::from_str(text).expect("the published sets parse")
     }))
 }
-
-/// The names of the published sets.
-pub const SETS: [&str; 3] = ["typical", "edge", "paper"];
 
 /// One span as your function receives it: the nearest floats of the exact unit inputs
 /// and the number of steps; return `n + 1` values, pixel `0` at `N_a`, pixel `n` at

@@ -74,6 +74,34 @@ PY
 done
 echo "  phong_kit: every input is the vector files' f32 and f64, bit for bit"
 
+# Bad input: one line on stderr and exit 2, never a crash or a partial silent run.
+good="$vectors/paper-inputs.csv"
+head -n 1 "$good" > "$tmp/header.csv"
+row=$(sed -n 2p "$good")
+bad_input() { # name, file
+  local rc=0
+  "$tmp/plain" corrected-euler "$2" > "$tmp/bad.out" 2> "$tmp/bad.err" || rc=$?
+  if [ "$rc" -ne 2 ] || [ "$(wc -l < "$tmp/bad.err")" -ne 1 ]; then
+    echo "phong_kit on $1: exit $rc, stderr:" >&2; cat "$tmp/bad.err" >&2; exit 1
+  fi
+}
+bad_input "a missing file" "$tmp/no-such-file.csv"
+: > "$tmp/empty.csv"; bad_input "an empty file" "$tmp/empty.csv"
+echo "case,n,na_x" > "$tmp/old.csv"; bad_input "a header without the hex columns" "$tmp/old.csv"
+{ cat "$tmp/header.csv"; echo "$row" | awk -F, 'BEGIN{OFS=","} {$2=0; print}'; } > "$tmp/n0.csv"
+bad_input "n = 0" "$tmp/n0.csv"
+{ cat "$tmp/header.csv"; echo "$row" | awk -F, 'BEGIN{OFS=","} {$2=2000000; print}'; } > "$tmp/nbig.csv"
+bad_input "n past the kit's cap" "$tmp/nbig.csv"
+{ cat "$tmp/header.csv"; echo "$row" | awk -F, 'BEGIN{OFS=","} {$16="0x7fc00000"; print}'; } > "$tmp/nan.csv"
+bad_input "a NaN bit pattern" "$tmp/nan.csv"
+{ cat "$tmp/header.csv"; echo "$row" | awk -F, 'BEGIN{OFS=","} {$16="0x3f8"; print}'; } > "$tmp/short.csv"
+bad_input "a short hex cell" "$tmp/short.csv"
+{ cat "$tmp/header.csv"; echo "$row" | cut -d, -f1-10; } > "$tmp/cut.csv"
+bad_input "a row with missing columns" "$tmp/cut.csv"
+{ cat "$tmp/header.csv"; head -c 20000 /dev/zero | tr '\0' 'a'; echo; } > "$tmp/long.csv"
+bad_input "a line past the kit's cap" "$tmp/long.csv"
+echo "  phong_kit: bad input (9 kinds) is one line and exit 2"
+
 # check BUILD PROFILE PRECISION SET METHOD [--specular]
 check() {
   local build=$1 profile=$2 precision=$3 set=$4 method=$5 part=${6:-}

@@ -785,6 +785,9 @@ pub struct CaseReport {
     pub max_ulps: f64,
     /// The format whose ulps `max_ulps` counts (`f32`, `f64`, …).
     pub format: &'static str,
+    /// The case's scale, the largest `|expected value|` of the span: its ulp is the
+    /// unit of `max_ulps` ([`Tolerance::Ulps`]).
+    pub scale: f64,
     /// The pixel where the tolerance is exceeded most (relative to it), if any.
     pub worst_pixel: usize,
     /// How much of the tolerance the worst pixel uses: `|value − expected|` over the
@@ -1132,6 +1135,7 @@ fn case_report(
         max_abs,
         max_ulps,
         format: format_name(format_u),
+        scale,
         worst_pixel: worst,
         ratio,
         allowed_abs,

@@ -129,13 +129,19 @@ impl Case {
             (Some(sp), true) => (q(&sp.h.exact), format!(" (then max(0, v)^{})", sp.s)),
             _ => (q(&self.l.exact), String::new()),
         };
-        format!(
-            "phong-approx span --method {key} --na={} --nb={} --light={light} --steps {} --scalar exact{then}",
-            q(&self.na.exact),
-            q(&self.nb.exact),
-            self.n
-        )
+        span_command(
+            key,
+            [&q(&self.na.exact), &q(&self.nb.exact), &light],
+            self.n,
+        ) + &then
     }
+}
+
+/// The `phong-approx span` command that prints method `key`'s exact values on the
+/// span with the inputs `[N_a, N_b, L]` (each `x,y,z`) and `n` steps.
+pub fn span_command(key: &str, inputs: [&str; 3], n: u32) -> String {
+    let [na, nb, l] = inputs;
+    format!("phong-approx span --method {key} --na={na} --nb={nb} --light={l} --steps {n} --scalar exact")
 }
 
 /// A vector file.

@@ -95,13 +95,10 @@ pub mod prelude {
 /// ```
 pub fn command(method: Method, span: &crate::Span<crate::BigRational>) -> String {
     let v = |v: &crate::Vec3<crate::BigRational>| v.components().map(|x| x.to_string()).join(",");
-    format!(
-        "phong-approx span --method {} --na={} --nb={} --light={} --steps {} --scalar exact",
-        crate::conformance::vectors::method_key(method),
-        v(&span.na),
-        v(&span.nb),
-        v(&span.l),
-        span.n
+    crate::conformance::vectors::span_command(
+        &crate::conformance::vectors::method_key(method),
+        [&v(&span.na), &v(&span.nb), &v(&span.l)],
+        span.n,
     )
 }
 

@@ -196,11 +196,7 @@ impl Failure {
                 ));
                 let gt = T::from_f64(g);
                 if g.is_finite() {
-                    let scale = exp
-                        .values
-                        .iter()
-                        .filter_map(|v| v.parse::<f64>().ok())
-                        .fold(e.abs(), |m, v| m.max(v.abs()));
+                    let scale = r.scale.max(e.abs());
                     let ulps = (g - e).abs() / crate::conformance::check::ulp_in(scale, j.u);
                     let dl = u32::from(level(&g).abs_diff(exp.levels[i]));
                     f.ulps = Some(ulps);

@@ -78,6 +78,8 @@ pub mod fast;
 pub mod fast_rows;
 pub mod fixed_span;
 pub mod gouraud;
+#[cfg(feature = "gpu")]
+pub mod gpu;
 #[cfg(feature = "lowp")]
 pub mod lowp;
 pub mod method;

@@ -5,6 +5,8 @@
 //! - `phong-approx compare`: every method of the paper and its related work, diffuse
 //!   and specular, in five precisions, with pictures (`docs/comparison.md`).
 //! - `phong-approx vectors` / `check`: the conformance kit.
+//! - `phong-approx gpu-check`: a compute kernel run on a GPU adapter and judged as
+//!   `check` judges results (feature `gpu`).
 //!
 //! Bad input prints one line on stderr naming the argument and the problem and exits
 //! with code 2.
@@ -40,6 +42,10 @@ enum Command {
     /// Check an implementation's results against a vector file (exit 0 pass, 1 fail).
     #[command(allow_negative_numbers = true)]
     Check(cli::check::CheckArgs),
+    /// Run a compute kernel (WGSL, SPIR-V, GLSL) on a GPU adapter over every published
+    /// case and judge it as `check` does (exit 0 pass, 1 fail); feature `gpu`.
+    #[command(name = "gpu-check")]
+    GpuCheck(cli::gpu::GpuCheckArgs),
 }
 
 /// Whether standard output was closed when the process started (`>&-`). Rust's runtime
@@ -78,11 +84,12 @@ fn main() -> ExitCode {
         Command::Compare(args) => cli::compare::run(&args),
         Command::Vectors(args) => cli::vectors::run(&args),
         Command::Check(args) => cli::check::run(&args),
+        Command::GpuCheck(args) => cli::gpu::run(&args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(e) => {
-            cli::report(&e.to_string());
+            cli::report_details(&e.to_string(), &e.details);
             ExitCode::from(e.code())
         }
     }

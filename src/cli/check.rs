@@ -151,6 +151,7 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
         parse_results(&rtext, &a.results, &vectors, a.specular).map_err(|e| CliError {
             message: e.to_string(),
             code: 2,
+            details: Vec::new(),
         })?;
     let reports = check_in(
         &vectors,
@@ -212,7 +213,11 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
     }
     match verdict::failure(&reports) {
         None => Ok(()),
-        Some(message) => Err(CliError { message, code: 1 }),
+        Some(message) => Err(CliError {
+            message,
+            code: 1,
+            details: Vec::new(),
+        }),
     }
 }
 
@@ -220,7 +225,7 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
 /// but one: the report is this tool's own output, so an existing regular file of that
 /// name is replaced (a CI run's report from the run before); a symbolic link, a folder,
 /// or one of the command's input files (`inputs`) is refused.
-fn write_report(file: &str, text: &str, inputs: &[&str]) -> Result<(), CliError> {
+pub(crate) fn write_report(file: &str, text: &str, inputs: &[&str]) -> Result<(), CliError> {
     let path = std::path::Path::new(file);
     let name = path.file_name().and_then(|n| n.to_str()).ok_or_else(|| {
         CliError::arg("--report", format!("'{}' is not a file name", shown(file)))

@@ -30,6 +30,7 @@ fn stdout_error(e: std::io::Error) -> CliError {
     CliError {
         message: format!("standard output: {e}"),
         code: 2,
+        details: Vec::new(),
     }
 }
 
@@ -46,6 +47,7 @@ macro_rules! outp {
 
 pub mod check;
 pub mod compare;
+pub mod gpu;
 pub mod output;
 pub mod reproduce;
 pub mod span;
@@ -59,6 +61,9 @@ pub struct CliError {
     pub message: String,
     /// 2 for bad input, 1 for a failed check.
     pub code: u8,
+    /// Lines shown after the message, indented: a shader compiler's messages, whose
+    /// line numbers and source excerpts need lines of their own.
+    pub details: Vec<String>,
 }
 
 impl CliError {
@@ -67,6 +72,7 @@ impl CliError {
         CliError {
             message: format!("{arg}: {problem}"),
             code: 2,
+            details: Vec::new(),
         }
     }
 
@@ -128,6 +134,15 @@ pub fn report(message: &str) {
         "phong-approx: {}",
         one_line(message)
     );
+}
+
+/// [`report`]'s line, then `details`, each line indented and made printable.
+pub fn report_details(message: &str, details: &[String]) {
+    report(message);
+    let mut err = std::io::stderr().lock();
+    for l in details {
+        let _ = writeln!(err, "  {}", one_line(l));
+    }
 }
 
 /// Prints clap's error as one line and exits with 2; help and version go to standard

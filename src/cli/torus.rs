@@ -93,5 +93,6 @@ pub(crate) fn io_err(path: &Path, e: impl std::fmt::Display) -> CliError {
     CliError {
         message: format!("{}: {e}", path.display()),
         code: 2,
+        details: Vec::new(),
     }
 }

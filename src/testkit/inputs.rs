@@ -72,6 +72,14 @@ pub struct Inputs<'a, T> {
     pub s: Option<u32>,
 }
 
+impl<'a, T: Format> Inputs<'a, T> {
+    /// A published case's inputs in `T`, as [`super::Suite`] gives them to your
+    /// function.
+    pub fn of_case(case: &'a crate::conformance::vectors::Case) -> Inputs<'a, T> {
+        super::report::case_inputs(case)
+    }
+}
+
 impl<T: Format> Inputs<'static, T> {
     /// The inputs of an exact span of your own as your function receives them: each
     /// component of `N_a`, `N_b` and `L` rounded once to the nearest `T` (ties to

@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: MIT OR Apache-2.0
+// A planted bug for CI: corrected Euler with dq_b = 2nC - D (eq. 11 has + D).
+//
+// The interface of every kernel here (docs/conformance.md §6): one invocation per
+// pixel; `pixel_span[p]` is the span of pixel `p`, `spans[k].first` its pixel 0; write
+// `n + 1` values, pixel 0 at N_a, pixel n at N_b.
+struct Span {
+    na: vec4<f32>, // N_a in xyz
+    nb: vec4<f32>, // N_b in xyz
+    l: vec4<f32>,  // L in xyz
+    n: u32,        // steps
+    first: u32,    // index of pixel 0 in `out`
+    pad0: u32,
+    pad1: u32,
+};
+@group(0) @binding(0) var<storage, read> spans: array<Span>;
+@group(0) @binding(1) var<storage, read> pixel_span: array<u32>;
+@group(0) @binding(2) var<storage, read_write> out: array<f32>;
+
+@compute @workgroup_size(64)
+fn main(@builtin(global_invocation_id) id: vec3<u32>) {
+    let p = id.x;
+    if (p >= arrayLength(&out)) { return; }
+    let s = spans[pixel_span[p]];
+    if (p != s.first) { return; } // the recurrence: pixel 0's invocation runs the span
+    let na = s.na.xyz;
+    let nb = s.nb.xyz;
+    let l = s.l.xyz;
+    let nf = f32(s.n);
+    // Set-up (eqs. 2-3, 10-11): k = (N_b - N_a)/n, p = A x + B, q = C x^2 + D x + E.
+    let k = (nb - na) / nf;
+    let a = dot(k, l);
+    let c = dot(k, k);
+    let d = 2.0 * dot(k, na);
+    let pa = dot(na, l);
+    let pb = dot(nb, l);
+    let dqb = 2.0 * nf * c - d; // planted bug: the wrong sign of D in dq_b (eq. 11)
+    let dia = a - 0.5 * pa * d;
+    let dib = a - 0.5 * pb * dqb;
+    let ds = (dib - dia) / nf;
+    // Eq. 14: where plain Euler ends; n(n-1)/2 formed exactly as an integer.
+    let tri = f32((s.n * (s.n - 1u)) / 2u);
+    let pn = pa + nf * dia + tri * ds;
+    // Eqs. 15, 17: eps = p_n - p_b, t0 = di_a - eps/n.
+    let t0 = dia - (pn - pb) / nf;
+    // Eq. 16: p_{i+1} = p_i + t_i, t_{i+1} = t_i + ds.
+    var pi = pa;
+    var t = t0;
+    for (var i = 0u; i <= s.n; i++) {
+        out[s.first + i] = pi;
+        pi = pi + t;
+        t = t + ds;
+    }
+}

@@ -1,0 +1,403 @@
+//! `phong-approx gpu-check`: a compute kernel (WGSL, SPIR-V, GLSL) run on a GPU adapter
+//! over every published case and judged as `check` judges results; `--builtin` runs
+//! this repository's kernels (`harness/gpu/`) and tells what the driver did.
+
+use super::CliError;
+use clap::Args;
+use phong_approx::tolerance::profile::Profile;
+use phong_approx::Method;
+
+/// Arguments of `phong-approx gpu-check`.
+#[derive(Args, Debug)]
+pub struct GpuCheckArgs {
+    /// Your kernel: `.wgsl`, `.spv`, or `.comp`/`.glsl` (GLSL, compiled by
+    /// glslangValidator). The interface (entry point `main`, `@workgroup_size(64)`,
+    /// bindings 0 spans, 1 pixel_span, 2 out): docs/conformance.md §6.
+    #[arg(
+        long,
+        value_name = "FILE",
+        required_unless_present = "builtin",
+        conflicts_with = "builtin"
+    )]
+    pub shader: Option<String>,
+    /// The method your kernel computes.
+    #[arg(long, value_name = "NAME", required_unless_present = "builtin",
+          help = super::methods_help(), value_parser = |s: &str| s.parse::<Method>())]
+    pub method: Option<Method>,
+    /// This repository's kernels instead (harness/gpu/): each judged under shader and
+    /// ieee, and compared with its own source evaluated on the CPU; exit 0 when every
+    /// correct kernel passes shader and both planted bugs fail.
+    #[arg(long)]
+    pub builtin: bool,
+    /// The profile that judges your kernel: shader (the default: Vulkan/WGSL 32-bit
+    /// rules), ieee or reference.
+    #[arg(long, value_name = "NAME", default_value = "shader",
+          value_parser = |s: &str| s.parse::<Profile>())]
+    pub profile: Profile,
+    /// Also write the verdict for a CI system: `--report junit FILE` or `--report json
+    /// FILE` (FILE `-`: standard output), as `check` does.
+    #[arg(long, num_args = 2, value_names = ["FORMAT", "FILE"])]
+    pub report: Option<Vec<String>>,
+    /// The most the dispatch may take, in seconds (1 to 3600).
+    #[arg(long, value_name = "SECONDS", default_value = "60",
+          value_parser = |s: &str| super::whole(s, 1, 3600, "the timeout"))]
+    pub timeout: u32,
+}
+
+/// Runs `phong-approx gpu-check`: exit 0 when the kernel passes, 1 when it does not, 2
+/// on bad input (the kernel does not compile, lacks the interface, does not finish in
+/// time) or when there is no GPU adapter.
+///
+/// # Errors
+/// A [`CliError`] with code 2 for bad input, 1 for values out of tolerance.
+#[cfg(not(feature = "gpu"))]
+pub fn run(_: &GpuCheckArgs) -> Result<(), CliError> {
+    Err(CliError {
+        message: "this phong-approx was built without the GPU runner: build it with `cargo build --release --features gpu` (Vulkan drivers needed at run time; Debian: mesa-vulkan-drivers)".into(),
+        code: 2, details: Vec::new() })
+}
+
+#[cfg(feature = "gpu")]
+pub use with_gpu::run;
+
+#[cfg(feature = "gpu")]
+mod with_gpu {
+    use super::{CliError, GpuCheckArgs};
+    use crate::cli::out;
+    use phong_approx::conformance::check::{check_in, CaseReport, Results, Tolerance};
+    use phong_approx::conformance::vectors::method_key;
+    use phong_approx::conformance::{report, shown, verdict};
+    use phong_approx::gpu::kernels::{Kernel, Language, KERNELS};
+    use phong_approx::gpu::{published_spans, unwritten, Gpu, GpuError, Source};
+    use phong_approx::testkit::{published, SETS};
+    use phong_approx::tolerance::profile::Profile;
+    use phong_approx::Method;
+    use std::time::{Duration, Instant};
+
+    const U32: f64 = 1.0 / 16_777_216.0;
+
+    /// A [`GpuError`] as the command's failure: the first line names the problem; a
+    /// compiler's messages follow on standard error, their line numbers kept.
+    fn gpu_error(e: GpuError) -> CliError {
+        let text = e.to_string();
+        let mut lines = text.lines();
+        let first = lines.next().unwrap_or("").to_string();
+        CliError {
+            message: first,
+            code: 2,
+            details: lines.map(str::to_string).collect(),
+        }
+    }
+
+    /// One kernel's values over every published case, by id, and the time it took.
+    fn values(
+        gpu: &Gpu,
+        source: &Source,
+        name: &str,
+        timeout: Duration,
+    ) -> Result<(Results, Vec<(String, Vec<f32>)>, f64), CliError> {
+        let spans = published_spans();
+        let inputs: Vec<_> = spans.iter().map(|(_, s)| s.clone()).collect();
+        let start = Instant::now();
+        let got = gpu.run(source, name, &inputs, timeout).map_err(gpu_error)?;
+        let seconds = start.elapsed().as_secs_f64();
+        let mut results = Results::new();
+        let mut raw = Vec::new();
+        for ((_, s), v) in spans.iter().zip(got) {
+            results.insert(s.id.to_string(), v.iter().map(|x| f64::from(*x)).collect());
+            raw.push((s.id.to_string(), v));
+        }
+        Ok((results, raw, seconds))
+    }
+
+    /// Judges `results` set by set; the reports per set.
+    fn judge(
+        results: &Results,
+        method: Method,
+        profile: Profile,
+    ) -> Result<Vec<(&'static str, Vec<CaseReport>)>, CliError> {
+        let key = method_key(method);
+        let tol = Tolerance::Profile { profile, u: U32 };
+        SETS.iter()
+            .filter_map(|set| Some((*set, published(set)?)))
+            .map(|(set, file)| {
+                check_in(file, results, method, &key, tol, false, U32)
+                    .map(|r| (set, r))
+                    .map_err(|e| CliError::arg("--method", e))
+            })
+            .collect()
+    }
+
+    fn worst(sets: &[(&str, Vec<CaseReport>)]) -> f64 {
+        sets.iter()
+            .flat_map(|(_, r)| r.iter().map(|c| c.ratio))
+            .fold(0.0, f64::max)
+    }
+
+    fn passes(sets: &[(&str, Vec<CaseReport>)]) -> bool {
+        sets.iter().all(|(_, r)| r.iter().all(|c| c.pass))
+    }
+
+    /// Runs the command.
+    ///
+    /// # Errors
+    /// See [`super::run`].
+    pub fn run(a: &GpuCheckArgs) -> Result<(), CliError> {
+        if matches!(a.profile, Profile::Fixed { .. }) {
+            return Err(CliError::arg(
+                "--profile",
+                "a kernel computes in 32-bit floats: shader, ieee or reference",
+            ));
+        }
+        if a.report.as_ref().is_some_and(|r| r.len() != 2) {
+            return Err(CliError::arg(
+                "--report",
+                "given more than once: one report per run (FORMAT FILE)",
+            ));
+        }
+        if let Some(r) = &a.report {
+            if !matches!(r[0].as_str(), "junit" | "json") {
+                return Err(CliError::arg(
+                    "--report",
+                    format!(
+                        "unknown report format '{}' (expected junit or json)",
+                        shown(&r[0])
+                    ),
+                ));
+            }
+        }
+        let timeout = Duration::from_secs(u64::from(a.timeout));
+        // The kernel is read (and GLSL compiled) before the device is opened: a bad
+        // file is bad input whether or not there is a GPU.
+        let user = match &a.shader {
+            Some(path) => Some(Source::from_file(std::path::Path::new(path)).map_err(gpu_error)?),
+            None => None,
+        };
+        if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
+            // Mesa's drivers complain on every start without one (a headless machine,
+            // a container); the folder is not used for computing.
+            std::env::set_var("XDG_RUNTIME_DIR", std::env::temp_dir());
+        }
+        let gpu = Gpu::new().map_err(gpu_error)?;
+        let adapter = gpu.adapter().to_string();
+        match (user, &a.shader, a.method) {
+            (Some(source), Some(path), Some(method)) => {
+                user_kernel(a, &gpu, &adapter, &source, path, method, timeout)
+            }
+            _ => builtin(&gpu, &adapter, timeout),
+        }
+    }
+
+    fn user_kernel(
+        a: &GpuCheckArgs,
+        gpu: &Gpu,
+        adapter: &str,
+        source: &Source,
+        path: &str,
+        method: Method,
+        timeout: Duration,
+    ) -> Result<(), CliError> {
+        let to_stderr = a
+            .report
+            .as_ref()
+            .is_some_and(|r| r.get(1).is_some_and(|f| f == "-"));
+        let human = |text: &str| -> Result<(), CliError> {
+            if to_stderr {
+                use std::io::Write;
+                let _ = write!(std::io::stderr().lock(), "{text}");
+                Ok(())
+            } else {
+                out(format_args!("{text}"))
+            }
+        };
+        human(&format!("adapter: {adapter}\n"))?;
+        let (results, raw, seconds) = values(gpu, source, path, timeout)?;
+        human(&format!(
+            "kernel: {path}, {} cases, {:.3} s on the device\n",
+            results.len(),
+            seconds
+        ))?;
+        let missing: usize = raw.iter().map(|(_, v)| unwritten(v)).sum();
+        if missing > 0 {
+            human(&format!(
+                "{missing} pixels were never written by the kernel (a loop the driver cut short: lavapipe stops an invocation's loops after about 65535 iterations in all; a workgroup size other than 64; an early return)\n"
+            ))?;
+        }
+        let sets = judge(&results, method, a.profile)?;
+        let key = method_key(method);
+        for (set, reports) in &sets {
+            let file = published(set).expect("a published set");
+            human(&verdict::text(file, reports, &key, false))?;
+        }
+        human(&format!(
+            "tolerance: the {} profile's bound for f32 (docs/float.md §18)\n",
+            a.profile
+        ))?;
+        if let Some(r) = &a.report {
+            let text = write_report(&r[0], &sets, &results, method, a.profile, adapter);
+            if r[1] == "-" {
+                out(format_args!("{text}"))?;
+            } else {
+                crate::cli::check::write_report(&r[1], &text, &[path])?;
+            }
+        }
+        let all: Vec<CaseReport> = sets.into_iter().flat_map(|(_, r)| r).collect();
+        match verdict::failure(&all) {
+            None => Ok(()),
+            Some(message) => Err(CliError {
+                message,
+                code: 1,
+                details: Vec::new(),
+            }),
+        }
+    }
+
+    /// The report over the three sets: JUnit with one `<testsuite>` per set, or a JSON
+    /// object holding the adapter and each set's `check` report.
+    fn write_report(
+        format: &str,
+        sets: &[(&'static str, Vec<CaseReport>)],
+        results: &Results,
+        method: Method,
+        profile: Profile,
+        adapter: &str,
+    ) -> String {
+        let key = method_key(method);
+        let suite = |set: &str| format!("{set} {key} {profile} profile (f32) on {adapter}");
+        if format == "json" {
+            let per: Vec<serde_json::Value> = sets
+                .iter()
+                .map(|(set, r)| {
+                    let file = published(set).expect("a published set");
+                    serde_json::from_str(&report::json(&suite(set), file, r, results, &key, false))
+                        .unwrap_or(serde_json::Value::Null)
+                })
+                .collect();
+            let v = serde_json::json!({ "adapter": adapter, "sets": per });
+            return serde_json::to_string_pretty(&v).unwrap_or_default() + "\n";
+        }
+        let (mut tests, mut failures, mut body) = (0, 0, String::new());
+        for (set, r) in sets {
+            let file = published(set).expect("a published set");
+            let one = report::junit(&suite(set), file, r, results, &key, false);
+            tests += r.len();
+            failures += r.iter().filter(|c| !c.pass).count();
+            // Keep the <testsuite> element: the lines between <testsuites> and its end.
+            let lines: Vec<&str> = one.lines().collect();
+            for l in &lines[2..lines.len() - 1] {
+                body += l;
+                body += "\n";
+            }
+        }
+        format!(
+            "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<testsuites name=\"phong-approx gpu-check\" tests=\"{tests}\" failures=\"{failures}\">\n{body}</testsuites>\n"
+        )
+    }
+
+    /// Ordered distance in ulps between two finite `f32`.
+    fn ulps(a: f32, b: f32) -> u64 {
+        let key = |x: f32| {
+            let b = x.to_bits() as i32;
+            i64::from(if b < 0 { i32::MIN - b } else { b })
+        };
+        key(a).abs_diff(key(b))
+    }
+
+    /// Every kernel of `harness/gpu/`: the table of docs/conformance.md §6.
+    fn builtin(gpu: &Gpu, adapter: &str, timeout: Duration) -> Result<(), CliError> {
+        outln!("adapter: {adapter}")?;
+        outln!("| kernel | method | form | shader: worst × allowed | ieee: worst × allowed | pixels ≠ CPU | largest difference | of the shader bound |")?;
+        outln!("|---|---|---|---|---|---|---|---|")?;
+        let mut wrong = Vec::new();
+        let spans = published_spans();
+        for k in KERNELS {
+            let source = match k.language {
+                Language::Wgsl => Source::Wgsl(k.text.to_string()),
+                Language::Glsl => Source::glsl(k.text, k.file).map_err(gpu_error)?,
+            };
+            let (results, raw, _) = values(gpu, &source, k.file, timeout)?;
+            let shader = judge(&results, k.method, Profile::Shader)?;
+            let ieee = judge(&results, k.method, Profile::Ieee)?;
+            let (differ, max_ulps, of_bound) = differences(&k, &spans, &raw, &shader);
+            let verdict = |sets: &[(&str, Vec<CaseReport>)]| {
+                format!(
+                    "{} {}",
+                    ratio(worst(sets)),
+                    if passes(sets) { "pass" } else { "**fail**" }
+                )
+            };
+            let pixels: usize = raw.iter().map(|(_, v)| v.len()).sum();
+            outln!(
+                "| `{}` | {} | {} | {} | {} | {differ} of {pixels} | {max_ulps} ulp | {} |",
+                k.name(),
+                k.method.name(),
+                k.form,
+                verdict(&shader),
+                verdict(&ieee),
+                if differ == 0 {
+                    "0".to_string()
+                } else {
+                    format!("{of_bound:.2e}")
+                }
+            )?;
+            if passes(&shader) == k.mutant {
+                wrong.push(format!(
+                    "{} {} under shader",
+                    k.file,
+                    if k.mutant { "passes" } else { "fails" }
+                ));
+            }
+        }
+        outln!("(shader and ieee: the largest |GPU − exact| over the allowed error, every published case; pixels ≠ CPU: values that differ from the kernel's source evaluated on the CPU in round-to-nearest f32 without contraction; the largest difference between the two in ulps of f32, and over the shader bound of its case)")?;
+        if wrong.is_empty() {
+            Ok(())
+        } else {
+            Err(CliError {
+                message: format!("wrong verdicts: {}", wrong.join("; ")),
+                code: 1,
+                details: Vec::new(),
+            })
+        }
+    }
+
+    /// How a kernel's device values differ from its source on the CPU: pixels, the
+    /// largest difference in ulps, and the largest difference over its case's shader
+    /// bound.
+    fn differences(
+        k: &Kernel,
+        spans: &[(&str, phong_approx::testkit::Inputs<'static, f32>)],
+        raw: &[(String, Vec<f32>)],
+        shader: &[(&str, Vec<CaseReport>)],
+    ) -> (usize, u64, f64) {
+        let allowed: std::collections::HashMap<&str, f64> = shader
+            .iter()
+            .flat_map(|(_, r)| r.iter())
+            .filter_map(|c| Some((c.id.as_str(), c.allowed_abs?)))
+            .collect();
+        let (mut differ, mut max_ulps, mut of_bound) = (0, 0, 0.0f64);
+        for ((_, s), (id, got)) in spans.iter().zip(raw) {
+            let cpu = k.cpu(s);
+            for (g, c) in got.iter().zip(&cpu) {
+                if g.to_bits() != c.to_bits() {
+                    differ += 1;
+                    if g.is_finite() && c.is_finite() {
+                        max_ulps = max_ulps.max(ulps(*g, *c));
+                        if let Some(b) = allowed.get(id.as_str()) {
+                            of_bound = of_bound.max((f64::from(*g) - f64::from(*c)).abs() / b);
+                        }
+                    }
+                }
+            }
+        }
+        (differ, max_ulps, of_bound)
+    }
+
+    /// A ratio to allowed in three digits, `∞` where infinite.
+    fn ratio(r: f64) -> String {
+        if r.is_finite() {
+            format!("{r:.3}")
+        } else {
+            "∞".into()
+        }
+    }
+}

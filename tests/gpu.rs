@@ -216,6 +216,23 @@ mod on_device {
     }
 
     #[test]
+    fn a_spirv_module_from_glslang_passes() {
+        let spv = scratch("spirv").join("gouraud.spv");
+        let o = Command::new("glslangValidator")
+            .arg("-V")
+            .arg(repo("harness/gpu/gouraud.comp"))
+            .arg("-o")
+            .arg(&spv)
+            .output()
+            .expect("glslangValidator (Debian: glslang-tools)");
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stdout));
+        let o = gpu_check(&spv, "gouraud", &[]);
+        let (out, err) = text(&o);
+        assert_eq!(o.status.code(), Some(0), "{out}{err}");
+        assert_eq!(out.matches(" set '").count(), 3, "{out}");
+    }
+
+    #[test]
     fn a_kernel_without_the_interface_exits_2() {
         let entry = edited("entry", "fn main(", "fn shade(");
         let o = gpu_check(&entry, "corrected-euler", &[]);

@@ -52,6 +52,8 @@ const LAYERS: &[(&str, u32)] = &[
     ("raster/", 9),
     // The test kit.
     ("testkit/", 10),
+    // The GPU runner (feature `gpu`): kernels judged through the test kit.
+    ("gpu/", 11),
 ];
 
 fn src() -> PathBuf {

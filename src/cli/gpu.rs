@@ -89,13 +89,12 @@ mod with_gpu {
         }
     }
 
+    /// A kernel's run: its values as `check` reads them, the same as `f32` by case id,
+    /// and the seconds the device took.
+    type Run = (Results, Vec<(String, Vec<f32>)>, f64);
+
     /// One kernel's values over every published case, by id, and the time it took.
-    fn values(
-        gpu: &Gpu,
-        source: &Source,
-        name: &str,
-        timeout: Duration,
-    ) -> Result<(Results, Vec<(String, Vec<f32>)>, f64), CliError> {
+    fn values(gpu: &Gpu, source: &Source, name: &str, timeout: Duration) -> Result<Run, CliError> {
         let spans = published_spans();
         let inputs: Vec<_> = spans.iter().map(|(_, s)| s.clone()).collect();
         let start = Instant::now();

@@ -64,7 +64,7 @@ macro_rules! kernel {
 }
 
 /// Every kernel of `harness/gpu/`: the correct ones, then the planted bugs.
-pub const KERNELS: [Kernel; 14] = [
+pub const KERNELS: [Kernel; 15] = [
     kernel!(
         "gouraud.wgsl",
         Gouraud,
@@ -80,6 +80,14 @@ pub const KERNELS: [Kernel; 14] = [
         "recurrence, one invocation per span",
         false,
         euler
+    ),
+    kernel!(
+        "euler_closed.wgsl",
+        Euler,
+        Wgsl,
+        "closed form, one invocation per pixel",
+        false,
+        euler_closed
     ),
     kernel!(
         "corrected_euler.wgsl",
@@ -286,6 +294,16 @@ fn corrected_euler_eps_n1(s: &Inputs<'_, f32>) -> Vec<f32> {
 fn corrected_euler_dq_sign(s: &Inputs<'_, f32>) -> Vec<f32> {
     let u = setup(s, -1.0);
     euler_loop(s.n, u.pa, t0(s, &u, u.nf), u.ds)
+}
+
+fn euler_closed(s: &Inputs<'_, f32>) -> Vec<f32> {
+    let u = setup(s, 1.0);
+    (0..=s.n)
+        .map(|i| {
+            let h = ((i as i32 - 1) as f32 * 0.5) * u.ds;
+            u.pa + i as f32 * (u.dia + h)
+        })
+        .collect()
 }
 
 fn corrected_euler_closed(s: &Inputs<'_, f32>) -> Vec<f32> {

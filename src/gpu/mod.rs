@@ -218,12 +218,14 @@ fn glslang(path: &Path, shown: &str) -> Result<Source, GpuError> {
         .output();
     let run = match run {
         Ok(r) => r,
-        Err(e) => return Err(GpuError::Source {
-            path: shown.into(),
-            message: format!(
+        Err(e) => {
+            return Err(GpuError::Source {
+                path: shown.into(),
+                message: format!(
                 "GLSL needs glslangValidator on PATH (Debian: apt-get install glslang-tools): {e}"
             ),
-        }),
+            })
+        }
     };
     if !run.status.success() {
         let _ = std::fs::remove_file(&out);

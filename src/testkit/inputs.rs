@@ -75,8 +75,17 @@ pub struct Inputs<'a, T> {
 impl<'a, T: Format> Inputs<'a, T> {
     /// A published case's inputs in `T`, as [`super::Suite`] gives them to your
     /// function.
-    pub fn of_case(case: &'a crate::conformance::vectors::Case) -> Inputs<'a, T> {
-        super::report::case_inputs(case)
+    pub fn of_case(c: &'a crate::conformance::vectors::Case) -> Inputs<'a, T> {
+        Inputs {
+            id: &c.id,
+            comment: &c.comment,
+            na: pick(&c.na),
+            nb: pick(&c.nb),
+            l: pick(&c.l),
+            n: c.n,
+            h: c.specular.as_ref().map(|sp| pick(&sp.h)),
+            s: c.specular.as_ref().map(|sp| sp.s),
+        }
     }
 }
 
@@ -105,6 +114,13 @@ impl<T: Format> Inputs<'static, T> {
             s: None,
         }
     }
+}
+
+/// The float inputs of one kind (`N_a`, `N_b`, `L`) in the format `T`.
+fn pick<T: Format>(v: &VectorInput) -> [T; 3] {
+    T::inputs(v)
+        .clone()
+        .map(|s| T::parse(&s).expect("the published sets' float inputs parse"))
 }
 
 /// A float format your implementation computes in: `f32` or `f64`.

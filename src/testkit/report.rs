@@ -4,7 +4,7 @@
 
 use super::inputs::{Format, Inputs};
 use crate::conformance::check::CaseReport;
-use crate::conformance::vectors::{Case, VectorInput};
+use crate::conformance::vectors::Case;
 use crate::conformance::verdict::times_allowed;
 use crate::quantize::level;
 use crate::Method;
@@ -71,26 +71,10 @@ pub struct Failure {
     pub lines: Vec<String>,
 }
 
-/// The float inputs of one kind (`N_a`, `N_b`, `L`) in the format `T`.
-pub(crate) fn pick<T: Format>(v: &VectorInput) -> [T; 3] {
-    T::inputs(v)
-        .clone()
-        .map(|s| T::parse(&s).expect("the published sets' float inputs parse"))
-}
-
 /// Your function's inputs for case `c` of a vector file (its nearest floats), with the
 /// specular half vector and shininess where the case has them.
 pub(crate) fn case_inputs<'a, T: Format>(c: &'a Case) -> Inputs<'a, T> {
-    Inputs {
-        id: &c.id,
-        comment: &c.comment,
-        na: pick(&c.na),
-        nb: pick(&c.nb),
-        l: pick(&c.l),
-        n: c.n,
-        h: c.specular.as_ref().map(|sp| pick(&sp.h)),
-        s: c.specular.as_ref().map(|sp| sp.s),
-    }
+    Inputs::of_case(c)
 }
 
 fn shown_inputs<T: Format>(what: &str, exact: &[String; 3], v: [T; 3]) -> String {

@@ -7,8 +7,10 @@
 //! pixel to the next, so it runs at the latency of a float addition per pixel and
 //! cannot use SIMD. The kernels here evaluate the same quadratics in closed form,
 //! `p_i = p_a + i·t_0 + i(i − 1)/2·ds` (eq. 14 with `t_0` for `di_a`), so every pixel
-//! is independent and LLVM vectorizes the loop (no `unsafe`, no target features); the
-//! Phong kernel evaluates `p_i/√q_i` with `p` and `q` in closed form (eqs. 2–3).
+//! is independent and LLVM vectorizes the loop; the Phong kernel evaluates `p_i/√q_i`
+//! with `p` and `q` in closed form (eqs. 2–3). The loop is compiled for three vector
+//! paths — the x86-64 baseline, AVX2 with FMA, AVX-512 — one of which is chosen at run
+//! time ([`crate::simd`]); every path gives the same bits.
 //!
 //! The set-up ([`FastSpan::new`]) uses one reciprocal `1/n` instead of several
 //! divisions, `dq_b = −dq_a` (eq. 22) and the closed form `ds = D(p_a + p_b)/(2n)`
@@ -253,28 +255,79 @@ macro_rules! fast_impl {
             }
         }
 
-        /// `out[i] = f(i)`, eight pixels at a time as [`chunked`].
+        /// `out[i] = f(i)` on the chosen vector path ([`crate::simd::path`]): the
+        /// same loop, [`each_x_w`], compiled for the baseline, for AVX2 with FMA, or
+        /// for AVX-512.
         #[inline(always)]
         fn each_x(out: &mut [$f], f: impl Fn($f) -> $f) {
-            const OFF: [$f; 8] = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0];
-            let mut chunks = out.chunks_exact_mut(8);
+            // A short row is faster inline on the baseline: the wide paths are calls
+            // (a function compiled for other features is not inlined into this one),
+            // and a row of fewer than `WIDE_FROM` pixels fills few wide vectors
+            // (benches/paths.rs). Every path gives the same bits.
+            if out.len() < WIDE_FROM {
+                return each_x_w::<8>(out, f);
+            }
+            match crate::simd::path() {
+                #[cfg(target_arch = "x86_64")]
+                // SAFETY: `path()` is `Avx512` only where the CPU has AVX-512 F and VL,
+                // AVX2 and FMA (`Path::supported`).
+                crate::simd::Path::Avx512 => unsafe { each_x_avx512(out, f) },
+                #[cfg(target_arch = "x86_64")]
+                // SAFETY: `path()` is `Avx2` only where the CPU has AVX2 and FMA.
+                crate::simd::Path::Avx2 => unsafe { each_x_avx2(out, f) },
+                _ => each_x_w::<8>(out, f),
+            }
+        }
+
+        /// [`each_x_w`] in eight-pixel chunks with AVX2 (one `f32` vector).
+        #[cfg(target_arch = "x86_64")]
+        #[target_feature(enable = "avx2,fma")]
+        unsafe fn each_x_avx2(out: &mut [$f], f: impl Fn($f) -> $f) {
+            each_x_w::<8>(out, f)
+        }
+
+        /// [`each_x_w`] in sixteen-pixel chunks with AVX-512 (one `f32` vector), the
+        /// last fifteen pixels or fewer in eight-pixel chunks (a short row is not one
+        /// wide partial chunk and a copy).
+        #[cfg(target_arch = "x86_64")]
+        #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
+        unsafe fn each_x_avx512(out: &mut [$f], f: impl Fn($f) -> $f) {
+            let wide = out.len() / 16 * 16;
+            let (head, tail) = out.split_at_mut(wide);
+            let off: [$f; 16] = std::array::from_fn(|j| j as $f);
+            let mut base: $f = 0.0;
+            for ch in head.chunks_exact_mut(16) {
+                for j in 0..16 {
+                    ch[j] = f(base + off[j]);
+                }
+                base += 16.0;
+            }
+            each_x_w::<8>(tail, |x| f(base + x))
+        }
+
+        /// `out[i] = f(i)`, `W` pixels at a time as [`chunked`]; every pixel's value
+        /// is `f` of its exact index, whatever `W`.
+        #[inline(always)]
+        fn each_x_w<const W: usize>(out: &mut [$f], f: impl Fn($f) -> $f) {
+            let off: [$f; W] = std::array::from_fn(|j| j as $f);
+            let mut chunks = out.chunks_exact_mut(W);
             let mut base: $f = 0.0;
             for ch in &mut chunks {
-                for j in 0..8 {
-                    ch[j] = f(base + OFF[j]);
+                for j in 0..W {
+                    ch[j] = f(base + off[j]);
                 }
-                base += 8.0;
+                base += W as $f;
             }
             // A partial chunk of four pixels or more (all of a short row) as a whole
             // one into a buffer, one vector pass; fewer one at a time, cheaper than a
             // pass for one to three pixels.
             let rem = chunks.into_remainder();
             if rem.len() >= 4 {
-                let tmp: [$f; 8] = std::array::from_fn(|j| f(base + OFF[j]));
+                let tmp: [$f; W] = std::array::from_fn(|j| f(base + off[j]));
                 copy_short(rem, &tmp[..rem.len()]);
             } else {
                 for (j, o) in rem.iter_mut().enumerate() {
-                    *o = f(base + OFF[j]);
+                    *o = f(base + off[j]);
                 }
             }
         }
@@ -300,6 +353,10 @@ macro_rules! fast_impl {
         }
     };
 }
+
+/// The shortest row the wide vector paths take (`simd::Path::Avx2`, `Avx512`):
+/// shorter ones run the baseline loop inline.
+pub const WIDE_FROM: usize = 32;
 
 /// `dst.copy_from_slice(src)` for the at most seven values of a partial chunk, as
 /// fixed-size copies: a copy of variable length is a call to `memcpy`, which costs

@@ -326,10 +326,55 @@ macro_rules! rows_impl {
             /// The [`RowSpan`]s of the rows whose first pixels are at `(x[r], y[r])`
             /// with `n[r]` steps: each lane does exactly what [`Field::row`] does, so
             /// the results are the same bits, and the square roots and divisions of
-            /// four (SSE) rows go in one instruction. Lanes a caller does not use may
+            /// four (SSE), eight (AVX2, AVX-512 for `f64`) rows go in one instruction,
+            /// on the vector path chosen at run time ([`crate::simd`]). Lanes a caller does not use may
             /// hold anything (their results are not read).
             #[inline]
             pub fn set_up(
+                f: &Field<$f>,
+                x: &[$f; BATCH],
+                y: &[$f; BATCH],
+                n: &[u32; BATCH],
+            ) -> Self {
+                match crate::simd::path() {
+                    #[cfg(target_arch = "x86_64")]
+                    // SAFETY: `path()` is `Avx512` only where the CPU has AVX-512 F and
+                    // VL, AVX2 and FMA (`Path::supported`).
+                    crate::simd::Path::Avx512 => unsafe { Self::set_up_avx512(f, x, y, n) },
+                    #[cfg(target_arch = "x86_64")]
+                    // SAFETY: `path()` is `Avx2` only where the CPU has AVX2 and FMA.
+                    crate::simd::Path::Avx2 => unsafe { Self::set_up_avx2(f, x, y, n) },
+                    _ => Self::set_up_lanes(f, x, y, n),
+                }
+            }
+
+            /// [`Batch::set_up`] with AVX2: the eight rows in one `f32` vector.
+            #[cfg(target_arch = "x86_64")]
+            #[target_feature(enable = "avx2,fma")]
+            unsafe fn set_up_avx2(
+                f: &Field<$f>,
+                x: &[$f; BATCH],
+                y: &[$f; BATCH],
+                n: &[u32; BATCH],
+            ) -> Self {
+                Self::set_up_lanes(f, x, y, n)
+            }
+
+            /// [`Batch::set_up`] with AVX-512: the eight rows in one `f64` vector.
+            #[cfg(target_arch = "x86_64")]
+            #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
+            unsafe fn set_up_avx512(
+                f: &Field<$f>,
+                x: &[$f; BATCH],
+                y: &[$f; BATCH],
+                n: &[u32; BATCH],
+            ) -> Self {
+                Self::set_up_lanes(f, x, y, n)
+            }
+
+            /// The rows lane by lane, for the vectorizer.
+            #[inline(always)]
+            fn set_up_lanes(
                 f: &Field<$f>,
                 x: &[$f; BATCH],
                 y: &[$f; BATCH],

@@ -91,6 +91,7 @@ pub mod raster;
 pub mod reference;
 pub mod related;
 pub mod scalar;
+pub mod simd;
 pub mod span;
 pub mod span_report;
 pub mod specular;

@@ -232,7 +232,7 @@ impl PhongPixels {
     /// (for any `p_a`, `p_b`).
     pub fn at(&self, n: u32, i: u32) -> bool {
         let ends = i == 0 || i == n;
-        let even_middle = n % 2 == 0 && 2 * i == n;
+        let even_middle = n.is_multiple_of(2) && 2 * i == n;
         match self {
             PhongPixels::All => true,
             PhongPixels::First => i == 0,

@@ -321,7 +321,7 @@ impl<T: Scalar> Span<T> {
     /// # Errors
     /// [`SpanError::ZeroNormal`] naming that pixel.
     pub fn check_nonzero_normal(&self) -> Result<(), SpanError> {
-        if self.is_opposite() && self.n % 2 == 0 {
+        if self.is_opposite() && self.n.is_multiple_of(2) {
             Err(SpanError::ZeroNormal {
                 pixel: self.n as usize / 2,
                 n: self.n,

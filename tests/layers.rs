@@ -37,6 +37,7 @@ const LAYERS: &[(&str, u32)] = &[
     // The catalogue.
     ("method.rs", 6),
     // Fast kernels.
+    ("simd.rs", 7),
     ("fast.rs", 7),
     ("fast_rows.rs", 7),
     ("fixed_span.rs", 7),

@@ -1427,6 +1427,7 @@ fn the_gpu_square_root_is_within_the_profile() {
 fn fast_kernels_pass_under_ieee_at_every_n() {
     use phong_approx::fast::FastSpan;
     use phong_approx::fast_rows::RowSpan;
+    use phong_approx::simd;
     let z = Stereo(0, 0, 1);
     let mut ns: Vec<u32> = (1..=tiered(64, 256)).collect();
     for k in tiered(7, 9)..=tiered(10, 12) {
@@ -1439,6 +1440,10 @@ fn fast_kernels_pass_under_ieee_at_every_n() {
         (z, Stereo(7, 3, 2), Stereo(3, -1, 5)),
     ];
     let mut checked = 0;
+    let paths = simd::Path::supported_paths();
+    let chosen = simd::path();
+    // The largest difference between two paths' values, in ulps of the larger.
+    let mut between_paths = 0.0f64;
     for &n in &ns {
         for &(na, nb, l) in &shapes {
             let c = Case {
@@ -1476,6 +1481,7 @@ fn fast_kernels_pass_under_ieee_at_every_n() {
                         ("FastSpan::gouraud_serial", Method::Gouraud, Box::new(move |o| fast.gouraud_serial(o))),
                         ("FastSpan::euler", Method::Euler, Box::new(move |o| fast.euler(o))),
                         ("FastSpan::phong", Method::Phong, Box::new(move |o| fast.phong(o))),
+                        ("FastSpan::adaptive", Method::Adaptive, Box::new(move |o| { fast.adaptive(1.0, o); })),
                         ("FastSpan::duff_serial", Method::Duff, Box::new(move |o| fast.duff_serial(o))),
                         ("FastSpan::symmetric_phong", Method::SymmetricPhong, Box::new(move |o| fast.symmetric_phong(o))),
                         ("RowSpan::corrected_euler", Method::CorrectedEuler, Box::new(move |o| row.corrected_euler(o))),
@@ -1487,18 +1493,32 @@ fn fast_kernels_pass_under_ieee_at_every_n() {
                             continue;
                         };
                         let want = exact_values(m, &c, &s);
-                        let mut out = vec![0.0 as $f; s.len()];
-                        run(&mut out);
-                        for (i, (g, w)) in out.iter().zip(want.iter()).enumerate() {
-                            let e = (g.q() - w.clone()).abs().to_f64();
-                            assert!(
-                                e <= b,
-                                "{name} ({}): pixel {i} of n = {n}: {e:e} > ieee bound {b:e} ({:.2} of it)\ninputs: {c:?}",
-                                stringify!($f),
-                                e / b
-                            );
+                        // Every vector path the CPU has (`phong_approx::simd`).
+                        let mut first: Option<Vec<$f>> = None;
+                        for &path in &paths {
+                            simd::force(path).unwrap();
+                            let mut out = vec![0.0 as $f; s.len()];
+                            run(&mut out);
+                            for (i, (g, w)) in out.iter().zip(want.iter()).enumerate() {
+                                let e = (g.q() - w.clone()).abs().to_f64();
+                                assert!(
+                                    e <= b,
+                                    "{name} ({}, {path} path): pixel {i} of n = {n}: {e:e} > ieee bound {b:e} ({:.2} of it)\ninputs: {c:?}",
+                                    stringify!($f),
+                                    e / b
+                                );
+                            }
+                            match &first {
+                                None => first = Some(out),
+                                Some(f0) => {
+                                    for (x, y) in f0.iter().zip(&out) {
+                                        let d = (x.q() - y.q()).abs().to_f64() / (x.abs().max(y.abs()) as f64 * 2.0 * u).max(f64::MIN_POSITIVE);
+                                        between_paths = between_paths.max(d);
+                                    }
+                                }
+                            }
+                            checked += 1;
                         }
-                        checked += 1;
                     }
                 }};
             }
@@ -1506,7 +1526,13 @@ fn fast_kernels_pass_under_ieee_at_every_n() {
             run!(f64);
         }
     }
-    assert!(checked > 1000, "{checked}");
+    simd::force(chosen).unwrap();
+    let names: Vec<&str> = paths.iter().map(|p| p.name()).collect();
+    println!(
+        "fast kernels under ieee on the vector paths {}; largest difference between paths {between_paths} ulps",
+        names.join(", ")
+    );
+    assert!(checked > 1000 * paths.len(), "{checked}");
 }
 
 // ------------------------------------- the published sets, through the test kit

@@ -182,7 +182,7 @@ static COUNTER: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new
 
 /// SPIR-V bytes as words (little-endian, the magic number checked).
 fn spirv_words(bytes: &[u8]) -> Result<Vec<u32>, String> {
-    if bytes.len() % 4 != 0 || bytes.len() < 20 {
+    if !bytes.len().is_multiple_of(4) || bytes.len() < 20 {
         return Err(format!(
             "{} bytes is not a SPIR-V module (a header of 5 words, then whole words)",
             bytes.len()

@@ -139,7 +139,7 @@ fn atan_fx(y: &BigInt) -> BigInt {
     let mut k = 0u64;
     while !term.is_zero() {
         let t = &term / BigInt::from(2 * k + 1);
-        if k % 2 == 0 {
+        if k.is_multiple_of(2) {
             sum += t;
         } else {
             sum -= t;
@@ -243,7 +243,7 @@ fn cos_series(x: &BigRational) -> BigRational {
     let mut sum = BigInt::zero();
     let mut k = 0u64;
     while !term.is_zero() {
-        if k % 2 == 0 {
+        if k.is_multiple_of(2) {
             sum += &term;
         } else {
             sum -= &term;

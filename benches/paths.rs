@@ -1,0 +1,159 @@
+//! The fast kernels on each vector path this CPU has (`phong_approx::simd`: the
+//! x86-64 baseline, AVX2 with FMA, AVX-512), forced in turn, in one run:
+//!
+//! - `paths_f32`: the store floor (filling the row with a constant, compiled for the
+//!   same vector width) and the dispatched span kernels — Gouraud, corrected Euler,
+//!   Phong in closed form, the adaptive scheme — at n = 8, 64, 512 and 4096, one span
+//!   per call with its set-up; ids `KERNEL/PATH`.
+//! - `paths_triangle_f32`: the paper's polygon and larger ones (legs S = 8, 32, 128),
+//!   the batched kernels on each path next to Seiler's per-polygon quadratic,
+//!   Bishop–Weimer and glam's per-pixel Phong (which take no path of ours).
+//!
+//! `cargo bench --bench paths`, then `python3 benches/paths_table.py` for the tables
+//! of `docs/performance.md`.
+
+use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use phong_approx::fast::FastSpan;
+use phong_approx::simd::{self, Path};
+use std::time::Duration;
+
+#[path = "common/triangle.rs"]
+#[allow(dead_code)]
+mod triangle;
+use triangle::{pixels, shade, Ctx, Which, METHODS};
+
+const NS: [u32; 4] = [8, 64, 512, 4096];
+const SIZES: [u32; 3] = [8, 32, 128];
+
+/// A torus-like span: unit normals 12° apart, light in front (as `benches/spans.rs`).
+fn span_inputs() -> ([f32; 3], [f32; 3], [f32; 3]) {
+    let (a, b) = (0.35f64, 0.35f64 + 12f64.to_radians());
+    let unit = |v: [f64; 3]| {
+        let r = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+        [(v[0] / r) as f32, (v[1] / r) as f32, (v[2] / r) as f32]
+    };
+    (
+        unit([a.sin(), 0.1, a.cos()]),
+        unit([b.sin(), -0.05, b.cos()]),
+        unit([-0.4, 0.4, 0.8]),
+    )
+}
+
+/// The store floor on `path`: the row filled with one value, the loop compiled for
+/// the path's vector width.
+fn fill(path: Path, out: &mut [f32], v: f32) {
+    #[cfg(target_arch = "x86_64")]
+    {
+        #[target_feature(enable = "avx2,fma")]
+        unsafe fn avx2(out: &mut [f32], v: f32) {
+            out.fill(v)
+        }
+        #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
+        unsafe fn avx512(out: &mut [f32], v: f32) {
+            out.fill(v)
+        }
+        match path {
+            // SAFETY: only the paths this CPU supports are benchmarked.
+            Path::Avx2 => return unsafe { avx2(out, v) },
+            // SAFETY: as above.
+            Path::Avx512 => return unsafe { avx512(out, v) },
+            Path::Baseline => {}
+        }
+    }
+    let _ = path;
+    out.fill(v)
+}
+
+fn spans(c: &mut Criterion) {
+    let (na, nb, l) = span_inputs();
+    let mut g = c.benchmark_group("paths_f32");
+    g.warm_up_time(Duration::from_millis(300))
+        .measurement_time(Duration::from_millis(900))
+        .sample_size(30);
+    type K = fn(&FastSpan<f32>, &mut [f32]);
+    let kernels: [(&str, K); 4] = [
+        ("gouraud_fast", FastSpan::<f32>::gouraud),
+        ("corrected_euler_fast", FastSpan::<f32>::corrected_euler),
+        ("phong_fast", FastSpan::<f32>::phong),
+        ("adaptive_fast", |s, o| {
+            s.adaptive(1.0, o);
+        }),
+    ];
+    let chosen = simd::path();
+    for path in Path::supported_paths() {
+        simd::force(path).expect("a supported path");
+        for n in NS {
+            g.throughput(Throughput::Elements(u64::from(n) + 1));
+            let mut out = vec![0f32; n as usize + 1];
+            g.bench_with_input(
+                BenchmarkId::new(format!("store_floor/{path}"), n),
+                &n,
+                |b, _| b.iter(|| fill(path, &mut out, black_box(0.5))),
+            );
+            for (name, k) in kernels {
+                g.bench_with_input(
+                    BenchmarkId::new(format!("{name}/{path}"), n),
+                    &n,
+                    |b, &n| {
+                        b.iter(|| {
+                            let s =
+                                FastSpan::<f32>::new(black_box(na), black_box(nb), black_box(l), n);
+                            k(&s, &mut out);
+                            black_box(&s);
+                        })
+                    },
+                );
+            }
+        }
+    }
+    simd::force(chosen).expect("the path chosen before");
+    g.finish();
+}
+
+fn triangles(c: &mut Criterion) {
+    triangle::smoke();
+    let mut ctx = Ctx::new();
+    let (normals, l) = triangle::inputs();
+    let which = |name: &str| -> Which {
+        METHODS
+            .iter()
+            .find(|(n, _)| *n == name)
+            .map(|(_, w)| *w)
+            .expect("a method of benches/common/triangle.rs")
+    };
+    let mut g = c.benchmark_group("paths_triangle_f32");
+    g.warm_up_time(Duration::from_millis(300))
+        .measurement_time(Duration::from_millis(900))
+        .sample_size(30);
+    let chosen = simd::path();
+    for s in SIZES {
+        g.throughput(Throughput::Elements(pixels(s)));
+        let mut out = vec![0f32; s as usize + 1];
+        for name in ["seiler", "bishop_weimer", "glam_phong"] {
+            let w = which(name);
+            g.bench_with_input(BenchmarkId::new(name, s), &s, |b, &s| {
+                b.iter(|| shade(w, s, black_box(&normals), black_box(&l), &mut ctx, &mut out))
+            });
+        }
+        for path in Path::supported_paths() {
+            simd::force(path).expect("a supported path");
+            for name in ["batched_corrected_euler", "batched_phong", "batched_fence"] {
+                let w = which(name);
+                g.bench_with_input(
+                    BenchmarkId::new(format!("{name}/{path}"), s),
+                    &s,
+                    |b, &s| {
+                        b.iter(|| {
+                            shade(w, s, black_box(&normals), black_box(&l), &mut ctx, &mut out)
+                        })
+                    },
+                );
+            }
+        }
+        simd::force(chosen).expect("the path chosen before");
+    }
+    g.finish();
+}
+
+criterion_group!(benches, spans, triangles);
+criterion_main!(benches);

@@ -246,3 +246,51 @@ fn the_index_counts_only_substantive_theorems() {
         );
     }
 }
+
+#[path = "common/coq.rs"]
+#[allow(dead_code)]
+mod coq;
+use coq::stated_profile_bounds;
+
+/// The constants the checker applies under `ieee` and `shader`
+/// (`tolerance::profile::proved`) are the Coq statements' own — `α`, `β` (as the
+/// nearest `f64` of the statement's fraction), the largest `n` and the format — and
+/// every binary32 and large binary64 bound theorem of `proofs/Profiles.v` is one the
+/// checker applies: a theorem changed without the table, or the table without the
+/// theorem, fails here.
+#[test]
+fn the_checkers_profile_constants_are_the_theorems() {
+    use phong_approx::tolerance::profile::{proved, Profile};
+    let stated = stated_profile_bounds();
+    assert!(stated.len() >= 29, "{} bound theorems read", stated.len());
+    let mut applied = BTreeSet::new();
+    for m in phong_approx::Method::ALL {
+        for profile in [Profile::Ieee, Profile::Shader] {
+            for (u, e) in [
+                (f64::from(f32::EPSILON) / 2.0, 24),
+                (f64::EPSILON / 2.0, 53),
+            ] {
+                for p in proved(m, profile, u).unwrap_or_default() {
+                    let s = stated.get(p.theorem).unwrap_or_else(|| {
+                        panic!("{} is not a bound theorem of Profiles.v", p.theorem)
+                    });
+                    let f = |(a, b): (u64, u64)| a as f64 / b as f64;
+                    assert_eq!(p.alpha, f(s.alpha), "{}: α", p.theorem);
+                    assert_eq!(p.beta, f(s.beta), "{}: β", p.theorem);
+                    assert_eq!(p.max_n, s.max_n, "{}: largest n", p.theorem);
+                    assert_eq!(s.e, e, "{}: the format", p.theorem);
+                    applied.insert(p.theorem.to_string());
+                }
+            }
+        }
+    }
+    let theorems: BTreeSet<String> = stated
+        .keys()
+        .filter(|t| t.ends_with("_binary32") || t.ends_with("_binary64_large"))
+        .cloned()
+        .collect();
+    assert_eq!(
+        applied, theorems,
+        "the checker's table and Profiles.v's theorems"
+    );
+}

@@ -267,7 +267,8 @@ fn pa_plus_i_times<T: Native>(v: Variant, pa: T, i: T, g: T) -> T {
     }
 }
 
-fn ieee<T: Native>(theorem: &str, method: Method, alpha: f64, beta: f64) {
+fn ieee<T: Native>(theorem: &str, method: Method) {
+    let (alpha, beta) = common::coq::constants(theorem);
     let (mut checked, mut worst) = (0, 0f64);
     for (c, s) in spans() {
         let b = bound(alpha, beta, s.n, T::U);
@@ -287,22 +288,12 @@ fn ieee<T: Native>(theorem: &str, method: Method, alpha: f64, beta: f64) {
 
 #[test]
 fn profile_ieee_gouraud_binary32() {
-    ieee::<f32>(
-        "profile_ieee_gouraud_binary32",
-        Method::Gouraud,
-        1.0006,
-        11.001,
-    );
+    ieee::<f32>("profile_ieee_gouraud_binary32", Method::Gouraud);
 }
 
 #[test]
 fn profile_ieee_gouraud_binary64() {
-    ieee::<f64>(
-        "profile_ieee_gouraud_binary64",
-        Method::Gouraud,
-        1.0006,
-        11.001,
-    );
+    ieee::<f64>("profile_ieee_gouraud_binary64", Method::Gouraud);
 }
 
 #[test]
@@ -310,8 +301,6 @@ fn profile_ieee_corrected_euler_binary32() {
     ieee::<f32>(
         "profile_ieee_corrected_euler_binary32",
         Method::CorrectedEuler,
-        2.2,
-        51.21,
     );
 }
 
@@ -320,8 +309,6 @@ fn profile_ieee_corrected_euler_binary64() {
     ieee::<f64>(
         "profile_ieee_corrected_euler_binary64",
         Method::CorrectedEuler,
-        2.2,
-        51.21,
     );
 }
 
@@ -329,19 +316,20 @@ fn profile_ieee_corrected_euler_binary64() {
 /// the three variants, against the exact plain-Euler run.
 #[test]
 fn profile_ieee_euler_binary32() {
-    ieee::<f32>("profile_ieee_euler_binary32", Method::Euler, 5.55, 121.41);
+    ieee::<f32>("profile_ieee_euler_binary32", Method::Euler);
 }
 
 /// As [`profile_ieee_euler_binary32`] in binary64.
 #[test]
 fn profile_ieee_euler_binary64() {
-    ieee::<f64>("profile_ieee_euler_binary64", Method::Euler, 5.55, 121.41);
+    ieee::<f64>("profile_ieee_euler_binary64", Method::Euler);
 }
 
 /// The closed form of corrected Euler (`p_a + i·(t_0 + (i−1)/2·ds)`) or of plain Euler
 /// (`p_a + i·(di_a + (i−1)/2·ds)`) in the three variants, within `beta·u` of the
 /// method's exact run.
-fn closed<T: Native>(theorem: &str, method: Method, beta: f64) {
+fn closed<T: Native>(theorem: &str, method: Method) {
+    let (_, beta) = common::coq::constants(theorem);
     let (mut checked, mut worst) = (0, 0f64);
     for (c, s) in spans() {
         for v in VARIANTS {
@@ -370,7 +358,6 @@ fn profile_ieee_corrected_euler_closed_binary32() {
     closed::<f32>(
         "profile_ieee_corrected_euler_closed_binary32",
         Method::CorrectedEuler,
-        59.61,
     );
 }
 
@@ -379,7 +366,6 @@ fn profile_ieee_corrected_euler_closed_binary64() {
     closed::<f64>(
         "profile_ieee_corrected_euler_closed_binary64",
         Method::CorrectedEuler,
-        59.61,
     );
 }
 
@@ -387,19 +373,20 @@ fn profile_ieee_corrected_euler_closed_binary64() {
 /// three variants: within `131.41·u` of the exact plain-Euler run at every `n`.
 #[test]
 fn profile_ieee_euler_closed_binary32() {
-    closed::<f32>("profile_ieee_euler_closed_binary32", Method::Euler, 131.41);
+    closed::<f32>("profile_ieee_euler_closed_binary32", Method::Euler);
 }
 
 /// As [`profile_ieee_euler_closed_binary32`] in binary64.
 #[test]
 fn profile_ieee_euler_closed_binary64() {
-    closed::<f64>("profile_ieee_euler_closed_binary64", Method::Euler, 131.41);
+    closed::<f64>("profile_ieee_euler_closed_binary64", Method::Euler);
 }
 
 /// Long spans in `f64` (the `_large` theorems hold up to `2^24` pixels; here `2^16`
 /// in the default tier, `2^20` in the extensive tier), every variant; the exact value
 /// at every 4099th pixel and the last (the exact comparison is the cost).
-fn large(theorem: &str, method: Method, closed: bool, alpha: f64, beta: f64) {
+fn large(theorem: &str, method: Method, closed: bool) {
+    let (alpha, beta) = common::coq::constants(theorem);
     let n = tiered(1 << 16, 1 << 20);
     for (na, nb, l) in [
         (Stereo(0, 0, 1), Stereo(1, 0, 3), Stereo(2, 1, 5)),
@@ -482,8 +469,6 @@ fn profile_ieee_gouraud_binary64_large() {
         "profile_ieee_gouraud_binary64_large",
         Method::Gouraud,
         false,
-        1.0006,
-        11.001,
     );
 }
 
@@ -493,8 +478,6 @@ fn profile_ieee_corrected_euler_binary64_large() {
         "profile_ieee_corrected_euler_binary64_large",
         Method::CorrectedEuler,
         false,
-        2.2,
-        51.21,
     );
 }
 
@@ -504,20 +487,12 @@ fn profile_ieee_corrected_euler_closed_binary64_large() {
         "profile_ieee_corrected_euler_closed_binary64_large",
         Method::CorrectedEuler,
         true,
-        0.0,
-        59.61,
     );
 }
 
 #[test]
 fn profile_ieee_euler_binary64_large() {
-    large(
-        "profile_ieee_euler_binary64_large",
-        Method::Euler,
-        false,
-        5.55,
-        121.41,
-    );
+    large("profile_ieee_euler_binary64_large", Method::Euler, false);
 }
 
 #[test]
@@ -526,8 +501,6 @@ fn profile_ieee_euler_closed_binary64_large() {
         "profile_ieee_euler_closed_binary64_large",
         Method::Euler,
         true,
-        0.0,
-        131.41,
     );
 }
 
@@ -694,13 +667,14 @@ fn gpu_setup(g: Gpu, s: &Span<Q>, how: Division) -> GpuSetup {
     }
 }
 
-fn shader(theorem: &str, method: Method, alpha: f64, beta: f64) {
-    shader_by(theorem, method, &[Division::Once], alpha, beta);
+fn shader(theorem: &str, method: Method) {
+    shader_by(theorem, method, &[Division::Once]);
 }
 
 /// The recurrence of `method` on the four software GPUs, dividing in each of `ways`,
 /// within `(α·n + β)·u` of the exact run.
-fn shader_by(theorem: &str, method: Method, ways: &[Division], alpha: f64, beta: f64) {
+fn shader_by(theorem: &str, method: Method, ways: &[Division]) {
+    let (alpha, beta) = common::coq::constants(theorem);
     let u = f32::U;
     // The software GPU is slow: the spans up to n = 1024 in the default tier.
     let most = tiered(1024, 4096);
@@ -800,7 +774,8 @@ fn gpu_closed(method: Method, g: Gpu, how: Division, halving: Halving, s: &Span<
 /// divisions are slow to emulate: in the default tier each span and GPU takes one of
 /// `ways` in turn (so every way runs on every GPU, on a share of the spans), in the
 /// extensive tier all of them.
-fn shader_closed(theorem: &str, method: Method, ways: &[(Division, Halving)], beta: f64) {
+fn shader_closed(theorem: &str, method: Method, ways: &[(Division, Halving)]) {
+    let (_, beta) = common::coq::constants(theorem);
     let most = tiered(1024, 4096);
     let (mut checked, mut worst) = (0, 0f64);
     let spans = spans().into_iter().filter(|(c, _)| c.n <= most);
@@ -821,12 +796,7 @@ fn shader_closed(theorem: &str, method: Method, ways: &[(Division, Halving)], be
 
 #[test]
 fn profile_shader_gouraud_binary32() {
-    shader(
-        "profile_shader_gouraud_binary32",
-        Method::Gouraud,
-        2.0012,
-        24.002,
-    );
+    shader("profile_shader_gouraud_binary32", Method::Gouraud);
 }
 
 #[test]
@@ -834,8 +804,6 @@ fn profile_shader_corrected_euler_binary32() {
     shader(
         "profile_shader_corrected_euler_binary32",
         Method::CorrectedEuler,
-        4.4,
-        109.7,
     );
 }
 
@@ -844,7 +812,7 @@ fn profile_shader_corrected_euler_binary32() {
 /// [`profile_shader_derived_binary32`]).
 #[test]
 fn profile_shader_euler_binary32() {
-    shader("profile_shader_euler_binary32", Method::Euler, 11.1, 257.9);
+    shader("profile_shader_euler_binary32", Method::Euler);
 }
 
 /// The ways of dividing the `_recip` theorems cover besides one 2.5-ulp division
@@ -864,8 +832,6 @@ fn profile_shader_gouraud_recip_binary32() {
         "profile_shader_gouraud_recip_binary32",
         Method::Gouraud,
         &[Division::Reciprocal, Division::Once],
-        2.0012,
-        28.0014,
     );
 }
 
@@ -878,8 +844,6 @@ fn profile_shader_corrected_euler_recip_binary32() {
         "profile_shader_corrected_euler_recip_binary32",
         Method::CorrectedEuler,
         reciprocal_ways(),
-        4.4,
-        124.31,
     );
 }
 
@@ -891,8 +855,6 @@ fn profile_shader_euler_recip_binary32() {
         "profile_shader_euler_recip_binary32",
         Method::Euler,
         reciprocal_ways(),
-        11.1,
-        288.11,
     );
 }
 
@@ -904,7 +866,6 @@ fn profile_shader_corrected_euler_closed_binary32() {
         "profile_shader_corrected_euler_closed_binary32",
         Method::CorrectedEuler,
         &[(Division::Once, Halving::Exact)],
-        126.5,
     );
 }
 
@@ -920,7 +881,6 @@ fn profile_shader_corrected_euler_closed_recip_binary32() {
         "profile_shader_corrected_euler_closed_recip_binary32",
         Method::CorrectedEuler,
         &ways,
-        141.11,
     );
 }
 
@@ -932,7 +892,6 @@ fn profile_shader_euler_closed_binary32() {
         "profile_shader_euler_closed_binary32",
         Method::Euler,
         &[(Division::Once, Halving::Exact)],
-        277.9,
     );
 }
 
@@ -948,7 +907,6 @@ fn profile_shader_euler_closed_recip_binary32() {
         "profile_shader_euler_closed_recip_binary32",
         Method::Euler,
         &ways,
-        308.11,
     );
 }
 
@@ -968,7 +926,6 @@ fn profile_shader_corrected_euler_closed_half_binary32() {
         "profile_shader_corrected_euler_closed_half_binary32",
         Method::CorrectedEuler,
         &halved(&[Division::Once]),
-        131.5,
     );
 }
 
@@ -981,7 +938,6 @@ fn profile_shader_corrected_euler_closed_half_recip_binary32() {
         "profile_shader_corrected_euler_closed_half_recip_binary32",
         Method::CorrectedEuler,
         &halved(reciprocal_ways()),
-        148.11,
     );
 }
 
@@ -993,7 +949,6 @@ fn profile_shader_euler_closed_half_binary32() {
         "profile_shader_euler_closed_half_binary32",
         Method::Euler,
         &halved(&[Division::Once]),
-        281.65,
     );
 }
 
@@ -1005,7 +960,6 @@ fn profile_shader_euler_closed_half_recip_binary32() {
         "profile_shader_euler_closed_half_recip_binary32",
         Method::Euler,
         &halved(reciprocal_ways()),
-        313.36,
     );
 }
 

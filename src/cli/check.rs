@@ -125,21 +125,7 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
         };
         CliError::arg(arg, e.message)
     })?;
-    // The human verdict goes to standard output, or to standard error when the report
-    // takes standard output (`--report FORMAT -`).
-    let to_stderr = a
-        .report
-        .as_ref()
-        .is_some_and(|r| r.get(1).is_some_and(|f| f == "-"));
-    let human = |text: &str| -> Result<(), CliError> {
-        if to_stderr {
-            use std::io::Write;
-            let _ = write!(std::io::stderr().lock(), "{text}");
-            Ok(())
-        } else {
-            out(format_args!("{text}"))
-        }
-    };
+    let human = human_verdict(a.report.as_deref());
     if loaded.recomputed {
         human(&format!(
             "vectors: not a published set; the expected values of {key} were recomputed from the file's inputs by the exact reference\n"
@@ -218,6 +204,21 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
             code: 1,
             details: Vec::new(),
         }),
+    }
+}
+
+/// Where the human verdict goes: standard output, or standard error when the report
+/// takes standard output (`--report FORMAT -`, given as `report`).
+pub(crate) fn human_verdict(report: Option<&[String]>) -> impl Fn(&str) -> Result<(), CliError> {
+    let to_stderr = report.is_some_and(|r| r.get(1).is_some_and(|f| f == "-"));
+    move |text: &str| {
+        if to_stderr {
+            use std::io::Write;
+            let _ = write!(std::io::stderr().lock(), "{text}");
+            Ok(())
+        } else {
+            out(format_args!("{text}"))
+        }
     }
 }
 

@@ -196,19 +196,7 @@ mod with_gpu {
         method: Method,
         timeout: Duration,
     ) -> Result<(), CliError> {
-        let to_stderr = a
-            .report
-            .as_ref()
-            .is_some_and(|r| r.get(1).is_some_and(|f| f == "-"));
-        let human = |text: &str| -> Result<(), CliError> {
-            if to_stderr {
-                use std::io::Write;
-                let _ = write!(std::io::stderr().lock(), "{text}");
-                Ok(())
-            } else {
-                out(format_args!("{text}"))
-            }
-        };
+        let human = crate::cli::check::human_verdict(a.report.as_deref());
         human(&format!("adapter: {adapter}\n"))?;
         let (results, raw, seconds) = values(gpu, source, path, timeout)?;
         human(&format!(

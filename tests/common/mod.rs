@@ -2,6 +2,7 @@
 //! that a failing case prints (and shrinks to) a few small numbers.
 #![allow(dead_code)]
 
+pub mod coq;
 pub mod emu;
 
 use phong_approx::reference::unit::unit_from_ints;

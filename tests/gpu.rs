@@ -357,6 +357,27 @@ mod on_device {
     }
 
     #[test]
+    fn the_json_report_on_standard_output_holds_the_adapter_and_every_set() {
+        let o = gpu_check(
+            &repo("harness/gpu/gouraud.wgsl"),
+            "gouraud",
+            &["--report", "json", "-"],
+        );
+        let (out, err) = text(&o);
+        assert_eq!(o.status.code(), Some(0), "{out}{err}");
+        // The report takes standard output; the human verdict goes to standard error.
+        assert!(err.contains("adapter: ") && err.contains(" set '"), "{err}");
+        let v: serde_json::Value = serde_json::from_str(&out).expect("JSON on standard output");
+        assert_eq!(
+            v["adapter"].as_str(),
+            Some(gpu().adapter().to_string().as_str())
+        );
+        let sets = v["sets"].as_array().expect("the sets");
+        assert_eq!(sets.len(), 3);
+        assert!(sets.iter().all(|s| s.is_object()), "{out}");
+    }
+
+    #[test]
     fn builtin_runs_every_kernel_and_names_the_adapter() {
         let _device = gpu();
         let o = bin().args(["gpu-check", "--builtin"]).output().unwrap();

@@ -256,3 +256,5 @@ Check profile_shader_euler_closed_half_binary32.
 Print Assumptions profile_shader_euler_closed_half_binary32.
 Check profile_shader_euler_closed_half_recip_binary32.
 Print Assumptions profile_shader_euler_closed_half_recip_binary32.
+Check adaptive_acceptance_contains_every_run.
+Print Assumptions adaptive_acceptance_contains_every_run.

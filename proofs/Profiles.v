@@ -2921,3 +2921,137 @@ Proof.
   rewrite u24 in *.
   apply (recip_mul_covered_5_2 _ _ m x r y); try assumption; lra.
 Qed.
+
+(** ** The adaptive scheme's acceptance set (docs/float.md §10)
+
+    An implementation decides between Gouraud and corrected Euler with its own
+    δ̂ = (Ĝ(j) − Ĉ(j))(1 + θ₁): the two methods' values at the middle pixel j,
+    each within its bound b_G, b_CE of the exact value, subtracted with one
+    rounding (|θ₁| ≤ u); the test's product t̂ = 255·K_d·δ̂ carries at most
+    two more (|θ₂| ≤ 3u covers (1 + u)² − 1). It runs Gouraud when |t̂| < 1
+    and corrected Euler otherwise, and its run is within that method's bound.
+    With x = 255·K_d and δ = G(j) − C(j) the exact difference (|δ| ≤ 1/2 for
+    unit normals, eq_24_delta_unit_closed_form), the checker accepts either
+    method's values where ||x·δ| − 1| is within the band
+    x·(1.01(b_G + b_CE) + 2u) + 4u (src/tolerance.rs, adaptive_too_close) and
+    the exact run's own pick elsewhere. The set contains every such run:
+    outside the band every implementation decides as the exact run does. *)
+
+Definition within_of (b : R) (out ex : nat -> R) (n : nat) : Prop :=
+  forall i, (i <= n)%nat -> Rabs (out i - ex i) <= b.
+
+Definition adaptive_band (x bG bCE u : R) : R :=
+  x * (101 / 100 * (bG + bCE) + 2 * u) + 4 * u.
+
+Definition adaptive_accepts (x delta bG bCE u : R) (G C out : nat -> R) (n : nat) : Prop :=
+  (Rabs (Rabs (x * delta) - 1) <= adaptive_band x bG bCE u
+     /\ (within_of bG out G n \/ within_of bCE out C n))
+  \/ (adaptive_band x bG bCE u < Rabs (Rabs (x * delta) - 1)
+      /\ ((Rabs (x * delta) < 1 /\ within_of bG out G n)
+          \/ (1 <= Rabs (x * delta) /\ within_of bCE out C n))).
+Lemma acc_decision_far_below :
+  forall x u B D Dh th1 th2,
+    0 < x -> 0 <= u <= 1/1024 -> 0 <= B ->
+    Rabs (Dh - D) <= B -> Rabs th1 <= u -> Rabs th2 <= 3 * u ->
+    x * Rabs D < 1 - (x * (101 / 100 * B + 2 * u) + 4 * u) ->
+    Rabs (x * (Dh * (1 + th1)) * (1 + th2)) < 1.
+Proof.
+  intros x u B D Dh th1 th2 Hx Hu HB HD H1 H2 Hlt.
+  assert (HDh : Rabs Dh <= Rabs D + B).
+  { replace Dh with (D + (Dh - D)) by ring.
+    eapply Rle_trans; [apply Rabs_triang|]. lra. }
+  assert (Ha1 : Rabs (1 + th1) <= 1 + u).
+  { eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_R1. lra. }
+  assert (Ha2 : Rabs (1 + th2) <= 1 + 3 * u).
+  { eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_R1. lra. }
+  rewrite !Rabs_mult, (Rabs_pos_eq x) by lra.
+  assert (Hk : 0 <= Rabs Dh) by apply Rabs_pos.
+  assert (Hp1 : 0 <= Rabs (1 + th1)) by apply Rabs_pos.
+  assert (Hp2 : 0 <= Rabs (1 + th2)) by apply Rabs_pos.
+  assert (Hs : x * Rabs Dh <= x * Rabs D + x * B) by nra.
+  assert (Hprod : Rabs (1 + th1) * Rabs (1 + th2) <= (1 + u) * (1 + 3 * u)) by nra.
+  assert (Hxb : 0 <= x * B) by nra.
+  assert (Hxu : 0 <= x * u) by nra.
+  apply Rle_lt_trans with ((x * Rabs D + x * B) * ((1 + u) * (1 + 3 * u))).
+  { replace (x * (Rabs Dh * Rabs (1 + th1)) * Rabs (1 + th2))
+      with ((x * Rabs Dh) * (Rabs (1 + th1) * Rabs (1 + th2))) by ring.
+    apply Rmult_le_compat; nra. }
+  assert (Hc : x * Rabs D + x * B < 1 - 4 * u) by nra.
+  assert (Hpos : 0 < (1 + u) * (1 + 3 * u)) by nra.
+  apply Rlt_le_trans with ((1 - 4 * u) * ((1 + u) * (1 + 3 * u))).
+  { apply Rmult_lt_compat_r; assumption. }
+  nra.
+Qed.
+
+Lemma acc_decision_far_above :
+  forall x u B D Dh th1 th2,
+    0 < x -> 0 <= u <= 1/1024 -> 0 <= B -> Rabs D <= 2 ->
+    Rabs (Dh - D) <= B -> Rabs th1 <= u -> Rabs th2 <= 3 * u ->
+    1 + (x * (101 / 100 * B + 2 * u) + 4 * u) < x * Rabs D ->
+    1 <= Rabs (x * (Dh * (1 + th1)) * (1 + th2)).
+Proof.
+  intros x u B D Dh th1 th2 Hx Hu HB HD2 HD H1 H2 Hgt.
+  assert (HDh : Rabs D - B <= Rabs Dh).
+  { pose proof (Rabs_triang_inv D Dh) as T. rewrite Rabs_minus_sym in T. lra. }
+  assert (Ha1 : 1 - u <= Rabs (1 + th1)).
+  { pose proof (Rabs_triang_inv 1 (- th1)) as T.
+    replace (1 - - th1) with (1 + th1) in T by ring.
+    rewrite Rabs_R1, Rabs_Ropp in T. lra. }
+  assert (Ha2 : 1 - 3 * u <= Rabs (1 + th2)).
+  { pose proof (Rabs_triang_inv 1 (- th2)) as T.
+    replace (1 - - th2) with (1 + th2) in T by ring.
+    rewrite Rabs_R1, Rabs_Ropp in T. lra. }
+  rewrite !Rabs_mult, (Rabs_pos_eq x) by lra.
+  assert (Hxhalf : 1 / 2 < x).
+  { assert (x * Rabs D <= x * 2) by (apply Rmult_le_compat_l; lra).
+    assert (Hxb : 0 <= x * B) by nra. nra. }
+  assert (Hxb : 0 <= x * B) by nra.
+  assert (Hl : 1 + 2 * x * u + 4 * u < x * Rabs D - x * B) by nra.
+  assert (Hm : x * Rabs D - x * B <= x * Rabs Dh) by nra.
+  assert (Hprod : (1 - u) * (1 - 3 * u) <= Rabs (1 + th1) * Rabs (1 + th2)) by nra.
+  apply Rle_trans with ((1 + 2 * x * u + 4 * u) * ((1 - u) * (1 - 3 * u))).
+  { assert (Hxu : x * u <= x * (1 / 1024)) by (apply Rmult_le_compat_l; lra).
+    assert (Hw : 0 <= 2 * x - 8 * x * u - 13 * u) by lra.
+    assert (Hw2 : 0 <= u * (2 * x - 8 * x * u - 13 * u)) by nra.
+    assert (Hw3 : 0 <= 3 * u * u * (2 * x * u + 4 * u)).
+    { apply Rmult_le_pos; [nra|]. assert (0 <= x * u) by nra. lra. }
+    replace ((1 + 2 * x * u + 4 * u) * ((1 - u) * (1 - 3 * u)))
+      with (1 + u * (2 * x - 8 * x * u - 13 * u) + 3 * u * u * (2 * x * u + 4 * u))
+      by ring.
+    lra. }
+  replace (x * (Rabs Dh * Rabs (1 + th1)) * Rabs (1 + th2))
+    with ((x * Rabs Dh) * (Rabs (1 + th1) * Rabs (1 + th2))) by ring.
+  apply Rmult_le_compat; nra.
+Qed.
+
+Theorem adaptive_acceptance_contains_every_run :
+  forall (x u bG bCE Gj Cj Gh Ch th1 th2 : R) (G C out : nat -> R) (n : nat),
+    0 < x -> 0 <= u <= 1/1024 -> 0 <= bG -> 0 <= bCE ->
+    Rabs (Gj - Cj) <= 2 ->
+    Rabs (Gh - Gj) <= bG -> Rabs (Ch - Cj) <= bCE ->
+    Rabs th1 <= u -> Rabs th2 <= 3 * u ->
+    (Rabs (x * ((Gh - Ch) * (1 + th1)) * (1 + th2)) < 1 -> within_of bG out G n) ->
+    (1 <= Rabs (x * ((Gh - Ch) * (1 + th1)) * (1 + th2)) -> within_of bCE out C n) ->
+    adaptive_accepts x (Gj - Cj) bG bCE u G C out n.
+Proof.
+  intros x u bG bCE Gj Cj Gh Ch th1 th2 G C out n
+         Hx Hu HbG HbCE HD2 HG HC H1 H2 Hgo Hce.
+  set (t := Rabs (x * ((Gh - Ch) * (1 + th1)) * (1 + th2))).
+  assert (HD : Rabs ((Gh - Ch) - (Gj - Cj)) <= bG + bCE).
+  { replace ((Gh - Ch) - (Gj - Cj)) with ((Gh - Gj) + - (Ch - Cj)) by ring.
+    eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_Ropp. lra. }
+  unfold adaptive_accepts, adaptive_band.
+  rewrite Rabs_mult, (Rabs_pos_eq x) by lra.
+  destruct (Rle_or_lt (Rabs (x * Rabs (Gj - Cj) - 1))
+                      (x * (101 / 100 * (bG + bCE) + 2 * u) + 4 * u)) as [Hnear|Hfar].
+  - left. split; [exact Hnear|].
+    destruct (Rlt_or_le t 1) as [Ht|Ht]; [left; apply Hgo | right; apply Hce]; exact Ht.
+  - right. split; [exact Hfar|].
+    destruct (Rlt_or_le (x * Rabs (Gj - Cj)) 1) as [Hb|Ha].
+    + left. split; [exact Hb|]. apply Hgo.
+      rewrite Rabs_left in Hfar by lra.
+      apply (acc_decision_far_below x u (bG + bCE) (Gj - Cj)); try assumption; lra.
+    + right. split; [exact Ha|]. apply Hce.
+      rewrite Rabs_pos_eq in Hfar by lra.
+      apply (acc_decision_far_above x u (bG + bCE) (Gj - Cj)); try assumption; lra.
+Qed.

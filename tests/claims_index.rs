@@ -161,17 +161,33 @@ fn proofs_admit_nothing() {
     }
 }
 
-/// The theorems that hold by unfolding definitions or restate another theorem at one
-/// instance: proved and tested like the others, but listed apart and not counted as
-/// results (docs/derivations.md §15, proofs/README.md, README.md).
-const DEFINITIONAL: [&str; 6] = [
-    "eq_2_p_is_linear",
-    "eq_3_q_is_quadratic",
-    "eq_3_e_is_one",
-    "eq_14_arithmetic_series",
-    "eq_14_euler_end_value",
-    "eq_17_corrected_euler_starts_at_pa",
-];
+/// The kinds of `proofs/README.md`'s table "Theorems by kind" (between its
+/// `<!-- kinds -->` markers): theorem → (kind, distinct result).
+fn kinds() -> std::collections::BTreeMap<String, (String, String)> {
+    let readme = read("proofs/README.md");
+    let start = readme
+        .find("<!-- kinds: begin -->")
+        .expect("the kinds table");
+    let end = readme
+        .find("<!-- kinds: end -->")
+        .expect("the kinds table's end");
+    let mut out = std::collections::BTreeMap::new();
+    for line in readme[start..end].lines().filter(|l| l.starts_with("| `")) {
+        let cells: Vec<&str> = line.split('|').map(str::trim).collect();
+        let name = cells[1].trim_matches('`').to_string();
+        let kind = cells[3].to_string();
+        let distinct = cells[4].trim_matches('`').to_string();
+        assert!(
+            ["substantive", "identity", "witness", "definitional"].contains(&kind.as_str()),
+            "{name}: kind {kind}"
+        );
+        assert!(
+            out.insert(name.clone(), (kind, distinct)).is_none(),
+            "{name} twice"
+        );
+    }
+    out
+}
 
 /// Every number written just before `word` in `text` ("57 substantive theorems").
 fn counts_before(text: &str, word: &str) -> Vec<usize> {
@@ -191,30 +207,69 @@ fn counts_before(text: &str, word: &str) -> Vec<usize> {
         .collect()
 }
 
+/// Every theorem has one kind in proofs/README.md's table (substantive, identity,
+/// witness, definitional), every substantive one a distinct result that is itself
+/// substantive, and every count a document states — in all, or on the paper and the
+/// second source — is the table's; docs/derivations.md's index gives each paper
+/// theorem its kind.
 #[test]
 fn the_index_counts_only_substantive_theorems() {
     let all = theorems_with_files();
     let names: BTreeSet<String> = all.iter().map(|(t, _)| t.clone()).collect();
-    for d in DEFINITIONAL {
-        assert!(names.contains(d), "definitional {d} is not a theorem");
+    let kinds = kinds();
+    let listed: BTreeSet<String> = kinds.keys().cloned().collect();
+    assert_eq!(
+        listed, names,
+        "proofs/README.md's kinds table is not the theorems"
+    );
+    for (name, (kind, distinct)) in &kinds {
+        if kind == "substantive" {
+            assert_eq!(
+                kinds.get(distinct).map(|k| k.0.as_str()),
+                Some("substantive"),
+                "{name}: its distinct result {distinct} is not a substantive theorem"
+            );
+        } else {
+            assert_eq!(distinct, "-", "{name} is {kind}: no distinct result");
+        }
     }
-    let substantive = all.len() - DEFINITIONAL.len();
     let paper = paper_theorems();
-    let paper_substantive = paper.len() - DEFINITIONAL.len();
+    let count = |kind: &str, only_paper: bool| {
+        kinds
+            .iter()
+            .filter(|(n, k)| k.0 == kind && (!only_paper || paper.contains(*n)))
+            .count()
+    };
+    let distinct: BTreeSet<&String> = kinds
+        .values()
+        .filter(|k| k.0 == "substantive")
+        .map(|k| &k.1)
+        .collect();
     // The counts the documents state.
+    let phrases = [
+        ("substantive theorems", "substantive"),
+        ("one-step identities", "identity"),
+        ("witness theorems", "witness"),
+        ("definitional statements", "definitional"),
+    ];
     for doc in ["README.md", "proofs/README.md", "docs/derivations.md"] {
         let text = read(doc);
-        let s = counts_before(&text, "substantive theorems");
-        let d = counts_before(&text, "definitional statements");
-        assert!(!s.is_empty() && !d.is_empty(), "{doc} states no counts");
-        for c in s {
-            assert!(
-                c == substantive || c == paper_substantive,
-                "{doc} says {c} substantive theorems; there are {substantive} ({paper_substantive} on the paper and the second source)"
-            );
+        assert!(
+            !counts_before(&text, "substantive theorems").is_empty(),
+            "{doc} states no counts"
+        );
+        for (phrase, kind) in phrases {
+            for c in counts_before(&text, phrase) {
+                assert!(
+                    c == count(kind, false) || c == count(kind, true),
+                    "{doc} says {c} {phrase}; there are {} ({} on the paper and the second source)",
+                    count(kind, false),
+                    count(kind, true)
+                );
+            }
         }
-        for c in d {
-            assert_eq!(c, DEFINITIONAL.len(), "{doc}: definitional statements");
+        for c in counts_before(&text, "distinct substantive results") {
+            assert_eq!(c, distinct.len(), "{doc}: distinct substantive results");
         }
     }
     // The index of docs/derivations.md: one row per paper theorem, its kind given.
@@ -225,26 +280,14 @@ fn the_index_counts_only_substantive_theorems() {
         let cells: Vec<&str> = line.split('|').map(str::trim).collect();
         let name = cells[1].trim_matches('`').to_string();
         let kind = cells[2];
-        let want = if DEFINITIONAL.contains(&name.as_str()) {
-            "definitional"
-        } else {
-            "theorem"
-        };
-        assert_eq!(kind, want, "index row {name}");
+        assert_eq!(
+            Some(kind),
+            kinds.get(&name).map(|k| k.0.as_str()),
+            "index row {name}"
+        );
         assert!(rows.insert(name.clone()), "index row {name} twice");
     }
     assert_eq!(rows, paper, "the index rows are not the paper's theorems");
-    // proofs/README.md lists the definitional ones under their own heading.
-    let readme = read("proofs/README.md");
-    let apart = &readme[readme
-        .find("## Definitional statements")
-        .expect("proofs/README.md lists definitional statements apart")..];
-    for d in DEFINITIONAL {
-        assert!(
-            apart.contains(&format!("`{d}`")),
-            "proofs/README.md: {d} not listed apart"
-        );
-    }
 }
 
 #[path = "common/coq.rs"]

@@ -1099,7 +1099,7 @@ fn phong_ieee<T: Native>(what: &str) {
     let (mut checked, mut refused, mut worst) = (0, 0, 0f64);
     for s in phong_spans() {
         let shape = Shape::of(&s);
-        let Some(b) = phong_ieee(s.n, shape.q_min, T::U) else {
+        let Some(b) = phong_ieee(s.n, shape.q_min, shape.dn, T::U) else {
             refused += 1;
             continue;
         };
@@ -1156,7 +1156,7 @@ fn phong_ieee_derived_binary64() {
 /// The bound `check` applies to `method` under `profile` on `s` (`None`: no bound).
 fn profile_bound_of(method: Method, profile: Profile, s: &Span<Q>, u: f64) -> Option<f64> {
     let shape = phong_approx::tolerance::Shape::of(s);
-    phong_approx::tolerance::profile::profile_bound(method, profile, s.n, shape.q_min, u)
+    phong_approx::tolerance::profile::profile_span_bound(method, profile, &shape, u)
 }
 
 /// Plain Euler (eqs. 12–14) as the recurrence `E += s; s += ds` from `s_0 = di_a`.
@@ -1972,4 +1972,148 @@ fn proved_constants_are_the_theorems_statements() {
         }
     }
     assert!(seen >= 10, "only {seen} proved bounds");
+}
+
+/// `adaptive_acceptance_contains_every_run` (proofs/Profiles.v): outside the band of
+/// `tolerance::adaptive_too_close` every implementation of the theorem's class decides
+/// as the exact run does. An adversary puts every error toward the threshold — `δ̂`'s
+/// difference `δ ± (b_G + b_CE)`, its subtraction's rounding `±u`, the product's `±3u`
+/// — exactly in rationals, at exact `δ` just outside the band, over a grid of `255·K_d`,
+/// unit roundoffs (binary16, 32, 64) and bounds. Just outside the band without its
+/// `4u` term (the product's rounding), some such run does flip: the term is needed.
+#[test]
+fn adaptive_acceptance_contains_every_run() {
+    use phong_approx::tolerance::adaptive_too_close;
+    let q = |x: f64| Q::from_float(x).expect("finite");
+    let one = Q::from_integer(1.into());
+    let (mut checked, mut flips_without_4u) = (0, 0);
+    for u in [2f64.powi(-11), 2f64.powi(-24), 2f64.powi(-53)] {
+        for x in [0.5, 0.6, 1.0, 1.7, 4.0, 255.0] {
+            let kd = x / 255.0;
+            let xq = q(255.0) * q(kd);
+            for (mg, mce) in [
+                (0.0, 0.0),
+                (1.0, 3.0),
+                (7.0, 40.0),
+                (40.0, 7.0),
+                (200.0, 200.0),
+            ] {
+                let (b_g, b_ce) = (mg * u, mce * u);
+                let e = 1.01 * (b_g + b_ce) + 2.0 * u;
+                let old = x * e;
+                let band = old + 4.0 * u;
+                // Distances from the threshold, in units of `255·K_d·δ`: outside the
+                // band, and between the band without its `4u` and the band.
+                let at = [
+                    band * 1.01,
+                    band * 1.5,
+                    band * 3.0,
+                    old + (band - old) * 0.5,
+                ];
+                for d in at {
+                    for above in [false, true] {
+                        for sign in [1.0, -1.0] {
+                            let big_x = if above { 1.0 + d } else { 1.0 - d };
+                            let delta = sign * big_x / x;
+                            if big_x <= 0.0 || delta.abs() > 2.0 {
+                                continue;
+                            }
+                            let dq = q(delta);
+                            let toward = if above { -one.clone() } else { one.clone() };
+                            let s = if delta < 0.0 {
+                                -one.clone()
+                            } else {
+                                one.clone()
+                            };
+                            let dh = &dq + &s * &toward * q(b_g + b_ce);
+                            let th1 = &toward * q(u);
+                            let th2 = &toward * q(3.0 * u);
+                            let t = &xq * &dh * (&one + th1) * (&one + th2);
+                            let picks_gouraud = t.abs() < one;
+                            let exact_gouraud = (&xq * &dq).abs() < one;
+                            // The distance from the threshold, exactly.
+                            let dist = ((&xq * &dq).abs() - &one).abs();
+                            if !adaptive_too_close(delta, kd, b_g, b_ce, u) {
+                                assert_eq!(
+                                    picks_gouraud, exact_gouraud,
+                                    "u = {u:e}, 255·K_d = {x}, b_G = {b_g:e}, b_CE = {b_ce:e}, δ = {delta:e}: the run decides otherwise outside the band"
+                                );
+                                checked += 1;
+                            } else if dist > &xq * q(e) && picks_gouraud != exact_gouraud {
+                                flips_without_4u += 1;
+                            }
+                        }
+                    }
+                }
+            }
+        }
+    }
+    assert!(checked > 500, "{checked}");
+    assert!(
+        flips_without_4u > 0,
+        "no run flips just outside the band without its 4u"
+    );
+    eprintln!("{checked} adversarial runs outside the band decide as the exact run; {flips_without_4u} flip outside the band without its 4u");
+}
+
+/// Phong with a Quake-style reciprocal square root — the magic constant `0x5f3759df`
+/// and two Newton steps, about `4.7·10⁻⁶` relative error (≈ 78u in binary32), outside
+/// the `ieee` class (a correctly rounded square root and division) — fails `check`
+/// under `ieee` on a published set: Phong's derived bound, read with the case's own
+/// `|N_b − N_a|` (docs/float.md §18.4), is tighter than its error where the normals
+/// are close. The same kernel with `1/√q` passes every set.
+#[test]
+fn quake_rsqrt_phong_fails_ieee() {
+    fn quake(x: f32) -> f32 {
+        let mut y = f32::from_bits(0x5f37_59df_u32.wrapping_sub(x.to_bits() >> 1));
+        for _ in 0..2 {
+            y = y * (1.5 - 0.5 * x * y * y);
+        }
+        y
+    }
+    fn exact_rsqrt(x: f32) -> f32 {
+        1.0 / x.sqrt()
+    }
+    // Horner's closed form in f32: (A·i + B)·rsqrt((C·i + D)·i + E).
+    fn horner(s: &Span<Q>, rsqrt: fn(f32) -> f32) -> Vec<Q> {
+        let v = |x: &phong_approx::Vec3<Q>| {
+            [x.x.clone(), x.y.clone(), x.z.clone()].map(|c| f32::of(&c))
+        };
+        let (na, nb, l) = (v(&s.na), v(&s.nb), v(&s.l));
+        let dot = |a: [f32; 3], b: [f32; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+        let nf = s.n as f32;
+        let k = [0, 1, 2].map(|j| (nb[j] - na[j]) / nf);
+        let (a, b, c, d, e) = (
+            dot(k, l),
+            dot(na, l),
+            dot(k, k),
+            2.0 * dot(k, na),
+            dot(na, na),
+        );
+        (0..=s.n)
+            .map(|i| {
+                let x = i as f32;
+                ((a * x + b) * rsqrt((c * x + d) * x + e)).q()
+            })
+            .collect()
+    }
+    let mut failed = Vec::new();
+    for set in ["typical", "edge", "paper"] {
+        let spans = published_spans(set);
+        let good = published_f32(set, Method::Phong, Profile::Ieee, |id| {
+            horner(&spans[id], exact_rsqrt)
+        });
+        assert!(good.is_ok(), "{set}, the kernel with 1/√q:\n{good}");
+        let quake_run = published_f32(set, Method::Phong, Profile::Ieee, |id| {
+            horner(&spans[id], quake)
+        });
+        if !quake_run.is_ok() {
+            failed.push(set);
+        }
+    }
+    assert!(
+        !failed.is_empty(),
+        "the Quake rsqrt passed every published set under ieee"
+    );
+    eprintln!("Phong with the Quake rsqrt fails ieee on {failed:?}");
 }

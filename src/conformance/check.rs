@@ -873,7 +873,7 @@ pub fn check_in(
 /// specular power: `None` for the other tolerances and where no bound holds. Specular
 /// cases shade `N·H`, not `N·L`, so the reference bound takes no edge values there.
 fn case_bound(c: &Case, method: Method, tol: Tolerance, specular: bool) -> Option<f64> {
-    use crate::tolerance::profile::{profile_bound, Profile};
+    use crate::tolerance::profile::{profile_bound, profile_span_bound, Profile};
     match tol {
         Tolerance::Profile {
             profile: Profile::Reference,
@@ -885,9 +885,11 @@ fn case_bound(c: &Case, method: Method, tol: Tolerance, specular: bool) -> Optio
         },
         // The vector file's q_min is to nearest: a relative 2^-40 below it is below
         // the span's.
-        Tolerance::Profile { profile, u } => {
-            profile_bound(method, profile, c.n, c.q_min * (1.0 - 2f64.powi(-40)), u)
-        }
+        // The case's exact span gives Phong's derived bound its |N_b − N_a|.
+        Tolerance::Profile { profile, u } => match case_shape(c) {
+            Some(shape) => profile_span_bound(method, profile, &shape, u),
+            None => profile_bound(method, profile, c.n, c.q_min * (1.0 - 2f64.powi(-40)), u),
+        },
         _ => None,
     }
 }

@@ -158,7 +158,7 @@ pub fn acceptance<T: Format>(
     let shape = crate::tolerance::Shape::of(span);
     let b = match profile {
         Profile::Reference => crate::tolerance::span_bound(method, &shape, T::U),
-        p => crate::tolerance::profile::profile_bound(method, p, span.n, shape.q_min, T::U),
+        p => crate::tolerance::profile::profile_span_bound(method, p, &shape, T::U),
     }?;
     let values = method.values(span).ok()?;
     let interval = |x: f64, b: f64| {
@@ -175,7 +175,7 @@ pub fn acceptance<T: Format>(
     if method == Method::Adaptive {
         let bound = |m: Method| match profile {
             Profile::Reference => crate::tolerance::span_bound(m, &shape, T::U),
-            p => crate::tolerance::profile::profile_bound(m, p, span.n, shape.q_min, T::U),
+            p => crate::tolerance::profile::profile_span_bound(m, p, &shape, T::U),
         };
         let (bg, bce) = (bound(Method::Gouraud)?, bound(Method::CorrectedEuler)?);
         let d = crate::adaptive::decide(span, &crate::BigRational::from_integer(1.into()));

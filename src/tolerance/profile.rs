@@ -535,8 +535,13 @@ pub fn duff_derived(a: &Arith, n: u32, q_min: f64) -> Option<f64> {
 /// `(1 + δ_j)` whose `κ_j` sum to at most `w_p` (for `p`) and `w_q` (for `q`) — 11
 /// and 15 under `ieee`, 25 and 36 under `shader` — so it is off by at most
 /// `γ_w` times the sum of the monomials' absolute values: at most `3` for `p`
-/// (`(1 + 2t)`, `|N_a| = |N_b| = |L| = 1`) and `9` for `q` (`(1 + 2t)²`). With
-/// `e_p = 3γ_{w_p} + η'`, `e_q = 9γ_{w_q} + η'`, `q̂ ≥ q_min − e_q` and `|p| ≤ √q`:
+/// (`(1 + 2t)`, `|N_a| = |N_b| = |L| = 1`) and `9` for `q` (`(1 + 2t)²`). Or, with
+/// `d ≥ |N_b − N_a|` (`dn`): every rounding after the inputs' acts on `N_b − N_a` as
+/// one quantity, so the sums are `1 + t·d` and `(1 + t·d)²`, and the inputs' own
+/// roundings add at most `2γ_in(1 + γ_{w_p})` to `p` and `4γ_in(1 + d)(1 + γ_{w_q})² +
+/// 4γ_in²(1 + γ_{w_q})³` to `q` (the difference of two rounded inputs, `|N| ≤ 1 + t·d`,
+/// Cauchy–Schwarz); the smaller of the two forms is taken for each (`e_p`, `e_q`, plus
+/// `η'`). With `q̂ ≥ q_min − e_q` and `|p| ≤ √q`:
 ///
 /// `|v̂ − v| ≤ (e_p/√(q_min − e_q) + e_q/(√(q_min − e_q)·(√q_min + √(q_min − e_q))))·(1 + γ_f) + γ_f + η'`,
 ///
@@ -544,8 +549,8 @@ pub fn duff_derived(a: &Arith, n: u32, q_min: f64) -> Option<f64> {
 /// `None` where `q` may round to half of `q_min` (`e_q ≥ q_min/2`: normals that
 /// nearly cancel, where no bound of this form holds) or `n > 2^24` (`i` must be
 /// exact).
-pub fn phong_derived(a: &Arith, n: u32, q_min: f64) -> Option<f64> {
-    if !(q_min > 0.0 && q_min.is_finite()) || n == 0 || n > 1 << 24 {
+pub fn phong_derived(a: &Arith, n: u32, q_min: f64, dn: f64) -> Option<f64> {
+    if !(q_min > 0.0 && q_min.is_finite()) || n == 0 || n > 1 << 24 || dn.is_nan() {
         return None;
     }
     let u = a.u;
@@ -557,8 +562,12 @@ pub fn phong_derived(a: &Arith, n: u32, q_min: f64) -> Option<f64> {
     let w_q = 2.0 * w_n + a.mul + 2.0 * a.add;
     // Underflow or flushing: at most η per rounding, carried by at most i ≤ n.
     let eta = 64.0 * (f64::from(n) + 1.0) * a.eta;
-    let e_p = 3.0 * gamma(w_p, u) + eta;
-    let e_q = 9.0 * gamma(w_q, u) + eta;
+    let (g_p, g_q, g_in) = (gamma(w_p, u), gamma(w_q, u), gamma(a.input, u));
+    let d = dn.max(0.0);
+    let e_p = (3.0 * g_p).min((1.0 + d) * g_p + 2.0 * g_in * (1.0 + g_p)) + eta;
+    let inputs_q =
+        4.0 * g_in * (1.0 + d) * (1.0 + g_q).powi(2) + 4.0 * g_in * g_in * (1.0 + g_q).powi(3);
+    let e_q = (9.0 * g_q).min((1.0 + d).powi(2) * g_q + inputs_q) + eta;
     if e_q >= q_min / 2.0 {
         return None;
     }
@@ -570,8 +579,9 @@ pub fn phong_derived(a: &Arith, n: u32, q_min: f64) -> Option<f64> {
 }
 
 /// [`phong_derived`] under `ieee` in the format of unit roundoff `u`.
-pub fn phong_ieee(n: u32, q_min: f64, u: f64) -> Option<f64> {
-    phong_derived(&arith(Profile::Ieee, u)?, n, q_min)
+/// `dn ≥ |N_b − N_a|` (2 for any unit normals).
+pub fn phong_ieee(n: u32, q_min: f64, dn: f64, u: f64) -> Option<f64> {
+    phong_derived(&arith(Profile::Ieee, u)?, n, q_min, dn)
 }
 
 /// How a profile's bound for a method is known.
@@ -774,12 +784,36 @@ pub fn status(method: crate::Method, profile: Profile, u: f64) -> Option<Status>
 /// The bound of `method` under `profile` (not `Reference`, whose bounds are
 /// [`crate::tolerance::bound`]) on a span of `n` steps and smallest `q_i` `q_min`, in
 /// the format of unit roundoff `u`: the proved bound ([`proved_bound`]) or the derived
-/// one ([`phong_derived`], [`duff_derived`]); `None` where neither covers it.
+/// one ([`phong_derived`], [`duff_derived`]); `None` where neither covers it. For any
+/// unit normals; [`profile_span_bound`] reads more of a known span.
 pub fn profile_bound(
     method: crate::Method,
     profile: Profile,
     n: u32,
     q_min: f64,
+    u: f64,
+) -> Option<f64> {
+    bound_with(method, profile, n, q_min, 2.0, u)
+}
+
+/// [`profile_bound`] for a known span: Phong's derived bound with the span's own
+/// `|N_b − N_a|` ([`crate::tolerance::Shape::dn`]; up to 3× tighter on the close
+/// normals of a mesh, [`phong_derived`]).
+pub fn profile_span_bound(
+    method: crate::Method,
+    profile: Profile,
+    shape: &crate::tolerance::Shape,
+    u: f64,
+) -> Option<f64> {
+    bound_with(method, profile, shape.n, shape.q_min, shape.dn, u)
+}
+
+fn bound_with(
+    method: crate::Method,
+    profile: Profile,
+    n: u32,
+    q_min: f64,
+    dn: f64,
     u: f64,
 ) -> Option<f64> {
     use crate::Method;
@@ -795,7 +829,7 @@ pub fn profile_bound(
         Status::Derived(_) => {
             let a = arith(profile, u)?;
             match method {
-                Method::Phong => phong_derived(&a, n, q_min),
+                Method::Phong => phong_derived(&a, n, q_min, dn),
                 Method::Duff | Method::SymmetricPhong => duff_derived(&a, n, q_min),
                 Method::Adaptive => Some(
                     proved_bound(Method::Gouraud, profile, n, u)?.max(proved_bound(

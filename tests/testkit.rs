@@ -463,12 +463,19 @@ mod documented {
     /// command that reproduces it.
     #[test]
     fn the_documented_property_catches_the_planted_bug_readably() {
-        use proptest::test_runner::{Config, TestError, TestRunner};
-        let mut runner = TestRunner::new(Config {
-            cases: 64,
-            failure_persistence: None,
-            ..Config::default()
-        });
+        use proptest::test_runner::{Config, RngAlgorithm, TestError, TestRng, TestRunner};
+        // A fixed seed in every tier: on the close normals of a mesh the mutant's
+        // error is small, and 64 random spans do not always reach a failing one (a
+        // fresh seed in the extensive tier let it pass once); this test is about how
+        // the failure reads.
+        let mut runner = TestRunner::new_with_rng(
+            Config {
+                cases: 1024,
+                failure_persistence: None,
+                ..Config::default()
+            },
+            TestRng::deterministic_rng(RngAlgorithm::ChaCha),
+        );
         let result = runner.run(&strategy::mesh_span(1..=64), |span| {
             let r = check_span(
                 Method::CorrectedEuler,

@@ -376,7 +376,22 @@ pub fn proved(method: crate::Method, profile: Profile, u: f64) -> Option<Vec<Pro
                 "profile_shader_euler_closed_half_recip_binary32",
             ),
         ]),
-        _ => None,
+        // The formats and profiles the theorems are not stated for (the reference and
+        // fixed-point profiles have bounds of their own).
+        (Method::Gouraud | Method::CorrectedEuler | Method::Euler, _) => None,
+        // No theorem: a derived bound ([`status`]) or none under these profiles.
+        (
+            Method::Phong
+            | Method::Duff
+            | Method::SymmetricPhong
+            | Method::Adaptive
+            | Method::Angular
+            | Method::AngularTable(_)
+            | Method::Spherical
+            | Method::Binary
+            | Method::BishopWeimer,
+            _,
+        ) => None,
     }
 }
 

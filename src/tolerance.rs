@@ -270,7 +270,14 @@ impl Shape {
                     .iter()
                     .map(|c| c * c)
                     .fold(crate::BigRational::zero(), |a, b| a + b);
-                (d2.to_f64() * (1.0 + 2f64.powi(-50))).sqrt() * (1.0 + 2f64.powi(-50))
+                // A nonzero |N_b − N_a|² below f64's normal range stays above its
+                // square root's (2^-511), not 0.
+                let up = (d2.to_f64() * (1.0 + 2f64.powi(-50))).sqrt() * (1.0 + 2f64.powi(-50));
+                if d2.is_zero() {
+                    0.0
+                } else {
+                    up.max(2f64.powi(-511))
+                }
             },
         }
     }

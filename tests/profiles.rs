@@ -2355,3 +2355,32 @@ fn tightness_report() {
         println!("{row} {w:.3} | {:.1} |", 1.0 / w);
     });
 }
+
+/// `Shape::dn`, which Phong's derived bound reads, is at least `|N_b − N_a|`: on
+/// normals from 2 apart down to `2^-699` apart, where `|N_b − N_a|²` is below `f64`'s
+/// range (and must not read as 0).
+#[test]
+fn shape_dn_is_at_least_the_distance_of_the_normals() {
+    use common::emu::pow2;
+    let one = Q::from_integer(1.into());
+    let na = phong_approx::Vec3::new(Q::zero(), Q::zero(), one.clone());
+    let l = phong_approx::Vec3::new(q(3, 5), q(0, 1), q(4, 5));
+    for e in [0i64, 1, 10, 30, 200, 520, 699] {
+        // N_b = (2m, 0, 1 − m²)/(1 + m²), unit, |N_b − N_a|² = 4m²/(1 + m²) exactly.
+        let m = pow2(-e);
+        let den = &one + &m * &m;
+        let nb = phong_approx::Vec3::new(q(2, 1) * &m / &den, Q::zero(), (&one - &m * &m) / &den);
+        let d2 = q(4, 1) * &m * &m / &den;
+        let s = Span::new(na.clone(), nb, l.clone(), 7).unwrap();
+        let dn = phong_approx::tolerance::Shape::of(&s).dn;
+        let dn_q = Q::from_float(dn).unwrap();
+        assert!(
+            &dn_q * &dn_q >= d2,
+            "m = 2^-{e}: dn = {dn:e} below |N_b − N_a|"
+        );
+        assert!(
+            dn <= 2.0 * (2.0 * m.to_f64()).max(2f64.powi(-511)) + 1e-300,
+            "m = 2^-{e}: dn = {dn:e}"
+        );
+    }
+}

@@ -438,7 +438,7 @@ fn round_up_3(x: f64) -> String {
 /// where none is derived or proved, and for every profile with `normalize`, whose
 /// float normalization no derivation covers.
 fn error_bounds(r: &Request, u: f64) -> ErrorBounds {
-    use crate::tolerance::profile::{profile_span_bound, Profile};
+    use crate::tolerance::profile::{profile_span_bound, Form, Profile};
     let shape = (!r.normalize)
         .then(|| Span::new(r.na.clone(), r.nb.clone(), r.l.clone(), r.n).ok())
         .flatten()
@@ -447,7 +447,7 @@ fn error_bounds(r: &Request, u: f64) -> ErrorBounds {
         let shape = shape.as_ref()?;
         match p {
             Profile::Reference => crate::tolerance::span_bound(m, shape, u),
-            p => profile_span_bound(m, p, shape, u),
+            p => profile_span_bound(m, p, Form::Any, shape, u),
         }
     };
     // The adaptive scheme where its test is too close to call

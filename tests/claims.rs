@@ -5,7 +5,7 @@
 //! (checked by `tests/claims_index.rs`) and is explained in `docs/derivations.md`.
 //! The float error of the same quantities is measured in `tests/float_bounds.rs`.
 
-mod common;
+use crate::common;
 
 use common::*;
 use num_traits::{One, Signed, Zero};

@@ -290,10 +290,7 @@ fn the_index_counts_only_substantive_theorems() {
     assert_eq!(rows, paper, "the index rows are not the paper's theorems");
 }
 
-#[path = "common/coq.rs"]
-#[allow(dead_code)]
-mod coq;
-use coq::stated_profile_bounds;
+use crate::common::coq::stated_profile_bounds;
 
 /// The constants the checker applies under `ieee` and `shader`
 /// (`tolerance::profile::proved`) are the Coq statements' own — `α`, `β` (as the

@@ -2,7 +2,7 @@
 //! closed forms computed here in rationals (not by the recurrences under test), and
 //! one clear line with exit code 2 for every kind of bad input.
 
-mod runner;
+use crate::runner;
 use runner::bin;
 
 use num_bigint::BigInt;

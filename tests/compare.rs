@@ -1,7 +1,7 @@
 //! The comparison harness (`phong-approx compare`): its reference against exact
 //! rationals, the relations the tables must show, and the command line.
 
-mod runner;
+use crate::runner;
 
 use phong_approx::raster::compare::{
     index, render_compare, CompareOptions, Shader, COLUMNS, SHININESS,

@@ -876,6 +876,7 @@ fn check_profile_fixed_judges_a_span_unit() {
             frac_bits: f,
         },
         u: 0.0,
+        form: phong_approx::tolerance::profile::Form::Any,
     };
     // The Q·.16 span unit (ε/(n+1) when `mutant`) on every case of `file`, checked.
     let unit = |file: &VectorFile, tol: Tolerance, mutant: bool| {
@@ -962,6 +963,7 @@ fn check_profile_fixed_is_exact_up_to_51_fractional_bits() {
                 frac_bits: f,
             },
             u: 0.0,
+            form: phong_approx::tolerance::profile::Form::Any,
         };
         for mutant in [false, true] {
             let mut failed = 0;
@@ -993,4 +995,84 @@ fn check_profile_fixed_is_exact_up_to_51_fractional_bits() {
     for bad in ["fixed:3.52", "fixed:3.60", "fixed:8.54"] {
         assert!(bad.parse::<Profile>().is_err(), "{bad}");
     }
+}
+
+/// Corrected Euler's closed form in `f32`, `p_a + i·(t_0 + (i − 1)/2·ds)`, with the
+/// set-up of eqs. 15–22 (the graph of `profile_ieee_corrected_euler_closed_binary32`),
+/// and `extra` added to the middle pixel.
+fn ce_closed_f32(s: &phong_approx::testkit::Inputs<f32>, extra: f32) -> Vec<f32> {
+    let d = |a: [f32; 3], b: [f32; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    let n = s.n as f32;
+    let k = [0, 1, 2].map(|j| (s.nb[j] - s.na[j]) / n);
+    let (a, pa, pb) = (d(k, s.l), d(s.na, s.l), d(s.nb, s.l));
+    let (c, dd) = (d(k, k), 2.0 * d(k, s.na));
+    let dia = a - pa / 2.0 * dd;
+    let dib = a - pb / 2.0 * (2.0 * n * c + dd);
+    let ds = (dib - dia) / n;
+    let pn = pa + n * dia + n * (n - 1.0) / 2.0 * ds;
+    let t0 = dia - (pn - pb) / n;
+    (0..=s.n)
+        .map(|i| {
+            let x = i as f32;
+            let v = pa + x * (t0 + (x - 1.0) / 2.0 * ds);
+            if i == s.n / 2 {
+                v + extra
+            } else {
+                v
+            }
+        })
+        .collect()
+}
+
+/// A declared form (`Suite::form`, `check --form`) is judged by its own theorems: a
+/// correct closed form passes every set declared `closed`; one 80 u off at the middle
+/// pixel passes undeclared wherever the recurrence's `(2.2·n + 51.21)·u` exceeds its
+/// error (n ≥ 20 here) and fails declared `closed` (`59.61·u`) on every case; `check`
+/// refuses `--form` for a method whose forms no theorem tells apart, and with
+/// `--tolerance`.
+#[test]
+fn a_declared_closed_form_is_judged_by_its_own_theorem() {
+    use phong_approx::testkit::prelude::*;
+    let good = Suite::published()
+        .form(Form::Closed)
+        .check_f32(|s| ce_closed_f32(s, 0.0));
+    assert!(good.is_ok(), "{good}");
+    let off = |s: &Inputs<f32>| ce_closed_f32(s, 80.0 * f32::EPSILON / 2.0);
+    let undeclared = Suite::published().check_f32(off);
+    let declared = Suite::published().form(Form::Closed).check_f32(off);
+    assert_eq!(declared.failures().len(), declared.cases(), "{declared}");
+    let mut long = 0;
+    for c in phong_approx::testkit::SETS
+        .iter()
+        .flat_map(|set| &phong_approx::testkit::published(set).unwrap().cases)
+        .filter(|c| c.n >= 20)
+    {
+        long += 1;
+        assert!(
+            !undeclared.failures().iter().any(|f| f.case == c.id),
+            "{}: undeclared, 80 u passes at n = {}",
+            c.id,
+            c.n
+        );
+    }
+    assert!(long > 20, "{long}");
+    assert!(
+        declared.to_string().contains("for the closed form"),
+        "{declared}"
+    );
+
+    // The command line: --form with a method whose forms are not told apart, with
+    // --tolerance, and an unknown form are refused with one line and exit 2.
+    let p = tmp("form.csv", "case,pixel,value\n");
+    let v = typical_path();
+    for extra in [
+        &["--method", "phong", "--form", "closed"][..],
+        &["--form", "closed", "--tolerance", "levels=1"][..],
+        &["--form", "horner"][..],
+    ] {
+        let (code, _, err) = run_check(&v, &p, extra);
+        assert_eq!(code, 2, "{extra:?}: {err}");
+        assert!(err.contains("--form"), "{extra:?}: {err}");
+    }
+    std::fs::remove_file(&p).ok();
 }

@@ -2,7 +2,7 @@
 //! `tests/claims.rs`. Each either checks an exact counterexample or measures what a
 //! source states as a fact, and prints what it found.
 
-mod common;
+use crate::common;
 
 use common::*;
 use num_traits::{One, Signed};

@@ -2,7 +2,7 @@
 //! `src/tolerance.rs`) and against their recurrence twins, in `f32` and `f64`, on the
 //! edge cases and random spans; and the 4-ulp claim of the Phong kernels.
 
-mod common;
+use crate::common;
 
 use common::*;
 use phong_approx::fast::{phong_rsqrt_f32, FastSpan};
@@ -232,7 +232,7 @@ fn short_spans_and_leftovers() {
 
 /// The ratio (derived bound) / (worst error found) per fast kernel and format, over the
 /// edge, targeted and 200 random targeted spans: the second table of `docs/float.md`
-/// §13. Extensive tier: `PHONG_APPROX_TIER=extensive cargo test --release --test fast --
+/// §13. Extensive tier: `PHONG_APPROX_TIER=extensive cargo test --release --test numerics fast:: --
 /// --ignored --nocapture`.
 #[test]
 #[ignore = "extensive tier"]

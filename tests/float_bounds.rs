@@ -11,7 +11,7 @@
 //! same names. The exact run of each (method, case) is computed once and shared by the
 //! `f32` and `f64` tests (`exact_values`). `bound_ratio_report` is in the extensive tier.
 
-mod common;
+use crate::common;
 
 use approx::assert_relative_eq;
 use common::*;
@@ -200,7 +200,7 @@ fn bound_search_f64() {
 /// The ratio (derived bound) / (worst error found) per method and format, over the
 /// edge, random and targeted cases and a longer search: the table of
 /// `docs/float.md`. Extensive tier: run with `PHONG_APPROX_TIER=extensive cargo test
-/// --release --test float_bounds -- --ignored --nocapture`.
+/// --release --test bounds float_bounds:: -- --ignored --nocapture`.
 #[test]
 #[ignore = "extensive tier"]
 fn bound_ratio_report() {

@@ -17,7 +17,7 @@
 //! the same recurrence with each value truncated to a multiple of 2^-320, which moves
 //! pixel `m` by at most `m²·2^-320` (`spherical_truncated_run_is_the_exact_run`).
 
-mod common;
+use crate::common;
 
 use common::*;
 use phong_approx::related::{binary, spherical};
@@ -344,7 +344,7 @@ fn binary_truncated_run_is_the_exact_run() {
 /// The ratio (derived bound) / (worst error found) per method and format, at the case
 /// where the error comes closest to its bound, over the edge, random and targeted
 /// cases and 200 more spans of `arb_hard`: the rows of `docs/float.md` §13. Run with
-/// `cargo test --release --test float_bounds_related -- --ignored --nocapture`.
+/// `cargo test --release --test bounds float_bounds_related:: -- --ignored --nocapture`.
 #[test]
 #[ignore = "extensive tier"]
 fn related_bound_ratio_report() {

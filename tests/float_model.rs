@@ -11,7 +11,7 @@
 //! `k = (N_b − N_a)/n`, eqs. 2–3, 10–11, 14–17 in the code's order, then
 //! `p += t; t += ds` and `g += dp`.
 
-mod common;
+use crate::common;
 
 use common::*;
 use num_traits::Zero;

@@ -1,7 +1,7 @@
 //! The low-precision scalars: binary16 rounding, fixed-point rounding and saturation,
 //! and spans set up in each format. Reference: exact rationals.
 
-mod common;
+use crate::common;
 
 use common::{q, Q};
 use phong_approx::lowp::{f16, I16F16, I8F8};

@@ -1,7 +1,7 @@
 //! Method-level behaviour: typed errors for bad input (never a panic, never a NaN),
 //! the specular term, the quantiser, and each method against an independent formula.
 
-mod common;
+use crate::common;
 
 use common::*;
 use num_traits::One;

@@ -3,8 +3,8 @@
 //! level decided with rationals.
 #![cfg(feature = "mpfr")]
 
-mod common;
-mod runner;
+use crate::common;
+use crate::runner;
 
 use common::*;
 use num_traits::Signed;

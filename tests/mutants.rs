@@ -5,7 +5,7 @@
 //! bound for a method rejects every case of it ("no bound"), which is listed apart:
 //! it is a refusal, not evidence that the bound separates the mutant.
 //!
-//! Prints the table mutant × profile × set (`cargo test --test mutants -- --nocapture`).
+//! Prints the table mutant × profile × set (`cargo test --test numerics mutants:: -- --nocapture`).
 
 use phong_approx::conformance::check::{check, Results, Tolerance};
 use phong_approx::conformance::vectors::{Case, VectorFile};
@@ -227,7 +227,11 @@ fn verdict(m: &Mutant, file: &VectorFile, profile: Profile) -> (usize, usize, bo
     let u = f64::from(f32::EPSILON) / 2.0;
     let tol = match profile {
         Profile::Reference => Tolerance::Default { u },
-        p => Tolerance::Profile { profile: p, u },
+        p => Tolerance::Profile {
+            profile: p,
+            u,
+            form: phong_approx::tolerance::profile::Form::Any,
+        },
     };
     let key = m.method.name().into_owned();
     let reports = check(file, &results, m.method, &key, tol, false).unwrap();

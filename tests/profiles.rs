@@ -29,7 +29,7 @@ mod common;
 use common::emu::{round_dir, toward_zero, Dir, Format, BINARY32};
 use common::*;
 use num_traits::{Signed, Zero};
-use phong_approx::tolerance::profile::Profile;
+use phong_approx::tolerance::profile::{Form, Profile};
 use phong_approx::{Method, Scalar, Span};
 
 /// `(α·n + β)·u`, the form of every bound of `proofs/Profiles.v`.
@@ -1167,8 +1167,19 @@ fn phong_ieee_derived_binary64() {
 
 /// The bound `check` applies to `method` under `profile` on `s` (`None`: no bound).
 fn profile_bound_of(method: Method, profile: Profile, s: &Span<Q>, u: f64) -> Option<f64> {
+    profile_bound_in(method, profile, Form::Any, s, u)
+}
+
+/// [`profile_bound_of`] for an implementation that declares its form.
+fn profile_bound_in(
+    method: Method,
+    profile: Profile,
+    form: Form,
+    s: &Span<Q>,
+    u: f64,
+) -> Option<f64> {
     let shape = phong_approx::tolerance::Shape::of(s);
-    phong_approx::tolerance::profile::profile_span_bound(method, profile, &shape, u)
+    phong_approx::tolerance::profile::profile_span_bound(method, profile, form, &shape, u)
 }
 
 /// Plain Euler (eqs. 12–14) as the recurrence `E += s; s += ds` from `s_0 = di_a`.
@@ -1328,11 +1339,11 @@ fn gpu_duff_or_phong(g: Gpu, s: &Span<Q>, horner: bool) -> Vec<Q> {
     let (na, nb, l) = (vec(&s.na), vec(&s.nb), vec(&s.l));
     let nf = qi(s.n);
     let k = [0, 1, 2].map(|j| g.div(&g.sub(&nb[j], &na[j]), &nf));
-    let a = g.dot(&k, &l);
-    let b = g.dot(&na, &l);
-    let c = g.dot(&k, &k);
-    let d = g.mul(&q(2, 1), &g.dot(&k, &na));
-    let e = g.dot(&na, &na);
+    let (a, b) = feeds(Role::P, || (g.dot(&k, &l), g.dot(&na, &l)));
+    let (c, d, e) = feeds(Role::Q, || {
+        let c = g.dot(&k, &k);
+        (c.clone(), g.mul(&q(2, 1), &g.dot(&k, &na)), g.dot(&na, &na))
+    });
     let axpy = |x: &Q, y: &Q, z: &Q| {
         if g.fused {
             g.r(x * y + z)
@@ -1340,24 +1351,117 @@ fn gpu_duff_or_phong(g: Gpu, s: &Span<Q>, horner: bool) -> Vec<Q> {
             g.add(&g.mul(x, y), z)
         }
     };
-    let (mut p, mut qq, mut dq) = (b.clone(), e.clone(), g.add(&c, &d));
-    let two_c = g.mul(&q(2, 1), &c);
+    let (mut p, mut qq, mut dq) = (b.clone(), e.clone(), feeds(Role::Q, || g.add(&c, &d)));
+    let two_c = feeds(Role::Q, || g.mul(&q(2, 1), &c));
     let mut out = Vec::with_capacity(s.n as usize + 1);
     for i in 0..=s.n {
+        let x = qi(i);
         let (pi, qi_) = if horner {
-            let x = qi(i);
-            (axpy(&a, &x, &b), axpy(&axpy(&c, &x, &d), &x, &e))
+            (
+                feeds(Role::P, || axpy(&a, &x, &b)),
+                feeds(Role::Q, || axpy(&axpy(&c, &x, &d), &x, &e)),
+            )
         } else {
             (p.clone(), qq.clone())
         };
-        out.push(g.div(&pi, &g.sqrt(&qi_)));
+        let root = feeds(Role::Q, || g.sqrt(&qi_));
+        out.push(feeds(Role::P, || g.div(&pi, &root)));
         if !horner && i < s.n {
-            p = g.add(&p, &a);
-            qq = g.add(&qq, &dq);
-            dq = g.add(&dq, &two_c);
+            p = feeds(Role::P, || g.add(&p, &a));
+            feeds(Role::Q, || {
+                qq = g.add(&qq, &dq);
+                dq = g.add(&dq, &two_c);
+            });
         }
     }
     out
+}
+
+/// How a Phong computes each pixel, for the adversary: the forms docs/float.md §18.4
+/// covers besides Horner's closed form.
+#[derive(Clone, Copy, Debug)]
+enum GpuPhong {
+    /// `N_i = N_a + i·k`, `p_i/√q_i`.
+    PerPixel,
+    /// `N_i = (1 − t)·N_a + t·N_b` with `t = i/n`, `p_i·(1/√q_i)`.
+    Lerp,
+    /// `N_i = N_a + i·k`, then `(N_i·(1/√q_i))·L`.
+    NormalizeThenDot,
+}
+
+/// Phong per pixel on the GPU model, in the form `form`.
+fn gpu_phong_form(g: Gpu, s: &Span<Q>, form: GpuPhong) -> Vec<Q> {
+    let vec = |x: &phong_approx::Vec3<Q>| [g.input(&x.x), g.input(&x.y), g.input(&x.z)];
+    let (na, nb, l) = (vec(&s.na), vec(&s.nb), vec(&s.l));
+    let nf = qi(s.n);
+    let one = q(1, 1);
+    let k = [0, 1, 2].map(|j| g.div(&g.sub(&nb[j], &na[j]), &nf));
+    let axpy = |x: &Q, y: &Q, z: &Q| {
+        if g.fused {
+            g.r(x * y + z)
+        } else {
+            g.add(&g.mul(x, y), z)
+        }
+    };
+    (0..=s.n)
+        .map(|i| {
+            let x = qi(i);
+            let normal = match form {
+                GpuPhong::PerPixel | GpuPhong::NormalizeThenDot => {
+                    [0, 1, 2].map(|j| axpy(&k[j], &x, &na[j]))
+                }
+                GpuPhong::Lerp => {
+                    let t = g.div(&x, &nf);
+                    let omt = g.sub(&one, &t);
+                    [0, 1, 2].map(|j| axpy(&t, &nb[j], &g.mul(&omt, &na[j])))
+                }
+            };
+            let root = feeds(Role::Q, || g.sqrt(&g.dot(&normal, &normal)));
+            feeds(Role::P, || match form {
+                GpuPhong::PerPixel => g.div(&g.dot(&normal, &l), &root),
+                GpuPhong::Lerp => g.mul(&g.dot(&normal, &l), &g.div(&one, &root)),
+                GpuPhong::NormalizeThenDot => {
+                    let r = g.div(&one, &root);
+                    g.dot(&normal.map(|c| g.mul(&c, &r)), &l)
+                }
+            })
+        })
+        .collect()
+}
+
+/// Symmetric Phong on the GPU model: Duff's forward differences walked to the middle
+/// pixel for `√q_i`, reused as `√q_{n−i}` on the right half (§4), `p` by additions.
+fn gpu_symmetric_phong(g: Gpu, s: &Span<Q>) -> Vec<Q> {
+    let vec = |x: &phong_approx::Vec3<Q>| [g.input(&x.x), g.input(&x.y), g.input(&x.z)];
+    let (na, nb, l) = (vec(&s.na), vec(&s.nb), vec(&s.l));
+    let nf = qi(s.n);
+    let k = [0, 1, 2].map(|j| g.div(&g.sub(&nb[j], &na[j]), &nf));
+    let (a, b) = feeds(Role::P, || (g.dot(&k, &l), g.dot(&na, &l)));
+    let half = (s.n / 2) as usize;
+    let root = feeds(Role::Q, || {
+        let c = g.dot(&k, &k);
+        let d = g.mul(&q(2, 1), &g.dot(&k, &na));
+        let (mut qq, mut dq) = (g.dot(&na, &na), g.add(&c, &d));
+        let two_c = g.mul(&q(2, 1), &c);
+        let mut root = Vec::with_capacity(half + 1);
+        for _ in 0..=half {
+            root.push(g.sqrt(&qq));
+            qq = g.add(&qq, &dq);
+            dq = g.add(&dq, &two_c);
+        }
+        root
+    });
+    let mut p = b;
+    let n = s.n as usize;
+    feeds(Role::P, || {
+        (0..=n)
+            .map(|i| {
+                let v = g.div(&p, &root[i.min(n - i)]);
+                p = g.add(&p, &a);
+                v
+            })
+            .collect()
+    })
 }
 
 /// [`search`] under `shader` with the software GPUs, on the spans up to `n = 256`
@@ -1860,6 +1964,7 @@ fn adaptive_threshold_accepts_either_method() {
             Tolerance::Profile {
                 profile: Profile::Ieee,
                 u,
+                form: phong_approx::tolerance::profile::Form::Any,
             },
             false,
             u,
@@ -2141,6 +2246,25 @@ fn quake_rsqrt_phong_fails_ieee() {
 thread_local! {
     /// Operations the adversary has rounded on this thread (its sign pattern's clock).
     static ADV_OPS: std::cell::Cell<u64> = const { std::cell::Cell::new(0) };
+    /// What the operations being rounded feed: `p`, `q` or both.
+    static ADV_ROLE: std::cell::Cell<Role> = const { std::cell::Cell::new(Role::Shared) };
+}
+
+/// What an operation feeds, for the adversary's directed patterns: the numerator `p`,
+/// the squared length `q` (and its square root), or both (the normal, `k`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Role {
+    Shared,
+    P,
+    Q,
+}
+
+/// Runs `f` with its operations marked as feeding `role`.
+fn feeds<T>(role: Role, f: impl FnOnce() -> T) -> T {
+    let before = ADV_ROLE.with(|r| r.replace(role));
+    let y = f();
+    ADV_ROLE.with(|r| r.set(before));
+    y
 }
 
 /// The adversary of a profile's model (`FloatModelK.v`): every operation's result is
@@ -2148,7 +2272,10 @@ thread_local! {
 /// operation's class (`ieee`: 1 everywhere, and an exactly representable result stays
 /// exact as IEEE 754 returns it; `shader`: 2 for inputs, additions and products, 5 for
 /// a division, 9 for a square root), the sign from a pattern: all `+` (`seed` 0), all
-/// `−` (1), or pseudo-random per operation. The result is then kept on a grid 40 bits
+/// `−` (1), directed (2, 3: what feeds `p` up and what feeds `q` down, or the reverse,
+/// so that `p/√q` moves as far as it can; every other result toward `+∞` (2) or `−∞`
+/// (3), so that the errors of a sum add up), or pseudo-random per operation (4 and
+/// up). The result is then kept on a grid 40 bits
 /// finer than the format (and `κu` taken `2^-30·u` smaller), so that it stays in the
 /// model and the rationals stay small.
 #[derive(Clone, Copy, Debug)]
@@ -2194,9 +2321,16 @@ impl Adv {
             c.set(v + 1);
             v
         });
+        let role = ADV_ROLE.with(std::cell::Cell::get);
         let up = match self.seed {
             0 => true,
             1 => false,
+            // Directed: what feeds `p` one way, what feeds `q` the other, so that the
+            // value `p/√q` moves as far as the model lets it.
+            2 | 3 if role != Role::Shared => (role == Role::P) == (self.seed == 2),
+            // Elsewhere every result toward +∞ (2) or −∞ (3): each rounding's error the
+            // same sign, which is the worst case of a sum of them (the recurrences).
+            2 | 3 => x.is_positive() == (self.seed == 2),
             s => {
                 // splitmix64 of (seed, i)
                 let mut z = s.wrapping_mul(0x9e37_79b9_7f4a_7c15) ^ i;
@@ -2222,50 +2356,85 @@ impl Adv {
     }
 }
 
-/// A form of a method on the model's arithmetic.
-type AdvForm = (Method, &'static str, fn(Gpu, &Span<Q>) -> Vec<Q>);
+/// A form of a method on the model's arithmetic: the method, the form's name, the form
+/// it declares (its bound is that form's: `check --form`), the run.
+type AdvForm = (Method, &'static str, Form, fn(Gpu, &Span<Q>) -> Vec<Q>);
 
 /// The forms the adversary runs: the recurrences, the closed forms, Duff's forward
-/// differences and Phong's closed form, every division by `n` one division (and, under
+/// differences, symmetric Phong, and Phong's four forms (Horner's closed form, the
+/// per-pixel normal, the interpolation in `t` and normalize-then-dot), every division
+/// by `n` one division (and, under
 /// `shader`, `·(1/n)` and `(i − 1)/2` halved through `·(1/2)`).
 fn adversary_forms(shader: bool) -> Vec<AdvForm> {
     let mut v: Vec<AdvForm> = vec![
-        (Method::Gouraud, "recurrence", |g, s| {
+        (Method::Gouraud, "recurrence", Form::Any, |g, s| {
             gpu_recurrence(Method::Gouraud, g, Division::Once, s)
         }),
-        (Method::CorrectedEuler, "recurrence", |g, s| {
-            gpu_recurrence(Method::CorrectedEuler, g, Division::Once, s)
-        }),
-        (Method::CorrectedEuler, "closed form", |g, s| {
-            gpu_closed(Method::CorrectedEuler, g, Division::Once, Halving::Exact, s)
-        }),
-        (Method::Euler, "recurrence", |g, s| {
+        (
+            Method::CorrectedEuler,
+            "recurrence",
+            Form::Recurrence,
+            |g, s| gpu_recurrence(Method::CorrectedEuler, g, Division::Once, s),
+        ),
+        (
+            Method::CorrectedEuler,
+            "closed form",
+            Form::Closed,
+            |g, s| gpu_closed(Method::CorrectedEuler, g, Division::Once, Halving::Exact, s),
+        ),
+        (Method::Euler, "recurrence", Form::Recurrence, |g, s| {
             gpu_recurrence(Method::Euler, g, Division::Once, s)
         }),
-        (Method::Euler, "closed form", |g, s| {
+        (Method::Euler, "closed form", Form::Closed, |g, s| {
             gpu_closed(Method::Euler, g, Division::Once, Halving::Exact, s)
         }),
-        (Method::Duff, "forward differences", |g, s| {
+        (Method::Duff, "forward differences", Form::Any, |g, s| {
             gpu_duff_or_phong(g, s, false)
         }),
-        (Method::Phong, "Horner's closed form", |g, s| {
+        (Method::Phong, "Horner's closed form", Form::Any, |g, s| {
             gpu_duff_or_phong(g, s, true)
         }),
+        (
+            Method::Phong,
+            "per-pixel normal, p/√q",
+            Form::Any,
+            |g, s| gpu_phong_form(g, s, GpuPhong::PerPixel),
+        ),
+        (
+            Method::Phong,
+            "(1 − t)·N_a + t·N_b, p·(1/√q)",
+            Form::Any,
+            |g, s| gpu_phong_form(g, s, GpuPhong::Lerp),
+        ),
+        (Method::Phong, "normalize, then dot", Form::Any, |g, s| {
+            gpu_phong_form(g, s, GpuPhong::NormalizeThenDot)
+        }),
+        (
+            Method::SymmetricPhong,
+            "forward differences, mirrored roots",
+            Form::Any,
+            |g, s| gpu_symmetric_phong(g, s),
+        ),
     ];
     if shader {
         v.extend([
             (
                 Method::Gouraud,
                 "recurrence, ·(1/n)",
+                Form::Any,
                 (|g, s| gpu_recurrence(Method::Gouraud, g, Division::Reciprocal, s))
                     as fn(Gpu, &Span<Q>) -> Vec<Q>,
             ),
-            (Method::CorrectedEuler, "recurrence, ·(1/n)", |g, s| {
-                gpu_recurrence(Method::CorrectedEuler, g, Division::Reciprocal, s)
-            }),
+            (
+                Method::CorrectedEuler,
+                "recurrence, ·(1/n)",
+                Form::Recurrence,
+                |g, s| gpu_recurrence(Method::CorrectedEuler, g, Division::Reciprocal, s),
+            ),
             (
                 Method::CorrectedEuler,
                 "closed form, ·(1/n), (i−1)·(1/2)",
+                Form::Closed,
                 |g, s| {
                     gpu_closed(
                         Method::CorrectedEuler,
@@ -2303,10 +2472,10 @@ fn adversary_runs(
         ("shader binary32", Profile::Shader, f32::U, Adv::shader),
     ];
     for (model, profile, u, adv) in models {
-        for (method, form, run) in adversary_forms(profile == Profile::Shader) {
+        for (method, form, declared, run) in adversary_forms(profile == Profile::Shader) {
             let mut worst = 0f64;
             for (c, s) in spans.iter().filter(|(c, _)| c.n <= most) {
-                let Some(b) = profile_bound_of(method, profile, s, u) else {
+                let Some(b) = profile_bound_in(method, profile, declared, s, u) else {
                     continue;
                 };
                 for seed in 0..seeds {
@@ -2316,6 +2485,9 @@ fn adversary_runs(
                         fused: false,
                         adv: Some(adv(seed)),
                     };
+                    // Each run's sign pattern starts afresh: the table does not depend on
+                    // which runs came before.
+                    ADV_OPS.with(|c| c.set(0));
                     let got = run(g, s);
                     let what = format!("adversary {model} {method} {form} seed {seed}");
                     worst = worst.max(within(&what, c, s, method, &got, b));
@@ -2327,22 +2499,23 @@ fn adversary_runs(
 }
 
 /// The model's adversary stays within every bound `check` applies, on the profile
-/// spans up to n = 16 (64 in the extensive tier) with three sign patterns (all up, all
-/// down, one mixed); the report below goes further.
+/// spans up to n = 16 (64 in the extensive tier) with four sign patterns (all up, all
+/// down, the two directed ones); the report below goes further.
 #[test]
 fn the_models_adversary_stays_within_the_bounds() {
     let spans = spans();
     let mut rows = 0;
-    adversary_runs(tiered(16, 64), 3, &spans, |row, w| {
+    adversary_runs(tiered(16, 64), 4, &spans, |row, w| {
         assert!(w > 0.0, "{row} never rounded");
         rows += 1;
     });
-    assert_eq!(rows, 7 + 7 + 10);
+    assert_eq!(rows, 11 + 11 + 14);
 }
 
 /// How tight each bound is: the worst fraction of the bound `check` applies that the
 /// model's adversary reaches, per (method, form, profile, format), over the profile
-/// spans up to n = 256 and four sign patterns — the table of docs/float.md §18.6.
+/// spans up to n = 256 and six sign patterns (two of them pseudo-random) — the table of
+/// docs/float.md §18.6.
 /// Extensive tier: `PHONG_APPROX_TIER=extensive cargo test --release --test profiles
 /// tightness_report -- --ignored --nocapture`.
 #[test]
@@ -2351,7 +2524,7 @@ fn tightness_report() {
     let spans = spans();
     println!("| method | form | profile and format | worst error ÷ bound | bound ÷ worst error |");
     println!("|---|---|---|---:|---:|");
-    adversary_runs(256, 4, &spans, |row, w| {
+    adversary_runs(256, 6, &spans, |row, w| {
         println!("{row} {w:.3} | {:.1} |", 1.0 / w);
     });
 }

@@ -1,7 +1,7 @@
 //! The algebraic identities once more, with quickcheck's generators and shrinking
 //! (small integer stereographic parameters → exact unit normals).
 
-mod common;
+use crate::common;
 
 use common::*;
 use phong_approx::{Method, Span};

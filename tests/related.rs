@@ -4,7 +4,7 @@
 //!
 //! Method docs: `src/related/*.rs`; discussion: `docs/comparison.md`.
 
-mod common;
+use crate::common;
 
 use common::{arb_case, arb_stereo, q, Q};
 use phong_approx::angular::CosTable;

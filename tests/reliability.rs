@@ -2,7 +2,7 @@
 //! attacker would has a test here that reproduces it, and now passes. Numbers refer
 //! to the list in docs/conformance.md, "Limits and exit codes".
 
-mod runner;
+use crate::runner;
 use runner::{bin, code, refused, run, stderr};
 
 use num_bigint::BigInt;
@@ -1628,6 +1628,7 @@ fn q6_the_library_refuses_meaningless_tolerances() {
                 frac_bits: u32::MAX,
             },
             u: 1e-7,
+            form: phong_approx::tolerance::profile::Form::Any,
         },
         Tolerance::Profile {
             profile: Profile::Fixed {
@@ -1635,6 +1636,7 @@ fn q6_the_library_refuses_meaningless_tolerances() {
                 frac_bits: 16,
             },
             u: 1e-7,
+            form: phong_approx::tolerance::profile::Form::Any,
         },
     ] {
         assert!(t.validate().is_err(), "{t:?}");
@@ -1987,7 +1989,7 @@ proptest::proptest! {
         for method in [Method::Gouraud, Method::CorrectedEuler, Method::Phong] {
             let _ = fixed_bound(method, n, m, f);
         }
-        for t in [Tolerance::Abs(x), Tolerance::Ulps(x), Tolerance::Default { u }, Tolerance::Profile { profile: p, u }] {
+        for t in [Tolerance::Abs(x), Tolerance::Ulps(x), Tolerance::Default { u }, Tolerance::Profile { profile: p, u, form: phong_approx::tolerance::profile::Form::Any }] {
             let _ = t.validate();
         }
         let _ = phong_approx::angular::CosTable::<f64>::new(size);

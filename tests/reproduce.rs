@@ -1,6 +1,6 @@
 //! The rasterizer and `phong-approx reproduce`, end to end on a few frames.
 
-mod runner;
+use crate::runner;
 use runner::bin;
 
 use phong_approx::raster::experiment::Experiment;

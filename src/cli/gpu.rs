@@ -116,7 +116,11 @@ mod with_gpu {
         profile: Profile,
     ) -> Result<Vec<(&'static str, Vec<CaseReport>)>, CliError> {
         let key = method_key(method);
-        let tol = Tolerance::Profile { profile, u: U32 };
+        let tol = Tolerance::Profile {
+            profile,
+            u: U32,
+            form: phong_approx::tolerance::profile::Form::Any,
+        };
         SETS.iter()
             .filter_map(|set| Some((*set, published(set)?)))
             .map(|(set, file)| {

@@ -68,6 +68,10 @@ pub enum Tolerance {
         profile: crate::tolerance::profile::Profile,
         /// The unit roundoff of the implementation's arithmetic.
         u: f64,
+        /// The form the implementation declares it computes
+        /// ([`crate::tolerance::profile::Form`]; `Any` unless declared): the bound is
+        /// then that form's theorems' alone.
+        form: crate::tolerance::profile::Form,
     },
 }
 
@@ -79,7 +83,14 @@ impl fmt::Display for Tolerance {
             Tolerance::Abs(x) => write!(f, "abs={x}"),
             Tolerance::Ulps(x) => write!(f, "ulps={x}"),
             Tolerance::Default { .. } => f.write_str("the reference profile's bound"),
-            Tolerance::Profile { profile, .. } => write!(f, "the {profile} profile's bound"),
+            Tolerance::Profile {
+                profile,
+                form: crate::tolerance::profile::Form::Any,
+                ..
+            } => write!(f, "the {profile} profile's bound"),
+            Tolerance::Profile { profile, form, .. } => {
+                write!(f, "the {profile} profile's bound for the {form} form")
+            }
         }
     }
 }
@@ -878,6 +889,7 @@ fn case_bound(c: &Case, method: Method, tol: Tolerance, specular: bool) -> Optio
         Tolerance::Profile {
             profile: Profile::Reference,
             u,
+            ..
         }
         | Tolerance::Default { u } => match case_shape(c).filter(|_| !specular) {
             Some(shape) => crate::tolerance::span_bound(method, &shape, u),
@@ -886,9 +898,12 @@ fn case_bound(c: &Case, method: Method, tol: Tolerance, specular: bool) -> Optio
         // The vector file's q_min is to nearest: a relative 2^-40 below it is below
         // the span's.
         // The case's exact span gives Phong's derived bound its |N_b − N_a|.
-        Tolerance::Profile { profile, u } => match case_shape(c) {
-            Some(shape) => profile_span_bound(method, profile, &shape, u),
-            None => profile_bound(method, profile, c.n, c.q_min * (1.0 - 2f64.powi(-40)), u),
+        Tolerance::Profile { profile, u, form } => match case_shape(c) {
+            Some(shape) => profile_span_bound(method, profile, form, &shape, u),
+            None if form == crate::tolerance::profile::Form::Any => {
+                profile_bound(method, profile, c.n, c.q_min * (1.0 - 2f64.powi(-40)), u)
+            }
+            None => None,
         },
         _ => None,
     }
@@ -987,6 +1002,7 @@ fn case_report(
         Tolerance::Profile {
             profile: Profile::Reference,
             u,
+            ..
         } => Tolerance::Default { u },
         t => t,
     };
@@ -1105,8 +1121,13 @@ fn case_report(
     let allowed = match tol {
         Tolerance::Levels(n) => format!("{n} levels"),
         Tolerance::Ulps(n) => format!("{n} ulps"),
-        Tolerance::Profile { profile, u } if unbounded => {
-            if specular && matches!(profile, Profile::Shader | Profile::Fixed { .. }) {
+        Tolerance::Profile { profile, u, form } if unbounded => {
+            use crate::tolerance::profile::Form;
+            if form != Form::Any && !Form::applies_to(method) {
+                format!(
+                    "a declared form tells apart only euler's and corrected-euler's theorems; {method} takes the form any"
+                )
+            } else if specular && matches!(profile, Profile::Shader | Profile::Fixed { .. }) {
                 format!(
                     "the {profile} profile does not model the specular power (pass --tolerance)"
                 )
@@ -1115,6 +1136,8 @@ fn case_report(
                     "the {profile} profile has no bound for {method} in this format \
                      (--profile reference judges this crate's own evaluation; or pass --tolerance)"
                 )
+            } else if form == Form::Closed && matches!(profile, Profile::Fixed { .. }) {
+                format!("the {profile} profile's theorems cover the loop, not the closed form")
             } else if let Profile::Fixed { int_bits, .. } = profile {
                 format!(
                     "the {profile} profile's registers may overflow on this span: its values and slopes must stay below 2^{} in {int_bits} integer bits (docs/float.md §14); more integer bits, or pass --tolerance",

@@ -58,7 +58,7 @@ pub mod strategy;
 mod suite;
 
 pub use crate::conformance::check::Tolerance;
-pub use crate::tolerance::profile::Profile;
+pub use crate::tolerance::profile::{Form, Profile};
 pub use crate::Method;
 pub use inputs::{published, Format, Inputs, SETS};
 pub use report::{Failure, FailureInputs, Report, SetSummary};
@@ -75,7 +75,7 @@ pub mod prelude {
     #[cfg(feature = "quickcheck")]
     pub use super::ArbSpan;
     pub use super::{
-        acceptance, check_span, command, oracle, Failure, Inputs, KitError, Method, Profile,
+        acceptance, check_span, command, oracle, Failure, Form, Inputs, KitError, Method, Profile,
         Report, Suite, Tolerance,
     };
     pub use crate::reference::unit::unit_from_ints;

@@ -83,7 +83,11 @@ pub fn check_span<T: Format, F: FnMut(&Inputs<T>) -> Vec<T>>(
     let case =
         case_for_span(&methods, "span", &span.to_string(), span).map_err(KitError::Oracle)?;
     let file = file_of("span", vec![case]);
-    let tol = Tolerance::Profile { profile, u: T::U };
+    let tol = Tolerance::Profile {
+        profile,
+        u: T::U,
+        form: crate::tolerance::profile::Form::Any,
+    };
     let mut report = Report::new(method, format!("the {profile} profile's bound"), T::NAME);
     judge(&mut report, "span", &file, method, tol, false, &mut shade);
     Ok(report)
@@ -158,7 +162,13 @@ pub fn acceptance<T: Format>(
     let shape = crate::tolerance::Shape::of(span);
     let b = match profile {
         Profile::Reference => crate::tolerance::span_bound(method, &shape, T::U),
-        p => crate::tolerance::profile::profile_span_bound(method, p, &shape, T::U),
+        p => crate::tolerance::profile::profile_span_bound(
+            method,
+            p,
+            crate::tolerance::profile::Form::Any,
+            &shape,
+            T::U,
+        ),
     }?;
     let values = method.values(span).ok()?;
     let interval = |x: f64, b: f64| {
@@ -175,7 +185,13 @@ pub fn acceptance<T: Format>(
     if method == Method::Adaptive {
         let bound = |m: Method| match profile {
             Profile::Reference => crate::tolerance::span_bound(m, &shape, T::U),
-            p => crate::tolerance::profile::profile_span_bound(m, p, &shape, T::U),
+            p => crate::tolerance::profile::profile_span_bound(
+                m,
+                p,
+                crate::tolerance::profile::Form::Any,
+                &shape,
+                T::U,
+            ),
         };
         let (bg, bce) = (bound(Method::Gouraud)?, bound(Method::CorrectedEuler)?);
         let d = crate::adaptive::decide(span, &crate::BigRational::from_integer(1.into()));

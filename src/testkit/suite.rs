@@ -5,7 +5,7 @@ use super::inputs::{published, Format, Inputs, SETS};
 use super::report::{self, case_inputs, Failure, Report};
 use crate::conformance::check::{check_in, Results, Tolerance};
 use crate::conformance::vectors::{method_key, Case, VectorFile};
-use crate::tolerance::profile::Profile;
+use crate::tolerance::profile::{Form, Profile};
 use crate::Method;
 
 /// The published vectors for one method, judged by one profile or tolerance.
@@ -14,6 +14,7 @@ pub struct Suite {
     sets: Vec<&'static str>,
     method: Method,
     profile: Profile,
+    form: Form,
     tolerance: Option<Tolerance>,
     specular: bool,
     /// One case only ([`Suite::case`]).
@@ -31,6 +32,7 @@ impl Suite {
             sets: SETS.to_vec(),
             method: Method::CorrectedEuler,
             profile: Profile::Ieee,
+            form: Form::Any,
             tolerance: None,
             specular: false,
             case: None,
@@ -78,6 +80,40 @@ impl Suite {
     /// its bounds judge the results.
     pub fn profile(mut self, profile: Profile) -> Suite {
         self.profile = profile;
+        self
+    }
+
+    /// The form your implementation computes ([`Form`]): for Euler and corrected
+    /// Euler, whose recurrences and closed forms have theorems of their own, the
+    /// profile's bound is then that form's alone — a closed form's does not grow with
+    /// `n`. Undeclared ([`Form::Any`]), the bound is the largest over every form. A
+    /// declared form for another method gives a report that fails, saying so.
+    ///
+    /// ```
+    /// use phong_approx::testkit::prelude::*;
+    /// // Corrected Euler in closed form, p_a + i·(t0 + (i − 1)/2·ds), in f64.
+    /// let r = Suite::published().form(Form::Closed).check_f64(|s| {
+    ///     let d = |a: [f64; 3], b: [f64; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    ///     let n = f64::from(s.n);
+    ///     let k = [0, 1, 2].map(|j| (s.nb[j] - s.na[j]) / n);
+    ///     let (a, pa, pb) = (d(k, s.l), d(s.na, s.l), d(s.nb, s.l));
+    ///     let (c, dd) = (d(k, k), 2.0 * d(k, s.na));
+    ///     let dia = a - pa / 2.0 * dd;
+    ///     let dib = a - pb / 2.0 * (2.0 * n * c + dd);
+    ///     let ds = (dib - dia) / n;
+    ///     let pn = pa + n * dia + n * (n - 1.0) / 2.0 * ds;
+    ///     let t0 = dia - (pn - pb) / n;
+    ///     (0..=s.n)
+    ///         .map(|i| {
+    ///             let i = f64::from(i);
+    ///             pa + i * (t0 + (i - 1.0) / 2.0 * ds)
+    ///         })
+    ///         .collect()
+    /// });
+    /// assert!(r.is_ok(), "{r}");
+    /// ```
+    pub fn form(mut self, form: Form) -> Suite {
+        self.form = form;
         self
     }
 
@@ -150,7 +186,11 @@ impl Suite {
     fn judged_by(&self) -> String {
         match self.tolerance {
             Some(t) => format!("tolerance {t}"),
-            None => format!("the {} profile's bound", self.profile),
+            None if self.form == Form::Any => format!("the {} profile's bound", self.profile),
+            None => format!(
+                "the {} profile's bound for the {} form",
+                self.profile, self.form
+            ),
         }
     }
 
@@ -159,6 +199,7 @@ impl Suite {
         let tol = self.tolerance.unwrap_or(Tolerance::Profile {
             profile: self.profile,
             u: T::U,
+            form: self.form,
         });
         let mut report = Report::new(self.method, judged_by.clone(), T::NAME);
         if let Some(name) = &self.unknown_set {

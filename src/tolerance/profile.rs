@@ -20,7 +20,8 @@
 //!
 //! Phong, Duff, symmetric Phong and the adaptive scheme have *derived* bounds under
 //! `ieee` and `shader` (written derivations on the same model, [`Arith`]:
-//! [`phong_derived`], [`duff_derived`], `docs/float.md` §18.4–18.5, attacked by
+//! [`phong_derived`], [`duff_derived`], [`symmetric_phong_derived`], `docs/float.md`
+//! §18.4–18.5, attacked by
 //! `tests/profiles.rs`; [`euler_derived`] is plain Euler's, which the theorems now
 //! replace under both profiles); [`status`] says which kind a bound is. Angular
 //! interpolation and the related methods have none: a case then fails naming that.
@@ -209,6 +210,93 @@ impl Proved {
 
 /// binary32's unit roundoff.
 const U32: f64 = 1.0 / 16_777_216.0;
+
+/// The form of a method an implementation declares (`check --form`,
+/// `testkit::Suite::form`): the profile's bound then covers that form alone and is
+/// the largest of that form's theorems only. A closed form's error does not grow with
+/// `n` and a recurrence's does, so the bound `check` applies to an undeclared
+/// implementation — the largest over every form — is the recurrence's at large `n`:
+/// at `n = 4095` corrected Euler's closed form is judged by `(2.2·n + 51.21)·u =
+/// 9060·u` under `ieee`, and by its own theorem's `59.61·u` once declared
+/// (`docs/float.md` §18.6). Only Euler and corrected Euler have theorems for both
+/// forms ([`Form::applies_to`]); for the other methods only [`Form::Any`] is accepted.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Form {
+    /// Any form the profile covers: the largest of their bounds (the default).
+    #[default]
+    Any,
+    /// The recurrence, the paper's loop: `p += t; t += ds` (corrected Euler, eqs.
+    /// 15–20) or `E += s; s += ds` (Euler, eqs. 12–14).
+    Recurrence,
+    /// The closed form in `i`, no loop-carried sum: `p_a + i·(t_0 + (i − 1)/2·ds)`
+    /// (corrected Euler) or `p_a + i·(di_a + (i − 1)/2·ds)` (Euler).
+    Closed,
+}
+
+impl Form {
+    /// Every form, `Any` first.
+    pub const ALL: [Form; 3] = [Form::Any, Form::Recurrence, Form::Closed];
+
+    /// The form's name as `--form` takes it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Form::Any => "any",
+            Form::Recurrence => "recurrence",
+            Form::Closed => "closed",
+        }
+    }
+
+    /// Whether a profile's theorems tell `method`'s forms apart: Euler and corrected
+    /// Euler, whose recurrences and closed forms each have theorems. A declared form
+    /// other than [`Form::Any`] is refused for the other methods.
+    pub fn applies_to(method: crate::Method) -> bool {
+        use crate::Method;
+        match method {
+            Method::Euler | Method::CorrectedEuler => true,
+            Method::Gouraud
+            | Method::Phong
+            | Method::Duff
+            | Method::SymmetricPhong
+            | Method::Adaptive
+            | Method::Angular
+            | Method::AngularTable(_)
+            | Method::Spherical
+            | Method::Binary
+            | Method::BishopWeimer => false,
+        }
+    }
+
+    /// Whether a theorem's bound `(α·n + β)·u` is of this form: a closed form's has
+    /// `α = 0`, a recurrence's grows with `n`.
+    fn covers(self, p: &Proved) -> bool {
+        match self {
+            Form::Any => true,
+            Form::Recurrence => p.alpha > 0.0,
+            Form::Closed => p.alpha == 0.0,
+        }
+    }
+}
+
+impl fmt::Display for Form {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// A `--form` that is not one of [`Form::ALL`]'s names.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("unknown form {0:?}: expected any, recurrence or closed")]
+pub struct UnknownForm(pub String);
+
+impl FromStr for Form {
+    type Err = UnknownForm;
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        Form::ALL
+            .into_iter()
+            .find(|f| f.name() == s)
+            .ok_or_else(|| UnknownForm(s.to_string()))
+    }
+}
 
 /// The proved bounds of a profile for Gouraud (`g += dp`), corrected Euler (the
 /// recurrence `p += t; t += ds`, and its closed form `p_a + i·(t_0 + (i−1)/2·ds)`)
@@ -400,11 +488,42 @@ pub fn proved(method: crate::Method, profile: Profile, u: f64) -> Option<Vec<Pro
 /// [`proved`] lists: the recurrences, the closed forms, and under `shader` the ways
 /// of dividing and of halving), or `None` where no theorem covers it.
 pub fn proved_bound(method: crate::Method, profile: Profile, n: u32, u: f64) -> Option<f64> {
-    let forms = proved(method, profile, u)?;
+    proved_bound_in(method, profile, Form::Any, n, u)
+}
+
+/// [`proved_bound`] for an implementation of the declared `form`: the largest over
+/// that form's theorems only; `None` where the form has none.
+pub fn proved_bound_in(
+    method: crate::Method,
+    profile: Profile,
+    form: Form,
+    n: u32,
+    u: f64,
+) -> Option<f64> {
+    let forms = proved_in(method, profile, form, u)?;
     forms
         .iter()
         .map(|f| f.at(n, u))
         .try_fold(0.0f64, |m, b| b.map(|b| m.max(b)))
+}
+
+/// The theorems of [`proved`] that cover the declared `form` (all of them for
+/// [`Form::Any`]); `None` where none does, or where the method's forms are not told
+/// apart ([`Form::applies_to`]) and the form is not `Any`.
+pub fn proved_in(
+    method: crate::Method,
+    profile: Profile,
+    form: Form,
+    u: f64,
+) -> Option<Vec<Proved>> {
+    if form != Form::Any && !Form::applies_to(method) {
+        return None;
+    }
+    let forms: Vec<Proved> = proved(method, profile, u)?
+        .into_iter()
+        .filter(|p| form.covers(p))
+        .collect();
+    (!forms.is_empty()).then_some(forms)
 }
 
 /// The standard model of a float profile (`docs/float.md` §18.1): every operation's
@@ -536,14 +655,35 @@ pub fn euler_derived(a: &Arith, n: u32) -> Option<f64> {
     Some((setup + recurrence.max(closed)) * 1.01 * a.u + eta_total(a, nf))
 }
 
-/// Duff's forward differences (eqs. 5–7, and symmetric Phong, which mirrors them)
-/// under a profile, derived (`docs/float.md` §18.5): §8's `e_p = 20·κ_s + 1.01·n·κ_add`
-/// and `e_q = 118·κ_s + 3.01·n·κ_add`, then `p/√q` with the square root, a division
-/// (or `1/√q`) and a product. `None` where `q` may lose half of itself.
+/// Duff's forward differences (eqs. 5–7) under a profile, derived (`docs/float.md`
+/// §18.5): §8's `e_p = 20·κ_s + 1.01·n·κ_add` and `e_q = 118·κ_s + 3.01·n·κ_add`,
+/// then `p/√q` with the square root, a division (or `1/√q`) and a product. `None`
+/// where `q` may lose half of itself.
 pub fn duff_derived(a: &Arith, n: u32, q_min: f64) -> Option<f64> {
+    duff_steps(a, n, n, n, q_min)
+}
+
+/// Symmetric Phong (§4) under a profile, derived (`docs/float.md` §18.5): `p` walks
+/// to pixel `i` as Duff's does, but `√q_i` comes from the walk from the left edge to
+/// `min(i, n − i) ≤ h = ⌊n/2⌋`. §8's `e_p` and `e_q` grow with the steps walked, and
+/// the value's bound with both, so on the pixels `i_{k−1} ≤ i ≤ i_k` of the right half
+/// (`i_k = h + ⌈k(n − h)/8⌉`, eight pieces) it is at most Duff's with `p` walked `i_k`
+/// steps and `q` walked `min(h, n − i_{k−1})`; the left half is within the first
+/// piece. The largest of the eight.
+pub fn symmetric_phong_derived(a: &Arith, n: u32, q_min: f64) -> Option<f64> {
+    let h = n / 2;
+    let at = |k: u32| h + (k * (n - h)).div_ceil(8);
+    (1..=8u32)
+        .map(|k| duff_steps(a, n, at(k), h.min(n - at(k - 1)), q_min))
+        .try_fold(0.0f64, |m, b| b.map(|b| m.max(b)))
+}
+
+/// §8's bound with `p` walked `p_steps` and `q` walked `q_steps` steps of a span of
+/// `n` (the set-up terms taken at their largest, `i = n`).
+fn duff_steps(a: &Arith, n: u32, p_steps: u32, q_steps: u32, q_min: f64) -> Option<f64> {
     let nf = derived_n(a, n)?;
-    let e_p = 20.0 * a.setup() + 1.01 * nf * a.add;
-    let e_q = 118.0 * a.setup() + 3.01 * nf * a.add;
+    let e_p = 20.0 * a.setup() + 1.01 * f64::from(p_steps.min(n)) * a.add;
+    let e_q = 118.0 * a.setup() + 3.01 * f64::from(q_steps.min(n)) * a.add;
     let b = super::ratio_bound(e_p, e_q, q_min, a.ratio(), a.u)?;
     Some(b * 1.01 + eta_total(a, nf) / q_min.sqrt())
 }
@@ -828,24 +968,32 @@ pub fn profile_bound(
     q_min: f64,
     u: f64,
 ) -> Option<f64> {
-    bound_with(method, profile, n, q_min, 2.0, u)
+    bound_with(method, profile, Form::Any, n, q_min, 2.0, u)
 }
 
 /// [`profile_bound`] for a known span: Phong's derived bound with the span's own
 /// `|N_b − N_a|` ([`crate::tolerance::Shape::dn`]; up to 3× tighter on the close
 /// normals of a mesh, [`phong_derived`]).
+/// With a declared `form` ([`Form`]), the bound of that form alone: `None` where the
+/// form has no theorem (Gouraud's closed form, a fixed-point closed form) or the
+/// method's forms are not told apart.
 pub fn profile_span_bound(
     method: crate::Method,
     profile: Profile,
+    form: Form,
     shape: &crate::tolerance::Shape,
     u: f64,
 ) -> Option<f64> {
-    bound_with(method, profile, shape.n, shape.q_min, shape.dn, u)
+    if form != Form::Any && !Form::applies_to(method) {
+        return None;
+    }
+    bound_with(method, profile, form, shape.n, shape.q_min, shape.dn, u)
 }
 
 fn bound_with(
     method: crate::Method,
     profile: Profile,
+    form: Form,
     n: u32,
     q_min: f64,
     dn: f64,
@@ -857,15 +1005,19 @@ fn bound_with(
         frac_bits,
     } = profile
     {
-        return fixed_bound(method, n, int_bits, frac_bits);
+        // `Fixed.v` proves the loops: an exact integer recurrence.
+        return (form != Form::Closed)
+            .then(|| fixed_bound(method, n, int_bits, frac_bits))
+            .flatten();
     }
     match status(method, profile, u)? {
-        Status::Proved(_) => proved_bound(method, profile, n, u),
+        Status::Proved(_) => proved_bound_in(method, profile, form, n, u),
         Status::Derived(_) => {
             let a = arith(profile, u)?;
             match method {
                 Method::Phong => phong_derived(&a, n, q_min, dn),
-                Method::Duff | Method::SymmetricPhong => duff_derived(&a, n, q_min),
+                Method::Duff => duff_derived(&a, n, q_min),
+                Method::SymmetricPhong => symmetric_phong_derived(&a, n, q_min),
                 Method::Adaptive => Some(
                     proved_bound(Method::Gouraud, profile, n, u)?.max(proved_bound(
                         Method::CorrectedEuler,
@@ -1075,5 +1227,65 @@ mod tests {
             profile_bound(Method::Adaptive, Profile::Shader, 1, 1.0, u32_),
             Some(148.11 * u32_)
         );
+    }
+
+    /// A declared form takes that form's theorems alone: corrected Euler's closed form
+    /// at `n = 4095` under `ieee` binary32 is `59.61·u`, its recurrence
+    /// `(2.2·4095 + 51.21)·u`, undeclared the larger; only Euler and corrected Euler
+    /// tell their forms apart; fixed point proves the loop only.
+    #[test]
+    fn a_declared_form_takes_its_own_theorems() {
+        let u32_ = U32;
+        let ce = |form| proved_bound_in(Method::CorrectedEuler, Profile::Ieee, form, 4095, u32_);
+        assert_eq!(ce(Form::Closed), Some(59.61 * u32_));
+        assert_eq!(ce(Form::Recurrence), Some((2.2 * 4095.0 + 51.21) * u32_));
+        assert_eq!(ce(Form::Any), ce(Form::Recurrence));
+        // At n = 1 the closed form's constant is the larger: undeclared takes it.
+        let ce1 = |form| proved_bound_in(Method::CorrectedEuler, Profile::Ieee, form, 1, u32_);
+        assert_eq!(ce1(Form::Any), Some(59.61 * u32_));
+        assert_eq!(ce1(Form::Recurrence), Some((2.2 + 51.21) * u32_));
+        // Under shader the closed forms' four theorems, the largest.
+        let sh = proved_bound_in(Method::Euler, Profile::Shader, Form::Closed, 4095, u32_);
+        assert_eq!(sh, Some(313.36 * u32_));
+        for m in Method::ALL {
+            assert_eq!(
+                Form::applies_to(m),
+                matches!(m, Method::Euler | Method::CorrectedEuler),
+                "{m}"
+            );
+            if !Form::applies_to(m) {
+                for form in [Form::Recurrence, Form::Closed] {
+                    assert!(
+                        proved_in(m, Profile::Ieee, form, u32_).is_none(),
+                        "{m} {form}"
+                    );
+                }
+            }
+        }
+        use crate::reference::unit::unit_from_ints;
+        let span = crate::Span::new(
+            unit_from_ints(0, 0, 1),
+            unit_from_ints(1, 0, 3),
+            unit_from_ints(0, 0, 1),
+            8,
+        )
+        .unwrap();
+        let shape = crate::tolerance::Shape::of(&span);
+        let fixed = Profile::Fixed {
+            int_bits: 16,
+            frac_bits: 16,
+        };
+        let b = |form| profile_span_bound(Method::CorrectedEuler, fixed, form, &shape, u32_);
+        assert!(b(Form::Any).is_some());
+        assert_eq!(b(Form::Recurrence), b(Form::Any));
+        assert_eq!(b(Form::Closed), None);
+        assert_eq!(
+            profile_span_bound(Method::Phong, Profile::Ieee, Form::Closed, &shape, u32_),
+            None
+        );
+        for form in Form::ALL {
+            assert_eq!(form.name().parse::<Form>(), Ok(form));
+        }
+        assert!("horner".parse::<Form>().is_err());
     }
 }

@@ -1,0 +1,21 @@
+//! The methods and kernels: every method in every format, the fast kernels, the related methods, the low-precision scalars, the planted mutants, the test kit from a user's side.
+//!
+//! One test binary of several files (docs/testing.md, "Test binaries"); each file is a
+//! module, its tests named `file::test`.
+
+#[path = "../common/mod.rs"]
+mod common;
+
+#[path = "../fast.rs"]
+mod fast;
+#[cfg(feature = "lowp")]
+#[path = "../lowp.rs"]
+mod lowp;
+#[path = "../methods.rs"]
+mod methods;
+#[path = "../mutants.rs"]
+mod mutants;
+#[path = "../related.rs"]
+mod related;
+#[path = "../testkit.rs"]
+mod testkit;

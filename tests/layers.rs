@@ -36,10 +36,12 @@ const LAYERS: &[(&str, u32)] = &[
     ("related/", 5),
     // The catalogue.
     ("method.rs", 6),
+    ("method/", 6),
     // Fast kernels.
     ("simd.rs", 7),
     ("fast.rs", 7),
     ("fast_rows.rs", 7),
+    ("fast_rows/", 7),
     ("fixed_span.rs", 7),
     // The budgets of exact work.
     ("budget.rs", 7),
@@ -49,6 +51,7 @@ const LAYERS: &[(&str, u32)] = &[
     // The span report (what `span` prints, and the exact run with every digit known
     // that the vectors use), the conformance kit and the torus harness.
     ("span_report.rs", 9),
+    ("span_report/", 9),
     ("conformance/", 9),
     ("raster/", 9),
     // The test kit.

@@ -1334,11 +1334,11 @@ fn gpu_euler(g: Gpu, s: &Span<Q>) -> Vec<Q> {
 }
 
 /// Duff (and, with `horner`, Phong's closed form) on the GPU model.
-fn gpu_duff_or_phong(g: Gpu, s: &Span<Q>, horner: bool) -> Vec<Q> {
+fn gpu_duff_or_phong(g: Gpu, s: &Span<Q>, horner: bool, how: Division) -> Vec<Q> {
     let vec = |x: &phong_approx::Vec3<Q>| [g.input(&x.x), g.input(&x.y), g.input(&x.z)];
     let (na, nb, l) = (vec(&s.na), vec(&s.nb), vec(&s.l));
     let nf = qi(s.n);
-    let k = [0, 1, 2].map(|j| g.div(&g.sub(&nb[j], &na[j]), &nf));
+    let k = [0, 1, 2].map(|j| g.over(how, &g.sub(&nb[j], &na[j]), &nf, false));
     let (a, b) = feeds(Role::P, || (g.dot(&k, &l), g.dot(&na, &l)));
     let (c, d, e) = feeds(Role::Q, || {
         let c = g.dot(&k, &k);
@@ -1390,12 +1390,12 @@ enum GpuPhong {
 }
 
 /// Phong per pixel on the GPU model, in the form `form`.
-fn gpu_phong_form(g: Gpu, s: &Span<Q>, form: GpuPhong) -> Vec<Q> {
+fn gpu_phong_form(g: Gpu, s: &Span<Q>, form: GpuPhong, how: Division) -> Vec<Q> {
     let vec = |x: &phong_approx::Vec3<Q>| [g.input(&x.x), g.input(&x.y), g.input(&x.z)];
     let (na, nb, l) = (vec(&s.na), vec(&s.nb), vec(&s.l));
     let nf = qi(s.n);
     let one = q(1, 1);
-    let k = [0, 1, 2].map(|j| g.div(&g.sub(&nb[j], &na[j]), &nf));
+    let k = [0, 1, 2].map(|j| g.over(how, &g.sub(&nb[j], &na[j]), &nf, false));
     let axpy = |x: &Q, y: &Q, z: &Q| {
         if g.fused {
             g.r(x * y + z)
@@ -1411,7 +1411,7 @@ fn gpu_phong_form(g: Gpu, s: &Span<Q>, form: GpuPhong) -> Vec<Q> {
                     [0, 1, 2].map(|j| axpy(&k[j], &x, &na[j]))
                 }
                 GpuPhong::Lerp => {
-                    let t = g.div(&x, &nf);
+                    let t = g.over(how, &x, &nf, false);
                     let omt = g.sub(&one, &t);
                     [0, 1, 2].map(|j| axpy(&t, &nb[j], &g.mul(&omt, &na[j])))
                 }
@@ -1431,11 +1431,11 @@ fn gpu_phong_form(g: Gpu, s: &Span<Q>, form: GpuPhong) -> Vec<Q> {
 
 /// Symmetric Phong on the GPU model: Duff's forward differences walked to the middle
 /// pixel for `√q_i`, reused as `√q_{n−i}` on the right half (§4), `p` by additions.
-fn gpu_symmetric_phong(g: Gpu, s: &Span<Q>) -> Vec<Q> {
+fn gpu_symmetric_phong(g: Gpu, s: &Span<Q>, how: Division) -> Vec<Q> {
     let vec = |x: &phong_approx::Vec3<Q>| [g.input(&x.x), g.input(&x.y), g.input(&x.z)];
     let (na, nb, l) = (vec(&s.na), vec(&s.nb), vec(&s.l));
     let nf = qi(s.n);
-    let k = [0, 1, 2].map(|j| g.div(&g.sub(&nb[j], &na[j]), &nf));
+    let k = [0, 1, 2].map(|j| g.over(how, &g.sub(&nb[j], &na[j]), &nf, false));
     let (a, b) = feeds(Role::P, || (g.dot(&k, &l), g.dot(&na, &l)));
     let half = (s.n / 2) as usize;
     let root = feeds(Role::Q, || {
@@ -1477,9 +1477,11 @@ fn shader_derived(what: &str, method: Method, imp: impl Fn(Gpu, &Span<Q>) -> Vec
 /// `·(1/n)` and a computed `1/2` in the `_recip` ones.)
 #[test]
 fn profile_shader_derived_binary32() {
-    shader_derived("duff", Method::Duff, |g, s| gpu_duff_or_phong(g, s, false));
+    shader_derived("duff", Method::Duff, |g, s| {
+        gpu_duff_or_phong(g, s, false, Division::Once)
+    });
     shader_derived("phong (Horner)", Method::Phong, |g, s| {
-        gpu_duff_or_phong(g, s, true)
+        gpu_duff_or_phong(g, s, true, Division::Once)
     });
 }
 
@@ -1767,11 +1769,11 @@ fn the_software_gpus_pass_the_published_sets_under_shader() {
         ),
         (
             Method::Duff,
-            Box::new(|g, s| gpu_duff_or_phong(g, s, false)),
+            Box::new(|g, s| gpu_duff_or_phong(g, s, false, Division::Once)),
         ),
         (
             Method::Phong,
-            Box::new(|g, s| gpu_duff_or_phong(g, s, true)),
+            Box::new(|g, s| gpu_duff_or_phong(g, s, true, Division::Once)),
         ),
     ];
     for set in ["typical", "edge", "paper"] {
@@ -2389,31 +2391,31 @@ fn adversary_forms(shader: bool) -> Vec<AdvForm> {
             gpu_closed(Method::Euler, g, Division::Once, Halving::Exact, s)
         }),
         (Method::Duff, "forward differences", Form::Any, |g, s| {
-            gpu_duff_or_phong(g, s, false)
+            gpu_duff_or_phong(g, s, false, Division::Once)
         }),
         (Method::Phong, "Horner's closed form", Form::Any, |g, s| {
-            gpu_duff_or_phong(g, s, true)
+            gpu_duff_or_phong(g, s, true, Division::Once)
         }),
         (
             Method::Phong,
             "per-pixel normal, p/√q",
             Form::Any,
-            |g, s| gpu_phong_form(g, s, GpuPhong::PerPixel),
+            |g, s| gpu_phong_form(g, s, GpuPhong::PerPixel, Division::Once),
         ),
         (
             Method::Phong,
             "(1 − t)·N_a + t·N_b, p·(1/√q)",
             Form::Any,
-            |g, s| gpu_phong_form(g, s, GpuPhong::Lerp),
+            |g, s| gpu_phong_form(g, s, GpuPhong::Lerp, Division::Once),
         ),
         (Method::Phong, "normalize, then dot", Form::Any, |g, s| {
-            gpu_phong_form(g, s, GpuPhong::NormalizeThenDot)
+            gpu_phong_form(g, s, GpuPhong::NormalizeThenDot, Division::Once)
         }),
         (
             Method::SymmetricPhong,
             "forward differences, mirrored roots",
             Form::Any,
-            |g, s| gpu_symmetric_phong(g, s),
+            |g, s| gpu_symmetric_phong(g, s, Division::Once),
         ),
     ];
     if shader {
@@ -2430,6 +2432,30 @@ fn adversary_forms(shader: bool) -> Vec<AdvForm> {
                 "recurrence, ·(1/n)",
                 Form::Recurrence,
                 |g, s| gpu_recurrence(Method::CorrectedEuler, g, Division::Reciprocal, s),
+            ),
+            (
+                Method::Duff,
+                "forward differences, ·(1/n)",
+                Form::Any,
+                |g, s| gpu_duff_or_phong(g, s, false, Division::Reciprocal),
+            ),
+            (
+                Method::Phong,
+                "Horner's closed form, ·(1/n)",
+                Form::Any,
+                |g, s| gpu_duff_or_phong(g, s, true, Division::Reciprocal),
+            ),
+            (
+                Method::Phong,
+                "(1 − t)·N_a + t·N_b, t = i·(1/n)",
+                Form::Any,
+                |g, s| gpu_phong_form(g, s, GpuPhong::Lerp, Division::Reciprocal),
+            ),
+            (
+                Method::SymmetricPhong,
+                "mirrored roots, ·(1/n)",
+                Form::Any,
+                |g, s| gpu_symmetric_phong(g, s, Division::Reciprocal),
             ),
             (
                 Method::CorrectedEuler,
@@ -2509,7 +2535,7 @@ fn the_models_adversary_stays_within_the_bounds() {
         assert!(w > 0.0, "{row} never rounded");
         rows += 1;
     });
-    assert_eq!(rows, 11 + 11 + 14);
+    assert_eq!(rows, 11 + 11 + 18);
 }
 
 /// How tight each bound is: the worst fraction of the bound `check` applies that the

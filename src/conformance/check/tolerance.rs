@@ -1,0 +1,179 @@
+//! How close a result must be: levels, absolute, ulps, or a profile's bound; and the
+//! float formats' ulps the verdicts count in.
+
+use std::fmt;
+
+/// How close a result must be.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Tolerance {
+    /// At most this many 8-bit levels from the expected level.
+    Levels(u32),
+    /// At most this far from the expected value.
+    Abs(f64),
+    /// At most this many ulps from it, in the implementation's format (`f32` unless
+    /// [`check_in`] is told the format's unit roundoff), counted at the case's scale:
+    /// the ulp of the largest `|expected value|` of the span. The methods' errors are
+    /// absolute, on values of that magnitude; the ulp of a value near zero would make
+    /// a tiny absolute error look like tens of thousands of ulps.
+    Ulps(f64),
+    /// The crate's documented float bound for the method, case and precision
+    /// (`src/tolerance.rs`): `f32` (u = 2^-24) or `f64` (u = 2^-53). The `reference`
+    /// profile.
+    Default {
+        /// The unit roundoff of the implementation's arithmetic.
+        u: f64,
+    },
+    /// The bound for every implementation of an arithmetic profile — proved or derived,
+    /// as [`crate::tolerance::profile::status`] labels it per method and format
+    /// ([`crate::tolerance::profile`], `docs/float.md` §18); `Reference` is
+    /// [`Tolerance::Default`]. A case with no proved bound for the profile fails,
+    /// naming why.
+    Profile {
+        /// The profile.
+        profile: crate::tolerance::profile::Profile,
+        /// The unit roundoff of the implementation's arithmetic.
+        u: f64,
+        /// The form the implementation declares it computes
+        /// ([`crate::tolerance::profile::Form`]; `Any` unless declared): the bound is
+        /// then that form's theorems' alone.
+        form: crate::tolerance::profile::Form,
+    },
+}
+
+impl fmt::Display for Tolerance {
+    /// As `--tolerance` spells it (`levels=1`, `abs=0.001`, `ulps=4`), or the profile.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Tolerance::Levels(n) => write!(f, "levels={n}"),
+            Tolerance::Abs(x) => write!(f, "abs={x}"),
+            Tolerance::Ulps(x) => write!(f, "ulps={x}"),
+            Tolerance::Default { .. } => f.write_str("the reference profile's bound"),
+            Tolerance::Profile {
+                profile,
+                form: crate::tolerance::profile::Form::Any,
+                ..
+            } => write!(f, "the {profile} profile's bound"),
+            Tolerance::Profile { profile, form, .. } => {
+                write!(f, "the {profile} profile's bound for the {form} form")
+            }
+        }
+    }
+}
+
+impl Tolerance {
+    /// Parses `levels=N`, `abs=X` or `ulps=N`.
+    ///
+    /// # Errors
+    /// A message saying what was expected.
+    pub fn parse(s: &str) -> Result<Tolerance, String> {
+        let (k, v) = s.split_once('=').ok_or_else(|| {
+            format!(
+                "'{}' is not levels=N, abs=X or ulps=N",
+                crate::conformance::shown(s)
+            )
+        })?;
+        let num: f64 = v
+            .trim()
+            .parse()
+            .map_err(|_| format!("'{}' is not a number", crate::conformance::shown(v)))?;
+        if !(num.is_finite() && num >= 0.0) {
+            return Err(format!(
+                "'{}' must be a finite number ≥ 0",
+                crate::conformance::shown(v)
+            ));
+        }
+        match k.trim() {
+            "levels" if num.fract() == 0.0 && num <= 255.0 => Ok(Tolerance::Levels(num as u32)),
+            "levels" => Err(format!(
+                "levels must be a whole number from 0 to 255 (got {v})"
+            )),
+            "abs" => Ok(Tolerance::Abs(num)),
+            "ulps" => Ok(Tolerance::Ulps(num)),
+            other => Err(format!(
+                "unknown tolerance '{}' (expected levels, abs or ulps)",
+                crate::conformance::shown(other)
+            )),
+        }
+    }
+}
+
+impl Tolerance {
+    /// The unit roundoff of the format the tolerance names (`None` for levels,
+    /// absolute and ulps tolerances, which name none).
+    pub fn unit_roundoff(&self) -> Option<f64> {
+        match *self {
+            Tolerance::Profile {
+                profile: crate::tolerance::profile::Profile::Fixed { .. },
+                ..
+            } => None,
+            Tolerance::Default { u } | Tolerance::Profile { u, .. } => Some(u),
+            _ => None,
+        }
+    }
+
+    /// Checks that the tolerance means something: finite, non-negative numbers, a
+    /// unit roundoff in `(0, 2^-8]` (fixed point has none: its `u` is not read), a
+    /// fixed-point format the bounds take
+    /// ([`crate::tolerance::profile::Profile::validate`]).
+    ///
+    /// # Errors
+    /// A one-line message saying what is wrong.
+    pub fn validate(&self) -> Result<(), String> {
+        let ok = |x: f64| x.is_finite() && x >= 0.0;
+        match *self {
+            Tolerance::Levels(n) if n > 255 => Err(format!("levels must be at most 255 (got {n})")),
+            Tolerance::Abs(x) | Tolerance::Ulps(x) if !ok(x) => {
+                Err(format!("a tolerance must be a finite number ≥ 0 (got {x})"))
+            }
+            Tolerance::Profile {
+                profile: profile @ crate::tolerance::profile::Profile::Fixed { .. },
+                ..
+            } => profile.validate(),
+            Tolerance::Default { u } | Tolerance::Profile { u, .. }
+                if !(u > 0.0 && u <= 1.0 / 256.0) =>
+            {
+                Err(format!("the unit roundoff must be in (0, 2^-8] (got {u})"))
+            }
+            Tolerance::Profile { profile, .. } => profile.validate(),
+            _ => Ok(()),
+        }
+    }
+}
+
+/// The name of the float format whose unit roundoff is `u` (`f32`, `f64`, `binary16`),
+/// or `format` for another.
+pub fn format_name(u: f64) -> &'static str {
+    if u == f64::from(f32::EPSILON) / 2.0 {
+        "f32"
+    } else if u == f64::EPSILON / 2.0 {
+        "f64"
+    } else if u == 2f64.powi(-11) {
+        "binary16"
+    } else {
+        "format"
+    }
+}
+
+/// The spacing at `x` of the binary floats of unit roundoff `u` (their ulp): `f32`'s
+/// and `f64`'s exactly (subnormals included), otherwise `2u·2^⌊log2 |x|⌋`.
+pub fn ulp_in(x: f64, u: f64) -> f64 {
+    if u == f64::from(f32::EPSILON) / 2.0 {
+        return f32_ulp(x);
+    }
+    if u == f64::EPSILON / 2.0 {
+        let a = x.abs().max(f64::MIN_POSITIVE);
+        if !a.is_finite() {
+            return f64::INFINITY;
+        }
+        return f64::from_bits(a.to_bits() + 1) - a;
+    }
+    let a = x.abs().max(f64::MIN_POSITIVE);
+    2.0 * u * 2f64.powi(a.log2().floor() as i32)
+}
+
+/// The spacing of `f32` numbers at `x` (its ulp).
+pub fn f32_ulp(x: f64) -> f64 {
+    let a = (x.abs() as f32).max(f32::MIN_POSITIVE);
+    let b = f32::from_bits(a.to_bits() + 1);
+    f64::from(b) - f64::from(a)
+}

@@ -1,0 +1,109 @@
+//! The float bounds `span` prints for its span, per profile and format
+//! (`error_bound`), and how each is known (`error_bound_status`).
+
+use super::*;
+
+/// A positive `x` as a decimal of three significant digits, rounded up (the slack
+/// `1e-12` covers the rounding of the scaling in `f64`).
+fn round_up_3(x: f64) -> String {
+    let mut e = x.log10().floor() as i32;
+    let mut m = (x * (1.0 + 1e-12) / 10f64.powi(e - 2)).ceil() as u64;
+    if m >= 1000 {
+        m = m.div_ceil(10);
+        e += 1;
+    }
+    format!("{}.{:02}e{e}", m / 100, m % 100)
+}
+
+/// The bounds per profile: `reference` (this crate's own operation order,
+/// [`crate::tolerance::span_bound`]), `ieee` and `shader` (for every implementation of
+/// the profile, [`crate::tolerance::profile`]; `shader` only for `f32`). `None`
+/// where none is derived or proved, and for every profile with `normalize`, whose
+/// float normalization no derivation covers.
+pub(super) fn error_bounds(r: &Request, u: f64) -> ErrorBounds {
+    use crate::tolerance::profile::{profile_span_bound, Form, Profile};
+    let shape = (!r.normalize)
+        .then(|| Span::new(r.na.clone(), r.nb.clone(), r.l.clone(), r.n).ok())
+        .flatten()
+        .map(|s| crate::tolerance::Shape::of(&s));
+    let of = |m: Method, p: Profile| -> Option<f64> {
+        let shape = shape.as_ref()?;
+        match p {
+            Profile::Reference => crate::tolerance::span_bound(m, shape, u),
+            p => profile_span_bound(m, p, Form::Any, shape, u),
+        }
+    };
+    // The adaptive scheme where its test is too close to call
+    // (`tolerance::adaptive_too_close`): the float run may pick the other method, whose values differ from the exact pick's
+    // by at most `|δ|` (eq. 24's δ is the largest difference, `eq_24_delta_is_max_difference`),
+    // so the bound against the exact run's pick is the larger bound plus `|δ|`.
+    let delta = (r.method == Method::Adaptive && !r.normalize)
+        .then(|| Span::new(r.na.clone(), r.nb.clone(), r.l.clone(), r.n).ok())
+        .flatten()
+        .map(|s| {
+            let d = crate::adaptive::decide(&s, &r.kd);
+            (d.delta.to_f64().abs(), r.kd.to_f64())
+        });
+    let bound = |p: Profile| -> Option<String> {
+        let b = of(r.method, p)?;
+        let b = match delta {
+            Some((d, kd)) => {
+                let (bg, bce) = (of(Method::Gouraud, p)?, of(Method::CorrectedEuler, p)?);
+                if crate::tolerance::adaptive_too_close(d, kd, bg, bce, u) {
+                    bg.max(bce) + d * (1.0 + 1e-12)
+                } else {
+                    b
+                }
+            }
+            None => b,
+        };
+        Some(round_up_3(b))
+    };
+    ErrorBounds {
+        reference: bound(Profile::Reference),
+        ieee: bound(Profile::Ieee),
+        shader: (u == f64::from(f32::EPSILON) / 2.0).then(|| bound(Profile::Shader)),
+    }
+}
+
+/// The labels of the bounds `printed` ([`error_bounds`]): the reference profile's from the
+/// catalogue (Gouraud and corrected Euler proved in this crate's order,
+/// `proofs/Float.v`; the others derived in their `docs/float.md` section), the
+/// acceptance profiles' from [`crate::tolerance::profile::status`]; `None` where no
+/// bound is printed.
+pub(super) fn error_bound_status(r: &Request, u: f64, printed: &ErrorBounds) -> ErrorBounds {
+    use crate::tolerance::profile::{status, Profile, Status};
+    let label = |p: Profile, shown: &Option<String>| -> Option<String> {
+        shown.as_ref()?;
+        let s = match p {
+            Profile::Reference => {
+                let b32 = u == f64::from(f32::EPSILON) / 2.0;
+                match r.method {
+                    Method::Gouraud if r.n <= 4096 && b32 => {
+                        Status::Proved("float_gouraud_binary32")
+                    }
+                    Method::Gouraud if r.n <= 4096 => Status::Proved("float_gouraud_binary64"),
+                    Method::CorrectedEuler if r.n <= 4096 && b32 => {
+                        Status::Proved("float_corrected_euler_binary32")
+                    }
+                    Method::CorrectedEuler if r.n <= 4096 => {
+                        Status::Proved("float_corrected_euler_binary64")
+                    }
+                    m => {
+                        return Some(format!(
+                            "derived (docs/float.md {})",
+                            m.info().float_section
+                        ))
+                    }
+                }
+            }
+            p => status(r.method, p, u)?,
+        };
+        Some(s.label())
+    };
+    ErrorBounds {
+        reference: label(Profile::Reference, &printed.reference),
+        ieee: label(Profile::Ieee, &printed.ieee),
+        shader: printed.shader.as_ref().map(|s| label(Profile::Shader, s)),
+    }
+}

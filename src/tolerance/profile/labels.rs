@@ -1,0 +1,149 @@
+//! How each bound is known, in words and tables made from the catalogue: the status
+//! table of docs/conformance.md, the default (`ieee`) bounds table, `check --help`'s
+//! summary.
+
+use super::{profile_bound, proved, status, Profile, Status, U32};
+
+/// The columns of [`status_table`]: the profiles and formats with bounds.
+const COLUMNS: [(&str, Profile, f64); 4] = [
+    ("ieee, binary32", Profile::Ieee, 1.0 / 16_777_216.0),
+    ("ieee, binary64", Profile::Ieee, f64::EPSILON / 2.0),
+    ("shader, binary32", Profile::Shader, 1.0 / 16_777_216.0),
+    (
+        "fixed:M.F",
+        Profile::Fixed {
+            int_bits: 16,
+            frac_bits: 16,
+        },
+        0.0,
+    ),
+];
+
+/// How each method's bound is known under each profile, as a Markdown table made from
+/// [`status`] (the one source of the labels: docs/conformance.md holds this table,
+/// `tests/coverage.rs` checks it is the current one): a row per method with a bound
+/// under some profile.
+pub fn status_table() -> String {
+    let mut s = String::from("| method |");
+    for (name, ..) in COLUMNS {
+        s += &format!(" {name} |");
+    }
+    s += "\n|---|";
+    s += &"---|".repeat(COLUMNS.len());
+    s += "\n";
+    for m in crate::Method::ALL {
+        let cells: Vec<Option<Status>> = COLUMNS.iter().map(|&(_, p, u)| status(m, p, u)).collect();
+        if cells.iter().all(Option::is_none) {
+            continue;
+        }
+        s += &format!("| `{}` |", m.name());
+        for c in cells {
+            let label = c.map_or("none".to_string(), |c| match c {
+                Status::Proved(t) => format!("proved (`{t}`)"),
+                Status::Derived(d) => format!("derived ({d})"),
+            });
+            s += &format!(" {label} |");
+        }
+        s += "\n";
+    }
+    s
+}
+
+/// A profile's bound for `method` in the format of unit roundoff `u`, in words: the
+/// proved forms `(α·n + β)·u` (the largest applies), or the section of the derivation
+/// for the derived bounds (which depend on the span's `q_min` too).
+pub fn formula(method: crate::Method, profile: Profile, u: f64) -> Option<String> {
+    match status(method, profile, u)? {
+        Status::Proved(_) => {
+            let mut forms: Vec<String> = proved(method, profile, u)?
+                .iter()
+                .map(|f| {
+                    if f.alpha == 0.0 {
+                        format!("{}·u", f.beta)
+                    } else {
+                        format!("({}·n + {})·u", f.alpha, f.beta)
+                    }
+                })
+                .collect();
+            forms.dedup();
+            Some(if forms.len() == 1 {
+                forms.remove(0)
+            } else {
+                format!("max({})", forms.join(", "))
+            })
+        }
+        Status::Derived(section) => Some(match method {
+            crate::Method::Adaptive => "the larger of Gouraud's and corrected Euler's".into(),
+            _ => format!("from n and q_min ({section})"),
+        }),
+    }
+}
+
+/// The bounds `check` applies by default — the `ieee` profile's, in binary32 and
+/// binary64 — as a Markdown table made from [`formula`], [`profile_bound`] and
+/// [`status`] (docs/conformance.md §3 holds it, `tests/coverage.rs` checks it is the
+/// current one), with each bound's value in units of `u` on two spans: `n = 8`,
+/// `q_min = 1` and `n = 256`, `q_min = 1/4`.
+pub fn ieee_table() -> String {
+    let spans = [(8u32, 1.0f64), (256, 0.25)];
+    let mut s = String::from(
+        "| method | `ieee` bound on the error at each pixel | binary32, n = 8, q_min = 1 | binary32, n = 256, q_min = 1/4 | binary64, n = 256, q_min = 1/4 | status (binary32) |\n|---|---|---|---|---|---|\n",
+    );
+    let (u32_, u64_) = (U32, f64::EPSILON / 2.0);
+    for m in crate::Method::ALL {
+        let Some(f) = formula(m, Profile::Ieee, u32_) else {
+            continue;
+        };
+        let at = |n: u32, q: f64, u: f64| {
+            profile_bound(m, Profile::Ieee, n, q, u).map_or("none".to_string(), |b| {
+                // In units of u, rounded up to 4 significant digits.
+                let x = b / u;
+                let d = (3 - x.log10().floor() as i32).max(0) as usize;
+                let e = 10f64.powi(-(d as i32));
+                format!("{:.d$}·u", (x / e).ceil() * e)
+            })
+        };
+        let label = status(m, Profile::Ieee, u32_).map_or(String::new(), |st| match st {
+            Status::Proved(t) => format!("proved (`{t}`)"),
+            Status::Derived(d) => format!("derived ({d})"),
+        });
+        s += &format!(
+            "| `{}` | {f} | {} | {} | {} | {label} |\n",
+            m.name(),
+            at(spans[0].0, spans[0].1, u32_),
+            at(spans[1].0, spans[1].1, u32_),
+            at(spans[1].0, spans[1].1, u64_),
+        );
+    }
+    s
+}
+
+/// One line per profile naming the methods whose bound is proved and those whose
+/// bound is derived (the `--profile` help of `check`, from [`status`]).
+pub fn status_summary() -> String {
+    let mut parts = Vec::new();
+    for (name, p, u) in COLUMNS {
+        let (mut proved, mut derived) = (Vec::new(), Vec::new());
+        for m in crate::Method::ALL {
+            match status(m, p, u) {
+                Some(Status::Proved(_)) => proved.push(m.name().into_owned()),
+                Some(Status::Derived(_)) => derived.push(m.name().into_owned()),
+                None => {}
+            }
+        }
+        let mut line = format!("{name}: proved for {}", list(&proved));
+        if !derived.is_empty() {
+            line += &format!(", derived for {}", list(&derived));
+        }
+        parts.push(line);
+    }
+    parts.join("; ")
+}
+
+fn list(names: &[String]) -> String {
+    if names.is_empty() {
+        "none".into()
+    } else {
+        names.join(", ")
+    }
+}

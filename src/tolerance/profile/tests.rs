@@ -1,0 +1,248 @@
+//! The profiles' tables against the theorems' statements and the derivations.
+
+use super::*;
+use crate::Method;
+
+#[test]
+fn names_round_trip() {
+    for p in Profile::ALL {
+        assert_eq!(p.name().parse::<Profile>(), Ok(p));
+    }
+    assert!("gpu".parse::<Profile>().is_err());
+    let q = Profile::Fixed {
+        int_bits: 16,
+        frac_bits: 16,
+    };
+    assert_eq!("fixed:16.16".parse::<Profile>(), Ok(q));
+    assert_eq!(q.to_string(), "fixed:16.16");
+    for bad in [
+        "fixed:16",
+        "fixed:0.16",
+        "fixed:16.0",
+        "fixed:a.b",
+        "fixed:16.63",
+        "fixed:3.60",
+        "fixed:8.54",
+        "fixed:1.52",
+    ] {
+        assert!(bad.parse::<Profile>().is_err(), "{bad}");
+    }
+}
+
+#[test]
+fn fixed_bounds_are_the_theorems_and_need_their_registers() {
+    // h(1 + n + n(n−1)/2), h = 2^-17: at n = 4, 11·2^-17.
+    let b = fixed_bound(Method::CorrectedEuler, 4, 16, 16).unwrap();
+    assert!((b / 2f64.powi(-17) - 11.0).abs() < 1e-9);
+    let g = fixed_bound(Method::Gouraud, 4, 16, 16).unwrap();
+    assert!((g / 2f64.powi(-17) - 5.0).abs() < 1e-9);
+    // Q3.f holds corrected Euler's values (|p| ≤ 2.5 < 4) but not its slope at
+    // n = 1 (|t| ≤ 28); from n = 12 the slope is below 2.5 too.
+    assert!(fixed_bound(Method::CorrectedEuler, 1, 3, 16).is_none());
+    assert!(fixed_bound(Method::CorrectedEuler, 1, 6, 16).is_some());
+    assert!(fixed_bound(Method::CorrectedEuler, 12, 3, 16).is_some());
+    assert!(fixed_bound(Method::Phong, 4, 16, 16).is_none());
+}
+
+#[test]
+fn proved_bounds_are_the_theorems() {
+    let u32_ = f64::from(f32::EPSILON) / 2.0;
+    let u64_ = f64::EPSILON / 2.0;
+    // (1.0006·100 + 11.001)·u
+    let g = proved_bound(Method::Gouraud, Profile::Ieee, 100, u32_).unwrap();
+    assert!((g / u32_ - 111.061).abs() < 1e-9);
+    // Corrected Euler: the larger of the recurrence and the closed form.
+    let c = proved_bound(Method::CorrectedEuler, Profile::Ieee, 1, u32_).unwrap();
+    assert!((c / u32_ - 59.61).abs() < 1e-9);
+    let c = proved_bound(Method::CorrectedEuler, Profile::Ieee, 100, u64_).unwrap();
+    assert!((c / u64_ - 271.21).abs() < 1e-9);
+    // binary32 stops at 4096; binary64 goes to 2^24; shader is binary32 only.
+    assert!(proved_bound(Method::Gouraud, Profile::Ieee, 4097, u32_).is_none());
+    assert!(proved_bound(Method::Gouraud, Profile::Ieee, 1 << 24, u64_).is_some());
+    assert!(proved_bound(Method::Gouraud, Profile::Shader, 10, u64_).is_none());
+    assert!(proved_bound(Method::Phong, Profile::Ieee, 10, u32_).is_none());
+    assert!(proved_bound(Method::Gouraud, Profile::Ieee, 0, u32_).is_none());
+}
+
+#[test]
+fn euler_is_proved_under_ieee() {
+    let u32_ = f64::from(f32::EPSILON) / 2.0;
+    let u64_ = f64::EPSILON / 2.0;
+    // The larger of the recurrence (5.55·n + 121.41) and the closed form (131.41).
+    let e = proved_bound(Method::Euler, Profile::Ieee, 1, u32_).unwrap();
+    assert!((e / u32_ - 131.41).abs() < 1e-9);
+    let e = proved_bound(Method::Euler, Profile::Ieee, 2, u32_).unwrap();
+    assert!((e / u32_ - 132.51).abs() < 1e-9);
+    let e = proved_bound(Method::Euler, Profile::Ieee, 100, u64_).unwrap();
+    assert!((e / u64_ - 676.41).abs() < 1e-9);
+    assert!(proved_bound(Method::Euler, Profile::Ieee, 4097, u32_).is_none());
+    assert!(proved_bound(Method::Euler, Profile::Ieee, 1 << 24, u64_).is_some());
+    assert!(proved_bound(Method::Euler, Profile::Ieee, (1 << 24) + 1, u64_).is_none());
+    assert_eq!(
+        status(Method::Euler, Profile::Ieee, u32_),
+        Some(Status::Proved("profile_ieee_euler_binary32"))
+    );
+    assert_eq!(
+        status(Method::Euler, Profile::Ieee, u64_),
+        Some(Status::Proved("profile_ieee_euler_binary64_large"))
+    );
+    // `check` applies exactly the theorems' bound, and it is below the derivation
+    // it replaces wherever both exist.
+    for (u, ns) in [
+        (u32_, vec![1, 2, 3, 255, 256, 4095, 4096]),
+        (u64_, vec![1, 2, 4096, 4097, 1 << 20, 1 << 24]),
+    ] {
+        let a = arith(Profile::Ieee, u).unwrap();
+        for n in ns {
+            let p = proved_bound(Method::Euler, Profile::Ieee, n, u).unwrap();
+            assert_eq!(
+                profile_bound(Method::Euler, Profile::Ieee, n, 1.0, u),
+                Some(p)
+            );
+            assert!(p < euler_derived(&a, n).unwrap(), "{n}");
+        }
+    }
+}
+
+#[test]
+fn shader_bounds_are_the_largest_of_every_form() {
+    let u32_ = f64::from(f32::EPSILON) / 2.0;
+    // Every shader theorem of each method, the `_recip` recurrence first.
+    let theorems: [(Method, &[&str]); 3] = [
+        (
+            Method::Gouraud,
+            &[
+                "profile_shader_gouraud_recip_binary32",
+                "profile_shader_gouraud_binary32",
+            ],
+        ),
+        (
+            Method::CorrectedEuler,
+            &[
+                "profile_shader_corrected_euler_recip_binary32",
+                "profile_shader_corrected_euler_binary32",
+                "profile_shader_corrected_euler_closed_binary32",
+                "profile_shader_corrected_euler_closed_recip_binary32",
+                "profile_shader_corrected_euler_closed_half_binary32",
+                "profile_shader_corrected_euler_closed_half_recip_binary32",
+            ],
+        ),
+        (
+            Method::Euler,
+            &[
+                "profile_shader_euler_recip_binary32",
+                "profile_shader_euler_binary32",
+                "profile_shader_euler_closed_binary32",
+                "profile_shader_euler_closed_recip_binary32",
+                "profile_shader_euler_closed_half_binary32",
+                "profile_shader_euler_closed_half_recip_binary32",
+            ],
+        ),
+    ];
+    for (m, names) in theorems {
+        let forms = proved(m, Profile::Shader, u32_).unwrap();
+        let got: Vec<&str> = forms.iter().map(|f| f.theorem).collect();
+        assert_eq!(got, names, "{m}");
+        assert_eq!(
+            status(m, Profile::Shader, u32_),
+            Some(Status::Proved(names[0])),
+            "{m}"
+        );
+        // The bound applied is never below any form's theorem, and is one of them.
+        for n in 1..=4096 {
+            let b = profile_bound(m, Profile::Shader, n, 1.0, u32_).unwrap();
+            assert_eq!(Some(b), proved_bound(m, Profile::Shader, n, u32_));
+            let each: Vec<f64> = forms.iter().map(|f| f.at(n, u32_).unwrap()).collect();
+            assert!(each.iter().all(|&x| x <= b), "{m} {n}");
+            assert!(each.contains(&b), "{m} {n}");
+        }
+        assert!(profile_bound(m, Profile::Shader, 4097, 1.0, u32_).is_none());
+        assert!(proved(m, Profile::Shader, f64::EPSILON / 2.0).is_none());
+    }
+    let at = |m, n| proved_bound(m, Profile::Shader, n, u32_).unwrap() / u32_;
+    // Gouraud: the `_recip` recurrence, (2.0012·n + 28.0014)·u.
+    assert!((at(Method::Gouraud, 1) - 30.0026).abs() < 1e-9);
+    assert!((at(Method::Gouraud, 100) - 228.1214).abs() < 1e-9);
+    // Corrected Euler: the halved closed form through reciprocals (148.11) up to
+    // n = 5, then the `_recip` recurrence (4.4·n + 124.31).
+    assert!((at(Method::CorrectedEuler, 1) - 148.11).abs() < 1e-9);
+    assert!((at(Method::CorrectedEuler, 5) - 148.11).abs() < 1e-9);
+    assert!((at(Method::CorrectedEuler, 6) - 150.71).abs() < 1e-9);
+    assert!((at(Method::CorrectedEuler, 100) - 564.31).abs() < 1e-9);
+    // Plain Euler: 313.36 up to n = 2, then (11.1·n + 288.11).
+    assert!((at(Method::Euler, 1) - 313.36).abs() < 1e-9);
+    assert!((at(Method::Euler, 2) - 313.36).abs() < 1e-9);
+    assert!((at(Method::Euler, 3) - 321.41).abs() < 1e-9);
+    assert!((at(Method::Euler, 100) - 1398.11).abs() < 1e-9);
+    // The derivation plain Euler's theorems replace is larger at every n.
+    let a = arith(Profile::Shader, u32_).unwrap();
+    for n in 1..=4096 {
+        let p = proved_bound(Method::Euler, Profile::Shader, n, u32_).unwrap();
+        assert!(p < euler_derived(&a, n).unwrap(), "{n}");
+    }
+    // The adaptive scheme takes the larger of Gouraud's and corrected Euler's.
+    assert_eq!(
+        profile_bound(Method::Adaptive, Profile::Shader, 1, 1.0, u32_),
+        Some(148.11 * u32_)
+    );
+}
+
+/// A declared form takes that form's theorems alone: corrected Euler's closed form
+/// at `n = 4095` under `ieee` binary32 is `59.61·u`, its recurrence
+/// `(2.2·4095 + 51.21)·u`, undeclared the larger; only Euler and corrected Euler
+/// tell their forms apart; fixed point proves the loop only.
+#[test]
+fn a_declared_form_takes_its_own_theorems() {
+    let u32_ = U32;
+    let ce = |form| proved_bound_in(Method::CorrectedEuler, Profile::Ieee, form, 4095, u32_);
+    assert_eq!(ce(Form::Closed), Some(59.61 * u32_));
+    assert_eq!(ce(Form::Recurrence), Some((2.2 * 4095.0 + 51.21) * u32_));
+    assert_eq!(ce(Form::Any), ce(Form::Recurrence));
+    // At n = 1 the closed form's constant is the larger: undeclared takes it.
+    let ce1 = |form| proved_bound_in(Method::CorrectedEuler, Profile::Ieee, form, 1, u32_);
+    assert_eq!(ce1(Form::Any), Some(59.61 * u32_));
+    assert_eq!(ce1(Form::Recurrence), Some((2.2 + 51.21) * u32_));
+    // Under shader the closed forms' four theorems, the largest.
+    let sh = proved_bound_in(Method::Euler, Profile::Shader, Form::Closed, 4095, u32_);
+    assert_eq!(sh, Some(313.36 * u32_));
+    for m in Method::ALL {
+        assert_eq!(
+            Form::applies_to(m),
+            matches!(m, Method::Euler | Method::CorrectedEuler),
+            "{m}"
+        );
+        if !Form::applies_to(m) {
+            for form in [Form::Recurrence, Form::Closed] {
+                assert!(
+                    proved_in(m, Profile::Ieee, form, u32_).is_none(),
+                    "{m} {form}"
+                );
+            }
+        }
+    }
+    use crate::reference::unit::unit_from_ints;
+    let span = crate::Span::new(
+        unit_from_ints(0, 0, 1),
+        unit_from_ints(1, 0, 3),
+        unit_from_ints(0, 0, 1),
+        8,
+    )
+    .unwrap();
+    let shape = crate::tolerance::Shape::of(&span);
+    let fixed = Profile::Fixed {
+        int_bits: 16,
+        frac_bits: 16,
+    };
+    let b = |form| profile_span_bound(Method::CorrectedEuler, fixed, form, &shape, u32_);
+    assert!(b(Form::Any).is_some());
+    assert_eq!(b(Form::Recurrence), b(Form::Any));
+    assert_eq!(b(Form::Closed), None);
+    assert_eq!(
+        profile_span_bound(Method::Phong, Profile::Ieee, Form::Closed, &shape, u32_),
+        None
+    );
+    for form in Form::ALL {
+        assert_eq!(form.name().parse::<Form>(), Ok(form));
+    }
+    assert!("horner".parse::<Form>().is_err());
+}

@@ -259,7 +259,7 @@ impl Method {
         if self.is_rational() {
             return None;
         }
-        let q = log2_recip(&span.q_min());
+        let q = log2_recip(span.q_min().to_f64());
         let loss = if self.is_phong_valued() {
             q / 2 + 2
         } else if self.info().family == Family::Related {
@@ -269,7 +269,7 @@ impl Method {
             let sin = if s2 == BigRational::from_integer(0.into()) {
                 0
             } else {
-                log2_recip(&s2)
+                log2_recip(s2.to_f64())
             };
             2 * n_bits + 2 * sin + 2 * q + 8
         } else {
@@ -375,9 +375,10 @@ impl Method {
     }
 }
 
-/// `⌈log2(1/x)⌉` for `0 < x` (0 when `x ≥ 1`; very large for `x ≤ 0`).
-fn log2_recip(x: &BigRational) -> i64 {
-    let f = x.to_f64();
+/// `⌈log2(1/f)⌉` for `0 < f` (0 when `f ≥ 1`; very large, and safe to add to, for
+/// `f ≤ 0`): the bits a quantity as small as `f` costs (`span`'s MPFR run reads it
+/// for `q_min` too).
+pub(crate) fn log2_recip(f: f64) -> i64 {
     if f >= 1.0 {
         0
     } else if f > 0.0 {

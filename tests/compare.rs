@@ -54,9 +54,15 @@ fn one_frame_relations() {
     assert!(st.pixels > 1000);
     assert_eq!(st.dropped_rows, 0);
     let d = |s: Shader| &st.diffuse[index(s)];
-    assert_eq!(d(Shader::PhongPixel).max, 0);
+    // Every column is measured against the exact Phong per pixel: one that is known
+    // to deviate must, or nothing was measured (the reference column's own 0 is by
+    // construction and says nothing).
+    assert!(d(Shader::VertexGouraud).max > 0);
     for k in 0..SHININESS.len() {
-        assert_eq!(st.specular[k][0].max, 0);
+        assert!(
+            st.specular[k][index(Shader::VertexGouraud)].max > 0,
+            "shininess {k}"
+        );
     }
     for s in [
         Shader::Span(Method::Phong),

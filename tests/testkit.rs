@@ -306,6 +306,11 @@ fn specular_cases_give_h_and_s_and_are_judged() {
         r.to_string().contains("does not model the specular power"),
         "{r}"
     );
+    // The advice is the kit's, not the command line's: a Suite method, no flag.
+    let text = r.to_string();
+    assert!(text.contains("give Suite::tolerance"), "{text}");
+    assert!(!text.contains("--tolerance"), "{text}");
+    assert!(r.failures().iter().all(|f| !f.allowed_text.contains("--")));
 }
 
 /// The number of specular cases per published set, counted from the files.

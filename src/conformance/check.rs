@@ -9,7 +9,7 @@ mod tolerance;
 #[cfg(feature = "csv")]
 pub use results::{parse_results, parse_results_csv};
 pub use results::{parse_results_json, InputError, Results, MAX_CSV_LINE, MAX_RESULTS_BYTES};
-pub use tolerance::{f32_ulp, format_name, ulp_in, Tolerance};
+pub use tolerance::{f32_ulp, format_name, ulp_in, Caller, Tolerance, Unbounded};
 
 use super::vectors::{Case, Expected, VectorFile};
 use crate::method::Method;
@@ -47,8 +47,11 @@ pub struct CaseReport {
     /// The allowed absolute error, where the tolerance is one (a profile's bound, the
     /// reference bound, [`Tolerance::Abs`]).
     pub allowed_abs: Option<f64>,
-    /// The tolerance applied (as an absolute value, or levels).
+    /// The tolerance applied (as an absolute value, or levels), or why there is none
+    /// ([`CaseReport::unbounded`]'s reason, without advice).
     pub allowed: String,
+    /// Why the case has no bound, where it has none (it then fails).
+    pub unbounded: Option<Unbounded>,
     /// Whether every pixel is within the tolerance.
     pub pass: bool,
     /// The first pixel whose result is NaN or infinite (it fails, whatever the
@@ -356,39 +359,41 @@ fn case_report(
     if ratio.is_nan() {
         ratio = 0.0;
     }
-    let allowed = match tol {
-        Tolerance::Levels(n) => format!("{n} levels"),
-        Tolerance::Ulps(n) => format!("{n} ulps"),
+    let why = match tol {
         Tolerance::Profile { profile, u, form } if unbounded => {
             use crate::tolerance::profile::Form;
-            if form != Form::Any && !Form::applies_to(method) {
-                format!(
-                    "a declared form tells apart only euler's and corrected-euler's theorems; {method} takes the form any"
-                )
+            let p = profile.to_string();
+            Some(if form != Form::Any && !Form::applies_to(method) {
+                Unbounded::FormNotToldApart {
+                    method: method.to_string(),
+                }
             } else if specular && matches!(profile, Profile::Shader | Profile::Fixed { .. }) {
-                format!(
-                    "the {profile} profile does not model the specular power (pass --tolerance)"
-                )
+                Unbounded::SpecularNotModelled { profile: p }
             } else if crate::tolerance::profile::status(method, profile, u).is_none() {
-                format!(
-                    "the {profile} profile has no bound for {method} in this format \
-                     (--profile reference judges this crate's own evaluation; or pass --tolerance)"
-                )
+                Unbounded::NoBound {
+                    profile: p,
+                    method: method.to_string(),
+                }
             } else if form == Form::Closed && matches!(profile, Profile::Fixed { .. }) {
-                format!("the {profile} profile's theorems cover the loop, not the closed form")
+                Unbounded::FixedClosedForm { profile: p }
             } else if let Profile::Fixed { int_bits, .. } = profile {
-                format!(
-                    "the {profile} profile's registers may overflow on this span: its values and slopes must stay below 2^{} in {int_bits} integer bits (docs/float.md §14); more integer bits, or pass --tolerance",
-                    int_bits.saturating_sub(1)
-                )
+                Unbounded::FixedOverflow {
+                    profile: p,
+                    limit: int_bits.saturating_sub(1),
+                    int_bits,
+                }
             } else {
-                format!(
-                    "no {profile} bound for this span: n past the bound's range, or q may lose half of itself (pass --tolerance)"
-                )
-            }
+                Unbounded::OutOfRange { profile: p }
+            })
         }
-        _ if unbounded => "no derived bound (pass --tolerance)".to_string(),
-        _ => format!("{:.3e}", allowed_abs.unwrap_or(0.0)),
+        _ if unbounded => Some(Unbounded::NoDerivedBound),
+        _ => None,
+    };
+    let allowed = match (&why, tol) {
+        (Some(why), _) => why.to_string(),
+        (None, Tolerance::Levels(n)) => format!("{n} levels"),
+        (None, Tolerance::Ulps(n)) => format!("{n} ulps"),
+        (None, _) => format!("{:.3e}", allowed_abs.unwrap_or(0.0)),
     };
     CaseReport {
         id: c.id.clone(),
@@ -403,6 +408,7 @@ fn case_report(
         ratio,
         allowed_abs,
         allowed,
+        unbounded: why,
         pass,
         not_finite,
         seconds: 0.0,

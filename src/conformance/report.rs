@@ -128,7 +128,15 @@ fn why(row: &Row) -> String {
         } else {
             format!("{:.3e}", row.r.max_abs)
         },
-        row.r.allowed
+        allowed_text(row.r)
+    )
+}
+
+/// The tolerance of `r` in words, with the command line's advice where it has none.
+fn allowed_text(r: &super::check::CaseReport) -> String {
+    r.unbounded.as_ref().map_or_else(
+        || r.allowed.clone(),
+        |u| u.with_advice(super::check::Caller::CommandLine),
     )
 }
 
@@ -217,7 +225,7 @@ pub fn json(
                 "not_finite_pixel": row.r.not_finite,
                 "max_abs": if row.r.not_finite.is_some() { serde_json::Value::Null } else { num(row.r.max_abs) },
                 "max_levels": row.r.max_levels,
-                "allowed": row.r.allowed,
+                "allowed": allowed_text(row.r),
                 "allowed_abs": row.r.allowed_abs.map(num),
                 "ratio": num(row.r.ratio),
                 "seconds": row.r.seconds,

@@ -244,7 +244,10 @@ pub fn text(vectors: &VectorFile, reports: &[CaseReport], key: &str, specular: b
                 format!("{:.4}", r.mean_levels),
                 abs,
                 ulps,
-                r.allowed.clone(),
+                r.unbounded.as_ref().map_or_else(
+                    || r.allowed.clone(),
+                    |u| u.with_advice(super::check::Caller::CommandLine),
+                ),
                 times_allowed(r.ratio),
                 (if r.pass { "pass" } else { "FAIL" }).to_string(),
             ]

@@ -102,19 +102,6 @@ fn check_digits<T: Real>(
     Ok(())
 }
 
-/// `⌈log2(1/q_min)⌉` (0 when `q_min ≥ 1`), from the span's own `q_min`.
-#[cfg(feature = "mpfr")]
-fn q_bits<T: Real>(span: &Span<T>) -> i64 {
-    let q = span.q_min().to_f64();
-    if q >= 1.0 {
-        0
-    } else if q > 0.0 {
-        (-q.log2()).ceil() as i64
-    } else {
-        i64::MAX / 4
-    }
-}
-
 /// The bits known of the exact values ([`Method::exact_bits`]). Rational methods on
 /// exact inputs are exact (`None`: every digit is known).
 ///
@@ -332,7 +319,12 @@ pub(super) fn run_mpfr(r: &Request, precision: u32) -> Result<Outcome, ReportErr
         } else {
             Span::new(r.na.clone(), r.nb.clone(), r.l.clone(), r.n).ok()
         };
-        let bits = mpfr_bits(r, exact.as_ref(), precision, q_bits(&span));
+        let bits = mpfr_bits(
+            r,
+            exact.as_ref(),
+            precision,
+            crate::method::log2_recip(span.q_min().to_f64()),
+        );
         check_digits(r, &values, bits, exact_zeros(r)).map_err(|s| s.error(bits))?;
         // A level is printed only where it is known: decided exactly where the value
         // is (Phong's p/√q, p_a), else only where its error cannot cross a boundary.

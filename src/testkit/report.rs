@@ -160,7 +160,7 @@ impl Failure {
             ulps: None,
             levels: None,
             profile: j.profile.to_string(),
-            allowed_text: r.allowed.clone(),
+            allowed_text: allowed_text(r),
             command: Some(c.reproduce(j.key, j.specular)),
             lines: Vec::new(),
         };
@@ -208,7 +208,7 @@ impl Failure {
                 c.n + 1
             )),
         }
-        lines.push(format!("allowed   = {}{}", r.allowed, times(r.ratio)));
+        lines.push(format!("allowed   = {}{}", allowed_text(r), times(r.ratio)));
         lines.push(format!(
             "reproduce = {}",
             f.command.as_deref().unwrap_or("")
@@ -415,4 +415,12 @@ impl fmt::Display for Report {
         }
         Ok(())
     }
+}
+
+/// The tolerance of `r` in words, with the test kit's advice where it has none.
+fn allowed_text(r: &crate::conformance::check::CaseReport) -> String {
+    r.unbounded.as_ref().map_or_else(
+        || r.allowed.clone(),
+        |u| u.with_advice(crate::conformance::check::Caller::TestKit),
+    )
 }

@@ -177,3 +177,103 @@ pub fn f32_ulp(x: f64) -> f64 {
     let b = f32::from_bits(a.to_bits() + 1);
     f64::from(b) - f64::from(a)
 }
+
+/// Why a case has no bound under its tolerance, so that it fails: as data, so that
+/// each caller gives its own advice ([`Unbounded::advice`]: the command line names its
+/// flags, the test kit its methods).
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum Unbounded {
+    /// A declared form for a method whose forms no theorem tells apart.
+    #[error("a declared form tells apart only euler's and corrected-euler's theorems; {method} takes the form any")]
+    FormNotToldApart {
+        /// The method.
+        method: String,
+    },
+    /// A specular case under a profile that does not model the power.
+    #[error("the {profile} profile does not model the specular power")]
+    SpecularNotModelled {
+        /// The profile.
+        profile: String,
+    },
+    /// No bound for the method under the profile in this format.
+    #[error("the {profile} profile has no bound for {method} in this format")]
+    NoBound {
+        /// The profile.
+        profile: String,
+        /// The method.
+        method: String,
+    },
+    /// A declared closed form under fixed point, whose theorems are the loop's.
+    #[error("the {profile} profile's theorems cover the loop, not the closed form")]
+    FixedClosedForm {
+        /// The profile.
+        profile: String,
+    },
+    /// Fixed-point registers that may overflow on the span.
+    #[error("the {profile} profile's registers may overflow on this span: its values and slopes must stay below 2^{limit} in {int_bits} integer bits (docs/float.md §14)")]
+    FixedOverflow {
+        /// The profile.
+        profile: String,
+        /// The largest power of two the values and slopes must stay below.
+        limit: u32,
+        /// The registers' integer bits.
+        int_bits: u32,
+    },
+    /// The profile's bound does not reach this span: `n` past its range, or `q` may
+    /// lose half of itself.
+    #[error(
+        "no {profile} bound for this span: n past the bound's range, or q may lose half of itself"
+    )]
+    OutOfRange {
+        /// The profile.
+        profile: String,
+    },
+    /// The reference profile has no derived bound for the span.
+    #[error("no derived bound")]
+    NoDerivedBound,
+}
+
+/// Who is told what to do about a case with no bound: the user of the command line or
+/// of the test kit.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Caller {
+    /// `phong-approx check`: advice names its flags.
+    CommandLine,
+    /// `testkit::Suite`: advice names its methods.
+    TestKit,
+}
+
+impl Unbounded {
+    /// What the caller can do about it (`None` where the reason says it).
+    pub fn advice(&self, caller: Caller) -> Option<&'static str> {
+        let cli = caller == Caller::CommandLine;
+        match self {
+            Unbounded::FormNotToldApart { .. } | Unbounded::FixedClosedForm { .. } => None,
+            Unbounded::NoBound { .. } => Some(if cli {
+                "--profile reference judges this crate's own evaluation; or pass --tolerance"
+            } else {
+                "Profile::Reference judges this crate's own evaluation; or give Suite::tolerance"
+            }),
+            Unbounded::FixedOverflow { .. } => Some(if cli {
+                "more integer bits, or pass --tolerance"
+            } else {
+                "more integer bits, or give Suite::tolerance"
+            }),
+            Unbounded::SpecularNotModelled { .. }
+            | Unbounded::OutOfRange { .. }
+            | Unbounded::NoDerivedBound => Some(if cli {
+                "pass --tolerance"
+            } else {
+                "give Suite::tolerance"
+            }),
+        }
+    }
+
+    /// The reason with the caller's advice: `reason (advice)`.
+    pub fn with_advice(&self, caller: Caller) -> String {
+        match self.advice(caller) {
+            Some(a) => format!("{self} ({a})"),
+            None => self.to_string(),
+        }
+    }
+}

@@ -1,6 +1,6 @@
 //! Checking an implementation's results against a vector file: reading them
-//! ([`results`]: CSV or JSON, streaming), the tolerance they are judged by
-//! ([`tolerance`]), and the verdict on each case (here: the bound a profile gives the
+//! (`check/results.rs`: CSV or JSON, streaming), the tolerance they are judged by
+//! (`check/tolerance.rs`), and the verdict on each case (here: the bound a profile gives the
 //! case, the adaptive scheme's band, the levels, absolute errors and ulps).
 
 mod results;

@@ -14,9 +14,9 @@ use std::fmt;
 /// What a method asks of the number type.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Needs {
-    /// Field operations only ([`Scalar`]): exact in rationals.
+    /// Field operations only ([`Scalar`](crate::Scalar)): exact in rationals.
     Field,
-    /// Square roots, `acos` or `cos` as well ([`Real`]).
+    /// Square roots, `acos` or `cos` as well ([`Real`](crate::Real)).
     Real,
 }
 
@@ -38,7 +38,7 @@ pub struct Info {
     pub needs: Needs,
     /// The pixels where its exact value is Phong's `p_i/√q_i`, so that the exact
     /// 8-bit level there is decided from `p_i` and `q_i` in rationals
-    /// ([`phong_level_exact`]) however close it is to a level boundary.
+    /// ([`phong_level_exact`](crate::reference::level::phong_level_exact)) however close it is to a level boundary.
     pub phong_pixels: PhongPixels,
     /// Whether part of the method is a reconstruction from an incomplete description
     /// (`docs/comparison.md`).

@@ -11,7 +11,7 @@ pub enum Tolerance {
     /// At most this far from the expected value.
     Abs(f64),
     /// At most this many ulps from it, in the implementation's format (`f32` unless
-    /// [`check_in`] is told the format's unit roundoff), counted at the case's scale:
+    /// [`check_in`](super::check_in) is told the format's unit roundoff), counted at the case's scale:
     /// the ulp of the largest `|expected value|` of the span. The methods' errors are
     /// absolute, on values of that magnitude; the ulp of a value near zero would make
     /// a tiny absolute error look like tens of thousands of ulps.

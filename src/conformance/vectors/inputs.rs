@@ -97,7 +97,7 @@ impl InputsFile {
     /// the exact reference (with `specular`, also the specular ones for cases that
     /// have a half vector; without, the half vectors are dropped unread);
     /// `q_min`, `δ` and the adaptive decision are the span's. The result passes
-    /// [`super::integrity::validate`] whenever the inputs are valid.
+    /// [`crate::conformance::integrity::validate`] whenever the inputs are valid.
     ///
     /// # Errors
     /// A case whose inputs are not exact unit vectors, whose `n` is out of range, whose

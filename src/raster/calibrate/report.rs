@@ -165,13 +165,7 @@ pub fn sensitivity_svg(study: &Study) -> Result<String, PictureError> {
     use plotters::style::text_anchor::{HPos, Pos, VPos};
     const TITLE: &str = "How far each scene choice moves each of the paper's 28 numbers (spread of residual/tolerance over the choice's values, at the best scene)";
     let m = sensitivity_matrix(study);
-    let names: Vec<&str> = study
-        .best
-        .fit
-        .residuals
-        .iter()
-        .map(|r| r.name.as_str())
-        .collect();
+    let names = residual_names(study);
     let (cw, ch, left, top) = (34i32, 26i32, 150i32, 190i32);
     let w = left + cw * names.len() as i32 + 130;
     let h = top + ch * m.len() as i32 + 60;
@@ -278,13 +272,7 @@ pub fn report_md(study: &Study, space: &Space, frames: u32) -> String {
         rule.push_str("---:|");
     }
     let _ = writeln!(s, "{head}\n{rule}");
-    let names: Vec<&str> = study
-        .best
-        .fit
-        .residuals
-        .iter()
-        .map(|r| r.name.as_str())
-        .collect();
+    let names = residual_names(study);
     for (p, row) in &m {
         let mut line = format!("| {} |", p.name());
         for (_, pat) in groups {
@@ -329,4 +317,15 @@ pub fn report_md(study: &Study, space: &Space, frames: u32) -> String {
         );
     }
     s
+}
+
+/// The names of the paper's numbers, in the order of the best scene's residuals.
+fn residual_names(study: &Study) -> Vec<&str> {
+    study
+        .best
+        .fit
+        .residuals
+        .iter()
+        .map(|r| r.name.as_str())
+        .collect()
 }

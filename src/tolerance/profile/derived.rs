@@ -115,7 +115,7 @@ fn eta_total(a: &Arith, nf: f64) -> f64 {
 /// product, fused or not, `/n` as a division or `·(1/n)`.
 ///
 /// Not applied by `check` under any profile: under `ieee` and `shader` the theorems
-/// of [`proved`] cover the same forms (under `shader` with every division, the
+/// of [`proved`](super::proved) cover the same forms (under `shader` with every division, the
 /// halvings included, one 2.5-ulp division or a 2.5-ulp reciprocal and a product) and
 /// are smaller at every `n` (`ieee`: `131.41·u` against about `244·u` at `n = 1`;
 /// `shader`: `313.36·u` against about `899·u` at `n = 1`, `45,754·u` against

@@ -40,24 +40,15 @@ impl Form {
         }
     }
 
-    /// Whether a profile's theorems tell `method`'s forms apart: Euler and corrected
-    /// Euler, whose recurrences and closed forms each have theorems. A declared form
-    /// other than [`Form::Any`] is refused for the other methods.
+    /// Whether a profile's theorems tell `method`'s forms apart: its theorems
+    /// ([`super::proved`], `ieee` binary32) include a recurrence's, whose bound grows
+    /// with `n`, and a closed form's, whose bound does not — Euler and corrected Euler.
+    /// A declared form other than [`Form::Any`] is refused for the other methods.
     pub fn applies_to(method: crate::Method) -> bool {
-        use crate::Method;
-        match method {
-            Method::Euler | Method::CorrectedEuler => true,
-            Method::Gouraud
-            | Method::Phong
-            | Method::Duff
-            | Method::SymmetricPhong
-            | Method::Adaptive
-            | Method::Angular
-            | Method::AngularTable(_)
-            | Method::Spherical
-            | Method::Binary
-            | Method::BishopWeimer => false,
-        }
+        super::proved(method, super::Profile::Ieee, super::U32).is_some_and(|forms| {
+            forms.iter().any(|p| Form::Recurrence.covers(p))
+                && forms.iter().any(|p| Form::Closed.covers(p))
+        })
     }
 
     /// Whether a theorem's bound `(α·n + β)·u` is of this form: a closed form's has

@@ -125,7 +125,7 @@ pub fn check_in(
 /// specular power: `None` for the other tolerances and where no bound holds. Specular
 /// cases shade `N·H`, not `N·L`, so the reference bound takes no edge values there.
 fn case_bound(c: &Case, method: Method, tol: Tolerance, specular: bool) -> Option<f64> {
-    use crate::tolerance::profile::{profile_bound, profile_span_bound, Profile};
+    use crate::tolerance::profile::{profile_bound_in, profile_span_bound, Profile};
     match tol {
         Tolerance::Profile {
             profile: Profile::Reference,
@@ -141,10 +141,14 @@ fn case_bound(c: &Case, method: Method, tol: Tolerance, specular: bool) -> Optio
         // The case's exact span gives Phong's derived bound its |N_b − N_a|.
         Tolerance::Profile { profile, u, form } => match case_shape(c) {
             Some(shape) => profile_span_bound(method, profile, form, &shape, u),
-            None if form == crate::tolerance::profile::Form::Any => {
-                profile_bound(method, profile, c.n, c.q_min * (1.0 - 2f64.powi(-40)), u)
-            }
-            None => None,
+            None => profile_bound_in(
+                method,
+                profile,
+                form,
+                c.n,
+                c.q_min * (1.0 - 2f64.powi(-40)),
+                u,
+            ),
         },
         _ => None,
     }

@@ -341,7 +341,19 @@ pub fn profile_bound(
     q_min: f64,
     u: f64,
 ) -> Option<f64> {
-    bound_with(method, profile, Form::Any, n, q_min, 2.0, u)
+    profile_bound_in(method, profile, Form::Any, n, q_min, u)
+}
+
+/// [`profile_bound`] for an implementation that declares its `form` ([`Form`]).
+pub fn profile_bound_in(
+    method: crate::Method,
+    profile: Profile,
+    form: Form,
+    n: u32,
+    q_min: f64,
+    u: f64,
+) -> Option<f64> {
+    bound_with(method, profile, form, n, q_min, 2.0, u)
 }
 
 /// [`profile_bound`] for a known span: Phong's derived bound with the span's own
@@ -357,9 +369,6 @@ pub fn profile_span_bound(
     shape: &crate::tolerance::Shape,
     u: f64,
 ) -> Option<f64> {
-    if form != Form::Any && !Form::applies_to(method) {
-        return None;
-    }
     bound_with(method, profile, form, shape.n, shape.q_min, shape.dn, u)
 }
 
@@ -373,6 +382,10 @@ fn bound_with(
     u: f64,
 ) -> Option<f64> {
     use crate::Method;
+    // A declared form narrows only the bounds whose theorems tell forms apart.
+    if form != Form::Any && !Form::applies_to(method) {
+        return None;
+    }
     if let Profile::Fixed {
         int_bits,
         frac_bits,

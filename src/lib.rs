@@ -77,6 +77,7 @@ pub mod euler;
 pub mod fast;
 pub mod fast_rows;
 pub mod fixed_span;
+pub mod format;
 pub mod gouraud;
 #[cfg(feature = "gpu")]
 pub mod gpu;
@@ -102,6 +103,7 @@ pub mod tolerance;
 pub mod vector;
 
 pub use error::{Input, SpanError};
+pub use format::Format;
 pub use method::Method;
 pub use num_rational::BigRational;
 pub use scalar::{Real, Scalar};

@@ -57,6 +57,15 @@ impl Arithmetic {
         }
     }
 
+    /// The float format of a float run (`None` for exact and MPFR runs).
+    pub fn format(self) -> Option<crate::Format> {
+        match self {
+            Arithmetic::F32 => Some(crate::Format::Binary32),
+            Arithmetic::F64 => Some(crate::Format::Binary64),
+            Arithmetic::Exact | Arithmetic::Mpfr(_) => None,
+        }
+    }
+
     /// Exact or MPFR.
     pub fn is_exact(self) -> bool {
         matches!(self, Arithmetic::Exact | Arithmetic::Mpfr(_))
@@ -286,12 +295,8 @@ pub fn span_report(r: &Request) -> Result<SpanReport, ReportError> {
         Arithmetic::Exact => run_exact(r)?,
         Arithmetic::Mpfr(precision) => run_mpfr(r, precision)?,
     };
-    let u = match r.arithmetic {
-        Arithmetic::F32 => Some(f32::unit_roundoff()),
-        Arithmetic::F64 => Some(f64::unit_roundoff()),
-        _ => None,
-    };
-    let bounds = u.map(|u| error_bounds(r, u));
+    let format = r.arithmetic.format();
+    let bounds = format.map(|f| error_bounds(r, f));
     Ok(SpanReport {
         method: r.method.name().into_owned(),
         scalar: r.arithmetic.name(),
@@ -299,9 +304,9 @@ pub fn span_report(r: &Request) -> Result<SpanReport, ReportError> {
         values: o.values,
         levels: o.levels,
         fractions: o.fractions,
-        error_bound_status: u
+        error_bound_status: format
             .zip(bounds.as_ref())
-            .map(|(u, b)| error_bound_status(r, u, b)),
+            .map(|(f, b)| error_bound_status(r, f, b)),
         error_bound: bounds,
         table_size: match r.method {
             Method::AngularTable(size) => Some(size),

@@ -303,16 +303,13 @@ fn edges(shape: Option<&Shape>) -> Option<(f64, f64)> {
 /// `tests/profiles.rs::specular_bound_holds`.
 ///
 /// Each of the `s − 1` products may also underflow, off by half the smallest subnormal
-/// `η` (`2^-150` in binary32, `2^-1075` in binary64) instead of relatively, which the
+/// `η` ([`crate::Format::eta`]: `2^-150` in binary32, `2^-1075` in binary64) instead of relatively, which the
 /// later products carry at most `max(1, v_max + b)^s` times: `s·η·max(1, v_max + b)^s`
 /// more (a large `s` on a small value underflows to zero: this is that term).
-pub fn specular_bound(b: f64, s: f64, v_max: f64, u: f64) -> f64 {
+pub fn specular_bound(b: f64, s: f64, v_max: f64, format: crate::Format) -> f64 {
+    let u = format.u();
     let g = s * u / (1.0 - s * u);
-    let eta = if u == f64::from(f32::EPSILON) / 2.0 {
-        2f64.powi(-150)
-    } else {
-        2f64.powi(-1075)
-    };
+    let eta = format.eta();
     let top = (v_max + b).max(1.0).powf(s);
     (s * (v_max + b).powf(s - 1.0) * b + g * (v_max + b).powf(s) + s * eta * top) * (1.0 + 1e-12)
 }

@@ -306,11 +306,11 @@ fn the_checkers_profile_constants_are_the_theorems() {
     let mut applied = BTreeSet::new();
     for m in phong_approx::Method::ALL {
         for profile in [Profile::Ieee, Profile::Shader] {
-            for (u, e) in [
-                (f64::from(f32::EPSILON) / 2.0, 24),
-                (f64::EPSILON / 2.0, 53),
+            for (f, e) in [
+                (phong_approx::Format::Binary32, 24),
+                (phong_approx::Format::Binary64, 53),
             ] {
-                for p in proved(m, profile, u).unwrap_or_default() {
+                for p in proved(m, profile, f).unwrap_or_default() {
                     let s = stated.get(p.theorem).unwrap_or_else(|| {
                         panic!("{} is not a bound theorem of Profiles.v", p.theorem)
                     });

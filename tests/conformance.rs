@@ -235,14 +235,20 @@ fn own_results<T: Real>(file: &VectorFile, method: Method, specular: bool) -> St
     s
 }
 
-fn passes(file: &VectorFile, method: Method, text: &str, u: f64, specular: bool) -> Vec<String> {
+fn passes(
+    file: &VectorFile,
+    method: Method,
+    text: &str,
+    format: phong_approx::Format,
+    specular: bool,
+) -> Vec<String> {
     let results = parse_results(text, "own", file, specular).unwrap();
     check(
         file,
         &results,
         method,
         &method_key(method),
-        Tolerance::Default { u },
+        Tolerance::Default { format },
         specular,
     )
     .unwrap()
@@ -274,7 +280,7 @@ fn own_f32_and_f64_results_pass_every_method_and_set() {
                 file,
                 m,
                 &own_results::<f32>(file, m, false),
-                f64::from(f32::EPSILON) / 2.0,
+                phong_approx::Format::Binary32,
                 false,
             );
             let n = f32_all.len();
@@ -285,7 +291,7 @@ fn own_f32_and_f64_results_pass_every_method_and_set() {
                 file,
                 m,
                 &own_results::<f64>(file, m, false),
-                f64::EPSILON / 2.0,
+                phong_approx::Format::Binary64,
                 false,
             );
             let n = f64_all.len();
@@ -307,7 +313,7 @@ fn own_specular_results_pass() {
                 file,
                 m,
                 &own_results::<f64>(file, m, true),
-                f64::EPSILON / 2.0,
+                phong_approx::Format::Binary64,
                 true,
             );
             assert!(fails.is_empty(), "{set} {m} specular: {fails:?}");
@@ -875,7 +881,7 @@ fn check_profile_fixed_judges_a_span_unit() {
             int_bits: m,
             frac_bits: f,
         },
-        u: 0.0,
+        format: phong_approx::Format::Binary32,
         form: phong_approx::tolerance::profile::Form::Any,
     };
     // The Q·.16 span unit (ε/(n+1) when `mutant`) on every case of `file`, checked.
@@ -962,7 +968,7 @@ fn check_profile_fixed_is_exact_up_to_51_fractional_bits() {
                 int_bits: 8,
                 frac_bits: f,
             },
-            u: 0.0,
+            format: phong_approx::Format::Binary32,
             form: phong_approx::tolerance::profile::Form::Any,
         };
         for mutant in [false, true] {

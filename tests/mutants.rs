@@ -224,12 +224,12 @@ fn verdict(m: &Mutant, file: &VectorFile, profile: Profile) -> (usize, usize, bo
         .iter()
         .map(|c| (c.id.clone(), (m.run)(c)))
         .collect();
-    let u = f64::from(f32::EPSILON) / 2.0;
+    let format = phong_approx::Format::Binary32;
     let tol = match profile {
-        Profile::Reference => Tolerance::Default { u },
+        Profile::Reference => Tolerance::Default { format },
         p => Tolerance::Profile {
             profile: p,
-            u,
+            format,
             form: phong_approx::tolerance::profile::Form::Any,
         },
     };
@@ -302,9 +302,9 @@ fn the_unmutated_harness_passes() {
             for profile in profiles() {
                 // A profile without a bound for the method (the adaptive scheme in
                 // fixed point) refuses every case: nothing to pass.
-                let u = f64::from(f32::EPSILON) / 2.0;
+                let format = phong_approx::Format::Binary32;
                 if profile != Profile::Reference
-                    && phong_approx::tolerance::profile::status(m.method, profile, u).is_none()
+                    && phong_approx::tolerance::profile::status(m.method, profile, format).is_none()
                 {
                     continue;
                 }

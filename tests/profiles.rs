@@ -26,11 +26,11 @@
 
 mod common;
 
-use common::emu::{round_dir, toward_zero, Dir, Format, BINARY32};
+use common::emu::{round_dir, toward_zero, Dir, Format as Emu, BINARY32};
 use common::*;
 use num_traits::{Signed, Zero};
 use phong_approx::tolerance::profile::{Form, Profile};
-use phong_approx::{Method, Scalar, Span};
+use phong_approx::{Format, Method, Scalar, Span};
 
 /// `(α·n + β)·u`, the form of every bound of `proofs/Profiles.v`.
 fn bound(alpha: f64, beta: f64, n: u32, u: f64) -> f64 {
@@ -82,10 +82,11 @@ trait Native: Copy + std::ops::Add<Output = Self> + std::ops::Sub<Output = Self>
     fn fma(self, b: Self, c: Self) -> Self;
     fn sqrt(self) -> Self;
     const U: f64;
+    const FORMAT: Format;
 }
 
 macro_rules! native {
-    ($t:ty) => {
+    ($t:ty, $f:ident) => {
         impl Native for $t {
             fn of(x: &Q) -> Self {
                 <$t as Scalar>::from_rational(x)
@@ -109,11 +110,12 @@ macro_rules! native {
                 <$t>::sqrt(self)
             }
             const U: f64 = <$t>::EPSILON as f64 / 2.0;
+            const FORMAT: Format = Format::$f;
         }
     };
 }
-native!(f32);
-native!(f64);
+native!(f32, Binary32);
+native!(f64, Binary64);
 
 /// How a variant sums a dot product.
 #[derive(Clone, Copy, Debug)]
@@ -518,7 +520,7 @@ struct Gpu {
     adv: Option<Adv>,
 }
 
-const F: Format = BINARY32;
+const F: Emu = BINARY32;
 
 impl Gpu {
     fn r(&self, x: Q) -> Q {
@@ -1111,7 +1113,7 @@ fn phong_ieee<T: Native>(what: &str) {
     let (mut checked, mut refused, mut worst) = (0, 0, 0f64);
     for s in phong_spans() {
         let shape = Shape::of(&s);
-        let Some(b) = phong_ieee(s.n, shape.q_min, shape.dn, T::U) else {
+        let Some(b) = phong_ieee(s.n, shape.q_min, shape.dn, T::FORMAT) else {
             refused += 1;
             continue;
         };
@@ -1166,8 +1168,8 @@ fn phong_ieee_derived_binary64() {
 // ------------------------- Duff, Phong under ieee and shader (derived, §18.5)
 
 /// The bound `check` applies to `method` under `profile` on `s` (`None`: no bound).
-fn profile_bound_of(method: Method, profile: Profile, s: &Span<Q>, u: f64) -> Option<f64> {
-    profile_bound_in(method, profile, Form::Any, s, u)
+fn profile_bound_of(method: Method, profile: Profile, s: &Span<Q>, format: Format) -> Option<f64> {
+    profile_bound_in(method, profile, Form::Any, s, format)
 }
 
 /// [`profile_bound_of`] for an implementation that declares its form.
@@ -1176,10 +1178,10 @@ fn profile_bound_in(
     profile: Profile,
     form: Form,
     s: &Span<Q>,
-    u: f64,
+    format: Format,
 ) -> Option<f64> {
     let shape = phong_approx::tolerance::Shape::of(s);
-    phong_approx::tolerance::profile::profile_span_bound(method, profile, form, &shape, u)
+    phong_approx::tolerance::profile::profile_span_bound(method, profile, form, &shape, format)
 }
 
 /// Plain Euler (eqs. 12–14) as the recurrence `E += s; s += ds` from `s_0 = di_a`.
@@ -1244,7 +1246,7 @@ fn duff<T: Native>(v: Variant, s: &Span<Q>) -> Vec<Q> {
 /// of the bound.
 fn search<W: Copy + std::fmt::Debug>(
     what: &str,
-    (method, profile, u, most): (Method, Profile, f64, u32),
+    (method, profile, format, most): (Method, Profile, Format, u32),
     ways: &[W],
     imp: impl Fn(W, &Span<Q>) -> Vec<Q>,
 ) -> (usize, usize, f64) {
@@ -1255,7 +1257,7 @@ fn search<W: Copy + std::fmt::Debug>(
         spans().into_iter().map(|(_, s)| s).collect()
     };
     for s in all.into_iter().filter(|s| s.n <= most) {
-        let Some(b) = profile_bound_of(method, profile, &s, u) else {
+        let Some(b) = profile_bound_of(method, profile, &s, format) else {
             refused += 1;
             continue;
         };
@@ -1286,7 +1288,7 @@ fn search<W: Copy + std::fmt::Debug>(
 fn ieee_derived<T: Native>(what: &str, method: Method, imp: impl Fn(Variant, &Span<Q>) -> Vec<Q>) {
     let (checked, refused, _) = search(
         what,
-        (method, Profile::Ieee, T::U, u32::MAX),
+        (method, Profile::Ieee, T::FORMAT, u32::MAX),
         &VARIANTS,
         imp,
     );
@@ -1468,7 +1470,12 @@ fn gpu_symmetric_phong(g: Gpu, s: &Span<Q>, how: Division) -> Vec<Q> {
 /// (1024 in the extensive tier: the emulated arithmetic is slow).
 fn shader_derived(what: &str, method: Method, imp: impl Fn(Gpu, &Span<Q>) -> Vec<Q>) {
     let most = tiered(256, 1024);
-    let (checked, _, _) = search(what, (method, Profile::Shader, f32::U, most), &GPUS, imp);
+    let (checked, _, _) = search(
+        what,
+        (method, Profile::Shader, Format::Binary32, most),
+        &GPUS,
+        imp,
+    );
     assert!(checked > 40, "{checked}");
 }
 
@@ -1570,7 +1577,7 @@ fn fast_kernels_pass_under_ieee_at_every_n() {
                         ("RowSpan::phong", Method::Phong, Box::new(move |o| row.phong(o))),
                     ];
                     for (name, m, run) in kernels {
-                        let Some(b) = profile_bound_of(m, Profile::Ieee, &s, u) else {
+                        let Some(b) = profile_bound_of(m, Profile::Ieee, &s, <$f as Native>::FORMAT) else {
                             continue;
                         };
                         let want = exact_values(m, &c, &s);
@@ -1860,11 +1867,10 @@ fn specular_bound_holds() {
                 .collect();
             macro_rules! run {
                 ($t:ty) => {{
-                    let u = <$t as Native>::U;
-                    let Some(b) = profile_bound_of(Method::CorrectedEuler, Profile::Ieee, s, u) else {
+                    let Some(b) = profile_bound_of(Method::CorrectedEuler, Profile::Ieee, s, <$t as Native>::FORMAT) else {
                         continue;
                     };
-                    let bs = specular_bound(b, f64::from(sh), v_max, u);
+                    let bs = specular_bound(b, f64::from(sh), v_max, <$t as Native>::FORMAT);
                     for v in &VARIANTS[..2] {
                         let v = *v;
                         let base: Vec<$t> = corrected_euler::<$t>(v, s).iter().map(|x| x.to_f64() as $t).collect();
@@ -1956,7 +1962,7 @@ fn adaptive_threshold_accepts_either_method() {
     }
     let (g, ce) = (exact("gouraud"), exact("corrected-euler"));
     assert!((g[1] - ce[1]).abs() > 1.0 / 256.0, "a whole level apart");
-    let judge = |values: Vec<f64>, u: f64| {
+    let judge = |values: Vec<f64>, format: Format| {
         let results = [(case.id.clone(), values)].into_iter().collect();
         let r = check_in(
             &vectors,
@@ -1965,16 +1971,16 @@ fn adaptive_threshold_accepts_either_method() {
             "adaptive",
             Tolerance::Profile {
                 profile: Profile::Ieee,
-                u,
+                format,
                 form: phong_approx::tolerance::profile::Form::Any,
             },
             false,
-            u,
+            format,
         )
         .unwrap();
         (r[0].pass, r[0].allowed.clone())
     };
-    let (u32_, u64_) = (f64::from(f32::EPSILON) / 2.0, f64::EPSILON / 2.0);
+    let (u32_, u64_) = (Format::Binary32, Format::Binary64);
     for (values, u) in [
         (own::<f32>(&na, &nb, &l), u32_),
         (own::<f64>(&na, &nb, &l), u64_),
@@ -2078,8 +2084,8 @@ fn proved_constants_are_the_theorems_statements() {
     let mut seen = 0;
     for m in Method::ALL {
         for profile in [Profile::Ieee, Profile::Shader] {
-            for (u, p) in [(2f64.powi(-24), 24), (2f64.powi(-53), 53)] {
-                for t in proved(m, profile, u).into_iter().flatten() {
+            for (f, p) in [(Format::Binary32, 24), (Format::Binary64, 53)] {
+                for t in proved(m, profile, f).into_iter().flatten() {
                     let (alpha, beta, max_n, exp) = statement(t.theorem);
                     assert_eq!(exp, p, "{}: unit roundoff", t.theorem);
                     assert!(
@@ -2282,7 +2288,7 @@ fn feeds<T>(role: Role, f: impl FnOnce() -> T) -> T {
 /// model and the rationals stay small.
 #[derive(Clone, Copy, Debug)]
 struct Adv {
-    fmt: Format,
+    fmt: Emu,
     exact_stays: bool,
     k_op: u32,
     k_div: u32,
@@ -2291,7 +2297,7 @@ struct Adv {
 }
 
 impl Adv {
-    fn ieee(fmt: Format, seed: u64) -> Self {
+    fn ieee(fmt: Emu, seed: u64) -> Self {
         Adv {
             fmt,
             exact_stays: true,
@@ -2349,7 +2355,7 @@ impl Adv {
         } else {
             x * (one - delta)
         };
-        let fine = Format {
+        let fine = Emu {
             prec: self.fmt.prec + 40,
             emin: -4000,
             emax: 4000,
@@ -2487,21 +2493,26 @@ fn adversary_runs(
     mut row: impl FnMut(&str, f64),
 ) {
     /// A model: its name, profile, unit roundoff and adversary by seed.
-    type Model = (&'static str, Profile, f64, fn(u64) -> Adv);
+    type Model = (&'static str, Profile, Format, fn(u64) -> Adv);
     let models: [Model; 3] = [
-        ("ieee binary32", Profile::Ieee, f32::U, |s| {
+        ("ieee binary32", Profile::Ieee, Format::Binary32, |s| {
             Adv::ieee(BINARY32, s)
         }),
-        ("ieee binary64", Profile::Ieee, f64::U, |s| {
+        ("ieee binary64", Profile::Ieee, Format::Binary64, |s| {
             Adv::ieee(common::emu::BINARY64, s)
         }),
-        ("shader binary32", Profile::Shader, f32::U, Adv::shader),
+        (
+            "shader binary32",
+            Profile::Shader,
+            Format::Binary32,
+            Adv::shader,
+        ),
     ];
-    for (model, profile, u, adv) in models {
+    for (model, profile, format, adv) in models {
         for (method, form, declared, run) in adversary_forms(profile == Profile::Shader) {
             let mut worst = 0f64;
             for (c, s) in spans.iter().filter(|(c, _)| c.n <= most) {
-                let Some(b) = profile_bound_in(method, profile, declared, s, u) else {
+                let Some(b) = profile_bound_in(method, profile, declared, s, format) else {
                     continue;
                 };
                 for seed in 0..seeds {

@@ -1576,12 +1576,9 @@ fn q4_phong_has_no_reference_bound_where_its_normals_nearly_cancel() {
 
 #[test]
 fn q5_ulps_are_counted_in_the_precision_checked() {
-    use phong_approx::conformance::check::ulp_in;
-    assert_eq!(ulp_in(1.0, f64::EPSILON / 2.0), f64::EPSILON);
-    assert_eq!(
-        ulp_in(1.0, f64::from(f32::EPSILON) / 2.0),
-        f64::from(f32::EPSILON)
-    );
+    use phong_approx::Format;
+    assert_eq!(Format::Binary64.ulp(1.0), f64::EPSILON);
+    assert_eq!(Format::Binary32.ulp(1.0), f64::from(f32::EPSILON));
     // f64 results off by a relative 2^-30 (2^22 f64 ulps) fail ulps=0.5 under f64.
     let d = scratch("q5");
     let csv = results_csv(&typical());
@@ -1627,7 +1624,7 @@ fn q6_the_library_refuses_meaningless_tolerances() {
                 int_bits: 64,
                 frac_bits: u32::MAX,
             },
-            u: 1e-7,
+            format: phong_approx::Format::Binary32,
             form: phong_approx::tolerance::profile::Form::Any,
         },
         Tolerance::Profile {
@@ -1635,7 +1632,7 @@ fn q6_the_library_refuses_meaningless_tolerances() {
                 int_bits: 1 << 31,
                 frac_bits: 16,
             },
-            u: 1e-7,
+            format: phong_approx::Format::Binary32,
             form: phong_approx::tolerance::profile::Form::Any,
         },
     ] {
@@ -1978,7 +1975,7 @@ proptest::proptest! {
         f in proptest::prelude::any::<u32>(),
         n in proptest::prelude::any::<u32>(),
         x in proptest::prelude::any::<f64>(),
-        u in proptest::prelude::any::<f64>(),
+        fi in 0usize..3,
         size in 0u32..4096,
     ) {
         use phong_approx::conformance::check::Tolerance;
@@ -1989,7 +1986,8 @@ proptest::proptest! {
         for method in [Method::Gouraud, Method::CorrectedEuler, Method::Phong] {
             let _ = fixed_bound(method, n, m, f);
         }
-        for t in [Tolerance::Abs(x), Tolerance::Ulps(x), Tolerance::Default { u }, Tolerance::Profile { profile: p, u, form: phong_approx::tolerance::profile::Form::Any }] {
+        let format = phong_approx::Format::ALL[fi];
+        for t in [Tolerance::Abs(x), Tolerance::Ulps(x), Tolerance::Default { format }, Tolerance::Profile { profile: p, format, form: phong_approx::tolerance::profile::Form::Any }] {
             let _ = t.validate();
         }
         let _ = phong_approx::angular::CosTable::<f64>::new(size);

@@ -7,7 +7,7 @@ use phong_approx::conformance::vectors::method_key;
 use phong_approx::conformance::verdict::{self, load_vectors, Culprit};
 use phong_approx::conformance::{report, shown};
 use phong_approx::tolerance::profile::{Form, Profile};
-use phong_approx::Method;
+use phong_approx::{Format, Method};
 
 /// Arguments of `phong-approx check`.
 #[derive(Args, Debug)]
@@ -76,19 +76,11 @@ pub enum Precision {
 }
 
 impl Precision {
-    /// `f32` or `f64`.
-    fn name(self) -> &'static str {
+    /// The format it names.
+    fn format(self) -> Format {
         match self {
-            Precision::F32 => "f32",
-            Precision::F64 => "f64",
-        }
-    }
-
-    /// The format's unit roundoff.
-    fn u(self) -> f64 {
-        match self {
-            Precision::F32 => f64::from(f32::EPSILON) / 2.0,
-            Precision::F64 => f64::EPSILON / 2.0,
+            Precision::F32 => Format::Binary32,
+            Precision::F64 => Format::Binary64,
         }
     }
 }
@@ -125,7 +117,7 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
     }
     let tol = a.tolerance.unwrap_or(Tolerance::Profile {
         profile,
-        u: a.precision.u(),
+        format: a.precision.format(),
         form: a.form,
     });
     if a.vectors == "-" && a.results == "-" {
@@ -171,7 +163,7 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
         &key,
         tol,
         a.specular,
-        a.precision.u(),
+        a.precision.format(),
     )
     .map_err(|e| CliError::arg("--method", e))?;
     if a.report.as_ref().is_some_and(|r| r.len() != 2) {
@@ -188,7 +180,7 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
                 Some(t) => format!("tolerance {t}"),
                 None => format!("{profile} profile"),
             },
-            a.precision.name()
+            a.precision.format()
         );
         let text = match r[0].as_str() {
             "junit" => report::junit(&suite, &vectors, &reports, &results, &key, a.specular),
@@ -218,7 +210,7 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
             ),
             _ => format!(
                 "tolerance: the {profile} profile's bound for {} (docs/float.md §18)\n",
-                a.precision.name()
+                a.precision.format()
             ),
         })?;
     }

@@ -71,10 +71,8 @@ mod with_gpu {
     use phong_approx::gpu::{published_spans, unwritten, Gpu, GpuError, Source};
     use phong_approx::testkit::{published, SETS};
     use phong_approx::tolerance::profile::Profile;
-    use phong_approx::Method;
+    use phong_approx::{Format, Method};
     use std::time::{Duration, Instant};
-
-    const U32: f64 = 1.0 / 16_777_216.0;
 
     /// A [`GpuError`] as the command's failure: the first line names the problem; a
     /// compiler's messages follow on standard error, their line numbers kept.
@@ -118,13 +116,13 @@ mod with_gpu {
         let key = method_key(method);
         let tol = Tolerance::Profile {
             profile,
-            u: U32,
+            format: Format::Binary32,
             form: phong_approx::tolerance::profile::Form::Any,
         };
         SETS.iter()
             .filter_map(|set| Some((*set, published(set)?)))
             .map(|(set, file)| {
-                check_in(file, results, method, &key, tol, false, U32)
+                check_in(file, results, method, &key, tol, false, Format::Binary32)
                     .map(|r| (set, r))
                     .map_err(|e| CliError::arg("--method", e))
             })

@@ -318,7 +318,8 @@ fn ieee_formulas() -> String {
     phong_approx::Method::ALL
         .iter()
         .filter_map(|&m| {
-            formula(m, Profile::Ieee, 1.0 / 16_777_216.0).map(|f| format!("{} {f}", m.name()))
+            formula(m, Profile::Ieee, phong_approx::Format::Binary32)
+                .map(|f| format!("{} {f}", m.name()))
         })
         .collect::<Vec<_>>()
         .join("; ")

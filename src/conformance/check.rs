@@ -9,7 +9,7 @@ mod tolerance;
 #[cfg(feature = "csv")]
 pub use results::{parse_results, parse_results_csv};
 pub use results::{parse_results_json, InputError, Results, MAX_CSV_LINE, MAX_RESULTS_BYTES};
-pub use tolerance::{f32_ulp, format_name, ulp_in, Caller, Tolerance, Unbounded};
+pub use tolerance::{Caller, Tolerance, Unbounded};
 
 use super::vectors::{Case, Expected, VectorFile};
 use crate::method::Method;
@@ -75,15 +75,15 @@ pub fn check(
     tol: Tolerance,
     specular: bool,
 ) -> Result<Vec<CaseReport>, String> {
-    let u = tol.unit_roundoff().unwrap_or(f64::from(f32::EPSILON) / 2.0);
-    check_in(vectors, results, method, method_key, tol, specular, u)
+    let format = tol.format().unwrap_or(crate::Format::Binary32);
+    check_in(vectors, results, method, method_key, tol, specular, format)
 }
 
-/// [`check`] for an implementation in the float format of unit roundoff `u`: ulps (of
-/// [`Tolerance::Ulps`] and of the report) are that format's.
+/// [`check`] for an implementation in `format`: ulps (of [`Tolerance::Ulps`] and of
+/// the report) are that format's.
 ///
 /// # Errors
-/// As [`check`]; also a `u` outside `(0, 2^-8]`.
+/// As [`check`].
 pub fn check_in(
     vectors: &VectorFile,
     results: &Results,
@@ -91,12 +91,9 @@ pub fn check_in(
     method_key: &str,
     tol: Tolerance,
     specular: bool,
-    u: f64,
+    format: crate::Format,
 ) -> Result<Vec<CaseReport>, String> {
     tol.validate()?;
-    if !(u > 0.0 && u <= 1.0 / 256.0) {
-        return Err(format!("the unit roundoff must be in (0, 2^-8] (got {u})"));
-    }
     let mut reports = Vec::new();
     for c in &vectors.cases {
         let exp: &Expected = if specular {
@@ -109,11 +106,11 @@ pub fn check_in(
         let got = &results[&c.id];
         let start = std::time::Instant::now();
         let mut r = match (method == Method::Adaptive && !specular)
-            .then(|| adaptive_either(c, got, tol, u))
+            .then(|| adaptive_either(c, got, tol, format))
             .flatten()
         {
             Some(r) => r,
-            None => case_report(c, exp, got, method, tol, specular, u),
+            None => case_report(c, exp, got, method, tol, specular, format),
         };
         r.seconds = start.elapsed().as_secs_f64();
         reports.push(r);
@@ -129,25 +126,29 @@ fn case_bound(c: &Case, method: Method, tol: Tolerance, specular: bool) -> Optio
     match tol {
         Tolerance::Profile {
             profile: Profile::Reference,
-            u,
+            format,
             ..
         }
-        | Tolerance::Default { u } => match case_shape(c).filter(|_| !specular) {
-            Some(shape) => crate::tolerance::span_bound(method, &shape, u),
-            None => crate::tolerance::bound(method, c.n, c.q_min, u),
+        | Tolerance::Default { format } => match case_shape(c).filter(|_| !specular) {
+            Some(shape) => crate::tolerance::span_bound(method, &shape, format.u()),
+            None => crate::tolerance::bound(method, c.n, c.q_min, format.u()),
         },
         // The vector file's q_min is to nearest: a relative 2^-40 below it is below
         // the span's.
         // The case's exact span gives Phong's derived bound its |N_b − N_a|.
-        Tolerance::Profile { profile, u, form } => match case_shape(c) {
-            Some(shape) => profile_span_bound(method, profile, form, &shape, u),
+        Tolerance::Profile {
+            profile,
+            format,
+            form,
+        } => match case_shape(c) {
+            Some(shape) => profile_span_bound(method, profile, form, &shape, format),
             None => profile_bound_in(
                 method,
                 profile,
                 form,
                 c.n,
                 c.q_min * (1.0 - 2f64.powi(-40)),
-                u,
+                format,
             ),
         },
         _ => None,
@@ -163,7 +164,12 @@ fn case_bound(c: &Case, method: Method, tol: Tolerance, specular: bool) -> Optio
 /// whole span, as an implementation runs it); `None` elsewhere (judged as usual).
 ///
 /// `e_δ`: [`crate::tolerance::adaptive_too_close`].
-fn adaptive_either(c: &Case, got: &[f64], tol: Tolerance, u: f64) -> Option<CaseReport> {
+fn adaptive_either(
+    c: &Case,
+    got: &[f64],
+    tol: Tolerance,
+    format: crate::Format,
+) -> Option<CaseReport> {
     let delta: f64 = c.delta.parse().ok()?;
     // Only where the profile bounds the adaptive scheme at all (not fixed point).
     case_bound(c, Method::Adaptive, tol, false)?;
@@ -171,7 +177,7 @@ fn adaptive_either(c: &Case, got: &[f64], tol: Tolerance, u: f64) -> Option<Case
         case_bound(c, Method::Gouraud, tol, false)?,
         case_bound(c, Method::CorrectedEuler, tol, false)?,
     );
-    if !crate::tolerance::adaptive_too_close(delta, 1.0, bg, bce, u) {
+    if !crate::tolerance::adaptive_too_close(delta, 1.0, bg, bce, format.u()) {
         return None;
     }
     let either = [
@@ -181,7 +187,7 @@ fn adaptive_either(c: &Case, got: &[f64], tol: Tolerance, u: f64) -> Option<Case
     let mut best: Option<CaseReport> = None;
     for (m, key) in either {
         let exp = c.expected.get(key)?;
-        let mut r = case_report(c, exp, got, m, tol, false, u);
+        let mut r = case_report(c, exp, got, m, tol, false, format);
         r.allowed = format!(
             "{} as {key} (|255δ| = {:.6} is within rounding of 1: either method passes)",
             r.allowed,
@@ -240,15 +246,15 @@ fn case_report(
     method: Method,
     tol: Tolerance,
     specular: bool,
-    format_u: f64,
+    format: crate::Format,
 ) -> CaseReport {
     use crate::tolerance::profile::Profile;
     let tol = match tol {
         Tolerance::Profile {
             profile: Profile::Reference,
-            u,
+            format,
             ..
-        } => Tolerance::Default { u },
+        } => Tolerance::Default { format },
         t => t,
     };
     // Specular raises the value v ≥ 0 to the power s: an error e in v moves v^s by at
@@ -267,9 +273,9 @@ fn case_report(
             .fold(0.0, f64::max);
         (f64::from(s), v_max)
     });
-    let raise = |b: f64, u: f64| match spec {
+    let raise = |b: f64, format| match spec {
         None => b,
-        Some((s, v_max)) => crate::tolerance::specular_bound(b, s, v_max, u),
+        Some((s, v_max)) => crate::tolerance::specular_bound(b, s, v_max, format),
     };
     let allowed_abs = match tol {
         Tolerance::Abs(x) => Some(x),
@@ -281,8 +287,8 @@ fn case_report(
         } if specular => None,
         // No bound (n too long for the precision, or q may round to zero): the case
         // cannot pass on the profile's tolerance.
-        Tolerance::Profile { u, .. } | Tolerance::Default { u } => {
-            case_bound(c, method, tol, specular).map(|b| raise(b, u))
+        Tolerance::Profile { format, .. } | Tolerance::Default { format } => {
+            case_bound(c, method, tol, specular).map(|b| raise(b, format))
         }
         _ => None,
     };
@@ -325,7 +331,7 @@ fn case_report(
         // fails whatever the tolerance (levels clamp, so they alone would pass 1e300).
         let implausible = g.abs() > 16.0 * e.abs().max(1.0);
         let dl = u32::from(level(&g).abs_diff(el));
-        let du = d / ulp_in(scale.max(e.abs()), format_u);
+        let du = d / format.ulp(scale.max(e.abs()));
         max_levels = max_levels.max(dl);
         sum_levels += u64::from(dl);
         max_abs = max_abs.max(d);
@@ -364,7 +370,11 @@ fn case_report(
         ratio = 0.0;
     }
     let why = match tol {
-        Tolerance::Profile { profile, u, form } if unbounded => {
+        Tolerance::Profile {
+            profile,
+            format,
+            form,
+        } if unbounded => {
             use crate::tolerance::profile::Form;
             let p = profile.to_string();
             Some(if form != Form::Any && !Form::applies_to(method) {
@@ -373,7 +383,7 @@ fn case_report(
                 }
             } else if specular && matches!(profile, Profile::Shader | Profile::Fixed { .. }) {
                 Unbounded::SpecularNotModelled { profile: p }
-            } else if crate::tolerance::profile::status(method, profile, u).is_none() {
+            } else if crate::tolerance::profile::status(method, profile, format).is_none() {
                 Unbounded::NoBound {
                     profile: p,
                     method: method.to_string(),
@@ -406,7 +416,7 @@ fn case_report(
         mean_levels: sum_levels as f64 / got.len().max(1) as f64,
         max_abs,
         max_ulps,
-        format: format_name(format_u),
+        format: format.name(),
         scale,
         worst_pixel: worst,
         ratio,

@@ -20,7 +20,7 @@ fn round_up_3(x: f64) -> String {
 /// the profile, [`crate::tolerance::profile`]; `shader` only for `f32`). `None`
 /// where none is derived or proved, and for every profile with `normalize`, whose
 /// float normalization no derivation covers.
-pub(super) fn error_bounds(r: &Request, u: f64) -> ErrorBounds {
+pub(super) fn error_bounds(r: &Request, format: crate::Format) -> ErrorBounds {
     use crate::tolerance::profile::{profile_span_bound, Form, Profile};
     let shape = (!r.normalize)
         .then(|| Span::new(r.na.clone(), r.nb.clone(), r.l.clone(), r.n).ok())
@@ -29,8 +29,8 @@ pub(super) fn error_bounds(r: &Request, u: f64) -> ErrorBounds {
     let of = |m: Method, p: Profile| -> Option<f64> {
         let shape = shape.as_ref()?;
         match p {
-            Profile::Reference => crate::tolerance::span_bound(m, shape, u),
-            p => profile_span_bound(m, p, Form::Any, shape, u),
+            Profile::Reference => crate::tolerance::span_bound(m, shape, format.u()),
+            p => profile_span_bound(m, p, Form::Any, shape, format),
         }
     };
     // The adaptive scheme where its test is too close to call
@@ -49,7 +49,7 @@ pub(super) fn error_bounds(r: &Request, u: f64) -> ErrorBounds {
         let b = match delta {
             Some((d, kd)) => {
                 let (bg, bce) = (of(Method::Gouraud, p)?, of(Method::CorrectedEuler, p)?);
-                if crate::tolerance::adaptive_too_close(d, kd, bg, bce, u) {
+                if crate::tolerance::adaptive_too_close(d, kd, bg, bce, format.u()) {
                     bg.max(bce) + d * (1.0 + 1e-12)
                 } else {
                     b
@@ -62,7 +62,7 @@ pub(super) fn error_bounds(r: &Request, u: f64) -> ErrorBounds {
     ErrorBounds {
         reference: bound(Profile::Reference),
         ieee: bound(Profile::Ieee),
-        shader: (u == f64::from(f32::EPSILON) / 2.0).then(|| bound(Profile::Shader)),
+        shader: (format == crate::Format::Binary32).then(|| bound(Profile::Shader)),
     }
 }
 
@@ -71,33 +71,37 @@ pub(super) fn error_bounds(r: &Request, u: f64) -> ErrorBounds {
 /// `proofs/Float.v`; the others derived in their `docs/float.md` section), the
 /// acceptance profiles' from [`crate::tolerance::profile::status`]; `None` where no
 /// bound is printed.
-pub(super) fn error_bound_status(r: &Request, u: f64, printed: &ErrorBounds) -> ErrorBounds {
+pub(super) fn error_bound_status(
+    r: &Request,
+    format: crate::Format,
+    printed: &ErrorBounds,
+) -> ErrorBounds {
     use crate::tolerance::profile::{status, Profile, Status};
+    use crate::Format;
     let label = |p: Profile, shown: &Option<String>| -> Option<String> {
         shown.as_ref()?;
         let s = match p {
-            Profile::Reference => {
-                let b32 = u == f64::from(f32::EPSILON) / 2.0;
-                match r.method {
-                    Method::Gouraud if r.n <= 4096 && b32 => {
-                        Status::Proved("float_gouraud_binary32")
-                    }
-                    Method::Gouraud if r.n <= 4096 => Status::Proved("float_gouraud_binary64"),
-                    Method::CorrectedEuler if r.n <= 4096 && b32 => {
-                        Status::Proved("float_corrected_euler_binary32")
-                    }
-                    Method::CorrectedEuler if r.n <= 4096 => {
-                        Status::Proved("float_corrected_euler_binary64")
-                    }
-                    m => {
-                        return Some(format!(
-                            "derived (docs/float.md {})",
-                            m.info().float_section
-                        ))
-                    }
+            Profile::Reference => match (r.method, format) {
+                (Method::Gouraud, Format::Binary32) if r.n <= 4096 => {
+                    Status::Proved("float_gouraud_binary32")
                 }
-            }
-            p => status(r.method, p, u)?,
+                (Method::Gouraud, Format::Binary64) if r.n <= 4096 => {
+                    Status::Proved("float_gouraud_binary64")
+                }
+                (Method::CorrectedEuler, Format::Binary32) if r.n <= 4096 => {
+                    Status::Proved("float_corrected_euler_binary32")
+                }
+                (Method::CorrectedEuler, Format::Binary64) if r.n <= 4096 => {
+                    Status::Proved("float_corrected_euler_binary64")
+                }
+                (m, _) => {
+                    return Some(format!(
+                        "derived (docs/float.md {})",
+                        m.info().float_section
+                    ))
+                }
+            },
+            p => status(r.method, p, format)?,
         };
         Some(s.label())
     };

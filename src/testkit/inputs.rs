@@ -1,6 +1,6 @@
 //! What the kit gives your function: the published sets, embedded and verified
 //! ([`published`]), and one span's inputs in your float format ([`Inputs`],
-//! [`Format`]).
+//! [`Float`]).
 
 pub use crate::conformance::vectors::SETS;
 
@@ -72,7 +72,7 @@ pub struct Inputs<'a, T> {
     pub s: Option<u32>,
 }
 
-impl<'a, T: Format> Inputs<'a, T> {
+impl<'a, T: Float> Inputs<'a, T> {
     /// A published case's inputs in `T`, as [`super::Suite`] gives them to your
     /// function.
     pub fn of_case(c: &'a crate::conformance::vectors::Case) -> Inputs<'a, T> {
@@ -89,7 +89,7 @@ impl<'a, T: Format> Inputs<'a, T> {
     }
 }
 
-impl<T: Format> Inputs<'static, T> {
+impl<T: Float> Inputs<'static, T> {
     /// The inputs of an exact span of your own as your function receives them: each
     /// component of `N_a`, `N_b` and `L` rounded once to the nearest `T` (ties to
     /// even), as the published sets give theirs. The id is `span`.
@@ -117,18 +117,16 @@ impl<T: Format> Inputs<'static, T> {
 }
 
 /// The float inputs of one kind (`N_a`, `N_b`, `L`) in the format `T`.
-fn pick<T: Format>(v: &VectorInput) -> [T; 3] {
+fn pick<T: Float>(v: &VectorInput) -> [T; 3] {
     T::inputs(v)
         .clone()
         .map(|s| T::parse(&s).expect("the published sets' float inputs parse"))
 }
 
-/// A float format your implementation computes in: `f32` or `f64`.
-pub trait Format: Copy + fmt::Display + fmt::LowerExp + 'static {
-    /// `f32` or `f64`.
-    const NAME: &'static str;
-    /// Its unit roundoff.
-    const U: f64;
+/// A float type your implementation computes in: `f32` or `f64`.
+pub trait Float: Copy + fmt::Display + fmt::LowerExp + 'static {
+    /// Its format (the bounds, the ulps and the reports read it).
+    const FORMAT: crate::Format;
     /// Parses a vector file's input of this format.
     fn parse(s: &str) -> Option<Self>;
     /// The vector file's inputs of this format (`VectorInput::f32` or `::f64`).
@@ -143,9 +141,8 @@ pub trait Format: Copy + fmt::Display + fmt::LowerExp + 'static {
     fn hex(self) -> String;
 }
 
-impl Format for f32 {
-    const NAME: &'static str = "f32";
-    const U: f64 = 1.0 / 16_777_216.0;
+impl Float for f32 {
+    const FORMAT: crate::Format = crate::Format::Binary32;
     fn parse(s: &str) -> Option<Self> {
         s.trim().parse().ok()
     }
@@ -166,9 +163,8 @@ impl Format for f32 {
     }
 }
 
-impl Format for f64 {
-    const NAME: &'static str = "f64";
-    const U: f64 = f64::EPSILON / 2.0;
+impl Float for f64 {
+    const FORMAT: crate::Format = crate::Format::Binary64;
     fn parse(s: &str) -> Option<Self> {
         s.trim().parse().ok()
     }

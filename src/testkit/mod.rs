@@ -59,8 +59,9 @@ mod suite;
 
 pub use crate::conformance::check::Tolerance;
 pub use crate::tolerance::profile::{Form, Profile};
+pub use crate::Format;
 pub use crate::Method;
-pub use inputs::{published, Format, Inputs, SETS};
+pub use inputs::{published, Float, Inputs, SETS};
 pub use report::{Failure, FailureInputs, Report, SetSummary};
 pub use span::{acceptance, check_span, oracle, KitError, Oracle, MAX_STEPS};
 pub use suite::Suite;
@@ -75,8 +76,8 @@ pub mod prelude {
     #[cfg(feature = "quickcheck")]
     pub use super::ArbSpan;
     pub use super::{
-        acceptance, check_span, command, oracle, Failure, Form, Inputs, KitError, Method, Profile,
-        Report, Suite, Tolerance,
+        acceptance, check_span, command, oracle, Failure, Form, Format, Inputs, KitError, Method,
+        Profile, Report, Suite, Tolerance,
     };
     pub use crate::reference::unit::unit_from_ints;
     pub use crate::Span;

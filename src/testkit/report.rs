@@ -2,7 +2,7 @@
 //! [`Failure`] (one failing case at its worst pixel: inputs, expected, got, allowed,
 //! ratio, ulps, levels, the command that reproduces it).
 
-use super::inputs::{Format, Inputs};
+use super::inputs::{Float, Inputs};
 use crate::conformance::check::CaseReport;
 use crate::conformance::vectors::Case;
 use crate::conformance::verdict::times_allowed;
@@ -73,11 +73,11 @@ pub struct Failure {
 
 /// Your function's inputs for case `c` of a vector file (its nearest floats), with the
 /// specular half vector and shininess where the case has them.
-pub(crate) fn case_inputs<'a, T: Format>(c: &'a Case) -> Inputs<'a, T> {
+pub(crate) fn case_inputs<'a, T: Float>(c: &'a Case) -> Inputs<'a, T> {
     Inputs::of_case(c)
 }
 
-fn shown_inputs<T: Format>(what: &str, exact: &[String; 3], v: [T; 3]) -> String {
+fn shown_inputs<T: Float>(what: &str, exact: &[String; 3], v: [T; 3]) -> String {
     let parts: Vec<String> = v
         .iter()
         .zip(exact)
@@ -92,7 +92,7 @@ pub(crate) struct Judged<'a> {
     pub(crate) key: &'a str,
     pub(crate) profile: &'a str,
     pub(crate) specular: bool,
-    pub(crate) u: f64,
+    pub(crate) format: crate::Format,
 }
 
 impl Failure {
@@ -121,7 +121,7 @@ impl Failure {
     }
 
     /// The failure of case `c` as `check` judged it (`r`), with your values `got`.
-    pub(crate) fn new<T: Format>(j: &Judged, c: &Case, r: &CaseReport, got: &[f64]) -> Failure {
+    pub(crate) fn new<T: Float>(j: &Judged, c: &Case, r: &CaseReport, got: &[f64]) -> Failure {
         let exp = if j.specular {
             c.specular.as_ref().and_then(|sp| sp.expected.get(j.key))
         } else {
@@ -142,7 +142,7 @@ impl Failure {
             comment: c.comment.clone(),
             n: c.n,
             inputs: Some(FailureInputs {
-                format: T::NAME,
+                format: T::FORMAT.name(),
                 exact: [c.na.exact.clone(), c.nb.exact.clone(), c.l.exact.clone()],
                 floats: [inputs.na, inputs.nb, inputs.l].map(|v| v.map(T::to_f64)),
                 h: match (&c.specular, inputs.h, j.specular) {
@@ -181,7 +181,7 @@ impl Failure {
                 let gt = T::from_f64(g);
                 if g.is_finite() {
                     let scale = r.scale.max(e.abs());
-                    let ulps = (g - e).abs() / crate::conformance::check::ulp_in(scale, j.u);
+                    let ulps = (g - e).abs() / j.format.ulp(scale);
                     let dl = u32::from(level(&g).abs_diff(exp.levels[i]));
                     f.ulps = Some(ulps);
                     f.levels = Some(dl);
@@ -194,7 +194,7 @@ impl Failure {
                         "off by    = {:.3e} = {:.1} {} ulps at the span's scale {:.3}, {dl} levels",
                         (g - e).abs(),
                         ulps,
-                        T::NAME,
+                        T::FORMAT.name(),
                         scale
                     ));
                 } else {

@@ -1,7 +1,7 @@
 //! Beyond the published vectors: the exact reference ([`oracle`]), the acceptance
 //! intervals ([`acceptance`]) and the verdict ([`check_span`]) on spans of your own.
 
-use super::inputs::{Format, Inputs};
+use super::inputs::{Float, Inputs};
 use super::report::Report;
 use super::suite::judge;
 use crate::conformance::check::Tolerance;
@@ -57,7 +57,7 @@ pub const MAX_STEPS: u32 = 1 << 14;
 /// # Errors
 /// [`KitError`] where the span is not one the bounds cover (inputs not exactly
 /// unit, `n = 0`, more than [`MAX_STEPS`](crate::testkit::MAX_STEPS)) or the exact reference cannot give it.
-pub fn check_span<T: Format, F: FnMut(&Inputs<T>) -> Vec<T>>(
+pub fn check_span<T: Float, F: FnMut(&Inputs<T>) -> Vec<T>>(
     method: Method,
     span: &Span<BigRational>,
     profile: Profile,
@@ -85,10 +85,14 @@ pub fn check_span<T: Format, F: FnMut(&Inputs<T>) -> Vec<T>>(
     let file = file_of("span", vec![case]);
     let tol = Tolerance::Profile {
         profile,
-        u: T::U,
+        format: T::FORMAT,
         form: crate::tolerance::profile::Form::Any,
     };
-    let mut report = Report::new(method, format!("the {profile} profile's bound"), T::NAME);
+    let mut report = Report::new(
+        method,
+        format!("the {profile} profile's bound"),
+        T::FORMAT.name(),
+    );
     judge(&mut report, "span", &file, method, tol, false, &mut shade);
     Ok(report)
 }
@@ -153,7 +157,7 @@ pub fn oracle(
 /// let mine = 0.8f32; // pixel 4 of some implementation
 /// assert!(iv[4].0 <= f64::from(mine) && f64::from(mine) <= iv[4].1);
 /// ```
-pub fn acceptance<T: Format>(
+pub fn acceptance<T: Float>(
     method: Method,
     span: &crate::Span<crate::BigRational>,
     profile: Profile,
@@ -161,13 +165,13 @@ pub fn acceptance<T: Format>(
     use crate::Scalar as _;
     let shape = crate::tolerance::Shape::of(span);
     let b = match profile {
-        Profile::Reference => crate::tolerance::span_bound(method, &shape, T::U),
+        Profile::Reference => crate::tolerance::span_bound(method, &shape, T::FORMAT.u()),
         p => crate::tolerance::profile::profile_span_bound(
             method,
             p,
             crate::tolerance::profile::Form::Any,
             &shape,
-            T::U,
+            T::FORMAT,
         ),
     }?;
     let values = method.values(span).ok()?;
@@ -184,18 +188,18 @@ pub fn acceptance<T: Format>(
     // other method's (the hull of the two; `check` asks one method for the whole span).
     if method == Method::Adaptive {
         let bound = |m: Method| match profile {
-            Profile::Reference => crate::tolerance::span_bound(m, &shape, T::U),
+            Profile::Reference => crate::tolerance::span_bound(m, &shape, T::FORMAT.u()),
             p => crate::tolerance::profile::profile_span_bound(
                 m,
                 p,
                 crate::tolerance::profile::Form::Any,
                 &shape,
-                T::U,
+                T::FORMAT,
             ),
         };
         let (bg, bce) = (bound(Method::Gouraud)?, bound(Method::CorrectedEuler)?);
         let d = crate::adaptive::decide(span, &crate::BigRational::from_integer(1.into()));
-        if crate::tolerance::adaptive_too_close(d.delta.to_f64(), 1.0, bg, bce, T::U) {
+        if crate::tolerance::adaptive_too_close(d.delta.to_f64(), 1.0, bg, bce, T::FORMAT.u()) {
             for (m, b) in [(Method::Gouraud, bg), (Method::CorrectedEuler, bce)] {
                 for (i, v) in m.values(span).ok()?.iter().enumerate() {
                     let (lo, hi) = interval(v.to_f64(), b);

@@ -1,7 +1,7 @@
 //! [`Suite`]: the published vectors for one method, run through your function and
 //! judged as `check` judges them.
 
-use super::inputs::{published, Format, Inputs, SETS};
+use super::inputs::{published, Float, Inputs, SETS};
 use super::report::{self, case_inputs, Failure, Report};
 use crate::conformance::check::{check_in, Results, Tolerance};
 use crate::conformance::vectors::{method_key, Case, VectorFile};
@@ -194,14 +194,14 @@ impl Suite {
         }
     }
 
-    fn run<T: Format, F: FnMut(&Inputs<T>) -> Vec<T>>(&self, mut shade: F) -> Report {
+    fn run<T: Float, F: FnMut(&Inputs<T>) -> Vec<T>>(&self, mut shade: F) -> Report {
         let judged_by = self.judged_by();
         let tol = self.tolerance.unwrap_or(Tolerance::Profile {
             profile: self.profile,
-            u: T::U,
+            format: T::FORMAT,
             form: self.form,
         });
-        let mut report = Report::new(self.method, judged_by.clone(), T::NAME);
+        let mut report = Report::new(self.method, judged_by.clone(), T::FORMAT.name());
         if let Some(name) = &self.unknown_set {
             report.add_failure(Failure::of_suite(
                 "?",
@@ -257,7 +257,7 @@ impl Suite {
 
 /// Runs `shade` on every case of `file` (the specular ones for `specular`), judges the
 /// values as `check` does, and adds the set to `report`.
-pub(crate) fn judge<T: Format>(
+pub(crate) fn judge<T: Float>(
     report: &mut Report,
     set: &'static str,
     file: &VectorFile,
@@ -280,7 +280,7 @@ pub(crate) fn judge<T: Format>(
         results.insert(c.id.clone(), got);
     }
     let judged_by = report.judged_by.clone();
-    let reports = match check_in(file, &results, method, &key, tol, specular, T::U) {
+    let reports = match check_in(file, &results, method, &key, tol, specular, T::FORMAT) {
         Ok(r) => r,
         // A method the published sets do not hold (a cosine table of another size), or
         // a tolerance that means nothing: a failure, not a panic.
@@ -299,7 +299,7 @@ pub(crate) fn judge<T: Format>(
         key: &key,
         profile: &judged_by,
         specular,
-        u: T::U,
+        format: T::FORMAT,
     };
     let failures = reports
         .iter()

@@ -33,6 +33,8 @@
 use std::fmt;
 use std::str::FromStr;
 
+use crate::Format;
+
 mod derived;
 mod form;
 mod labels;
@@ -214,21 +216,22 @@ pub struct Proved {
 }
 
 impl Proved {
-    /// The bound at `n` for unit roundoff `u`, or `None` past the proved range.
-    pub fn at(&self, n: u32, u: f64) -> Option<f64> {
-        (n >= 1 && n <= self.max_n).then(|| (self.alpha * f64::from(n) + self.beta) * u)
+    /// The bound at `n` in `format` (`(α·n + β)·u`), or `None` past the proved range.
+    pub fn at(&self, n: u32, format: Format) -> Option<f64> {
+        (n >= 1 && n <= self.max_n).then(|| (self.alpha * f64::from(n) + self.beta) * format.u())
     }
 }
 
-/// binary32's unit roundoff.
-const U32: f64 = 1.0 / 16_777_216.0;
-
-/// The proved bound of `method` under `profile` at `n` in the format of unit
-/// roundoff `u`: the largest over the forms the profile allows (every theorem
+/// The proved bound of `method` under `profile` at `n` in `format`: the largest over the forms the profile allows (every theorem
 /// [`proved`] lists: the recurrences, the closed forms, and under `shader` the ways
 /// of dividing and of halving), or `None` where no theorem covers it.
-pub fn proved_bound(method: crate::Method, profile: Profile, n: u32, u: f64) -> Option<f64> {
-    proved_bound_in(method, profile, Form::Any, n, u)
+pub fn proved_bound(
+    method: crate::Method,
+    profile: Profile,
+    n: u32,
+    format: Format,
+) -> Option<f64> {
+    proved_bound_in(method, profile, Form::Any, n, format)
 }
 
 /// [`proved_bound`] for an implementation of the declared `form`: the largest over
@@ -238,12 +241,12 @@ pub fn proved_bound_in(
     profile: Profile,
     form: Form,
     n: u32,
-    u: f64,
+    format: Format,
 ) -> Option<f64> {
-    let forms = proved_in(method, profile, form, u)?;
+    let forms = proved_in(method, profile, form, format)?;
     forms
         .iter()
-        .map(|f| f.at(n, u))
+        .map(|f| f.at(n, format))
         .try_fold(0.0f64, |m, b| b.map(|b| m.max(b)))
 }
 
@@ -254,12 +257,12 @@ pub fn proved_in(
     method: crate::Method,
     profile: Profile,
     form: Form,
-    u: f64,
+    format: Format,
 ) -> Option<Vec<Proved>> {
     if form != Form::Any && !Form::applies_to(method) {
         return None;
     }
-    let forms: Vec<Proved> = proved(method, profile, u)?
+    let forms: Vec<Proved> = proved(method, profile, format)?
         .into_iter()
         .filter(|p| form.covers(p))
         .collect();
@@ -286,20 +289,19 @@ impl Status {
     }
 }
 
-/// Whether and how `method` has a bound under `profile` in the format of unit
-/// roundoff `u` (`None`: no bound, a case then fails naming that).
+/// Whether and how `method` has a bound under `profile` in `format` (`None`: no bound, a case then fails naming that).
 ///
 /// This is the table of the profiles' bounds, one row per method: a method without a
 /// row here has no bound under `ieee`, `shader` or fixed point (angular
 /// interpolation, whose `acos` and `cos` no profile bounds, and the related methods,
 /// whose bounds follow this crate's own evaluation).
-pub fn status(method: crate::Method, profile: Profile, u: f64) -> Option<Status> {
+pub fn status(method: crate::Method, profile: Profile, format: Format) -> Option<Status> {
     use crate::Method;
     let fixed = matches!(profile, Profile::Fixed { .. });
     // A float profile's theorems ([`proved`]), the first form's name.
-    let theorem = || proved(method, profile, u).map(|forms| Status::Proved(forms[0].theorem));
+    let theorem = || proved(method, profile, format).map(|forms| Status::Proved(forms[0].theorem));
     // A derivation, where the profile has a standard model in this format.
-    let derived = |section| arith(profile, u).map(|_| Status::Derived(section));
+    let derived = |section| arith(profile, format).map(|_| Status::Derived(section));
     // One row per method, no wildcard: a new method does not compile until its row
     // says what it has under fixed point and under `ieee` and `shader`.
     match (method, fixed) {
@@ -310,8 +312,8 @@ pub fn status(method: crate::Method, profile: Profile, u: f64) -> Option<Status>
         (Method::Duff | Method::SymmetricPhong, false) => derived("docs/float.md §18.5"),
         // The larger of the two proved bounds, against the exact run of the method
         // the implementation chose (docs/float.md §10, §18.5).
-        (Method::Adaptive, false) => proved(Method::Gouraud, profile, u)
-            .and(proved(Method::CorrectedEuler, profile, u))
+        (Method::Adaptive, false) => proved(Method::Gouraud, profile, format)
+            .and(proved(Method::CorrectedEuler, profile, format))
             .and_then(|_| derived("docs/float.md §18.5")),
         // Fixed point: the theorems of `Fixed.v` cover Gouraud and corrected Euler.
         (
@@ -331,7 +333,7 @@ pub fn status(method: crate::Method, profile: Profile, u: f64) -> Option<Status>
 
 /// The bound of `method` under `profile` (not `Reference`, whose bounds are
 /// [`crate::tolerance::bound`]) on a span of `n` steps and smallest `q_i` `q_min`, in
-/// the format of unit roundoff `u`: the proved bound ([`proved_bound`]) or the derived
+/// `format`: the proved bound ([`proved_bound`]) or the derived
 /// one ([`phong_derived`], [`duff_derived`]); `None` where neither covers it. For any
 /// unit normals; [`profile_span_bound`] reads more of a known span.
 pub fn profile_bound(
@@ -339,9 +341,9 @@ pub fn profile_bound(
     profile: Profile,
     n: u32,
     q_min: f64,
-    u: f64,
+    format: Format,
 ) -> Option<f64> {
-    profile_bound_in(method, profile, Form::Any, n, q_min, u)
+    profile_bound_in(method, profile, Form::Any, n, q_min, format)
 }
 
 /// [`profile_bound`] for an implementation that declares its `form` ([`Form`]).
@@ -351,9 +353,9 @@ pub fn profile_bound_in(
     form: Form,
     n: u32,
     q_min: f64,
-    u: f64,
+    format: Format,
 ) -> Option<f64> {
-    bound_with(method, profile, form, n, q_min, 2.0, u)
+    bound_with(method, profile, form, n, q_min, 2.0, format)
 }
 
 /// [`profile_bound`] for a known span: Phong's derived bound with the span's own
@@ -367,9 +369,17 @@ pub fn profile_span_bound(
     profile: Profile,
     form: Form,
     shape: &crate::tolerance::Shape,
-    u: f64,
+    format: Format,
 ) -> Option<f64> {
-    bound_with(method, profile, form, shape.n, shape.q_min, shape.dn, u)
+    bound_with(
+        method,
+        profile,
+        form,
+        shape.n,
+        shape.q_min,
+        shape.dn,
+        format,
+    )
 }
 
 fn bound_with(
@@ -379,7 +389,7 @@ fn bound_with(
     n: u32,
     q_min: f64,
     dn: f64,
-    u: f64,
+    format: Format,
 ) -> Option<f64> {
     use crate::Method;
     // A declared form narrows only the bounds whose theorems tell forms apart.
@@ -396,20 +406,20 @@ fn bound_with(
             .then(|| fixed_bound(method, n, int_bits, frac_bits))
             .flatten();
     }
-    match status(method, profile, u)? {
-        Status::Proved(_) => proved_bound_in(method, profile, form, n, u),
+    match status(method, profile, format)? {
+        Status::Proved(_) => proved_bound_in(method, profile, form, n, format),
         Status::Derived(_) => {
-            let a = arith(profile, u)?;
+            let a = arith(profile, format)?;
             match method {
                 Method::Phong => phong_derived(&a, n, q_min, dn),
                 Method::Duff => duff_derived(&a, n, q_min),
                 Method::SymmetricPhong => symmetric_phong_derived(&a, n, q_min),
                 Method::Adaptive => Some(
-                    proved_bound(Method::Gouraud, profile, n, u)?.max(proved_bound(
+                    proved_bound(Method::Gouraud, profile, n, format)?.max(proved_bound(
                         Method::CorrectedEuler,
                         profile,
                         n,
-                        u,
+                        format,
                     )?),
                 ),
                 // Proved, not derived ([`status`]), or no bound under a profile.

@@ -11,17 +11,16 @@ pub enum Tolerance {
     /// At most this far from the expected value.
     Abs(f64),
     /// At most this many ulps from it, in the implementation's format (`f32` unless
-    /// [`check_in`](super::check_in) is told the format's unit roundoff), counted at the case's scale:
+    /// [`check_in`](super::check_in) is told the format), counted at the case's scale:
     /// the ulp of the largest `|expected value|` of the span. The methods' errors are
     /// absolute, on values of that magnitude; the ulp of a value near zero would make
     /// a tiny absolute error look like tens of thousands of ulps.
     Ulps(f64),
     /// The crate's documented float bound for the method, case and precision
-    /// (`src/tolerance.rs`): `f32` (u = 2^-24) or `f64` (u = 2^-53). The `reference`
-    /// profile.
+    /// (`src/tolerance.rs`) in the implementation's format. The `reference` profile.
     Default {
-        /// The unit roundoff of the implementation's arithmetic.
-        u: f64,
+        /// The implementation's float format.
+        format: crate::Format,
     },
     /// The bound for every implementation of an arithmetic profile — proved or derived,
     /// as [`crate::tolerance::profile::status`] labels it per method and format
@@ -31,8 +30,9 @@ pub enum Tolerance {
     Profile {
         /// The profile.
         profile: crate::tolerance::profile::Profile,
-        /// The unit roundoff of the implementation's arithmetic.
-        u: f64,
+        /// The implementation's float format (not read under fixed point, whose
+        /// profile names its own).
+        format: crate::Format,
         /// The form the implementation declares it computes
         /// ([`crate::tolerance::profile::Form`]; `Any` unless declared): the bound is
         /// then that form's theorems' alone.
@@ -98,21 +98,20 @@ impl Tolerance {
 }
 
 impl Tolerance {
-    /// The unit roundoff of the format the tolerance names (`None` for levels,
-    /// absolute and ulps tolerances, which name none).
-    pub fn unit_roundoff(&self) -> Option<f64> {
+    /// The float format the tolerance names (`None` for levels, absolute and ulps
+    /// tolerances, which name none, and for fixed point, whose format is its profile's).
+    pub fn format(&self) -> Option<crate::Format> {
         match *self {
             Tolerance::Profile {
                 profile: crate::tolerance::profile::Profile::Fixed { .. },
                 ..
             } => None,
-            Tolerance::Default { u } | Tolerance::Profile { u, .. } => Some(u),
+            Tolerance::Default { format } | Tolerance::Profile { format, .. } => Some(format),
             _ => None,
         }
     }
 
     /// Checks that the tolerance means something: finite, non-negative numbers, a
-    /// unit roundoff in `(0, 2^-8]` (fixed point has none: its `u` is not read), a
     /// fixed-point format the bounds take
     /// ([`crate::tolerance::profile::Profile::validate`]).
     ///
@@ -129,53 +128,10 @@ impl Tolerance {
                 profile: profile @ crate::tolerance::profile::Profile::Fixed { .. },
                 ..
             } => profile.validate(),
-            Tolerance::Default { u } | Tolerance::Profile { u, .. }
-                if !(u > 0.0 && u <= 1.0 / 256.0) =>
-            {
-                Err(format!("the unit roundoff must be in (0, 2^-8] (got {u})"))
-            }
             Tolerance::Profile { profile, .. } => profile.validate(),
             _ => Ok(()),
         }
     }
-}
-
-/// The name of the float format whose unit roundoff is `u` (`f32`, `f64`, `binary16`),
-/// or `format` for another.
-pub fn format_name(u: f64) -> &'static str {
-    if u == f64::from(f32::EPSILON) / 2.0 {
-        "f32"
-    } else if u == f64::EPSILON / 2.0 {
-        "f64"
-    } else if u == 2f64.powi(-11) {
-        "binary16"
-    } else {
-        "format"
-    }
-}
-
-/// The spacing at `x` of the binary floats of unit roundoff `u` (their ulp): `f32`'s
-/// and `f64`'s exactly (subnormals included), otherwise `2u·2^⌊log2 |x|⌋`.
-pub fn ulp_in(x: f64, u: f64) -> f64 {
-    if u == f64::from(f32::EPSILON) / 2.0 {
-        return f32_ulp(x);
-    }
-    if u == f64::EPSILON / 2.0 {
-        let a = x.abs().max(f64::MIN_POSITIVE);
-        if !a.is_finite() {
-            return f64::INFINITY;
-        }
-        return f64::from_bits(a.to_bits() + 1) - a;
-    }
-    let a = x.abs().max(f64::MIN_POSITIVE);
-    2.0 * u * 2f64.powi(a.log2().floor() as i32)
-}
-
-/// The spacing of `f32` numbers at `x` (its ulp).
-pub fn f32_ulp(x: f64) -> f64 {
-    let a = (x.abs() as f32).max(f32::MIN_POSITIVE);
-    let b = f32::from_bits(a.to_bits() + 1);
-    f64::from(b) - f64::from(a)
 }
 
 /// Why a case has no bound under its tolerance, so that it fails: as data, so that

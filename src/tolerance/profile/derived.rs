@@ -2,7 +2,8 @@
 //! (`docs/float.md` §18.4–18.5) for the methods with no theorem under `ieee` and
 //! `shader` — Phong, Duff, symmetric Phong — and plain Euler's, kept for comparison.
 
-use super::{Profile, U32};
+use super::Profile;
+use crate::Format;
 
 /// The standard model of a float profile (`docs/float.md` §18.1): every operation's
 /// result is within `κ·u·|y| + η` of its exact value `y` on the computed operands,
@@ -46,14 +47,13 @@ impl Arith {
     }
 }
 
-/// The standard model of `profile` in the format of unit roundoff `u` (binary32 or
+/// The standard model of `profile` in `format` (binary32 or
 /// binary64 for `ieee`, binary32 for `shader`), or `None` (`reference` is one
 /// implementation, not a model; fixed point has its own bounds).
-pub fn arith(profile: Profile, u: f64) -> Option<Arith> {
-    let b32 = u == U32;
-    let b64 = u == f64::EPSILON / 2.0;
-    match profile {
-        Profile::Ieee if b32 || b64 => Some(Arith {
+pub fn arith(profile: Profile, format: Format) -> Option<Arith> {
+    let u = format.u();
+    match (profile, format) {
+        (Profile::Ieee, Format::Binary32 | Format::Binary64) => Some(Arith {
             u,
             input: 1.0,
             add: 1.0,
@@ -62,16 +62,12 @@ pub fn arith(profile: Profile, u: f64) -> Option<Arith> {
             half: 0.0,
             sqrt: 1.0,
             // Half the smallest subnormal.
-            eta: if b32 {
-                2f64.powi(-150)
-            } else {
-                2f64.powi(-1075)
-            },
+            eta: format.eta(),
         }),
         // Vulkan/WGSL: add, sub, mul faithful (2 units of u), division 2.5 ulp (5),
         // sqrt inherited from 1/inversesqrt (2 ulp = 4, then the division, 5),
         // denormals flushed (2^-126).
-        Profile::Shader if b32 => Some(Arith {
+        (Profile::Shader, Format::Binary32) => Some(Arith {
             u,
             input: 2.0,
             add: 2.0,
@@ -79,7 +75,7 @@ pub fn arith(profile: Profile, u: f64) -> Option<Arith> {
             div: 5.0,
             half: 7.0,
             sqrt: 9.0,
-            eta: 2f64.powi(-126),
+            eta: format.min_normal(),
         }),
         _ => None,
     }
@@ -221,8 +217,8 @@ pub fn phong_derived(a: &Arith, n: u32, q_min: f64, dn: f64) -> Option<f64> {
     Some(b * (1.0 + 2f64.powi(-40)))
 }
 
-/// [`phong_derived`] under `ieee` in the format of unit roundoff `u`.
+/// [`phong_derived`] under `ieee` in `format`.
 /// `dn ≥ |N_b − N_a|` (2 for any unit normals).
-pub fn phong_ieee(n: u32, q_min: f64, dn: f64, u: f64) -> Option<f64> {
-    phong_derived(&arith(Profile::Ieee, u)?, n, q_min, dn)
+pub fn phong_ieee(n: u32, q_min: f64, dn: f64, format: Format) -> Option<f64> {
+    phong_derived(&arith(Profile::Ieee, format)?, n, q_min, dn)
 }

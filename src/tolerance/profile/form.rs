@@ -45,7 +45,7 @@ impl Form {
     /// with `n`, and a closed form's, whose bound does not — Euler and corrected Euler.
     /// A declared form other than [`Form::Any`] is refused for the other methods.
     pub fn applies_to(method: crate::Method) -> bool {
-        super::proved(method, super::Profile::Ieee, super::U32).is_some_and(|forms| {
+        super::proved(method, super::Profile::Ieee, crate::Format::Binary32).is_some_and(|forms| {
             forms.iter().any(|p| Form::Recurrence.covers(p))
                 && forms.iter().any(|p| Form::Closed.covers(p))
         })

@@ -2,20 +2,22 @@
 //! table of docs/conformance.md, the default (`ieee`) bounds table, `check --help`'s
 //! summary.
 
-use super::{profile_bound, proved, status, Profile, Status, U32};
+use super::{profile_bound, proved, status, Profile, Status};
+use crate::Format;
 
 /// The columns of [`status_table`]: the profiles and formats with bounds.
-const COLUMNS: [(&str, Profile, f64); 4] = [
-    ("ieee, binary32", Profile::Ieee, 1.0 / 16_777_216.0),
-    ("ieee, binary64", Profile::Ieee, f64::EPSILON / 2.0),
-    ("shader, binary32", Profile::Shader, 1.0 / 16_777_216.0),
+/// (Fixed point's format is its profile's own: the float format is not read.)
+const COLUMNS: [(&str, Profile, Format); 4] = [
+    ("ieee, binary32", Profile::Ieee, Format::Binary32),
+    ("ieee, binary64", Profile::Ieee, Format::Binary64),
+    ("shader, binary32", Profile::Shader, Format::Binary32),
     (
         "fixed:M.F",
         Profile::Fixed {
             int_bits: 16,
             frac_bits: 16,
         },
-        0.0,
+        Format::Binary32,
     ),
 ];
 
@@ -32,7 +34,10 @@ pub fn status_table() -> String {
     s += &"---|".repeat(COLUMNS.len());
     s += "\n";
     for m in crate::Method::ALL {
-        let cells: Vec<Option<Status>> = COLUMNS.iter().map(|&(_, p, u)| status(m, p, u)).collect();
+        let cells: Vec<Option<Status>> = COLUMNS
+            .iter()
+            .map(|&(_, p, format)| status(m, p, format))
+            .collect();
         if cells.iter().all(Option::is_none) {
             continue;
         }
@@ -49,13 +54,13 @@ pub fn status_table() -> String {
     s
 }
 
-/// A profile's bound for `method` in the format of unit roundoff `u`, in words: the
+/// A profile's bound for `method` in `format`, in words: the
 /// proved forms `(α·n + β)·u` (the largest applies), or the section of the derivation
 /// for the derived bounds (which depend on the span's `q_min` too).
-pub fn formula(method: crate::Method, profile: Profile, u: f64) -> Option<String> {
-    match status(method, profile, u)? {
+pub fn formula(method: crate::Method, profile: Profile, format: Format) -> Option<String> {
+    match status(method, profile, format)? {
         Status::Proved(_) => {
-            let mut forms: Vec<String> = proved(method, profile, u)?
+            let mut forms: Vec<String> = proved(method, profile, format)?
                 .iter()
                 .map(|f| {
                     if f.alpha == 0.0 {
@@ -89,30 +94,30 @@ pub fn ieee_table() -> String {
     let mut s = String::from(
         "| method | `ieee` bound on the error at each pixel | binary32, n = 8, q_min = 1 | binary32, n = 256, q_min = 1/4 | binary64, n = 256, q_min = 1/4 | status (binary32) |\n|---|---|---|---|---|---|\n",
     );
-    let (u32_, u64_) = (U32, f64::EPSILON / 2.0);
+    let (b32, b64) = (Format::Binary32, Format::Binary64);
     for m in crate::Method::ALL {
-        let Some(f) = formula(m, Profile::Ieee, u32_) else {
+        let Some(f) = formula(m, Profile::Ieee, b32) else {
             continue;
         };
-        let at = |n: u32, q: f64, u: f64| {
-            profile_bound(m, Profile::Ieee, n, q, u).map_or("none".to_string(), |b| {
+        let at = |n: u32, q: f64, format: Format| {
+            profile_bound(m, Profile::Ieee, n, q, format).map_or("none".to_string(), |b| {
                 // In units of u, rounded up to 4 significant digits.
-                let x = b / u;
+                let x = b / format.u();
                 let d = (3 - x.log10().floor() as i32).max(0) as usize;
                 let e = 10f64.powi(-(d as i32));
                 format!("{:.d$}·u", (x / e).ceil() * e)
             })
         };
-        let label = status(m, Profile::Ieee, u32_).map_or(String::new(), |st| match st {
+        let label = status(m, Profile::Ieee, b32).map_or(String::new(), |st| match st {
             Status::Proved(t) => format!("proved (`{t}`)"),
             Status::Derived(d) => format!("derived ({d})"),
         });
         s += &format!(
             "| `{}` | {f} | {} | {} | {} | {label} |\n",
             m.name(),
-            at(spans[0].0, spans[0].1, u32_),
-            at(spans[1].0, spans[1].1, u32_),
-            at(spans[1].0, spans[1].1, u64_),
+            at(spans[0].0, spans[0].1, b32),
+            at(spans[1].0, spans[1].1, b32),
+            at(spans[1].0, spans[1].1, b64),
         );
     }
     s
@@ -122,10 +127,10 @@ pub fn ieee_table() -> String {
 /// bound is derived (the `--profile` help of `check`, from [`status`]).
 pub fn status_summary() -> String {
     let mut parts = Vec::new();
-    for (name, p, u) in COLUMNS {
+    for (name, p, format) in COLUMNS {
         let (mut proved, mut derived) = (Vec::new(), Vec::new());
         for m in crate::Method::ALL {
-            match status(m, p, u) {
+            match status(m, p, format) {
                 Some(Status::Proved(_)) => proved.push(m.name().into_owned()),
                 Some(Status::Derived(_)) => derived.push(m.name().into_owned()),
                 None => {}

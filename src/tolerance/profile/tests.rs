@@ -3,6 +3,9 @@
 use super::*;
 use crate::Method;
 
+const F32: Format = Format::Binary32;
+const F64: Format = Format::Binary64;
+
 #[test]
 fn names_round_trip() {
     for p in Profile::ALL {
@@ -49,19 +52,19 @@ fn proved_bounds_are_the_theorems() {
     let u32_ = f64::from(f32::EPSILON) / 2.0;
     let u64_ = f64::EPSILON / 2.0;
     // (1.0006·100 + 11.001)·u
-    let g = proved_bound(Method::Gouraud, Profile::Ieee, 100, u32_).unwrap();
+    let g = proved_bound(Method::Gouraud, Profile::Ieee, 100, F32).unwrap();
     assert!((g / u32_ - 111.061).abs() < 1e-9);
     // Corrected Euler: the larger of the recurrence and the closed form.
-    let c = proved_bound(Method::CorrectedEuler, Profile::Ieee, 1, u32_).unwrap();
+    let c = proved_bound(Method::CorrectedEuler, Profile::Ieee, 1, F32).unwrap();
     assert!((c / u32_ - 59.61).abs() < 1e-9);
-    let c = proved_bound(Method::CorrectedEuler, Profile::Ieee, 100, u64_).unwrap();
+    let c = proved_bound(Method::CorrectedEuler, Profile::Ieee, 100, F64).unwrap();
     assert!((c / u64_ - 271.21).abs() < 1e-9);
     // binary32 stops at 4096; binary64 goes to 2^24; shader is binary32 only.
-    assert!(proved_bound(Method::Gouraud, Profile::Ieee, 4097, u32_).is_none());
-    assert!(proved_bound(Method::Gouraud, Profile::Ieee, 1 << 24, u64_).is_some());
-    assert!(proved_bound(Method::Gouraud, Profile::Shader, 10, u64_).is_none());
-    assert!(proved_bound(Method::Phong, Profile::Ieee, 10, u32_).is_none());
-    assert!(proved_bound(Method::Gouraud, Profile::Ieee, 0, u32_).is_none());
+    assert!(proved_bound(Method::Gouraud, Profile::Ieee, 4097, F32).is_none());
+    assert!(proved_bound(Method::Gouraud, Profile::Ieee, 1 << 24, F64).is_some());
+    assert!(proved_bound(Method::Gouraud, Profile::Shader, 10, F64).is_none());
+    assert!(proved_bound(Method::Phong, Profile::Ieee, 10, F32).is_none());
+    assert!(proved_bound(Method::Gouraud, Profile::Ieee, 0, F32).is_none());
 }
 
 #[test]
@@ -69,34 +72,34 @@ fn euler_is_proved_under_ieee() {
     let u32_ = f64::from(f32::EPSILON) / 2.0;
     let u64_ = f64::EPSILON / 2.0;
     // The larger of the recurrence (5.55·n + 121.41) and the closed form (131.41).
-    let e = proved_bound(Method::Euler, Profile::Ieee, 1, u32_).unwrap();
+    let e = proved_bound(Method::Euler, Profile::Ieee, 1, F32).unwrap();
     assert!((e / u32_ - 131.41).abs() < 1e-9);
-    let e = proved_bound(Method::Euler, Profile::Ieee, 2, u32_).unwrap();
+    let e = proved_bound(Method::Euler, Profile::Ieee, 2, F32).unwrap();
     assert!((e / u32_ - 132.51).abs() < 1e-9);
-    let e = proved_bound(Method::Euler, Profile::Ieee, 100, u64_).unwrap();
+    let e = proved_bound(Method::Euler, Profile::Ieee, 100, F64).unwrap();
     assert!((e / u64_ - 676.41).abs() < 1e-9);
-    assert!(proved_bound(Method::Euler, Profile::Ieee, 4097, u32_).is_none());
-    assert!(proved_bound(Method::Euler, Profile::Ieee, 1 << 24, u64_).is_some());
-    assert!(proved_bound(Method::Euler, Profile::Ieee, (1 << 24) + 1, u64_).is_none());
+    assert!(proved_bound(Method::Euler, Profile::Ieee, 4097, F32).is_none());
+    assert!(proved_bound(Method::Euler, Profile::Ieee, 1 << 24, F64).is_some());
+    assert!(proved_bound(Method::Euler, Profile::Ieee, (1 << 24) + 1, F64).is_none());
     assert_eq!(
-        status(Method::Euler, Profile::Ieee, u32_),
+        status(Method::Euler, Profile::Ieee, F32),
         Some(Status::Proved("profile_ieee_euler_binary32"))
     );
     assert_eq!(
-        status(Method::Euler, Profile::Ieee, u64_),
+        status(Method::Euler, Profile::Ieee, F64),
         Some(Status::Proved("profile_ieee_euler_binary64_large"))
     );
     // `check` applies exactly the theorems' bound, and it is below the derivation
     // it replaces wherever both exist.
-    for (u, ns) in [
-        (u32_, vec![1, 2, 3, 255, 256, 4095, 4096]),
-        (u64_, vec![1, 2, 4096, 4097, 1 << 20, 1 << 24]),
+    for (f, ns) in [
+        (F32, vec![1, 2, 3, 255, 256, 4095, 4096]),
+        (F64, vec![1, 2, 4096, 4097, 1 << 20, 1 << 24]),
     ] {
-        let a = arith(Profile::Ieee, u).unwrap();
+        let a = arith(Profile::Ieee, f).unwrap();
         for n in ns {
-            let p = proved_bound(Method::Euler, Profile::Ieee, n, u).unwrap();
+            let p = proved_bound(Method::Euler, Profile::Ieee, n, f).unwrap();
             assert_eq!(
-                profile_bound(Method::Euler, Profile::Ieee, n, 1.0, u),
+                profile_bound(Method::Euler, Profile::Ieee, n, 1.0, f),
                 Some(p)
             );
             assert!(p < euler_derived(&a, n).unwrap(), "{n}");
@@ -140,26 +143,26 @@ fn shader_bounds_are_the_largest_of_every_form() {
         ),
     ];
     for (m, names) in theorems {
-        let forms = proved(m, Profile::Shader, u32_).unwrap();
+        let forms = proved(m, Profile::Shader, F32).unwrap();
         let got: Vec<&str> = forms.iter().map(|f| f.theorem).collect();
         assert_eq!(got, names, "{m}");
         assert_eq!(
-            status(m, Profile::Shader, u32_),
+            status(m, Profile::Shader, F32),
             Some(Status::Proved(names[0])),
             "{m}"
         );
         // The bound applied is never below any form's theorem, and is one of them.
         for n in 1..=4096 {
-            let b = profile_bound(m, Profile::Shader, n, 1.0, u32_).unwrap();
-            assert_eq!(Some(b), proved_bound(m, Profile::Shader, n, u32_));
-            let each: Vec<f64> = forms.iter().map(|f| f.at(n, u32_).unwrap()).collect();
+            let b = profile_bound(m, Profile::Shader, n, 1.0, F32).unwrap();
+            assert_eq!(Some(b), proved_bound(m, Profile::Shader, n, F32));
+            let each: Vec<f64> = forms.iter().map(|f| f.at(n, F32).unwrap()).collect();
             assert!(each.iter().all(|&x| x <= b), "{m} {n}");
             assert!(each.contains(&b), "{m} {n}");
         }
-        assert!(profile_bound(m, Profile::Shader, 4097, 1.0, u32_).is_none());
-        assert!(proved(m, Profile::Shader, f64::EPSILON / 2.0).is_none());
+        assert!(profile_bound(m, Profile::Shader, 4097, 1.0, F32).is_none());
+        assert!(proved(m, Profile::Shader, F64).is_none());
     }
-    let at = |m, n| proved_bound(m, Profile::Shader, n, u32_).unwrap() / u32_;
+    let at = |m, n| proved_bound(m, Profile::Shader, n, F32).unwrap() / u32_;
     // Gouraud: the `_recip` recurrence, (2.0012·n + 28.0014)·u.
     assert!((at(Method::Gouraud, 1) - 30.0026).abs() < 1e-9);
     assert!((at(Method::Gouraud, 100) - 228.1214).abs() < 1e-9);
@@ -175,14 +178,14 @@ fn shader_bounds_are_the_largest_of_every_form() {
     assert!((at(Method::Euler, 3) - 321.41).abs() < 1e-9);
     assert!((at(Method::Euler, 100) - 1398.11).abs() < 1e-9);
     // The derivation plain Euler's theorems replace is larger at every n.
-    let a = arith(Profile::Shader, u32_).unwrap();
+    let a = arith(Profile::Shader, F32).unwrap();
     for n in 1..=4096 {
-        let p = proved_bound(Method::Euler, Profile::Shader, n, u32_).unwrap();
+        let p = proved_bound(Method::Euler, Profile::Shader, n, F32).unwrap();
         assert!(p < euler_derived(&a, n).unwrap(), "{n}");
     }
     // The adaptive scheme takes the larger of Gouraud's and corrected Euler's.
     assert_eq!(
-        profile_bound(Method::Adaptive, Profile::Shader, 1, 1.0, u32_),
+        profile_bound(Method::Adaptive, Profile::Shader, 1, 1.0, F32),
         Some(148.11 * u32_)
     );
 }
@@ -193,17 +196,17 @@ fn shader_bounds_are_the_largest_of_every_form() {
 /// tell their forms apart; fixed point proves the loop only.
 #[test]
 fn a_declared_form_takes_its_own_theorems() {
-    let u32_ = U32;
-    let ce = |form| proved_bound_in(Method::CorrectedEuler, Profile::Ieee, form, 4095, u32_);
+    let u32_ = F32.u();
+    let ce = |form| proved_bound_in(Method::CorrectedEuler, Profile::Ieee, form, 4095, F32);
     assert_eq!(ce(Form::Closed), Some(59.61 * u32_));
     assert_eq!(ce(Form::Recurrence), Some((2.2 * 4095.0 + 51.21) * u32_));
     assert_eq!(ce(Form::Any), ce(Form::Recurrence));
     // At n = 1 the closed form's constant is the larger: undeclared takes it.
-    let ce1 = |form| proved_bound_in(Method::CorrectedEuler, Profile::Ieee, form, 1, u32_);
+    let ce1 = |form| proved_bound_in(Method::CorrectedEuler, Profile::Ieee, form, 1, F32);
     assert_eq!(ce1(Form::Any), Some(59.61 * u32_));
     assert_eq!(ce1(Form::Recurrence), Some((2.2 + 51.21) * u32_));
     // Under shader the closed forms' four theorems, the largest.
-    let sh = proved_bound_in(Method::Euler, Profile::Shader, Form::Closed, 4095, u32_);
+    let sh = proved_bound_in(Method::Euler, Profile::Shader, Form::Closed, 4095, F32);
     assert_eq!(sh, Some(313.36 * u32_));
     for m in Method::ALL {
         assert_eq!(
@@ -214,7 +217,7 @@ fn a_declared_form_takes_its_own_theorems() {
         if !Form::applies_to(m) {
             for form in [Form::Recurrence, Form::Closed] {
                 assert!(
-                    proved_in(m, Profile::Ieee, form, u32_).is_none(),
+                    proved_in(m, Profile::Ieee, form, F32).is_none(),
                     "{m} {form}"
                 );
             }
@@ -233,12 +236,12 @@ fn a_declared_form_takes_its_own_theorems() {
         int_bits: 16,
         frac_bits: 16,
     };
-    let b = |form| profile_span_bound(Method::CorrectedEuler, fixed, form, &shape, u32_);
+    let b = |form| profile_span_bound(Method::CorrectedEuler, fixed, form, &shape, F32);
     assert!(b(Form::Any).is_some());
     assert_eq!(b(Form::Recurrence), b(Form::Any));
     assert_eq!(b(Form::Closed), None);
     assert_eq!(
-        profile_span_bound(Method::Phong, Profile::Ieee, Form::Closed, &shape, u32_),
+        profile_span_bound(Method::Phong, Profile::Ieee, Form::Closed, &shape, F32),
         None
     );
     for form in Form::ALL {

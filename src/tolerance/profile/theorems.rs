@@ -2,13 +2,13 @@
 //! a theorem of `proofs/Profiles.v` (`tests/claims_index.rs` reads the statements and
 //! fails when a constant here differs).
 
-use super::{Profile, Proved, U32};
+use super::{Profile, Proved};
+use crate::Format;
 
 /// The proved bounds of a profile for Gouraud (`g += dp`), corrected Euler (the
 /// recurrence `p += t; t += ds`, and its closed form `p_a + i·(t_0 + (i−1)/2·ds)`)
 /// and, under `ieee`, plain Euler (eqs. 12–14: the recurrence `E += s; s += ds` from
-/// `s_0 = di_a`, and its closed form `p_a + i·(di_a + (i−1)/2·ds)`), in the format of
-/// unit roundoff `u`; the largest of the forms a profile allows, so that every form
+/// `s_0 = di_a`, and its closed form `p_a + i·(di_a + (i−1)/2·ds)`), in `format`; the largest of the forms a profile allows, so that every form
 /// passes. `None` for a method, profile or format with no theorem.
 ///
 /// Plain Euler under `ieee`: `profile_ieee_euler_binary32` and
@@ -43,24 +43,22 @@ use super::{Profile, Proved, U32};
 /// integer and converted (exact: `n(n−1) < 2^24`) or as `n·(n−1)·0.5` with a literal
 /// `0.5`. Not covered by any theorem: `n(n−1)/2` formed by a 2.5-ulp `/2` or with a
 /// computed `1/2`.
-pub fn proved(method: crate::Method, profile: Profile, u: f64) -> Option<Vec<Proved>> {
+pub fn proved(method: crate::Method, profile: Profile, format: Format) -> Option<Vec<Proved>> {
     use crate::Method;
-    let b32 = u == U32;
-    let b64 = u == f64::EPSILON / 2.0;
     let p = |alpha, beta, max_n, theorem| Proved {
         alpha,
         beta,
         max_n,
         theorem,
     };
-    match (method, profile) {
-        (Method::Gouraud, Profile::Ieee) if b32 => Some(vec![p(
+    match (method, profile, format) {
+        (Method::Gouraud, Profile::Ieee, Format::Binary32) => Some(vec![p(
             1.0006,
             11.001,
             4096,
             "profile_ieee_gouraud_binary32",
         )]),
-        (Method::Gouraud, Profile::Ieee) if b64 => Some(vec![p(
+        (Method::Gouraud, Profile::Ieee, Format::Binary64) => Some(vec![p(
             1.0006,
             11.001,
             1 << 24,
@@ -69,7 +67,7 @@ pub fn proved(method: crate::Method, profile: Profile, u: f64) -> Option<Vec<Pro
         // Under `shader` the `_recip` recurrence first: it covers both ways of
         // dividing, so it names the bound ([`status`]); every form is listed, so that
         // [`proved_bound`] takes the largest.
-        (Method::Gouraud, Profile::Shader) if b32 => Some(vec![
+        (Method::Gouraud, Profile::Shader, Format::Binary32) => Some(vec![
             p(
                 2.0012,
                 28.0014,
@@ -78,7 +76,7 @@ pub fn proved(method: crate::Method, profile: Profile, u: f64) -> Option<Vec<Pro
             ),
             p(2.0012, 24.002, 4096, "profile_shader_gouraud_binary32"),
         ]),
-        (Method::CorrectedEuler, Profile::Ieee) if b32 => Some(vec![
+        (Method::CorrectedEuler, Profile::Ieee, Format::Binary32) => Some(vec![
             p(2.2, 51.21, 4096, "profile_ieee_corrected_euler_binary32"),
             p(
                 0.0,
@@ -87,7 +85,7 @@ pub fn proved(method: crate::Method, profile: Profile, u: f64) -> Option<Vec<Pro
                 "profile_ieee_corrected_euler_closed_binary32",
             ),
         ]),
-        (Method::CorrectedEuler, Profile::Ieee) if b64 => Some(vec![
+        (Method::CorrectedEuler, Profile::Ieee, Format::Binary64) => Some(vec![
             p(
                 2.2,
                 51.21,
@@ -101,7 +99,7 @@ pub fn proved(method: crate::Method, profile: Profile, u: f64) -> Option<Vec<Pro
                 "profile_ieee_corrected_euler_closed_binary64_large",
             ),
         ]),
-        (Method::CorrectedEuler, Profile::Shader) if b32 => Some(vec![
+        (Method::CorrectedEuler, Profile::Shader, Format::Binary32) => Some(vec![
             p(
                 4.4,
                 124.31,
@@ -134,11 +132,11 @@ pub fn proved(method: crate::Method, profile: Profile, u: f64) -> Option<Vec<Pro
                 "profile_shader_corrected_euler_closed_half_recip_binary32",
             ),
         ]),
-        (Method::Euler, Profile::Ieee) if b32 => Some(vec![
+        (Method::Euler, Profile::Ieee, Format::Binary32) => Some(vec![
             p(5.55, 121.41, 4096, "profile_ieee_euler_binary32"),
             p(0.0, 131.41, 4096, "profile_ieee_euler_closed_binary32"),
         ]),
-        (Method::Euler, Profile::Ieee) if b64 => Some(vec![
+        (Method::Euler, Profile::Ieee, Format::Binary64) => Some(vec![
             p(5.55, 121.41, 1 << 24, "profile_ieee_euler_binary64_large"),
             p(
                 0.0,
@@ -147,7 +145,7 @@ pub fn proved(method: crate::Method, profile: Profile, u: f64) -> Option<Vec<Pro
                 "profile_ieee_euler_closed_binary64_large",
             ),
         ]),
-        (Method::Euler, Profile::Shader) if b32 => Some(vec![
+        (Method::Euler, Profile::Shader, Format::Binary32) => Some(vec![
             p(11.1, 288.11, 4096, "profile_shader_euler_recip_binary32"),
             p(11.1, 257.9, 4096, "profile_shader_euler_binary32"),
             p(0.0, 277.9, 4096, "profile_shader_euler_closed_binary32"),
@@ -172,7 +170,7 @@ pub fn proved(method: crate::Method, profile: Profile, u: f64) -> Option<Vec<Pro
         ]),
         // The formats and profiles the theorems are not stated for (the reference and
         // fixed-point profiles have bounds of their own).
-        (Method::Gouraud | Method::CorrectedEuler | Method::Euler, _) => None,
+        (Method::Gouraud | Method::CorrectedEuler | Method::Euler, _, _) => None,
         // No theorem: a derived bound ([`status`]) or none under these profiles.
         (
             Method::Phong
@@ -184,6 +182,7 @@ pub fn proved(method: crate::Method, profile: Profile, u: f64) -> Option<Vec<Pro
             | Method::Spherical
             | Method::Binary
             | Method::BishopWeimer,
+            _,
             _,
         ) => None,
     }

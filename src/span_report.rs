@@ -14,23 +14,25 @@ use crate::adaptive::Decision;
 use crate::error::shown;
 use crate::method::Prepared;
 use crate::quantize::level;
-use crate::{BigRational, Input, Method, Real, Scalar, Span, SpanError, Vec3};
+use crate::{BigRational, Method, Real, Scalar, Span, SpanError, Vec3};
 use serde::ser::{SerializeSeq, Serializer};
 use serde::Serialize;
 use std::fmt;
 
 mod bounds;
+mod error;
 mod exact;
 
 use bounds::{error_bound_status, error_bounds};
+pub use error::{Field, Remedy, ReportError};
 pub use exact::{exact_run, ExactRun};
 use exact::{run_exact, run_mpfr};
 
 /// The most steps (and cosine-table entries) an exact or MPFR run takes without
-/// being told to (`--yes`): about half a minute of work.
+/// being told to ([`Remedy::RunAnyway`]): about half a minute of work.
 pub const SPAN_BUDGET: u32 = 1 << 16;
 
-/// The most output a report writes without being told to (`--yes`).
+/// The most output a report writes without being told to ([`Remedy::RunAnyway`]).
 pub const OUTPUT_BUDGET: u64 = 1 << 30;
 
 /// The number type of a run.
@@ -95,32 +97,6 @@ pub struct Request {
     pub arithmetic: Arithmetic,
 }
 
-/// A request that cannot be run: the argument it is about and why, in one line.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct ReportError {
-    /// The argument (`--na`, `--steps`, …).
-    pub arg: &'static str,
-    /// What is wrong with it.
-    pub message: String,
-}
-
-impl ReportError {
-    fn new(arg: &'static str, message: impl fmt::Display) -> Self {
-        ReportError {
-            arg,
-            message: message.to_string(),
-        }
-    }
-}
-
-impl fmt::Display for ReportError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        write!(f, "{}: {}", self.arg, self.message)
-    }
-}
-
-impl std::error::Error for ReportError {}
-
 impl Request {
     /// Checks the request against the budgets: an exact or MPFR run of more than
     /// [`SPAN_BUDGET`] steps or table entries, an exact run whose estimated work
@@ -128,16 +104,19 @@ impl Request {
     /// than [`OUTPUT_BUDGET`] bytes of output.
     ///
     /// # Errors
-    /// A [`ReportError`] naming the argument to change (or `--yes` to run anyway).
+    /// A [`ReportError`] naming the field to change ([`Remedy::RunAnyway`]: or run anyway).
     pub fn within_budget(&self) -> Result<(), ReportError> {
         use crate::budget::{exact_work, input_bits, MAX_RECOMPUTED_WORK};
         let (n, method, digits) = (self.n, self.method, self.digits);
         let exact = self.arithmetic.is_exact();
         if exact && n > SPAN_BUDGET {
             return Err(ReportError::new(
-                "--steps",
-                format!("{n} steps in exact arithmetic take minutes or more (budget {SPAN_BUDGET}); pass --yes to run anyway"),
-            ));
+                Field::Steps,
+                format!(
+                    "{n} steps in exact arithmetic take minutes or more (budget {SPAN_BUDGET})"
+                ),
+            )
+            .or(Remedy::RunAnyway));
         }
         if self.arithmetic == Arithmetic::Exact {
             let work = exact_work(
@@ -148,20 +127,22 @@ impl Request {
             );
             if work > MAX_RECOMPUTED_WORK {
                 return Err(ReportError::new(
-                    "--steps",
+                    Field::Steps,
                     format!(
-                        "{n} steps of {method} in exact arithmetic with these inputs and digits take about {}× the budget of half a minute; pass --yes to run anyway",
+                        "{n} steps of {method} in exact arithmetic with these inputs and digits take about {}× the budget of half a minute",
                         work.div_ceil(MAX_RECOMPUTED_WORK)
                     ),
-                ));
+                )
+                .or(Remedy::RunAnyway));
             }
         }
         if let Method::AngularTable(size) = method {
             if exact && size > SPAN_BUDGET {
                 return Err(ReportError::new(
-                    "--table-size",
-                    format!("a table of {size} exact cosines takes minutes (budget {SPAN_BUDGET}); pass --yes to run anyway"),
-                ));
+                    Field::TableSize,
+                    format!("a table of {size} exact cosines takes minutes (budget {SPAN_BUDGET})"),
+                )
+                .or(Remedy::RunAnyway));
             }
         }
         // Per pixel: the value (quoted, indented), its level, and for exact runs of
@@ -170,13 +151,14 @@ impl Request {
         let bytes = (u64::from(n) + 1) * per_pixel as u64;
         if bytes > OUTPUT_BUDGET {
             return Err(ReportError::new(
-                "--digits",
+                Field::Digits,
                 format!(
-                    "the output would be about {} MiB (budget {} MiB); ask for fewer digits or steps, or pass --yes",
+                    "the output would be about {} MiB (budget {} MiB); ask for fewer digits or steps",
                     bytes >> 20,
                     OUTPUT_BUDGET >> 20
                 ),
-            ));
+            )
+            .or(Remedy::RunAnyway));
         }
         Ok(())
     }
@@ -329,11 +311,7 @@ struct Outcome {
 }
 
 fn span_error(e: SpanError, normalize: bool) -> ReportError {
-    let arg = |i: Input| match i {
-        Input::Na => "--na",
-        Input::Nb => "--nb",
-        Input::L => "--light",
-    };
+    let arg = Field::from;
     match e {
         SpanError::NonFinite { input, component } => ReportError::new(
             arg(input),
@@ -351,7 +329,7 @@ fn span_error(e: SpanError, normalize: bool) -> ReportError {
         } => ReportError::new(
             arg(input),
             format!(
-                "not a unit vector (length² = {}, |length² − 1| = {}, {}){}",
+                "not a unit vector (length² = {}, |length² − 1| = {}, {})",
                 shown(&length_squared),
                 shown(&deviation),
                 if tolerance == 0.0 {
@@ -359,22 +337,22 @@ fn span_error(e: SpanError, normalize: bool) -> ReportError {
                 } else {
                     format!("allowed ≤ {tolerance:.3e}")
                 },
-                if normalize {
-                    ""
-                } else {
-                    "; pass --normalize to normalize it"
-                }
             ),
-        ),
+        )
+        .or(if normalize {
+            Remedy::None
+        } else {
+            Remedy::Normalize
+        }),
         SpanError::Opposite => ReportError::new(
-            "--nb",
+            Field::Nb,
             "Nb = −Na: this method is undefined for opposite normals (no unique arc between them)",
         ),
-        SpanError::ZeroSteps => ReportError::new("--steps", "n must be at least 1"),
+        SpanError::ZeroSteps => ReportError::new(Field::Steps, "n must be at least 1"),
         SpanError::TooManySteps { max, got } => {
-            ReportError::new("--steps", format!("n must be at most {max} (got {got})"))
+            ReportError::new(Field::Steps, format!("n must be at most {max} (got {got})"))
         }
-        other => ReportError::new("span", other),
+        other => ReportError::new(Field::Span, other),
     }
 }
 
@@ -393,7 +371,7 @@ fn compute<T: Real>(r: &Request) -> Result<Computed<T>, ReportError> {
     .map_err(|e| span_error(e, r.normalize))?;
     let mut out = vec![T::zero(); span.len()];
     let prep = Prepared::new(r.method, T::from_rational(&r.kd))
-        .map_err(|e| ReportError::new("--table-size", e))?;
+        .map_err(|e| ReportError::new(Field::TableSize, e))?;
     let decision = r
         .method
         .run(&span, &prep, &mut out)
@@ -487,7 +465,8 @@ mod tests {
     fn budgets_refuse_what_takes_minutes() {
         let mut q = request(Method::Phong, Arithmetic::Exact);
         q.n = SPAN_BUDGET + 1;
-        assert_eq!(q.within_budget().unwrap_err().arg, "--steps");
+        let e = q.within_budget().unwrap_err();
+        assert_eq!((e.field, e.remedy), (Field::Steps, Remedy::RunAnyway));
         q.arithmetic = Arithmetic::F64;
         assert!(q.within_budget().is_ok());
     }

@@ -4,7 +4,7 @@
 use crate::runner;
 
 use phong_approx::raster::compare::{
-    index, render_compare, CompareOptions, Shader, COLUMNS, SHININESS,
+    index, render_compare, runs_in, CompareOptions, Shader, COLUMNS, SHININESS,
 };
 use phong_approx::raster::mesh::{torus, NormalMode};
 use phong_approx::raster::precision::{self, longest, SPAN_LENGTHS};
@@ -30,7 +30,7 @@ fn f64_harness_agrees_with_exact_rationals() {
     assert!(exact.rows > 30, "too few rows: {}", exact.rows);
     for (c, sh) in COLUMNS.iter().enumerate() {
         let d = &exact.vs_f64[c];
-        if !sh.runs_in("exact") {
+        if !runs_in::<BigRational>(sh) {
             // The row set-ups are f32/f64 kernels: not run in rationals.
             assert_eq!((d.pixels, exact.failed_rows[c]), (0, 0), "{}", sh.label());
             continue;
@@ -232,10 +232,12 @@ fn row_setups_match_their_span_methods() {
         if r.method() != Method::Gouraud {
             assert!(row.max <= 1, "{r:?}: max {}", row.max);
         }
-        assert!(S::Rows(r).runs_in("f32"));
-        for p in ["f16", "I16F16", "I8F8", "exact"] {
-            assert!(!S::Rows(r).runs_in(p), "{r:?} in {p}");
-        }
+        assert!(runs_in::<f32>(&S::Rows(r)));
+        use phong_approx::lowp::{f16, I16F16, I8F8};
+        assert!(!runs_in::<f16>(&S::Rows(r)), "{r:?} in f16");
+        assert!(!runs_in::<I16F16>(&S::Rows(r)), "{r:?} in I16F16");
+        assert!(!runs_in::<I8F8>(&S::Rows(r)), "{r:?} in I8F8");
+        assert!(!runs_in::<BigRational>(&S::Rows(r)), "{r:?} in exact");
     }
     let stepped = d(S::Rows(RowSetup::SteppedCorrectedEuler));
     let batched = d(S::Rows(RowSetup::BatchedCorrectedEuler));

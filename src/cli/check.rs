@@ -2,7 +2,9 @@
 
 use super::{out, read_capped, CliError};
 use clap::Args;
-use phong_approx::conformance::check::{check_in, parse_results, Tolerance, MAX_RESULTS_BYTES};
+use phong_approx::conformance::check::{
+    check_in, parse_results, Tolerance, Unbounded, MAX_RESULTS_BYTES,
+};
 use phong_approx::conformance::vectors::method_key;
 use phong_approx::conformance::verdict::{self, load_vectors, Culprit};
 use phong_approx::conformance::{report, shown};
@@ -85,6 +87,20 @@ impl Precision {
     }
 }
 
+/// What the command line tells its user to do about a case with no bound: its flags.
+pub(crate) fn advice(u: &Unbounded) -> Option<&'static str> {
+    match u {
+        Unbounded::FormNotToldApart { .. } | Unbounded::FixedClosedForm { .. } => None,
+        Unbounded::NoBound { .. } => {
+            Some("--profile reference judges this crate's own evaluation; or pass --tolerance")
+        }
+        Unbounded::FixedOverflow { .. } => Some("more integer bits, or pass --tolerance"),
+        Unbounded::SpecularNotModelled { .. }
+        | Unbounded::OutOfRange { .. }
+        | Unbounded::NoDerivedBound => Some("pass --tolerance"),
+    }
+}
+
 /// Runs `phong-approx check`: exit 0 when every case is within tolerance, 1 when not,
 /// 2 on bad input.
 ///
@@ -135,12 +151,16 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
         a.allow_modified_vectors,
     )
     .map_err(|e| {
-        let arg = match e.culprit {
-            Culprit::Vectors => "--vectors",
-            Culprit::Method => "--method",
-            Culprit::Specular => "--specular",
+        let (arg, advice) = match e.culprit {
+            Culprit::Vectors => ("--vectors", ""),
+            Culprit::Unpublished => (
+                "--vectors",
+                "; use the files of vectors/ or `phong-approx vectors`, or pass --allow-modified-vectors",
+            ),
+            Culprit::Method => ("--method", ""),
+            Culprit::Specular => ("--specular", ""),
         };
-        CliError::arg(arg, e.message)
+        CliError::arg(arg, format!("{}{advice}", e.message))
     })?;
     let human = human_verdict(a.report.as_deref());
     if loaded.recomputed {
@@ -183,8 +203,12 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
             a.precision.format()
         );
         let text = match r[0].as_str() {
-            "junit" => report::junit(&suite, &vectors, &reports, &results, &key, a.specular),
-            "json" => report::json(&suite, &vectors, &reports, &results, &key, a.specular),
+            "junit" => report::junit(
+                &suite, &vectors, &reports, &results, &key, a.specular, advice,
+            ),
+            "json" => report::json(
+                &suite, &vectors, &reports, &results, &key, a.specular, advice,
+            ),
             o => {
                 return Err(CliError::arg(
                     "--report",
@@ -202,7 +226,7 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
             write_report(&r[1], &text, &[&a.vectors, &a.results])?;
         }
     }
-    human(&verdict::text(&vectors, &reports, &key, a.specular))?;
+    human(&verdict::text(&vectors, &reports, &key, a.specular, advice))?;
     if a.tolerance.is_none() {
         human(&match profile {
             Profile::Fixed { .. } => format!(

@@ -216,7 +216,13 @@ mod with_gpu {
         let key = method_key(method);
         for (set, reports) in &sets {
             let file = published(set).expect("a published set");
-            human(&verdict::text(file, reports, &key, false))?;
+            human(&verdict::text(
+                file,
+                reports,
+                &key,
+                false,
+                crate::cli::check::advice,
+            ))?;
         }
         human(&format!(
             "tolerance: the {} profile's bound for f32 (docs/float.md §18)\n",
@@ -258,8 +264,16 @@ mod with_gpu {
                 .iter()
                 .map(|(set, r)| {
                     let file = published(set).expect("a published set");
-                    serde_json::from_str(&report::json(&suite(set), file, r, results, &key, false))
-                        .unwrap_or(serde_json::Value::Null)
+                    serde_json::from_str(&report::json(
+                        &suite(set),
+                        file,
+                        r,
+                        results,
+                        &key,
+                        false,
+                        crate::cli::check::advice,
+                    ))
+                    .unwrap_or(serde_json::Value::Null)
                 })
                 .collect();
             let v = serde_json::json!({ "adapter": adapter, "sets": per });
@@ -268,7 +282,15 @@ mod with_gpu {
         let (mut tests, mut failures, mut body) = (0, 0, String::new());
         for (set, r) in sets {
             let file = published(set).expect("a published set");
-            let one = report::junit(&suite(set), file, r, results, &key, false);
+            let one = report::junit(
+                &suite(set),
+                file,
+                r,
+                results,
+                &key,
+                false,
+                crate::cli::check::advice,
+            );
             tests += r.len();
             failures += r.iter().filter(|c| !c.pass).count();
             // Keep the <testsuite> element: the lines between <testsuites> and its end.

@@ -5,7 +5,9 @@
 use super::CliError;
 use clap::{Args, ValueEnum};
 use phong_approx::parse::{parse_rational, parse_vec3};
-use phong_approx::span_report::{span_report, Arithmetic, ReportError, Request, SpanReport};
+use phong_approx::span_report::{
+    span_report, Arithmetic, Field, Remedy, ReportError, Request, SpanReport,
+};
 use phong_approx::{BigRational, Method, Vec3};
 
 /// Arguments of `phong-approx span`.
@@ -100,8 +102,28 @@ fn kd(s: &str) -> Result<BigRational, String> {
     Ok(kd)
 }
 
+/// A [`ReportError`] as the command's: its field as the flag that sets it, its remedy
+/// as the flag that gives it.
 fn report_error(e: ReportError) -> CliError {
-    CliError::arg(e.arg, e.message)
+    let flag = match e.field {
+        Field::Na => "--na",
+        Field::Nb => "--nb",
+        Field::Light => "--light",
+        Field::Steps => "--steps",
+        Field::TableSize => "--table-size",
+        Field::Digits => "--digits",
+        Field::Arithmetic => "--scalar",
+        Field::Span => "span",
+    };
+    let advice = match e.remedy {
+        Remedy::None => "",
+        Remedy::RunAnyway => "; pass --yes to run anyway",
+        Remedy::Normalize => "; pass --normalize to normalize it",
+        Remedy::BuildWithMpfr => {
+            "; rebuild with `--features mpfr` (needs m4 and a C compiler), e.g. `cargo run --features mpfr -- span ...`"
+        }
+    };
+    CliError::arg(flag, format!("{}{advice}", e.message))
 }
 
 /// The request `a` asks for: the method with its table, the number type.

@@ -9,7 +9,7 @@ mod tolerance;
 #[cfg(feature = "csv")]
 pub use results::{parse_results, parse_results_csv};
 pub use results::{parse_results_json, InputError, Results, MAX_CSV_LINE, MAX_RESULTS_BYTES};
-pub use tolerance::{Caller, Tolerance, Unbounded};
+pub use tolerance::{Advice, Tolerance, Unbounded};
 
 use super::vectors::{Case, Expected, VectorFile};
 use crate::method::Method;
@@ -32,8 +32,8 @@ pub struct CaseReport {
     /// `|expected value|` of the span; [`Tolerance::Ulps`]), in the format
     /// [`CaseReport::format`] names.
     pub max_ulps: f64,
-    /// The format whose ulps `max_ulps` counts (`f32`, `f64`, …).
-    pub format: &'static str,
+    /// The format whose ulps `max_ulps` counts.
+    pub format: crate::Format,
     /// The case's scale, the largest `|expected value|` of the span: its ulp is the
     /// unit of `max_ulps` ([`Tolerance::Ulps`]).
     pub scale: f64,
@@ -416,7 +416,7 @@ fn case_report(
         mean_levels: sum_levels as f64 / got.len().max(1) as f64,
         max_abs,
         max_ulps,
-        format: format.name(),
+        format,
         scale,
         worst_pixel: worst,
         ratio,

@@ -3,7 +3,7 @@
 //! file goes through [`super::shown`] (cut and escaped) and then the format's own
 //! escaping.
 
-use super::check::{CaseReport, Results};
+use super::check::{Advice, CaseReport, Results};
 use super::shown;
 use super::vectors::VectorFile;
 
@@ -44,7 +44,10 @@ fn rows<'a>(
                 let list =
                     |v: &[String; 3]| v.iter().map(|x| shown(x)).collect::<Vec<_>>().join(", ");
                 let floats = |v: &super::vectors::VectorInput| {
-                    list(if r.format == "f64" { &v.f64 } else { &v.f32 })
+                    list(match r.format {
+                        crate::Format::Binary64 => &v.f64,
+                        crate::Format::Binary32 | crate::Format::Binary16 => &v.f32,
+                    })
                 };
                 let mut t = format!(
                     "n = {}; N_a = ({}) = ({}); N_b = ({}) = ({}); L = ({}) = ({})",
@@ -117,7 +120,7 @@ fn got_text(g: Option<f64>) -> String {
 }
 
 /// The failure line of a case: where, expected, got, allowed.
-fn why(row: &Row) -> String {
+fn why(row: &Row, advice: Advice) -> String {
     format!(
         "pixel {}: expected {}, got {}, max |Δ| {}, allowed {}",
         row.r.worst_pixel,
@@ -128,16 +131,15 @@ fn why(row: &Row) -> String {
         } else {
             format!("{:.3e}", row.r.max_abs)
         },
-        allowed_text(row.r)
+        allowed_text(row.r, advice)
     )
 }
 
-/// The tolerance of `r` in words, with the command line's advice where it has none.
-fn allowed_text(r: &super::check::CaseReport) -> String {
-    r.unbounded.as_ref().map_or_else(
-        || r.allowed.clone(),
-        |u| u.with_advice(super::check::Caller::CommandLine),
-    )
+/// The tolerance of `r` in words, with the caller's advice where it has none.
+fn allowed_text(r: &super::check::CaseReport, advice: Advice) -> String {
+    r.unbounded
+        .as_ref()
+        .map_or_else(|| r.allowed.clone(), |u| u.with_advice(advice))
 }
 
 /// A JUnit XML report: one `<testsuite>` named `suite` (set, method, profile), one
@@ -150,6 +152,7 @@ pub fn junit(
     results: &Results,
     key: &str,
     specular: bool,
+    advice: Advice,
 ) -> String {
     let rows = rows(vectors, reports, results, key, specular);
     let failures = rows.iter().filter(|r| !r.r.pass).count();
@@ -176,7 +179,7 @@ pub fn junit(
         } else {
             s += &format!(
                 ">\n      <failure message=\"{}\" type=\"out of tolerance\">{}</failure>\n    </testcase>\n",
-                xml(&why(row)),
+                xml(&why(row, advice)),
                 xml(&format!(
                     "{}\n{} pixels, max Δlevel {}, worst pixel {}: {} × allowed\ninputs ({}): {}\nreproduce: {}",
                     row.comment,
@@ -203,6 +206,7 @@ pub fn json(
     results: &Results,
     key: &str,
     specular: bool,
+    advice: Advice,
 ) -> String {
     let rows = rows(vectors, reports, results, key, specular);
     let num = |x: f64| {
@@ -225,7 +229,7 @@ pub fn json(
                 "not_finite_pixel": row.r.not_finite,
                 "max_abs": if row.r.not_finite.is_some() { serde_json::Value::Null } else { num(row.r.max_abs) },
                 "max_levels": row.r.max_levels,
-                "allowed": allowed_text(row.r),
+                "allowed": allowed_text(row.r, advice),
                 "allowed_abs": row.r.allowed_abs.map(num),
                 "ratio": num(row.r.ratio),
                 "seconds": row.r.seconds,

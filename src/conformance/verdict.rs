@@ -17,13 +17,15 @@ use crate::budget::{exact_work, input_bits, specular_work, CASE_WORK, MAX_RECOMP
 use crate::error::shown;
 use crate::method::Method;
 use crate::table::{markdown, Align};
-use std::fmt;
 
 /// Which input a refusal is about (the command line names it as the argument).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Culprit {
     /// The vector file.
     Vectors,
+    /// The vector file is not a published set, and modified files were not allowed
+    /// (`allow_modified` of [`load_vectors`]).
+    Unpublished,
     /// The method asked for.
     Method,
     /// The specular switch.
@@ -32,21 +34,14 @@ pub enum Culprit {
 
 /// Why a vector file cannot be checked against: the input at fault and a one-line
 /// message (the file's name in it as given, [`shown`]).
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("{message}")]
 pub struct LoadError {
     /// The input at fault.
     pub culprit: Culprit,
     /// What is wrong.
     pub message: String,
 }
-
-impl fmt::Display for LoadError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.message)
-    }
-}
-
-impl std::error::Error for LoadError {}
 
 /// A vector file ready to check against.
 #[derive(Clone, Debug)]
@@ -80,10 +75,13 @@ pub fn load_vectors(
     let digest = sha256_hex(text.as_bytes());
     let published = published_set(&digest).is_some();
     if !published && !allow_modified {
-        return Err(vectors_error(format!(
-            "SHA-256 {digest} is not that of a published vector set (docs/conformance.md); \
-             use the files of vectors/ or `phong-approx vectors`, or pass --allow-modified-vectors"
-        )));
+        return Err(LoadError {
+            culprit: Culprit::Unpublished,
+            message: format!(
+                "{}: SHA-256 {digest} is not that of a published vector set (docs/conformance.md)",
+                shown(name)
+            ),
+        });
     }
     let not_vectors = |e: serde_json::Error| LoadError {
         culprit: Culprit::Vectors,
@@ -220,8 +218,15 @@ fn recompute(
 
 /// The verdict as text: a heading line (diffuse or specular, version, set, cases,
 /// method), a Markdown table with a row per case, the overall figures and the worst
-/// case with its inputs. Every string from the files is [`shown`].
-pub fn text(vectors: &VectorFile, reports: &[CaseReport], key: &str, specular: bool) -> String {
+/// case with its inputs; a case with no bound says why, with `advice`. Every string
+/// from the files is [`shown`].
+pub fn text(
+    vectors: &VectorFile,
+    reports: &[CaseReport],
+    key: &str,
+    specular: bool,
+    advice: super::check::Advice,
+) -> String {
     let mut s = format!(
         "{} {} set '{}' ({} cases), method {key}\n",
         if specular { "specular" } else { "diffuse" },
@@ -244,17 +249,18 @@ pub fn text(vectors: &VectorFile, reports: &[CaseReport], key: &str, specular: b
                 format!("{:.4}", r.mean_levels),
                 abs,
                 ulps,
-                r.unbounded.as_ref().map_or_else(
-                    || r.allowed.clone(),
-                    |u| u.with_advice(super::check::Caller::CommandLine),
-                ),
+                r.unbounded
+                    .as_ref()
+                    .map_or_else(|| r.allowed.clone(), |u| u.with_advice(advice)),
                 times_allowed(r.ratio),
                 (if r.pass { "pass" } else { "FAIL" }).to_string(),
             ]
         })
         .collect();
     let (l, r) = (Align::Left, Align::Right);
-    let format = reports.first().map_or("f32", |r| r.format);
+    let format = reports
+        .first()
+        .map_or(crate::Format::Binary32, |r| r.format);
     let ulps_head = format!("max ulps ({format})");
     s += &markdown(
         &[
@@ -378,7 +384,7 @@ mod tests {
         let l = load_vectors(EDGE.to_string(), "edge.json", m, false, false).unwrap();
         assert!(!l.recomputed);
         let e = load_vectors(cut(3), "cut.json", m, false, false).unwrap_err();
-        assert_eq!(e.culprit, Culprit::Vectors);
+        assert_eq!(e.culprit, Culprit::Unpublished);
         assert!(e.message.starts_with("cut.json: SHA-256 "), "{e}");
         let r = load_vectors(cut(3), "cut.json", m, false, true).unwrap();
         assert!(r.recomputed);
@@ -441,7 +447,7 @@ mod tests {
         };
         let good = run(1.0);
         assert_eq!(failure(&good), None);
-        let t = text(&file, &good, "corrected-euler", false);
+        let t = text(&file, &good, "corrected-euler", false, |u| u.kit_advice());
         assert!(t.starts_with(&format!(
             "diffuse {} set 'edge'",
             crate::conformance::vectors::FORMAT_VERSION

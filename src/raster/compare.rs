@@ -45,8 +45,8 @@ pub const SHININESS: [u32; 3] = [10, 50, 200];
 pub use super::shader::Shader;
 
 mod rows;
+pub use rows::{runs_in, Direction, RowKernels};
 pub(crate) use rows::{shade_row, RowInfo, TriangleSetup};
-pub use rows::{Direction, RowKernels};
 
 /// Every column of the comparison, the reference first: every span method of the
 /// catalogue ([`Method::ALL`], in its order), each followed by the polygon methods it

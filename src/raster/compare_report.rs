@@ -82,10 +82,7 @@ pub fn precision_study(
     let mesh = exp.mesh(40, 20);
     PRECISIONS
         .iter()
-        .map(|&p| {
-            let st = precision::torus(&mesh, &scene, frames, p, tick).expect("known precision");
-            (p, st)
-        })
+        .map(|&p| (p.name(), precision::torus(&mesh, &scene, frames, p, tick)))
         .collect()
 }
 
@@ -100,9 +97,9 @@ pub fn span_study(count: usize, tick: &(dyn Fn() + Sync)) -> Vec<SpanRow> {
             let per: Vec<(&'static str, Vec<Option<f64>>)> = PRECISIONS
                 .iter()
                 .map(|&p| {
-                    let e = precision::span_errors_named(sh, p, &dirs).expect("known precision");
+                    let e = precision::span_errors_in(sh, p, &dirs);
                     tick();
-                    (p, e)
+                    (p.name(), e)
                 })
                 .collect();
             (sh, per)
@@ -377,13 +374,13 @@ mod tests {
                     failed_rows: vec![0; n],
                     rows: 20,
                 };
-                if p == "I8F8" {
+                if p == precision::Precision::I8F8 {
                     let duff = super::super::compare::index(shader("duff"));
                     st.failed_rows[1] = 5;
                     st.vs_phong[duff].pixels = 0;
                     st.vs_f64[duff].pixels = 0;
                 }
-                (p, st)
+                (p.name(), st)
             })
             .collect();
         let spans = Method::ALL
@@ -396,7 +393,7 @@ mod tests {
                             .iter()
                             .map(|&len| (len <= 64).then_some(len as f64 / 64.0))
                             .collect();
-                        (p, e)
+                        (p.name(), e)
                     })
                     .collect();
                 (sh, per)

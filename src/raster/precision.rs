@@ -10,7 +10,9 @@
 //!   accumulated error exceeds one 8-bit level: the set-up computed in `f64` and
 //!   rounded to the precision ([`Span::cast`]), the steps in the precision.
 
-use super::compare::{shade_row, triangle_inputs, RowKernels, Shader, TriangleSetup, COLUMNS};
+use super::compare::{
+    runs_in, shade_row, triangle_inputs, RowKernels, Shader, TriangleSetup, COLUMNS,
+};
 use super::frame::{polygons, Split};
 use super::mesh::Mesh;
 use super::render::{Deviation, Scene};
@@ -21,8 +23,48 @@ use crate::quantize::level;
 use crate::scalar::Real;
 use crate::{Method, Span, Vec3};
 
+/// A number type of the precision study.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Precision {
+    /// IEEE binary64.
+    F64,
+    /// IEEE binary32.
+    F32,
+    /// IEEE binary16 ([`crate::lowp::f16`]).
+    F16,
+    /// 16.16 fixed point ([`crate::lowp::I16F16`]).
+    I16F16,
+    /// 8.8 fixed point ([`crate::lowp::I8F8`]).
+    I8F8,
+}
+
+impl Precision {
+    /// Its name in the tables: `f64`, `f32`, `f16`, `I16F16`, `I8F8`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Precision::F64 => "f64",
+            Precision::F32 => "f32",
+            Precision::F16 => "f16",
+            Precision::I16F16 => "I16F16",
+            Precision::I8F8 => "I8F8",
+        }
+    }
+}
+
+impl std::fmt::Display for Precision {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
 /// The precisions of the tables, widest first.
-pub const PRECISIONS: [&str; 5] = ["f64", "f32", "f16", "I16F16", "I8F8"];
+pub const PRECISIONS: [Precision; 5] = [
+    Precision::F64,
+    Precision::F32,
+    Precision::F16,
+    Precision::I16F16,
+    Precision::I8F8,
+];
 
 /// Per shader, in one precision.
 #[derive(Clone, Debug, Default, PartialEq)]
@@ -79,18 +121,10 @@ pub fn frame<T: RowKernels>(mesh: &Mesh, scene: &Scene, f: u32) -> PrecisionStat
     let cols = COLUMNS.len();
     // The shaders with a kernel in `T` (the row set-ups of `fast_rows` are `f32` and
     // `f64` kernels); the others' cells stay empty.
-    let here: Vec<Shader> = COLUMNS
-        .iter()
-        .copied()
-        .filter(|sh| sh.runs_in(T::NAME))
-        .collect();
+    let here: Vec<Shader> = COLUMNS.iter().copied().filter(runs_in::<T>).collect();
     // The f64 run of every shader that has one (the `rsqrt` kernels are `f32` only:
     // their cells against the same method in f64 stay empty).
-    let in64: Vec<Shader> = COLUMNS
-        .iter()
-        .copied()
-        .filter(|sh| sh.runs_in("f64"))
-        .collect();
+    let in64: Vec<Shader> = COLUMNS.iter().copied().filter(runs_in::<f64>).collect();
     let mut st = PrecisionStats::empty();
     let mut out_t: Vec<Vec<T>> = vec![Vec::new(); cols];
     let mut out64: Vec<Vec<f64>> = vec![Vec::new(); cols];
@@ -130,7 +164,7 @@ pub fn frame<T: RowKernels>(mesh: &Mesh, scene: &Scene, f: u32) -> PrecisionStat
                     }
                     &one[c]
                 };
-                let has64 = sh.runs_in("f64");
+                let has64 = runs_in::<f64>(&sh);
                 for (j, val) in values.iter().enumerate() {
                     // The level of the value the precision holds, taken exactly (a
                     // quantizer in 8.8 cannot even form 255·v).
@@ -146,15 +180,14 @@ pub fn frame<T: RowKernels>(mesh: &Mesh, scene: &Scene, f: u32) -> PrecisionStat
     st
 }
 
-/// [`frame`] over frames `0..frames` for the precision named `name` (one of
-/// [`PRECISIONS`]), frames in parallel; `None` for an unknown name.
+/// [`frame`] over frames `0..frames` in `precision`, frames in parallel.
 pub fn torus(
     mesh: &Mesh,
     scene: &Scene,
     frames: u32,
-    name: &str,
+    precision: Precision,
     tick: &(dyn Fn() + Sync),
-) -> Option<PrecisionStats> {
+) -> PrecisionStats {
     use rayon::prelude::*;
     fn go<T: RowKernels>(
         mesh: &Mesh,
@@ -174,14 +207,13 @@ pub fn torus(
                 a
             })
     }
-    Some(match name {
-        "f64" => go::<f64>(mesh, scene, frames, tick),
-        "f32" => go::<f32>(mesh, scene, frames, tick),
-        "f16" => go::<f16>(mesh, scene, frames, tick),
-        "I16F16" => go::<I16F16>(mesh, scene, frames, tick),
-        "I8F8" => go::<I8F8>(mesh, scene, frames, tick),
-        _ => return None,
-    })
+    match precision {
+        Precision::F64 => go::<f64>(mesh, scene, frames, tick),
+        Precision::F32 => go::<f32>(mesh, scene, frames, tick),
+        Precision::F16 => go::<f16>(mesh, scene, frames, tick),
+        Precision::I16F16 => go::<I16F16>(mesh, scene, frames, tick),
+        Precision::I8F8 => go::<I8F8>(mesh, scene, frames, tick),
+    }
 }
 
 /// The span lengths tried by [`span_errors`] and [`longest`].
@@ -273,18 +305,17 @@ pub fn longest(errors: &[Option<f64>]) -> Option<u32> {
     best
 }
 
-/// [`span_errors`] for the precision named `name`.
-pub fn span_errors_named(
+/// [`span_errors`] in `precision`.
+pub fn span_errors_in(
     m: Method,
-    name: &str,
+    precision: Precision,
     directions: &[(Vec3<f64>, Vec3<f64>, Vec3<f64>)],
-) -> Option<Vec<Option<f64>>> {
-    Some(match name {
-        "f64" => span_errors::<f64>(m, directions),
-        "f32" => span_errors::<f32>(m, directions),
-        "f16" => span_errors::<f16>(m, directions),
-        "I16F16" => span_errors::<I16F16>(m, directions),
-        "I8F8" => span_errors::<I8F8>(m, directions),
-        _ => return None,
-    })
+) -> Vec<Option<f64>> {
+    match precision {
+        Precision::F64 => span_errors::<f64>(m, directions),
+        Precision::F32 => span_errors::<f32>(m, directions),
+        Precision::F16 => span_errors::<f16>(m, directions),
+        Precision::I16F16 => span_errors::<I16F16>(m, directions),
+        Precision::I8F8 => span_errors::<I8F8>(m, directions),
+    }
 }

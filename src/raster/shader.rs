@@ -73,19 +73,6 @@ impl RowSetup {
             _ => Method::Phong,
         }
     }
-
-    /// Whether it has a kernel in the precision named `precision` (`f32`: all;
-    /// `f64`: all but the `rsqrt` ones; none in the others).
-    pub fn runs_in(self, precision: &str) -> bool {
-        match precision {
-            "f32" => true,
-            "f64" => !matches!(
-                self,
-                RowSetup::BatchedPhongRsqrt | RowSetup::FieldPhongRsqrt
-            ),
-            _ => false,
-        }
-    }
 }
 
 /// The shaders that are not span methods.
@@ -151,16 +138,6 @@ impl Shader {
                 RowSetup::FieldPhongRsqrt => "phong-field-rsqrt",
             },
         })
-    }
-
-    /// Whether the shader runs in the precision named `precision` (one of
-    /// [`super::precision::PRECISIONS`]): every one but the row set-ups, which are
-    /// `f32`/`f64` kernels.
-    pub fn runs_in(&self, precision: &str) -> bool {
-        match self {
-            Shader::Rows(r) => r.runs_in(precision),
-            _ => true,
-        }
     }
 
     /// Who the method is by.

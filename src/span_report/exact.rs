@@ -25,7 +25,7 @@ impl Short {
                 self.known, self.pixel
             )
         };
-        ReportError::new("--digits", message)
+        ReportError::new(Field::Digits, message)
     }
 }
 
@@ -298,7 +298,7 @@ fn digits_within_reach(r: &Request) -> Result<(), ReportError> {
     let most = (f64::from(MAX_BITS - 64) * std::f64::consts::LOG10_2) as usize;
     if !r.method.is_rational() && r.digits > most {
         return Err(ReportError::new(
-            "--digits",
+            Field::Digits,
             format!(
                 "at most {most} significant digits of {} are computed (its square roots, acos and cos to 2^-{}); ask for at most that many",
                 r.method,
@@ -357,8 +357,5 @@ pub(super) fn run_mpfr(r: &Request, precision: u32) -> Result<Outcome, ReportErr
 
 #[cfg(not(feature = "mpfr"))]
 pub(super) fn run_mpfr(_r: &Request, _precision: u32) -> Result<Outcome, ReportError> {
-    Err(ReportError::new(
-        "--scalar",
-        "mpfr is not in this build; rebuild with `--features mpfr` (needs m4 and a C compiler), e.g. `cargo run --features mpfr -- span ...`",
-    ))
+    Err(ReportError::new(Field::Arithmetic, "mpfr is not in this build").or(Remedy::BuildWithMpfr))
 }

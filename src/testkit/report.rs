@@ -421,6 +421,6 @@ impl fmt::Display for Report {
 fn allowed_text(r: &crate::conformance::check::CaseReport) -> String {
     r.unbounded.as_ref().map_or_else(
         || r.allowed.clone(),
-        |u| u.with_advice(crate::conformance::check::Caller::TestKit),
+        |u| u.with_advice(crate::conformance::check::Unbounded::kit_advice),
     )
 }

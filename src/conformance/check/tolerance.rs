@@ -135,7 +135,7 @@ impl Tolerance {
 }
 
 /// Why a case has no bound under its tolerance, so that it fails: as data, so that
-/// each caller gives its own advice ([`Unbounded::advice`]: the command line names its
+/// each caller gives its own advice ([`Advice`]: the command line names its
 /// flags, the test kit its methods).
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 pub enum Unbounded {
@@ -189,45 +189,29 @@ pub enum Unbounded {
     NoDerivedBound,
 }
 
-/// Who is told what to do about a case with no bound: the user of the command line or
-/// of the test kit.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Caller {
-    /// `phong-approx check`: advice names its flags.
-    CommandLine,
-    /// `testkit::Suite`: advice names its methods.
-    TestKit,
-}
+/// What a caller tells its user to do about a case with no bound, per reason (`None`
+/// where the reason says it): the command line names its flags, the test kit its
+/// methods ([`Unbounded::kit_advice`]). The library's reports take one.
+pub type Advice = fn(&Unbounded) -> Option<&'static str>;
 
 impl Unbounded {
-    /// What the caller can do about it (`None` where the reason says it).
-    pub fn advice(&self, caller: Caller) -> Option<&'static str> {
-        let cli = caller == Caller::CommandLine;
+    /// The test kit's advice: what to give `Suite` instead.
+    pub fn kit_advice(&self) -> Option<&'static str> {
         match self {
             Unbounded::FormNotToldApart { .. } | Unbounded::FixedClosedForm { .. } => None,
-            Unbounded::NoBound { .. } => Some(if cli {
-                "--profile reference judges this crate's own evaluation; or pass --tolerance"
-            } else {
-                "Profile::Reference judges this crate's own evaluation; or give Suite::tolerance"
-            }),
-            Unbounded::FixedOverflow { .. } => Some(if cli {
-                "more integer bits, or pass --tolerance"
-            } else {
-                "more integer bits, or give Suite::tolerance"
-            }),
+            Unbounded::NoBound { .. } => Some(
+                "Profile::Reference judges this crate's own evaluation; or give Suite::tolerance",
+            ),
+            Unbounded::FixedOverflow { .. } => Some("more integer bits, or give Suite::tolerance"),
             Unbounded::SpecularNotModelled { .. }
             | Unbounded::OutOfRange { .. }
-            | Unbounded::NoDerivedBound => Some(if cli {
-                "pass --tolerance"
-            } else {
-                "give Suite::tolerance"
-            }),
+            | Unbounded::NoDerivedBound => Some("give Suite::tolerance"),
         }
     }
 
     /// The reason with the caller's advice: `reason (advice)`.
-    pub fn with_advice(&self, caller: Caller) -> String {
-        match self.advice(caller) {
+    pub fn with_advice(&self, advice: Advice) -> String {
+        match advice(self) {
             Some(a) => format!("{self} ({a})"),
             None => self.to_string(),
         }

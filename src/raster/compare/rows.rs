@@ -53,6 +53,16 @@ fn rsqrt_f64(_: &Field<f64>, _: RowSetup, _: f64, _: f64, _: u32, _: &mut [f64])
 /// [`crate::BigRational`].
 pub trait RowKernels: sealed::Rows {}
 
+/// Whether `sh` runs in `T` (one of [`crate::raster::precision::PRECISIONS`] or exact
+/// rationals): every shader but the row set-ups, which are kernels in `f32` (every
+/// one) and `f64` (all but the `rsqrt` ones).
+pub fn runs_in<T: RowKernels>(sh: &super::Shader) -> bool {
+    match sh {
+        super::Shader::Rows(r) => T::has_rows(*r),
+        _ => true,
+    }
+}
+
 impl<T: sealed::Rows> RowKernels for T {}
 
 mod sealed {
@@ -68,6 +78,11 @@ mod sealed {
             _dirs: &[Direction<Self>],
         ) -> Vec<RowsDir<Self>> {
             Vec::new()
+        }
+
+        /// Whether the type has a kernel for the row set-up `r`.
+        fn has_rows(_r: RowSetup) -> bool {
+            false
         }
 
         /// Shades a row with `r` for one direction's field into `o`; `None` where
@@ -86,8 +101,12 @@ mod sealed {
 }
 
 macro_rules! row_kernels {
-    ($f:ident, $rsqrt:ident) => {
+    ($f:ident, $rsqrt:ident, $has_rsqrt:expr) => {
         impl sealed::Rows for $f {
+            fn has_rows(r: RowSetup) -> bool {
+                $has_rsqrt || !matches!(r, RowSetup::BatchedPhongRsqrt | RowSetup::FieldPhongRsqrt)
+            }
+
             fn rows_of(
                 field: &(Vec3<$f>, Vec3<$f>, Vec3<$f>),
                 dirs: &[Direction<$f>],
@@ -137,8 +156,8 @@ macro_rules! row_kernels {
         }
     };
 }
-row_kernels!(f32, rsqrt_f32);
-row_kernels!(f64, rsqrt_f64);
+row_kernels!(f32, rsqrt_f32, true);
+row_kernels!(f64, rsqrt_f64, false);
 impl sealed::Rows for crate::lowp::f16 {}
 impl sealed::Rows for crate::lowp::I16F16 {}
 impl sealed::Rows for crate::lowp::I8F8 {}

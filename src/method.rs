@@ -24,8 +24,12 @@ use std::fmt;
 use std::str::FromStr;
 
 mod catalogue;
+mod profiles;
 
-pub use catalogue::{Bound, Family, Info, Needs, PhongPixels, ValueRange};
+pub use catalogue::{
+    Bound, DerivedForm, Family, FixedBound, FloatBound, FloatProfile, Info, Needs, PhongPixels,
+    ProfileBounds, Proved, ValueRange,
+};
 
 /// One way of shading a span.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -101,6 +105,20 @@ impl Method {
     /// Whether the method's exact value is Phong's `p/√q` at every pixel.
     pub fn is_phong_valued(&self) -> bool {
         self.info().phong_pixels == PhongPixels::All
+    }
+
+    /// The methods it picks between per span ([`Info::picks`]: the adaptive scheme's
+    /// Gouraud and corrected Euler), `None` for a method that runs itself.
+    pub fn picks(&self) -> Option<[Method; 2]> {
+        self.info().picks
+    }
+
+    /// The method and the ones it picks between ([`Method::picks`]): every method
+    /// whose exact run may judge an implementation of it.
+    pub fn with_picks(&self) -> Vec<Method> {
+        std::iter::once(*self)
+            .chain(self.picks().into_iter().flatten())
+            .collect()
     }
 
     /// Whether the method is one of the related methods along a span

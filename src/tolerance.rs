@@ -177,7 +177,8 @@ pub fn reference_bound(
                 .then(|| (normal / q_min.sqrt() + eval) * u)
         }
         // The adaptive scheme (§10).
-        Bound::Larger(a, b) => {
+        Bound::LargerOfPicks => {
+            let [a, b] = method.picks()?;
             Some(reference_bound(a, n, q_min, None, u)?.max(reference_bound(b, n, q_min, None, u)?))
         }
         // Angular interpolation (§11): the angle's bound, then a table's step and its

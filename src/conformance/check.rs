@@ -105,8 +105,8 @@ pub fn check_in(
         .ok_or_else(|| format!("the vector file has no method '{method_key}'"))?;
         let got = &results[&c.id];
         let start = std::time::Instant::now();
-        let mut r = match (method == Method::Adaptive && !specular)
-            .then(|| adaptive_either(c, got, tol, format))
+        let mut r = match (!specular)
+            .then(|| adaptive_either(c, got, method, tol, format))
             .flatten()
         {
             Some(r) => r,
@@ -167,26 +167,25 @@ fn case_bound(c: &Case, method: Method, tol: Tolerance, specular: bool) -> Optio
 fn adaptive_either(
     c: &Case,
     got: &[f64],
+    method: Method,
     tol: Tolerance,
     format: crate::Format,
 ) -> Option<CaseReport> {
+    let [ma, mb] = method.picks()?;
     let delta: f64 = c.delta.parse().ok()?;
     // Only where the profile bounds the adaptive scheme at all (not fixed point).
-    case_bound(c, Method::Adaptive, tol, false)?;
-    let (bg, bce) = (
-        case_bound(c, Method::Gouraud, tol, false)?,
-        case_bound(c, Method::CorrectedEuler, tol, false)?,
+    case_bound(c, method, tol, false)?;
+    let (ba, bb) = (
+        case_bound(c, ma, tol, false)?,
+        case_bound(c, mb, tol, false)?,
     );
-    if !crate::tolerance::adaptive_too_close(delta, 1.0, bg, bce, format.u()) {
+    if !crate::tolerance::adaptive_too_close(delta, 1.0, ba, bb, format.u()) {
         return None;
     }
-    let either = [
-        (Method::Gouraud, "gouraud"),
-        (Method::CorrectedEuler, "corrected-euler"),
-    ];
     let mut best: Option<CaseReport> = None;
-    for (m, key) in either {
-        let exp = c.expected.get(key)?;
+    for m in [ma, mb] {
+        let key = crate::conformance::vectors::method_key(m);
+        let exp = c.expected.get(&key)?;
         let mut r = case_report(c, exp, got, m, tol, false, format);
         r.allowed = format!(
             "{} as {key} (|255δ| = {:.6} is within rounding of 1: either method passes)",

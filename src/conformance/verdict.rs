@@ -191,12 +191,9 @@ fn recompute(
         let refs: Vec<_> = vs.iter().collect();
         let bits = input_bits(&refs);
         // The adaptive scheme is recomputed with both of its methods (`check_in`).
-        let diffuse =
-            exact_work(method, c.n, bits, DIGITS).saturating_add(if method == Method::Adaptive {
-                2 * exact_work(Method::CorrectedEuler, c.n, bits, DIGITS)
-            } else {
-                0
-            });
+        let diffuse = method.with_picks().into_iter().fold(0u64, |w, m| {
+            w.saturating_add(exact_work(m, c.n, bits, DIGITS))
+        });
         // The specular expectations run the method again on N·H, then take powers.
         let shiny = match &c.specular {
             Some(sp) if specular => diffuse.saturating_add(specular_work(c.n, sp.s, bits)),

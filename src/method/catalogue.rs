@@ -6,10 +6,16 @@
 //! rows, one per method too.
 
 use super::Method;
+use crate::reference::radical::Valued;
 use crate::related::binary;
 use crate::span::Span;
 use crate::BigRational;
 use std::fmt;
+
+pub use super::profiles::{
+    DerivedForm, FixedBound, FloatBound, FloatProfile, ProfileBounds, Proved,
+};
+use super::profiles::{CORRECTED_EULER_THEOREMS, EULER_THEOREMS, GOURAUD_THEOREMS};
 
 /// What a method asks of the number type.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -57,6 +63,20 @@ pub struct Info {
     /// That bound under the `reference` profile, as data: its form and constants
     /// ([`crate::tolerance::reference_bound`] evaluates it).
     pub bound: Bound,
+    /// The methods it picks between per span (the adaptive scheme: Gouraud where
+    /// eq. 23's test says the span is flat enough, else corrected Euler), whose exact
+    /// runs judge an implementation that picks the other one near the test's
+    /// threshold; `None` for a method that runs itself.
+    pub picks: Option<[Method; 2]>,
+    /// Its values as a closed form of the span's set-up, everywhere (Gouraud's line,
+    /// Euler's and corrected Euler's parabolas), so that an exact level on normalized
+    /// inputs is decided in `Q(√a, √b, √c)` ([`crate::reference::radical`]) at every
+    /// pixel, not only where it is Phong's ([`Info::phong_pixels`]); `None` for the
+    /// others.
+    pub closed_form: Option<Valued>,
+    /// Its bounds beyond the `reference` derivation: under `ieee` and `shader`, in
+    /// fixed point, and the theorems of its `reference` bound, as data.
+    pub profiles: ProfileBounds,
 }
 
 /// A method's float bound against its exact run under the `reference` profile, as
@@ -90,8 +110,9 @@ pub enum Bound {
         /// The evaluation's error (in `u`).
         eval: f64,
     },
-    /// The larger of two methods' bounds (the adaptive scheme runs one or the other).
-    Larger(Method, Method),
+    /// The larger of the bounds of the methods it picks between ([`Info::picks`]: the
+    /// adaptive scheme runs one or the other).
+    LargerOfPicks,
     /// The interpolated angle's bound (§11) plus `extra·u`, and one step of a cosine
     /// table of `table` entries when the cosine is tabled.
     Angle {
@@ -238,10 +259,71 @@ impl Method {
             normal: 10.01,
             eval: 7.6,
         };
-        const ADAPTIVE: Bound = Bound::Larger(Method::CorrectedEuler, Method::Gouraud);
+        const ADAPTIVE: Bound = Bound::LargerOfPicks;
         const ANGLE: Bound = Bound::Angle {
             extra: 2.0,
             table: None,
+        };
+        // Beyond the reference profile (`method/profiles.rs`).
+        const NO_FIXED: FixedBound =
+            FixedBound::None("proofs/Fixed.v proves Gouraud's and corrected Euler's loops only");
+        const fn derived(section: &'static str, form: DerivedForm) -> ProfileBounds {
+            ProfileBounds {
+                reference: None,
+                float: FloatBound::Derived { section, form },
+                fixed: NO_FIXED,
+            }
+        }
+        const DERIVED_PER_PIXEL: ProfileBounds =
+            derived("docs/float.md §18.4", DerivedForm::PerPixel);
+        const DERIVED_RATIO: ProfileBounds = derived("docs/float.md §18.5", DerivedForm::Ratio);
+        const DERIVED_HALF_RATIO: ProfileBounds =
+            derived("docs/float.md §18.5", DerivedForm::HalfRatio);
+        // The larger of the two proved bounds, against the exact run of the method the
+        // implementation chose (docs/float.md §10, §18.5).
+        const ADAPTIVE_PROFILES: ProfileBounds =
+            derived("docs/float.md §18.5", DerivedForm::LargerOfPicks);
+        const GOURAUD_PROFILES: ProfileBounds = ProfileBounds {
+            reference: Some(["float_gouraud_binary32", "float_gouraud_binary64"]),
+            float: FloatBound::Proved(GOURAUD_THEOREMS),
+            fixed: FixedBound::Proved {
+                theorem: "fixed_point_gouraud_error",
+                second_order: false,
+                value_max: 1.0,
+                slope_times_n: 2.0,
+            },
+        };
+        const CORRECTED_EULER_PROFILES: ProfileBounds = ProfileBounds {
+            reference: Some([
+                "float_corrected_euler_binary32",
+                "float_corrected_euler_binary64",
+            ]),
+            float: FloatBound::Proved(CORRECTED_EULER_THEOREMS),
+            fixed: FixedBound::Proved {
+                theorem: "fixed_point_corrected_euler_error",
+                second_order: true,
+                value_max: 2.5,
+                slope_times_n: 28.0,
+            },
+        };
+        const EULER_PROFILES: ProfileBounds = ProfileBounds {
+            reference: None,
+            float: FloatBound::Proved(EULER_THEOREMS),
+            fixed: NO_FIXED,
+        };
+        const ANGLE_PROFILES: ProfileBounds = ProfileBounds {
+            reference: None,
+            float: FloatBound::None(
+                "no profile bounds acos and cos (docs/float.md §18.5, \"Not covered\")",
+            ),
+            fixed: NO_FIXED,
+        };
+        const RELATED_PROFILES: ProfileBounds = ProfileBounds {
+            reference: None,
+            float: FloatBound::None(
+                "their bounds follow this crate's own evaluation (docs/float.md §16)",
+            ),
+            fixed: NO_FIXED,
         };
         match self {
             Method::Phong => Info {
@@ -258,6 +340,9 @@ impl Method {
                 range: Diffuse,
                 float_section: "§9",
                 bound: PHONG,
+                picks: None,
+                closed_form: None,
+                profiles: DERIVED_PER_PIXEL,
             },
             Method::Duff => Info {
                 name: "duff",
@@ -273,6 +358,9 @@ impl Method {
                 range: Diffuse,
                 float_section: "§8",
                 bound: DUFF,
+                picks: None,
+                closed_form: None,
+                profiles: DERIVED_RATIO,
             },
             Method::SymmetricPhong => Info {
                 name: "symmetric-phong",
@@ -288,6 +376,9 @@ impl Method {
                 range: Diffuse,
                 float_section: "§8",
                 bound: DUFF,
+                picks: None,
+                closed_form: None,
+                profiles: DERIVED_HALF_RATIO,
             },
             Method::Gouraud => Info {
                 name: "gouraud",
@@ -303,6 +394,9 @@ impl Method {
                 range: Diffuse,
                 float_section: "§5",
                 bound: GOURAUD,
+                picks: None,
+                closed_form: Some(Valued::Gouraud),
+                profiles: GOURAUD_PROFILES,
             },
             Method::Euler => Info {
                 name: "euler",
@@ -318,6 +412,9 @@ impl Method {
                 range: Diffuse,
                 float_section: "§7",
                 bound: EULER,
+                picks: None,
+                closed_form: Some(Valued::Euler),
+                profiles: EULER_PROFILES,
             },
             Method::CorrectedEuler => Info {
                 name: "corrected-euler",
@@ -333,6 +430,9 @@ impl Method {
                 range: Diffuse,
                 float_section: "§6",
                 bound: CORRECTED_EULER,
+                picks: None,
+                closed_form: Some(Valued::CorrectedEuler),
+                profiles: CORRECTED_EULER_PROFILES,
             },
             Method::Adaptive => Info {
                 name: "adaptive",
@@ -348,6 +448,9 @@ impl Method {
                 range: Diffuse,
                 float_section: "§10",
                 bound: ADAPTIVE,
+                picks: Some([Method::Gouraud, Method::CorrectedEuler]),
+                closed_form: None,
+                profiles: ADAPTIVE_PROFILES,
             },
             Method::Angular => Info {
                 name: "angular",
@@ -363,6 +466,9 @@ impl Method {
                 range: Diffuse,
                 float_section: "§11",
                 bound: ANGLE,
+                picks: None,
+                closed_form: None,
+                profiles: ANGLE_PROFILES,
             },
             Method::AngularTable(size) => Info {
                 name: "angular-table",
@@ -381,6 +487,9 @@ impl Method {
                     extra: 20.0,
                     table: Some(*size),
                 },
+                picks: None,
+                closed_form: None,
+                profiles: ANGLE_PROFILES,
             },
             Method::Spherical => Info {
                 name: "spherical",
@@ -396,6 +505,9 @@ impl Method {
                 range: Diffuse,
                 float_section: "§16.1",
                 bound: WholeSpan,
+                picks: None,
+                closed_form: None,
+                profiles: RELATED_PROFILES,
             },
             Method::Binary => Info {
                 name: "binary",
@@ -411,6 +523,9 @@ impl Method {
                 range: Diffuse,
                 float_section: "§16.2",
                 bound: WholeSpan,
+                picks: None,
+                closed_form: None,
+                profiles: RELATED_PROFILES,
             },
             Method::BishopWeimer => Info {
                 name: "bishop-weimer",
@@ -426,6 +541,9 @@ impl Method {
                 range: HalfAngleTaylor,
                 float_section: "§16.3",
                 bound: WholeSpan,
+                picks: None,
+                closed_form: None,
+                profiles: RELATED_PROFILES,
             },
         }
     }

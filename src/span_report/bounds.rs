@@ -37,7 +37,7 @@ pub(super) fn error_bounds(r: &Request, format: crate::Format) -> ErrorBounds {
     // (`tolerance::adaptive_too_close`): the float run may pick the other method, whose values differ from the exact pick's
     // by at most `|δ|` (eq. 24's δ is the largest difference, `eq_24_delta_is_max_difference`),
     // so the bound against the exact run's pick is the larger bound plus `|δ|`.
-    let delta = (r.method == Method::Adaptive && !r.normalize)
+    let delta = (r.method.picks().is_some() && !r.normalize)
         .then(|| Span::new(r.na.clone(), r.nb.clone(), r.l.clone(), r.n).ok())
         .flatten()
         .map(|s| {
@@ -48,9 +48,10 @@ pub(super) fn error_bounds(r: &Request, format: crate::Format) -> ErrorBounds {
         let b = of(r.method, p)?;
         let b = match delta {
             Some((d, kd)) => {
-                let (bg, bce) = (of(Method::Gouraud, p)?, of(Method::CorrectedEuler, p)?);
-                if crate::tolerance::adaptive_too_close(d, kd, bg, bce, format.u()) {
-                    bg.max(bce) + d * (1.0 + 1e-12)
+                let [ma, mb] = r.method.picks()?;
+                let (ba, bb) = (of(ma, p)?, of(mb, p)?);
+                if crate::tolerance::adaptive_too_close(d, kd, ba, bb, format.u()) {
+                    ba.max(bb) + d * (1.0 + 1e-12)
                 } else {
                     b
                 }
@@ -81,23 +82,15 @@ pub(super) fn error_bound_status(
     let label = |p: Profile, shown: &Option<String>| -> Option<String> {
         shown.as_ref()?;
         let s = match p {
-            Profile::Reference => match (r.method, format) {
-                (Method::Gouraud, Format::Binary32) if r.n <= 4096 => {
-                    Status::Proved("float_gouraud_binary32")
-                }
-                (Method::Gouraud, Format::Binary64) if r.n <= 4096 => {
-                    Status::Proved("float_gouraud_binary64")
-                }
-                (Method::CorrectedEuler, Format::Binary32) if r.n <= 4096 => {
-                    Status::Proved("float_corrected_euler_binary32")
-                }
-                (Method::CorrectedEuler, Format::Binary64) if r.n <= 4096 => {
-                    Status::Proved("float_corrected_euler_binary64")
-                }
-                (m, _) => {
+            // Proved in this crate's order where the catalogue row names the
+            // theorems (`proofs/Float.v`, n ≤ 4096); derived in its section otherwise.
+            Profile::Reference => match (r.method.info().profiles.reference, format) {
+                (Some([b32, _]), Format::Binary32) if r.n <= 4096 => Status::Proved(b32),
+                (Some([_, b64]), Format::Binary64) if r.n <= 4096 => Status::Proved(b64),
+                _ => {
                     return Some(format!(
                         "derived (docs/float.md {})",
-                        m.info().float_section
+                        r.method.info().float_section
                     ))
                 }
             },

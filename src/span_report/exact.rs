@@ -175,12 +175,7 @@ fn normalized_levels(r: &Request, values: &[BigRational], bits: i64) -> Vec<Opti
     let parallel = cross.length_squared().is_zero()
         && r.na.dot(&r.nb) > BigRational::zero()
         && !matches!(phong, PhongPixels::None | PhongPixels::Table);
-    let field = match r.method {
-        Method::Gouraud => Some(Valued::Gouraud),
-        Method::Euler => Some(Valued::Euler),
-        Method::CorrectedEuler => Some(Valued::CorrectedEuler),
-        _ => None,
-    };
+    let field = r.method.info().closed_form;
     let e = BigRational::new(
         1.into(),
         num_bigint::BigInt::from(1) << bits.max(0) as usize,

@@ -75,11 +75,8 @@ pub fn check_span<T: Float, F: FnMut(&Inputs<T>) -> Vec<T>>(
     if span.n > MAX_STEPS {
         return Err(KitError::TooLong(span.n));
     }
-    let mut methods = vec![method];
-    if method == Method::Adaptive {
-        // The either-method verdict near the threshold needs both runs.
-        methods.extend([Method::Gouraud, Method::CorrectedEuler]);
-    }
+    // The either-method verdict near the adaptive threshold needs both runs.
+    let methods = method.with_picks();
     let case =
         case_for_span(&methods, "span", &span.to_string(), span).map_err(KitError::Oracle)?;
     let file = file_of("span", vec![case]);
@@ -186,7 +183,7 @@ pub fn acceptance<T: Float>(
     // The adaptive scheme where its test is too close to call (docs/float.md §10): an
     // implementation may pick either method, so each pixel's interval also holds the
     // other method's (the hull of the two; `check` asks one method for the whole span).
-    if method == Method::Adaptive {
+    if let Some([ma, mb]) = method.picks() {
         let bound = |m: Method| match profile {
             Profile::Reference => crate::tolerance::span_bound(m, &shape, T::FORMAT.u()),
             p => crate::tolerance::profile::profile_span_bound(
@@ -197,10 +194,10 @@ pub fn acceptance<T: Float>(
                 T::FORMAT,
             ),
         };
-        let (bg, bce) = (bound(Method::Gouraud)?, bound(Method::CorrectedEuler)?);
+        let (ba, bb) = (bound(ma)?, bound(mb)?);
         let d = crate::adaptive::decide(span, &crate::BigRational::from_integer(1.into()));
-        if crate::tolerance::adaptive_too_close(d.delta.to_f64(), 1.0, bg, bce, T::FORMAT.u()) {
-            for (m, b) in [(Method::Gouraud, bg), (Method::CorrectedEuler, bce)] {
+        if crate::tolerance::adaptive_too_close(d.delta.to_f64(), 1.0, ba, bb, T::FORMAT.u()) {
+            for (m, b) in [(ma, ba), (mb, bb)] {
                 for (i, v) in m.values(span).ok()?.iter().enumerate() {
                     let (lo, hi) = interval(v.to_f64(), b);
                     iv[i] = (iv[i].0.min(lo), iv[i].1.max(hi));

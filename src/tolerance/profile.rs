@@ -175,52 +175,33 @@ impl FromStr for Profile {
 /// the slope `|t_i| ≤ 28/n` (`|dp| ≤ 2/n`) plus `h(1 + n)`, and `m` integer bits hold
 /// magnitudes below `2^(m−1)` (`docs/float.md` §14).
 pub fn fixed_bound(method: crate::Method, n: u32, int_bits: u32, frac_bits: u32) -> Option<f64> {
-    use crate::Method;
+    use crate::method::FixedBound;
     if n == 0 || !(1..=64).contains(&int_bits) || !(1..=MAX_FRAC_BITS).contains(&frac_bits) {
         return None;
     }
     let h = 2f64.powi(-(frac_bits as i32) - 1);
     let nf = f64::from(n);
-    let (bound, p_max, t_max) = match method {
-        Method::CorrectedEuler => (h * (1.0 + nf + nf * (nf - 1.0) / 2.0), 2.5, 28.0 / nf),
-        Method::Gouraud => (h * (1.0 + nf), 1.0, 2.0 / nf),
-        // `Fixed.v` proves only the two above.
-        Method::Phong
-        | Method::Duff
-        | Method::SymmetricPhong
-        | Method::Euler
-        | Method::Adaptive
-        | Method::Angular
-        | Method::AngularTable(_)
-        | Method::Spherical
-        | Method::Binary
-        | Method::BishopWeimer => return None,
+    // The catalogue row says what `Fixed.v` proves of the method.
+    let FixedBound::Proved {
+        second_order,
+        value_max,
+        slope_times_n,
+        ..
+    } = method.info().profiles.fixed
+    else {
+        return None;
     };
-    let needed = (p_max + bound).max(t_max + h * (1.0 + nf));
+    let bound = if second_order {
+        h * (1.0 + nf + nf * (nf - 1.0) / 2.0)
+    } else {
+        h * (1.0 + nf)
+    };
+    let needed = (value_max + bound).max(slope_times_n / nf + h * (1.0 + nf));
     // The f64 arithmetic above rounds: a relative 2^-40 covers it.
     (needed < 2f64.powi(int_bits as i32 - 1)).then_some(bound * (1.0 + 2f64.powi(-40)))
 }
 
-/// A bound `(α·n + β)·u` proved for a class of implementations, with the largest `n`
-/// it is proved for.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Proved {
-    /// `α`.
-    pub alpha: f64,
-    /// `β`.
-    pub beta: f64,
-    /// The largest `n` of the theorem.
-    pub max_n: u32,
-    /// The theorem's name in `proofs/Profiles.v`.
-    pub theorem: &'static str,
-}
-
-impl Proved {
-    /// The bound at `n` in `format` (`(α·n + β)·u`), or `None` past the proved range.
-    pub fn at(&self, n: u32, format: Format) -> Option<f64> {
-        (n >= 1 && n <= self.max_n).then(|| (self.alpha * f64::from(n) + self.beta) * format.u())
-    }
-}
+pub use crate::method::Proved;
 
 /// The proved bound of `method` under `profile` at `n` in `format`: the largest over the forms the profile allows (every theorem
 /// [`proved`] lists: the recurrences, the closed forms, and under `shader` the ways
@@ -289,45 +270,40 @@ impl Status {
     }
 }
 
-/// Whether and how `method` has a bound under `profile` in `format` (`None`: no bound, a case then fails naming that).
-///
-/// This is the table of the profiles' bounds, one row per method: a method without a
-/// row here has no bound under `ieee`, `shader` or fixed point (angular
-/// interpolation, whose `acos` and `cos` no profile bounds, and the related methods,
-/// whose bounds follow this crate's own evaluation).
+/// Whether and how `method` has a bound under `profile` in `format` (`None`: no
+/// bound, a case then fails naming that), read from the method's catalogue row
+/// ([`crate::method::ProfileBounds`]): a method's row states what it has under fixed
+/// point and under `ieee` and `shader` (angular interpolation, whose `acos` and `cos`
+/// no profile bounds, and the related methods, whose bounds follow this crate's own
+/// evaluation, have none).
 pub fn status(method: crate::Method, profile: Profile, format: Format) -> Option<Status> {
-    use crate::Method;
-    let fixed = matches!(profile, Profile::Fixed { .. });
-    // A float profile's theorems ([`proved`]), the first form's name.
-    let theorem = || proved(method, profile, format).map(|forms| Status::Proved(forms[0].theorem));
+    use crate::method::{DerivedForm, FixedBound, FloatBound};
+    let row = method.info().profiles;
+    if let Profile::Fixed { .. } = profile {
+        return match row.fixed {
+            FixedBound::Proved { theorem, .. } => Some(Status::Proved(theorem)),
+            FixedBound::None(_) => None,
+        };
+    }
     // A derivation, where the profile has a standard model in this format.
     let derived = |section| arith(profile, format).map(|_| Status::Derived(section));
-    // One row per method, no wildcard: a new method does not compile until its row
-    // says what it has under fixed point and under `ieee` and `shader`.
-    match (method, fixed) {
-        (Method::Gouraud, true) => Some(Status::Proved("fixed_point_gouraud_error")),
-        (Method::CorrectedEuler, true) => Some(Status::Proved("fixed_point_corrected_euler_error")),
-        (Method::Gouraud | Method::CorrectedEuler | Method::Euler, false) => theorem(),
-        (Method::Phong, false) => derived("docs/float.md §18.4"),
-        (Method::Duff | Method::SymmetricPhong, false) => derived("docs/float.md §18.5"),
-        // The larger of the two proved bounds, against the exact run of the method
-        // the implementation chose (docs/float.md §10, §18.5).
-        (Method::Adaptive, false) => proved(Method::Gouraud, profile, format)
-            .and(proved(Method::CorrectedEuler, profile, format))
-            .and_then(|_| derived("docs/float.md §18.5")),
-        // Fixed point: the theorems of `Fixed.v` cover Gouraud and corrected Euler.
-        (
-            Method::Euler
-            | Method::Phong
-            | Method::Duff
-            | Method::SymmetricPhong
-            | Method::Adaptive,
-            true,
-        ) => None,
-        // No profile bounds `acos` and `cos` (docs/float.md §18.5, "Not covered").
-        (Method::Angular | Method::AngularTable(_), _) => None,
-        // Their bounds follow this crate's own evaluation (docs/float.md §16).
-        (Method::Spherical | Method::Binary | Method::BishopWeimer, _) => None,
+    match row.float {
+        // A float profile's theorems ([`proved`]), the first form's name.
+        FloatBound::Proved(_) => {
+            proved(method, profile, format).map(|forms| Status::Proved(forms[0].theorem))
+        }
+        // The larger of the picks' proved bounds: both must be proved.
+        FloatBound::Derived {
+            section,
+            form: DerivedForm::LargerOfPicks,
+        } => method
+            .picks()?
+            .iter()
+            .all(|&m| proved(m, profile, format).is_some())
+            .then(|| derived(section))
+            .flatten(),
+        FloatBound::Derived { section, .. } => derived(section),
+        FloatBound::None(_) => None,
     }
 }
 
@@ -391,7 +367,6 @@ fn bound_with(
     dn: f64,
     format: Format,
 ) -> Option<f64> {
-    use crate::Method;
     // A declared form narrows only the bounds whose theorems tell forms apart.
     if form != Form::Any && !Form::applies_to(method) {
         return None;
@@ -409,28 +384,18 @@ fn bound_with(
     match status(method, profile, format)? {
         Status::Proved(_) => proved_bound_in(method, profile, form, n, format),
         Status::Derived(_) => {
+            use crate::method::{DerivedForm, FloatBound};
             let a = arith(profile, format)?;
-            match method {
-                Method::Phong => phong_derived(&a, n, q_min, dn),
-                Method::Duff => duff_derived(&a, n, q_min),
-                Method::SymmetricPhong => symmetric_phong_derived(&a, n, q_min),
-                Method::Adaptive => Some(
-                    proved_bound(Method::Gouraud, profile, n, format)?.max(proved_bound(
-                        Method::CorrectedEuler,
-                        profile,
-                        n,
-                        format,
-                    )?),
-                ),
-                // Proved, not derived ([`status`]), or no bound under a profile.
-                Method::Gouraud
-                | Method::CorrectedEuler
-                | Method::Euler
-                | Method::Angular
-                | Method::AngularTable(_)
-                | Method::Spherical
-                | Method::Binary
-                | Method::BishopWeimer => None,
+            let FloatBound::Derived { form, .. } = method.info().profiles.float else {
+                return None;
+            };
+            match form {
+                DerivedForm::PerPixel => phong_derived(&a, n, q_min, dn),
+                DerivedForm::Ratio => duff_derived(&a, n, q_min),
+                DerivedForm::HalfRatio => symmetric_phong_derived(&a, n, q_min),
+                DerivedForm::LargerOfPicks => method.picks()?.iter().try_fold(0f64, |b, &m| {
+                    Some(b.max(proved_bound(m, profile, n, format)?))
+                }),
             }
         }
     }

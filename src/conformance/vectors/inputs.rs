@@ -139,13 +139,9 @@ impl InputsFile {
             };
             // The adaptive scheme is judged against both of its methods where its test
             // is too close to call (`check::check_in`): their expectations too.
-            let methods: &[Method] = if method == Method::Adaptive {
-                &[Method::Adaptive, Method::Gouraud, Method::CorrectedEuler]
-            } else {
-                std::slice::from_ref(&method)
-            };
+            let methods = method.with_picks();
             let case = compute_case_for(
-                methods,
+                &methods,
                 c.id.clone(),
                 &c.comment,
                 v(c, &c.na, "na")?,
@@ -176,13 +172,7 @@ impl InputsFile {
             generator: String::new(),
             set: self.set.clone(),
             notes: String::new(),
-            methods: if method == Method::Adaptive {
-                [Method::Adaptive, Method::Gouraud, Method::CorrectedEuler]
-                    .map(method_key)
-                    .to_vec()
-            } else {
-                vec![method_key(method)]
-            },
+            methods: method.with_picks().into_iter().map(method_key).collect(),
             number_of_cases: self.number_of_cases,
             cases,
         })

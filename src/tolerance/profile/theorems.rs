@@ -1,6 +1,7 @@
-//! The proved constants: one row per (method, profile, format), each the statement of
-//! a theorem of `proofs/Profiles.v` (`tests/claims_index.rs` reads the statements and
-//! fails when a constant here differs).
+//! The proved bounds of a method under a profile in a format: its catalogue row's
+//! theorems (`method/profiles.rs`), each the statement of a theorem of
+//! `proofs/Profiles.v` (`tests/claims_index.rs` reads the statements and fails when a
+//! constant there differs).
 
 use super::{Profile, Proved};
 use crate::Format;
@@ -44,146 +45,21 @@ use crate::Format;
 /// `0.5`. Not covered by any theorem: `n(n−1)/2` formed by a 2.5-ulp `/2` or with a
 /// computed `1/2`.
 pub fn proved(method: crate::Method, profile: Profile, format: Format) -> Option<Vec<Proved>> {
-    use crate::Method;
-    let p = |alpha, beta, max_n, theorem| Proved {
-        alpha,
-        beta,
-        max_n,
-        theorem,
+    use crate::method::{FloatBound, FloatProfile};
+    // The theorems are the catalogue row's ([`crate::method::ProfileBounds`]).
+    let FloatBound::Proved(theorems) = method.info().profiles.float else {
+        return None;
     };
-    match (method, profile, format) {
-        (Method::Gouraud, Profile::Ieee, Format::Binary32) => Some(vec![p(
-            1.0006,
-            11.001,
-            4096,
-            "profile_ieee_gouraud_binary32",
-        )]),
-        (Method::Gouraud, Profile::Ieee, Format::Binary64) => Some(vec![p(
-            1.0006,
-            11.001,
-            1 << 24,
-            "profile_ieee_gouraud_binary64_large",
-        )]),
-        // Under `shader` the `_recip` recurrence first: it covers both ways of
-        // dividing, so it names the bound ([`status`]); every form is listed, so that
-        // [`proved_bound`] takes the largest.
-        (Method::Gouraud, Profile::Shader, Format::Binary32) => Some(vec![
-            p(
-                2.0012,
-                28.0014,
-                4096,
-                "profile_shader_gouraud_recip_binary32",
-            ),
-            p(2.0012, 24.002, 4096, "profile_shader_gouraud_binary32"),
-        ]),
-        (Method::CorrectedEuler, Profile::Ieee, Format::Binary32) => Some(vec![
-            p(2.2, 51.21, 4096, "profile_ieee_corrected_euler_binary32"),
-            p(
-                0.0,
-                59.61,
-                4096,
-                "profile_ieee_corrected_euler_closed_binary32",
-            ),
-        ]),
-        (Method::CorrectedEuler, Profile::Ieee, Format::Binary64) => Some(vec![
-            p(
-                2.2,
-                51.21,
-                1 << 24,
-                "profile_ieee_corrected_euler_binary64_large",
-            ),
-            p(
-                0.0,
-                59.61,
-                1 << 24,
-                "profile_ieee_corrected_euler_closed_binary64_large",
-            ),
-        ]),
-        (Method::CorrectedEuler, Profile::Shader, Format::Binary32) => Some(vec![
-            p(
-                4.4,
-                124.31,
-                4096,
-                "profile_shader_corrected_euler_recip_binary32",
-            ),
-            p(4.4, 109.7, 4096, "profile_shader_corrected_euler_binary32"),
-            p(
-                0.0,
-                126.5,
-                4096,
-                "profile_shader_corrected_euler_closed_binary32",
-            ),
-            p(
-                0.0,
-                141.11,
-                4096,
-                "profile_shader_corrected_euler_closed_recip_binary32",
-            ),
-            p(
-                0.0,
-                131.5,
-                4096,
-                "profile_shader_corrected_euler_closed_half_binary32",
-            ),
-            p(
-                0.0,
-                148.11,
-                4096,
-                "profile_shader_corrected_euler_closed_half_recip_binary32",
-            ),
-        ]),
-        (Method::Euler, Profile::Ieee, Format::Binary32) => Some(vec![
-            p(5.55, 121.41, 4096, "profile_ieee_euler_binary32"),
-            p(0.0, 131.41, 4096, "profile_ieee_euler_closed_binary32"),
-        ]),
-        (Method::Euler, Profile::Ieee, Format::Binary64) => Some(vec![
-            p(5.55, 121.41, 1 << 24, "profile_ieee_euler_binary64_large"),
-            p(
-                0.0,
-                131.41,
-                1 << 24,
-                "profile_ieee_euler_closed_binary64_large",
-            ),
-        ]),
-        (Method::Euler, Profile::Shader, Format::Binary32) => Some(vec![
-            p(11.1, 288.11, 4096, "profile_shader_euler_recip_binary32"),
-            p(11.1, 257.9, 4096, "profile_shader_euler_binary32"),
-            p(0.0, 277.9, 4096, "profile_shader_euler_closed_binary32"),
-            p(
-                0.0,
-                308.11,
-                4096,
-                "profile_shader_euler_closed_recip_binary32",
-            ),
-            p(
-                0.0,
-                281.65,
-                4096,
-                "profile_shader_euler_closed_half_binary32",
-            ),
-            p(
-                0.0,
-                313.36,
-                4096,
-                "profile_shader_euler_closed_half_recip_binary32",
-            ),
-        ]),
-        // The formats and profiles the theorems are not stated for (the reference and
-        // fixed-point profiles have bounds of their own).
-        (Method::Gouraud | Method::CorrectedEuler | Method::Euler, _, _) => None,
-        // No theorem: a derived bound ([`status`]) or none under these profiles.
-        (
-            Method::Phong
-            | Method::Duff
-            | Method::SymmetricPhong
-            | Method::Adaptive
-            | Method::Angular
-            | Method::AngularTable(_)
-            | Method::Spherical
-            | Method::Binary
-            | Method::BishopWeimer,
-            _,
-            _,
-        ) => None,
-    }
+    let profile = match profile {
+        Profile::Ieee => FloatProfile::Ieee,
+        Profile::Shader => FloatProfile::Shader,
+        // The reference and fixed-point profiles have bounds of their own.
+        Profile::Reference | Profile::Fixed { .. } => return None,
+    };
+    let forms: Vec<Proved> = theorems
+        .iter()
+        .filter(|t| t.profile == profile && t.format == format)
+        .copied()
+        .collect();
+    (!forms.is_empty()).then_some(forms)
 }

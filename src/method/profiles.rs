@@ -1,0 +1,306 @@
+//! The catalogue's columns for the bounds beyond the `reference` profile: how each
+//! method is bounded under `ieee` and `shader` and in fixed point, and which theorems
+//! prove its `reference` bound — as data in its row ([`super::Info::profiles`]), so
+//! that a new method does not compile until its row says what it has under every
+//! profile. `tolerance::profile` evaluates these rows; its theorem table holds the
+//! proved constants.
+
+/// How a method is bounded beyond the `reference` profile's derivation.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct ProfileBounds {
+    /// The Coq theorems of its `reference` bound in binary32 and binary64
+    /// (`proofs/Float.v`, `n ≤ 4096`), or `None` where that bound is derived only.
+    pub reference: Option<[&'static str; 2]>,
+    /// Under the float profiles, `ieee` and `shader`.
+    pub float: FloatBound,
+    /// Under fixed point (`fixed:M.F`).
+    pub fixed: FixedBound,
+}
+
+/// A method's bound under `ieee` and `shader`.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum FloatBound {
+    /// Coq theorems of `proofs/Profiles.v`, per profile, format and form (the
+    /// largest applies: `tolerance::profile::proved`).
+    Proved(&'static [Proved]),
+    /// A written derivation on the profile's standard model (`tolerance::profile::Arith`).
+    Derived {
+        /// The section of the derivation (`docs/float.md §18.4`).
+        section: &'static str,
+        /// Its form.
+        form: DerivedForm,
+    },
+    /// No bound: why.
+    None(&'static str),
+}
+
+/// The form of a derived profile bound (`docs/float.md` §18.4–18.5).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum DerivedForm {
+    /// The normal interpolated and normalized per pixel (`phong_derived`).
+    PerPixel,
+    /// `p/√q` of two recurrences (`duff_derived`).
+    Ratio,
+    /// `p/√q` with `q`'s square root walked from both ends
+    /// (`symmetric_phong_derived`).
+    HalfRatio,
+    /// The larger of the proved bounds of the methods it picks between
+    /// ([`super::Info::picks`]).
+    LargerOfPicks,
+}
+
+/// A method's bound in fixed point (`proofs/Fixed.v`, `docs/float.md` §14): the set-up
+/// rounded once to nearest, then an exact integer recurrence.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum FixedBound {
+    /// Proved: pixel `i` is off by at most `h(1 + i)` (a first-order recurrence) or
+    /// `h(1 + i + i(i−1)/2)` (second order), `h = 2^-(f+1)`.
+    Proved {
+        /// The theorem.
+        theorem: &'static str,
+        /// Whether the recurrence is of second order (a slope stepped too).
+        second_order: bool,
+        /// The largest `|value|` on exact unit inputs.
+        value_max: f64,
+        /// The largest `|slope|` times `n`.
+        slope_times_n: f64,
+    },
+    /// No theorem: why.
+    None(&'static str),
+}
+
+/// A float profile with Coq theorems (`proofs/Profiles.v`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum FloatProfile {
+    /// IEEE with round to nearest, any order and fusion (`docs/float.md` §18.1).
+    Ieee,
+    /// The Vulkan/WGSL precision rules for 32-bit floats.
+    Shader,
+}
+
+/// A bound `(α·n + β)·u` proved for a class of implementations (a float profile, a
+/// format, one form of the method), with the largest `n` it is proved for: the
+/// statement of a theorem of `proofs/Profiles.v` (`tests/claims_index.rs` reads the
+/// statements and fails when a constant here differs).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Proved {
+    /// The profile.
+    pub profile: FloatProfile,
+    /// The format.
+    pub format: crate::Format,
+    /// `α`.
+    pub alpha: f64,
+    /// `β`.
+    pub beta: f64,
+    /// The largest `n` of the theorem.
+    pub max_n: u32,
+    /// The theorem's name in `proofs/Profiles.v`.
+    pub theorem: &'static str,
+}
+
+impl Proved {
+    /// The bound at `n` in `format` (`(α·n + β)·u`), or `None` past the proved range.
+    pub fn at(&self, n: u32, format: crate::Format) -> Option<f64> {
+        (n >= 1 && n <= self.max_n).then(|| (self.alpha * f64::from(n) + self.beta) * format.u())
+    }
+}
+
+const fn p(
+    profile: FloatProfile,
+    format: crate::Format,
+    (alpha, beta): (f64, f64),
+    max_n: u32,
+    theorem: &'static str,
+) -> Proved {
+    Proved {
+        profile,
+        format,
+        alpha,
+        beta,
+        max_n,
+        theorem,
+    }
+}
+
+use crate::Format::{Binary32 as B32, Binary64 as B64};
+use FloatProfile::{Ieee, Shader};
+
+/// Gouraud's (`g += dp`): under `shader` the `_recip` recurrence first — it covers both ways of dividing, so it names the bound.
+pub const GOURAUD_THEOREMS: &[Proved] = &[
+    p(
+        Ieee,
+        B32,
+        (1.0006, 11.001),
+        4096,
+        "profile_ieee_gouraud_binary32",
+    ),
+    p(
+        Ieee,
+        B64,
+        (1.0006, 11.001),
+        1 << 24,
+        "profile_ieee_gouraud_binary64_large",
+    ),
+    p(
+        Shader,
+        B32,
+        (2.0012, 28.0014),
+        4096,
+        "profile_shader_gouraud_recip_binary32",
+    ),
+    p(
+        Shader,
+        B32,
+        (2.0012, 24.002),
+        4096,
+        "profile_shader_gouraud_binary32",
+    ),
+];
+
+/// Corrected Euler's: the recurrence `p += t; t += ds` and its closed form `p_a + i·(t_0 + (i−1)/2·ds)`; under `shader` each with `/n` or `·(1/n)`, and the closed forms with `(i−1)/2` exact or halved in floats (`_half`).
+pub const CORRECTED_EULER_THEOREMS: &[Proved] = &[
+    p(
+        Ieee,
+        B32,
+        (2.2, 51.21),
+        4096,
+        "profile_ieee_corrected_euler_binary32",
+    ),
+    p(
+        Ieee,
+        B32,
+        (0.0, 59.61),
+        4096,
+        "profile_ieee_corrected_euler_closed_binary32",
+    ),
+    p(
+        Ieee,
+        B64,
+        (2.2, 51.21),
+        1 << 24,
+        "profile_ieee_corrected_euler_binary64_large",
+    ),
+    p(
+        Ieee,
+        B64,
+        (0.0, 59.61),
+        1 << 24,
+        "profile_ieee_corrected_euler_closed_binary64_large",
+    ),
+    p(
+        Shader,
+        B32,
+        (4.4, 124.31),
+        4096,
+        "profile_shader_corrected_euler_recip_binary32",
+    ),
+    p(
+        Shader,
+        B32,
+        (4.4, 109.7),
+        4096,
+        "profile_shader_corrected_euler_binary32",
+    ),
+    p(
+        Shader,
+        B32,
+        (0.0, 126.5),
+        4096,
+        "profile_shader_corrected_euler_closed_binary32",
+    ),
+    p(
+        Shader,
+        B32,
+        (0.0, 141.11),
+        4096,
+        "profile_shader_corrected_euler_closed_recip_binary32",
+    ),
+    p(
+        Shader,
+        B32,
+        (0.0, 131.5),
+        4096,
+        "profile_shader_corrected_euler_closed_half_binary32",
+    ),
+    p(
+        Shader,
+        B32,
+        (0.0, 148.11),
+        4096,
+        "profile_shader_corrected_euler_closed_half_recip_binary32",
+    ),
+];
+
+/// Plain Euler's (eqs. 12–14): the recurrence `E += s; s += ds` from `s_0 = di_a` and its closed form `p_a + i·(di_a + (i−1)/2·ds)`, against the exact plain-Euler run; under `shader` as corrected Euler's.
+pub const EULER_THEOREMS: &[Proved] = &[
+    p(
+        Ieee,
+        B32,
+        (5.55, 121.41),
+        4096,
+        "profile_ieee_euler_binary32",
+    ),
+    p(
+        Ieee,
+        B32,
+        (0.0, 131.41),
+        4096,
+        "profile_ieee_euler_closed_binary32",
+    ),
+    p(
+        Ieee,
+        B64,
+        (5.55, 121.41),
+        1 << 24,
+        "profile_ieee_euler_binary64_large",
+    ),
+    p(
+        Ieee,
+        B64,
+        (0.0, 131.41),
+        1 << 24,
+        "profile_ieee_euler_closed_binary64_large",
+    ),
+    p(
+        Shader,
+        B32,
+        (11.1, 288.11),
+        4096,
+        "profile_shader_euler_recip_binary32",
+    ),
+    p(
+        Shader,
+        B32,
+        (11.1, 257.9),
+        4096,
+        "profile_shader_euler_binary32",
+    ),
+    p(
+        Shader,
+        B32,
+        (0.0, 277.9),
+        4096,
+        "profile_shader_euler_closed_binary32",
+    ),
+    p(
+        Shader,
+        B32,
+        (0.0, 308.11),
+        4096,
+        "profile_shader_euler_closed_recip_binary32",
+    ),
+    p(
+        Shader,
+        B32,
+        (0.0, 281.65),
+        4096,
+        "profile_shader_euler_closed_half_binary32",
+    ),
+    p(
+        Shader,
+        B32,
+        (0.0, 313.36),
+        4096,
+        "profile_shader_euler_closed_half_recip_binary32",
+    ),
+];

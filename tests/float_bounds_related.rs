@@ -227,19 +227,13 @@ fn check_method(m: Method) {
     assert!(bounded.iter().all(|&b| b > 0), "{}: {bounded:?}", m.name());
 }
 
+/// Every related method of the catalogue ([`related_methods`]): a new one is attacked
+/// as soon as its row exists.
 #[test]
-fn spherical_error_bound() {
-    check_method(Method::Spherical);
-}
-
-#[test]
-fn binary_error_bound() {
-    check_method(Method::Binary);
-}
-
-#[test]
-fn bishop_weimer_error_bound() {
-    check_method(Method::BishopWeimer);
+fn every_related_method_error_bound() {
+    for m in related_methods() {
+        check_method(m);
+    }
 }
 
 /// Where these methods are ill-conditioned: nearly equal normals (a few units apart

@@ -2,12 +2,11 @@
 
 use super::{out, read_capped, CliError};
 use clap::Args;
-use phong_approx::conformance::check::{
-    check_in, parse_results, Tolerance, Unbounded, MAX_RESULTS_BYTES,
-};
+use phong_approx::conformance::check::{parse_results, Tolerance, Unbounded, MAX_RESULTS_BYTES};
+use phong_approx::conformance::judgement::judge;
+use phong_approx::conformance::shown;
 use phong_approx::conformance::vectors::method_key;
-use phong_approx::conformance::verdict::{self, load_vectors, Culprit};
-use phong_approx::conformance::{report, shown};
+use phong_approx::conformance::verdict::{load_vectors, Culprit};
 use phong_approx::tolerance::profile::{Form, Profile};
 use phong_approx::{Format, Method};
 
@@ -176,11 +175,10 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
             code: 2,
             details: Vec::new(),
         })?;
-    let reports = check_in(
+    let judged = judge(
         &vectors,
         &results,
         method,
-        &key,
         tol,
         a.specular,
         a.precision.format(),
@@ -203,12 +201,8 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
             a.precision.format()
         );
         let text = match r[0].as_str() {
-            "junit" => report::junit(
-                &suite, &vectors, &reports, &results, &key, a.specular, advice,
-            ),
-            "json" => report::json(
-                &suite, &vectors, &reports, &results, &key, a.specular, advice,
-            ),
+            "junit" => judged.junit(&suite, advice),
+            "json" => judged.json(&suite, advice),
             o => {
                 return Err(CliError::arg(
                     "--report",
@@ -226,7 +220,7 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
             write_report(&r[1], &text, &[&a.vectors, &a.results])?;
         }
     }
-    human(&verdict::text(&vectors, &reports, &key, a.specular, advice))?;
+    human(&judged.text(advice))?;
     if a.tolerance.is_none() {
         human(&match profile {
             Profile::Fixed { .. } => format!(
@@ -238,7 +232,7 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
             ),
         })?;
     }
-    match verdict::failure(&reports) {
+    match judged.failure() {
         None => Ok(()),
         Some(message) => Err(CliError {
             message,

@@ -64,9 +64,10 @@ pub use with_gpu::run;
 mod with_gpu {
     use super::{CliError, GpuCheckArgs};
     use crate::cli::out;
-    use phong_approx::conformance::check::{check_in, CaseReport, Results, Tolerance};
+    use phong_approx::conformance::check::{CaseReport, Results, Tolerance};
+    use phong_approx::conformance::judgement::{judge, Judgement};
     use phong_approx::conformance::vectors::method_key;
-    use phong_approx::conformance::{report, shown, verdict};
+    use phong_approx::conformance::{shown, verdict};
     use phong_approx::gpu::kernels::{Kernel, Language, KERNELS};
     use phong_approx::gpu::{published_spans, unwritten, Gpu, GpuError, Source};
     use phong_approx::testkit::{published, SETS};
@@ -108,12 +109,14 @@ mod with_gpu {
     }
 
     /// Judges `results` set by set; the reports per set.
-    fn judge(
+    /// Each published set's judgement of the kernel's results.
+    type Sets<'a> = Vec<(&'static str, Judgement<'a>)>;
+
+    fn judge_sets(
         results: &Results,
         method: Method,
         profile: Profile,
-    ) -> Result<Vec<(&'static str, Vec<CaseReport>)>, CliError> {
-        let key = method_key(method);
+    ) -> Result<Sets<'_>, CliError> {
         let tol = Tolerance::Profile {
             profile,
             format: Format::Binary32,
@@ -122,21 +125,21 @@ mod with_gpu {
         SETS.iter()
             .filter_map(|set| Some((*set, published(set)?)))
             .map(|(set, file)| {
-                check_in(file, results, method, &key, tol, false, Format::Binary32)
-                    .map(|r| (set, r))
+                judge(file, results, method, tol, false, Format::Binary32)
+                    .map(|j| (set, j))
                     .map_err(|e| CliError::arg("--method", e))
             })
             .collect()
     }
 
-    fn worst(sets: &[(&str, Vec<CaseReport>)]) -> f64 {
+    fn worst(sets: &Sets) -> f64 {
         sets.iter()
-            .flat_map(|(_, r)| r.iter().map(|c| c.ratio))
+            .flat_map(|(_, j)| j.reports.iter().map(|c| c.ratio))
             .fold(0.0, f64::max)
     }
 
-    fn passes(sets: &[(&str, Vec<CaseReport>)]) -> bool {
-        sets.iter().all(|(_, r)| r.iter().all(|c| c.pass))
+    fn passes(sets: &Sets) -> bool {
+        sets.iter().all(|(_, j)| j.passes())
     }
 
     /// Runs the command.
@@ -212,31 +215,23 @@ mod with_gpu {
                 "{missing} pixels were never written by the kernel (a loop the driver cut short: lavapipe stops an invocation's loops after about 65535 iterations in all; a workgroup size other than 64; an early return)\n"
             ))?;
         }
-        let sets = judge(&results, method, a.profile)?;
-        let key = method_key(method);
-        for (set, reports) in &sets {
-            let file = published(set).expect("a published set");
-            human(&verdict::text(
-                file,
-                reports,
-                &key,
-                false,
-                crate::cli::check::advice,
-            ))?;
+        let sets = judge_sets(&results, method, a.profile)?;
+        for (_, j) in &sets {
+            human(&j.text(crate::cli::check::advice))?;
         }
         human(&format!(
             "tolerance: the {} profile's bound for f32 (docs/float.md §18)\n",
             a.profile
         ))?;
         if let Some(r) = &a.report {
-            let text = write_report(&r[0], &sets, &results, method, a.profile, adapter);
+            let text = write_report(&r[0], &sets, method, a.profile, adapter);
             if r[1] == "-" {
                 out(format_args!("{text}"))?;
             } else {
                 crate::cli::check::write_report(&r[1], &text, &[path])?;
             }
         }
-        let all: Vec<CaseReport> = sets.into_iter().flat_map(|(_, r)| r).collect();
+        let all: Vec<CaseReport> = sets.into_iter().flat_map(|(_, j)| j.reports).collect();
         match verdict::failure(&all) {
             None => Ok(()),
             Some(message) => Err(CliError {
@@ -251,8 +246,7 @@ mod with_gpu {
     /// object holding the adapter and each set's `check` report.
     fn write_report(
         format: &str,
-        sets: &[(&'static str, Vec<CaseReport>)],
-        results: &Results,
+        sets: &Sets,
         method: Method,
         profile: Profile,
         adapter: &str,
@@ -262,37 +256,19 @@ mod with_gpu {
         if format == "json" {
             let per: Vec<serde_json::Value> = sets
                 .iter()
-                .map(|(set, r)| {
-                    let file = published(set).expect("a published set");
-                    serde_json::from_str(&report::json(
-                        &suite(set),
-                        file,
-                        r,
-                        results,
-                        &key,
-                        false,
-                        crate::cli::check::advice,
-                    ))
-                    .unwrap_or(serde_json::Value::Null)
+                .map(|(set, j)| {
+                    serde_json::from_str(&j.json(&suite(set), crate::cli::check::advice))
+                        .unwrap_or(serde_json::Value::Null)
                 })
                 .collect();
             let v = serde_json::json!({ "adapter": adapter, "sets": per });
             return serde_json::to_string_pretty(&v).unwrap_or_default() + "\n";
         }
         let (mut tests, mut failures, mut body) = (0, 0, String::new());
-        for (set, r) in sets {
-            let file = published(set).expect("a published set");
-            let one = report::junit(
-                &suite(set),
-                file,
-                r,
-                results,
-                &key,
-                false,
-                crate::cli::check::advice,
-            );
-            tests += r.len();
-            failures += r.iter().filter(|c| !c.pass).count();
+        for (set, j) in sets {
+            let one = j.junit(&suite(set), crate::cli::check::advice);
+            tests += j.reports.len();
+            failures += j.reports.iter().filter(|c| !c.pass).count();
             // Keep the <testsuite> element: the lines between <testsuites> and its end.
             let lines: Vec<&str> = one.lines().collect();
             for l in &lines[2..lines.len() - 1] {
@@ -327,10 +303,10 @@ mod with_gpu {
                 Language::Glsl => Source::glsl(k.text, k.file).map_err(gpu_error)?,
             };
             let (results, raw, _) = values(gpu, &source, k.file, timeout)?;
-            let shader = judge(&results, k.method, Profile::Shader)?;
-            let ieee = judge(&results, k.method, Profile::Ieee)?;
+            let shader = judge_sets(&results, k.method, Profile::Shader)?;
+            let ieee = judge_sets(&results, k.method, Profile::Ieee)?;
             let (differ, max_ulps, of_bound) = differences(&k, &spans, &raw, &shader);
-            let verdict = |sets: &[(&str, Vec<CaseReport>)]| {
+            let verdict = |sets: &Sets| {
                 format!(
                     "{} {}",
                     ratio(worst(sets)),
@@ -378,11 +354,11 @@ mod with_gpu {
         k: &Kernel,
         spans: &[(&str, phong_approx::testkit::Inputs<'static, f32>)],
         raw: &[(String, Vec<f32>)],
-        shader: &[(&str, Vec<CaseReport>)],
+        shader: &Sets,
     ) -> (usize, u64, f64) {
         let allowed: std::collections::HashMap<&str, f64> = shader
             .iter()
-            .flat_map(|(_, r)| r.iter())
+            .flat_map(|(_, j)| j.reports.iter())
             .filter_map(|c| Some((c.id.as_str(), c.allowed_abs?)))
             .collect();
         let (mut differ, mut max_ulps, mut of_bound) = (0, 0, 0.0f64);

@@ -13,6 +13,7 @@
 
 pub mod check;
 pub mod integrity;
+pub mod judgement;
 pub mod report;
 pub mod vectors;
 pub mod verdict;

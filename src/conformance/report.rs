@@ -1,7 +1,8 @@
 //! Machine-readable reports of a check, for other languages' CI: JUnit XML (one test
-//! case per vector case) and JSON. Every text taken from a vector file or a results
-//! file goes through [`super::shown`] (cut and escaped) and then the format's own
-//! escaping.
+//! case per vector case) and JSON, rendered from a judgement
+//! ([`super::judgement::Judgement::junit`], [`super::judgement::Judgement::json`]).
+//! Every text taken from a vector file or a results file goes through
+//! [`super::shown`] (cut and escaped) and then the format's own escaping.
 
 use super::check::{Advice, CaseReport, Results};
 use super::shown;
@@ -145,7 +146,7 @@ fn allowed_text(r: &super::check::CaseReport, advice: Advice) -> String {
 /// A JUnit XML report: one `<testsuite>` named `suite` (set, method, profile), one
 /// `<testcase>` per vector case, a `<failure>` with the worst pixel for each failing
 /// one.
-pub fn junit(
+pub(crate) fn junit(
     suite: &str,
     vectors: &VectorFile,
     reports: &[CaseReport],
@@ -199,7 +200,7 @@ pub fn junit(
 }
 
 /// A JSON report: the suite, counts, and per case the verdict and the worst pixel.
-pub fn json(
+pub(crate) fn json(
     suite: &str,
     vectors: &VectorFile,
     reports: &[CaseReport],

@@ -1,6 +1,7 @@
 //! One check, start to end, as the command line's `check` runs it: the vector file read
-//! and trusted or recomputed ([`load_vectors`]), the results compared
-//! ([`super::check::check`]), and the verdict as text ([`text`]).
+//! and trusted or recomputed ([`load_vectors`]), the results judged
+//! ([`super::judgement::judge`]), and the verdict as text (`Judgement::text`) or its
+//! one-line failure ([`failure`]).
 //!
 //! A published set (its SHA-256 one of [`super::integrity::SHA256SUMS`]) is read whole:
 //! its expectations are this version's own. Any other file supplies cases, not truth:
@@ -217,7 +218,7 @@ fn recompute(
 /// method), a Markdown table with a row per case, the overall figures and the worst
 /// case with its inputs; a case with no bound says why, with `advice`. Every string
 /// from the files is [`shown`].
-pub fn text(
+pub(crate) fn text(
     vectors: &VectorFile,
     reports: &[CaseReport],
     key: &str,

@@ -3,8 +3,8 @@
 
 use super::inputs::{published, Float, Inputs, SETS};
 use super::report::{self, case_inputs, Failure, Report};
-use crate::conformance::check::{check_in, Results, Tolerance};
-use crate::conformance::vectors::{method_key, Case, VectorFile};
+use crate::conformance::check::{Results, Tolerance};
+use crate::conformance::vectors::{Case, VectorFile};
 use crate::tolerance::profile::{Form, Profile};
 use crate::Method;
 
@@ -266,7 +266,6 @@ pub(crate) fn judge<T: Float>(
     specular: bool,
     shade: &mut dyn FnMut(&Inputs<T>) -> Vec<T>,
 ) {
-    let key = method_key(method);
     let mut results = Results::new();
     for c in file
         .cases
@@ -280,8 +279,15 @@ pub(crate) fn judge<T: Float>(
         results.insert(c.id.clone(), got);
     }
     let judged_by = report.judged_by.clone();
-    let reports = match check_in(file, &results, method, &key, tol, specular, T::FORMAT) {
-        Ok(r) => r,
+    let judged = match crate::conformance::judgement::judge(
+        file,
+        &results,
+        method,
+        tol,
+        specular,
+        T::FORMAT,
+    ) {
+        Ok(j) => j,
         // A method the published sets do not hold (a cosine table of another size), or
         // a tolerance that means nothing: a failure, not a panic.
         Err(e) => {
@@ -296,18 +302,15 @@ pub(crate) fn judge<T: Float>(
     };
     let j = report::Judged {
         set,
-        key: &key,
+        key: &judged.key,
         profile: &judged_by,
         specular,
         format: T::FORMAT,
     };
-    let failures = reports
-        .iter()
-        .filter(|r| !r.pass)
-        .filter_map(|r| {
-            let c = file.cases.iter().find(|c| c.id == r.id)?;
-            Some(Failure::new::<T>(&j, c, r, &results[&c.id]))
-        })
+    let failures = judged
+        .failing()
+        .into_iter()
+        .map(|(c, r, got)| Failure::new::<T>(&j, c, r, got))
         .collect();
-    report.add_set(set, &reports, failures);
+    report.add_set(set, &judged.reports, failures);
 }

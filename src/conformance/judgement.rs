@@ -1,0 +1,131 @@
+//! One verdict, as data: the vector file, the results, what judged them and a report
+//! per case, built once by [`judge`] — for `check`, the test kit and the GPU runner
+//! alike — and rendered by each caller: as text ([`Judgement::text`]), as JUnit or
+//! JSON ([`Judgement::junit`], [`Judgement::json`]), as a one-line failure
+//! ([`Judgement::failure`]) or case by case ([`Judgement::failing`]).
+
+use super::check::{check_in, Advice, CaseReport, Results, Tolerance};
+use super::vectors::{method_key, Case, VectorFile};
+use crate::{Format, Method};
+use std::collections::HashMap;
+
+/// A judged set: the file and the results it judged, how, and the verdict per case.
+#[derive(Clone, Debug)]
+pub struct Judgement<'a> {
+    /// The vector file.
+    pub vectors: &'a VectorFile,
+    /// The results judged, by case id.
+    pub results: &'a Results,
+    /// The method.
+    pub method: Method,
+    /// Its key in the vector files.
+    pub key: String,
+    /// What judged the results.
+    pub tolerance: Tolerance,
+    /// Whether the specular cases were judged (else the diffuse ones).
+    pub specular: bool,
+    /// The implementation's float format (its ulps in the reports).
+    pub format: Format,
+    /// The verdict per case, in the file's order.
+    pub reports: Vec<CaseReport>,
+}
+
+/// Judges `results` against `vectors` for `method` ([`check_in`]): the one verdict
+/// every caller renders.
+///
+/// # Errors
+/// As [`check_in`]: a method the file does not hold, a tolerance that means nothing.
+pub fn judge<'a>(
+    vectors: &'a VectorFile,
+    results: &'a Results,
+    method: Method,
+    tolerance: Tolerance,
+    specular: bool,
+    format: Format,
+) -> Result<Judgement<'a>, String> {
+    let key = method_key(method);
+    let reports = check_in(vectors, results, method, &key, tolerance, specular, format)?;
+    Ok(Judgement {
+        vectors,
+        results,
+        method,
+        key,
+        tolerance,
+        specular,
+        format,
+        reports,
+    })
+}
+
+impl Judgement<'_> {
+    /// Whether every case passed.
+    pub fn passes(&self) -> bool {
+        self.reports.iter().all(|r| r.pass)
+    }
+
+    /// The verdict as text: a heading line, a Markdown table with a row per case, the
+    /// overall figures and the worst case with its inputs; a case with no bound says
+    /// why, with `advice`.
+    pub fn text(&self, advice: Advice) -> String {
+        super::verdict::text(
+            self.vectors,
+            &self.reports,
+            &self.key,
+            self.specular,
+            advice,
+        )
+    }
+
+    /// The one-line message of a failed check ([`super::verdict::failure`]); `None`
+    /// when every case passes.
+    pub fn failure(&self) -> Option<String> {
+        super::verdict::failure(&self.reports)
+    }
+
+    /// A JUnit XML report: one `<testsuite>` named `suite`, one `<testcase>` per case,
+    /// a `<failure>` with the worst pixel for each failing one.
+    pub fn junit(&self, suite: &str, advice: Advice) -> String {
+        super::report::junit(
+            suite,
+            self.vectors,
+            &self.reports,
+            self.results,
+            &self.key,
+            self.specular,
+            advice,
+        )
+    }
+
+    /// A JSON report named `suite`: the counts, and per case the verdict and the worst
+    /// pixel.
+    pub fn json(&self, suite: &str, advice: Advice) -> String {
+        super::report::json(
+            suite,
+            self.vectors,
+            &self.reports,
+            self.results,
+            &self.key,
+            self.specular,
+            advice,
+        )
+    }
+
+    /// Each failing case with its report and the values judged, in the file's order
+    /// (cases found by id once, not searched per case).
+    pub fn failing(&self) -> Vec<(&Case, &CaseReport, &[f64])> {
+        let by_id: HashMap<&str, &Case> = self
+            .vectors
+            .cases
+            .iter()
+            .map(|c| (c.id.as_str(), c))
+            .collect();
+        self.reports
+            .iter()
+            .filter(|r| !r.pass)
+            .filter_map(|r| {
+                let c = by_id.get(r.id.as_str())?;
+                Some((*c, r, self.results.get(&r.id)?.as_slice()))
+            })
+            .collect()
+    }
+}

@@ -105,12 +105,22 @@ pub fn check_in(
         .ok_or_else(|| format!("the vector file has no method '{method_key}'"))?;
         let got = &results[&c.id];
         let start = std::time::Instant::now();
+        // The case's exact span, built once, for the bounds that read it.
+        let shape = matches!(tol, Tolerance::Default { .. } | Tolerance::Profile { .. })
+            .then(|| case_shape(c))
+            .flatten();
+        let case = Judging {
+            c,
+            shape: shape.as_ref(),
+            tol,
+            format,
+        };
         let mut r = match (!specular)
-            .then(|| adaptive_either(c, got, method, tol, format))
+            .then(|| adaptive_either(&case, got, method))
             .flatten()
         {
             Some(r) => r,
-            None => case_report(c, exp, got, method, tol, specular, format),
+            None => case_report(&case, exp, got, method, specular),
         };
         r.seconds = start.elapsed().as_secs_f64();
         reports.push(r);
@@ -118,19 +128,31 @@ pub fn check_in(
     Ok(reports)
 }
 
-/// The bound a profile (or the reference bounds) gives `method` on case `c`, before the
-/// specular power: `None` for the other tolerances and where no bound holds. Specular
-/// cases shade `N·H`, not `N·L`, so the reference bound takes no edge values there.
-fn case_bound(c: &Case, method: Method, tol: Tolerance, specular: bool) -> Option<f64> {
+/// A case being judged: the case, the shape of its exact span (`None` where the
+/// tolerance does not read it, or the span cannot be rebuilt), the tolerance and the
+/// implementation's format.
+struct Judging<'a> {
+    c: &'a Case,
+    shape: Option<&'a crate::tolerance::Shape>,
+    tol: Tolerance,
+    format: crate::Format,
+}
+
+/// The bound a profile (or the reference bounds) gives `method` on the case, before
+/// the specular power: `None` for the other tolerances and where no bound holds.
+/// Specular cases shade `N·H`, not `N·L`, so the reference bound takes no edge values
+/// there.
+fn case_bound(j: &Judging, method: Method, tol: Tolerance, specular: bool) -> Option<f64> {
     use crate::tolerance::profile::{profile_bound_in, profile_span_bound, Profile};
+    let (c, shape) = (j.c, j.shape);
     match tol {
         Tolerance::Profile {
             profile: Profile::Reference,
             format,
             ..
         }
-        | Tolerance::Default { format } => match case_shape(c).filter(|_| !specular) {
-            Some(shape) => crate::tolerance::span_bound(method, &shape, format.u()),
+        | Tolerance::Default { format } => match shape.filter(|_| !specular) {
+            Some(shape) => crate::tolerance::span_bound(method, shape, format.u()),
             None => crate::tolerance::bound(method, c.n, c.q_min, format.u()),
         },
         // The vector file's q_min is to nearest: a relative 2^-40 below it is below
@@ -140,8 +162,8 @@ fn case_bound(c: &Case, method: Method, tol: Tolerance, specular: bool) -> Optio
             profile,
             format,
             form,
-        } => match case_shape(c) {
-            Some(shape) => profile_span_bound(method, profile, form, &shape, format),
+        } => match shape {
+            Some(shape) => profile_span_bound(method, profile, form, shape, format),
             None => profile_bound_in(
                 method,
                 profile,
@@ -164,29 +186,24 @@ fn case_bound(c: &Case, method: Method, tol: Tolerance, specular: bool) -> Optio
 /// whole span, as an implementation runs it); `None` elsewhere (judged as usual).
 ///
 /// `e_δ`: [`crate::tolerance::adaptive_too_close`].
-fn adaptive_either(
-    c: &Case,
-    got: &[f64],
-    method: Method,
-    tol: Tolerance,
-    format: crate::Format,
-) -> Option<CaseReport> {
+fn adaptive_either(j: &Judging, got: &[f64], method: Method) -> Option<CaseReport> {
     let [ma, mb] = method.picks()?;
+    let (c, tol) = (j.c, j.tol);
     let delta: f64 = c.delta.parse().ok()?;
     // Only where the profile bounds the adaptive scheme at all (not fixed point).
-    case_bound(c, method, tol, false)?;
+    case_bound(j, method, tol, false)?;
     let (ba, bb) = (
-        case_bound(c, ma, tol, false)?,
-        case_bound(c, mb, tol, false)?,
+        case_bound(j, ma, tol, false)?,
+        case_bound(j, mb, tol, false)?,
     );
-    if !crate::tolerance::adaptive_too_close(delta, 1.0, ba, bb, format.u()) {
+    if !crate::tolerance::adaptive_too_close(delta, 1.0, ba, bb, j.format.u()) {
         return None;
     }
     let mut best: Option<CaseReport> = None;
     for m in [ma, mb] {
         let key = crate::conformance::vectors::method_key(m);
         let exp = c.expected.get(&key)?;
-        let mut r = case_report(c, exp, got, m, tol, false, format);
+        let mut r = case_report(j, exp, got, m, false);
         r.allowed = format!(
             "{} as {key} (|255δ| = {:.6} is within rounding of 1: either method passes)",
             r.allowed,
@@ -239,15 +256,14 @@ fn case_shape(c: &Case) -> Option<crate::tolerance::Shape> {
 }
 
 fn case_report(
-    c: &Case,
+    j: &Judging,
     exp: &Expected,
     got: &[f64],
     method: Method,
-    tol: Tolerance,
     specular: bool,
-    format: crate::Format,
 ) -> CaseReport {
     use crate::tolerance::profile::Profile;
+    let (c, tol, format) = (j.c, j.tol, j.format);
     let tol = match tol {
         Tolerance::Profile {
             profile: Profile::Reference,
@@ -287,7 +303,7 @@ fn case_report(
         // No bound (n too long for the precision, or q may round to zero): the case
         // cannot pass on the profile's tolerance.
         Tolerance::Profile { format, .. } | Tolerance::Default { format } => {
-            case_bound(c, method, tol, specular).map(|b| raise(b, format))
+            case_bound(j, method, tol, specular).map(|b| raise(b, format))
         }
         _ => None,
     };

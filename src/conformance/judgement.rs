@@ -85,29 +85,13 @@ impl Judgement<'_> {
     /// A JUnit XML report: one `<testsuite>` named `suite`, one `<testcase>` per case,
     /// a `<failure>` with the worst pixel for each failing one.
     pub fn junit(&self, suite: &str, advice: Advice) -> String {
-        super::report::junit(
-            suite,
-            self.vectors,
-            &self.reports,
-            self.results,
-            &self.key,
-            self.specular,
-            advice,
-        )
+        super::report::junit(suite, self, advice)
     }
 
     /// A JSON report named `suite`: the counts, and per case the verdict and the worst
     /// pixel.
     pub fn json(&self, suite: &str, advice: Advice) -> String {
-        super::report::json(
-            suite,
-            self.vectors,
-            &self.reports,
-            self.results,
-            &self.key,
-            self.specular,
-            advice,
-        )
+        super::report::json(suite, self, advice)
     }
 
     /// Each failing case with its report and the values judged, in the file's order

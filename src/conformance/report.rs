@@ -5,6 +5,7 @@
 //! [`super::shown`] (cut and escaped) and then the format's own escaping.
 
 use super::check::{Advice, CaseReport, Results};
+use super::judgement::Judgement;
 use super::shown;
 use super::vectors::VectorFile;
 
@@ -146,16 +147,9 @@ fn allowed_text(r: &super::check::CaseReport, advice: Advice) -> String {
 /// A JUnit XML report: one `<testsuite>` named `suite` (set, method, profile), one
 /// `<testcase>` per vector case, a `<failure>` with the worst pixel for each failing
 /// one.
-pub(crate) fn junit(
-    suite: &str,
-    vectors: &VectorFile,
-    reports: &[CaseReport],
-    results: &Results,
-    key: &str,
-    specular: bool,
-    advice: Advice,
-) -> String {
-    let rows = rows(vectors, reports, results, key, specular);
+pub(crate) fn junit(suite: &str, j: &Judgement, advice: Advice) -> String {
+    let (vectors, key) = (j.vectors, j.key.as_str());
+    let rows = rows(vectors, &j.reports, j.results, key, j.specular);
     let failures = rows.iter().filter(|r| !r.r.pass).count();
     let mut s = String::from("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n");
     s += &format!(
@@ -200,16 +194,9 @@ pub(crate) fn junit(
 }
 
 /// A JSON report: the suite, counts, and per case the verdict and the worst pixel.
-pub(crate) fn json(
-    suite: &str,
-    vectors: &VectorFile,
-    reports: &[CaseReport],
-    results: &Results,
-    key: &str,
-    specular: bool,
-    advice: Advice,
-) -> String {
-    let rows = rows(vectors, reports, results, key, specular);
+pub(crate) fn json(suite: &str, j: &Judgement, advice: Advice) -> String {
+    let (vectors, key) = (j.vectors, j.key.as_str());
+    let rows = rows(vectors, &j.reports, j.results, key, j.specular);
     let num = |x: f64| {
         if x.is_finite() {
             serde_json::json!(x)

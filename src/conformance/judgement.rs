@@ -1,7 +1,7 @@
 //! One verdict, as data: the vector file, the results, what judged them and a report
 //! per case, built once by [`judge`] — for `check`, the test kit and the GPU runner
 //! alike — and rendered by each caller: as text ([`Judgement::text`]), as JUnit or
-//! JSON ([`Judgement::junit`], [`Judgement::json`]), as a one-line failure
+//! JSON ([`Judgement::junit`], [`Judgement::json`], in `report.rs`), as a one-line failure
 //! ([`Judgement::failure`]) or case by case ([`Judgement::failing`]).
 
 use super::check::{check_in, Advice, CaseReport, Results, Tolerance};
@@ -80,18 +80,6 @@ impl Judgement<'_> {
     /// when every case passes.
     pub fn failure(&self) -> Option<String> {
         super::verdict::failure(&self.reports)
-    }
-
-    /// A JUnit XML report: one `<testsuite>` named `suite`, one `<testcase>` per case,
-    /// a `<failure>` with the worst pixel for each failing one.
-    pub fn junit(&self, suite: &str, advice: Advice) -> String {
-        super::report::junit(suite, self, advice)
-    }
-
-    /// A JSON report named `suite`: the counts, and per case the verdict and the worst
-    /// pixel.
-    pub fn json(&self, suite: &str, advice: Advice) -> String {
-        super::report::json(suite, self, advice)
     }
 
     /// Each failing case with its report and the values judged, in the file's order

@@ -147,7 +147,7 @@ fn allowed_text(r: &super::check::CaseReport, advice: Advice) -> String {
 /// A JUnit XML report: one `<testsuite>` named `suite` (set, method, profile), one
 /// `<testcase>` per vector case, a `<failure>` with the worst pixel for each failing
 /// one.
-pub(crate) fn junit(suite: &str, j: &Judgement, advice: Advice) -> String {
+fn junit(suite: &str, j: &Judgement, advice: Advice) -> String {
     let (vectors, key) = (j.vectors, j.key.as_str());
     let rows = rows(vectors, &j.reports, j.results, key, j.specular);
     let failures = rows.iter().filter(|r| !r.r.pass).count();
@@ -194,7 +194,7 @@ pub(crate) fn junit(suite: &str, j: &Judgement, advice: Advice) -> String {
 }
 
 /// A JSON report: the suite, counts, and per case the verdict and the worst pixel.
-pub(crate) fn json(suite: &str, j: &Judgement, advice: Advice) -> String {
+fn json(suite: &str, j: &Judgement, advice: Advice) -> String {
     let (vectors, key) = (j.vectors, j.key.as_str());
     let rows = rows(vectors, &j.reports, j.results, key, j.specular);
     let num = |x: f64| {
@@ -236,4 +236,18 @@ pub(crate) fn json(suite: &str, j: &Judgement, advice: Advice) -> String {
         "cases": cases,
     });
     serde_json::to_string_pretty(&v).expect("a JSON value") + "\n"
+}
+
+impl Judgement<'_> {
+    /// A JUnit XML report: one `<testsuite>` named `suite`, one `<testcase>` per case,
+    /// a `<failure>` with the worst pixel for each failing one.
+    pub fn junit(&self, suite: &str, advice: Advice) -> String {
+        junit(suite, self, advice)
+    }
+
+    /// A JSON report named `suite`: the counts, and per case the verdict and the worst
+    /// pixel.
+    pub fn json(&self, suite: &str, advice: Advice) -> String {
+        json(suite, self, advice)
+    }
 }

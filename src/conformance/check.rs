@@ -94,6 +94,15 @@ pub fn check_in(
     format: crate::Format,
 ) -> Result<Vec<CaseReport>, String> {
     tol.validate()?;
+    // The reference profile is the crate's own bounds.
+    let tol = match tol {
+        Tolerance::Profile {
+            profile: crate::tolerance::profile::Profile::Reference,
+            format,
+            ..
+        } => Tolerance::Default { format },
+        t => t,
+    };
     let mut reports = Vec::new();
     for c in &vectors.cases {
         let exp: &Expected = if specular {
@@ -142,16 +151,12 @@ struct Judging<'a> {
 /// the specular power: `None` for the other tolerances and where no bound holds.
 /// Specular cases shade `N·H`, not `N·L`, so the reference bound takes no edge values
 /// there.
-fn case_bound(j: &Judging, method: Method, tol: Tolerance, specular: bool) -> Option<f64> {
-    use crate::tolerance::profile::{profile_bound_in, profile_span_bound, Profile};
+fn case_bound(j: &Judging, method: Method, specular: bool) -> Option<f64> {
+    use crate::tolerance::profile::{profile_bound_in, profile_span_bound};
     let (c, shape) = (j.c, j.shape);
-    match tol {
-        Tolerance::Profile {
-            profile: Profile::Reference,
-            format,
-            ..
-        }
-        | Tolerance::Default { format } => match shape.filter(|_| !specular) {
+    // The reference profile is `Default` here (`check_in`).
+    match j.tol {
+        Tolerance::Default { format } => match shape.filter(|_| !specular) {
             Some(shape) => crate::tolerance::span_bound(method, shape, format.u()),
             None => crate::tolerance::bound(method, c.n, c.q_min, format.u()),
         },
@@ -188,14 +193,11 @@ fn case_bound(j: &Judging, method: Method, tol: Tolerance, specular: bool) -> Op
 /// `e_δ`: [`crate::tolerance::adaptive_too_close`].
 fn adaptive_either(j: &Judging, got: &[f64], method: Method) -> Option<CaseReport> {
     let [ma, mb] = method.picks()?;
-    let (c, tol) = (j.c, j.tol);
+    let c = j.c;
     let delta: f64 = c.delta.parse().ok()?;
     // Only where the profile bounds the adaptive scheme at all (not fixed point).
-    case_bound(j, method, tol, false)?;
-    let (ba, bb) = (
-        case_bound(j, ma, tol, false)?,
-        case_bound(j, mb, tol, false)?,
-    );
+    case_bound(j, method, false)?;
+    let (ba, bb) = (case_bound(j, ma, false)?, case_bound(j, mb, false)?);
     if !crate::tolerance::adaptive_too_close(delta, 1.0, ba, bb, j.format.u()) {
         return None;
     }
@@ -264,14 +266,6 @@ fn case_report(
 ) -> CaseReport {
     use crate::tolerance::profile::Profile;
     let (c, tol, format) = (j.c, j.tol, j.format);
-    let tol = match tol {
-        Tolerance::Profile {
-            profile: Profile::Reference,
-            format,
-            ..
-        } => Tolerance::Default { format },
-        t => t,
-    };
     // Specular raises the value v ≥ 0 to the power s: an error e in v moves v^s by at
     // most s·(v + e)^(s−1)·e (mean value theorem), and evaluating the power adds a
     // relative γ_s (s − 1 products, or a pow within an ulp). The values may exceed 1
@@ -303,7 +297,7 @@ fn case_report(
         // No bound (n too long for the precision, or q may round to zero): the case
         // cannot pass on the profile's tolerance.
         Tolerance::Profile { format, .. } | Tolerance::Default { format } => {
-            case_bound(j, method, tol, specular).map(|b| raise(b, format))
+            case_bound(j, method, specular).map(|b| raise(b, format))
         }
         _ => None,
     };

@@ -39,8 +39,12 @@ impl Format {
     /// The unit roundoff `u = 2^-precision`: half the distance from 1 to the next
     /// float, the largest relative error of one rounding to nearest (below the
     /// subnormals).
-    pub fn u(self) -> f64 {
-        2f64.powi(-(self.precision() as i32))
+    pub const fn u(self) -> f64 {
+        match self {
+            Format::Binary16 => 1.0 / 2048.0,
+            Format::Binary32 => 1.0 / 16_777_216.0,
+            Format::Binary64 => f64::EPSILON / 2.0,
+        }
     }
 
     /// The smallest positive subnormal (`2^-24`, `2^-149`, `2^-1074`): the spacing of
@@ -138,6 +142,9 @@ mod tests {
     fn the_units_are_the_types_own() {
         assert_eq!(Format::Binary32.u(), f64::from(f32::EPSILON) / 2.0);
         assert_eq!(Format::Binary64.u(), f64::EPSILON / 2.0);
+        for f in Format::ALL {
+            assert_eq!(f.u(), 2f64.powi(-(f.precision() as i32)), "{f}");
+        }
         assert_eq!(Format::Binary32.min_normal(), f64::from(f32::MIN_POSITIVE));
         assert_eq!(Format::Binary64.min_normal(), f64::MIN_POSITIVE);
         assert_eq!(Format::Binary32.eta(), 2f64.powi(-150));

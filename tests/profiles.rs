@@ -109,7 +109,7 @@ macro_rules! native {
             fn sqrt(self) -> Self {
                 <$t>::sqrt(self)
             }
-            const U: f64 = <$t>::EPSILON as f64 / 2.0;
+            const U: f64 = Format::$f.u();
             const FORMAT: Format = Format::$f;
         }
     };

@@ -6,15 +6,15 @@
 //! [`crate::tolerance::reference_bound`]; the acceptance profiles' bounds are
 //! [`crate::tolerance::profile::status`]).
 //!
-//! Adding a span method: its own file with `shade(span, out)`, then one entry here — a
-//! variant, its arm in [`Method::info`] (with its bound) and in [`Method::run`], and
-//! its place in [`Method::ALL`] (ARCHITECTURE.md, "Adding a span method").
+//! Adding a span method: its own file with `shade(span, out)`, then one row of the list
+//! (`method/list.rs`), which declares the variant, its place in [`Method::ALL`], how
+//! it runs and its catalogue facts with its bounds (ARCHITECTURE.md, "Adding a span
+//! method").
 
-use crate::adaptive::{self, Decision};
+use crate::adaptive::Decision;
 use crate::angular::CosTable;
 use crate::error::SpanError;
 use crate::reference::level::{level_of_rational, level_within, phong_level_exact};
-use crate::related::{binary, bishop_weimer, spherical};
 use crate::scalar::{Real, Scalar};
 use crate::span::Span;
 use crate::BigRational;
@@ -23,66 +23,23 @@ use std::borrow::Cow;
 use std::fmt;
 use std::str::FromStr;
 
+#[macro_use]
+mod declare;
 mod catalogue;
+mod list;
 mod profiles;
+
+pub use list::Method;
 
 pub use catalogue::{
     Bound, DerivedForm, Family, FixedBound, FloatBound, FloatProfile, Info, Needs, PhongPixels,
     ProfileBounds, Proved, ValueRange,
 };
 
-/// One way of shading a span.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Method {
-    /// [`crate::phong`]: the exact per-pixel value (eq. 4).
-    Phong,
-    /// [`crate::duff`]: Duff's forward differences (eqs. 5–7).
-    Duff,
-    /// [`crate::symmetric_phong`]: half the square roots (§4).
-    SymmetricPhong,
-    /// [`crate::gouraud`]: linear between the exact edge values (Gouraud along the
-    /// span, Behrens' fence shading).
-    Gouraud,
-    /// [`crate::euler`]: eqs. 12–13.
-    Euler,
-    /// [`crate::corrected_euler`]: eqs. 16–17.
-    CorrectedEuler,
-    /// [`crate::adaptive`]: Gouraud or corrected Euler by eqs. 23–24.
-    Adaptive,
-    /// [`crate::angular`]: cosine of the linearly interpolated angle (second source).
-    Angular,
-    /// [`crate::angular::shade_table`] with a cosine table of this many entries.
-    AngularTable(u32),
-    /// [`crate::related::spherical`]: Kuijk & Blake's spherical interpolation.
-    Spherical,
-    /// [`crate::related::binary`]: Ouyang & Maynard's binary interpolation.
-    Binary,
-    /// [`crate::related::bishop_weimer::shade`]: Bishop & Weimer's Taylor expansion
-    /// along the span, about its middle pixel.
-    BishopWeimer,
-}
-
 /// The table size of the second source's byte angles.
 pub const SOURCE_TABLE: u32 = 256;
 
 impl Method {
-    /// Every method, in the order of the tables; the tabled angular method with the
-    /// second source's 256 entries.
-    pub const ALL: [Method; 12] = [
-        Method::Phong,
-        Method::Duff,
-        Method::SymmetricPhong,
-        Method::Gouraud,
-        Method::Euler,
-        Method::CorrectedEuler,
-        Method::Adaptive,
-        Method::Angular,
-        Method::AngularTable(SOURCE_TABLE),
-        Method::Spherical,
-        Method::Binary,
-        Method::BishopWeimer,
-    ];
-
     /// The name, which [`FromStr`] parses back: `corrected-euler`, …,
     /// `angular-table256`.
     pub fn name(&self) -> Cow<'static, str> {
@@ -152,32 +109,6 @@ impl Method {
         Ok(decision)
     }
 
-    /// [`Method::run`] before the finiteness check.
-    fn dispatch<T: Real>(
-        &self,
-        span: &Span<T>,
-        prep: &Prepared<T>,
-        out: &mut [T],
-    ) -> Result<Option<Decision<T>>, SpanError> {
-        match self {
-            Method::Phong => crate::phong::shade(span, out)?,
-            Method::Duff => crate::duff::shade(span, out)?,
-            Method::SymmetricPhong => crate::symmetric_phong::shade(span, out)?,
-            Method::Angular => crate::angular::shade(span, out)?,
-            Method::AngularTable(size) => match &prep.table {
-                Some(t) if t.values.len() == *size as usize => {
-                    crate::angular::shade_table(span, t, out)?
-                }
-                _ => crate::angular::shade_table(span, &CosTable::new(*size)?, out)?,
-            },
-            Method::Spherical => spherical::shade(span, out)?,
-            Method::Binary => binary::shade(span, out)?,
-            Method::BishopWeimer => bishop_weimer::shade(span, out)?,
-            m => return m.dispatch_field(span, &prep.kd, out),
-        }
-        Ok(None)
-    }
-
     /// [`Method::run`] in a number type with field operations only (with the same
     /// finiteness check).
     ///
@@ -193,28 +124,6 @@ impl Method {
         let decision = self.dispatch_field(span, kd, out)?;
         span.check_finite(out)?;
         Ok(decision)
-    }
-
-    /// [`Method::run_field`] before the finiteness check.
-    fn dispatch_field<T: Scalar>(
-        &self,
-        span: &Span<T>,
-        kd: &T,
-        out: &mut [T],
-    ) -> Result<Option<Decision<T>>, SpanError> {
-        match self {
-            Method::Gouraud => crate::gouraud::shade(span, out)?,
-            Method::Euler => crate::euler::shade(span, out)?,
-            Method::CorrectedEuler => crate::corrected_euler::shade(span, out)?,
-            Method::Adaptive => return adaptive::shade(span, kd, out).map(Some),
-            m => {
-                return Err(SpanError::Parameter(format!(
-                    "{} needs square roots or trigonometry, not only field operations",
-                    m.name()
-                )))
-            }
-        }
-        Ok(None)
     }
 
     /// Shades `span` into `out` with `K_d = 1` (the adaptive method's δ test) and the

@@ -33,7 +33,7 @@ pub use list::Method;
 
 pub use catalogue::{
     Bound, DerivedForm, Family, FixedBound, FloatBound, FloatProfile, Info, Needs, PhongPixels,
-    ProfileBounds, Proved, ValueRange,
+    ProfileBounds, Proved, ValueRange, WholeSpan,
 };
 
 /// The table size of the second source's byte angles.

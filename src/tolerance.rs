@@ -187,7 +187,7 @@ pub fn reference_bound(
             Some(angle_bound(edges(shape), nf, u) + table.map_or(0.0, table_step) + extra * u)
         }
         // The related methods (§16).
-        Bound::WholeSpan => related::of(method, shape?, u),
+        Bound::WholeSpan(form) => related::of(form, shape?, u),
     }
 }
 

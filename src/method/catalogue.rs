@@ -120,9 +120,20 @@ pub enum Bound {
         /// The cosine table's size.
         table: Option<u32>,
     },
-    /// A bound that reads the whole span (`sin Ω`): the related methods'
-    /// ([`crate::tolerance::related`]).
-    WholeSpan,
+    /// A bound that reads the whole span (`sin Ω`): the related methods', each its
+    /// own derivation ([`crate::tolerance::related`]).
+    WholeSpan(WholeSpan),
+}
+
+/// Which whole-span derivation bounds a related method (`docs/float.md` §16).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum WholeSpan {
+    /// Kuijk & Blake's spherical interpolation (§16.1).
+    Spherical,
+    /// Ouyang & Maynard's binary interpolation (§16.2).
+    Binary,
+    /// Bishop & Weimer's Taylor expansion (§16.3).
+    BishopWeimer,
 }
 
 /// Where a method comes from.

@@ -6,7 +6,7 @@
 
 use super::catalogue::{
     Bound, DerivedForm, Family, FixedBound, FloatBound, Info, Needs, PhongPixels, ProfileBounds,
-    ValueRange,
+    ValueRange, WholeSpan,
 };
 use super::profiles::{CORRECTED_EULER_THEOREMS, EULER_THEOREMS, GOURAUD_THEOREMS};
 use super::{Prepared, SOURCE_TABLE};
@@ -19,7 +19,7 @@ use crate::scalar::{Real, Scalar};
 use crate::span::Span;
 
 const HBB: &str = "Hast, Barrera, Bengtsson";
-use Bound::{Linear, Ratio, WholeSpan};
+use Bound::{Linear, Ratio};
 use Family::{Paper, Related};
 use PhongPixels::{All, BinarySegments, Ends, EndsAndEvenMiddle, EvenMiddle};
 use ValueRange::{Diffuse, HalfAngleTaylor};
@@ -324,7 +324,7 @@ methods! {
             exact_cost: 20,
             range: Diffuse,
             float_section: "§16.1",
-            bound: WholeSpan,
+            bound: Bound::WholeSpan(WholeSpan::Spherical),
             picks: None,
             closed_form: None,
             profiles: RELATED_PROFILES,
@@ -345,7 +345,7 @@ methods! {
             exact_cost: 300,
             range: Diffuse,
             float_section: "§16.2",
-            bound: WholeSpan,
+            bound: Bound::WholeSpan(WholeSpan::Binary),
             picks: None,
             closed_form: None,
             profiles: RELATED_PROFILES,
@@ -367,7 +367,7 @@ methods! {
             exact_cost: 20,
             range: HalfAngleTaylor,
             float_section: "§16.3",
-            bound: WholeSpan,
+            bound: Bound::WholeSpan(WholeSpan::BishopWeimer),
             picks: None,
             closed_form: None,
             profiles: RELATED_PROFILES,

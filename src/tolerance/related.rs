@@ -17,6 +17,7 @@
 //! counterexamples.
 
 use super::{acos_error, in_range, ratio_bound, Shape};
+use crate::method::WholeSpan;
 use std::f64::consts::PI;
 
 /// The constants of the three derivations, in units of `u` (`docs/float.md` §16).
@@ -78,15 +79,14 @@ fn angle(shape: &Shape) -> (f64, f64, f64) {
     (s2, s, c)
 }
 
-/// The whole-span bound of a related method ([`crate::method::Bound::WholeSpan`]):
-/// [`spherical`], [`binary`] or [`bishop_weimer`]; `None` for a method without one.
-pub fn of(method: crate::Method, shape: &Shape, u: f64) -> Option<f64> {
-    use crate::Method;
-    match method {
-        Method::Spherical => spherical(shape, u),
-        Method::Binary => binary(shape, u),
-        Method::BishopWeimer => bishop_weimer(shape, u),
-        _ => None,
+/// The whole-span bound its catalogue row names ([`crate::method::Bound::WholeSpan`]):
+/// [`spherical`], [`binary`] or [`bishop_weimer`]; `None` where the derivation does
+/// not hold for this shape.
+pub fn of(form: WholeSpan, shape: &Shape, u: f64) -> Option<f64> {
+    match form {
+        WholeSpan::Spherical => spherical(shape, u),
+        WholeSpan::Binary => binary(shape, u),
+        WholeSpan::BishopWeimer => bishop_weimer(shape, u),
     }
 }
 

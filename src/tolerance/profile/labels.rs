@@ -77,9 +77,11 @@ pub fn formula(method: crate::Method, profile: Profile, format: Format) -> Optio
                 format!("max({})", forms.join(", "))
             })
         }
-        Status::Derived(section) => Some(match method {
-            crate::Method::Adaptive => "the larger of Gouraud's and corrected Euler's".into(),
-            _ => format!("from n and q_min ({section})"),
+        // A method that picks between two (its row's `picks`) takes the larger of
+        // their bounds; the others' derived bounds read the span's q_min.
+        Status::Derived(section) => Some(match method.picks() {
+            Some([a, b]) => format!("the larger of the bounds of {a} and {b}"),
+            None => format!("from n and q_min ({section})"),
         }),
     }
 }

@@ -8,11 +8,11 @@
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use phong_approx::fast::{phong_rsqrt_f32, FastSpan};
 use phong_approx::quantize::level;
-use phong_approx::raster::experiment::Experiment;
 use phong_approx::raster::frame::{draw, polygons, Polygon, Shading, Split};
 use phong_approx::raster::mesh::Mesh;
-use phong_approx::raster::render::Scene;
 use phong_approx::raster::scan::Row;
+use phong_approx::studies::experiment::Experiment;
+use phong_approx::studies::render::Scene;
 use rayon::prelude::*;
 use std::time::Duration;
 

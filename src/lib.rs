@@ -24,7 +24,7 @@
 //! The methods of the paper's related work — Bishop & Weimer, Seiler, Kuijk & Blake,
 //! Mortensen's vertex angles, Ouyang & Maynard — are in [`related`]; low-precision
 //! scalars (binary16, 16.16 and 8.8 fixed point) in `lowp` (feature `lowp`); the comparison of all of
-//! them on the torus harness in `raster::compare` and `raster::precision`
+//! them on the torus harness in `studies::compare` and `studies::precision`
 //! (`phong-approx compare`, `docs/comparison.md`).
 //!
 //! To test an implementation of your own from `cargo test`: [`testkit`]
@@ -96,6 +96,8 @@ pub mod simd;
 pub mod span;
 pub mod span_report;
 pub mod specular;
+#[cfg(feature = "harness")]
+pub mod studies;
 pub mod symmetric_phong;
 pub mod table;
 pub mod testkit;

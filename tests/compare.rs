@@ -3,12 +3,12 @@
 
 use crate::runner;
 
-use phong_approx::raster::compare::{
+use phong_approx::raster::mesh::{torus, NormalMode};
+use phong_approx::studies::compare::{
     index, render_compare, runs_in, CompareOptions, Shader, COLUMNS, SHININESS,
 };
-use phong_approx::raster::mesh::{torus, NormalMode};
-use phong_approx::raster::precision::{self, longest, SPAN_LENGTHS};
-use phong_approx::raster::render::Scene;
+use phong_approx::studies::precision::{self, longest, SPAN_LENGTHS};
+use phong_approx::studies::render::Scene;
 use phong_approx::BigRational;
 use phong_approx::Method;
 

@@ -50,13 +50,15 @@ const LAYERS: &[(&str, u32)] = &[
     ("tolerance.rs", 8),
     ("tolerance/", 8),
     // The span report (what `span` prints, and the exact run with every digit known
-    // that the vectors use), the conformance kit and the torus harness.
+    // that the vectors use), the conformance kit and the rasterizer.
     ("span_report.rs", 9),
     ("span_report/", 9),
     ("conformance/", 9),
     ("raster/", 9),
-    // The test kit.
+    // The test kit; the studies run on the rasterizer (the paper's tables, the
+    // comparison, the calibration, the pictures).
     ("testkit/", 10),
+    ("studies/", 10),
     // The GPU runner (feature `gpu`): kernels judged through the test kit.
     ("gpu/", 11),
 ];

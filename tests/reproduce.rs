@@ -3,9 +3,9 @@
 use crate::runner;
 use runner::bin;
 
-use phong_approx::raster::experiment::Experiment;
 use phong_approx::raster::mesh::{torus, Mesh, NormalMode};
-use phong_approx::raster::render::{render, RenderOptions, Scene, Shader, COLUMNS};
+use phong_approx::studies::experiment::Experiment;
+use phong_approx::studies::render::{render, RenderOptions, Scene, Shader, COLUMNS};
 use phong_approx::Method;
 
 fn col(c: Shader) -> usize {
@@ -214,7 +214,7 @@ fn reproduce_writes_tables_and_pictures() {
     let csv = std::fs::read_to_string(dir.join("table2.csv")).unwrap();
     assert_eq!(csv.lines().count(), 1 + 4 * COLUMNS.len());
     // Every reading of Table 1 is printed.
-    for r in phong_approx::raster::render::Reading::ALL {
+    for r in phong_approx::studies::render::Reading::ALL {
         assert!(text.contains(r.label()), "{}", r.label());
     }
     let _ = std::fs::remove_dir_all(&dir);

@@ -7,11 +7,11 @@ use super::torus::TorusArgs;
 use super::CliError;
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
-use phong_approx::raster::compare;
-use phong_approx::raster::compare_report::{self as report, picture_names, Results, GRID, TABLES};
-use phong_approx::raster::experiment::Experiment;
-use phong_approx::raster::pictures::save_png;
-use phong_approx::raster::precision::PRECISIONS;
+use phong_approx::studies::compare;
+use phong_approx::studies::compare_report::{self as report, picture_names, Results, GRID, TABLES};
+use phong_approx::studies::experiment::Experiment;
+use phong_approx::studies::pictures::save_png;
+use phong_approx::studies::precision::PRECISIONS;
 use std::path::PathBuf;
 use std::time::Instant;
 

@@ -5,10 +5,10 @@ use super::torus::{io_err, TorusArgs};
 use super::CliError;
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
-use phong_approx::raster::experiment::Experiment;
 use phong_approx::raster::mesh::NormalMode;
-use phong_approx::raster::pictures::{save_png, Picture};
-use phong_approx::raster::report;
+use phong_approx::studies::experiment::Experiment;
+use phong_approx::studies::pictures::{save_png, Picture};
+use phong_approx::studies::report;
 use std::path::PathBuf;
 use std::time::Instant;
 

@@ -1,5 +1,5 @@
-//! The one frame loop, shared by `reproduce` ([`super::render`]), `compare`
-//! ([`super::compare`]) and the frame bench: project → cull → scan → shade → depth.
+//! The one frame loop, shared by `reproduce` ([`crate::studies::render`]), `compare`
+//! ([`crate::studies::compare`]) and the frame bench: project → cull → scan → shade → depth.
 //! What a row is shaded with, and what a visible pixel keeps, is the caller's
 //! [`Shading`]; the statistics over the visible pixels are [`super::stats`].
 

@@ -1,7 +1,7 @@
 //! The methods of the paper's introduction and related work, on the same footing as the
 //! paper's own: generic over [`crate::Scalar`] / [`crate::Real`], tested against the
 //! exact reference (`tests/related.rs`), compared on the torus harness
-//! (`raster::compare`, feature `harness`; `docs/comparison.md`).
+//! (`studies::compare`, feature `harness`; `docs/comparison.md`).
 //!
 //! | method | module | level | reconstructed? |
 //! |---|---|---|---|

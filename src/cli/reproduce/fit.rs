@@ -5,11 +5,11 @@ use super::super::output::OutDir;
 use super::super::CliError;
 use super::ReproduceArgs;
 use indicatif::{ProgressBar, ProgressStyle};
-use phong_approx::raster::calibrate::{
+use phong_approx::studies::calibrate::{
     calibrate, describe, describe_fit, fit, report_md, residual_table, sensitivity_svg, Space,
     MAX_PASSES,
 };
-use phong_approx::raster::experiment::Experiment;
+use phong_approx::studies::experiment::Experiment;
 use std::fmt::Write as _;
 use std::time::Instant;
 
@@ -75,7 +75,7 @@ pub(super) fn run(a: &ReproduceArgs, start: &Experiment, fit_frames: u32) -> Res
     b.finish_and_clear();
     let mut md = report_md(&study, &space, fit_frames);
     let met =
-        |f: &phong_approx::raster::calibrate::Fit| f.residuals.iter().filter(|r| r.met()).count();
+        |f: &phong_approx::studies::calibrate::Fit| f.residuals.iter().filter(|r| r.met()).count();
     let _ = writeln!(
         md,
         "\n## Confirmed at {} frames\n\nBest scene: {} — {}; distance {:.3}, {} of 28 targets met.\n",
@@ -90,7 +90,7 @@ pub(super) fn run(a: &ReproduceArgs, start: &Experiment, fit_frames: u32) -> Res
         md,
         "\nTable 1 of the best scene under every reading (percent of rows; in brackets with the one-pixel rows), beside the paper's:\n"
     );
-    md.push_str(&phong_approx::raster::report::table1_md(&best_results));
+    md.push_str(&phong_approx::studies::report::table1_md(&best_results));
     let _ = writeln!(
         md,
         "\nStart scene: {} — {}; distance {:.3}, {} of 28 targets met.\n",

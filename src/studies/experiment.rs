@@ -1,7 +1,7 @@
 //! The paper's experiment: each torus rendered over many frames, statistics merged.
 
-use super::mesh::{paper_tori, torus, Mesh, NormalMode};
 use super::render::{render, RenderOptions, Scene, Stats};
+use crate::raster::mesh::{paper_tori, torus, Mesh, NormalMode};
 use glam::Vec3 as G3;
 use rayon::prelude::*;
 

@@ -18,15 +18,15 @@
 //! The Tables 1–2 reproduction ([`super::render`]) keeps the paper's quads and edge
 //! crossings; this harness answers the paper's future-work question.
 
-use super::frame::{draw, polygons, Polygon, Shading, Split};
-use super::mesh::Mesh;
 use super::render::{Deviation, Scene};
-use super::scan::Row;
-use super::stats::deviations;
 use crate::adaptive::Choice;
 use crate::fast_rows::{EdgeStepper, Field};
 use crate::method::Prepared;
 use crate::quantize::level;
+use crate::raster::frame::{draw, polygons, Polygon, Shading, Split};
+use crate::raster::mesh::Mesh;
+use crate::raster::scan::Row;
+use crate::raster::stats::deviations;
 use crate::related::bishop_weimer::Taylor;
 use crate::related::power::PowerTable;
 use crate::related::seiler::Quadratic;
@@ -37,12 +37,12 @@ use crate::{Method, Span, Vec3};
 use glam::Vec3 as G3;
 use std::cell::Cell;
 
-use super::shader::RowSetup;
+use crate::raster::shader::RowSetup;
 
 /// The shininess values of the specular tables.
 pub const SHININESS: [u32; 3] = [10, 50, 200];
 
-pub use super::shader::Shader;
+pub use crate::raster::shader::Shader;
 
 mod rows;
 pub use rows::{runs_in, Direction, RowKernels};
@@ -50,13 +50,13 @@ pub(crate) use rows::{shade_row, RowInfo, TriangleSetup};
 
 /// Every column of the comparison, the reference first: every span method of the
 /// catalogue ([`Method::ALL`], in its order), each followed by the polygon methods it
-/// is compared with ([`super::shader::POLYGON_AFTER`]). A method added to the
+/// is compared with ([`crate::raster::shader::POLYGON_AFTER`]). A method added to the
 /// catalogue appears here by itself.
 pub static COLUMNS: std::sync::LazyLock<Vec<Shader>> = std::sync::LazyLock::new(|| {
     let mut c = vec![Shader::PhongPixel];
     for m in Method::ALL {
         c.push(Shader::Span(m));
-        for (after, p) in super::shader::POLYGON_AFTER {
+        for (after, p) in crate::raster::shader::POLYGON_AFTER {
             if after == m {
                 c.push(p);
             }
@@ -195,7 +195,7 @@ fn power(sh: Shader, v: f64, table: &PowerTable) -> f64 {
 type RowLevels = Vec<[u8; 4]>;
 
 /// Renders frame `f` of `mesh` in `scene` with every shader in `f32` (the reference in
-/// `f64`) through the frame loop ([`super::frame::draw`], triangles) and measures the
+/// `f64`) through the frame loop ([`crate::raster::frame::draw`], triangles) and measures the
 /// deviations.
 pub fn render_compare(mesh: &Mesh, scene: &Scene, f: u32, opts: CompareOptions) -> CompareFrame {
     let (w, h) = (scene.width, scene.height);
@@ -501,7 +501,7 @@ pub struct CompareResult {
 pub fn run(exp: &super::experiment::Experiment, tick: &(dyn Fn() + Sync)) -> Vec<CompareResult> {
     use rayon::prelude::*;
     let scene = exp.scene();
-    super::mesh::paper_tori()
+    crate::raster::mesh::paper_tori()
         .iter()
         .map(|&(polygons, ring, tube)| {
             let mesh = exp.mesh(ring, tube);

@@ -1,26 +1,26 @@
 //! Rendering one frame of a rotating torus and measuring every method against Phong.
 //!
 //! The stages, in order: rotate the mesh (glam), project orthographically, cull back
-//! faces, scan-convert each quad ([`super::scan`]), and per row: normalize the edge
+//! faces, scan-convert each quad ([`crate::raster::scan`]), and per row: normalize the edge
 //! normals, set up the [`Span`] from the first to the last covered pixel, shade it with
 //! every method through the crate's generic code in `f32`, quantize to 8 bits (§6),
 //! depth-test and store the levels per pixel. The statistics of Tables 1 and 2 are then
 //! taken over the visible pixels (Table 2) and over every drawn row (Table 1).
 
-use super::frame::{draw, polygons, Polygon, Shading, Split};
-use super::mesh::Mesh;
-use super::scan::Row;
-pub use super::scene::{project, Scene};
-use super::stats::deviations;
-pub use super::stats::Deviation;
 use crate::adaptive::Choice;
 use crate::method::Prepared;
 use crate::quantize::level;
+use crate::raster::frame::{draw, polygons, Polygon, Shading, Split};
+use crate::raster::mesh::Mesh;
+use crate::raster::scan::Row;
+pub use crate::raster::scene::{project, Scene};
+use crate::raster::stats::deviations;
+pub use crate::raster::stats::Deviation;
 use crate::scalar::Scalar;
 use crate::{BigRational, Method, Span, Vec3};
 use glam::Vec3 as G3;
 
-pub use super::shader::Shader;
+pub use crate::raster::shader::Shader;
 
 /// The columns of Tables 1–2: the paper's span methods and the second source's, and
 /// classic vertex Gouraud; Phong first (the reference).
@@ -430,7 +430,7 @@ pub struct RenderOptions {
 }
 
 /// Renders frame `f` of `mesh` in `scene` through the frame loop
-/// ([`super::frame::draw`]), the paper's quads, every column of [`COLUMNS`] per row.
+/// ([`crate::raster::frame::draw`]), the paper's quads, every column of [`COLUMNS`] per row.
 pub fn render(mesh: &Mesh, scene: &Scene, f: u32, opts: RenderOptions) -> Frame {
     let (w, h) = (scene.width, scene.height);
     let npix = (w * h) as usize;

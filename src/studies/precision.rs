@@ -13,13 +13,13 @@
 use super::compare::{
     runs_in, shade_row, triangle_inputs, RowKernels, Shader, TriangleSetup, COLUMNS,
 };
-use super::frame::{polygons, Split};
-use super::mesh::Mesh;
 use super::render::{Deviation, Scene};
-use super::scan::rows;
 use crate::lowp::{f16, I16F16, I8F8};
 use crate::method::Prepared;
 use crate::quantize::level;
+use crate::raster::frame::{polygons, Split};
+use crate::raster::mesh::Mesh;
+use crate::raster::scan::rows;
 use crate::scalar::Real;
 use crate::{Method, Span, Vec3};
 

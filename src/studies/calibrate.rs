@@ -396,8 +396,8 @@ pub fn calibrate(
 mod tests {
     use super::*;
 
-    use crate::raster::render::{RowStats, Stats, COLUMNS};
     use crate::raster::stats::Deviation;
+    use crate::studies::render::{RowStats, Stats, COLUMNS};
 
     /// Results that are exactly the paper's numbers (span Gouraud, text reading without
     /// one-pixel rows), as far as integer counts allow.

@@ -2,7 +2,7 @@
 //! of each parameter, the sensitivity matrix and its picture, the report page.
 
 use super::*;
-use crate::raster::pictures::PictureError;
+use crate::studies::pictures::PictureError;
 use std::fmt::Write as _;
 
 /// A one-line description of a scene's varied choices.

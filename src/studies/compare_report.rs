@@ -150,7 +150,7 @@ pub fn report_md(exp: &Experiment, pframes: u32, r: &Results, secs: f64) -> Stri
         .iter()
         .map(|t| format!("{} polygons", t.polygons))
         .collect();
-    let deviation = |d: &super::stats::Deviation| format!("{:.3} / {}", d.mean(), d.max);
+    let deviation = |d: &crate::raster::stats::Deviation| format!("{:.3} / {}", d.mean(), d.max);
     let _ = writeln!(
         s,
         "\n## Extended Table 2: diffuse (N·L), mean / max deviation\n"
@@ -325,9 +325,9 @@ fn method_table(columns: &[String], rows: Vec<(String, Vec<String>)>) -> String 
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::raster::compare::{CompareStats, DeltaCount};
-    use crate::raster::pictures::tests_support::csv_rows;
-    use crate::raster::render::Deviation;
+    use crate::studies::compare::{CompareStats, DeltaCount};
+    use crate::studies::pictures::tests_support::csv_rows;
+    use crate::studies::render::Deviation;
 
     /// Shader `c` deviates by `c` in `c` of `10` pixels, diffuse; specular `k` adds `k`
     /// to the maximum.
@@ -375,7 +375,7 @@ mod tests {
                     rows: 20,
                 };
                 if p == precision::Precision::I8F8 {
-                    let duff = super::super::compare::index(shader("duff"));
+                    let duff = crate::studies::compare::index(shader("duff"));
                     st.failed_rows[1] = 5;
                     st.vs_phong[duff].pixels = 0;
                     st.vs_f64[duff].pixels = 0;
@@ -423,7 +423,7 @@ mod tests {
         let head = "| method | 288 polygons | 512 polygons | 800 polygons | 1152 polygons |\n|---|---:|---:|---:|---:|\n";
         assert_eq!(md.matches(head).count(), 1 + SHININESS.len());
         // Diffuse, Duff's column c: mean c/10, max c.
-        let c = super::super::compare::index(shader("duff"));
+        let c = crate::studies::compare::index(shader("duff"));
         let m = format!("{:.3}", c as f64 / 10.0);
         assert!(md.contains(&format!(
             "| duff | {m} / {c} | {m} / {c} | {m} / {c} | {m} / {c} |"
@@ -459,7 +459,7 @@ mod tests {
             .iter()
             .find(|r| r[0] == "1152" && r[1] == "duff" && r[2] == "specular200")
             .expect("a row");
-        let c = super::super::compare::index(shader("duff"));
+        let c = crate::studies::compare::index(shader("duff"));
         let mean = format!("{:.6}", c as f64 / 10.0);
         let max = (c + 3).to_string();
         assert_eq!(duff_s200[3..], [mean.as_str(), max.as_str(), "10"]);
@@ -558,11 +558,11 @@ mod tests {
         // bottom-right pixel; that of the reference is the colour of 0.
         let y = top + (head + f.height) + head + f.height - 1;
         let heat5 = g.get_pixel(4 * f.width - 1, y);
-        assert_eq!(*heat5, crate::raster::pictures::heat_colour(5));
+        assert_eq!(*heat5, crate::studies::pictures::heat_colour(5));
         let y0 = top + head + f.height - 1;
         assert_eq!(
             *g.get_pixel(2 * f.width - 1, y0),
-            crate::raster::pictures::heat_colour(0)
+            crate::studies::pictures::heat_colour(0)
         );
         // Text (INK) is drawn in the head above the first tile.
         let has_ink = (0..f.width).any(|x| (top..top + head).any(|y| *g.get_pixel(x, y) == INK));

@@ -53,7 +53,7 @@ fn rsqrt_f64(_: &Field<f64>, _: RowSetup, _: f64, _: f64, _: u32, _: &mut [f64])
 /// [`crate::BigRational`].
 pub trait RowKernels: sealed::Rows {}
 
-/// Whether `sh` runs in `T` (one of [`crate::raster::precision::PRECISIONS`] or exact
+/// Whether `sh` runs in `T` (one of [`crate::studies::precision::PRECISIONS`] or exact
 /// rationals): every shader but the row set-ups, which are kernels in `f32` (every
 /// one) and `f64` (all but the `rsqrt` ones).
 pub fn runs_in<T: RowKernels>(sh: &super::Shader) -> bool {

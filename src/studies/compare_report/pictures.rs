@@ -114,7 +114,7 @@ pub fn pictures(exp: &Experiment, f: u32) -> Vec<(String, RgbImage)> {
             ("fig4_corrected_euler", "corrected-euler"),
             ("fig5_phong", "phong-pixel"),
         ] {
-            let c = crate::raster::compare::index(shader(label));
+            let c = crate::studies::compare::index(shader(label));
             out.push((
                 format!("{name}_s{sv}.png"),
                 level_image(frame.width, frame.height, &frame.picture[c]),

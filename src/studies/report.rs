@@ -3,11 +3,11 @@
 //! strings and images; the command line writes them.
 
 use super::experiment::{Experiment, TorusResult, PAPER_TABLE_1, PAPER_TABLE_2};
-use super::mesh::NormalMode;
 use super::pictures::{
     labelled_difference_image, line_plot, shaded_image, Look, Picture, PictureError,
 };
 use super::render::{render, Reading, RenderOptions, Scene, Shader, COLUMNS};
+use crate::raster::mesh::NormalMode;
 use crate::table::{
     markdown,
     Align::{Left, Right},
@@ -131,10 +131,10 @@ pub fn tables_md(exp: &Experiment, results: &[TorusResult], secs: f64) -> String
         px as f64 / frames.max(1) as f64,
         secs
     );
-    let g = crate::raster::render::index(Shader::Span(Method::Gouraud));
-    let gv = crate::raster::render::index(Shader::VertexGouraud);
-    let e = crate::raster::render::index(Shader::Span(Method::Euler));
-    let ce = crate::raster::render::index(Shader::Span(Method::CorrectedEuler));
+    let g = crate::studies::render::index(Shader::Span(Method::Gouraud));
+    let gv = crate::studies::render::index(Shader::VertexGouraud);
+    let e = crate::studies::render::index(Shader::Span(Method::Euler));
+    let ce = crate::studies::render::index(Shader::Span(Method::CorrectedEuler));
     let _ = writeln!(
         s,
         "## Table 2: deviation from Phong in 8-bit levels (mean / max), ours beside the paper's\n"
@@ -334,9 +334,9 @@ pub fn table2_csv(results: &[TorusResult]) -> String {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::raster::experiment::PaperTable1;
-    use crate::raster::pictures::tests_support::csv_rows;
-    use crate::raster::render::{Deviation, ExactCheck, RowStats, Stats};
+    use crate::studies::experiment::PaperTable1;
+    use crate::studies::pictures::tests_support::csv_rows;
+    use crate::studies::render::{Deviation, ExactCheck, RowStats, Stats};
 
     /// A hand-made result per paper torus: column `c` has `10 + c` pixels, a deviation
     /// sum of `c` and a maximum of `c`; the 800-polygon torus has an exact check.
@@ -393,10 +393,10 @@ mod tests {
         assert!(md.contains("| polygons | Gouraud (paper) | Gouraud, span | Gouraud, vertex | Euler (paper) | Euler | Corr. Euler (paper) | Corr. Euler |\n|---:|---:|---:|---:|---:|---:|---:|---:|\n"));
         // 288 polygons: the paper's numbers, then ours with 3 decimals / max.
         let (g, gv, e, ce) = (
-            crate::raster::render::index(Shader::Span(Method::Gouraud)) as f64,
-            crate::raster::render::index(Shader::VertexGouraud) as f64,
-            crate::raster::render::index(Shader::Span(Method::Euler)) as f64,
-            crate::raster::render::index(Shader::Span(Method::CorrectedEuler)) as f64,
+            crate::studies::render::index(Shader::Span(Method::Gouraud)) as f64,
+            crate::studies::render::index(Shader::VertexGouraud) as f64,
+            crate::studies::render::index(Shader::Span(Method::Euler)) as f64,
+            crate::studies::render::index(Shader::Span(Method::CorrectedEuler)) as f64,
         );
         let ours = |c: f64| format!("{:.3} / {}", c / (10.0 + c), c);
         let row = format!(

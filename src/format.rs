@@ -6,9 +6,13 @@
 //! `_binary64`), the verdicts count ulps in it, and the reports name it. Nothing
 //! decides a format from the value of its unit roundoff.
 //!
-//! Fixed point is not a float format: its profile carries its own (`fixed:M.F`,
+//! The wider concept, the number type a run computes in, is [`Arithmetic`]: a float
+//! [`Format`], fixed point, exact rationals or MPFR — what `span --scalar` runs, what
+//! the precision study compares, and what names each in a report. Fixed point is not a
+//! float format: its acceptance profile carries its widths (`fixed:M.F`,
 //! [`crate::tolerance::profile::Profile::Fixed`]).
 
+use std::borrow::Cow;
 use std::fmt;
 use std::str::FromStr;
 
@@ -136,7 +140,28 @@ impl FromStr for Format {
 
 #[cfg(test)]
 mod tests {
-    use super::Format;
+    use super::{Arithmetic, Format};
+
+    #[test]
+    fn arithmetics_are_named_as_the_reports_name_them() {
+        let names: Vec<String> = [
+            Arithmetic::Float(Format::Binary16),
+            Arithmetic::F32,
+            Arithmetic::F64,
+            Arithmetic::Fixed {
+                int_bits: 8,
+                frac_bits: 8,
+            },
+            Arithmetic::Exact,
+            Arithmetic::Mpfr(256),
+        ]
+        .iter()
+        .map(ToString::to_string)
+        .collect();
+        assert_eq!(names, ["f16", "f32", "f64", "I8F8", "exact", "mpfr"]);
+        assert_eq!(Arithmetic::F32.format(), Some(Format::Binary32));
+        assert!(Arithmetic::Mpfr(64).is_exact() && !Arithmetic::F64.is_exact());
+    }
 
     #[test]
     fn the_units_are_the_types_own() {
@@ -174,5 +199,67 @@ mod tests {
             assert_eq!(f.name().parse::<Format>(), Ok(f));
         }
         assert!("f8".parse::<Format>().is_err());
+    }
+}
+
+/// The number type a run computes in: a float [`Format`], fixed point, exact rationals
+/// or MPFR. `span` runs in one (`--scalar`), the precision study compares several, and
+/// every report names each by [`Arithmetic::name`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Arithmetic {
+    /// An IEEE binary float format, round to nearest even.
+    Float(Format),
+    /// Signed fixed point of `int_bits` integer bits (the sign included) and
+    /// `frac_bits` fractional bits ([`crate::lowp::I16F16`] is 16 and 16).
+    Fixed {
+        /// Integer bits, the sign included.
+        int_bits: u32,
+        /// Fractional bits.
+        frac_bits: u32,
+    },
+    /// Exact rationals (square roots, `acos` and `cos` to 2^-256 or more).
+    Exact,
+    /// MPFR at this many bits (feature `mpfr`).
+    Mpfr(u32),
+}
+
+impl Arithmetic {
+    /// `f32`.
+    pub const F32: Arithmetic = Arithmetic::Float(Format::Binary32);
+    /// `f64`.
+    pub const F64: Arithmetic = Arithmetic::Float(Format::Binary64);
+
+    /// Its name in reports: `f16`, `f32`, `f64`, `I16F16` (fixed point as the `fixed`
+    /// crate names it), `exact`, `mpfr`.
+    pub fn name(self) -> Cow<'static, str> {
+        match self {
+            Arithmetic::Float(Format::Binary16) => Cow::Borrowed("f16"),
+            Arithmetic::Float(f) => Cow::Borrowed(f.name()),
+            Arithmetic::Fixed {
+                int_bits,
+                frac_bits,
+            } => Cow::Owned(format!("I{int_bits}F{frac_bits}")),
+            Arithmetic::Exact => Cow::Borrowed("exact"),
+            Arithmetic::Mpfr(_) => Cow::Borrowed("mpfr"),
+        }
+    }
+
+    /// The float format of a float run (`None` for the others).
+    pub fn format(self) -> Option<Format> {
+        match self {
+            Arithmetic::Float(f) => Some(f),
+            _ => None,
+        }
+    }
+
+    /// Exact or MPFR: a reference run rather than an implementation's arithmetic.
+    pub fn is_exact(self) -> bool {
+        matches!(self, Arithmetic::Exact | Arithmetic::Mpfr(_))
+    }
+}
+
+impl fmt::Display for Arithmetic {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.name())
     }
 }

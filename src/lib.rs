@@ -105,7 +105,7 @@ pub mod tolerance;
 pub mod vector;
 
 pub use error::{Input, SpanError};
-pub use format::Format;
+pub use format::{Arithmetic, Format};
 pub use method::Method;
 pub use num_rational::BigRational;
 pub use scalar::{Real, Scalar};

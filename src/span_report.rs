@@ -35,44 +35,7 @@ pub const SPAN_BUDGET: u32 = 1 << 16;
 /// The most output a report writes without being told to ([`Remedy::RunAnyway`]).
 pub const OUTPUT_BUDGET: u64 = 1 << 30;
 
-/// The number type of a run.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Arithmetic {
-    /// `f32`.
-    F32,
-    /// `f64`.
-    F64,
-    /// Exact rationals (square roots, `acos` and `cos` to 2^-256 or more).
-    Exact,
-    /// MPFR at this many bits (feature `mpfr`).
-    Mpfr(u32),
-}
-
-impl Arithmetic {
-    /// Its name in the report: `f32`, `f64`, `exact`, `mpfr`.
-    pub fn name(self) -> &'static str {
-        match self {
-            Arithmetic::F32 => "f32",
-            Arithmetic::F64 => "f64",
-            Arithmetic::Exact => "exact",
-            Arithmetic::Mpfr(_) => "mpfr",
-        }
-    }
-
-    /// The float format of a float run (`None` for exact and MPFR runs).
-    pub fn format(self) -> Option<crate::Format> {
-        match self {
-            Arithmetic::F32 => Some(crate::Format::Binary32),
-            Arithmetic::F64 => Some(crate::Format::Binary64),
-            Arithmetic::Exact | Arithmetic::Mpfr(_) => None,
-        }
-    }
-
-    /// Exact or MPFR.
-    pub fn is_exact(self) -> bool {
-        matches!(self, Arithmetic::Exact | Arithmetic::Mpfr(_))
-    }
-}
+pub use crate::format::Arithmetic;
 
 /// A request: the span, the method, the number type and the digits to print.
 #[derive(Clone, Debug)]
@@ -235,7 +198,7 @@ pub struct SpanReport {
     /// The method's name.
     pub method: String,
     /// The number type's name.
-    pub scalar: &'static str,
+    pub scalar: String,
     /// `n`.
     pub steps: u32,
     /// The `n + 1` values, formatted.
@@ -276,12 +239,18 @@ pub fn span_report(r: &Request) -> Result<SpanReport, ReportError> {
         Arithmetic::F64 => run_typed::<f64>(r)?,
         Arithmetic::Exact => run_exact(r)?,
         Arithmetic::Mpfr(precision) => run_mpfr(r, precision)?,
+        other => {
+            return Err(ReportError::new(
+                Field::Arithmetic,
+                format!("span runs in f32, f64, exact rationals or MPFR, not {other}"),
+            ))
+        }
     };
     let format = r.arithmetic.format();
     let bounds = format.map(|f| error_bounds(r, f));
     Ok(SpanReport {
         method: r.method.name().into_owned(),
-        scalar: r.arithmetic.name(),
+        scalar: r.arithmetic.name().into_owned(),
         steps: r.n,
         values: o.values,
         levels: o.levels,
@@ -469,5 +438,20 @@ mod tests {
         assert_eq!((e.field, e.remedy), (Field::Steps, Remedy::RunAnyway));
         q.arithmetic = Arithmetic::F64;
         assert!(q.within_budget().is_ok());
+    }
+
+    #[test]
+    fn arithmetics_without_a_span_run_are_refused_naming_the_number_type() {
+        for a in [
+            Arithmetic::Float(crate::Format::Binary16),
+            Arithmetic::Fixed {
+                int_bits: 16,
+                frac_bits: 16,
+            },
+        ] {
+            let e = span_report(&request(Method::Gouraud, a)).unwrap_err();
+            assert_eq!(e.field, Field::Arithmetic, "{a}");
+            assert!(e.message.contains(&*a.name()), "{a}: {}", e.message);
+        }
     }
 }

@@ -16,6 +16,7 @@ use crate::table::{
     markdown, Align,
     Align::{Left, Right},
 };
+use crate::Arithmetic;
 use crate::Method;
 use image::RgbImage;
 use rayon::prelude::*;
@@ -55,7 +56,7 @@ fn shader(label: &str) -> Shader {
 
 /// One method of the long-span study: per precision, the errors per span length
 /// ([`SPAN_LENGTHS`]; `None` where the precision fails).
-pub type SpanRow = (crate::Method, Vec<(&'static str, Vec<Option<f64>>)>);
+pub type SpanRow = (crate::Method, Vec<(Arithmetic, Vec<Option<f64>>)>);
 
 /// Everything `compare` measures.
 #[derive(Clone, Debug)]
@@ -63,7 +64,7 @@ pub struct Results {
     /// The four tori, every shader, diffuse and specular.
     pub tori: Vec<CompareResult>,
     /// Per precision of [`PRECISIONS`]: the 800-polygon torus.
-    pub precision: Vec<(&'static str, PrecisionStats)>,
+    pub precision: Vec<(Arithmetic, PrecisionStats)>,
     /// Per span method of the catalogue ([`Method::ALL`]: the polygon methods step
     /// along a row by the same additions as Gouraud or Bishop–Weimer), per precision: errors per span length.
     pub spans: Vec<SpanRow>,
@@ -77,12 +78,17 @@ pub fn precision_study(
     exp: &Experiment,
     frames: u32,
     tick: &(dyn Fn() + Sync),
-) -> Vec<(&'static str, PrecisionStats)> {
+) -> Vec<(Arithmetic, PrecisionStats)> {
     let scene = exp.scene();
     let mesh = exp.mesh(40, 20);
     PRECISIONS
         .iter()
-        .map(|&p| (p.name(), precision::torus(&mesh, &scene, frames, p, tick)))
+        .map(|&p| {
+            (
+                p.arithmetic,
+                precision::torus(&mesh, &scene, frames, &p, tick),
+            )
+        })
         .collect()
 }
 
@@ -94,12 +100,12 @@ pub fn span_study(count: usize, tick: &(dyn Fn() + Sync)) -> Vec<SpanRow> {
     Method::ALL
         .par_iter()
         .map(|&sh| {
-            let per: Vec<(&'static str, Vec<Option<f64>>)> = PRECISIONS
+            let per: Vec<(Arithmetic, Vec<Option<f64>>)> = PRECISIONS
                 .iter()
                 .map(|&p| {
-                    let e = precision::span_errors_in(sh, p, &dirs);
+                    let e = precision::span_errors_in(sh, &p, &dirs);
                     tick();
-                    (p.name(), e)
+                    (p.arithmetic, e)
                 })
                 .collect();
             (sh, per)
@@ -374,13 +380,18 @@ mod tests {
                     failed_rows: vec![0; n],
                     rows: 20,
                 };
-                if p == precision::Precision::I8F8 {
+                if p.arithmetic
+                    == (Arithmetic::Fixed {
+                        int_bits: 8,
+                        frac_bits: 8,
+                    })
+                {
                     let duff = crate::studies::compare::index(shader("duff"));
                     st.failed_rows[1] = 5;
                     st.vs_phong[duff].pixels = 0;
                     st.vs_f64[duff].pixels = 0;
                 }
-                (p.name(), st)
+                (p.arithmetic, st)
             })
             .collect();
         let spans = Method::ALL
@@ -393,7 +404,7 @@ mod tests {
                             .iter()
                             .map(|&len| (len <= 64).then_some(len as f64 / 64.0))
                             .collect();
-                        (p.name(), e)
+                        (p.arithmetic, e)
                     })
                     .collect();
                 (sh, per)

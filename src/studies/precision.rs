@@ -21,49 +21,67 @@ use crate::raster::frame::{polygons, Split};
 use crate::raster::mesh::Mesh;
 use crate::raster::scan::rows;
 use crate::scalar::Real;
-use crate::{Method, Span, Vec3};
+use crate::{Arithmetic, Format, Method, Span, Vec3};
 
-/// A number type of the precision study.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Precision {
-    /// IEEE binary64.
-    F64,
-    /// IEEE binary32.
-    F32,
-    /// IEEE binary16 ([`crate::lowp::f16`]).
-    F16,
-    /// 16.16 fixed point ([`crate::lowp::I16F16`]).
-    I16F16,
-    /// 8.8 fixed point ([`crate::lowp::I8F8`]).
-    I8F8,
+/// A number type of the precision study: its [`Arithmetic`] (which names it in the
+/// tables) and the study's runs in its Rust type, so that the type is a row's data
+/// rather than a `match` on the arithmetic.
+#[derive(Clone, Copy)]
+pub struct Precision {
+    /// The arithmetic.
+    pub arithmetic: Arithmetic,
+    /// [`torus`] in this type.
+    torus: fn(&Mesh, &Scene, u32, &(dyn Fn() + Sync)) -> PrecisionStats,
+    /// [`span_errors`] in this type.
+    span_errors: SpanErrors,
 }
 
+/// [`span_errors`] in one type.
+type SpanErrors = fn(Method, &[(Vec3<f64>, Vec3<f64>, Vec3<f64>)]) -> Vec<Option<f64>>;
+
 impl Precision {
-    /// Its name in the tables: `f64`, `f32`, `f16`, `I16F16`, `I8F8`.
-    pub fn name(self) -> &'static str {
-        match self {
-            Precision::F64 => "f64",
-            Precision::F32 => "f32",
-            Precision::F16 => "f16",
-            Precision::I16F16 => "I16F16",
-            Precision::I8F8 => "I8F8",
+    /// The row of `T`, computing in `arithmetic`.
+    const fn of<T: RowKernels>(arithmetic: Arithmetic) -> Precision {
+        Precision {
+            arithmetic,
+            torus: torus_in::<T>,
+            span_errors: span_errors::<T>,
         }
+    }
+
+    /// Its name in the tables: `f64`, `f32`, `f16`, `I16F16`, `I8F8`.
+    pub fn name(&self) -> String {
+        self.arithmetic.name().into_owned()
+    }
+}
+
+impl std::fmt::Debug for Precision {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "Precision({})", self.arithmetic)
     }
 }
 
 impl std::fmt::Display for Precision {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(self.name())
+        write!(f, "{}", self.arithmetic)
     }
 }
 
-/// The precisions of the tables, widest first.
+/// The precisions of the tables, widest first: binary64, binary32, binary16
+/// ([`crate::lowp::f16`]), 16.16 and 8.8 fixed point ([`crate::lowp::I16F16`],
+/// [`crate::lowp::I8F8`]).
 pub const PRECISIONS: [Precision; 5] = [
-    Precision::F64,
-    Precision::F32,
-    Precision::F16,
-    Precision::I16F16,
-    Precision::I8F8,
+    Precision::of::<f64>(Arithmetic::F64),
+    Precision::of::<f32>(Arithmetic::F32),
+    Precision::of::<f16>(Arithmetic::Float(Format::Binary16)),
+    Precision::of::<I16F16>(Arithmetic::Fixed {
+        int_bits: 16,
+        frac_bits: 16,
+    }),
+    Precision::of::<I8F8>(Arithmetic::Fixed {
+        int_bits: 8,
+        frac_bits: 8,
+    }),
 ];
 
 /// Per shader, in one precision.
@@ -185,35 +203,31 @@ pub fn torus(
     mesh: &Mesh,
     scene: &Scene,
     frames: u32,
-    precision: Precision,
+    precision: &Precision,
+    tick: &(dyn Fn() + Sync),
+) -> PrecisionStats {
+    (precision.torus)(mesh, scene, frames, tick)
+}
+
+/// [`torus`] in `T`.
+fn torus_in<T: RowKernels>(
+    mesh: &Mesh,
+    scene: &Scene,
+    frames: u32,
     tick: &(dyn Fn() + Sync),
 ) -> PrecisionStats {
     use rayon::prelude::*;
-    fn go<T: RowKernels>(
-        mesh: &Mesh,
-        scene: &Scene,
-        frames: u32,
-        tick: &(dyn Fn() + Sync),
-    ) -> PrecisionStats {
-        (0..frames)
-            .into_par_iter()
-            .map(|f| {
-                let s = frame::<T>(mesh, scene, f);
-                tick();
-                s
-            })
-            .reduce(PrecisionStats::default, |mut a, b| {
-                a.merge(&b);
-                a
-            })
-    }
-    match precision {
-        Precision::F64 => go::<f64>(mesh, scene, frames, tick),
-        Precision::F32 => go::<f32>(mesh, scene, frames, tick),
-        Precision::F16 => go::<f16>(mesh, scene, frames, tick),
-        Precision::I16F16 => go::<I16F16>(mesh, scene, frames, tick),
-        Precision::I8F8 => go::<I8F8>(mesh, scene, frames, tick),
-    }
+    (0..frames)
+        .into_par_iter()
+        .map(|f| {
+            let s = frame::<T>(mesh, scene, f);
+            tick();
+            s
+        })
+        .reduce(PrecisionStats::default, |mut a, b| {
+            a.merge(&b);
+            a
+        })
 }
 
 /// The span lengths tried by [`span_errors`] and [`longest`].
@@ -308,14 +322,8 @@ pub fn longest(errors: &[Option<f64>]) -> Option<u32> {
 /// [`span_errors`] in `precision`.
 pub fn span_errors_in(
     m: Method,
-    precision: Precision,
+    precision: &Precision,
     directions: &[(Vec3<f64>, Vec3<f64>, Vec3<f64>)],
 ) -> Vec<Option<f64>> {
-    match precision {
-        Precision::F64 => span_errors::<f64>(m, directions),
-        Precision::F32 => span_errors::<f32>(m, directions),
-        Precision::F16 => span_errors::<f16>(m, directions),
-        Precision::I16F16 => span_errors::<I16F16>(m, directions),
-        Precision::I8F8 => span_errors::<I8F8>(m, directions),
-    }
+    (precision.span_errors)(m, directions)
 }

@@ -44,11 +44,11 @@ pub fn table2_csv(tori: &[CompareResult]) -> String {
 /// `precision.csv`: per precision and shader, the deviations from per-pixel Phong in
 /// `f64` and from the same shader in `f64` (mean with 6 decimals, max), the pixels,
 /// the failed rows and all rows.
-pub fn precision_csv(p: &[(&'static str, PrecisionStats)]) -> String {
+pub fn precision_csv(p: &[(Arithmetic, PrecisionStats)]) -> String {
     /// A line of `precision.csv`.
     #[derive(Serialize)]
     struct Row {
-        precision: &'static str,
+        precision: String,
         method: String,
         mean_vs_phong: String,
         max_vs_phong: u32,
@@ -62,7 +62,7 @@ pub fn precision_csv(p: &[(&'static str, PrecisionStats)]) -> String {
         COLUMNS.iter().enumerate().map(move |(c, sh)| {
             let (a, b) = (&st.vs_phong[c], &st.vs_f64[c]);
             Row {
-                precision: name,
+                precision: name.to_string(),
                 method: sh.label().into_owned(),
                 mean_vs_phong: format!("{:.6}", a.mean()),
                 max_vs_phong: a.max,

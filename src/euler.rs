@@ -49,7 +49,7 @@ pub fn shade<T: Scalar>(span: &Span<T>, out: &mut [T]) -> Result<(), SpanError> 
 pub(crate) fn recurrence<T: Scalar>(mut p: T, mut s: T, ds: &T, out: &mut [T]) {
     for o in out.iter_mut() {
         *o = p.clone();
-        p = p + s.clone();
-        s = s + ds.clone();
+        p.add_assign_ref(&s);
+        s.add_assign_ref(ds);
     }
 }

@@ -27,7 +27,7 @@ pub fn shade<T: Scalar>(span: &Span<T>, out: &mut [T]) -> Result<(), SpanError> 
     let mut g = span.p_a.clone();
     for o in out.iter_mut() {
         *o = g.clone();
-        g = g + span.dp.clone();
+        g.add_assign_ref(&span.dp);
     }
     Ok(())
 }

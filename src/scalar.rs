@@ -60,6 +60,15 @@ pub trait Scalar:
     /// The largest integer ≤ `self`, saturated to the `i64` range.
     fn floor_i64(&self) -> i64;
 
+    /// `self ← self + x`, taking `x` by reference: the recurrences' step (eqs. 13,
+    /// 16–17, Gouraud's `+ d_p`). Exact and MPFR values add in place without copying
+    /// `x` (num-traits' by-reference arithmetic); the default moves `self` and copies
+    /// `x`, which is free for the float and fixed-point types.
+    fn add_assign_ref(&mut self, x: &Self) {
+        let s = std::mem::replace(self, Self::zero());
+        *self = s + x.clone();
+    }
+
     /// `|self|` (named so as not to clash with num-traits' `Signed::abs`).
     fn magnitude(&self) -> Self {
         if *self < Self::zero() {
@@ -256,6 +265,10 @@ impl_float_bits!(f64, u64);
 impl Scalar for BigRational {
     const NAME: &'static str = "exact";
     const EXACT: bool = true;
+
+    fn add_assign_ref(&mut self, x: &Self) {
+        *self += x;
+    }
 
     fn from_i64(v: i64) -> Self {
         BigRational::from_integer(BigInt::from(v))

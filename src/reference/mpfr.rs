@@ -111,6 +111,10 @@ impl Scalar for Mpfr {
     const NAME: &'static str = "mpfr";
     const EXACT: bool = false;
 
+    fn add_assign_ref(&mut self, x: &Self) {
+        self.0 += &x.0;
+    }
+
     fn from_i64(v: i64) -> Self {
         Mpfr(Float::with_val(precision(), v))
     }

@@ -161,7 +161,8 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
         };
         CliError::arg(arg, format!("{}{advice}", e.message))
     })?;
-    let human = human_verdict(a.report.as_deref());
+    let report = ReportArg::parse(a.report.as_deref())?;
+    let human = human_verdict(report.as_ref());
     if loaded.recomputed {
         human(&format!(
             "vectors: not a published set; the expected values of {key} were recomputed from the file's inputs by the exact reference\n"
@@ -184,13 +185,7 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
         a.precision.format(),
     )
     .map_err(|e| CliError::arg("--method", e))?;
-    if a.report.as_ref().is_some_and(|r| r.len() != 2) {
-        return Err(CliError::arg(
-            "--report",
-            "given more than once: one report per run (FORMAT FILE)",
-        ));
-    }
-    if let Some(r) = &a.report {
+    if let Some(r) = &report {
         let suite = format!(
             "{} {key} {} ({})",
             vectors.set,
@@ -200,25 +195,11 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
             },
             a.precision.format()
         );
-        let text = match r[0].as_str() {
-            "junit" => judged.junit(&suite, advice),
-            "json" => judged.json(&suite, advice),
-            o => {
-                return Err(CliError::arg(
-                    "--report",
-                    format!(
-                        "unknown report format '{}' (expected junit or json)",
-                        shown(o)
-                    ),
-                ))
-            }
+        let text = match r.format {
+            ReportFormat::Junit => judged.junit(&suite, advice),
+            ReportFormat::Json => judged.json(&suite, advice),
         };
-        if r[1] == "-" {
-            // The report on standard output; the human verdict goes to standard error.
-            out(format_args!("{text}"))?;
-        } else {
-            write_report(&r[1], &text, &[&a.vectors, &a.results])?;
-        }
+        r.write(&text, &[&a.vectors, &a.results])?;
     }
     human(&judged.text(advice))?;
     if a.tolerance.is_none() {
@@ -242,10 +223,84 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
     }
 }
 
+/// The format of a `--report`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum ReportFormat {
+    /// JUnit XML, one test case per vector case.
+    Junit,
+    /// `check`'s JSON report.
+    Json,
+}
+
+/// Where a `--report` goes.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(crate) enum ReportTarget {
+    /// Standard output (`-`); the human verdict then goes to standard error.
+    Stdout,
+    /// A file, written by [`write_report`]'s rules.
+    File(String),
+}
+
+/// `--report FORMAT FILE`, read once into types (`check` and `gpu-check`).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(crate) struct ReportArg {
+    /// What to write.
+    pub format: ReportFormat,
+    /// Where.
+    pub target: ReportTarget,
+}
+
+impl ReportArg {
+    /// Reads the two values clap collected (`None` without `--report`).
+    ///
+    /// # Errors
+    /// `--report` given more than once, or an unknown format.
+    pub(crate) fn parse(r: Option<&[String]>) -> Result<Option<ReportArg>, CliError> {
+        let Some(r) = r else { return Ok(None) };
+        let [format, file] = r else {
+            return Err(CliError::arg(
+                "--report",
+                "given more than once: one report per run (FORMAT FILE)",
+            ));
+        };
+        let format = match format.as_str() {
+            "junit" => ReportFormat::Junit,
+            "json" => ReportFormat::Json,
+            o => {
+                return Err(CliError::arg(
+                    "--report",
+                    format!(
+                        "unknown report format '{}' (expected junit or json)",
+                        shown(o)
+                    ),
+                ))
+            }
+        };
+        let target = if file == "-" {
+            ReportTarget::Stdout
+        } else {
+            ReportTarget::File(file.clone())
+        };
+        Ok(Some(ReportArg { format, target }))
+    }
+
+    /// Writes `text` where the report goes; `inputs` are the command's input files,
+    /// which a report never replaces.
+    ///
+    /// # Errors
+    /// As [`write_report`], or a closed standard output.
+    pub(crate) fn write(&self, text: &str, inputs: &[&str]) -> Result<(), CliError> {
+        match &self.target {
+            ReportTarget::Stdout => out(format_args!("{text}")),
+            ReportTarget::File(file) => write_report(file, text, inputs),
+        }
+    }
+}
+
 /// Where the human verdict goes: standard output, or standard error when the report
-/// takes standard output (`--report FORMAT -`, given as `report`).
-pub(crate) fn human_verdict(report: Option<&[String]>) -> impl Fn(&str) -> Result<(), CliError> {
-    let to_stderr = report.is_some_and(|r| r.get(1).is_some_and(|f| f == "-"));
+/// takes standard output (`--report FORMAT -`).
+pub(crate) fn human_verdict(report: Option<&ReportArg>) -> impl Fn(&str) -> Result<(), CliError> {
+    let to_stderr = report.is_some_and(|r| r.target == ReportTarget::Stdout);
     move |text: &str| {
         if to_stderr {
             use std::io::Write;
@@ -261,7 +316,7 @@ pub(crate) fn human_verdict(report: Option<&[String]>) -> impl Fn(&str) -> Resul
 /// but one: the report is this tool's own output, so an existing regular file of that
 /// name is replaced (a CI run's report from the run before); a symbolic link, a folder,
 /// or one of the command's input files (`inputs`) is refused.
-pub(crate) fn write_report(file: &str, text: &str, inputs: &[&str]) -> Result<(), CliError> {
+fn write_report(file: &str, text: &str, inputs: &[&str]) -> Result<(), CliError> {
     let path = std::path::Path::new(file);
     let name = path.file_name().and_then(|n| n.to_str()).ok_or_else(|| {
         CliError::arg("--report", format!("'{}' is not a file name", shown(file)))

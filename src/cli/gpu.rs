@@ -63,11 +63,11 @@ pub use with_gpu::run;
 #[cfg(feature = "gpu")]
 mod with_gpu {
     use super::{CliError, GpuCheckArgs};
-    use crate::cli::out;
+    use crate::cli::check::{ReportArg, ReportFormat};
     use phong_approx::conformance::check::{CaseReport, Results, Tolerance};
     use phong_approx::conformance::judgement::{judge, Judgement};
     use phong_approx::conformance::vectors::method_key;
-    use phong_approx::conformance::{shown, verdict};
+    use phong_approx::conformance::verdict;
     use phong_approx::gpu::kernels::{Kernel, Language, KERNELS};
     use phong_approx::gpu::{published_spans, unwritten, Gpu, GpuError, Source};
     use phong_approx::testkit::{published, SETS};
@@ -153,23 +153,8 @@ mod with_gpu {
                 "a kernel computes in 32-bit floats: shader, ieee or reference",
             ));
         }
-        if a.report.as_ref().is_some_and(|r| r.len() != 2) {
-            return Err(CliError::arg(
-                "--report",
-                "given more than once: one report per run (FORMAT FILE)",
-            ));
-        }
-        if let Some(r) = &a.report {
-            if !matches!(r[0].as_str(), "junit" | "json") {
-                return Err(CliError::arg(
-                    "--report",
-                    format!(
-                        "unknown report format '{}' (expected junit or json)",
-                        shown(&r[0])
-                    ),
-                ));
-            }
-        }
+        // Read (and refused) before the device is opened.
+        let report = ReportArg::parse(a.report.as_deref())?;
         let timeout = Duration::from_secs(u64::from(a.timeout));
         // The kernel is read (and GLSL compiled) before the device is opened: a bad
         // file is bad input whether or not there is a GPU.
@@ -185,15 +170,24 @@ mod with_gpu {
         let gpu = Gpu::new().map_err(gpu_error)?;
         let adapter = gpu.adapter().to_string();
         match (user, &a.shader, a.method) {
-            (Some(source), Some(path), Some(method)) => {
-                user_kernel(a, &gpu, &adapter, &source, path, method, timeout)
-            }
+            (Some(source), Some(path), Some(method)) => user_kernel(
+                a,
+                report.as_ref(),
+                &gpu,
+                &adapter,
+                &source,
+                path,
+                method,
+                timeout,
+            ),
             _ => builtin(&gpu, &adapter, timeout),
         }
     }
 
+    #[allow(clippy::too_many_arguments)]
     fn user_kernel(
         a: &GpuCheckArgs,
+        report: Option<&ReportArg>,
         gpu: &Gpu,
         adapter: &str,
         source: &Source,
@@ -201,7 +195,7 @@ mod with_gpu {
         method: Method,
         timeout: Duration,
     ) -> Result<(), CliError> {
-        let human = crate::cli::check::human_verdict(a.report.as_deref());
+        let human = crate::cli::check::human_verdict(report);
         human(&format!("adapter: {adapter}\n"))?;
         let (results, raw, seconds) = values(gpu, source, path, timeout)?;
         human(&format!(
@@ -223,13 +217,11 @@ mod with_gpu {
             "tolerance: the {} profile's bound for f32 (docs/float.md §18)\n",
             a.profile
         ))?;
-        if let Some(r) = &a.report {
-            let text = write_report(&r[0], &sets, method, a.profile, adapter);
-            if r[1] == "-" {
-                out(format_args!("{text}"))?;
-            } else {
-                crate::cli::check::write_report(&r[1], &text, &[path])?;
-            }
+        if let Some(r) = report {
+            r.write(
+                &write_report(r.format, &sets, method, a.profile, adapter),
+                &[path],
+            )?;
         }
         let all: Vec<CaseReport> = sets.into_iter().flat_map(|(_, j)| j.reports).collect();
         match verdict::failure(&all) {
@@ -245,7 +237,7 @@ mod with_gpu {
     /// The report over the three sets: JUnit with one `<testsuite>` per set, or a JSON
     /// object holding the adapter and each set's `check` report.
     fn write_report(
-        format: &str,
+        format: ReportFormat,
         sets: &Sets,
         method: Method,
         profile: Profile,
@@ -253,7 +245,7 @@ mod with_gpu {
     ) -> String {
         let key = method_key(method);
         let suite = |set: &str| format!("{set} {key} {profile} profile (f32) on {adapter}");
-        if format == "json" {
+        if format == ReportFormat::Json {
             let per: Vec<serde_json::Value> = sets
                 .iter()
                 .map(|(set, j)| {

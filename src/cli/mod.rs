@@ -55,7 +55,8 @@ pub mod torus;
 pub mod vectors;
 
 /// A CLI failure: one line naming what was wrong, and the exit code.
-#[derive(Debug)]
+#[derive(Debug, thiserror::Error)]
+#[error("{message}")]
 pub struct CliError {
     /// The message, e.g. `--na: component 2 'x' is not a number …`.
     pub message: String,
@@ -79,12 +80,6 @@ impl CliError {
     /// The exit code.
     pub fn code(&self) -> u8 {
         self.code
-    }
-}
-
-impl fmt::Display for CliError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.message)
     }
 }
 

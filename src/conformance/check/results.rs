@@ -6,7 +6,6 @@
 
 use crate::conformance::vectors::VectorFile;
 use std::collections::HashMap;
-use std::fmt;
 
 mod json;
 
@@ -14,7 +13,8 @@ mod json;
 pub const MAX_RESULTS_BYTES: u64 = 256 << 20;
 
 /// A problem with an input file: the file, the line (0 when not tied to one) and what.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("{}{}: {message}", file, line_part(*line))]
 pub struct InputError {
     /// The file's name as given.
     pub file: String,
@@ -24,17 +24,14 @@ pub struct InputError {
     pub message: String,
 }
 
-impl fmt::Display for InputError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        if self.line > 0 {
-            write!(f, "{}:{}: {}", self.file, self.line, self.message)
-        } else {
-            write!(f, "{}: {}", self.file, self.message)
-        }
+/// `:line` after the file's name, nothing for line 0 (not tied to a line).
+fn line_part(line: usize) -> String {
+    if line > 0 {
+        format!(":{line}")
+    } else {
+        String::new()
     }
 }
-
-impl std::error::Error for InputError {}
 
 /// The results read from a file: per case id, the value at each pixel.
 pub type Results = HashMap<String, Vec<f64>>;

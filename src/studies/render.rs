@@ -385,9 +385,8 @@ fn exact_row(
     let mut out = vec![BigRational::from_i64(0); span.len()];
     let kd = &prep.kd;
     let u = f32::unit_roundoff();
-    let q_min = (0..=exact.n)
-        .map(|i| exact.q_at(i).to_f64())
-        .fold(f64::INFINITY, f64::min);
+    // The one q_min of the bounds (`Span::q_min`, rounded down in `Shape::of`).
+    let q_min = crate::tolerance::Shape::of(&exact).q_min;
     for (c, col) in COLUMNS.iter().enumerate() {
         let Shader::Span(m) = col else { continue };
         // Phong-valued methods' levels come from p and q alone (no exact run needed).

@@ -8,7 +8,9 @@ use super::CliError;
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
 use phong_approx::studies::compare;
-use phong_approx::studies::compare_report::{self as report, picture_names, Results, GRID, TABLES};
+use phong_approx::studies::compare_report::{
+    self as report, picture_names, Measured, GRID, TABLES,
+};
 use phong_approx::studies::experiment::Experiment;
 use phong_approx::studies::pictures::save_png;
 use phong_approx::studies::precision::PRECISIONS;
@@ -122,7 +124,7 @@ pub fn run(a: &CompareArgs) -> Result<(), CliError> {
     );
     let spans = report::span_study(span_count, &|| b.inc(1));
     b.finish_and_clear();
-    let results = Results {
+    let results = Measured {
         tori,
         precision,
         spans,

@@ -60,7 +60,7 @@ pub type SpanRow = (crate::Method, Vec<(Arithmetic, Vec<Option<f64>>)>);
 
 /// Everything `compare` measures.
 #[derive(Clone, Debug)]
-pub struct Results {
+pub struct Measured {
     /// The four tori, every shader, diffuse and specular.
     pub tori: Vec<CompareResult>,
     /// Per precision of [`PRECISIONS`]: the 800-polygon torus.
@@ -117,7 +117,7 @@ pub fn span_study(count: usize, tick: &(dyn Fn() + Sync)) -> Vec<SpanRow> {
 /// extended Table 2 (diffuse, then specular at every [`SHININESS`]), the adaptive
 /// scheme and the δ test on the specular term, the precision tables (`pframes` frames)
 /// and the longest spans. `secs` is the run time it states.
-pub fn report_md(exp: &Experiment, pframes: u32, r: &Results, secs: f64) -> String {
+pub fn report_md(exp: &Experiment, pframes: u32, r: &Measured, secs: f64) -> String {
     let mut s = String::new();
     let _ = writeln!(s, "# Every method on the same tori\n");
     let _ = writeln!(
@@ -345,7 +345,7 @@ mod tests {
         }
     }
 
-    fn results() -> Results {
+    fn results() -> Measured {
         let n = COLUMNS.len();
         let tori = [288, 512, 800, 1152]
             .map(|polygons| CompareResult {
@@ -410,7 +410,7 @@ mod tests {
                 (sh, per)
             })
             .collect();
-        Results {
+        Measured {
             tori,
             precision,
             spans,

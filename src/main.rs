@@ -97,7 +97,7 @@ fn main() -> ExitCode {
 
 /// Argument checks that need no process: each bad `span` request is parsed and run in
 /// this process and must fail with exit code 2 and a one-line message naming the
-/// problem. (`tests/cli.rs` and `tests/reliability.rs` keep the end-to-end runs that
+/// problem. (`tests/cli.rs` and `tests/reliability/` keep the end-to-end runs that
 /// need a process: exit codes, stderr, pipes and files.)
 #[cfg(test)]
 mod tests {

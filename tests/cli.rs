@@ -1,6 +1,6 @@
 //! `phong-approx span` end to end: output shape, values checked against independent
-//! closed forms computed here in rationals (not by the recurrences under test), and
-//! one clear line with exit code 2 for every kind of bad input.
+//! closed forms computed here in rationals (not by the recurrences under test). Its
+//! refusals (one clear line, exit code 2) are `reliability/span.rs`'s.
 
 use crate::runner;
 use runner::bin;
@@ -373,74 +373,6 @@ fn normalize_accepts_non_unit_inputs() {
     let vals = values(&v);
     assert!(close(&vals[0], &q(4, 5), 15));
     assert!(close(&vals[2], &Q::one(), 15));
-}
-
-/// Runs with `extra` replacing the named defaults; expects exit 2 and one stderr line
-/// containing `needle`.
-fn bad(extra: &[(&str, &str)], needle: &str) {
-    let mut args: Vec<(String, String)> = [
-        ("--method", "corrected-euler"),
-        ("--na", NA),
-        ("--nb", NB),
-        ("--light", L),
-        ("--steps", "4"),
-    ]
-    .iter()
-    .map(|(a, b)| (a.to_string(), b.to_string()))
-    .collect();
-    for (k, v) in extra {
-        match args.iter_mut().find(|(a, _)| a == k) {
-            Some(slot) => slot.1 = v.to_string(),
-            None => args.push((k.to_string(), v.to_string())),
-        }
-    }
-    let mut cmd = bin();
-    cmd.arg("span");
-    for (k, v) in &args {
-        cmd.arg(format!("{k}={v}"));
-    }
-    let out = cmd.output().unwrap();
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(out.status.code(), Some(2), "{extra:?}: {err}");
-    assert_eq!(
-        err.trim_end().lines().count(),
-        1,
-        "{extra:?}: not one line: {err}"
-    );
-    assert!(err.contains(needle), "{extra:?}: '{err}' lacks '{needle}'");
-    assert!(!err.contains("panicked"), "{extra:?}: {err}");
-    assert!(out.stdout.is_empty());
-}
-
-/// End to end, as a process: exit code 2, one line on stderr, nothing on stdout. The
-/// full table of bad requests is checked in process (`src/main.rs`,
-/// `bad_span_requests_are_refused_in_process`); these need the process.
-#[test]
-fn bad_input_gets_one_line_and_exit_2() {
-    bad(
-        &[("--na", "0.6,x,0.8")],
-        "--na: component 2 'x' is not a number",
-    );
-    bad(&[("--light", "0,0,0")], "--light: the vector is zero");
-    bad(
-        &[("--nb", "0,-3/5,-4/5"), ("--method", "phong")],
-        "pixel 2 of n = 4: the interpolated normal is zero",
-    );
-    bad(&[("--bogus", "1")], "--bogus");
-    // Missing required arguments: clap's message, folded to one line.
-    let out = bin().args(["span", "--method", "phong"]).output().unwrap();
-    assert_eq!(out.status.code(), Some(2));
-    let err = String::from_utf8_lossy(&out.stderr);
-    assert_eq!(err.trim_end().lines().count(), 1, "{err}");
-    assert!(err.contains("--na"), "{err}");
-}
-
-#[test]
-fn huge_steps_are_refused_not_allocated() {
-    bad(
-        &[("--steps", "99999999999")],
-        "--steps: n must be between 1 and 16777216",
-    );
 }
 
 #[test]

@@ -10,7 +10,7 @@
 //! when `α` and `β` agree in sign, else the sign of `α² − β²·r` times that of `α`
 //! (both sides of `|α| ≶ |β|·√r` are non-negative, so squaring keeps the order).
 //!
-//! Tested: the unit tests below and `tests/reliability.rs::r3_exact_levels_with_normalize`.
+//! Tested: the unit tests below and `tests/reliability/span.rs::exact_levels_with_normalize`.
 
 use crate::reference::level::level_within;
 use crate::vector::Vec3;

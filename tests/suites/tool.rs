@@ -14,7 +14,7 @@ mod cli;
 mod compare;
 #[path = "../mpfr.rs"]
 mod mpfr;
-#[path = "../reliability.rs"]
+#[path = "../reliability/mod.rs"]
 mod reliability;
 #[path = "../reproduce.rs"]
 mod reproduce;

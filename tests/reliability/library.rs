@@ -1,0 +1,126 @@
+//! The library called directly: meaningless tolerances refused, hostile arguments
+//! give errors and no panics, exact transcendental functions at extreme arguments.
+
+use super::*;
+
+/// Defect q6 of the reliability rounds (docs/conformance.md, "Limits and exit codes").
+#[test]
+fn the_library_refuses_meaningless_tolerances() {
+    use phong_approx::conformance::check::Tolerance;
+    use phong_approx::testkit::Suite;
+    use phong_approx::tolerance::profile::Profile;
+    for t in [
+        Tolerance::Abs(f64::NAN),
+        Tolerance::Ulps(f64::NAN),
+        Tolerance::Abs(f64::INFINITY),
+        Tolerance::Abs(-1.0),
+        Tolerance::Profile {
+            profile: Profile::Fixed {
+                int_bits: 64,
+                frac_bits: u32::MAX,
+            },
+            format: phong_approx::Format::Binary32,
+            form: phong_approx::tolerance::profile::Form::Any,
+        },
+        Tolerance::Profile {
+            profile: Profile::Fixed {
+                int_bits: 1 << 31,
+                frac_bits: 16,
+            },
+            format: phong_approx::Format::Binary32,
+            form: phong_approx::tolerance::profile::Form::Any,
+        },
+    ] {
+        assert!(t.validate().is_err(), "{t:?}");
+        // The test kit fails every set with the reason (no pass, no panic).
+        let r = Suite::published()
+            .tolerance(t)
+            .check_f32(|s| vec![3.0; s.n as usize + 1]);
+        assert!(!r.is_ok(), "{t:?}");
+    }
+}
+
+/// Defect q7 of the reliability rounds (docs/conformance.md, "Limits and exit codes").
+#[test]
+fn exact_cosine_of_large_arguments() {
+    use phong_approx::reference::transcendental::cos;
+    // cos(10^100), computed independently with Python's decimal module at 250 digits
+    // (π by Machin's formula, 10^100 reduced modulo 2π, the Taylor series).
+    use phong_approx::Scalar;
+    let x = BigRational::from_integer(BigInt::from(10).pow(100u32));
+    assert_eq!(cos(&x).to_decimal(30), "-0.928081905074655343456194643777");
+    // And cos(x)² + cos(x − π/2)² = 1 for a large x, which a wrong reduction breaks.
+    let x = BigRational::from_integer(BigInt::from(10).pow(25u32));
+    let half_pi = phong_approx::reference::transcendental::frac_pi_2();
+    let (a, b) = (cos(&x), cos(&(x.clone() - half_pi)));
+    let one = a.clone() * a + b.clone() * b - BigRational::from_integer(1.into());
+    assert!(
+        one.abs() < BigRational::new(1.into(), BigInt::from(1) << 240),
+        "{one}"
+    );
+}
+
+/// Defect q11 of the reliability rounds (docs/conformance.md, "Limits and exit codes").
+#[test]
+fn hostile_library_arguments_give_errors_not_panics() {
+    use phong_approx::fixed_span::FixedSpan;
+    use phong_approx::testkit::Suite;
+    use phong_approx::tolerance::profile::{fixed_bound, Profile};
+    use phong_approx::{Method, Span, Vec3};
+    assert_eq!(fixed_bound(Method::Gouraud, 4, 64, 1 << 31), None);
+    assert_eq!(fixed_bound(Method::Gouraud, 4, 1 << 31, 16), None);
+    assert!(Profile::Fixed {
+        int_bits: 64,
+        frac_bits: 1 << 31
+    }
+    .validate()
+    .is_err());
+    let r = Suite::published()
+        .method(Method::AngularTable(512))
+        .check_f32(|s| vec![0.0; s.n as usize + 1]);
+    assert!(!r.is_ok());
+    assert!(r.to_string().contains("angular-table512"), "{r}");
+    let r = Suite::set("nope").check_f32(|s| vec![0.0; s.n as usize + 1]);
+    assert!(
+        !r.is_ok() && r.to_string().contains("no published set 'nope'"),
+        "{r}"
+    );
+    // A span that is not unit (normalized inputs of huge length): refused, not a panic.
+    let big = |x: i64| BigRational::from_integer(BigInt::from(x) << 80u32);
+    let z = BigRational::from_integer(0.into());
+    let v = Vec3::new(big(1), z.clone(), z.clone());
+    if let Ok(s) = Span::normalized(v.clone(), v.clone(), v, 4) {
+        let _ = FixedSpan::new(&s, 30);
+    }
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(256))]
+    /// No public constructor or validator panics on a value its type admits (debug
+    /// build: overflow checks on).
+    ///
+    /// Defect q11 of the reliability rounds (docs/conformance.md, "Limits and exit codes").
+    #[test]
+    fn public_constructors_never_panic(
+        m in proptest::prelude::any::<u32>(),
+        f in proptest::prelude::any::<u32>(),
+        n in proptest::prelude::any::<u32>(),
+        x in proptest::prelude::any::<f64>(),
+        fi in 0usize..3,
+        size in 0u32..4096,
+    ) {
+        use phong_approx::conformance::check::Tolerance;
+        use phong_approx::tolerance::profile::{fixed_bound, Profile};
+        use phong_approx::Method;
+        let p = Profile::Fixed { int_bits: m, frac_bits: f };
+        let _ = p.validate();
+        for method in [Method::Gouraud, Method::CorrectedEuler, Method::Phong] {
+            let _ = fixed_bound(method, n, m, f);
+        }
+        let format = phong_approx::Format::ALL[fi];
+        for t in [Tolerance::Abs(x), Tolerance::Ulps(x), Tolerance::Default { format }, Tolerance::Profile { profile: p, format, form: phong_approx::tolerance::profile::Form::Any }] {
+            let _ = t.validate();
+        }
+        let _ = phong_approx::angular::CosTable::<f64>::new(size);
+    }
+}

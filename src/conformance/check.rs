@@ -154,14 +154,18 @@ struct Judging<'a> {
 fn case_bound(j: &Judging, method: Method, specular: bool) -> Option<f64> {
     use crate::tolerance::profile::{profile_bound_in, profile_span_bound};
     let (c, shape) = (j.c, j.shape);
+    // The one q_min: the exact span's, rounded down (`Shape::of`); only where the
+    // span could not be built, the vector file's, which is to nearest, a relative
+    // 2^-40 lower (below the span's: `integrity` holds it within 10^-12 of it).
+    let q_min = shape.map_or(c.q_min * (1.0 - 2f64.powi(-40)), |s| s.q_min);
     // The reference profile is `Default` here (`check_in`).
     match j.tol {
+        // Specular cases shade N·H: the span's edge values are N·L's, so the bound
+        // takes n and q_min only (q does not depend on the light).
         Tolerance::Default { format } => match shape.filter(|_| !specular) {
             Some(shape) => crate::tolerance::span_bound(method, shape, format.u()),
-            None => crate::tolerance::bound(method, c.n, c.q_min, format.u()),
+            None => crate::tolerance::bound(method, c.n, q_min, format.u()),
         },
-        // The vector file's q_min is to nearest: a relative 2^-40 below it is below
-        // the span's.
         // The case's exact span gives Phong's derived bound its |N_b − N_a|.
         Tolerance::Profile {
             profile,
@@ -169,14 +173,7 @@ fn case_bound(j: &Judging, method: Method, specular: bool) -> Option<f64> {
             form,
         } => match shape {
             Some(shape) => profile_span_bound(method, profile, form, shape, format),
-            None => profile_bound_in(
-                method,
-                profile,
-                form,
-                c.n,
-                c.q_min * (1.0 - 2f64.powi(-40)),
-                format,
-            ),
+            None => profile_bound_in(method, profile, form, c.n, q_min, format),
         },
         _ => None,
     }
@@ -266,6 +263,13 @@ fn case_report(
 ) -> CaseReport {
     use crate::tolerance::profile::Profile;
     let (c, tol, format) = (j.c, j.tol, j.format);
+    // The expected decimals as the nearest f64, read once (the verdict reads them
+    // again, exactly, only where f64 cannot decide: `exceeds`).
+    let expected: Vec<f64> = exp
+        .values
+        .iter()
+        .map(|x| x.parse::<f64>().unwrap_or(f64::NAN))
+        .collect();
     // Specular raises the value v ≥ 0 to the power s: an error e in v moves v^s by at
     // most s·(v + e)^(s−1)·e (mean value theorem), and evaluating the power adds a
     // relative γ_s (s − 1 products, or a pow within an ulp). The values may exceed 1
@@ -274,11 +278,10 @@ fn case_report(
     // unit H, so the diffuse bounds hold with H for L.
     let spec = specular.then(|| {
         let s = c.specular.as_ref().map_or(1, |sp| sp.s.max(1));
-        let v_max = exp
-            .values
+        let v_max = expected
             .iter()
-            .filter_map(|x| x.parse::<f64>().ok())
-            .map(|x| x.max(0.0).powf(1.0 / f64::from(s)) * (1.0 + 1e-12))
+            .filter(|x| !x.is_nan())
+            .map(|&x| x.max(0.0).powf(1.0 / f64::from(s)) * (1.0 + 1e-12))
             .fold(0.0, f64::max);
         (f64::from(s), v_max)
     });
@@ -307,10 +310,9 @@ fn case_report(
     let (mut worst, mut worst_excess, mut pass) = (0usize, f64::NEG_INFINITY, true);
     let mut ratio = 0f64;
     // Ulps are counted at the case's scale (Tolerance::Ulps).
-    let scale = exp
-        .values
+    let scale = expected
         .iter()
-        .filter_map(|v| v.parse::<f64>().ok())
+        .filter(|v| !v.is_nan())
         .fold(0f64, |m, v| m.max(v.abs()));
     let mut not_finite = None;
     // The vector file was validated, so both lists have n + 1 values; a shorter list
@@ -319,9 +321,9 @@ fn case_report(
         pass = false;
         ratio = f64::INFINITY;
     }
-    for (i, (&g, (ev, &el))) in got
+    for (i, (&g, ((ev, &e), &el))) in got
         .iter()
-        .zip(exp.values.iter().zip(&exp.levels))
+        .zip(exp.values.iter().zip(&expected).zip(&exp.levels))
         .enumerate()
     {
         if !g.is_finite() {
@@ -334,7 +336,6 @@ fn case_report(
             }
             continue;
         }
-        let e: f64 = ev.parse().unwrap_or(f64::NAN);
         let d = (g - e).abs();
         // No method comes near 16 times its exact value in magnitude: such a result
         // fails whatever the tolerance (levels clamp, so they alone would pass 1e300).

@@ -210,7 +210,7 @@ pub enum Arithmetic {
     /// An IEEE binary float format, round to nearest even.
     Float(Format),
     /// Signed fixed point of `int_bits` integer bits (the sign included) and
-    /// `frac_bits` fractional bits ([`crate::lowp::I16F16`] is 16 and 16).
+    /// `frac_bits` fractional bits (`lowp::I16F16`, feature `lowp`, is 16 and 16).
     Fixed {
         /// Integer bits, the sign included.
         int_bits: u32,

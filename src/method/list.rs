@@ -303,10 +303,10 @@ methods! {
             bound: Bound::Angle {
                 extra: 20.0,
                 table: Some(*size),
-        },
-        picks: None,
-        closed_form: None,
-        profiles: ANGLE_PROFILES,
+            },
+            picks: None,
+            closed_form: None,
+            profiles: ANGLE_PROFILES,
         },
     }
     /// [`crate::related::spherical`]: Kuijk & Blake's spherical interpolation.

@@ -201,8 +201,8 @@ pub fn residuals(
     single: bool,
 ) -> Vec<Residual> {
     let g = index(gouraud);
-    let e = index(Shader::Span(Method::Euler));
-    let ce = index(Shader::Span(Method::CorrectedEuler));
+    let e = index(super::render::EULER);
+    let ce = index(super::render::CORRECTED_EULER);
     let mut out = Vec::with_capacity(28);
     for (r, p) in results.iter().zip(PAPER_TABLE_2) {
         let d = &r.stats.deviation;

@@ -22,16 +22,26 @@ use glam::Vec3 as G3;
 
 pub use crate::raster::shader::Shader;
 
+/// Phong per pixel along the span: the reference every column is measured against.
+pub const PHONG: Shader = Shader::Span(Method::Phong);
+/// Span Gouraud, which Table 1 compares with Phong and with corrected Euler.
+pub const GOURAUD: Shader = Shader::Span(Method::Gouraud);
+/// Plain Euler (eqs. 12–13), a column of Table 2.
+pub const EULER: Shader = Shader::Span(Method::Euler);
+/// Corrected Euler (eqs. 16–17), the paper's method.
+pub const CORRECTED_EULER: Shader = Shader::Span(Method::CorrectedEuler);
+
 /// The columns of Tables 1–2: the paper's span methods and the second source's, and
-/// classic vertex Gouraud; Phong first (the reference).
+/// classic vertex Gouraud; Phong first (the reference). Code finds a column by its
+/// shader ([`index`]), never by its position.
 pub const COLUMNS: [Shader; 10] = [
-    Shader::Span(Method::Phong),
+    PHONG,
     Shader::Span(Method::Duff),
     Shader::Span(Method::SymmetricPhong),
-    Shader::Span(Method::Gouraud),
+    GOURAUD,
     Shader::VertexGouraud,
-    Shader::Span(Method::Euler),
-    Shader::Span(Method::CorrectedEuler),
+    EULER,
+    CORRECTED_EULER,
     Shader::Span(Method::Adaptive),
     Shader::Span(Method::Angular),
     Shader::Span(Method::AngularTable(crate::method::SOURCE_TABLE)),
@@ -282,9 +292,9 @@ fn shade_row(
                 if let Some(d) = m.run(&span, prep, &mut out).ok()? {
                     decision = d.choice;
                 }
-                if c == PHONG {
+                if *col == PHONG {
                     phong.clone_from(&out);
-                } else if c == GOURAUD {
+                } else if *col == GOURAUD {
                     text_same = truncated_difference_is_zero(&phong, &out, kd);
                 }
             }
@@ -355,11 +365,6 @@ impl RowExtra {
         }
     }
 }
-
-/// The indices of Phong, span Gouraud and corrected Euler in [`COLUMNS`].
-const PHONG: usize = 0;
-const GOURAUD: usize = 3;
-const CORRECTED: usize = 6;
 
 /// Exact levels of a row's span for every span column, for the exact mode: the same
 /// span, its `f32` inputs converted exactly (they are within 2^-17 of unit length).
@@ -455,8 +460,9 @@ pub fn render(mesh: &Mesh, scene: &Scene, f: u32, opts: RenderOptions) -> Frame 
     };
     let polys = polygons(mesh, scene, f, Split::Quads);
     let writes = draw(w, h, &polys, &mut shading);
-    let deviation = deviations(&shading.levels, PHONG);
-    let pixels = shading.levels[PHONG].iter().flatten().count() as u64;
+    let phong = index(PHONG);
+    let deviation = deviations(&shading.levels, phong);
+    let pixels = shading.levels[phong].iter().flatten().count() as u64;
     Frame {
         width: w,
         height: h,
@@ -495,8 +501,9 @@ impl Shading for Tables<'_> {
             st.single_pixel_rows += 1;
         } else {
             st.rows += 1;
-            let same_gc = shade.levels[GOURAUD] == shade.levels[CORRECTED];
-            let same_gp = shade.levels[GOURAUD] == shade.levels[PHONG];
+            let gouraud = &shade.levels[index(GOURAUD)];
+            let same_gc = *gouraud == shade.levels[index(CORRECTED_EULER)];
+            let same_gp = *gouraud == shade.levels[index(PHONG)];
             st.gouraud_eq_corrected += u64::from(same_gc);
             st.gouraud_eq_phong += u64::from(same_gp);
             st.truncated_difference_zero += u64::from(extra.text_same);

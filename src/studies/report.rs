@@ -131,10 +131,10 @@ pub fn tables_md(exp: &Experiment, results: &[TorusResult], secs: f64) -> String
         px as f64 / frames.max(1) as f64,
         secs
     );
-    let g = crate::studies::render::index(Shader::Span(Method::Gouraud));
+    let g = crate::studies::render::index(crate::studies::render::GOURAUD);
     let gv = crate::studies::render::index(Shader::VertexGouraud);
-    let e = crate::studies::render::index(Shader::Span(Method::Euler));
-    let ce = crate::studies::render::index(Shader::Span(Method::CorrectedEuler));
+    let e = crate::studies::render::index(crate::studies::render::EULER);
+    let ce = crate::studies::render::index(crate::studies::render::CORRECTED_EULER);
     let _ = writeln!(
         s,
         "## Table 2: deviation from Phong in 8-bit levels (mean / max), ours beside the paper's\n"
@@ -393,10 +393,10 @@ mod tests {
         assert!(md.contains("| polygons | Gouraud (paper) | Gouraud, span | Gouraud, vertex | Euler (paper) | Euler | Corr. Euler (paper) | Corr. Euler |\n|---:|---:|---:|---:|---:|---:|---:|---:|\n"));
         // 288 polygons: the paper's numbers, then ours with 3 decimals / max.
         let (g, gv, e, ce) = (
-            crate::studies::render::index(Shader::Span(Method::Gouraud)) as f64,
+            crate::studies::render::index(crate::studies::render::GOURAUD) as f64,
             crate::studies::render::index(Shader::VertexGouraud) as f64,
-            crate::studies::render::index(Shader::Span(Method::Euler)) as f64,
-            crate::studies::render::index(Shader::Span(Method::CorrectedEuler)) as f64,
+            crate::studies::render::index(crate::studies::render::EULER) as f64,
+            crate::studies::render::index(crate::studies::render::CORRECTED_EULER) as f64,
         );
         let ours = |c: f64| format!("{:.3} / {}", c / (10.0 + c), c);
         let row = format!(

@@ -34,6 +34,24 @@ fn committed(set: &str) -> &'static VectorFile {
     &files[SETS.iter().position(|s| *s == set).unwrap()]
 }
 
+/// Runs `f` on every item of `work` on all cores, each core taking the next item in
+/// order (put the largest first).
+fn on_all_cores<T: Sync>(work: &[T], f: impl Fn(&T) + Sync) {
+    let threads = std::thread::available_parallelism().map_or(2, |n| n.get());
+    let next = std::sync::atomic::AtomicUsize::new(0);
+    std::thread::scope(|scope| {
+        for _ in 0..threads {
+            scope.spawn(|| {
+                while let Some(item) =
+                    work.get(next.fetch_add(1, std::sync::atomic::Ordering::Relaxed))
+                {
+                    f(item);
+                }
+            });
+        }
+    });
+}
+
 /// Default tier: the committed files' headers; a sample of the cases regenerated and
 /// compared value by value (every ninth `typical` case — n = 2, 3, 5, 8, 13, with and
 /// without specular —, every `edge` and `paper` case of at most 64 steps), on all
@@ -87,22 +105,12 @@ fn committed_vectors_are_what_the_code_generates() {
     assert!(sample.len() >= 15, "only {} cases sampled", sample.len());
     // Largest first, spread over the cores.
     sample.sort_by_key(|(_, _, spec, _)| std::cmp::Reverse(spec.n));
-    let threads = std::thread::available_parallelism().map_or(2, |n| n.get());
-    let next = std::sync::atomic::AtomicUsize::new(0);
-    std::thread::scope(|scope| {
-        for _ in 0..threads {
-            scope.spawn(|| loop {
-                let j = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-                let Some((set, k, spec, stale)) = sample.get(j) else {
-                    break;
-                };
-                let id = spec.id.clone();
-                let case = spec.clone().compute().unwrap();
-                let got: serde_json::Value =
-                    serde_json::from_str(&serde_json::to_string(&case).unwrap()).unwrap();
-                assert!(got == raws[*set]["cases"][*k], "{stale}: case {id}");
-            });
-        }
+    on_all_cores(&sample, |(set, k, spec, stale)| {
+        let id = spec.id.clone();
+        let case = spec.clone().compute().unwrap();
+        let got: serde_json::Value =
+            serde_json::from_str(&serde_json::to_string(&case).unwrap()).unwrap();
+        assert!(got == raws[*set]["cases"][*k], "{stale}: case {id}");
     });
 }
 
@@ -120,19 +128,9 @@ fn committed_vectors_are_what_the_code_generates_byte_for_byte() {
     }
     work.sort_by_key(|(_, _, spec)| std::cmp::Reverse(spec.n));
     let computed = std::sync::Mutex::new(Vec::with_capacity(work.len()));
-    let threads = std::thread::available_parallelism().map_or(2, |n| n.get());
-    let next = std::sync::atomic::AtomicUsize::new(0);
-    std::thread::scope(|scope| {
-        for _ in 0..threads {
-            scope.spawn(|| loop {
-                let j = next.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
-                let Some((s, k, spec)) = work.get(j) else {
-                    break;
-                };
-                let case = spec.clone().compute().unwrap();
-                computed.lock().unwrap().push((*s, *k, case));
-            });
-        }
+    on_all_cores(&work, |(s, k, spec)| {
+        let case = spec.clone().compute().unwrap();
+        computed.lock().unwrap().push((*s, *k, case));
     });
     let mut computed = computed.into_inner().unwrap();
     computed.sort_by_key(|(s, k, _)| (*s, *k));

@@ -48,11 +48,6 @@ impl Precision {
             span_errors: span_errors::<T>,
         }
     }
-
-    /// Its name in the tables: `f64`, `f32`, `f16`, `I16F16`, `I8F8`.
-    pub fn name(&self) -> String {
-        self.arithmetic.name().into_owned()
-    }
 }
 
 impl std::fmt::Debug for Precision {
@@ -61,6 +56,7 @@ impl std::fmt::Debug for Precision {
     }
 }
 
+/// Its name in the tables (`f64`, `f32`, `f16`, `I16F16`, `I8F8`): its arithmetic's.
 impl std::fmt::Display for Precision {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         write!(f, "{}", self.arithmetic)

@@ -424,7 +424,7 @@ mod tests {
 
     #[test]
     fn exact_runs_of_rational_methods_give_fractions() {
-        let r = span_report(&request(Method::CorrectedEuler, Arithmetic::Exact)).unwrap();
+        let r = span_report(&request(Method::Euler, Arithmetic::Exact)).unwrap();
         assert_eq!(r.fractions.as_ref().map(Vec::len), Some(5));
         assert!(r.error_bound.is_none());
         assert!(r.levels.iter().all(Option::is_some));

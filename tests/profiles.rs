@@ -25,6 +25,8 @@
 //! normalize-then-dot against it.
 
 mod common;
+/// The profiles' tables against the theorems' statements (`profile_tables::test`).
+mod profile_tables;
 
 use common::emu::{round_dir, toward_zero, Dir, Format as Emu, BINARY32};
 use common::*;

@@ -378,7 +378,7 @@ mod tests {
 
     #[test]
     fn a_published_set_is_trusted_and_another_file_refused_or_recomputed() {
-        let m = Method::CorrectedEuler;
+        let m = Method::Gouraud;
         let l = load_vectors(EDGE.to_string(), "edge.json", m, false, false).unwrap();
         assert!(!l.recomputed);
         let e = load_vectors(cut(3), "cut.json", m, false, false).unwrap_err();
@@ -389,23 +389,20 @@ mod tests {
         assert_eq!(r.file.cases.len(), 3);
         // The recomputed expectations are the published ones, case by case.
         for (a, b) in r.file.cases.iter().zip(&l.file.cases) {
-            assert_eq!(a.expected["corrected-euler"], b.expected["corrected-euler"]);
+            assert_eq!(a.expected["gouraud"], b.expected["gouraud"]);
         }
     }
 
     #[test]
     fn refusals_name_the_input_at_fault() {
-        let m = Method::CorrectedEuler;
+        let m = Method::Gouraud;
         let e = load_vectors("{".into(), "x.json", m, false, true).unwrap_err();
         assert_eq!(e.culprit, Culprit::Vectors);
         let mut v: serde_json::Value = serde_json::from_str(&cut(2)).unwrap();
         v["methods"] = serde_json::json!(["phong"]);
         let e = load_vectors(v.to_string(), "x.json", m, false, true).unwrap_err();
         assert_eq!(e.culprit, Culprit::Method);
-        assert!(
-            e.message.contains("'corrected-euler' is not in x.json"),
-            "{e}"
-        );
+        assert!(e.message.contains("'gouraud' is not in x.json"), "{e}");
         let mut v: serde_json::Value = serde_json::from_str(&cut(2)).unwrap();
         v["cases"][0]["n"] = (MAX_CASE_STEPS + 1).into();
         let e = load_vectors(v.to_string(), "x.json", m, false, true).unwrap_err();
@@ -424,14 +421,14 @@ mod tests {
 
     #[test]
     fn the_verdict_text_and_failure_line_follow_the_reports() {
-        let m = Method::CorrectedEuler;
+        let m = Method::Gouraud;
         let file = load_vectors(EDGE.to_string(), "edge.json", m, false, false)
             .unwrap()
             .file;
         let csv = |scale: f64| {
             let mut s = String::new();
             for c in &file.cases {
-                for (i, v) in c.expected["corrected-euler"].values.iter().enumerate() {
+                for (i, v) in c.expected["gouraud"].values.iter().enumerate() {
                     let v: f64 = v.parse().unwrap();
                     s += &format!("{},{i},{}\n", c.id, v * scale);
                 }
@@ -441,11 +438,11 @@ mod tests {
         let tol = Tolerance::Levels(0);
         let run = |scale: f64| {
             let res = parse_results(&csv(scale), "r.csv", &file, false).unwrap();
-            check(&file, &res, m, "corrected-euler", tol, false).unwrap()
+            check(&file, &res, m, "gouraud", tol, false).unwrap()
         };
         let good = run(1.0);
         assert_eq!(failure(&good), None);
-        let t = text(&file, &good, "corrected-euler", false, |u| u.kit_advice());
+        let t = text(&file, &good, "gouraud", false, |u| u.kit_advice());
         assert!(t.starts_with(&format!(
             "diffuse {} set 'edge'",
             crate::conformance::vectors::FORMAT_VERSION

@@ -374,3 +374,9 @@ methods! {
         },
     }
 }
+
+impl Method {
+    /// The paper's method, corrected Euler (eqs. 16–17): the test kit's default, the
+    /// method of the paper's Table 1 and Figures 3–4 in the studies.
+    pub const PAPER: Method = Method::CorrectedEuler;
+}

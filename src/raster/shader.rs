@@ -63,93 +63,105 @@ impl RowSetup {
     ];
 
     /// The span method whose values it computes (Phong of the field: Phong's, with the
-    /// normal normalized at every pixel rather than at the edges).
+    /// normal normalized at every pixel rather than at the edges): its row of
+    /// [`POLYGON`].
     pub fn method(self) -> Method {
-        match self {
-            RowSetup::BatchedGouraud => Method::Gouraud,
-            RowSetup::BatchedCorrectedEuler | RowSetup::SteppedCorrectedEuler => {
-                Method::CorrectedEuler
-            }
-            _ => Method::Phong,
-        }
+        polygon(Shader::Rows(self))
+            .after
+            .expect("every row set-up computes a span method (POLYGON)")
     }
 }
 
-/// The shaders that are not span methods.
-pub const POLYGON_SHADERS: [Shader; 12] = [
-    Shader::PhongPixel,
-    Shader::VertexGouraud,
-    Shader::VertexAngle,
-    Shader::BishopWeimerTriangle,
-    Shader::Seiler,
-    Shader::Rows(RowSetup::BatchedGouraud),
-    Shader::Rows(RowSetup::BatchedCorrectedEuler),
-    Shader::Rows(RowSetup::SteppedCorrectedEuler),
-    Shader::Rows(RowSetup::BatchedPhong),
-    Shader::Rows(RowSetup::BatchedPhongRsqrt),
-    Shader::Rows(RowSetup::FieldPhong),
-    Shader::Rows(RowSetup::FieldPhongRsqrt),
-];
+/// A shader that is not a span method, and its facts: one row of [`POLYGON`].
+#[derive(Clone, Copy, Debug)]
+pub struct Polygon {
+    /// The shader.
+    pub shader: Shader,
+    /// Its name in tables, file names and pictures.
+    pub label: &'static str,
+    /// The span method the comparison shows it after: the one it is the polygon form
+    /// of or is compared with; for a row set-up, the method whose values it computes.
+    /// `None` for the reference, which comes first.
+    pub after: Option<Method>,
+    /// Who it is by; `None`: the method it is shown after is.
+    pub source: Option<&'static str>,
+    /// Whether part of it is a reconstruction (see `docs/comparison.md`).
+    pub reconstructed: bool,
+}
 
-/// Where the comparison shows each polygon method: after the span method it is the
-/// polygon form of (or is compared with); the row set-ups after the method they
-/// compute.
-pub const POLYGON_AFTER: [(Method, Shader); 11] = [
-    (Method::Gouraud, Shader::VertexGouraud),
-    (Method::Gouraud, Shader::Rows(RowSetup::BatchedGouraud)),
-    (
-        Method::CorrectedEuler,
-        Shader::Rows(RowSetup::BatchedCorrectedEuler),
-    ),
-    (
-        Method::CorrectedEuler,
-        Shader::Rows(RowSetup::SteppedCorrectedEuler),
-    ),
-    (Method::Phong, Shader::Rows(RowSetup::BatchedPhong)),
-    (Method::Phong, Shader::Rows(RowSetup::BatchedPhongRsqrt)),
-    (Method::Phong, Shader::Rows(RowSetup::FieldPhong)),
-    (Method::Phong, Shader::Rows(RowSetup::FieldPhongRsqrt)),
-    (
-        Method::AngularTable(crate::method::SOURCE_TABLE),
-        Shader::VertexAngle,
-    ),
-    (Method::BishopWeimer, Shader::BishopWeimerTriangle),
-    (Method::BishopWeimer, Shader::Seiler),
-];
+const fn row(
+    shader: Shader,
+    label: &'static str,
+    after: Option<Method>,
+    source: Option<&'static str>,
+    reconstructed: bool,
+) -> Polygon {
+    Polygon {
+        shader,
+        label,
+        after,
+        source,
+        reconstructed,
+    }
+}
+
+/// Every shader that is not a span method, in the order of the tables: the one table
+/// of their facts.
+#[rustfmt::skip]
+pub const POLYGON: [Polygon; 12] = {
+    use RowSetup as R;
+    use Shader as S;
+    let ce = Some(Method::CorrectedEuler);
+    [
+        row(S::PhongPixel, "phong-pixel", None, Some("Phong 1975"), false),
+        row(S::VertexGouraud, "gouraud-vertex", Some(Method::Gouraud), Some("Gouraud 1971"), false),
+        row(S::VertexAngle, "vertex-angle", Some(Method::AngularTable(crate::method::SOURCE_TABLE)), Some("Mortensen 1995"), false),
+        row(S::BishopWeimerTriangle, "bishop-weimer-triangle", Some(Method::BishopWeimer), Some("Bishop & Weimer 1986"), false),
+        row(S::Seiler, "seiler", Some(Method::BishopWeimer), Some("Seiler 1998"), true),
+        row(S::Rows(R::BatchedGouraud), "gouraud-batched", Some(Method::Gouraud), None, false),
+        row(S::Rows(R::BatchedCorrectedEuler), "corrected-euler-batched", ce, None, false),
+        row(S::Rows(R::SteppedCorrectedEuler), "corrected-euler-stepped", ce, None, false),
+        row(S::Rows(R::BatchedPhong), "phong-batched", Some(Method::Phong), None, false),
+        row(S::Rows(R::BatchedPhongRsqrt), "phong-batched-rsqrt", Some(Method::Phong), None, false),
+        row(S::Rows(R::FieldPhong), "phong-field", Some(Method::Phong), None, false),
+        row(S::Rows(R::FieldPhongRsqrt), "phong-field-rsqrt", Some(Method::Phong), None, false),
+    ]
+};
+
+/// The row of [`POLYGON`] of a shader that is not a span method.
+///
+/// # Panics
+/// If `sh` is a span method or has no row (a test checks every one has).
+fn polygon(sh: Shader) -> &'static Polygon {
+    POLYGON
+        .iter()
+        .find(|p| p.shader == sh)
+        .expect("every shader that is not a span method has a row of POLYGON")
+}
 
 impl Shader {
     /// The name in tables, file names and pictures; a span method's is its catalogue
     /// name, and every label parses back ([`FromStr`]).
     pub fn label(&self) -> Cow<'static, str> {
-        Cow::Borrowed(match self {
-            Shader::Span(m) => return m.name(),
-            Shader::PhongPixel => "phong-pixel",
-            Shader::VertexGouraud => "gouraud-vertex",
-            Shader::VertexAngle => "vertex-angle",
-            Shader::BishopWeimerTriangle => "bishop-weimer-triangle",
-            Shader::Seiler => "seiler",
-            Shader::Rows(r) => match r {
-                RowSetup::BatchedGouraud => "gouraud-batched",
-                RowSetup::BatchedCorrectedEuler => "corrected-euler-batched",
-                RowSetup::SteppedCorrectedEuler => "corrected-euler-stepped",
-                RowSetup::BatchedPhong => "phong-batched",
-                RowSetup::BatchedPhongRsqrt => "phong-batched-rsqrt",
-                RowSetup::FieldPhong => "phong-field",
-                RowSetup::FieldPhongRsqrt => "phong-field-rsqrt",
-            },
-        })
+        match self {
+            Shader::Span(m) => m.name(),
+            _ => Cow::Borrowed(polygon(*self).label),
+        }
     }
 
     /// Who the method is by.
     pub fn source(&self) -> &'static str {
         match self {
             Shader::Span(m) => m.info().source,
-            Shader::PhongPixel => "Phong 1975",
-            Shader::VertexGouraud => "Gouraud 1971",
-            Shader::VertexAngle => "Mortensen 1995",
-            Shader::BishopWeimerTriangle => "Bishop & Weimer 1986",
-            Shader::Seiler => "Seiler 1998",
-            Shader::Rows(r) => r.method().info().source,
+            _ => {
+                let p = polygon(*self);
+                p.source.unwrap_or_else(|| {
+                    p.after
+                        .expect("a row of POLYGON without a source is shown after a method")
+                        .info()
+                        .source
+                })
+            }
         }
     }
 
@@ -157,8 +169,7 @@ impl Shader {
     pub fn reconstructed(&self) -> bool {
         match self {
             Shader::Span(m) => m.info().reconstructed,
-            Shader::Seiler => true,
-            _ => false,
+            _ => polygon(*self).reconstructed,
         }
     }
 
@@ -178,10 +189,10 @@ impl fmt::Display for Shader {
 impl FromStr for Shader {
     type Err = String;
     fn from_str(s: &str) -> Result<Self, Self::Err> {
-        POLYGON_SHADERS
+        POLYGON
             .iter()
-            .find(|p| p.label() == s)
-            .copied()
+            .find(|p| p.label == s)
+            .map(|p| p.shader)
             .map_or_else(|| s.parse().map(Shader::Span), Ok)
             .map_err(|e| e.to_string())
     }
@@ -196,12 +207,16 @@ mod tests {
         let all: Vec<Shader> = Method::ALL
             .into_iter()
             .map(Shader::Span)
-            .chain(POLYGON_SHADERS)
+            .chain(POLYGON.iter().map(|p| p.shader))
             .collect();
         let mut seen = std::collections::HashSet::new();
         for s in &all {
             assert_eq!(s.label().parse::<Shader>(), Ok(*s));
             assert!(seen.insert(s.label()), "two shaders labelled {s}");
+        }
+        // Every row set-up has its row, with the method it computes.
+        for r in RowSetup::ALL {
+            let _ = r.method();
         }
     }
 }

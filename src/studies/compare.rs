@@ -50,15 +50,15 @@ pub(crate) use rows::{shade_row, RowInfo, TriangleSetup};
 
 /// Every column of the comparison, the reference first: every span method of the
 /// catalogue ([`Method::ALL`], in its order), each followed by the polygon methods it
-/// is compared with ([`crate::raster::shader::POLYGON_AFTER`]). A method added to the
+/// is compared with ([`crate::raster::shader::POLYGON`]'s `after`). A method added to the
 /// catalogue appears here by itself.
 pub static COLUMNS: std::sync::LazyLock<Vec<Shader>> = std::sync::LazyLock::new(|| {
     let mut c = vec![Shader::PhongPixel];
     for m in Method::ALL {
         c.push(Shader::Span(m));
-        for (after, p) in crate::raster::shader::POLYGON_AFTER {
-            if after == m {
-                c.push(p);
+        for p in crate::raster::shader::POLYGON {
+            if p.after == Some(m) {
+                c.push(p.shader);
             }
         }
     }
@@ -354,7 +354,7 @@ impl Shading for Comparison {
             // The δ test on N·H, and what the power does to it: Gouraud of N·H (the
             // δ test's alternative: the linear N·H, power per pixel) against
             // corrected Euler's levels of (N·H)^s.
-            let ce = &levels[index(Shader::Span(Method::CorrectedEuler))];
+            let ce = &levels[index(super::render::CORRECTED_EULER)];
             let lin = &spec32[index(Shader::Span(Method::Gouraud))];
             for (k, pt) in powers.iter().enumerate() {
                 let same = lin.iter().zip(ce.iter()).all(|(a, c)| {

@@ -262,11 +262,7 @@ impl PaperTable2 {
         [
             (Method::Gouraud, "Gouraud", self.gouraud),
             (Method::Euler, "Euler", self.euler),
-            (
-                Method::CorrectedEuler,
-                "corrected Euler",
-                self.corrected_euler,
-            ),
+            (Method::PAPER, "corrected Euler", self.corrected_euler),
         ]
     }
 }

@@ -28,8 +28,8 @@ pub const PHONG: Shader = Shader::Span(Method::Phong);
 pub const GOURAUD: Shader = Shader::Span(Method::Gouraud);
 /// Plain Euler (eqs. 12–13), a column of Table 2.
 pub const EULER: Shader = Shader::Span(Method::Euler);
-/// Corrected Euler (eqs. 16–17), the paper's method.
-pub const CORRECTED_EULER: Shader = Shader::Span(Method::CorrectedEuler);
+/// Corrected Euler (eqs. 16–17), the paper's method ([`Method::PAPER`]).
+pub const CORRECTED_EULER: Shader = Shader::Span(Method::PAPER);
 
 /// The columns of Tables 1–2: the paper's span methods and the second source's, and
 /// classic vertex Gouraud; Phong first (the reference). Code finds a column by its

@@ -25,18 +25,14 @@ pub const TABLES: [&str; 3] = ["tables.md", "table1.csv", "table2.csv"];
 /// The renders of the 800-polygon torus, frame 37: file, method, and whether the
 /// highlights are left out (Figures 4–5 and the diffuse Gouraud render).
 const RENDERS: [(&str, Method, bool); 3] = [
-    (
-        "fig4_torus800_corrected_euler.png",
-        Method::CorrectedEuler,
-        false,
-    ),
+    ("fig4_torus800_corrected_euler.png", Method::PAPER, false),
     ("fig5_torus800_phong.png", Method::Phong, false),
     ("torus800_gouraud_diffuse.png", Method::Gouraud, true),
 ];
 
 /// The heat maps of each method's difference from Phong on the same frame.
 const DIFFS: [(&str, Method); 3] = [
-    ("diff_torus800_corrected_euler.png", Method::CorrectedEuler),
+    ("diff_torus800_corrected_euler.png", Method::PAPER),
     ("diff_torus800_gouraud.png", Method::Gouraud),
     ("diff_torus800_euler.png", Method::Euler),
 ];
@@ -59,7 +55,7 @@ const FIGURES: [(&str, &str, Method, &str); 3] = [
     (
         "fig3_phong_minus_corrected_euler.svg",
         "Figure 3: Phong − corrected Euler, normals 60° apart",
-        Method::CorrectedEuler,
+        Method::PAPER,
         "Phong − corrected Euler",
     ),
 ];

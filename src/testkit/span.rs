@@ -150,7 +150,7 @@ pub fn oracle(
 /// ```
 /// use phong_approx::testkit::prelude::*;
 /// let span = Span::new(unit_from_ints(0, 0, 1), unit_from_ints(1, 0, 3), unit_from_ints(0, 0, 1), 4).unwrap();
-/// let iv = acceptance::<f32>(Method::CorrectedEuler, &span, Profile::Ieee).unwrap();
+/// let iv = acceptance::<f32>(Method::Gouraud, &span, Profile::Ieee).unwrap();
 /// let mine = 0.8f32; // pixel 4 of some implementation
 /// assert!(iv[4].0 <= f64::from(mine) && f64::from(mine) <= iv[4].1);
 /// ```

@@ -30,7 +30,7 @@ impl Suite {
     pub fn published() -> Suite {
         Suite {
             sets: SETS.to_vec(),
-            method: Method::CorrectedEuler,
+            method: Method::PAPER,
             profile: Profile::Ieee,
             form: Form::Any,
             tolerance: None,

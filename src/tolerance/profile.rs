@@ -400,6 +400,3 @@ fn bound_with(
         }
     }
 }
-
-#[cfg(test)]
-mod tests;

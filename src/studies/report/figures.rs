@@ -93,7 +93,7 @@ pub fn scanline_figures(scene: &Scene) -> Result<Vec<(&'static str, String)>, Pi
                 ("Phong", as_levels(phong.clone())),
                 ("Gouraud", as_levels(values(Method::Gouraud))),
                 ("Euler", as_levels(values(Method::Euler))),
-                ("corrected Euler", as_levels(values(Method::CorrectedEuler))),
+                ("corrected Euler", as_levels(values(Method::PAPER))),
             ],
         )?,
     ));

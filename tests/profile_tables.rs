@@ -1,7 +1,8 @@
-//! The profiles' tables against the theorems' statements and the derivations.
+//! The profiles' tables (`src/tolerance/profile.rs`) against the theorems' statements
+//! and the derivations.
 
-use super::*;
-use crate::Method;
+use phong_approx::tolerance::profile::*;
+use phong_approx::{Format, Method};
 
 const F32: Format = Format::Binary32;
 const F64: Format = Format::Binary64;
@@ -223,7 +224,7 @@ fn a_declared_form_takes_its_own_theorems() {
             }
         }
     }
-    use crate::reference::unit::unit_from_ints;
+    use phong_approx::reference::unit::unit_from_ints;
     let span = crate::Span::new(
         unit_from_ints(0, 0, 1),
         unit_from_ints(1, 0, 3),
@@ -231,7 +232,7 @@ fn a_declared_form_takes_its_own_theorems() {
         8,
     )
     .unwrap();
-    let shape = crate::tolerance::Shape::of(&span);
+    let shape = phong_approx::tolerance::Shape::of(&span);
     let fixed = Profile::Fixed {
         int_bits: 16,
         frac_bits: 16,

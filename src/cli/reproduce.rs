@@ -8,7 +8,7 @@ use indicatif::{ProgressBar, ProgressStyle};
 use phong_approx::raster::mesh::NormalMode;
 use phong_approx::studies::experiment::Experiment;
 use phong_approx::studies::pictures::{save_png, Picture};
-use phong_approx::studies::report;
+use phong_approx::studies::reproduction;
 use std::path::PathBuf;
 use std::time::Instant;
 
@@ -112,7 +112,7 @@ pub fn run(a: &ReproduceArgs) -> Result<(), CliError> {
         return fit::run(a, &exp, fit_frames);
     }
     let out = OutDir::open(&a.out, a.force, "--out")?;
-    out.check_all(report::outputs())?;
+    out.check_all(reproduction::outputs())?;
     let started = Instant::now();
     let bar = ProgressBar::new(u64::from(frames) * 4);
     bar.set_style(
@@ -128,12 +128,12 @@ pub fn run(a: &ReproduceArgs) -> Result<(), CliError> {
             "the scene has no visible pixel (the torus is too small, or too large, for the image)",
         ));
     }
-    let tables = report::tables(&exp, &results, started.elapsed().as_secs_f64());
+    let tables = reproduction::tables(&exp, &results, started.elapsed().as_secs_f64());
     outp!("{}", tables[0].1)?;
     for (name, text) in &tables {
         out.write(name, text)?;
     }
-    for (name, picture) in report::pictures(&exp).map_err(|e| io_err(out.dir(), e))? {
+    for (name, picture) in reproduction::pictures(&exp).map_err(|e| io_err(out.dir(), e))? {
         match picture {
             Picture::Png(img) => {
                 let p = out.path_for(name)?;

@@ -1,7 +1,7 @@
 //! One verdict, as data: the vector file, the results, what judged them and a report
 //! per case, built once by [`judge`] — for `check`, the test kit and the GPU runner
 //! alike — and rendered by each caller: as text ([`Judgement::text`]), as JUnit or
-//! JSON ([`Judgement::junit`], [`Judgement::json`], in `report.rs`), as a one-line failure
+//! JSON ([`Judgement::junit`], [`Judgement::json`], in `export.rs`), as a one-line failure
 //! ([`Judgement::failure`]) or case by case ([`Judgement::failing`]).
 
 use super::check::{check_in, Advice, CaseReport, Results, Tolerance};

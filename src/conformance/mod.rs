@@ -5,16 +5,16 @@
 //!   references (committed under `vectors/`, with a JSON Schema).
 //! - [`check`]: reading an implementation's results and comparing them, with
 //!   per-method default tolerances from [`crate::tolerance`].
-//! - [`report`]: the verdict as JUnit XML or JSON, for other languages' CI.
+//! - [`export`]: the verdict as JUnit XML or JSON, for other languages' CI.
 //! - [`verdict`]: one check start to end: the vector file trusted or recomputed, and
 //!   the verdict as text.
 //!
 //! How to use it from C or a shader harness: `docs/conformance.md`.
 
 pub mod check;
+pub mod export;
 pub mod integrity;
 pub mod judgement;
-pub mod report;
 pub mod vectors;
 pub mod verdict;
 

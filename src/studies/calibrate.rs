@@ -20,8 +20,8 @@ use super::render::{index, Reading, Shader};
 use crate::Method;
 use std::collections::HashMap;
 
-mod report;
-pub use report::{
+mod outputs;
+pub use outputs::{
     describe, describe_fit, max_ratio_table, reach_table, report_md, residual_table,
     sensitivity_matrix, sensitivity_svg,
 };

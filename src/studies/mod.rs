@@ -10,7 +10,7 @@
 //!   same tori, and in every precision.
 //! - [`pictures`]: PNG renders, heat maps with their legends, SVG plots (Figures 1–5);
 //!   [`text`]: their labels, in embedded-graphics' mono font.
-//! - [`report`]: `reproduce`'s tables, CSVs and pictures, as strings and images.
+//! - [`reproduction`]: `reproduce`'s tables, CSVs and pictures, as strings and images.
 //! - [`compare_report`]: `compare`'s studies, report, CSVs and labelled picture grid.
 
 pub mod calibrate;
@@ -20,5 +20,5 @@ pub mod experiment;
 pub mod pictures;
 pub mod precision;
 pub mod render;
-pub mod report;
+pub mod reproduction;
 pub mod text;

@@ -1,7 +1,7 @@
 //! Pictures: PNG renders of a frame, difference heat maps, and SVG plots of one scan
 //! line (Figures 1–5 of the paper).
 
-use super::render::{Frame, Shader, COLUMNS};
+use super::render::{index, Frame, Shader};
 use super::text;
 use image::{Rgb, RgbImage};
 use plotters::prelude::*;
@@ -52,17 +52,10 @@ pub enum PictureError {
     },
 }
 
-fn column_index(col: Shader) -> usize {
-    COLUMNS
-        .iter()
-        .position(|c| *c == col)
-        .expect("a column of COLUMNS")
-}
-
 /// The frame as shaded by `col`: its diffuse 8-bit level, plus the specular term by
 /// the same method when the frame has one; a warm material on a dark background.
 pub fn shaded_image(frame: &Frame, col: Shader, look: Look) -> RgbImage {
-    let c = column_index(col);
+    let c = index(col);
     let mut img = RgbImage::from_pixel(frame.width, frame.height, BACKGROUND);
     for y in 0..frame.height {
         for x in 0..frame.width {
@@ -135,7 +128,7 @@ pub fn heat_map(
 /// A heat map of `|level(col) − level(reference)|` ([`heat_map`], colours
 /// [`heat_colour`]), without a legend.
 pub fn difference_image(frame: &Frame, col: Shader, reference: Shader) -> RgbImage {
-    let (c, r) = (column_index(col), column_index(reference));
+    let (c, r) = (index(col), index(reference));
     heat_map(
         frame.width,
         frame.height,
@@ -149,7 +142,7 @@ pub fn difference_image(frame: &Frame, col: Shader, reference: Shader) -> RgbIma
 /// `|level − <reference> level|, max <m>` and `method: <col>`, in the columns' table
 /// labels, and the colour bar.
 pub fn labelled_difference_image(frame: &Frame, col: Shader, reference: Shader) -> RgbImage {
-    let (c, r) = (column_index(col), column_index(reference));
+    let (c, r) = (index(col), index(reference));
     let (map, max) = heat_map(
         frame.width,
         frame.height,

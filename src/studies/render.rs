@@ -31,21 +31,30 @@ pub const EULER: Shader = Shader::Span(Method::Euler);
 /// Corrected Euler (eqs. 16–17), the paper's method ([`Method::PAPER`]).
 pub const CORRECTED_EULER: Shader = Shader::Span(Method::PAPER);
 
-/// The columns of Tables 1–2: the paper's span methods and the second source's, and
-/// classic vertex Gouraud; Phong first (the reference). Code finds a column by its
-/// shader ([`index`]), never by its position.
-pub const COLUMNS: [Shader; 10] = [
-    PHONG,
-    Shader::Span(Method::Duff),
-    Shader::Span(Method::SymmetricPhong),
-    GOURAUD,
-    Shader::VertexGouraud,
-    EULER,
-    CORRECTED_EULER,
-    Shader::Span(Method::Adaptive),
-    Shader::Span(Method::Angular),
-    Shader::Span(Method::AngularTable(crate::method::SOURCE_TABLE)),
-];
+/// The columns of Tables 1–2, read from the catalogue: every span method of the
+/// paper and of the second source (not [`Method::is_related`]: the
+/// related methods are the comparison's), in [`Method::ALL`]'s order — Phong first,
+/// the reference — and after span Gouraud classic vertex Gouraud, the polygon form of
+/// it (`raster::shader::POLYGON`) that a row's vertex intensities give. Code finds a
+/// column by its shader ([`index`]), never by its position; a method added to the
+/// catalogue in those families is a column by itself.
+pub static COLUMNS: std::sync::LazyLock<Vec<Shader>> = std::sync::LazyLock::new(|| {
+    let vertex_gouraud_after = crate::raster::shader::POLYGON
+        .iter()
+        .find(|p| p.shader == Shader::VertexGouraud)
+        .and_then(|p| p.after);
+    let mut c = Vec::new();
+    for m in Method::ALL {
+        if m.is_related() {
+            continue;
+        }
+        c.push(Shader::Span(m));
+        if Some(m) == vertex_gouraud_after {
+            c.push(Shader::VertexGouraud);
+        }
+    }
+    c
+});
 
 /// The position of `sh` in [`COLUMNS`].
 ///
@@ -239,190 +248,9 @@ pub struct Frame {
     pub stats: Stats,
 }
 
-fn vec3(v: G3) -> Vec3<f32> {
-    Vec3::new(v.x, v.y, v.z)
-}
-
-/// What one row's span produces for every column.
-struct RowShade {
-    levels: Vec<Vec<u8>>,
-    specular: Vec<Vec<f32>>,
-}
-
-/// Shades a row's span with every column in `f32`; `None` if the normals are
-/// unusable (zero after interpolation).
-fn shade_row(
-    scene: &Scene,
-    row: &Row,
-    prep: &Prepared<f32>,
-    want_specular: bool,
-) -> Option<(RowShade, RowExtra)> {
-    let na = row.left.normal.try_normalize()?;
-    let nb = row.right.normal.try_normalize()?;
-    let n = (row.x_last - row.x_first) as u32;
-    let cols = COLUMNS.len();
-    let mut levels = vec![Vec::with_capacity(n as usize + 1); cols];
-    let mut specular = vec![Vec::new(); cols];
-    let kd = scene.kd;
-    if n == 0 {
-        // One pixel: its normal is the edge normal, every method gives p_a.
-        let p = na.dot(scene.light);
-        let h = na.dot(scene.half()).max(0.0);
-        for c in 0..cols {
-            let v = if COLUMNS[c] == Shader::VertexGouraud {
-                row.left.intensity
-            } else {
-                p
-            };
-            levels[c].push(level(&(kd * v)));
-            if want_specular {
-                specular[c].push(h);
-            }
-        }
-        return Some((RowShade { levels, specular }, RowExtra::single()));
-    }
-    let span = Span::new(vec3(na), vec3(nb), vec3(scene.light), n).ok()?;
-    let mut out = vec![0.0f32; n as usize + 1];
-    let mut phong = Vec::new();
-    let mut text_same = true;
-    let mut decision = Choice::CorrectedEuler;
-    for (c, col) in COLUMNS.iter().enumerate() {
-        match col {
-            Shader::Span(m) => {
-                if let Some(d) = m.run(&span, prep, &mut out).ok()? {
-                    decision = d.choice;
-                }
-                if *col == PHONG {
-                    phong.clone_from(&out);
-                } else if *col == GOURAUD {
-                    text_same = truncated_difference_is_zero(&phong, &out, kd);
-                }
-            }
-            Shader::VertexGouraud => {
-                // Classic Gouraud: the vertex intensities, interpolated down the
-                // polygon's edges and along the row.
-                let (a, b) = (row.left.intensity, row.right.intensity);
-                for (i, o) in out.iter_mut().enumerate() {
-                    *o = a + (b - a) * (i as f32 / n as f32);
-                }
-            }
-            // COLUMNS holds span methods and vertex Gouraud only
-            // (`columns_are_span_methods_and_vertex_gouraud`).
-            other => unreachable!("{other:?} is not a column of the experiment"),
-        }
-        levels[c].extend(out.iter().map(|v| level(&(kd * v))));
-    }
-    if want_specular {
-        let span_h = Span::new(vec3(na), vec3(nb), vec3(scene.half()), n).ok()?;
-        for (c, col) in COLUMNS.iter().enumerate() {
-            // Classic Gouraud of N·H: vertex values are not kept per vertex here, so
-            // the span's edge values (exact) are interpolated.
-            let m = match col {
-                Shader::Span(m) => *m,
-                Shader::VertexGouraud => Method::Gouraud,
-                other => unreachable!("{other:?} is not a column of the experiment"),
-            };
-            m.run(&span_h, prep, &mut out).ok()?;
-            specular[c].extend(out.iter().map(|v| v.max(0.0)));
-        }
-    }
-    let extra = RowExtra {
-        single: false,
-        decision,
-        text_same,
-        span: Some(span),
-    };
-    Some((RowShade { levels, specular }, extra))
-}
-
-/// The paper's text criterion of Table 1 on one row: "the difference of Phong and
-/// Gouraud intensities was multiplied with 255 and then truncated" is zero at every
-/// pixel, `trunc(255·K_d·(Ph_i − G_i)) = 0`, i.e. `|255·K_d·(Ph_i − G_i)| < 1`.
-/// (Equal 8-bit levels imply it; it does not imply equal levels.)
-pub fn truncated_difference_is_zero(phong: &[f32], gouraud: &[f32], kd: f32) -> bool {
-    phong
-        .iter()
-        .zip(gouraud)
-        .all(|(p, g)| (255.0 * kd * (p - g)).abs() < 1.0)
-}
-
-/// What Table 1 and the exact mode need of a row beyond its levels.
-struct RowExtra {
-    single: bool,
-    decision: Choice,
-    /// The text's criterion of Table 1 (see [`RowStats::truncated_difference_zero`]).
-    text_same: bool,
-    span: Option<Span<f32>>,
-}
-
-impl RowExtra {
-    fn single() -> Self {
-        RowExtra {
-            single: true,
-            decision: Choice::Gouraud,
-            text_same: true,
-            span: None,
-        }
-    }
-}
-
-/// Exact levels of a row's span for every span column, for the exact mode: the same
-/// span, its `f32` inputs converted exactly (they are within 2^-17 of unit length).
-fn exact_row(
-    span: &Span<f32>,
-    prep: &Prepared<BigRational>,
-    got: &[Vec<u8>],
-    check: &mut ExactCheck,
-) {
-    let tol = BigRational::new(1.into(), (1u64 << 16).into());
-    let (Some(na), Some(nb), Some(l)) = (span.na.cast(), span.nb.cast(), span.l.cast()) else {
-        return;
-    };
-    let Ok(exact) = Span::<BigRational>::with_tolerance(na, nb, l, span.n, &tol) else {
-        return;
-    };
-    let cols = COLUMNS.len();
-    if check.mismatches.is_empty() {
-        check.mismatches = vec![0; cols];
-        check.explained = vec![0; cols];
-    }
-    check.pixels += u64::from(span.n) + 1;
-    let mut out = vec![BigRational::from_i64(0); span.len()];
-    let kd = &prep.kd;
-    let u = f32::unit_roundoff();
-    // The one q_min of the bounds (`Span::q_min`, rounded down in `Shape::of`).
-    let q_min = crate::tolerance::Shape::of(&exact).q_min;
-    for (c, col) in COLUMNS.iter().enumerate() {
-        let Shader::Span(m) = col else { continue };
-        // Phong-valued methods' levels come from p and q alone (no exact run needed).
-        if !m.is_phong_valued() && m.run(&exact, prep, &mut out).is_err() {
-            return;
-        }
-        // Phong-valued pixels: the exact level of p/√q (for q ≈ 1 edges the span's E
-        // is within 2^-16 of 1; p/√q is still what the f32 code computes).
-        let values: &[BigRational] = if m.is_phong_valued() { &[] } else { &out };
-        let levels = m.exact_levels(&exact, values, kd);
-        // Without a derived bound, no mismatch counts as explained.
-        let bound = crate::tolerance::bound(*m, exact.n, q_min, u)
-            .map_or(-1.0, |b| b * 255.0 + 8.0 * u * 255.0);
-        for (i, (&g, e)) in got[c].iter().zip(&levels).enumerate() {
-            // A level the exact run cannot decide is not counted either way.
-            if e.is_some_and(|e| e != g) {
-                check.mismatches[c] += 1;
-                // Distance of the exact scaled value from the nearest level boundary.
-                let v = if m.is_phong_valued() {
-                    use crate::scalar::Real;
-                    (exact.p_at(i as u32) / exact.q_at(i as u32).sqrt()).to_f64()
-                } else {
-                    out[i].to_f64()
-                } * 255.0;
-                if (v - v.round()).abs() <= bound {
-                    check.explained[c] += 1;
-                }
-            }
-        }
-    }
-}
+mod row;
+pub use row::truncated_difference_is_zero;
+use row::{exact_row, shade_row, RowShade};
 
 /// Options of [`render`].
 #[derive(Clone, Copy, Debug, Default)]
@@ -542,7 +370,8 @@ mod tests {
 
     #[test]
     fn columns_are_span_methods_and_vertex_gouraud() {
-        for c in COLUMNS {
+        assert_eq!(COLUMNS[0], PHONG, "the reference comes first");
+        for c in COLUMNS.iter() {
             assert!(
                 matches!(c, Shader::Span(_) | Shader::VertexGouraud),
                 "{c:?}: render_row shades span methods and vertex Gouraud only"

@@ -34,7 +34,7 @@
 //! ```
 //!
 //! Files: `inputs.rs` holds the embedded sets and what your function receives
-//! (published sets, inputs), `suite.rs` the runs over the published sets, `report.rs` the
+//! (published sets, inputs), `suite.rs` the runs over the published sets, `outcome.rs` the
 //! verdict as data, `span.rs` the oracle, the intervals and `check_span` on spans of
 //! your own, `strategy.rs` the proptest generators.
 //!
@@ -51,7 +51,7 @@
 //! span exactly.
 
 mod inputs;
-mod report;
+mod outcome;
 mod span;
 #[cfg(feature = "proptest")]
 pub mod strategy;
@@ -62,7 +62,7 @@ pub use crate::tolerance::profile::{Form, Profile};
 pub use crate::Format;
 pub use crate::Method;
 pub use inputs::{published, Float, Inputs, SETS};
-pub use report::{Failure, FailureInputs, Report, SetSummary};
+pub use outcome::{Failure, FailureInputs, Report, SetSummary};
 pub use span::{acceptance, check_span, oracle, KitError, Oracle, MAX_STEPS};
 pub use suite::Suite;
 

@@ -2,7 +2,7 @@
 //! intervals ([`acceptance`]) and the verdict ([`check_span`]) on spans of your own.
 
 use super::inputs::{Float, Inputs};
-use super::report::Report;
+use super::outcome::Report;
 use super::suite::judge;
 use crate::conformance::check::Tolerance;
 use crate::conformance::vectors::{case_for_span, file_of};

@@ -2,7 +2,7 @@
 //! judged as `check` judges them.
 
 use super::inputs::{published, Float, Inputs, SETS};
-use super::report::{self, case_inputs, Failure, Report};
+use super::outcome::{self, case_inputs, Failure, Report};
 use crate::conformance::check::{Results, Tolerance};
 use crate::conformance::vectors::{Case, VectorFile};
 use crate::tolerance::profile::{Form, Profile};
@@ -300,7 +300,7 @@ pub(crate) fn judge<T: Float>(
             return;
         }
     };
-    let j = report::Judged {
+    let j = outcome::Judged {
         set,
         key: &judged.key,
         profile: &judged_by,

@@ -90,7 +90,9 @@ pub(super) fn run(a: &ReproduceArgs, start: &Experiment, fit_frames: u32) -> Res
         md,
         "\nTable 1 of the best scene under every reading (percent of rows; in brackets with the one-pixel rows), beside the paper's:\n"
     );
-    md.push_str(&phong_approx::studies::report::table1_md(&best_results));
+    md.push_str(&phong_approx::studies::reproduction::table1_md(
+        &best_results,
+    ));
     let _ = writeln!(
         md,
         "\nStart scene: {} — {}; distance {:.3}, {} of 28 targets met.\n",

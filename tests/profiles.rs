@@ -1968,6 +1968,7 @@ fn adaptive_threshold_accepts_either_method() {
         let results = [(case.id.clone(), values)].into_iter().collect();
         let r = check_in(
             &vectors,
+            &phong_approx::conformance::check::shapes(&vectors),
             &results,
             Method::Adaptive,
             "adaptive",

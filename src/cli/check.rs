@@ -168,7 +168,7 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
             "vectors: not a published set; the expected values of {key} were recomputed from the file's inputs by the exact reference\n"
         ))?;
     }
-    let vectors = loaded.file;
+    let vectors = &loaded.file;
     let rtext = read_capped(&a.results, "--results", MAX_RESULTS_BYTES)?;
     let results =
         parse_results(&rtext, &a.results, &vectors, a.specular).map_err(|e| CliError {
@@ -178,6 +178,7 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
         })?;
     let judged = judge(
         &vectors,
+        &loaded.shapes,
         &results,
         method,
         tol,

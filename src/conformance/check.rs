@@ -20,6 +20,8 @@ use crate::quantize::level;
 pub struct CaseReport {
     /// Case id.
     pub id: String,
+    /// The case's position in the vector file's `cases` (its id's index).
+    pub case: usize,
     /// Pixels.
     pub pixels: usize,
     /// Largest |level − expected level|.
@@ -76,7 +78,27 @@ pub fn check(
     specular: bool,
 ) -> Result<Vec<CaseReport>, String> {
     let format = tol.format().unwrap_or(crate::Format::Binary32);
-    check_in(vectors, results, method, method_key, tol, specular, format)
+    let shapes = shapes(vectors);
+    check_in(
+        vectors, &shapes, results, method, method_key, tol, specular, format,
+    )
+}
+
+/// The shape of each case's exact span, in the file's case order: read once from the
+/// cases' exact inputs ([`super::integrity::case_span`]) and handed to [`check_in`] for
+/// the bounds (`q_min`, `n`, the related methods' whole-span facts). `None` for a case
+/// whose inputs are not an exact unit span (no bound reads it; its case fails).
+/// [`super::integrity::validate`] returns the same while it checks a file.
+pub fn shapes(vectors: &VectorFile) -> Vec<Option<crate::tolerance::Shape>> {
+    vectors
+        .cases
+        .iter()
+        .map(|c| {
+            super::integrity::case_span(c)
+                .ok()
+                .map(|span| crate::tolerance::Shape::of(&span))
+        })
+        .collect()
 }
 
 /// [`check`] for an implementation in `format`: ulps (of [`Tolerance::Ulps`] and of
@@ -84,8 +106,10 @@ pub fn check(
 ///
 /// # Errors
 /// As [`check`].
+#[allow(clippy::too_many_arguments)]
 pub fn check_in(
     vectors: &VectorFile,
+    shapes: &[Option<crate::tolerance::Shape>],
     results: &Results,
     method: Method,
     method_key: &str,
@@ -94,6 +118,13 @@ pub fn check_in(
     format: crate::Format,
 ) -> Result<Vec<CaseReport>, String> {
     tol.validate()?;
+    if shapes.len() != vectors.cases.len() {
+        return Err(format!(
+            "{} span shapes for {} cases: not this file's (see `shapes`)",
+            shapes.len(),
+            vectors.cases.len()
+        ));
+    }
     // The reference profile is the crate's own bounds.
     let tol = match tol {
         Tolerance::Profile {
@@ -104,7 +135,7 @@ pub fn check_in(
         t => t,
     };
     let mut reports = Vec::new();
-    for c in &vectors.cases {
+    for (k, (c, shape)) in vectors.cases.iter().zip(shapes).enumerate() {
         let exp: &Expected = if specular {
             let Some(sp) = &c.specular else { continue };
             sp.expected.get(method_key)
@@ -114,12 +145,9 @@ pub fn check_in(
         .ok_or_else(|| format!("the vector file has no method '{method_key}'"))?;
         let got = &results[&c.id];
         let start = std::time::Instant::now();
-        // The case's exact span, built once, for the bounds that read it.
-        let shape = matches!(tol, Tolerance::Default { .. } | Tolerance::Profile { .. })
-            .then(|| case_shape(c))
-            .flatten();
         let case = Judging {
             c,
+            k,
             shape: shape.as_ref(),
             tol,
             format,
@@ -137,11 +165,13 @@ pub fn check_in(
     Ok(reports)
 }
 
-/// A case being judged: the case, the shape of its exact span (`None` where the
-/// tolerance does not read it, or the span cannot be rebuilt), the tolerance and the
+/// A case being judged: the case, its position, the shape of its exact span (`None`
+/// where its inputs are not an exact unit span), the tolerance and the
 /// implementation's format.
 struct Judging<'a> {
     c: &'a Case,
+    /// Its position in the file.
+    k: usize,
     shape: Option<&'a crate::tolerance::Shape>,
     tol: Tolerance,
     format: crate::Format,
@@ -245,13 +275,6 @@ fn exceeds(g: f64, e: f64, ev: &str, b: f64) -> bool {
     let decimal = crate::BigRational::new(1.into(), num_bigint::BigInt::from(10).pow(29))
         * num_traits::Signed::abs(&eq);
     num_traits::Signed::abs(&(gq - eq)) > bq + decimal
-}
-
-/// The shape of a case's span (its exact inputs re-read), for the bounds.
-fn case_shape(c: &Case) -> Option<crate::tolerance::Shape> {
-    super::integrity::case_span(c)
-        .ok()
-        .map(|span| crate::tolerance::Shape::of(&span))
 }
 
 fn case_report(
@@ -421,6 +444,7 @@ fn case_report(
     };
     CaseReport {
         id: c.id.clone(),
+        case: j.k,
         pixels: got.len(),
         max_levels,
         mean_levels: sum_levels as f64 / got.len().max(1) as f64,

@@ -32,7 +32,7 @@ fn rows<'a>(
     reports
         .iter()
         .map(|r| {
-            let case = vectors.cases.iter().find(|c| c.id == r.id);
+            let case = vectors.cases.get(r.case);
             let exp = case.and_then(|c| {
                 if specular {
                     c.specular.as_ref().and_then(|s| s.expected.get(key))

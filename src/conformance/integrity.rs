@@ -12,6 +12,7 @@ use crate::parse::parse_rational;
 use crate::quantize::level;
 use crate::scalar::Scalar;
 use crate::span::Span;
+use crate::tolerance::Shape;
 use crate::BigRational;
 
 /// `vectors/SHA256SUMS`: the SHA-256 of the published vector files, in `sha256sum`'s
@@ -140,11 +141,12 @@ fn check_expected(
 /// Checks every invariant of a vector file: a supported version, the stated number of
 /// cases, unique ids, `1 ≤ n ≤` [`MAX_CASE_STEPS`], exact unit inputs, `q_min` equal to
 /// the span's, every method's `n + 1` finite values within range with consistent
-/// levels, and a valid adaptive decision.
+/// levels, and a valid adaptive decision. Returns the shape of each case's exact span,
+/// built here once, for the bounds of [`super::check::check_in`].
 ///
 /// # Errors
 /// The first problem found, naming the case.
-pub fn validate(file: &VectorFile) -> Result<(), String> {
+pub fn validate(file: &VectorFile) -> Result<Vec<Option<Shape>>, String> {
     let major = file.version.split('.').next().unwrap_or("");
     if major != "1" {
         return Err(format!(
@@ -179,6 +181,7 @@ pub fn validate(file: &VectorFile) -> Result<(), String> {
         }
     }
     let mut ids = std::collections::HashSet::new();
+    let mut shapes = Vec::with_capacity(file.cases.len());
     for c in &file.cases {
         if c.id.is_empty() || !ids.insert(c.id.as_str()) {
             return Err(format!(
@@ -222,6 +225,7 @@ pub fn validate(file: &VectorFile) -> Result<(), String> {
                 check_expected(&c.id, &format!("specular {m}"), c.n, e, None)?;
             }
         }
+        shapes.push(Some(Shape::of(&span)));
     }
-    Ok(())
+    Ok(shapes)
 }

@@ -6,6 +6,7 @@
 
 use super::check::{check_in, Advice, CaseReport, Results, Tolerance};
 use super::vectors::{method_key, Case, VectorFile};
+use crate::tolerance::Shape;
 use crate::{Format, Method};
 use std::collections::HashMap;
 
@@ -31,12 +32,14 @@ pub struct Judgement<'a> {
 }
 
 /// Judges `results` against `vectors` for `method` ([`check_in`]): the one verdict
-/// every caller renders.
+/// every caller renders. `shapes`: the file's exact spans' ([`super::check::shapes`],
+/// or what [`super::integrity::validate`] or [`super::verdict::load_vectors`] read).
 ///
 /// # Errors
 /// As [`check_in`]: a method the file does not hold, a tolerance that means nothing.
 pub fn judge<'a>(
     vectors: &'a VectorFile,
+    shapes: &[Option<Shape>],
     results: &'a Results,
     method: Method,
     tolerance: Tolerance,
@@ -44,7 +47,9 @@ pub fn judge<'a>(
     format: Format,
 ) -> Result<Judgement<'a>, String> {
     let key = method_key(method);
-    let reports = check_in(vectors, results, method, &key, tolerance, specular, format)?;
+    let reports = check_in(
+        vectors, shapes, results, method, &key, tolerance, specular, format,
+    )?;
     Ok(Judgement {
         vectors,
         results,

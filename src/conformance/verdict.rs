@@ -52,6 +52,9 @@ pub struct Loaded {
     /// `true` when the file is not a published set and the expectations of the
     /// method were recomputed from its inputs.
     pub recomputed: bool,
+    /// The shape of each case's exact span, read once while the file was validated:
+    /// what [`crate::conformance::judgement::judge`] takes.
+    pub shapes: Vec<Option<crate::tolerance::Shape>>,
 }
 
 /// The vector file `text` (named `name` in messages) for checking `method`: a
@@ -95,7 +98,7 @@ pub fn load_vectors(
         drop(text);
         recompute(name, &inputs, method, specular)?
     };
-    validate(&file).map_err(vectors_error)?;
+    let shapes = validate(&file).map_err(vectors_error)?;
     let key = method_key(method);
     if !file.methods.contains(&key) {
         return Err(missing_method(name, &key, &file.methods));
@@ -109,6 +112,7 @@ pub fn load_vectors(
     Ok(Loaded {
         file,
         recomputed: !published,
+        shapes,
     })
 }
 
@@ -287,7 +291,7 @@ pub(crate) fn text(
     let margin = reports.iter().map(|r| r.ratio).fold(0.0, f64::max);
     s += &format!("\noverall: {px} pixels, max Δlevel {max_l}, mean Δlevel {mean:.4}, max |Δ| {max_a:.3e}, max {max_u:.1} {format} ulps, largest use of the allowance {}\n", times_allowed(margin));
     if let Some(w) = worst(reports) {
-        if let Some(c) = vectors.cases.iter().find(|c| c.id == w.id) {
+        if let Some(c) = vectors.cases.get(w.case) {
             s += &format!(
                 "worst case {} (pixel {}, {} allowed, {} levels off): {}; Na = ({}), Nb = ({}), L = ({}), n = {}\n",
                 shown(&w.id),

@@ -6,6 +6,7 @@ pub use crate::conformance::vectors::SETS;
 
 use crate::conformance::integrity::{published_set, sha256_hex};
 use crate::conformance::vectors::{VectorFile, VectorInput};
+use crate::tolerance::Shape;
 use std::fmt;
 use std::sync::OnceLock;
 
@@ -46,6 +47,16 @@ pub fn published(set: &str) -> Option<&'static VectorFile> {
         );
         serde_json::from_str(text).expect("the published sets parse")
     }))
+}
+
+/// The shape of each case's exact span of the published set `set`, in its case order
+/// ([`crate::conformance::check::shapes`]), read once per process.
+pub(crate) fn published_shapes(set: &str) -> Option<&'static [Option<Shape>]> {
+    static SHAPES: [OnceLock<Vec<Option<Shape>>>; 3] =
+        [OnceLock::new(), OnceLock::new(), OnceLock::new()];
+    let k = EMBEDDED.iter().position(|(name, _)| *name == set)?;
+    let file = published(set)?;
+    Some(SHAPES[k].get_or_init(|| crate::conformance::check::shapes(file)))
 }
 
 /// One span as your function receives it: the nearest floats of the exact unit inputs

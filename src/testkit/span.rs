@@ -90,7 +90,18 @@ pub fn check_span<T: Float, F: FnMut(&Inputs<T>) -> Vec<T>>(
         format!("the {profile} profile's bound"),
         T::FORMAT.name(),
     );
-    judge(&mut report, "span", &file, method, tol, false, &mut shade);
+    // The span is exact already: its shape is read from it, not from the case's text.
+    let shapes = [Some(crate::tolerance::Shape::of(span))];
+    judge(
+        &mut report,
+        "span",
+        &file,
+        &shapes,
+        method,
+        tol,
+        false,
+        &mut shade,
+    );
     Ok(report)
 }
 

@@ -1,10 +1,10 @@
 //! [`Suite`]: the published vectors for one method, run through your function and
 //! judged as `check` judges them.
 
-use super::inputs::{published, Float, Inputs, SETS};
+use super::inputs::{published, published_shapes, Float, Inputs, SETS};
 use super::outcome::{self, case_inputs, Failure, Report};
 use crate::conformance::check::{Results, Tolerance};
-use crate::conformance::vectors::{Case, VectorFile};
+use crate::conformance::vectors::VectorFile;
 use crate::tolerance::profile::{Form, Profile};
 use crate::Method;
 
@@ -212,20 +212,19 @@ impl Suite {
         }
         let mut found = false;
         for set in &self.sets {
-            let Some(file) = published(set) else {
+            let (Some(file), Some(shapes)) = (published(set), published_shapes(set)) else {
                 continue;
             };
             let chosen;
-            let file = match &self.case {
-                None => file,
+            let (file, shapes) = match &self.case {
+                None => (file, shapes.to_vec()),
                 Some(id) => {
-                    let cases: Vec<Case> =
-                        file.cases.iter().filter(|c| &c.id == id).cloned().collect();
-                    if cases.is_empty() {
+                    let Some(k) = file.cases.iter().position(|c| &c.id == id) else {
                         continue;
-                    }
+                    };
+                    let cases = vec![file.cases[k].clone()];
                     chosen = crate::conformance::vectors::file_of(&file.set, cases);
-                    &chosen
+                    (&chosen, vec![shapes[k].clone()])
                 }
             };
             found = true;
@@ -233,6 +232,7 @@ impl Suite {
                 &mut report,
                 set,
                 file,
+                &shapes,
                 self.method,
                 tol,
                 self.specular,
@@ -261,6 +261,7 @@ pub(crate) fn judge<T: Float>(
     report: &mut Report,
     set: &'static str,
     file: &VectorFile,
+    shapes: &[Option<crate::tolerance::Shape>],
     method: Method,
     tol: Tolerance,
     specular: bool,
@@ -281,6 +282,7 @@ pub(crate) fn judge<T: Float>(
     let judged_by = report.judged_by.clone();
     let judged = match crate::conformance::judgement::judge(
         file,
+        shapes,
         &results,
         method,
         tol,

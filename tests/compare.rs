@@ -172,26 +172,6 @@ fn cli_compare_writes_its_tables_and_pictures() {
     let _ = std::fs::remove_dir_all(out);
 }
 
-#[test]
-fn cli_compare_rejects_bad_arguments() {
-    for (args, needle) in [
-        (vec!["--frames", "0"], "--frames"),
-        (vec!["--spans", "x"], "--spans"),
-        (vec!["--size", "5x5"], "--size"),
-        (vec!["--precision-frames", "-3"], "--precision-frames"),
-    ] {
-        let o = runner::bin()
-            .arg("compare")
-            .args(&args)
-            .output()
-            .expect("runs");
-        assert_eq!(o.status.code(), Some(2), "{args:?}");
-        let err = String::from_utf8_lossy(&o.stderr);
-        assert_eq!(err.trim().lines().count(), 1, "{err}");
-        assert!(err.contains(needle), "{err}");
-    }
-}
-
 /// The row set-ups of `fast_rows` as columns: on one frame each is within one level of
 /// its span method at every pixel's level statistics (same mean to 0.01, max within
 /// one), corrected Euler's and Phong's within one level of the reference, Phong of

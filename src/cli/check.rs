@@ -170,14 +170,13 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
     }
     let vectors = &loaded.file;
     let rtext = read_capped(&a.results, "--results", MAX_RESULTS_BYTES)?;
-    let results =
-        parse_results(&rtext, &a.results, &vectors, a.specular).map_err(|e| CliError {
-            message: e.to_string(),
-            code: 2,
-            details: Vec::new(),
-        })?;
+    let results = parse_results(&rtext, &a.results, vectors, a.specular).map_err(|e| CliError {
+        message: e.to_string(),
+        code: 2,
+        details: Vec::new(),
+    })?;
     let judged = judge(
-        &vectors,
+        vectors,
         &loaded.shapes,
         &results,
         method,

@@ -224,7 +224,7 @@ impl Suite {
                     };
                     let cases = vec![file.cases[k].clone()];
                     chosen = crate::conformance::vectors::file_of(&file.set, cases);
-                    (&chosen, vec![shapes[k].clone()])
+                    (&chosen, vec![shapes[k]])
                 }
             };
             found = true;
@@ -257,6 +257,7 @@ impl Suite {
 
 /// Runs `shade` on every case of `file` (the specular ones for `specular`), judges the
 /// values as `check` does, and adds the set to `report`.
+#[allow(clippy::too_many_arguments)]
 pub(crate) fn judge<T: Float>(
     report: &mut Report,
     set: &'static str,

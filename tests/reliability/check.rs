@@ -568,3 +568,193 @@ fn a_level_near_a_boundary_is_decided_with_more_bits() {
     assert!(one.clone() / (one + t2) > BigRational::new(200.into(), 255.into()).pow(2));
     assert_eq!(j["levels"][1], 200, "{j}");
 }
+
+/// Defect d11 of the reliability rounds (docs/conformance.md, "Limits and exit codes").
+#[test]
+fn echoed_input_is_cut_and_escaped() {
+    let d = scratch("d11");
+    let v = root().join("vectors/typical.json").display().to_string();
+    // An id of 10 MB is a line too long to be a row; one of 4000 characters is an
+    // unknown id, shown cut and escaped.
+    for (len, needle) in [(10_000_000, "bytes long"), (4000, "unknown case id")] {
+        let id = format!("\x1b[31m{}", "x".repeat(len));
+        let r = write(&d, "r.csv", &format!("case,pixel,value\n{id},0,0.5\n"));
+        let o = run(&["check", "--vectors", &v, "--results", &r]);
+        refused(&o, needle);
+        let e = stderr(&o);
+        assert!(e.len() < 2000, "{} bytes of stderr", e.len());
+        assert!(!e.contains('\x1b'), "raw escape byte");
+    }
+}
+
+/// Defect q15 of the reliability rounds (docs/conformance.md, "Limits and exit codes").
+#[test]
+fn check_messages_say_what_is_wrong() {
+    let v = root().join("vectors/typical.json").display().to_string();
+    refused(
+        &run(&["check", "--vectors", "-", "--results", "-"]),
+        "cannot be both --vectors and --results",
+    );
+    let d = scratch("q15");
+    let bom = write(&d, "bom.json", "\u{feff}{\"cases\": []}");
+    let o = run(&["check", "--vectors", &v, "--results", &bom]);
+    assert_eq!(code(&o), 2);
+    assert!(!stderr(&o).contains("columns"), "{}", stderr(&o));
+    let arr = write(&d, "arr.json", "[1, 2]");
+    let o = run(&["check", "--vectors", &v, "--results", &arr]);
+    assert!(!stderr(&o).contains("columns"), "{}", stderr(&o));
+    // 1e400 is refused alike in CSV and JSON.
+    let csv = write(&d, "big.csv", "typical-001,0,1e400\n");
+    refused(
+        &run(&["check", "--vectors", &v, "--results", &csv]),
+        "outside the range of f64",
+    );
+    let json = write(
+        &d,
+        "big.json",
+        "{\"cases\": [{\"id\": \"typical-001\", \"values\": [1e400]}]}",
+    );
+    refused(
+        &run(&["check", "--vectors", &v, "--results", &json]),
+        "outside the range of f64",
+    );
+    // A line of exactly the limit, with CRLF, is not refused for its length.
+    let long = format!("# {}\r\n", "x".repeat(4094));
+    let f = write(&d, "crlf.csv", &(long + &results_csv(&typical())));
+    let o = run(&["check", "--vectors", &v, "--results", &f]);
+    assert!(!stderr(&o).contains("bytes long"), "{}", stderr(&o));
+}
+
+/// Writes `text` to a fresh file named `name` of the scratch folder `check-malformed`.
+fn tmp(name: &str, text: &str) -> PathBuf {
+    let p = std::env::temp_dir().join(format!("phong-approx-rel-{}-m-{name}", std::process::id()));
+    std::fs::write(&p, text).unwrap();
+    p
+}
+
+/// `check` of `results` against `vectors` with `extra`: exit code, stdout, stderr.
+fn run_check(vectors: &str, results: &Path, extra: &[&str]) -> (i32, String, String) {
+    let out = runner::bin()
+        .args(["check", "--vectors", vectors, "--results"])
+        .arg(results)
+        .args(extra)
+        .output()
+        .unwrap();
+    (
+        code(&out),
+        String::from_utf8_lossy(&out.stdout).into_owned(),
+        stderr(&out),
+    )
+}
+
+fn typical_path() -> String {
+    root().join("vectors/typical.json").display().to_string()
+}
+
+fn malformed(text: &str, needle: &str) {
+    let p = tmp("m.csv", text);
+    let (code, out, err) = run_check(&typical_path(), &p, &[]);
+    assert_eq!(code, 2, "{needle}: {out}{err}");
+    assert_eq!(err.trim_end().lines().count(), 1, "{err}");
+    assert!(
+        err.contains(&p.display().to_string()),
+        "file not named: {err}"
+    );
+    assert!(err.contains(needle), "'{err}' lacks '{needle}'");
+    assert!(!err.contains("panicked"));
+}
+
+#[test]
+fn malformed_results_get_one_line_naming_file_line_and_problem() {
+    // The exact corrected-Euler values of the typical set: every line passes.
+    let good = results_csv(&typical());
+    let lines: Vec<&str> = good.lines().collect();
+    let with = |k: usize, replacement: &str| {
+        let mut v: Vec<String> = lines.iter().map(|s| s.to_string()).collect();
+        v[k] = replacement.to_string();
+        v.join("\n")
+    };
+    malformed(
+        &with(3, "typical-001,2"),
+        ":4: expected 3 columns (case,pixel,value), found 2",
+    );
+    malformed(&with(3, "typical-001,2,0.5,9"), ":4: expected 3 columns");
+    malformed(
+        &with(3, "typical-001,2,abc"),
+        ":4: value 'abc' is not a number",
+    );
+    // A NaN or an infinity is a result, and fails its pixel (exit 1, named).
+    for bad in ["NaN", "inf", "-Infinity"] {
+        let p = tmp("nonfinite.csv", &with(3, &format!("typical-001,2,{bad}")));
+        let (code, out, err) = run_check(&typical_path(), &p, &[]);
+        assert_eq!(code, 1, "{bad}: {out}{err}");
+        assert!(
+            err.contains("worst: typical-001 (pixel 2 is not finite)"),
+            "{bad}: {err}"
+        );
+        assert!(out.contains("not finite at pixel 2"), "{out}");
+        assert!(!out.contains("NaN") && !out.contains(" inf"), "{out}");
+    }
+    malformed(
+        &with(3, "typical-001,two,0.5"),
+        ":4: pixel 'two' is not a whole number",
+    );
+    malformed(
+        &with(3, "nosuch-001,2,0.5"),
+        ":4: unknown case id 'nosuch-001'",
+    );
+    malformed(
+        &with(3, "typical-001,99,0.5"),
+        ":4: pixel 99 is out of range for case typical-001",
+    );
+    malformed(
+        &with(3, "typical-001,1,0.5"),
+        ":4: duplicate row for case typical-001 pixel 1 (first at line 3)",
+    );
+    // typical-001 has n = 2: dropping pixel 2 leaves it missing.
+    malformed(
+        &with(3, "# dropped"),
+        "at end of file: case typical-001 has no value for pixel 2",
+    );
+    // Header, typical-001 (n = 2) and typical-002 (n = 3): typical-003 is missing.
+    malformed(
+        &lines[..8].join("\n"),
+        "at end of file: case typical-003 is missing",
+    );
+    malformed("", ":1: the file holds no results");
+    malformed("case,pixel,value\n", ":1: the file holds no results");
+    malformed("{\"cases\": [", "not a results file");
+    malformed("\u{1}\u{2}garbage,,", ":1: unknown case id");
+    malformed("\u{1}\u{2}garbage", ":1: expected 3 columns");
+    // A file over the size limit is refused before it is read.
+    let big =
+        std::env::temp_dir().join(format!("phong-approx-conf-{}-big.csv", std::process::id()));
+    let f = std::fs::File::create(&big).unwrap();
+    f.set_len(phong_approx::conformance::check::MAX_RESULTS_BYTES + 1)
+        .unwrap();
+    let (code, _, err) = run_check(&typical_path(), &big, &[]);
+    assert_eq!(code, 2);
+    assert!(err.contains("larger than 256 MiB"), "{err}");
+    let _ = std::fs::remove_file(big);
+    // Bad arguments.
+    let p = tmp("ok.csv", &good);
+    for (args, needle) in [
+        (vec!["--tolerance", "levels=x"], "--tolerance:"),
+        (vec!["--tolerance", "rel=1"], "unknown tolerance 'rel'"),
+        (vec!["--method", "bishop"], "--method: unknown method"),
+        (
+            vec!["--precision", "f16"],
+            "--precision: unknown value 'f16'",
+        ),
+    ] {
+        let (code, _, err) = run_check(&typical_path(), &p, &args);
+        assert_eq!(code, 2, "{args:?}");
+        assert!(err.contains(needle), "{args:?}: {err}");
+    }
+    let (code, _, err) = run_check("/nonexistent/vectors.json", &p, &[]);
+    assert_eq!(code, 2);
+    assert!(
+        err.contains("--vectors: /nonexistent/vectors.json"),
+        "{err}"
+    );
+}

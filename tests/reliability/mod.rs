@@ -16,8 +16,10 @@ use std::process::{Output, Stdio};
 use std::time::{Duration, Instant};
 
 mod check;
+mod compare;
 mod library;
 mod outputs;
+mod reproduce;
 mod span;
 
 fn root() -> &'static Path {

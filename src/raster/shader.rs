@@ -1,7 +1,10 @@
 //! What the harness can shade a row with: every span method of the catalogue
 //! ([`Method`]), and the methods that are set up per polygon rather than per span.
 
-use crate::Method;
+use crate::adaptive::Choice;
+use crate::method::Prepared;
+use crate::scalar::Real;
+use crate::{Method, Span};
 use std::borrow::Cow;
 use std::fmt;
 use std::str::FromStr;
@@ -178,6 +181,41 @@ impl Shader {
     pub fn power_from_table(&self) -> bool {
         matches!(self, Shader::BishopWeimerTriangle | Shader::Seiler)
     }
+}
+
+/// Shades one row of `n + 1` pixels with every shader of `which`, into
+/// `out[slot(shader)]` (each cleared and filled with `n + 1` values): the one way every
+/// study shades a row. A span method runs on `span`, the row's span between its unit
+/// edge normals (`None` for a one-pixel row: its value is `p_a`, the edge normal's);
+/// a polygon shader is the study's own set-up, `polygon(shader, values)`. Returns the
+/// adaptive scheme's pick where it ran (`Some(None)` where it did not), or `None`
+/// where a method or the set-up cannot shade the row.
+pub fn shade_row<T: Real>(
+    span: Option<&Span<T>>,
+    p_a: &T,
+    prep: &Prepared<T>,
+    which: &[Shader],
+    slot: impl Fn(Shader) -> usize,
+    out: &mut [Vec<T>],
+    polygon: &mut dyn FnMut(Shader, &mut [T]) -> Option<()>,
+) -> Option<Option<Choice>> {
+    let len = span.map_or(1, |s| s.n as usize + 1);
+    let mut choice = None;
+    for &sh in which {
+        let o = &mut out[slot(sh)];
+        o.clear();
+        o.resize(len, T::zero());
+        match (sh, span) {
+            (Shader::Span(_), None) => o[0] = p_a.clone(),
+            (Shader::Span(m), Some(span)) => {
+                if let Some(d) = m.run(span, prep, o).ok()? {
+                    choice = Some(d.choice);
+                }
+            }
+            _ => polygon(sh, o)?,
+        }
+    }
+    Some(choice)
 }
 
 impl fmt::Display for Shader {

@@ -241,7 +241,6 @@ pub(crate) fn shade_row<T: RowKernels>(
     out: &mut [Vec<T>],
 ) -> Option<RowInfo<T>> {
     let dir = &s.dirs[d];
-    let len = n as usize + 1;
     let (tx0, ty) = (to_t::<T>(x0), to_t::<T>(y));
     let txn = to_t::<T>(x0 + f64::from(n));
     let unit = |v: Vec3<T>| -> Option<Vec3<T>> {
@@ -268,35 +267,41 @@ pub(crate) fn shade_row<T: RowKernels>(
     };
     let p_a = na.dot(&dir.dir);
     let p_b = nb.dot(&dir.dir);
-    let mut choice = Choice::Gouraud;
-    for &sh in which {
-        let o = &mut out[index(sh)];
-        o.clear();
-        o.resize(len, T::zero());
-        match (sh, &span) {
-            (Shader::PhongPixel, _) => {
-                for (j, v) in o.iter_mut().enumerate() {
-                    let x = to_t::<T>(x0 + j as f64);
-                    *v = unit(s.normal(&x, &ty))?.dot(&dir.dir);
+    // The one row shader: the span methods on the row's span, the polygon methods on
+    // the triangle's set-up for this direction.
+    let choice = crate::raster::shader::shade_row(
+        span.as_ref(),
+        &p_a,
+        prep,
+        which,
+        index,
+        out,
+        &mut |sh, o| {
+            match sh {
+                Shader::PhongPixel => {
+                    for (j, v) in o.iter_mut().enumerate() {
+                        let x = to_t::<T>(x0 + j as f64);
+                        *v = unit(s.normal(&x, &ty))?.dot(&dir.dir);
+                    }
                 }
-            }
-            (Shader::VertexGouraud, _) => dir.gouraud.shade_row(&tx0, &ty, o),
-            (Shader::VertexAngle, _) => {
-                vertex_angle::shade_row(&dir.angle, prep.table.as_ref()?, &tx0, &ty, o)
-            }
-            (Shader::BishopWeimerTriangle, _) => dir.taylor.shade_row(&tx0, &ty, o),
-            (Shader::Seiler, _) => dir.seiler.shade_row(&tx0, &ty, o),
-            (Shader::Rows(r), _) => T::shade_rows(s.rows.get(d)?, r, x0, y, n, o)?,
-            (Shader::Span(_), None) => o[0] = p_a.clone(),
-            (Shader::Span(m), Some(span)) => {
-                if let Some(d) = m.run(span, prep, o).ok()? {
-                    choice = d.choice;
+                Shader::VertexGouraud => dir.gouraud.shade_row(&tx0, &ty, o),
+                Shader::VertexAngle => {
+                    vertex_angle::shade_row(&dir.angle, prep.table.as_ref()?, &tx0, &ty, o)
                 }
+                Shader::BishopWeimerTriangle => dir.taylor.shade_row(&tx0, &ty, o),
+                Shader::Seiler => dir.seiler.shade_row(&tx0, &ty, o),
+                Shader::Rows(r) => T::shade_rows(s.rows.get(d)?, r, x0, y, n, o)?,
+                Shader::Span(_) => unreachable!("the row shader runs the span methods"),
             }
-        }
-        if o.iter().any(|v| !v.is_finite()) {
-            return None;
-        }
+            Some(())
+        },
+    )?
+    .unwrap_or(Choice::Gouraud);
+    if which
+        .iter()
+        .any(|&sh| out[index(sh)].iter().any(|v| !v.is_finite()))
+    {
+        return None;
     }
     Some(RowInfo {
         choice,

@@ -14,8 +14,10 @@ pub(super) struct RowShade {
     pub(super) specular: Vec<Vec<f32>>,
 }
 
-/// Shades a row's span with every column in `f32`; `None` if the normals are
-/// unusable (zero after interpolation).
+/// Shades a row's span with every column in `f32`, through the one row shader
+/// ([`crate::raster::shader::shade_row`]): the span methods on the row's unit edge
+/// normals, classic vertex Gouraud from the row's vertex intensities. `None` if the
+/// normals are unusable (zero after interpolation).
 pub(super) fn shade_row(
     scene: &Scene,
     row: &Row,
@@ -25,77 +27,78 @@ pub(super) fn shade_row(
     let na = row.left.normal.try_normalize()?;
     let nb = row.right.normal.try_normalize()?;
     let n = (row.x_last - row.x_first) as u32;
-    let cols = COLUMNS.len();
-    let mut levels = vec![Vec::with_capacity(n as usize + 1); cols];
-    let mut specular = vec![Vec::new(); cols];
     let kd = scene.kd;
-    if n == 0 {
-        // One pixel: its normal is the edge normal, every method gives p_a.
-        let p = na.dot(scene.light);
-        let h = na.dot(scene.half()).max(0.0);
-        for c in 0..cols {
-            let v = if COLUMNS[c] == Shader::VertexGouraud {
-                row.left.intensity
-            } else {
-                p
-            };
-            levels[c].push(level(&(kd * v)));
-            if want_specular {
-                specular[c].push(h);
-            }
+    // One pixel: its normal is the edge normal, every method gives p_a.
+    let span_to = |dir: G3| -> Option<Option<Span<f32>>> {
+        match n {
+            0 => Some(None),
+            _ => Span::new(vec3(na), vec3(nb), vec3(dir), n).ok().map(Some),
         }
-        return Some((RowShade { levels, specular }, RowExtra::single()));
-    }
-    let span = Span::new(vec3(na), vec3(nb), vec3(scene.light), n).ok()?;
-    let mut out = vec![0.0f32; n as usize + 1];
-    let mut phong = Vec::new();
-    let mut text_same = true;
-    let mut decision = Choice::CorrectedEuler;
-    for (c, col) in COLUMNS.iter().enumerate() {
-        match col {
-            Shader::Span(m) => {
-                if let Some(d) = m.run(&span, prep, &mut out).ok()? {
-                    decision = d.choice;
-                }
-                if *col == PHONG {
-                    phong.clone_from(&out);
-                } else if *col == GOURAUD {
-                    text_same = truncated_difference_is_zero(&phong, &out, kd);
-                }
-            }
-            Shader::VertexGouraud => {
-                // Classic Gouraud: the vertex intensities, interpolated down the
-                // polygon's edges and along the row.
-                let (a, b) = (row.left.intensity, row.right.intensity);
-                for (i, o) in out.iter_mut().enumerate() {
+    };
+    let span = span_to(scene.light)?;
+    let mut out = vec![Vec::new(); COLUMNS.len()];
+    let (a, b) = (row.left.intensity, row.right.intensity);
+    // COLUMNS holds span methods and vertex Gouraud only
+    // (`columns_are_span_methods_and_vertex_gouraud`).
+    let choice = crate::raster::shader::shade_row(
+        span.as_ref(),
+        &na.dot(scene.light),
+        prep,
+        &COLUMNS,
+        index,
+        &mut out,
+        &mut |sh, o| {
+            debug_assert_eq!(sh, Shader::VertexGouraud);
+            // Classic Gouraud: the vertex intensities, interpolated down the polygon's
+            // edges and along the row.
+            if n == 0 {
+                o[0] = a;
+            } else {
+                for (i, o) in o.iter_mut().enumerate() {
                     *o = a + (b - a) * (i as f32 / n as f32);
                 }
             }
-            // COLUMNS holds span methods and vertex Gouraud only
-            // (`columns_are_span_methods_and_vertex_gouraud`).
-            other => unreachable!("{other:?} is not a column of the experiment"),
-        }
-        levels[c].extend(out.iter().map(|v| level(&(kd * v))));
-    }
+            Some(())
+        },
+    )?;
+    let levels: Vec<Vec<u8>> = out
+        .iter()
+        .map(|v| v.iter().map(|v| level(&(kd * v))).collect())
+        .collect();
+    let mut specular = vec![Vec::new(); COLUMNS.len()];
     if want_specular {
-        let span_h = Span::new(vec3(na), vec3(nb), vec3(scene.half()), n).ok()?;
-        for (c, col) in COLUMNS.iter().enumerate() {
-            // Classic Gouraud of N·H: vertex values are not kept per vertex here, so
-            // the span's edge values (exact) are interpolated.
-            let m = match col {
-                Shader::Span(m) => *m,
-                Shader::VertexGouraud => Method::Gouraud,
-                other => unreachable!("{other:?} is not a column of the experiment"),
-            };
-            m.run(&span_h, prep, &mut out).ok()?;
-            specular[c].extend(out.iter().map(|v| v.max(0.0)));
+        let span_h = span_to(scene.half())?;
+        crate::raster::shader::shade_row(
+            span_h.as_ref(),
+            &na.dot(scene.half()),
+            prep,
+            &COLUMNS,
+            index,
+            &mut specular,
+            &mut |_, o| {
+                // Classic Gouraud of N·H: vertex values are not kept per vertex here,
+                // so the span's edge values (exact) are interpolated.
+                match &span_h {
+                    None => o[0] = na.dot(scene.half()),
+                    Some(s) => {
+                        Method::Gouraud.run(s, prep, o).ok()?;
+                    }
+                }
+                Some(())
+            },
+        )?;
+        for v in specular.iter_mut().flatten() {
+            *v = v.max(0.0);
         }
     }
-    let extra = RowExtra {
-        single: false,
-        decision,
-        text_same,
-        span: Some(span),
+    let extra = match span {
+        None => RowExtra::single(),
+        Some(span) => RowExtra {
+            single: false,
+            decision: choice.unwrap_or(Choice::CorrectedEuler),
+            text_same: truncated_difference_is_zero(&out[index(PHONG)], &out[index(GOURAUD)], kd),
+            span: Some(span),
+        },
     };
     Some((RowShade { levels, specular }, extra))
 }

@@ -449,7 +449,7 @@ fn every_case_states_why_it_is_there() {
             || c.comment.contains("Figures 1–3")
             || c.comment.starts_with("adaptive threshold")));
     // The adaptive test on both sides of its threshold, in every set (issue 31).
-    for set in ["typical", "edge", "paper"] {
+    for set in phong_approx::testkit::SETS {
         let f = committed(set);
         for d in ["gouraud", "corrected-euler"] {
             assert!(

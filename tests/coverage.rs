@@ -25,7 +25,7 @@ fn read(p: &str) -> String {
 
 #[test]
 fn every_method_has_vectors() {
-    for set in ["typical", "edge", "paper"] {
+    for set in phong_approx::testkit::SETS {
         let file = phong_approx::testkit::published(set).unwrap();
         for m in Method::ALL {
             let key = method_key(m);

@@ -13,7 +13,7 @@ use phong_approx::tolerance::profile::Profile;
 use phong_approx::Method;
 use std::path::Path;
 
-const SETS: [&str; 3] = ["typical", "edge", "paper"];
+use phong_approx::testkit::SETS;
 
 /// The float profiles and 16.16 fixed point.
 fn profiles() -> impl Iterator<Item = Profile> {

@@ -1710,7 +1710,7 @@ fn implementations<T: Native + 'static>() -> Vec<Imp<T>> {
 fn correct_variants_pass_the_published_sets_under_ieee() {
     use phong_approx::testkit::Suite;
     let mut runs = 0;
-    for set in ["typical", "edge", "paper"] {
+    for set in phong_approx::testkit::SETS {
         let spans = published_spans(set);
         for v in VARIANTS {
             for (m, name, imp, _) in implementations::<f32>() {
@@ -1785,7 +1785,7 @@ fn the_software_gpus_pass_the_published_sets_under_shader() {
             Box::new(|g, s| gpu_duff_or_phong(g, s, true, Division::Once)),
         ),
     ];
-    for set in ["typical", "edge", "paper"] {
+    for set in phong_approx::testkit::SETS {
         let spans = published_spans(set);
         for &g in gpus {
             for (m, imp) in &imps {
@@ -2232,7 +2232,7 @@ fn quake_rsqrt_phong_fails_ieee() {
             .collect()
     }
     let mut failed = Vec::new();
-    for set in ["typical", "edge", "paper"] {
+    for set in phong_approx::testkit::SETS {
         let spans = published_spans(set);
         let good = published_f32(set, Method::Phong, Profile::Ieee, |id| {
             horner(&spans[id], exact_rsqrt)

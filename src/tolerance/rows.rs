@@ -108,7 +108,7 @@ pub fn stepped_start(r: &RowShape, st: &Stepped) -> StartError {
 
 /// Absolute errors of a row's `p_a`, `p_b` and `1 − c`, in units of `u`.
 #[derive(Clone, Copy, Debug, PartialEq)]
-pub struct SpanError {
+pub struct SpanSetupError {
     /// Of `p_a`.
     pub p_a: f64,
     /// Of `p_b`.
@@ -120,7 +120,7 @@ pub struct SpanError {
 /// The errors of [`crate::fast_rows::RowStart::span`] from those of its start
 /// (§17.2): `U_b·L`, `U_a·U_b`, `U_b·U_b`, the two reciprocal square roots and the
 /// products; `None` if a relative error would exceed 2^-10.
-pub fn span_error(r: &RowShape, e: &StartError, u: f64) -> Option<SpanError> {
+pub fn span_error(r: &RowShape, e: &StartError, u: f64) -> Option<SpanSetupError> {
     let (nu, t, lam) = (r.nu(), r.t(), r.lambda);
     let nf = f64::from(r.n);
     let (la, lb) = (r.len_a, r.len_b);
@@ -138,7 +138,7 @@ pub fn span_error(r: &RowShape, e: &StartError, u: f64) -> Option<SpanError> {
     if !((ra * u) < small && (rb * u) < small && (e.s / la * u) < small) {
         return None;
     }
-    Some(SpanError {
+    Some(SpanSetupError {
         p_a: e.s / la + lam * (ra + 1.0),
         p_b: s_b / lb + lam * (rb + 1.0),
         omc: w / (la * lb) + ra + rb + 4.0,
@@ -166,7 +166,7 @@ pub enum RowKernel {
 pub fn kernel_bound(
     k: RowKernel,
     n: u32,
-    e: &SpanError,
+    e: &SpanSetupError,
     lambda: f64,
     q_min: f64,
     u: f64,

@@ -2,7 +2,9 @@
 
 use super::{out, read_capped, CliError};
 use clap::Args;
-use phong_approx::conformance::check::{parse_results, Tolerance, Unbounded, MAX_RESULTS_BYTES};
+use phong_approx::conformance::check::{
+    parse_results, JudgeError, Tolerance, Unbounded, MAX_RESULTS_BYTES,
+};
 use phong_approx::conformance::judgement::judge;
 use phong_approx::conformance::shown;
 use phong_approx::conformance::vectors::method_key;
@@ -184,7 +186,17 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
         a.specular,
         a.precision.format(),
     )
-    .map_err(|e| CliError::arg("--method", e))?;
+    .map_err(|e| match e {
+        JudgeError::Tolerance(_) if a.tolerance.is_some() => CliError::arg("--tolerance", e),
+        JudgeError::Tolerance(_) => CliError::arg("--profile", e),
+        JudgeError::Method { .. } => CliError::arg("--method", e),
+        // The shapes are the loaded file's own (`load_vectors`).
+        JudgeError::Shapes { .. } => CliError {
+            message: e.to_string(),
+            code: 2,
+            details: Vec::new(),
+        },
+    })?;
     if let Some(r) = &report {
         let suite = format!(
             "{} {key} {} ({})",

@@ -129,7 +129,19 @@ mod with_gpu {
                 let shapes = phong_approx::conformance::check::shapes(file);
                 judge(file, &shapes, results, method, tol, false, Format::Binary32)
                     .map(|j| (set, j))
-                    .map_err(|e| CliError::arg("--method", e))
+                    .map_err(|e| {
+                        use phong_approx::conformance::check::JudgeError as E;
+                        match e {
+                            E::Tolerance(_) => CliError::arg("--profile", e),
+                            E::Method { .. } => CliError::arg("--method", e),
+                            // The shapes are read from the same embedded file.
+                            E::Shapes { .. } => CliError {
+                                message: e.to_string(),
+                                code: 2,
+                                details: Vec::new(),
+                            },
+                        }
+                    })
             })
             .collect()
     }

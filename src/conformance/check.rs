@@ -63,11 +63,34 @@ pub struct CaseReport {
     pub seconds: f64,
 }
 
+/// Why [`check_in`] cannot judge a file, naming the input at fault.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum JudgeError {
+    /// The tolerance means nothing ([`Tolerance::validate`]'s message).
+    #[error("{0}")]
+    Tolerance(String),
+    /// The vector file holds no expectations of the method.
+    #[error("the vector file has no method '{key}'")]
+    Method {
+        /// The method's key in the vector files.
+        key: String,
+    },
+    /// The span shapes handed in are not the file's: one per case is needed
+    /// ([`shapes`]).
+    #[error("{shapes} span shapes for {cases} cases: not this file's")]
+    Shapes {
+        /// How many were handed in.
+        shapes: usize,
+        /// How many cases the file holds.
+        cases: usize,
+    },
+}
+
 /// Compares `results` with the vector file's expectations for `method`, counting ulps
 /// in the format the tolerance names (`f32` when it names none: see [`check_in`]).
 ///
 /// # Errors
-/// A message when the method is not in the file, or the tolerance is not valid
+/// A [`JudgeError`]: the method is not in the file, or the tolerance is not valid
 /// ([`Tolerance::validate`]).
 pub fn check(
     vectors: &VectorFile,
@@ -76,7 +99,7 @@ pub fn check(
     method_key: &str,
     tol: Tolerance,
     specular: bool,
-) -> Result<Vec<CaseReport>, String> {
+) -> Result<Vec<CaseReport>, JudgeError> {
     let format = tol.format().unwrap_or(crate::Format::Binary32);
     let shapes = shapes(vectors);
     check_in(
@@ -105,7 +128,7 @@ pub fn shapes(vectors: &VectorFile) -> Vec<Option<crate::tolerance::Shape>> {
 /// the report) are that format's.
 ///
 /// # Errors
-/// As [`check`].
+/// As [`check`], and [`JudgeError::Shapes`] where `shapes` are not the file's.
 #[allow(clippy::too_many_arguments)]
 pub fn check_in(
     vectors: &VectorFile,
@@ -116,14 +139,13 @@ pub fn check_in(
     tol: Tolerance,
     specular: bool,
     format: crate::Format,
-) -> Result<Vec<CaseReport>, String> {
-    tol.validate()?;
+) -> Result<Vec<CaseReport>, JudgeError> {
+    tol.validate().map_err(JudgeError::Tolerance)?;
     if shapes.len() != vectors.cases.len() {
-        return Err(format!(
-            "{} span shapes for {} cases: not this file's (see `shapes`)",
-            shapes.len(),
-            vectors.cases.len()
-        ));
+        return Err(JudgeError::Shapes {
+            shapes: shapes.len(),
+            cases: vectors.cases.len(),
+        });
     }
     // The reference profile is the crate's own bounds.
     let tol = match tol {
@@ -142,8 +164,11 @@ pub fn check_in(
         } else {
             c.expected.get(method_key)
         }
-        .ok_or_else(|| format!("the vector file has no method '{method_key}'"))?;
-        let got = &results[&c.id];
+        .ok_or_else(|| JudgeError::Method {
+            key: method_key.to_string(),
+        })?;
+        // A case the results lack has no values: it fails, as a missing pixel does.
+        let got = results.get(&c.id).map_or(&[][..], Vec::as_slice);
         let start = std::time::Instant::now();
         let case = Judging {
             c,

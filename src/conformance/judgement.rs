@@ -4,7 +4,7 @@
 //! JSON ([`Judgement::junit`], [`Judgement::json`], in `export.rs`), as a one-line failure
 //! ([`Judgement::failure`]) or case by case ([`Judgement::failing`]).
 
-use super::check::{check_in, Advice, CaseReport, Results, Tolerance};
+use super::check::{check_in, Advice, CaseReport, JudgeError, Results, Tolerance};
 use super::vectors::{method_key, Case, VectorFile};
 use crate::tolerance::Shape;
 use crate::{Format, Method};
@@ -45,7 +45,7 @@ pub fn judge<'a>(
     tolerance: Tolerance,
     specular: bool,
     format: Format,
-) -> Result<Judgement<'a>, String> {
+) -> Result<Judgement<'a>, JudgeError> {
     let key = method_key(method);
     let reports = check_in(
         vectors, shapes, results, method, &key, tolerance, specular, format,

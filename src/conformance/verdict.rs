@@ -424,6 +424,56 @@ mod tests {
     }
 
     #[test]
+    fn a_file_that_cannot_be_judged_names_the_input_at_fault() {
+        use crate::conformance::check::{check_in, shapes, JudgeError, Results};
+        let m = Method::Gouraud;
+        let l = load_vectors(EDGE.to_string(), "edge.json", m, false, false).unwrap();
+        let res = Results::new();
+        let f = crate::Format::Binary32;
+        let e = check_in(
+            &l.file,
+            &l.shapes,
+            &res,
+            m,
+            "nosuch",
+            Tolerance::Levels(0),
+            false,
+            f,
+        );
+        let key = "nosuch".to_string();
+        assert_eq!(e.unwrap_err(), JudgeError::Method { key });
+        let bad = Tolerance::Abs(f64::NAN);
+        let e = check_in(&l.file, &l.shapes, &res, m, "gouraud", bad, false, f);
+        assert!(matches!(e, Err(JudgeError::Tolerance(_))), "{e:?}");
+        let e = check_in(
+            &l.file,
+            &[],
+            &res,
+            m,
+            "gouraud",
+            Tolerance::Levels(0),
+            false,
+            f,
+        );
+        let cases = l.file.cases.len();
+        assert_eq!(e.unwrap_err(), JudgeError::Shapes { shapes: 0, cases });
+        // The shapes `load_vectors` read are `shapes`' for the same file.
+        assert_eq!(l.shapes, shapes(&l.file));
+        // Results that lack a case fail it; they do not panic.
+        let r = check_in(
+            &l.file,
+            &l.shapes,
+            &res,
+            m,
+            "gouraud",
+            Tolerance::Levels(0),
+            false,
+            f,
+        );
+        assert!(r.unwrap().iter().all(|c| !c.pass));
+    }
+
+    #[test]
     fn the_verdict_text_and_failure_line_follow_the_reports() {
         let m = Method::Gouraud;
         let file = load_vectors(EDGE.to_string(), "edge.json", m, false, false)

@@ -298,7 +298,7 @@ pub(crate) fn judge<T: Float>(
                 set,
                 format!("(the {set} set)"),
                 &judged_by,
-                e,
+                e.to_string(),
             ));
             return;
         }

@@ -90,44 +90,114 @@ pub struct Polygon {
     pub source: Option<&'static str>,
     /// Whether part of it is a reconstruction (see `docs/comparison.md`).
     pub reconstructed: bool,
-}
-
-const fn row(
-    shader: Shader,
-    label: &'static str,
-    after: Option<Method>,
-    source: Option<&'static str>,
-    reconstructed: bool,
-) -> Polygon {
-    Polygon {
-        shader,
-        label,
-        after,
-        source,
-        reconstructed,
-    }
+    /// Whether it reads the specular power from a table
+    /// ([`crate::related::power::PowerTable`]) rather than computing it.
+    pub power_from_table: bool,
 }
 
 /// Every shader that is not a span method, in the order of the tables: the one table
 /// of their facts.
-#[rustfmt::skip]
 pub const POLYGON: [Polygon; 12] = {
     use RowSetup as R;
     use Shader as S;
     let ce = Some(Method::CorrectedEuler);
     [
-        row(S::PhongPixel, "phong-pixel", None, Some("Phong 1975"), false),
-        row(S::VertexGouraud, "gouraud-vertex", Some(Method::Gouraud), Some("Gouraud 1971"), false),
-        row(S::VertexAngle, "vertex-angle", Some(Method::AngularTable(crate::method::SOURCE_TABLE)), Some("Mortensen 1995"), false),
-        row(S::BishopWeimerTriangle, "bishop-weimer-triangle", Some(Method::BishopWeimer), Some("Bishop & Weimer 1986"), false),
-        row(S::Seiler, "seiler", Some(Method::BishopWeimer), Some("Seiler 1998"), true),
-        row(S::Rows(R::BatchedGouraud), "gouraud-batched", Some(Method::Gouraud), None, false),
-        row(S::Rows(R::BatchedCorrectedEuler), "corrected-euler-batched", ce, None, false),
-        row(S::Rows(R::SteppedCorrectedEuler), "corrected-euler-stepped", ce, None, false),
-        row(S::Rows(R::BatchedPhong), "phong-batched", Some(Method::Phong), None, false),
-        row(S::Rows(R::BatchedPhongRsqrt), "phong-batched-rsqrt", Some(Method::Phong), None, false),
-        row(S::Rows(R::FieldPhong), "phong-field", Some(Method::Phong), None, false),
-        row(S::Rows(R::FieldPhongRsqrt), "phong-field-rsqrt", Some(Method::Phong), None, false),
+        Polygon {
+            shader: S::PhongPixel,
+            label: "phong-pixel",
+            after: None,
+            source: Some("Phong 1975"),
+            reconstructed: false,
+            power_from_table: false,
+        },
+        Polygon {
+            shader: S::VertexGouraud,
+            label: "gouraud-vertex",
+            after: Some(Method::Gouraud),
+            source: Some("Gouraud 1971"),
+            reconstructed: false,
+            power_from_table: false,
+        },
+        Polygon {
+            shader: S::VertexAngle,
+            label: "vertex-angle",
+            after: Some(Method::AngularTable(crate::method::SOURCE_TABLE)),
+            source: Some("Mortensen 1995"),
+            reconstructed: false,
+            power_from_table: false,
+        },
+        Polygon {
+            shader: S::BishopWeimerTriangle,
+            label: "bishop-weimer-triangle",
+            after: Some(Method::BishopWeimer),
+            source: Some("Bishop & Weimer 1986"),
+            reconstructed: false,
+            power_from_table: true,
+        },
+        Polygon {
+            shader: S::Seiler,
+            label: "seiler",
+            after: Some(Method::BishopWeimer),
+            source: Some("Seiler 1998"),
+            reconstructed: true,
+            power_from_table: true,
+        },
+        Polygon {
+            shader: S::Rows(R::BatchedGouraud),
+            label: "gouraud-batched",
+            after: Some(Method::Gouraud),
+            source: None,
+            reconstructed: false,
+            power_from_table: false,
+        },
+        Polygon {
+            shader: S::Rows(R::BatchedCorrectedEuler),
+            label: "corrected-euler-batched",
+            after: ce,
+            source: None,
+            reconstructed: false,
+            power_from_table: false,
+        },
+        Polygon {
+            shader: S::Rows(R::SteppedCorrectedEuler),
+            label: "corrected-euler-stepped",
+            after: ce,
+            source: None,
+            reconstructed: false,
+            power_from_table: false,
+        },
+        Polygon {
+            shader: S::Rows(R::BatchedPhong),
+            label: "phong-batched",
+            after: Some(Method::Phong),
+            source: None,
+            reconstructed: false,
+            power_from_table: false,
+        },
+        Polygon {
+            shader: S::Rows(R::BatchedPhongRsqrt),
+            label: "phong-batched-rsqrt",
+            after: Some(Method::Phong),
+            source: None,
+            reconstructed: false,
+            power_from_table: false,
+        },
+        Polygon {
+            shader: S::Rows(R::FieldPhong),
+            label: "phong-field",
+            after: Some(Method::Phong),
+            source: None,
+            reconstructed: false,
+            power_from_table: false,
+        },
+        Polygon {
+            shader: S::Rows(R::FieldPhongRsqrt),
+            label: "phong-field-rsqrt",
+            after: Some(Method::Phong),
+            source: None,
+            reconstructed: false,
+            power_from_table: false,
+        },
     ]
 };
 
@@ -179,7 +249,10 @@ impl Shader {
     /// Whether the method reads the specular power from a table (Bishop–Weimer's and
     /// Seiler's polygon methods: [`crate::related::power::PowerTable`]).
     pub fn power_from_table(&self) -> bool {
-        matches!(self, Shader::BishopWeimerTriangle | Shader::Seiler)
+        match self {
+            Shader::Span(_) => false,
+            _ => polygon(*self).power_from_table,
+        }
     }
 }
 

@@ -2,9 +2,7 @@
 
 use super::{out, read_capped, CliError};
 use clap::Args;
-use phong_approx::conformance::check::{
-    parse_results, JudgeError, Tolerance, Unbounded, MAX_RESULTS_BYTES,
-};
+use phong_approx::conformance::check::{parse_results, Tolerance, Unbounded, MAX_RESULTS_BYTES};
 use phong_approx::conformance::judgement::judge;
 use phong_approx::conformance::shown;
 use phong_approx::conformance::vectors::method_key;
@@ -186,16 +184,13 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
         a.specular,
         a.precision.format(),
     )
-    .map_err(|e| match e {
-        JudgeError::Tolerance(_) if a.tolerance.is_some() => CliError::arg("--tolerance", e),
-        JudgeError::Tolerance(_) => CliError::arg("--profile", e),
-        JudgeError::Method { .. } => CliError::arg("--method", e),
-        // The shapes are the loaded file's own (`load_vectors`).
-        JudgeError::Shapes { .. } => CliError {
-            message: e.to_string(),
-            code: 2,
-            details: Vec::new(),
-        },
+    .map_err(|e| {
+        let tolerance = if a.tolerance.is_some() {
+            "--tolerance"
+        } else {
+            "--profile"
+        };
+        super::judge_error(e, tolerance)
     })?;
     if let Some(r) = &report {
         let suite = format!(

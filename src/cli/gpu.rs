@@ -129,19 +129,7 @@ mod with_gpu {
                 let shapes = phong_approx::conformance::check::shapes(file);
                 judge(file, &shapes, results, method, tol, false, Format::Binary32)
                     .map(|j| (set, j))
-                    .map_err(|e| {
-                        use phong_approx::conformance::check::JudgeError as E;
-                        match e {
-                            E::Tolerance(_) => CliError::arg("--profile", e),
-                            E::Method { .. } => CliError::arg("--method", e),
-                            // The shapes are read from the same embedded file.
-                            E::Shapes { .. } => CliError {
-                                message: e.to_string(),
-                                code: 2,
-                                details: Vec::new(),
-                            },
-                        }
-                    })
+                    .map_err(|e| crate::cli::judge_error(e, "--profile"))
             })
             .collect()
     }

@@ -320,6 +320,22 @@ fn ieee_formulas() -> String {
         .join("; ")
 }
 
+/// A judgement the library refused, as the flag at fault: `tolerance` names the flag the
+/// tolerance came from (`--tolerance` or `--profile`).
+pub fn judge_error(e: phong_approx::conformance::check::JudgeError, tolerance: &str) -> CliError {
+    use phong_approx::conformance::check::JudgeError as E;
+    match e {
+        E::Tolerance(_) => CliError::arg(tolerance, e),
+        E::Method { .. } => CliError::arg("--method", e),
+        // The shapes are read from the same file the command loaded.
+        E::Shapes { .. } => CliError {
+            message: e.to_string(),
+            code: 2,
+            details: Vec::new(),
+        },
+    }
+}
+
 /// `--method`'s help: every method of the catalogue by name, in its order.
 pub fn methods_help() -> String {
     format!(

@@ -803,41 +803,19 @@ fn a_huge_cosine_table_is_within_the_budget() {
 /// Defect d13 of the reliability rounds (docs/conformance.md, "Limits and exit codes").
 #[test]
 fn span_minor_options_are_checked() {
-    let span = |extra: &[&str]| {
-        let mut a = vec![
-            "span",
-            "--method",
-            "adaptive",
-            "--na",
-            "0,0,1",
-            "--nb",
-            "0.6,0,0.8",
-            "--light",
-            "0,0,1",
-            "--steps",
-            "4",
-        ];
-        a.extend_from_slice(extra);
-        run(&a)
-    };
-    refused(&span(&["--precision", "64"]), "--precision");
-    refused(&span(&["--kd", "-1"]), "--kd");
-    refused(&span(&["--kd", "1e309"]), "--kd");
+    bad(
+        &[("--method", "adaptive"), ("--precision", "64")],
+        "--precision",
+    );
+    bad(&[("--kd", "-1")], "--kd");
+    bad(&[("--kd", "1e309")], "--kd");
 }
 
 /// Defect q15 of the reliability rounds (docs/conformance.md, "Limits and exit codes").
 #[test]
 fn span_messages_say_what_is_wrong() {
-    let span = |extra: &[&str]| {
-        let mut a = vec![
-            "span", "--method", "gouraud", "--na", "0,0,1", "--nb", "0,0,1", "--light", "0,0,1",
-            "--steps", "2",
-        ];
-        a.extend_from_slice(extra);
-        run(&a)
-    };
-    refused(
-        &span(&["--digits", "-1"]),
+    bad(
+        &[("--digits", "-1")],
         "--digits: '-1' is not a whole number",
     );
     // A closed standard output (`>&-`) is an error, not silence; `> /dev/null` is not.
@@ -861,22 +839,18 @@ fn span_messages_say_what_is_wrong() {
 /// `cli::opposite_normals_are_computed_where_defined`.)
 #[test]
 fn opposite_normals_are_refused_where_undefined() {
-    let run = |method: &str, steps: &str| {
-        super::run(&[
-            "span",
-            "--method",
-            method,
-            "--na=0,0,1",
-            "--nb=0,0,-1",
-            "--light=0,0,1",
-            "--steps",
-            steps,
-            "--scalar",
-            "exact",
-        ])
+    let opposite = |method: &'static str, steps: &'static str| {
+        [
+            ("--method", method),
+            ("--na", "0,0,1"),
+            ("--nb", "0,0,-1"),
+            ("--light", "0,0,1"),
+            ("--steps", steps),
+            ("--scalar", "exact"),
+        ]
     };
     for m in ["spherical", "binary", "bishop-weimer"] {
-        refused(&run(m, "5"), "opposite");
+        bad(&opposite(m, "5"), "opposite");
     }
-    refused(&run("phong", "4"), "pixel 2 of n = 4");
+    bad(&opposite("phong", "4"), "pixel 2 of n = 4");
 }

@@ -70,7 +70,7 @@ mod with_gpu {
     use phong_approx::conformance::verdict;
     use phong_approx::gpu::kernels::{Kernel, Language, KERNELS};
     use phong_approx::gpu::{published_spans, unwritten, Gpu, GpuError, Source};
-    use phong_approx::testkit::{published, SETS};
+    use phong_approx::testkit::{published, published_shapes, SETS};
     use phong_approx::tolerance::profile::Profile;
     use phong_approx::{Format, Method};
     use std::time::{Duration, Instant};
@@ -123,11 +123,9 @@ mod with_gpu {
             form: phong_approx::tolerance::profile::Form::Any,
         };
         SETS.iter()
-            .filter_map(|set| Some((*set, published(set)?)))
-            .map(|(set, file)| {
-                // Once per set and run: the shapes of its exact spans.
-                let shapes = phong_approx::conformance::check::shapes(file);
-                judge(file, &shapes, results, method, tol, false, Format::Binary32)
+            .filter_map(|set| Some((*set, published(set)?, published_shapes(set)?)))
+            .map(|(set, file, shapes)| {
+                judge(file, shapes, results, method, tol, false, Format::Binary32)
                     .map(|j| (set, j))
                     .map_err(|e| crate::cli::judge_error(e, "--profile"))
             })

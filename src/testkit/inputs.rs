@@ -50,8 +50,9 @@ pub fn published(set: &str) -> Option<&'static VectorFile> {
 }
 
 /// The shape of each case's exact span of the published set `set`, in its case order
-/// ([`crate::conformance::check::shapes`]), read once per process.
-pub(crate) fn published_shapes(set: &str) -> Option<&'static [Option<Shape>]> {
+/// ([`crate::conformance::check::shapes`]), read once per process: what
+/// [`crate::conformance::judgement::judge`] takes with [`published`]'s file.
+pub fn published_shapes(set: &str) -> Option<&'static [Option<Shape>]> {
     static SHAPES: [OnceLock<Vec<Option<Shape>>>; 3] =
         [OnceLock::new(), OnceLock::new(), OnceLock::new()];
     let k = EMBEDDED.iter().position(|(name, _)| *name == set)?;

@@ -61,7 +61,7 @@ pub use crate::conformance::check::Tolerance;
 pub use crate::tolerance::profile::{Form, Profile};
 pub use crate::Format;
 pub use crate::Method;
-pub use inputs::{published, Float, Inputs, SETS};
+pub use inputs::{published, published_shapes, Float, Inputs, SETS};
 pub use outcome::{Failure, FailureInputs, Report, SetSummary};
 pub use span::{acceptance, check_span, oracle, KitError, Oracle, MAX_STEPS};
 pub use suite::Suite;

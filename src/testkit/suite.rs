@@ -216,15 +216,17 @@ impl Suite {
                 continue;
             };
             let chosen;
+            let chosen_shapes;
             let (file, shapes) = match &self.case {
-                None => (file, shapes.to_vec()),
+                None => (file, shapes),
                 Some(id) => {
                     let Some(k) = file.cases.iter().position(|c| &c.id == id) else {
                         continue;
                     };
                     let cases = vec![file.cases[k].clone()];
                     chosen = crate::conformance::vectors::file_of(&file.set, cases);
-                    (&chosen, vec![shapes[k]])
+                    chosen_shapes = [shapes[k]];
+                    (&chosen, &chosen_shapes[..])
                 }
             };
             found = true;
@@ -232,7 +234,7 @@ impl Suite {
                 &mut report,
                 set,
                 file,
-                &shapes,
+                shapes,
                 self.method,
                 tol,
                 self.specular,

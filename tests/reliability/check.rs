@@ -341,21 +341,12 @@ fn exact_work_is_budgeted_by_method_and_input_size() {
         ("spherical", na.as_str()),
     ] {
         let t = Instant::now();
-        let o = run(&[
-            "span",
-            "--method",
+        let o = span_run(
             m,
-            "--na",
-            na,
-            "--nb",
-            "0.6,0,0.8",
-            "--light",
-            "0,0,1",
-            "--steps",
+            [na, "0.6,0,0.8", "0,0,1"],
             "65536",
-            "--scalar",
-            "exact",
-        ]);
+            &["--scalar", "exact"],
+        );
         refused(&o, "pass --yes");
         assert!(t.elapsed() < Duration::from_secs(5), "{m}");
     }
@@ -555,10 +546,12 @@ fn a_level_near_a_boundary_is_decided_with_more_bits() {
         &d * &d - &a * &a,
         s
     );
-    let o = run(&[
-        "span", "--method", "angular", "--na", &na, "--nb", "0,0,1", "--light", "0,0,1", "--steps",
-        "2", "--scalar", "exact",
-    ]);
+    let o = span_run(
+        "angular",
+        [&na, "0,0,1", "0,0,1"],
+        "2",
+        &["--scalar", "exact"],
+    );
     assert_eq!(code(&o), 0, "{}", stderr(&o));
     let j: Value = serde_json::from_slice(&o.stdout).unwrap();
     // Independently: 1/(1 + t²) > (200/255)² since t < √((255/200)² − 1), so the value

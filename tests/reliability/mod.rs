@@ -22,6 +22,16 @@ mod outputs;
 mod reproduce;
 mod span;
 
+/// `span --method method --na na --nb nb --light light --steps steps` and `extra`, run
+/// to the end.
+fn span_run(method: &str, [na, nb, light]: [&str; 3], steps: &str, extra: &[&str]) -> Output {
+    let mut a = vec![
+        "span", "--method", method, "--na", na, "--nb", nb, "--light", light, "--steps", steps,
+    ];
+    a.extend_from_slice(extra);
+    run(&a)
+}
+
 fn root() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))
 }

@@ -78,37 +78,19 @@ fn huge_steps_are_refused_not_allocated() {
 /// Defect d3 of the reliability rounds (docs/conformance.md, "Limits and exit codes").
 #[test]
 fn non_finite_values_are_errors_naming_the_pixel() {
-    let o = run(&[
-        "span",
-        "--method",
+    let o = span_run(
         "duff",
-        "--na",
-        "0,0,1",
-        "--nb",
-        "1e-30,0,-1",
-        "--light",
-        "0.6,0,0.8",
-        "--steps",
+        ["0,0,1", "1e-30,0,-1", "0.6,0,0.8"],
         "2",
-        "--normalize",
-    ]);
+        &["--normalize"],
+    );
     refused(&o, "pixel 1 of n = 2");
-    let o = run(&[
-        "span",
-        "--method",
+    let o = span_run(
         "duff",
-        "--na",
-        "0,0,1",
-        "--nb",
-        "3e-4,0,-1",
-        "--light",
-        "0.6,0,0.8",
-        "--steps",
+        ["0,0,1", "3e-4,0,-1", "0.6,0,0.8"],
         "2",
-        "--normalize",
-        "--scalar",
-        "f32",
-    ]);
+        &["--normalize", "--scalar", "f32"],
+    );
     refused(&o, "not finite");
     // Binary and Bishop–Weimer printed inf / NaN with exit 0 on these (exact unit
     // inputs, no --normalize; and a normalized tilt of 1e-10).
@@ -169,22 +151,12 @@ fn exact_normalize_takes_any_nonzero_finite_input() {
         ("1e-9,2e-9,3e-9", "exact"),
         ("1e308,0,1", "f64"),
     ] {
-        let o = run(&[
-            "span",
-            "--method",
+        let o = span_run(
             "gouraud",
-            "--na",
-            na,
-            "--nb",
-            "0,0,1",
-            "--light",
-            "0,0,1",
-            "--steps",
+            [na, "0,0,1", "0,0,1"],
             "2",
-            "--normalize",
-            "--scalar",
-            scalar,
-        ]);
+            &["--normalize", "--scalar", scalar],
+        );
         assert_eq!(code(&o), 0, "{na} {scalar}: {}", stderr(&o));
     }
 }
@@ -192,23 +164,12 @@ fn exact_normalize_takes_any_nonzero_finite_input() {
 /// Defect d5 of the reliability rounds (docs/conformance.md, "Limits and exit codes").
 #[test]
 fn no_digit_is_printed_that_is_not_known() {
-    let o = run(&[
-        "span",
-        "--method",
+    let o = span_run(
         "phong",
-        "--na",
-        "0,0,1",
-        "--nb",
-        "0.6,0,0.8",
-        "--light",
-        "0.28,0.96,0",
-        "--steps",
+        ["0,0,1", "0.6,0,0.8", "0.28,0.96,0"],
         "3",
-        "--scalar",
-        "exact",
-        "--digits",
-        "200",
-    ]);
+        &["--scalar", "exact", "--digits", "200"],
+    );
     // More digits than 2^-256 gives: the run is repeated with more bits, and every
     // printed digit is right (value² = p²/q, independently, to 2·10^-199).
     assert_eq!(code(&o), 0, "{}", stderr(&o));
@@ -242,43 +203,21 @@ fn no_digit_is_printed_that_is_not_known() {
     }
     // Beyond what any precision this tool uses gives: refused at once.
     let t = Instant::now();
-    let o = run(&[
-        "span",
-        "--method",
+    let o = span_run(
         "phong",
-        "--na",
-        "0,0,1",
-        "--nb",
-        "0.6,0,0.8",
-        "--light",
-        "0.28,0.96,0",
-        "--steps",
+        ["0,0,1", "0.6,0,0.8", "0.28,0.96,0"],
         "3",
-        "--scalar",
-        "exact",
-        "--digits",
-        "10000",
-    ]);
+        &["--scalar", "exact", "--digits", "10000"],
+    );
     refused(&o, "at most 2446 significant digits");
     assert!(t.elapsed() < Duration::from_secs(5));
     // Rational methods are exact: any number of digits.
-    let o = run(&[
-        "span",
-        "--method",
+    let o = span_run(
         "corrected-euler",
-        "--na",
-        "0,0,1",
-        "--nb",
-        "0.6,0,0.8",
-        "--light",
-        "0.28,0.96,0",
-        "--steps",
+        ["0,0,1", "0.6,0,0.8", "0.28,0.96,0"],
         "3",
-        "--scalar",
-        "exact",
-        "--digits",
-        "200",
-    ]);
+        &["--scalar", "exact", "--digits", "200"],
+    );
     assert_eq!(code(&o), 0, "{}", stderr(&o));
 }
 
@@ -306,80 +245,34 @@ fn work_beyond_the_budget_needs_yes() {
         "--yes",
     );
     // A million rational values of 10,000 digits each would be 20 GB of output.
-    let o = run(&[
-        "span",
-        "--method",
+    let o = span_run(
         "gouraud",
-        "--na",
-        "0,0,1",
-        "--nb",
-        "0.6,0,0.8",
-        "--light",
-        "0,0,1",
-        "--steps",
+        ["0,0,1", "0.6,0,0.8", "0,0,1"],
         "1000000",
-        "--scalar",
-        "f64",
-        "--digits",
-        "10000",
-    ]);
+        &["--scalar", "f64", "--digits", "10000"],
+    );
     assert_eq!(
         code(&o),
         0,
         "floats print their shortest form: {}",
         stderr(&o)
     );
-    let o = run(&[
-        "span",
-        "--method",
+    let o = span_run(
         "gouraud",
-        "--na",
-        "0,0,1",
-        "--nb",
-        "0.6,0,0.8",
-        "--light",
-        "0,0,1",
-        "--steps",
+        ["0,0,1", "0.6,0,0.8", "0,0,1"],
         "60000",
-        "--scalar",
-        "exact",
-        "--digits",
-        "10000",
-    ]);
+        &["--scalar", "exact", "--digits", "10000"],
+    );
     refused(&o, "MiB");
-    let o = run(&[
-        "span",
-        "--method",
+    let o = span_run(
         "angular",
-        "--na",
-        "0,0,1",
-        "--nb",
-        "0.6,0,0.8",
-        "--light",
-        "0,0,1",
-        "--steps",
+        ["0,0,1", "0.6,0,0.8", "0,0,1"],
         "4",
-        "--scalar",
-        "exact",
-        "--table-size",
-        "16777216",
-    ]);
+        &["--scalar", "exact", "--table-size", "16777216"],
+    );
     refused(&o, "--yes");
     let long = format!("0.{},0,1", "1".repeat(100_000));
-    let o = run(&[
-        "span",
-        "--method",
-        "phong",
-        "--na",
-        &long,
-        "--nb",
-        "0,0,1",
-        "--light",
-        "0,0,1",
-        "--steps",
-        "2",
-        "--normalize",
-    ]);
+    let o = span_run("phong", [&long, "0,0,1", "0,0,1"], "2", &["--normalize"]);
     refused(&o, "longer than");
     let d = scratch("d6");
     let out = d.display().to_string();
@@ -446,30 +339,23 @@ fn float_spans_of_any_allowed_length_stream() {
 /// Defect r13 of the reliability rounds (docs/conformance.md, "Limits and exit codes").
 #[test]
 fn not_unit_message_and_bare_command() {
-    let o = run(&[
-        "span",
-        "--method",
+    let o = span_run(
         "phong",
-        "--na",
-        "0,0,1e-400",
-        "--nb",
-        "0,0,1",
-        "--light",
-        "0,0,1",
-        "--steps",
+        ["0,0,1e-400", "0,0,1", "0,0,1"],
         "2",
-        "--scalar",
-        "exact",
-    ]);
+        &["--scalar", "exact"],
+    );
     refused(
         &o,
         "length² = 1.00000e-800, |length² − 1| = 1.00, exact arithmetic allows only exactly 1",
     );
     let near = format!("0,0,1.{}1", "0".repeat(380));
-    let o = run(&[
-        "span", "--method", "phong", "--na", &near, "--nb", "0,0,1", "--light", "0,0,1", "--steps",
-        "2", "--scalar", "exact",
-    ]);
+    let o = span_run(
+        "phong",
+        [&near, "0,0,1", "0,0,1"],
+        "2",
+        &["--scalar", "exact"],
+    );
     refused(&o, "(length² = 1.00000, |length² − 1| = 2.00e-381,");
     let o = run(&[]);
     refused(&o, "a subcommand is needed");
@@ -480,64 +366,34 @@ fn not_unit_message_and_bare_command() {
 fn exact_levels_with_normalize() {
     // (1, 0, 1) everywhere: every value is exactly 1, level 255.
     for m in ["phong", "gouraud", "corrected-euler", "euler", "duff"] {
-        let o = run(&[
-            "span",
-            "--method",
+        let o = span_run(
             m,
-            "--na",
-            "1,0,1",
-            "--nb",
-            "1,0,1",
-            "--light",
-            "1,0,1",
-            "--steps",
+            ["1,0,1", "1,0,1", "1,0,1"],
             "1",
-            "--scalar",
-            "exact",
-            "--normalize",
-        ]);
+            &["--scalar", "exact", "--normalize"],
+        );
         assert_eq!(levels_of(&o), vec![Value::from(255); 2], "{m}");
     }
     // Symmetric normals: Phong's middle normal is parallel to L (exactly 1), the
     // ends are 1/√2 (180.3… → 180); Gouraud is 1/√2 throughout.
     let span = |m: &str| {
-        run(&[
-            "span",
-            "--method",
+        span_run(
             m,
-            "--na",
-            "1,0,1",
-            "--nb",
-            "-1,0,1",
-            "--light",
-            "0,0,3",
-            "--steps",
+            ["1,0,1", "-1,0,1", "0,0,3"],
             "2",
-            "--scalar",
-            "exact",
-            "--normalize",
-        ])
+            &["--scalar", "exact", "--normalize"],
+        )
     };
     let l = |v: &[u8]| v.iter().map(|&x| Value::from(x)).collect::<Vec<_>>();
     assert_eq!(levels_of(&span("phong")), l(&[180, 255, 180]));
     assert_eq!(levels_of(&span("gouraud")), l(&[180, 180, 180]));
     // The float runs are unchanged: their level is that of the float value.
-    let o = run(&[
-        "span",
-        "--method",
+    let o = span_run(
         "phong",
-        "--na",
-        "1,0,1",
-        "--nb",
-        "1,0,1",
-        "--light",
-        "1,0,1",
-        "--steps",
+        ["1,0,1", "1,0,1", "1,0,1"],
         "1",
-        "--scalar",
-        "f64",
-        "--normalize",
-    ]);
+        &["--scalar", "f64", "--normalize"],
+    );
     assert_eq!(code(&o), 0);
 }
 
@@ -558,23 +414,12 @@ fn angular_digits_are_true_near_plus_and_minus_one() {
             big.clone() - 1,
             s = s40
         );
-        let o = run(&[
-            "span",
-            "--method",
+        let o = span_run(
             "angular",
-            "--na",
-            &na,
-            "--nb",
-            "0.6,0,0.8",
-            "--light",
-            "0,0,1",
-            "--steps",
+            [&na, "0.6,0,0.8", "0,0,1"],
             "2",
-            "--scalar",
-            "exact",
-            "--digits",
-            "74",
-        ]);
+            &["--scalar", "exact", "--digits", "74"],
+        );
         assert_eq!(code(&o), 0, "{}", stderr(&o));
         let v: Value = serde_json::from_slice(&o.stdout).unwrap();
         let got = phong_approx::parse::parse_rational(v["values"][1].as_str().unwrap()).unwrap();
@@ -732,21 +577,16 @@ fn phong_has_no_reference_bound_where_its_normals_nearly_cancel() {
     assert!(bound(Method::Phong, 2, 0.5, u).is_some());
     // The span of the report: N_b 2·10^-7 from opposite, exactly unit; span printed a
     // reference bound of 5.97 there.
-    let o = run(&[
-        "span",
-        "--method",
+    let o = span_run(
         "phong",
-        "--na",
-        "0,0,1",
-        "--nb",
-        "20000000/100000000000001,0,-99999999999999/100000000000001",
-        "--light",
-        "2/3,1/3,2/3",
-        "--steps",
+        [
+            "0,0,1",
+            "20000000/100000000000001,0,-99999999999999/100000000000001",
+            "2/3,1/3,2/3",
+        ],
         "2",
-        "--scalar",
-        "f32",
-    ]);
+        &["--scalar", "f32"],
+    );
     assert_eq!(code(&o), 0, "{}", stderr(&o));
     let j: Value = serde_json::from_slice(&o.stdout).unwrap();
     assert!(j["error_bound"]["reference"].is_null(), "{j}");
@@ -763,22 +603,12 @@ fn square_roots_of_tiny_rationals_never_divide_by_zero() {
         ["spherical", "1e-90,0,1", "2"],
         ["bishop-weimer", "1e-280,0,-1", "3"],
     ] {
-        let o = run(&[
-            "span",
-            "--method",
+        let o = span_run(
             args[0],
-            "--na",
-            "0,0,1",
-            "--nb",
-            args[1],
-            "--light",
-            "2/3,1/3,2/3",
-            "--steps",
+            ["0,0,1", args[1], "2/3,1/3,2/3"],
             args[2],
-            "--scalar",
-            "exact",
-            "--normalize",
-        ]);
+            &["--scalar", "exact", "--normalize"],
+        );
         let e = stderr(&o);
         assert!(!e.contains("panicked"), "{args:?}: {e}");
         assert!(code(&o) == 0 || code(&o) == 2, "{args:?}: {e}");

@@ -67,10 +67,12 @@ pub(super) fn shade_row(
         .collect();
     let mut specular = vec![Vec::new(); COLUMNS.len()];
     if want_specular {
-        let span_h = span_to(scene.half())?;
+        let half = scene.half();
+        let p_a = na.dot(half);
+        let span_h = span_to(half)?;
         crate::raster::shader::shade_row(
             span_h.as_ref(),
-            &na.dot(scene.half()),
+            &p_a,
             prep,
             &COLUMNS,
             index,
@@ -79,7 +81,7 @@ pub(super) fn shade_row(
                 // Classic Gouraud of N·H: vertex values are not kept per vertex here,
                 // so the span's edge values (exact) are interpolated.
                 match &span_h {
-                    None => o[0] = na.dot(scene.half()),
+                    None => o[0] = p_a,
                     Some(s) => {
                         Method::Gouraud.run(s, prep, o).ok()?;
                     }

@@ -396,5 +396,27 @@ mod on_device {
             4,
             "the two planted bugs, twice: {out}"
         );
+        // docs/conformance.md's table is this run's wherever the adapter is the one it
+        // names (other drivers may round otherwise).
+        let docs =
+            std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/conformance.md"))
+                .unwrap();
+        let adapter = out.lines().next().unwrap().trim_start_matches("adapter: ");
+        if docs.contains(&format!("On {adapter},")) {
+            let table = docs
+                .split("<!-- gpu table: begin -->\n")
+                .nth(1)
+                .and_then(|t| t.split("<!-- gpu table: end -->").next())
+                .expect("the GPU table's markers");
+            let printed: String = out
+                .lines()
+                .filter(|l| l.starts_with('|'))
+                .map(|l| format!("{l}\n"))
+                .collect();
+            assert_eq!(
+                table, printed,
+                "docs/conformance.md's GPU table is not this run's: paste `gpu-check --builtin`'s"
+            );
+        }
     }
 }

@@ -7,7 +7,9 @@
 //! pixel to the next, so it runs at the latency of a float addition per pixel and
 //! cannot use SIMD. The kernels here evaluate the same quadratics in closed form,
 //! `p_i = p_a + i·t_0 + i(i − 1)/2·ds` (eq. 14 with `t_0` for `di_a`), so every pixel
-//! is independent and LLVM vectorizes the loop; the Phong kernel evaluates `p_i/√q_i`
+//! is independent and LLVM vectorizes the loop — or, on long rows, run the paper's
+//! recurrence in [`LANES`] independent lanes, each stepping [`LANES`] pixels at a time
+//! (two additions a pixel, no product); the Phong kernel evaluates `p_i/√q_i`
 //! with `p` and `q` in closed form (eqs. 2–3). The loop is compiled for three vector
 //! paths — the x86-64 baseline, AVX2 with FMA, AVX-512 — one of which is chosen at run
 //! time ([`crate::simd`]); every path gives the same bits.
@@ -95,25 +97,29 @@ macro_rules! fast_impl {
                 Self::new(v(&s.na), v(&s.nb), v(&s.l), s.n)
             }
 
-            /// Corrected Euler in closed form: `p_i = p_a + i·(t_0 + (i − 1)/2·ds)`.
-            /// Fills `out[..=n]`; `out` must hold at least `n + 1` values (extra
+            /// Corrected Euler, `p_i = p_a + i·(t_0 + (i − 1)/2·ds)`: in closed form on
+            /// a row of fewer than [`STEPPED_FROM`] pixels, else by the paper's
+            /// recurrence in [`LANES`] lanes (eqs. 16–17; docs/float.md §12). Fills
+            /// `out[..=n]`; `out` must hold at least `n + 1` values (extra
             /// values are left alone).
             #[inline]
             pub fn corrected_euler(&self, out: &mut [$f]) {
                 quadratic(self.b, self.t0, self.ds, &mut out[..=self.n as usize]);
             }
 
-            /// Plain Euler in closed form (eq. 14 at every pixel).
+            /// Plain Euler (eq. 14 at every pixel), in closed form or in lanes as
+            /// [`Self::corrected_euler`].
             #[inline]
             pub fn euler(&self, out: &mut [$f]) {
                 quadratic(self.b, self.di_a, self.ds, &mut out[..=self.n as usize]);
             }
 
-            /// Gouraud (fence) in closed form: `p_a + i·dp`.
+            /// Gouraud (fence), `p_a + i·dp`: in closed form on a row of fewer than
+            /// [`STEPPED_FROM`] pixels, else by `g += dp` in [`LANES`] lanes
+            /// (docs/float.md §12).
             #[inline]
             pub fn gouraud(&self, out: &mut [$f]) {
-                let (p0, dp) = (self.b, self.dp);
-                each_x(&mut out[..=self.n as usize], |x| p0 + x * dp);
+                linear_impl(self.b, self.dp, &mut out[..=self.n as usize]);
             }
 
             /// Phong in closed form: `(A·i + B)/√(C·i² + D·i + E)`, with `sqrt` and a
@@ -236,6 +242,17 @@ macro_rules! fast_impl {
             }
         }
 
+        /// `0, 1, 2, …, 63`: the offsets of the pixels of a chunk, or the lanes.
+        const OFF: [$f; 64] = {
+            let mut a = [0.0; 64];
+            let mut j = 0;
+            while j < 64 {
+                a[j] = j as $f;
+                j += 1;
+            }
+            a
+        };
+
         /// Calls `g(&mut out[i], i)` with `i` as a float, eight pixels at a time: the
         /// index is a float base plus constant offsets (exact below 2^24), so no
         /// integer-to-float conversion stands in the way of vectorization.
@@ -256,13 +273,13 @@ macro_rules! fast_impl {
         }
 
         /// `out[i] = f(i)` on the chosen vector path ([`crate::simd::path`]): the
-        /// same loop, [`each_x_w`], compiled for the baseline, for AVX2 with FMA, or
-        /// for AVX-512.
+        /// same loop, [`each_x_wide`], compiled for the baseline, for AVX2 with FMA,
+        /// or for AVX-512.
         #[inline(always)]
         fn each_x(out: &mut [$f], f: impl Fn($f) -> $f) {
-            // A short row is faster inline on the baseline: the wide paths are calls
-            // (a function compiled for other features is not inlined into this one),
-            // and a row of fewer than `WIDE_FROM` pixels fills few wide vectors
+            // A short row is faster inline in eight-pixel chunks: the wide paths are
+            // calls (a function compiled for other features is not inlined into this
+            // one), and a row of fewer than `WIDE_FROM` pixels fills few wide vectors
             // (benches/paths.rs). Every path gives the same bits.
             if out.len() < WIDE_FROM {
                 return each_x_w::<8>(out, f);
@@ -275,32 +292,41 @@ macro_rules! fast_impl {
                 #[cfg(target_arch = "x86_64")]
                 // SAFETY: `path()` is `Avx2` only where the CPU has AVX2 and FMA.
                 crate::simd::Path::Avx2 => unsafe { each_x_avx2(out, f) },
-                _ => each_x_w::<8>(out, f),
+                _ => each_x_wide::<32>(out, f),
             }
         }
 
-        /// [`each_x_w`] in eight-pixel chunks with AVX2 (one `f32` vector).
+        /// [`each_x_wide`] in 32-pixel chunks with AVX2 (four `f32` vectors).
         #[cfg(target_arch = "x86_64")]
         #[target_feature(enable = "avx2,fma")]
         unsafe fn each_x_avx2(out: &mut [$f], f: impl Fn($f) -> $f) {
-            each_x_w::<8>(out, f)
+            each_x_wide::<32>(out, f)
         }
 
-        /// [`each_x_w`] in sixteen-pixel chunks with AVX-512 (one `f32` vector), the
-        /// last fifteen pixels or fewer in eight-pixel chunks (a short row is not one
-        /// wide partial chunk and a copy).
+        /// [`each_x_wide`] in 64-pixel chunks with AVX-512 (four `f32` vectors).
         #[cfg(target_arch = "x86_64")]
         #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
         unsafe fn each_x_avx512(out: &mut [$f], f: impl Fn($f) -> $f) {
-            let wide = out.len() / 16 * 16;
+            each_x_wide::<64>(out, f)
+        }
+
+        /// `out[i] = f(i)` in `W`-pixel chunks, the last `W − 1` pixels or fewer in
+        /// eight-pixel chunks ([`each_x_w`]). A chunk's indices are a float base plus
+        /// constant offsets, and the base's addition is the loop's one carried
+        /// dependency: at eight pixels a chunk its latency, not the arithmetic, set the
+        /// pace (measured: Gouraud at 2.5 × the store floor with eight-pixel chunks,
+        /// 1.3 × with 32 or 64), so the long loop takes several vectors a chunk. Every
+        /// pixel's value is `f` of its exact index (below 2^24), whatever `W`.
+        #[inline(always)]
+        fn each_x_wide<const W: usize>(out: &mut [$f], f: impl Fn($f) -> $f) {
+            let wide = out.len() / W * W;
             let (head, tail) = out.split_at_mut(wide);
-            let off: [$f; 16] = std::array::from_fn(|j| j as $f);
             let mut base: $f = 0.0;
-            for ch in head.chunks_exact_mut(16) {
-                for j in 0..16 {
-                    ch[j] = f(base + off[j]);
+            for ch in head.chunks_exact_mut(W) {
+                for j in 0..W {
+                    ch[j] = f(base + OFF[j]);
                 }
-                base += 16.0;
+                base += W as $f;
             }
             each_x_w::<8>(tail, |x| f(base + x))
         }
@@ -345,11 +371,127 @@ macro_rules! fast_impl {
             each_x(out, |x| (a * x + b) / ((c * x + d) * x + e).sqrt());
         }
 
-        /// `p0 + i·(t + (i − 1)/2·ds)` for `i = 0..len`.
+        /// `p0 + i·(t + (i − 1)/2·ds)` for `i = 0..len`: in closed form on a row
+        /// shorter than [`STEPPED_FROM`], else by [`stepped`] on the chosen path.
         #[inline]
         fn quadratic_impl(p0: $f, t: $f, ds: $f, out: &mut [$f]) {
+            if out.len() < STEPPED_FROM {
+                let half_ds = 0.5 * ds;
+                return each_x(out, |x| p0 + x * (t + (x - 1.0) * half_ds));
+            }
+            match crate::simd::path() {
+                #[cfg(target_arch = "x86_64")]
+                // SAFETY: as in `each_x`.
+                crate::simd::Path::Avx512 => unsafe { stepped_avx512(p0, t, ds, out) },
+                #[cfg(target_arch = "x86_64")]
+                // SAFETY: as in `each_x`.
+                crate::simd::Path::Avx2 => unsafe { stepped_avx2(p0, t, ds, out) },
+                _ => stepped(p0, t, ds, out),
+            }
+        }
+
+        /// `p0 + i·dp` for `i = 0..len`: in closed form on a row shorter than
+        /// [`STEPPED_FROM`], else by [`stepped_linear`] on the chosen path.
+        #[inline]
+        fn linear_impl(p0: $f, dp: $f, out: &mut [$f]) {
+            if out.len() < STEPPED_FROM {
+                return each_x(out, |x| p0 + x * dp);
+            }
+            match crate::simd::path() {
+                #[cfg(target_arch = "x86_64")]
+                // SAFETY: as in `each_x`.
+                crate::simd::Path::Avx512 => unsafe { stepped_linear_avx512(p0, dp, out) },
+                #[cfg(target_arch = "x86_64")]
+                // SAFETY: as in `each_x`.
+                crate::simd::Path::Avx2 => unsafe { stepped_linear_avx2(p0, dp, out) },
+                _ => stepped_linear(p0, dp, out),
+            }
+        }
+
+        /// [`stepped_linear`] with AVX2.
+        #[cfg(target_arch = "x86_64")]
+        #[target_feature(enable = "avx2,fma")]
+        unsafe fn stepped_linear_avx2(p0: $f, dp: $f, out: &mut [$f]) {
+            stepped_linear(p0, dp, out)
+        }
+
+        /// [`stepped_linear`] with AVX-512.
+        #[cfg(target_arch = "x86_64")]
+        #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
+        unsafe fn stepped_linear_avx512(p0: $f, dp: $f, out: &mut [$f]) {
+            stepped_linear(p0, dp, out)
+        }
+
+        /// Gouraud's `g += dp` taken [`LANES`] pixels at a step, in [`LANES`] lanes:
+        /// lane `j` starts at the closed form `p0 + j·dp` and adds `L·dp` (exact: `L`
+        /// is a power of two) a step. One addition a pixel; the same bits on every
+        /// path. Error: docs/float.md §12 (`(0.032n + 15)u`).
+        #[inline(always)]
+        fn stepped_linear(p0: $f, dp: $f, out: &mut [$f]) {
+            let mut p = [0.0; LANES];
+            for j in 0..LANES {
+                p[j] = p0 + OFF[j] * dp;
+            }
+            let dpl = LANES as $f * dp;
+            let mut chunks = out.chunks_exact_mut(LANES);
+            for ch in &mut chunks {
+                for j in 0..LANES {
+                    ch[j] = p[j];
+                    p[j] += dpl;
+                }
+            }
+            for (o, v) in chunks.into_remainder().iter_mut().zip(p) {
+                *o = v;
+            }
+        }
+
+        /// [`stepped`] with AVX2.
+        #[cfg(target_arch = "x86_64")]
+        #[target_feature(enable = "avx2,fma")]
+        unsafe fn stepped_avx2(p0: $f, t: $f, ds: $f, out: &mut [$f]) {
+            stepped(p0, t, ds, out)
+        }
+
+        /// [`stepped`] with AVX-512.
+        #[cfg(target_arch = "x86_64")]
+        #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
+        unsafe fn stepped_avx512(p0: $f, t: $f, ds: $f, out: &mut [$f]) {
+            stepped(p0, t, ds, out)
+        }
+
+        /// The paper's recurrence `p += t; t += ds` (eqs. 16–17) taken [`LANES`]
+        /// pixels at a step, in [`LANES`] lanes: lane `j` holds the pixels
+        /// `j, j + L, j + 2L, …` (`L = LANES`), starts from the closed form at `j`, and
+        /// steps by its own forward differences,
+        /// `p_{i+L} − p_i = L·(t + ds·(j + (L − 1)/2))` for the first step and
+        /// `L²·ds` between steps (exact: `L` is a power of two). Two additions a pixel
+        /// and no product, where the closed form takes three additions and two
+        /// products; each lane's additions depend on that lane alone, so the loop
+        /// runs at the width of the vector unit. The lanes are the same on every
+        /// path, so every path gives the same bits. Error: docs/float.md §12
+        /// (`(0.07n + 51)u` for corrected Euler).
+        #[inline(always)]
+        fn stepped(p0: $f, t: $f, ds: $f, out: &mut [$f]) {
             let half_ds = 0.5 * ds;
-            each_x(out, |x| p0 + x * (t + (x - 1.0) * half_ds));
+            let l = LANES as $f;
+            let (mut p, mut tl) = ([0.0; LANES], [0.0; LANES]);
+            for j in 0..LANES {
+                let x = OFF[j];
+                p[j] = p0 + x * (t + (x - 1.0) * half_ds);
+                tl[j] = l * (t + ds * (x + (l - 1.0) * 0.5));
+            }
+            let dsl = l * l * ds;
+            let mut chunks = out.chunks_exact_mut(LANES);
+            for ch in &mut chunks {
+                for j in 0..LANES {
+                    ch[j] = p[j];
+                    p[j] += tl[j];
+                    tl[j] += dsl;
+                }
+            }
+            for (o, v) in chunks.into_remainder().iter_mut().zip(p) {
+                *o = v;
+            }
         }
     };
 }
@@ -357,6 +499,15 @@ macro_rules! fast_impl {
 /// The shortest row the wide vector paths take (`simd::Path::Avx2`, `Avx512`):
 /// shorter ones run the baseline loop inline.
 pub const WIDE_FROM: usize = 32;
+
+/// The shortest row (in pixels, `n + 1`) that the Gouraud, corrected Euler and Euler
+/// kernels take by their recurrences in [`LANES`] lanes; shorter rows take the closed
+/// form (docs/float.md §12; the same bits on every vector path either way).
+pub const STEPPED_FROM: usize = 64;
+
+/// The lanes of the stepped recurrence: 32 pixels a step (four AVX2 vectors of `f32`,
+/// eight SSE2 ones, two AVX-512 ones).
+pub const LANES: usize = 32;
 
 /// `dst.copy_from_slice(src)` for the at most seven values of a partial chunk, as
 /// fixed-size copies: a copy of variable length is a call to `memcpy`, which costs

@@ -43,12 +43,13 @@ const ACOS_HOLDER: f64 = 2.2215;
 /// `docs/float.md` for each derivation; the methods' own are in their catalogue rows,
 /// [`Bound`]).
 mod coef {
-    /// Fast kernels (`FastSpan`): corrected Euler in closed form (no growth in `n`).
-    pub const FAST_CORRECTED_EULER: (f64, f64) = (0.0, 48.0);
-    /// Fast kernels: Euler in closed form.
-    pub const FAST_EULER: (f64, f64) = (0.0, 96.0);
-    /// Fast kernels: Gouraud in closed form.
-    pub const FAST_GOURAUD: (f64, f64) = (0.0, 15.0);
+    /// Fast kernels (`FastSpan`): corrected Euler, in closed form below
+    /// `fast::STEPPED_FROM` pixels (48u, no growth in `n`), in 32 lanes from there.
+    pub const FAST_CORRECTED_EULER: (f64, f64) = (0.07, 51.0);
+    /// Fast kernels: Euler, in closed form (96u) or in 32 lanes.
+    pub const FAST_EULER: (f64, f64) = (0.18, 101.0);
+    /// Fast kernels: Gouraud, in closed form (15u) or in 32 lanes.
+    pub const FAST_GOURAUD: (f64, f64) = (0.032, 15.0);
     /// Fast kernels: the serial corrected-Euler twin.
     pub const FAST_CORRECTED_EULER_SERIAL: (f64, f64) = (2.2, 41.0);
     /// Fast kernels: the serial Gouraud twin.
@@ -325,13 +326,13 @@ pub fn table_step(size: u32) -> f64 {
 /// closed form of `ds`) and evaluation order differ from [`Method::shade`]'s.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Kernel {
-    /// `FastSpan::corrected_euler` (closed form).
+    /// `FastSpan::corrected_euler` (closed form, or the recurrence in 32 lanes).
     CorrectedEuler,
     /// `FastSpan::corrected_euler_serial` (`p += t; t += ds`).
     CorrectedEulerSerial,
-    /// `FastSpan::euler` (closed form).
+    /// `FastSpan::euler` (closed form, or the recurrence in 32 lanes).
     Euler,
-    /// `FastSpan::gouraud` (closed form).
+    /// `FastSpan::gouraud` (closed form, or `g += dp` in 32 lanes).
     Gouraud,
     /// `FastSpan::gouraud_serial` (`g += dp`).
     GouraudSerial,

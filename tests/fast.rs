@@ -1035,3 +1035,77 @@ fn rsqrt_newton_step_error() {
         }
     }
 }
+
+/// Every row length from 1 pixel to `STEPPED_FROM + 3·LANES` (160) — every remainder of the 8-, 32- and 64-pixel
+/// chunks and of the 32-lane recurrence, on both sides of `fast::STEPPED_FROM` — on
+/// every vector path this CPU has: each kernel fills exactly `out[..=n]`, leaves the
+/// room after it alone, stays within its bound of the exact run, and gives the same
+/// bits on every path.
+#[test]
+fn every_row_length_on_every_path() {
+    use phong_approx::fast::{LANES, STEPPED_FROM};
+    use phong_approx::simd::{self, Path};
+    let (na, nb, l) = (Stereo(0, 0, 1), Stereo(1, 0, 3), Stereo(2, 1, 5));
+    let paths = Path::supported_paths();
+    let chosen = simd::path();
+    type Run = fn(&FastSpan<f32>, &mut [f32]);
+    let kernels: [(Method, Kernel, Run); 5] = [
+        (
+            Method::CorrectedEuler,
+            Kernel::CorrectedEuler,
+            FastSpan::<f32>::corrected_euler,
+        ),
+        (Method::Euler, Kernel::Euler, FastSpan::<f32>::euler),
+        (Method::Gouraud, Kernel::Gouraud, FastSpan::<f32>::gouraud),
+        (Method::Phong, Kernel::Phong, FastSpan::<f32>::phong),
+        (
+            Method::SymmetricPhong,
+            Kernel::SymmetricPhong,
+            FastSpan::<f32>::symmetric_phong,
+        ),
+    ];
+    // Both sides of the threshold, and every remainder of the lanes past it.
+    let longest = (STEPPED_FROM + 3 * LANES) as u32;
+    for n in 1..longest {
+        let c = Case {
+            why: "every row length",
+            na,
+            nb,
+            l,
+            n,
+        };
+        let s = c.span().expect("a unit span");
+        let f = FastSpan::<f32>::from_span(&s.cast::<f32>().unwrap());
+        let u = f64::from(f32::EPSILON) / 2.0;
+        for (m, k, run) in kernels {
+            let b = fast_bound(k, n, q_min(&s), u).expect("a bounded span");
+            let exact = exact_values(m, &c, &s);
+            let mut first: Option<Vec<f32>> = None;
+            for &path in &paths {
+                simd::force(path).unwrap();
+                let mut out = vec![-7.0f32; n as usize + 5];
+                run(&f, &mut out);
+                assert!(
+                    out[n as usize + 1..].iter().all(|&v| v == -7.0),
+                    "{m} on the {path} path wrote past pixel n = {n}"
+                );
+                for i in 0..=n as usize {
+                    let e = err(&out[i], &exact[i]);
+                    assert!(
+                        e <= b,
+                        "{m} on the {path} path, n = {n}, pixel {i}: {e:e} > {b:e}"
+                    );
+                }
+                match &first {
+                    None => first = Some(out),
+                    Some(f0) => assert!(
+                        f0.iter().zip(&out).all(|(x, y)| x.to_bits() == y.to_bits()),
+                        "{m}, n = {n}: the {path} path's bits differ from the {} path's",
+                        paths[0]
+                    ),
+                }
+            }
+        }
+    }
+    simd::force(chosen).unwrap();
+}

@@ -502,8 +502,10 @@ pub const WIDE_FROM: usize = 32;
 
 /// The shortest row (in pixels, `n + 1`) that the Gouraud, corrected Euler and Euler
 /// kernels take by their recurrences in [`LANES`] lanes; shorter rows take the closed
-/// form (docs/float.md §12; the same bits on every vector path either way).
-pub const STEPPED_FROM: usize = 64;
+/// form (docs/float.md §12; the same bits on every vector path either way). Below four
+/// steps of the lanes, filling the lanes (a closed form and a first step for each of
+/// 32) costs about what the closed form of the whole row does.
+pub const STEPPED_FROM: usize = 128;
 
 /// The lanes of the stepped recurrence: 32 pixels a step (four AVX2 vectors of `f32`,
 /// eight SSE2 ones, two AVX-512 ones).

@@ -1036,7 +1036,7 @@ fn rsqrt_newton_step_error() {
     }
 }
 
-/// Every row length from 1 pixel to `STEPPED_FROM + 3·LANES` (160) — every remainder of the 8-, 32- and 64-pixel
+/// Every row length from 1 pixel to `STEPPED_FROM + 3·LANES` (224) — every remainder of the 8-, 32- and 64-pixel
 /// chunks and of the 32-lane recurrence, on both sides of `fast::STEPPED_FROM` — on
 /// every vector path this CPU has: each kernel fills exactly `out[..=n]`, leaves the
 /// room after it alone, stays within its bound of the exact run, and gives the same

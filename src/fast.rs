@@ -273,13 +273,13 @@ macro_rules! fast_impl {
         }
 
         /// `out[i] = f(i)` on the chosen vector path ([`crate::simd::path`]): the
-        /// same loop, [`each_x_wide`], compiled for the baseline, for AVX2 with FMA,
-        /// or for AVX-512.
+        /// same loop, [`each_x_w`], compiled for the baseline, for AVX2 with FMA, or
+        /// for AVX-512.
         #[inline(always)]
         fn each_x(out: &mut [$f], f: impl Fn($f) -> $f) {
-            // A short row is faster inline in eight-pixel chunks: the wide paths are
-            // calls (a function compiled for other features is not inlined into this
-            // one), and a row of fewer than `WIDE_FROM` pixels fills few wide vectors
+            // A short row is faster inline on the baseline: the wide paths are calls
+            // (a function compiled for other features is not inlined into this one),
+            // and a row of fewer than `WIDE_FROM` pixels fills few wide vectors
             // (benches/paths.rs). Every path gives the same bits.
             if out.len() < WIDE_FROM {
                 return each_x_w::<8>(out, f);
@@ -292,41 +292,32 @@ macro_rules! fast_impl {
                 #[cfg(target_arch = "x86_64")]
                 // SAFETY: `path()` is `Avx2` only where the CPU has AVX2 and FMA.
                 crate::simd::Path::Avx2 => unsafe { each_x_avx2(out, f) },
-                _ => each_x_wide::<32>(out, f),
+                _ => each_x_w::<8>(out, f),
             }
         }
 
-        /// [`each_x_wide`] in 32-pixel chunks with AVX2 (four `f32` vectors).
+        /// [`each_x_w`] in eight-pixel chunks with AVX2 (one `f32` vector).
         #[cfg(target_arch = "x86_64")]
         #[target_feature(enable = "avx2,fma")]
         unsafe fn each_x_avx2(out: &mut [$f], f: impl Fn($f) -> $f) {
-            each_x_wide::<32>(out, f)
+            each_x_w::<8>(out, f)
         }
 
-        /// [`each_x_wide`] in 64-pixel chunks with AVX-512 (four `f32` vectors).
+        /// [`each_x_w`] in sixteen-pixel chunks with AVX-512 (one `f32` vector), the
+        /// last fifteen pixels or fewer in eight-pixel chunks (a short row is not one
+        /// wide partial chunk and a copy).
         #[cfg(target_arch = "x86_64")]
         #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
         unsafe fn each_x_avx512(out: &mut [$f], f: impl Fn($f) -> $f) {
-            each_x_wide::<64>(out, f)
-        }
-
-        /// `out[i] = f(i)` in `W`-pixel chunks, the last `W − 1` pixels or fewer in
-        /// eight-pixel chunks ([`each_x_w`]). A chunk's indices are a float base plus
-        /// constant offsets, and the base's addition is the loop's one carried
-        /// dependency: at eight pixels a chunk its latency, not the arithmetic, set the
-        /// pace (measured: Gouraud at 2.5 × the store floor with eight-pixel chunks,
-        /// 1.3 × with 32 or 64), so the long loop takes several vectors a chunk. Every
-        /// pixel's value is `f` of its exact index (below 2^24), whatever `W`.
-        #[inline(always)]
-        fn each_x_wide<const W: usize>(out: &mut [$f], f: impl Fn($f) -> $f) {
-            let wide = out.len() / W * W;
+            let wide = out.len() / 16 * 16;
             let (head, tail) = out.split_at_mut(wide);
+            let off: [$f; 16] = std::array::from_fn(|j| j as $f);
             let mut base: $f = 0.0;
-            for ch in head.chunks_exact_mut(W) {
-                for j in 0..W {
-                    ch[j] = f(base + OFF[j]);
+            for ch in head.chunks_exact_mut(16) {
+                for j in 0..16 {
+                    ch[j] = f(base + off[j]);
                 }
-                base += W as $f;
+                base += 16.0;
             }
             each_x_w::<8>(tail, |x| f(base + x))
         }
@@ -373,12 +364,19 @@ macro_rules! fast_impl {
 
         /// `p0 + i·(t + (i − 1)/2·ds)` for `i = 0..len`: in closed form on a row
         /// shorter than [`STEPPED_FROM`], else by [`stepped`] on the chosen path.
-        #[inline]
+        #[inline(always)]
         fn quadratic_impl(p0: $f, t: $f, ds: $f, out: &mut [$f]) {
             if out.len() < STEPPED_FROM {
                 let half_ds = 0.5 * ds;
                 return each_x(out, |x| p0 + x * (t + (x - 1.0) * half_ds));
             }
+            stepped_on_path(p0, t, ds, out)
+        }
+
+        /// [`stepped`] on the chosen path: out of line, so that the short rows'
+        /// closed form stays small enough to inline where it is called.
+        #[inline(never)]
+        fn stepped_on_path(p0: $f, t: $f, ds: $f, out: &mut [$f]) {
             match crate::simd::path() {
                 #[cfg(target_arch = "x86_64")]
                 // SAFETY: as in `each_x`.
@@ -392,11 +390,17 @@ macro_rules! fast_impl {
 
         /// `p0 + i·dp` for `i = 0..len`: in closed form on a row shorter than
         /// [`STEPPED_FROM`], else by [`stepped_linear`] on the chosen path.
-        #[inline]
+        #[inline(always)]
         fn linear_impl(p0: $f, dp: $f, out: &mut [$f]) {
             if out.len() < STEPPED_FROM {
                 return each_x(out, |x| p0 + x * dp);
             }
+            stepped_linear_on_path(p0, dp, out)
+        }
+
+        /// [`stepped_linear`] on the chosen path, out of line as [`stepped_on_path`].
+        #[inline(never)]
+        fn stepped_linear_on_path(p0: $f, dp: $f, out: &mut [$f]) {
             match crate::simd::path() {
                 #[cfg(target_arch = "x86_64")]
                 // SAFETY: as in `each_x`.

@@ -41,6 +41,7 @@ const LAYERS: &[(&str, u32)] = &[
     // Fast kernels.
     ("simd.rs", 7),
     ("fast.rs", 7),
+    ("fast/", 7),
     ("fast_rows.rs", 7),
     ("fast_rows/", 7),
     ("fixed_span.rs", 7),

@@ -261,7 +261,6 @@ macro_rules! fast_impl {
         /// integer-to-float conversion stands in the way of vectorization.
         #[inline(always)]
         fn chunked(out: &mut [$f], g: impl Fn(&mut $f, $f)) {
-            const OFF: [$f; 8] = [0.0, 1.0, 2.0, 3.0, 4.0, 5.0, 6.0, 7.0];
             let mut chunks = out.chunks_exact_mut(8);
             let mut base: $f = 0.0;
             for ch in &mut chunks {

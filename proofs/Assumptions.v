@@ -8,6 +8,8 @@ From PhongApprox Require Import ClosedForms Angle.
 From PhongApprox Require Import FastSetup.
 From PhongApprox Require Import FloatModel Float Fixed.
 From PhongApprox Require Import FloatModelK Profiles.
+From PhongApprox Require Import PhongValue.
+From PhongApprox Require Import PhongCount.
 
 (** Span.v *)
 Check eq_2_p_is_linear.
@@ -258,3 +260,27 @@ Check profile_shader_euler_closed_half_recip_binary32.
 Print Assumptions profile_shader_euler_closed_half_recip_binary32.
 Check adaptive_acceptance_contains_every_run.
 Print Assumptions adaptive_acceptance_contains_every_run.
+
+(** PhongValue.v *)
+Check phong_value_real.
+Print Assumptions phong_value_real.
+Check phong_value_div.
+Print Assumptions phong_value_div.
+Check phong_value_recip.
+Print Assumptions phong_value_recip.
+Check phong_value_either.
+Print Assumptions phong_value_either.
+
+(** PhongCount.v *)
+Check phong_horner_div_generic.
+Print Assumptions phong_horner_div_generic.
+Check phong_horner_recip_generic.
+Print Assumptions phong_horner_recip_generic.
+Check phong_pixel_div_generic.
+Print Assumptions phong_pixel_div_generic.
+Check phong_pixel_recip_generic.
+Print Assumptions phong_pixel_recip_generic.
+Check phong_lerp_div_generic.
+Print Assumptions phong_lerp_div_generic.
+Check phong_lerp_recip_generic.
+Print Assumptions phong_lerp_recip_generic.

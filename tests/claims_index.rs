@@ -19,12 +19,14 @@ fn read(p: &str) -> String {
 
 /// Proof files whose theorems are tested and explained somewhere else than
 /// `tests/claims.rs` and `docs/derivations.md`: (file, test file, document).
-const GROUPS: [(&str, &str, &str); 5] = [
+const GROUPS: [(&str, &str, &str); 7] = [
     ("Related.v", "tests/related.rs", "docs/comparison.md"),
     ("Float.v", "tests/float_bounds.rs", "docs/float.md"),
     ("Fixed.v", "tests/lowp.rs", "docs/float.md"),
     ("FastSetup.v", "tests/fast.rs", "docs/float.md"),
     ("Profiles.v", "tests/profiles.rs", "docs/float.md"),
+    ("PhongValue.v", "tests/phong_value.rs", "docs/float.md"),
+    ("PhongCount.v", "tests/phong_value.rs", "docs/float.md"),
 ];
 
 /// Every `Theorem` in `proofs/*.v` (except `Assumptions.v`) with its proof file.

@@ -182,12 +182,23 @@ fn duff_steps(a: &Arith, n: u32, p_steps: u32, q_steps: u32, q_min: f64) -> Opti
 /// Cauchy–Schwarz); the smaller of the two forms is taken for each (`e_p`, `e_q`, plus
 /// `η'`). With `q̂ ≥ q_min − e_q` and `|p| ≤ √q`:
 ///
-/// `|v̂ − v| ≤ (e_p/√(q_min − e_q) + e_q/(√(q_min − e_q)·(√q_min + √(q_min − e_q))))·(1 + γ_f) + γ_f + η'`,
+/// `|v̂ − v| ≤ B·(1 + γ_f) + γ_f + 2(1 + B)·η'/√(q_min − e_q) + (1 + e_p)(1 + κ_mul·u)·η' + η'`,
+/// `B = e_p/√(q_min − e_q) + e_q/(√(q_min − e_q)·(√q_min + √(q_min − e_q)))`,
 ///
-/// `γ_f` for the square root, the division (or the reciprocal and the product).
+/// `γ_f` for the square root, the division (or the reciprocal and the product). That
+/// step, from `e_p` and `e_q` to the value, is a theorem for `p̂/√q̂` and `p̂·(1/√q̂)`
+/// (`phong_value_real`, `phong_value_div`, `phong_value_recip`, `phong_value_either` in
+/// `proofs/PhongValue.v`, with their size conditions checked here). The worst-case
+/// counts `3γ_{w_p}`, `9γ_{w_q}` are at least the proved ones of Horner's closed form,
+/// the per-pixel normal and the lerp (`phong_horner_div_generic`,
+/// `phong_horner_recip_generic`, `phong_pixel_div_generic`, `phong_pixel_recip_generic`,
+/// `phong_lerp_div_generic`, `phong_lerp_recip_generic` in `proofs/PhongCount.v`), so
+/// at `dn = 2` the bound is a theorem for those forms; the counts read with `dn`, and
+/// normalize-then-dot, are derived, so the bound is labelled *derived*.
+///
 /// `None` where `q` may round to half of `q_min` (`e_q ≥ q_min/2`: normals that
-/// nearly cancel, where no bound of this form holds) or `n > 2^24` (`i` must be
-/// exact).
+/// nearly cancel, where no bound of this form holds), where `1024·η' > √(q_min − e_q)`
+/// (the theorems' size condition) or `n > 2^24` (`i` must be exact).
 pub fn phong_derived(a: &Arith, n: u32, q_min: f64, dn: f64) -> Option<f64> {
     if !(q_min > 0.0 && q_min.is_finite()) || n == 0 || n > 1 << 24 || dn.is_nan() {
         return None;
@@ -212,7 +223,16 @@ pub fn phong_derived(a: &Arith, n: u32, q_min: f64, dn: f64) -> Option<f64> {
     }
     let g_f = gamma(a.ratio(), u);
     let lo = (q_min - e_q).sqrt();
-    let b = (e_p / lo + e_q / (lo * (q_min.sqrt() + lo))) * (1.0 + g_f) + g_f + eta;
+    // `phong_value_either`'s size conditions (w·u ≤ 2^-10, 1024·η ≤ √(q_min − e_q)).
+    if a.ratio() * u > 2f64.powi(-10) || 1024.0 * eta > lo {
+        return None;
+    }
+    let b_real = e_p / lo + e_q / (lo * (q_min.sqrt() + lo));
+    // `phong_value_either`'s absolute terms: the square root's η relative to
+    // `√q̂ ≥ √(q_min − e_q)`, the reciprocal's times `|p̂| ≤ 1 + e_p`, the last
+    // operation's own (each operation's η at most `eta`).
+    let abs = 2.0 * (1.0 + b_real) * (eta / lo) + (1.0 + e_p) * eta * (1.0 + a.mul * u) + eta;
+    let b = b_real * (1.0 + g_f) + g_f + abs;
     // This evaluation in f64 rounds too: a relative 2^-40 more covers it.
     Some(b * (1.0 + 2f64.powi(-40)))
 }

@@ -487,62 +487,61 @@ fn published_digests_are_those_of_the_committed_files() {
 /// names the profile; `shader` needs `--precision f32`; a bad name is one line.
 #[test]
 fn check_profiles_judge_by_the_proved_bounds() {
-    for set in SETS {
-        let path = root()
-            .join(format!("vectors/{set}.json"))
-            .display()
-            .to_string();
-        let file = committed(set);
-        for m in [Method::Gouraud, Method::CorrectedEuler] {
-            let good = tmp(
-                &format!("{set}-{m}.csv"),
-                &own_results::<f32>(file, m, false),
-            );
-            for profile in ["reference", "ieee", "shader"] {
-                let (code, out, err) =
-                    run_check(&path, &good, &["--method", &m.name(), "--profile", profile]);
-                assert_eq!(code, 0, "{set} {m} {profile}: {out}{err}");
-                assert!(
-                    out.contains(&format!("the {profile} profile's bound")),
-                    "{out}"
-                );
-            }
+    // The sets are judged at once, each in a thread (`check` is a process of its own).
+    std::thread::scope(|scope| {
+        for set in SETS {
+            scope.spawn(move || {
+                let path = root()
+                    .join(format!("vectors/{set}.json"))
+                    .display()
+                    .to_string();
+                let file = committed(set);
+                for m in [Method::Gouraud, Method::CorrectedEuler] {
+                    let good = tmp(
+                        &format!("{set}-{m}.csv"),
+                        &own_results::<f32>(file, m, false),
+                    );
+                    for profile in ["reference", "ieee", "shader"] {
+                        let (code, out, err) =
+                            run_check(&path, &good, &["--method", &m.name(), "--profile", profile]);
+                        assert_eq!(code, 0, "{set} {m} {profile}: {out}{err}");
+                        assert!(
+                            out.contains(&format!("the {profile} profile's bound")),
+                            "{out}"
+                        );
+                    }
+                }
+                // Euler's ieee and shader bounds are proved, Phong's, Duff's, symmetric
+                // Phong's and the adaptive scheme's derived (docs/float.md §18.2,
+                // §18.4–18.5): the crate's own results pass on every set under the
+                // default profile (ieee) in f32 and f64, and under shader in f32.
+                for m in [
+                    Method::Phong,
+                    Method::Euler,
+                    Method::Duff,
+                    Method::SymmetricPhong,
+                    Method::Adaptive,
+                ] {
+                    let r32 = tmp(
+                        &format!("{m}-{set}-f32.csv"),
+                        &own_results::<f32>(committed(set), m, false),
+                    );
+                    let r64 = tmp(
+                        &format!("{m}-{set}-f64.csv"),
+                        &own_results::<f64>(committed(set), m, false),
+                    );
+                    for (results, args) in [
+                        (&r32, vec!["--method", &*m.name()]),
+                        (&r64, vec!["--method", &*m.name(), "--precision", "f64"]),
+                        (&r32, vec!["--method", &*m.name(), "--profile", "shader"]),
+                    ] {
+                        let (code, out, err) = run_check(&path, results, &args);
+                        assert_eq!(code, 0, "{set} {m} {args:?}: {out}{err}");
+                    }
+                }
+            });
         }
-    }
-    // Euler's ieee and shader bounds are proved, Phong's, Duff's, symmetric Phong's and
-    // the adaptive scheme's derived (docs/float.md §18.2, §18.4–18.5): the crate's own
-    // results pass on every set
-    // under the default profile (ieee) in f32 and f64, and under shader in f32.
-    for set in SETS {
-        let path = root()
-            .join(format!("vectors/{set}.json"))
-            .display()
-            .to_string();
-        for m in [
-            Method::Phong,
-            Method::Euler,
-            Method::Duff,
-            Method::SymmetricPhong,
-            Method::Adaptive,
-        ] {
-            let r32 = tmp(
-                &format!("{m}-{set}-f32.csv"),
-                &own_results::<f32>(committed(set), m, false),
-            );
-            let r64 = tmp(
-                &format!("{m}-{set}-f64.csv"),
-                &own_results::<f64>(committed(set), m, false),
-            );
-            for (results, args) in [
-                (&r32, vec!["--method", &*m.name()]),
-                (&r64, vec!["--method", &*m.name(), "--precision", "f64"]),
-                (&r32, vec!["--method", &*m.name(), "--profile", "shader"]),
-            ] {
-                let (code, out, err) = run_check(&path, results, &args);
-                assert_eq!(code, 0, "{set} {m} {args:?}: {out}{err}");
-            }
-        }
-    }
+    });
     let file = committed("typical");
     let phong = tmp(
         "phong-f32.csv",

@@ -230,7 +230,7 @@ use phong_approx::Span;
 
 /// The forms of `proofs/PhongCount.v`.
 #[derive(Clone, Copy, Debug, PartialEq)]
-enum Form {
+pub(super) enum Form {
     /// `horner_ok`: `p̂ = A·i + B`, `q̂ = (C·i + D)·i + E`.
     Horner,
     /// `pixel_ok`: `N = N_a + i·k`, `p̂ = N·L`, `q̂ = N·N`.
@@ -248,9 +248,15 @@ fn constants(form: Form) -> (f64, f64, f64, f64) {
     }
 }
 
-/// `p̂_i` and `q̂_i` of `form` in `T`, the dot products summed as `how`, the products
+/// `p̂_i` and `q̂_i` of `form` in `T` (also `phong`'s in `tests/profiles.rs`), the dot products summed as `how`, the products
 /// that feed an addition fused or not, `/n` as a division or `·(1/n)`.
-fn pq<T: Native>(form: Form, how: Dot, fused: bool, recip: bool, s: &Span<Q>) -> Vec<(T, T)> {
+pub(super) fn pq<T: Native>(
+    form: Form,
+    how: Dot,
+    fused: bool,
+    recip: bool,
+    s: &Span<Q>,
+) -> Vec<(T, T)> {
     let vec = |x: &phong_approx::Vec3<Q>| [T::of(&x.x), T::of(&x.y), T::of(&x.z)];
     let (na, nb, l) = (vec(&s.na), vec(&s.nb), vec(&s.l));
     let nf = T::from_u32(s.n);

@@ -1022,13 +1022,7 @@ enum PhongForm {
 }
 
 fn phong<T: Native>(form: PhongForm, v: Variant, s: &Span<Q>) -> Vec<Q> {
-    let vec = |x: &phong_approx::Vec3<Q>| [T::of(&x.x), T::of(&x.y), T::of(&x.z)];
-    let (na, nb, l) = (vec(&s.na), vec(&s.nb), vec(&s.l));
-    let nf = T::from_u32(s.n);
     let one = T::from_u32(1);
-    let inv = one.div(nf);
-    let over_n = |x: T| if v.reciprocal { x.mul(inv) } else { x.div(nf) };
-    let axpy = |a: T, x: T, y: T| if v.fused { a.fma(x, y) } else { a.mul(x) + y };
     let ratio = |p: T, q: T| {
         if v.reciprocal {
             p.mul(one.div(q.sqrt()))
@@ -1036,36 +1030,34 @@ fn phong<T: Native>(form: PhongForm, v: Variant, s: &Span<Q>) -> Vec<Q> {
             p.div(q.sqrt())
         }
     };
-    let k = [0, 1, 2].map(|j| over_n(nb[j] - na[j]));
-    let (a, b) = (dot(v.dot, k, l), dot(v.dot, na, l));
-    let (c, d, e) = (
-        dot(v.dot, k, k),
-        T::from_u32(2).mul(dot(v.dot, k, na)),
-        dot(v.dot, na, na),
-    );
-    (0..=s.n)
-        .map(|i| {
-            let fi = T::from_u32(i);
-            let value = match form {
-                PhongForm::Horner => {
-                    let p = axpy(a, fi, b);
-                    let q = axpy(axpy(c, fi, d), fi, e);
-                    ratio(p, q)
-                }
-                PhongForm::PerPixel => {
-                    let nn = [0, 1, 2].map(|j| axpy(fi, k[j], na[j]));
-                    ratio(dot(v.dot, nn, l), dot(v.dot, nn, nn))
-                }
-                PhongForm::NormalizeThenDot => {
-                    let t = over_n(fi);
+    // Horner and the per-pixel normal: `p̂` and `q̂` as the count theorems' tests
+    // compute them, then the value.
+    let counted = |form| {
+        phong_value::pq::<T>(form, v.dot, v.fused, v.reciprocal, s)
+            .into_iter()
+            .map(|(p, q)| ratio(p, q).q())
+            .collect()
+    };
+    match form {
+        PhongForm::Horner => counted(phong_value::Form::Horner),
+        PhongForm::PerPixel => counted(phong_value::Form::Pixel),
+        PhongForm::NormalizeThenDot => {
+            let vec = |x: &phong_approx::Vec3<Q>| [T::of(&x.x), T::of(&x.y), T::of(&x.z)];
+            let (na, nb, l) = (vec(&s.na), vec(&s.nb), vec(&s.l));
+            let nf = T::from_u32(s.n);
+            let inv = one.div(nf);
+            let over_n = |x: T| if v.reciprocal { x.mul(inv) } else { x.div(nf) };
+            let axpy = |a: T, x: T, y: T| if v.fused { a.fma(x, y) } else { a.mul(x) + y };
+            (0..=s.n)
+                .map(|i| {
+                    let t = over_n(T::from_u32(i));
                     let nn = [0, 1, 2].map(|j| axpy(t, nb[j], (one - t).mul(na[j])));
                     let r = one.div(dot(v.dot, nn, nn).sqrt());
-                    dot(v.dot, nn.map(|x| x.mul(r)), l)
-                }
-            };
-            value.q()
-        })
-        .collect()
+                    dot(v.dot, nn.map(|x| x.mul(r)), l).q()
+                })
+                .collect()
+        }
+    }
 }
 
 /// Phong's exact value `p_i/√q_i` on the exact span, to 2^-256 (the square root of

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Builds the fuzz targets with libFuzzer's coverage instrumentation on stable Rust
 # (the flags cargo-fuzz passes with `--sanitizer none`; no nightly needed) and runs
-# each for SECONDS seconds (default 60) from its committed corpus in corpus/TARGET.
+# each for SECONDS seconds (default 60), all at once, from its committed corpus in
+# corpus/TARGET.
 # Prints executions and crashes per target; exits non-zero if any target crashed.
 #
 #   bash fuzz/run.sh [SECONDS] [TARGET...]
@@ -17,17 +18,30 @@ export RUSTFLAGS="-Cpasses=sancov-module -Cllvm-args=-sanitizer-coverage-level=4
 -Cllvm-args=-sanitizer-coverage-trace-compares --cfg fuzzing -Cdebug-assertions -Coverflow-checks"
 # An explicit --target keeps these flags off build scripts and proc macros.
 cargo build --release --quiet --target "$host" --bins
-status=0
-for t in "${targets[@]}"; do
-  mkdir -p "corpus/$t" "artifacts/$t"
-  log=$(mktemp)
-  # A copy of the corpus takes the new inputs, so the committed one stays as it is.
+# The targets run at once (each on one thread; 3 on 2 cores) and report in order.
+# One target: its corpus copied (the committed one stays as it is), libFuzzer's log in
+# $2, its exit status in $2.rc.
+fuzz_one() {
+  local t=$1 log=$2 work
   work=$(mktemp -d)
   cp -r "corpus/$t/." "$work/" 2>/dev/null || true
-  if "target/$host/release/$t" "$work" -max_total_time="$secs" -rss_limit_mb=2048 \
-       -timeout=10 -artifact_prefix="artifacts/$t/" -print_final_stats=1 >"$log" 2>&1; then
-    crashes=0
-  else
+  local rc=0
+  "target/$host/release/$t" "$work" -max_total_time="$secs" -rss_limit_mb=2048 \
+    -timeout=10 -artifact_prefix="artifacts/$t/" -print_final_stats=1 >"$log" 2>&1 || rc=$?
+  echo "$rc" >"$log.rc"
+  rm -rf "$work"
+}
+logs=$(mktemp -d)
+for t in "${targets[@]}"; do
+  mkdir -p "corpus/$t" "artifacts/$t"
+  fuzz_one "$t" "$logs/$t" &
+done
+wait
+status=0
+for t in "${targets[@]}"; do
+  log="$logs/$t"
+  crashes=0
+  if [ "$(cat "$log.rc" 2>/dev/null || echo 1)" != 0 ]; then
     crashes=1
     status=1
   fi
@@ -37,6 +51,6 @@ for t in "${targets[@]}"; do
     grep -E "panicked|ERROR|SUMMARY" "$log" | head -20
     ls "artifacts/$t"
   fi
-  rm -rf "$log" "$work"
 done
+rm -rf "$logs"
 exit $status

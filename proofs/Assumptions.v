@@ -10,6 +10,7 @@ From PhongApprox Require Import FloatModel Float Fixed.
 From PhongApprox Require Import FloatModelK Profiles.
 From PhongApprox Require Import PhongValue.
 From PhongApprox Require Import PhongCount.
+From PhongApprox Require Import DuffCount.
 
 (** Span.v *)
 Check eq_2_p_is_linear.
@@ -284,3 +285,13 @@ Check phong_lerp_div_generic.
 Print Assumptions phong_lerp_div_generic.
 Check phong_lerp_recip_generic.
 Print Assumptions phong_lerp_recip_generic.
+
+(** DuffCount.v *)
+Check duff_div_generic.
+Print Assumptions duff_div_generic.
+Check duff_recip_generic.
+Print Assumptions duff_recip_generic.
+Check symmetric_phong_div_generic.
+Print Assumptions symmetric_phong_div_generic.
+Check symmetric_phong_recip_generic.
+Print Assumptions symmetric_phong_recip_generic.

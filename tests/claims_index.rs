@@ -19,7 +19,7 @@ fn read(p: &str) -> String {
 
 /// Proof files whose theorems are tested and explained somewhere else than
 /// `tests/claims.rs` and `docs/derivations.md`: (file, test file, document).
-const GROUPS: [(&str, &str, &str); 7] = [
+const GROUPS: [(&str, &str, &str); 8] = [
     ("Related.v", "tests/related.rs", "docs/comparison.md"),
     ("Float.v", "tests/float_bounds.rs", "docs/float.md"),
     ("Fixed.v", "tests/lowp.rs", "docs/float.md"),
@@ -27,6 +27,7 @@ const GROUPS: [(&str, &str, &str); 7] = [
     ("Profiles.v", "tests/profiles.rs", "docs/float.md"),
     ("PhongValue.v", "tests/phong_value.rs", "docs/float.md"),
     ("PhongCount.v", "tests/phong_value.rs", "docs/float.md"),
+    ("DuffCount.v", "tests/duff_count.rs", "docs/float.md"),
 ];
 
 /// Every `Theorem` in `proofs/*.v` (except `Assumptions.v`) with its proof file.
@@ -335,4 +336,57 @@ fn the_checkers_profile_constants_are_the_theorems() {
         applied, theorems,
         "the checker's table and Profiles.v's theorems"
     );
+}
+
+/// The fractions `a / b *` of a statement, in order (`1702 / 100 * K1` gives
+/// `(1702, 100)`; a bare `/ 1048576` has no numerator and is not one).
+fn fractions(statement: &str) -> Vec<(u64, u64)> {
+    let t: Vec<&str> = statement.split_whitespace().collect();
+    t.windows(4)
+        .filter(|w| w[1] == "/" && w[3] == "*")
+        .filter_map(|w| {
+            let a = w[0].trim_start_matches('(');
+            Some((a.parse().ok()?, w[2].parse().ok()?))
+        })
+        .collect()
+}
+
+/// The constants the checker composes Duff's and symmetric Phong's `ieee` and `shader`
+/// bounds from (`tolerance::profile::DUFF_COUNTS`) are the statements' of
+/// `proofs/DuffCount.v` — `p`'s and `q`'s `K1`, `kd` and per-step constants, as the
+/// nearest `f64` of each fraction — for all four theorems, with the size condition
+/// `n·κ_add·u ≤ 2^-11` the code checks.
+#[test]
+fn the_checkers_duff_constants_are_the_theorems() {
+    use phong_approx::tolerance::profile::DUFF_COUNTS;
+    let text = read("proofs/DuffCount.v");
+    let c = DUFF_COUNTS;
+    let want = [c.p.0, c.p.1, c.p.2, c.q.0, c.q.1, c.q.2];
+    for name in [
+        "duff_div_generic",
+        "duff_recip_generic",
+        "symmetric_phong_div_generic",
+        "symmetric_phong_recip_generic",
+    ] {
+        let at = text
+            .find(&format!("Theorem {name} "))
+            .unwrap_or_else(|| panic!("{name} in proofs/DuffCount.v"));
+        let statement = &text[at..at + text[at..].find("Proof.").expect("its proof")];
+        let got: Vec<f64> = fractions(statement)
+            .into_iter()
+            .map(|(a, b)| a as f64 / b as f64)
+            .collect();
+        assert_eq!(
+            got, want,
+            "{name}: the constants (K1, kd, step) of p and of q"
+        );
+        assert!(
+            statement.contains("INR (n s) * (k_add M * m_u M) <= / 2048"),
+            "{name}: the size condition n·κ_add·u ≤ 2^-11"
+        );
+        assert!(
+            statement.contains("INR (n s) <= 16777216"),
+            "{name}: n ≤ 2^24"
+        );
+    }
 }

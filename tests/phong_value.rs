@@ -33,12 +33,12 @@ const SLACK: f64 = 1e-9;
 
 /// One attacked case: exact `p`, `q`, `q_min` and the error budgets `e_p`, `e_q`.
 #[derive(Clone, Copy, Debug)]
-struct Case {
-    p: f64,
-    q: f64,
-    q_min: f64,
-    ep: f64,
-    eq: f64,
+pub(super) struct Case {
+    pub(super) p: f64,
+    pub(super) q: f64,
+    pub(super) q_min: f64,
+    pub(super) ep: f64,
+    pub(super) eq: f64,
 }
 
 /// Cases within every theorem's hypotheses: `q_min ≤ q`, `|p| ≤ min(1, √q)`,
@@ -93,7 +93,7 @@ fn rhs_div(c: &Case, (ks, kd, _): (f64, f64, f64), u: f64, eta: f64) -> f64 {
 
 /// `phong_value_recip`'s (and `phong_value_either`'s) right-hand side,
 /// `w = κ_sqrt + κ_div + κ_mul`.
-fn rhs_recip(c: &Case, (ks, kd, km): (f64, f64, f64), u: f64, eta: f64) -> f64 {
+pub(super) fn rhs_recip(c: &Case, (ks, kd, km): (f64, f64, f64), u: f64, eta: f64) -> f64 {
     let b = b_real(c);
     let g = gamma(ks + kd + km, u);
     let eps = eta / (c.q_min - c.eq).sqrt();

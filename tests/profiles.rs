@@ -25,6 +25,8 @@
 //! normalize-then-dot against it.
 
 mod common;
+/// Duff's and symmetric Phong's counts against `proofs/DuffCount.v` (`duff_count::*`).
+mod duff_count;
 /// Phong's value step against `proofs/PhongValue.v` (`phong_value::phong_value_*`).
 mod phong_value;
 /// The profiles' tables against the theorems' statements (`profile_tables::test`).
@@ -1167,7 +1169,7 @@ fn phong_ieee_derived_binary64() {
     phong_ieee::<f64>("phong_ieee_derived_binary64");
 }
 
-// ------------------------- Duff, Phong under ieee and shader (derived, §18.5)
+// ---------- Duff (composed from theorems), Phong (derived) under ieee and shader, §18.4–18.5
 
 /// The bound `check` applies to `method` under `profile` on `s` (`None`: no bound).
 fn profile_bound_of(method: Method, profile: Profile, s: &Span<Q>, format: Format) -> Option<f64> {
@@ -1300,11 +1302,12 @@ fn ieee_derived<T: Native>(what: &str, method: Method, imp: impl Fn(Variant, &Sp
     );
 }
 
-/// Duff's derived `ieee` bound (`duff_derived`, docs/float.md §18.5) holds for the
-/// forward differences with three orders of the set-up's dot products, `/n` or
-/// `·(1/n)`, `p/√q` or `p·(1/√q)`, binary32 and binary64.
+/// Duff's `ieee` bound (`duff_bound`, composed from `proofs/DuffCount.v` and
+/// `phong_value_either`, docs/float.md §18.5) holds for the forward differences with
+/// three orders of the set-up's dot products, `/n` or `·(1/n)`, `p/√q` or `p·(1/√q)`,
+/// binary32 and binary64.
 #[test]
-fn profile_ieee_duff_derived() {
+fn profile_ieee_duff_bound() {
     ieee_derived::<f32>("duff f32", Method::Duff, duff::<f32>);
     ieee_derived::<f64>("duff f64", Method::Duff, duff::<f64>);
 }
@@ -1481,7 +1484,8 @@ fn shader_derived(what: &str, method: Method, imp: impl Fn(Gpu, &Span<Q>) -> Vec
     assert!(checked > 40, "{checked}");
 }
 
-/// Duff's and Phong's derived `shader` bounds hold on the software GPUs. (Plain
+/// Duff's `shader` bound (composed from `proofs/DuffCount.v` and
+/// `phong_value_either`) and Phong's derived one hold on the software GPUs. (Plain
 /// Euler's `shader` bound is proved: the `profile_shader_euler_*` tests above, with
 /// `·(1/n)` and a computed `1/2` in the `_recip` ones.)
 #[test]

@@ -8,7 +8,10 @@ use super::catalogue::{
     Bound, DerivedForm, Family, FixedBound, FloatBound, Info, Needs, PhongPixels, ProfileBounds,
     ValueRange, WholeSpan,
 };
-use super::profiles::{CORRECTED_EULER_THEOREMS, EULER_THEOREMS, GOURAUD_THEOREMS};
+use super::profiles::{
+    CORRECTED_EULER_THEOREMS, DUFF_THEOREMS, EULER_THEOREMS, GOURAUD_THEOREMS,
+    SYMMETRIC_PHONG_THEOREMS,
+};
 use super::{Prepared, SOURCE_TABLE};
 use crate::adaptive::Decision;
 use crate::angular::CosTable;
@@ -64,8 +67,20 @@ const fn derived(section: &'static str, form: DerivedForm) -> ProfileBounds {
     }
 }
 const DERIVED_PER_PIXEL: ProfileBounds = derived("docs/float.md §18.4", DerivedForm::PerPixel);
-const DERIVED_RATIO: ProfileBounds = derived("docs/float.md §18.5", DerivedForm::Ratio);
-const DERIVED_HALF_RATIO: ProfileBounds = derived("docs/float.md §18.5", DerivedForm::HalfRatio);
+const fn composed(theorems: &'static [&'static str], form: DerivedForm) -> ProfileBounds {
+    ProfileBounds {
+        reference: None,
+        float: FloatBound::Composed {
+            theorems,
+            section: "docs/float.md §18.5",
+            form,
+        },
+        fixed: NO_FIXED,
+    }
+}
+const COMPOSED_RATIO: ProfileBounds = composed(DUFF_THEOREMS, DerivedForm::Ratio);
+const COMPOSED_HALF_RATIO: ProfileBounds =
+    composed(SYMMETRIC_PHONG_THEOREMS, DerivedForm::HalfRatio);
 // The larger of the two proved bounds, against the exact run of the method the
 // implementation chose (docs/float.md §10, §18.5).
 const ADAPTIVE_PROFILES: ProfileBounds = derived("docs/float.md §18.5", DerivedForm::LargerOfPicks);
@@ -150,7 +165,7 @@ methods! {
             bound: DUFF,
             picks: None,
             closed_form: None,
-            profiles: DERIVED_RATIO,
+            profiles: COMPOSED_RATIO,
         },
     }
     /// [`crate::symmetric_phong`]: half the square roots (§4).
@@ -171,7 +186,7 @@ methods! {
             bound: DUFF,
             picks: None,
             closed_form: None,
-            profiles: DERIVED_HALF_RATIO,
+            profiles: COMPOSED_HALF_RATIO,
         },
     }
     /// [`crate::gouraud`]: linear between the exact edge values (Gouraud along the

@@ -23,6 +23,18 @@ pub enum FloatBound {
     /// Coq theorems of `proofs/Profiles.v`, per profile, format and form (the
     /// largest applies: `tolerance::profile::proved`).
     Proved(&'static [Proved]),
+    /// Coq theorems of the computed `p` and `q` (`proofs/DuffCount.v`) composed with
+    /// the value step `p/√q` (`proofs/PhongValue.v`), evaluated on the profile's
+    /// standard model (`tolerance::profile::duff_bound`, `symmetric_phong_bound`).
+    Composed {
+        /// The theorems: the counts with `/n` as a division, through `·(1/n)`, and the
+        /// value step.
+        theorems: &'static [&'static str],
+        /// The section that composes them (`docs/float.md §18.5`).
+        section: &'static str,
+        /// Its form: [`DerivedForm::Ratio`] or [`DerivedForm::HalfRatio`].
+        form: DerivedForm,
+    },
     /// A written derivation on the profile's standard model (`tolerance::profile::Arith`).
     Derived {
         /// The section of the derivation (`docs/float.md §18.4`).
@@ -34,15 +46,15 @@ pub enum FloatBound {
     None(&'static str),
 }
 
-/// The form of a derived profile bound (`docs/float.md` §18.4–18.5).
+/// The form of a derived or composed profile bound (`docs/float.md` §18.4–18.5).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum DerivedForm {
     /// The normal interpolated and normalized per pixel (`phong_derived`).
     PerPixel,
-    /// `p/√q` of two recurrences (`duff_derived`).
+    /// `p/√q` of two recurrences (`duff_bound`).
     Ratio,
     /// `p/√q` with `q`'s square root walked from both ends
-    /// (`symmetric_phong_derived`).
+    /// (`symmetric_phong_bound`).
     HalfRatio,
     /// The larger of the proved bounds of the methods it picks between
     /// ([`super::Info::picks`]).
@@ -303,4 +315,19 @@ pub const EULER_THEOREMS: &[Proved] = &[
         4096,
         "profile_shader_euler_closed_half_recip_binary32",
     ),
+];
+
+/// The theorems Duff's `ieee` and `shader` bounds rest on (`proofs/DuffCount.v`,
+/// `proofs/PhongValue.v`): the counts either way of `/n`, the value step.
+pub const DUFF_THEOREMS: &[&str] = &[
+    "duff_div_generic",
+    "duff_recip_generic",
+    "phong_value_either",
+];
+
+/// The theorems symmetric Phong's `ieee` and `shader` bounds rest on.
+pub const SYMMETRIC_PHONG_THEOREMS: &[&str] = &[
+    "symmetric_phong_div_generic",
+    "symmetric_phong_recip_generic",
+    "phong_value_either",
 ];

@@ -18,12 +18,13 @@
 //! division each; the `_half` ones let the closed forms halve `i − 1` in floats. Every
 //! corrected-Euler theorem takes the coefficient `n(n−1)/2` of `p_n` exact: [`proved`].)
 //!
-//! Phong, Duff, symmetric Phong and the adaptive scheme have *derived* bounds under
-//! `ieee` and `shader` (written derivations on the same model, [`Arith`]:
-//! [`phong_derived`], [`duff_derived`], [`symmetric_phong_derived`], `docs/float.md`
-//! §18.4–18.5, attacked by
-//! `tests/profiles.rs`; [`euler_derived`] is plain Euler's, which the theorems now
-//! replace under both profiles); [`status`] says which kind a bound is. Angular
+//! Duff and symmetric Phong have bounds composed from Coq theorems on the same model
+//! ([`Arith`]): the counts of `p` and `q` (`proofs/DuffCount.v`) and the value step
+//! (`proofs/PhongValue.v`), [`duff_bound`], [`symmetric_phong_bound`], `docs/float.md`
+//! §18.5 — labelled *proved*. Phong and the adaptive scheme have *derived* bounds
+//! under `ieee` and `shader` (written derivations: [`phong_derived`], §18.4–18.5,
+//! attacked by `tests/profiles.rs`; [`euler_derived`] is plain Euler's, which the
+//! theorems now replace under both profiles); [`status`] says which kind a bound is. Angular
 //! interpolation and the related methods have none: a case then fails naming that.
 //!
 //! Tested, with other implementations written from the definitions (other orders,
@@ -35,16 +36,18 @@ use std::str::FromStr;
 
 use crate::Format;
 
+mod counts;
 mod derived;
 mod form;
 mod labels;
+mod model;
 mod theorems;
 
-pub use derived::{
-    arith, duff_derived, euler_derived, phong_derived, phong_ieee, symmetric_phong_derived, Arith,
-};
+pub use counts::{duff_bound, symmetric_phong_bound, DuffCounts, DUFF_COUNTS};
+pub use derived::{euler_derived, phong_derived, phong_ieee};
 pub use form::{Form, UnknownForm};
 pub use labels::{formula, ieee_table, status_summary, status_table};
+pub use model::{arith, Arith};
 pub use theorems::proved;
 
 /// The most fractional bits of `fixed:M.F`: a fixed-point value below 4 (every
@@ -303,6 +306,10 @@ pub fn status(method: crate::Method, profile: Profile, format: Format) -> Option
             .then(|| derived(section))
             .flatten(),
         FloatBound::Derived { section, .. } => derived(section),
+        // Composed from theorems where the profile has a standard model: the counts'.
+        FloatBound::Composed { theorems, .. } => {
+            arith(profile, format).map(|_| Status::Proved(theorems[0]))
+        }
         FloatBound::None(_) => None,
     }
 }
@@ -310,7 +317,7 @@ pub fn status(method: crate::Method, profile: Profile, format: Format) -> Option
 /// The bound of `method` under `profile` (not `Reference`, whose bounds are
 /// [`crate::tolerance::bound`]) on a span of `n` steps and smallest `q_i` `q_min`, in
 /// `format`: the proved bound ([`proved_bound`]) or the derived
-/// one ([`phong_derived`], [`duff_derived`]); `None` where neither covers it. For any
+/// or composed one ([`phong_derived`], [`duff_bound`]); `None` where none covers it. For any
 /// unit normals; [`profile_span_bound`] reads more of a known span.
 pub fn profile_bound(
     method: crate::Method,
@@ -381,18 +388,17 @@ fn bound_with(
             .then(|| fixed_bound(method, n, int_bits, frac_bits))
             .flatten();
     }
-    match status(method, profile, format)? {
-        Status::Proved(_) => proved_bound_in(method, profile, form, n, format),
-        Status::Derived(_) => {
-            use crate::method::{DerivedForm, FloatBound};
+    use crate::method::{DerivedForm, FloatBound};
+    status(method, profile, format)?;
+    match method.info().profiles.float {
+        FloatBound::Proved(_) => proved_bound_in(method, profile, form, n, format),
+        FloatBound::None(_) => None,
+        FloatBound::Derived { form, .. } | FloatBound::Composed { form, .. } => {
             let a = arith(profile, format)?;
-            let FloatBound::Derived { form, .. } = method.info().profiles.float else {
-                return None;
-            };
             match form {
                 DerivedForm::PerPixel => phong_derived(&a, n, q_min, dn),
-                DerivedForm::Ratio => duff_derived(&a, n, q_min),
-                DerivedForm::HalfRatio => symmetric_phong_derived(&a, n, q_min),
+                DerivedForm::Ratio => duff_bound(&a, n, q_min),
+                DerivedForm::HalfRatio => symmetric_phong_bound(&a, n, q_min),
                 DerivedForm::LargerOfPicks => method.picks()?.iter().try_fold(0f64, |b, &m| {
                     Some(b.max(proved_bound(m, profile, n, format)?))
                 }),

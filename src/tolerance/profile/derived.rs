@@ -1,91 +1,11 @@
 //! The derived bounds: written derivations on the standard model of a profile
-//! (`docs/float.md` §18.4–18.5) for the methods with no theorem under `ieee` and
-//! `shader` — Phong, Duff, symmetric Phong — and plain Euler's, kept for comparison.
+//! (`docs/float.md` §18.4–18.5) for the method whose bound is not a theorem under
+//! `ieee` and `shader` at every span — Phong — and plain Euler's, kept for comparison;
+//! the standard model itself ([`Arith`]).
 
+use super::model::{arith, gamma, value_step, Arith};
 use super::Profile;
 use crate::Format;
-
-/// The standard model of a float profile (`docs/float.md` §18.1): every operation's
-/// result is within `κ·u·|y| + η` of its exact value `y` on the computed operands,
-/// with one `κ` per class of operation (in units of `u`).
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub struct Arith {
-    /// The unit roundoff of the format.
-    pub u: f64,
-    /// Rounding an exact input to the format.
-    pub input: f64,
-    /// An addition or subtraction (a fused multiply-add rounds once, as an addition).
-    pub add: f64,
-    /// A product.
-    pub mul: f64,
-    /// One division (a reciprocal `1/x` is one).
-    pub div: f64,
-    /// A division by 2 (or a product by `0.5`): exact under `ieee`, a division (or a
-    /// computed `1/2` and a product) under `shader`.
-    pub half: f64,
-    /// A square root (under `shader`, `1/inversesqrt`: 2 ulps and a 2.5-ulp division).
-    pub sqrt: f64,
-    /// The absolute error of one operation near zero (subnormals, or flushed results).
-    pub eta: f64,
-}
-
-impl Arith {
-    /// A division by `n` as a division or as `1/n` and a product.
-    pub fn div_n(&self) -> f64 {
-        self.div + self.mul
-    }
-
-    /// The largest `κ` of the set-up (inputs, additions, products, divisions by `n`).
-    pub fn setup(&self) -> f64 {
-        self.input.max(self.add).max(self.mul).max(self.div_n())
-    }
-
-    /// The value `p/√q` from `p` and `q`: the square root, a division (or `1/√q`) and a
-    /// product.
-    pub fn ratio(&self) -> f64 {
-        self.sqrt + self.div + self.mul
-    }
-}
-
-/// The standard model of `profile` in `format` (binary32 or
-/// binary64 for `ieee`, binary32 for `shader`), or `None` (`reference` is one
-/// implementation, not a model; fixed point has its own bounds).
-pub fn arith(profile: Profile, format: Format) -> Option<Arith> {
-    let u = format.u();
-    match (profile, format) {
-        (Profile::Ieee, Format::Binary32 | Format::Binary64) => Some(Arith {
-            u,
-            input: 1.0,
-            add: 1.0,
-            mul: 1.0,
-            div: 1.0,
-            half: 0.0,
-            sqrt: 1.0,
-            // Half the smallest subnormal.
-            eta: format.eta(),
-        }),
-        // Vulkan/WGSL: add, sub, mul faithful (2 units of u), division 2.5 ulp (5),
-        // sqrt inherited from 1/inversesqrt (2 ulp = 4, then the division, 5),
-        // denormals flushed (2^-126).
-        (Profile::Shader, Format::Binary32) => Some(Arith {
-            u,
-            input: 2.0,
-            add: 2.0,
-            mul: 2.0,
-            div: 5.0,
-            half: 7.0,
-            sqrt: 9.0,
-            eta: format.min_normal(),
-        }),
-        _ => None,
-    }
-}
-
-/// `γ_w = w·u/(1 − w·u)`: the relative error of a product of factors `(1 + δ_j)`
-/// whose `|δ_j| ≤ κ_j·u` sum to `Σκ_j = w`.
-fn gamma(w: f64, u: f64) -> f64 {
-    w * u / (1.0 - w * u)
-}
 
 /// The largest `n` of the derived bounds: `i` and `(i − 1)/2` are exact, and the
 /// first-order derivations' second-order terms fit in their last factor `1.01`
@@ -127,39 +47,6 @@ pub fn euler_derived(a: &Arith, n: u32) -> Option<f64> {
     let recurrence = 5.6 * nf * a.add;
     let closed = 3.8 * (2.0 * a.mul + 2.0 * a.add + a.half);
     Some((setup + recurrence.max(closed)) * 1.01 * a.u + eta_total(a, nf))
-}
-
-/// Duff's forward differences (eqs. 5–7) under a profile, derived (`docs/float.md`
-/// §18.5): §8's `e_p = 20·κ_s + 1.01·n·κ_add` and `e_q = 118·κ_s + 3.01·n·κ_add`,
-/// then `p/√q` with the square root, a division (or `1/√q`) and a product. `None`
-/// where `q` may lose half of itself.
-pub fn duff_derived(a: &Arith, n: u32, q_min: f64) -> Option<f64> {
-    duff_steps(a, n, n, n, q_min)
-}
-
-/// Symmetric Phong (§4) under a profile, derived (`docs/float.md` §18.5): `p` walks
-/// to pixel `i` as Duff's does, but `√q_i` comes from the walk from the left edge to
-/// `min(i, n − i) ≤ h = ⌊n/2⌋`. §8's `e_p` and `e_q` grow with the steps walked, and
-/// the value's bound with both, so on the pixels `i_{k−1} ≤ i ≤ i_k` of the right half
-/// (`i_k = h + ⌈k(n − h)/8⌉`, eight pieces) it is at most Duff's with `p` walked `i_k`
-/// steps and `q` walked `min(h, n − i_{k−1})`; the left half is within the first
-/// piece. The largest of the eight.
-pub fn symmetric_phong_derived(a: &Arith, n: u32, q_min: f64) -> Option<f64> {
-    let h = n / 2;
-    let at = |k: u32| h + (k * (n - h)).div_ceil(8);
-    (1..=8u32)
-        .map(|k| duff_steps(a, n, at(k), h.min(n - at(k - 1)), q_min))
-        .try_fold(0.0f64, |m, b| b.map(|b| m.max(b)))
-}
-
-/// §8's bound with `p` walked `p_steps` and `q` walked `q_steps` steps of a span of
-/// `n` (the set-up terms taken at their largest, `i = n`).
-fn duff_steps(a: &Arith, n: u32, p_steps: u32, q_steps: u32, q_min: f64) -> Option<f64> {
-    let nf = derived_n(a, n)?;
-    let e_p = 20.0 * a.setup() + 1.01 * f64::from(p_steps.min(n)) * a.add;
-    let e_q = 118.0 * a.setup() + 3.01 * f64::from(q_steps.min(n)) * a.add;
-    let b = crate::tolerance::ratio_bound(e_p, e_q, q_min, a.ratio(), a.u)?;
-    Some(b * 1.01 + eta_total(a, nf) / q_min.sqrt())
 }
 
 /// Phong under a profile, derived (`docs/float.md` §18.4): every implementation that
@@ -218,23 +105,7 @@ pub fn phong_derived(a: &Arith, n: u32, q_min: f64, dn: f64) -> Option<f64> {
     let inputs_q =
         4.0 * g_in * (1.0 + d) * (1.0 + g_q).powi(2) + 4.0 * g_in * g_in * (1.0 + g_q).powi(3);
     let e_q = (9.0 * g_q).min((1.0 + d).powi(2) * g_q + inputs_q) + eta;
-    if e_q >= q_min / 2.0 {
-        return None;
-    }
-    let g_f = gamma(a.ratio(), u);
-    let lo = (q_min - e_q).sqrt();
-    // `phong_value_either`'s size conditions (w·u ≤ 2^-10, 1024·η ≤ √(q_min − e_q)).
-    if a.ratio() * u > 2f64.powi(-10) || 1024.0 * eta > lo {
-        return None;
-    }
-    let b_real = e_p / lo + e_q / (lo * (q_min.sqrt() + lo));
-    // `phong_value_either`'s absolute terms: the square root's η relative to
-    // `√q̂ ≥ √(q_min − e_q)`, the reciprocal's times `|p̂| ≤ 1 + e_p`, the last
-    // operation's own (each operation's η at most `eta`).
-    let abs = 2.0 * (1.0 + b_real) * (eta / lo) + (1.0 + e_p) * eta * (1.0 + a.mul * u) + eta;
-    let b = b_real * (1.0 + g_f) + g_f + abs;
-    // This evaluation in f64 rounds too: a relative 2^-40 more covers it.
-    Some(b * (1.0 + 2f64.powi(-40)))
+    value_step(a, e_p, e_q, q_min, eta)
 }
 
 /// [`phong_derived`] under `ieee` in `format`.

@@ -56,8 +56,14 @@ pub fn status_table() -> String {
 
 /// A profile's bound for `method` in `format`, in words: the
 /// proved forms `(α·n + β)·u` (the largest applies), or the section of the derivation
-/// for the derived bounds (which depend on the span's `q_min` too).
+/// or composition for the bounds that depend on the span's `q_min` too.
 pub fn formula(method: crate::Method, profile: Profile, format: Format) -> Option<String> {
+    use crate::method::FloatBound;
+    // The bounds composed from theorems read the span's q_min, as the derived ones.
+    if let FloatBound::Composed { section, .. } = method.info().profiles.float {
+        status(method, profile, format)?;
+        return Some(format!("from n and q_min ({section})"));
+    }
     match status(method, profile, format)? {
         Status::Proved(_) => {
             let mut forms: Vec<String> = proved(method, profile, format)?

@@ -52,17 +52,17 @@ pub fn parse_rational(s: &str) -> Result<BigRational, ParseError> {
     if t.chars().count() > MAX_NUMBER_CHARS {
         return Err(ParseError::TooLong(t.chars().count()));
     }
-    let s = &crate::error::shown(s);
+    let not_a_number = || ParseError::NotANumber(crate::error::shown(s));
     if let Some((a, b)) = t.split_once('/') {
-        let num = parse_decimal(a.trim()).ok_or_else(|| ParseError::NotANumber(s.to_string()))?;
-        let den = parse_decimal(b.trim()).ok_or_else(|| ParseError::NotANumber(s.to_string()))?;
+        let num = parse_decimal(a.trim()).ok_or_else(not_a_number)?;
+        let den = parse_decimal(b.trim()).ok_or_else(not_a_number)?;
         let (num, den) = (num?, den?);
         if den.is_zero() {
-            return Err(ParseError::ZeroDenominator(s.to_string()));
+            return Err(ParseError::ZeroDenominator(crate::error::shown(s)));
         }
         return Ok(num / den);
     }
-    parse_decimal(t).ok_or_else(|| ParseError::NotANumber(s.to_string()))?
+    parse_decimal(t).ok_or_else(not_a_number)?
 }
 
 /// `None` when `t` is not of decimal form; `Some(Err)` for an absurd exponent.
@@ -72,7 +72,7 @@ fn parse_decimal(t: &str) -> Option<Result<BigRational, ParseError>> {
         b'+' => (false, &t[1..]),
         _ => (false, t),
     };
-    let (mant, exp) = match body.find(['e', 'E']) {
+    let (mant, exp) = match body.bytes().position(|c| c == b'e' || c == b'E') {
         Some(p) => (&body[..p], Some(&body[p + 1..])),
         None => (body, None),
     };
@@ -97,19 +97,43 @@ fn parse_decimal(t: &str) -> Option<Result<BigRational, ParseError>> {
         }
     };
     e -= frac.len() as i64;
-    let digits = format!("{int}{frac}");
-    let m: BigInt = digits.parse().ok()?;
-    let ten = BigInt::from(10);
-    let mut v = BigRational::from_integer(m);
-    if e >= 0 {
-        v *= BigRational::from_integer(ten.pow(e as u32));
+    // Up to 38 digits fit a u128 (the vectors' values carry 30).
+    let m: BigInt = if int.len() + frac.len() <= 38 {
+        let fold = |a: u128, c: u8| a * 10 + u128::from(c - b'0');
+        BigInt::from(int.bytes().chain(frac.bytes()).fold(0u128, fold))
     } else {
-        v /= BigRational::from_integer(ten.pow((-e) as u32));
+        format!("{int}{frac}").parse().ok()?
+    };
+    let m = if neg { -m } else { m };
+    if e >= 0 {
+        return Some(Ok(BigRational::from_integer(
+            m * BigInt::from(10).pow(e as u32),
+        )));
     }
-    if neg {
-        v = -v;
+    Some(Ok(over_power_of_ten(m, (-e) as u32)))
+}
+
+/// `m/10^k` in lowest terms without a general gcd: the only common factors are the
+/// 2s and 5s of `m` (at most `k` of each), taken out directly.
+fn over_power_of_ten(m: BigInt, k: u32) -> BigRational {
+    use num_integer::Integer;
+    if m.is_zero() {
+        return BigRational::zero();
     }
-    Some(Ok(v))
+    let twos = m.trailing_zeros().map_or(0, |t| t.min(u64::from(k)) as u32);
+    let mut m = m >> twos;
+    let five = BigInt::from(5);
+    let mut fives = 0;
+    while fives < k {
+        let (q, r) = m.div_rem(&five);
+        if !r.is_zero() {
+            break;
+        }
+        m = q;
+        fives += 1;
+    }
+    let den = (BigInt::from(1) << (k - twos)) * five.pow(k - fives);
+    BigRational::new_raw(m, den)
 }
 
 /// Parses `x,y,z` into an exact vector.
@@ -155,6 +179,55 @@ mod tests {
         assert_eq!(parse_rational("+2.").unwrap(), q(2, 1));
         assert_eq!(parse_rational("1/1e3").unwrap(), q(1, 1000));
         assert_eq!(parse_rational("-0.125/0.5").unwrap(), q(-1, 4));
+    }
+
+    /// The gcd-free reduction gives the lowest terms `Ratio::new` (a general gcd)
+    /// gives, numerator and denominator alike, for digits with many 2s and 5s, long
+    /// digit strings past `u128` and zero.
+    #[test]
+    fn decimals_are_in_lowest_terms() {
+        let cases = [
+            "0",
+            "-0.000",
+            "0.5",
+            "0.25",
+            "-0.0625",
+            "0.2",
+            "0.04",
+            "0.8",
+            "12.5",
+            "0.000000000000000000000000000000000000000000001024",
+            "0.123456789012345678901234567890",
+            "-0.999999999999999999999999999999",
+            "0.000000000000000000000000000000390625",
+            "123456789012345678901234567890123456789012.5e-7",
+            "1e-30",
+            "2.5e-3",
+            "7.8125e-3",
+            "0.1000",
+            "100e-2",
+        ];
+        for t in cases {
+            let v = parse_rational(t).unwrap();
+            let neg = t.starts_with('-');
+            let body = t.trim_start_matches('-');
+            let (mant, exp) = body.split_once('e').unwrap_or((body, "0"));
+            let (int, frac) = mant.split_once('.').unwrap_or((mant, ""));
+            let e: i32 = exp.parse::<i32>().unwrap() - frac.len() as i32;
+            let m: BigInt = format!("{int}{frac}").parse().unwrap();
+            let m = if neg { -m } else { m };
+            let ten = BigInt::from(10);
+            let expect = if e >= 0 {
+                BigRational::new(m * ten.pow(e as u32), 1.into())
+            } else {
+                BigRational::new(m, ten.pow((-e) as u32))
+            };
+            assert_eq!(
+                (v.numer(), v.denom()),
+                (expect.numer(), expect.denom()),
+                "{t}"
+            );
+        }
     }
 
     #[test]

@@ -9,7 +9,6 @@
 use super::vectors::{exact_input, method_keys, Case, Expected, VectorFile};
 use crate::method::ValueRange;
 use crate::parse::parse_rational;
-use crate::quantize::level;
 use crate::scalar::Scalar;
 use crate::span::Span;
 use crate::tolerance::Shape;
@@ -91,6 +90,32 @@ pub fn case_span(c: &Case) -> Result<Span<BigRational>, String> {
         .map_err(|e| format!("case {id}: {e}"))
 }
 
+/// The nearest `f64` to the exact `x` read from `v`: Rust's parser of a plain decimal
+/// rounds correctly, and is much cheaper than converting the rational; a fraction is
+/// converted.
+fn nearest_f64(v: &str, x: &BigRational) -> f64 {
+    let t = v.trim();
+    match t.parse::<f64>() {
+        Ok(f) if !t.contains('/') && f.is_finite() => f,
+        _ => x.to_f64(),
+    }
+}
+
+/// [`crate::quantize::level`] of an exact rational, `⌊255·x⌋` clamped to 0–255, by one integer
+/// division (no reduction of `255·x`).
+fn exact_level(x: &BigRational) -> u8 {
+    use num_integer::Integer;
+    use num_traits::{One, Zero};
+    if *x <= BigRational::zero() {
+        return 0;
+    }
+    if *x >= BigRational::one() {
+        return 255;
+    }
+    let l = (x.numer() * 255u32).div_floor(x.denom());
+    u8::try_from(l).unwrap_or(255)
+}
+
 /// Checks one method's expectations: `n + 1` values and levels, every value a finite
 /// decimal within `range` (`None`: non-negative, any size), every level the level of
 /// its value (or one off where the value is within rounding of a level boundary).
@@ -112,7 +137,7 @@ fn check_expected(
     for (i, (v, &l)) in e.values.iter().zip(&e.levels).enumerate() {
         let x = parse_rational(v)
             .map_err(|_| format!("case {id}: {what} value {i} is not a decimal number"))?;
-        let f = x.to_f64();
+        let f = nearest_f64(v, &x);
         let ok = match range {
             Some(r) => f.abs() <= r,
             None => f >= 0.0 && f.is_finite(),
@@ -123,7 +148,7 @@ fn check_expected(
                 crate::conformance::shown(v)
             ));
         }
-        let lv = level(&x);
+        let lv = exact_level(&x);
         // The values carry 30 significant digits: a value within 1e-25 of a level
         // boundary may round to the other side of it.
         let scaled = f * 255.0;

@@ -10,6 +10,9 @@ From PhongApprox Require Import FloatModel Float Fixed.
 From PhongApprox Require Import FloatModelK Profiles.
 From PhongApprox Require Import PhongValue.
 From PhongApprox Require Import PhongCount.
+From PhongApprox Require Import PhongCountD.
+From PhongApprox Require Import PhongNormalize.
+From PhongApprox Require Import AdaptiveDelta.
 From PhongApprox Require Import DuffCount.
 
 (** Span.v *)
@@ -286,6 +289,30 @@ Print Assumptions phong_lerp_div_generic.
 Check phong_lerp_recip_generic.
 Print Assumptions phong_lerp_recip_generic.
 
+(** PhongNormalize.v *)
+Check phong_normalize_dot.
+Print Assumptions phong_normalize_dot.
+Check phong_normalize_dot_unit.
+Print Assumptions phong_normalize_dot_unit.
+Check pixel_ok_exact_dot.
+Print Assumptions pixel_ok_exact_dot.
+Check lerp_ok_exact_dot.
+Print Assumptions lerp_ok_exact_dot.
+
+(** PhongCountD.v *)
+Check phong_horner_div_dist.
+Print Assumptions phong_horner_div_dist.
+Check phong_horner_recip_dist.
+Print Assumptions phong_horner_recip_dist.
+Check phong_pixel_div_dist.
+Print Assumptions phong_pixel_div_dist.
+Check phong_pixel_recip_dist.
+Print Assumptions phong_pixel_recip_dist.
+Check phong_lerp_div_dist.
+Print Assumptions phong_lerp_div_dist.
+Check phong_lerp_recip_dist.
+Print Assumptions phong_lerp_recip_dist.
+
 (** DuffCount.v *)
 Check duff_div_generic.
 Print Assumptions duff_div_generic.
@@ -295,3 +322,11 @@ Check symmetric_phong_div_generic.
 Print Assumptions symmetric_phong_div_generic.
 Check symmetric_phong_recip_generic.
 Print Assumptions symmetric_phong_recip_generic.
+
+(** AdaptiveDelta.v *)
+Check adaptive_acceptance_covers_computed_delta_generic.
+Print Assumptions adaptive_acceptance_covers_computed_delta_generic.
+Check adaptive_acceptance_covers_computed_delta.
+Print Assumptions adaptive_acceptance_covers_computed_delta.
+Check adaptive_delta_conditions_at_profile_bounds.
+Print Assumptions adaptive_delta_conditions_at_profile_bounds.

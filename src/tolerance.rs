@@ -235,7 +235,7 @@ pub struct Shape {
     /// when `N_a = ±N_b` and positive otherwise ([`related`]).
     pub sin2_omega: f64,
     /// `|N_b − N_a|`, rounded up (Phong's derived profile bound,
-    /// [`profile::phong_derived`]).
+    /// [`profile::phong_bound`]).
     pub dn: f64,
 }
 

@@ -19,7 +19,7 @@ fn read(p: &str) -> String {
 
 /// Proof files whose theorems are tested and explained somewhere else than
 /// `tests/claims.rs` and `docs/derivations.md`: (file, test file, document).
-const GROUPS: [(&str, &str, &str); 8] = [
+const GROUPS: [(&str, &str, &str); 11] = [
     ("Related.v", "tests/related.rs", "docs/comparison.md"),
     ("Float.v", "tests/float_bounds.rs", "docs/float.md"),
     ("Fixed.v", "tests/lowp.rs", "docs/float.md"),
@@ -28,6 +28,9 @@ const GROUPS: [(&str, &str, &str); 8] = [
     ("PhongValue.v", "tests/phong_value.rs", "docs/float.md"),
     ("PhongCount.v", "tests/phong_value.rs", "docs/float.md"),
     ("DuffCount.v", "tests/duff_count.rs", "docs/float.md"),
+    ("PhongCountD.v", "tests/phong_value.rs", "docs/float.md"),
+    ("PhongNormalize.v", "tests/phong_value.rs", "docs/float.md"),
+    ("AdaptiveDelta.v", "tests/profiles.rs", "docs/float.md"),
 ];
 
 /// Every `Theorem` in `proofs/*.v` (except `Assumptions.v`) with its proof file.

@@ -225,6 +225,8 @@ fn phong_value_either() {
 
 use super::{dot, phong_spans, tiered, Dot, Native, Q};
 use num_traits::Signed;
+use num_traits::Zero;
+use phong_approx::Format;
 use phong_approx::Scalar;
 use phong_approx::Span;
 
@@ -240,12 +242,46 @@ pub(super) enum Form {
 }
 
 /// The theorems' constants `(α_p, β_p, α_q, β_q)`: `|p̂ − p_i| ≤ (α_p·K1 + β_p·kd)·u`,
-/// `|q̂ − q_i| ≤ (α_q·K1 + β_q·kd)·u` (written from the statements).
+/// `|q̂ − q_i| ≤ (α_q·K1 + β_q·kd)·u` (written from the statements of
+/// `proofs/PhongCount.v`).
 fn constants(form: Form) -> (f64, f64, f64, f64) {
     match form {
         Form::Horner => (20.03, 2.02, 78.11, 12.04),
         Form::Pixel | Form::Lerp => (14.04, 2.04, 23.06, 4.06),
     }
+}
+
+/// `proofs/PhongCountD.v`'s bounds at `d ≥ |N_b − N_a|` (written from the
+/// statements): `(p's K1 factor, p's kd factor, q's K1 factor, q's kd factor)`.
+fn dist_constants(form: Form, d: f64) -> (f64, f64, f64, f64) {
+    match form {
+        Form::Horner => (
+            8.04 + 6.01 * d,
+            0.03 + 1.01 * d,
+            10.13 + 18.03 * d + 8.01 * d * d,
+            0.07 + 2.02 * d + 2.01 * d * d,
+        ),
+        Form::Pixel => (
+            6.02 + 2.01 * d,
+            0.02 + 1.01 * d,
+            7.02 + 4.01 * d,
+            0.02 + 2.01 * d,
+        ),
+        Form::Lerp => (8.02, 0.02 + 1.01 * d, 11.02, 0.02 + 2.01 * d),
+    }
+}
+
+/// `|N_b − N_a|` of an exact span, rounded up (computed here, not by the library).
+fn distance(s: &Span<Q>) -> f64 {
+    let d2 = [
+        s.nb.x.clone() - s.na.x.clone(),
+        s.nb.y.clone() - s.na.y.clone(),
+        s.nb.z.clone() - s.na.z.clone(),
+    ]
+    .iter()
+    .map(|c| c.clone() * c.clone())
+    .fold(Q::from_integer(0.into()), |a, b| a + b);
+    ((d2.to_f64() * (1.0 + 1e-15)).sqrt() * (1.0 + 1e-15)).min(2.0)
 }
 
 /// `p̂_i` and `q̂_i` of `form` in `T` (also `phong`'s in `tests/profiles.rs`), the dot products summed as `how`, the products
@@ -276,13 +312,8 @@ pub(super) fn pq<T: Native>(
             let fi = T::from_u32(i);
             match form {
                 Form::Horner => (axpy(a, fi, b), axpy(axpy(c, fi, d), fi, e)),
-                Form::Pixel => {
-                    let nn = [0, 1, 2].map(|j| axpy(fi, k[j], na[j]));
-                    (dot(how, nn, l), dot(how, nn, nn))
-                }
-                Form::Lerp => {
-                    let t = over_n(fi);
-                    let nn = [0, 1, 2].map(|j| axpy(t, nb[j], (one - t).mul(na[j])));
+                Form::Pixel | Form::Lerp => {
+                    let nn = normal(form, fused, recip, s, i);
                     (dot(how, nn, l), dot(how, nn, nn))
                 }
             }
@@ -290,12 +321,47 @@ pub(super) fn pq<T: Native>(
         .collect()
 }
 
+/// The computed normal of pixel `i` of the per-pixel form (`N_a + i·k`) or the lerp
+/// (`(1 − t)·N_a + t·N_b`) in `T`, as [`pq`] computes it.
+pub(super) fn normal<T: Native>(
+    form: Form,
+    fused: bool,
+    recip: bool,
+    s: &Span<Q>,
+    i: u32,
+) -> [T; 3] {
+    let vec = |x: &phong_approx::Vec3<Q>| [T::of(&x.x), T::of(&x.y), T::of(&x.z)];
+    let (na, nb) = (vec(&s.na), vec(&s.nb));
+    let nf = T::from_u32(s.n);
+    let one = T::from_u32(1);
+    let inv = one.div(nf);
+    let over_n = |x: T| if recip { x.mul(inv) } else { x.div(nf) };
+    let axpy = |a: T, x: T, y: T| if fused { a.fma(x, y) } else { a.mul(x) + y };
+    let fi = T::from_u32(i);
+    match form {
+        Form::Lerp => {
+            let t = over_n(fi);
+            [0, 1, 2].map(|j| axpy(t, nb[j], (one - t).mul(na[j])))
+        }
+        _ => [0, 1, 2].map(|j| axpy(fi, over_n(nb[j] - na[j]), na[j])),
+    }
+}
+
 /// Every variant of `form` in `f32` and `f64` within the theorem's constants under
 /// `ieee` (`K1 = 1`; `kd = 1` for one division, `(1 + 2^-20) + 1 + 2^-36` through
 /// `1/n`), at every pixel of every Phong span; returns the largest fraction of a
 /// bound reached.
 fn counts(theorem: &str, form: Form, recip: bool) -> f64 {
-    let (ap, bp, aq, bq) = constants(form);
+    counts_with(theorem, form, recip, |_| constants(form))
+}
+
+/// [`counts`] against the constants `of` a span gives.
+fn counts_with(
+    theorem: &str,
+    form: Form,
+    recip: bool,
+    of: impl Fn(&Span<Q>) -> (f64, f64, f64, f64),
+) -> f64 {
     let kd = if recip {
         1.0 + 2f64.powi(-20) + 1.0 + 2f64.powi(-36)
     } else {
@@ -309,6 +375,7 @@ fn counts(theorem: &str, form: Form, recip: bool) -> f64 {
         .into_iter()
         .filter(|s| s.n <= tiered(64, 1024))
     {
+        let (ap, bp, aq, bq) = of(&s);
         let exact: Vec<(Q, Q)> = (0..=s.n).map(|i| (s.p_at(i), s.q_at(i))).collect();
         let mut judge = |got: Vec<(Q, Q)>, u: f64, what: String| {
             let (bound_p, bound_q) = ((ap + bp * kd) * u, (aq + bq * kd) * u);
@@ -384,15 +451,55 @@ fn phong_lerp_recip_generic() {
     counts("phong_lerp_recip_generic", Form::Lerp, true);
 }
 
-/// The bound `check` applies to Phong under `ieee` and `shader` at `|N_b − N_a| = 2`
-/// (any unit normals, so `phong_derived` takes the worst-case counts) is at least
-/// the one the theorems compose — the largest count of `proofs/PhongCount.v`'s forms,
-/// then `phong_value_either` — at every `n` and `q_min` sampled: for Horner's closed
-/// form, the per-pixel normal and the lerp the applied bound is a theorem there.
+/// [`counts`] against `proofs/PhongCountD.v`'s bound at the span's own
+/// `|N_b − N_a|`; returns the largest fraction reached.
+fn counts_dist(theorem: &str, form: Form, recip: bool) -> f64 {
+    counts_with(theorem, form, recip, |s| dist_constants(form, distance(s)))
+}
+
 #[test]
-fn the_applied_bound_covers_the_theorems_at_any_normals() {
-    use phong_approx::tolerance::profile::{arith, phong_derived, Profile};
+fn phong_horner_div_dist() {
+    counts_dist("phong_horner_div_dist", Form::Horner, false);
+}
+
+#[test]
+fn phong_horner_recip_dist() {
+    counts_dist("phong_horner_recip_dist", Form::Horner, true);
+}
+
+#[test]
+fn phong_pixel_div_dist() {
+    counts_dist("phong_pixel_div_dist", Form::Pixel, false);
+}
+
+#[test]
+fn phong_pixel_recip_dist() {
+    counts_dist("phong_pixel_recip_dist", Form::Pixel, true);
+}
+
+#[test]
+fn phong_lerp_div_dist() {
+    counts_dist("phong_lerp_div_dist", Form::Lerp, false);
+}
+
+#[test]
+fn phong_lerp_recip_dist() {
+    counts_dist("phong_lerp_recip_dist", Form::Lerp, true);
+}
+
+/// The bound `check` applies to Phong under `ieee` and `shader`
+/// (`tolerance::profile::phong_bound`) is the composition of the theorems, written
+/// out here from their statements: for each form of `proofs/PhongCount.v` the
+/// smaller of its count and `proofs/PhongCountD.v`'s at `d`, the larger over the
+/// forms, the larger `kd` of the two ways of `/n`, then `phong_value_either` and
+/// normalize-then-dot's term (`proofs/PhongNormalize.v`) — at
+/// every `n`, `q_min` and `d` sampled, equal to a relative `10^-9` (so neither looser
+/// than the theorems nor below them).
+#[test]
+fn the_applied_phong_bounds_are_the_composed_theorems() {
+    use phong_approx::tolerance::profile::{arith, phong_bound, Profile};
     use phong_approx::Format;
+    let mut compared = 0;
     for (profile, format, k1, (ks, kd, km)) in [
         (Profile::Ieee, Format::Binary32, 1.0, (1.0, 1.0, 1.0)),
         (Profile::Ieee, Format::Binary64, 1.0, (1.0, 1.0, 1.0)),
@@ -402,34 +509,208 @@ fn the_applied_bound_covers_the_theorems_at_any_normals() {
         let u = format.u();
         // kd of the reciprocal forms, the larger.
         let kdn = kd + (1.0 + 2f64.powi(-20)) * km + 2f64.powi(-36);
-        let (ep, eq) = [Form::Horner, Form::Pixel].map(constants).iter().fold(
-            (0f64, 0f64),
-            |(ep, eq), &(ap, bp, aq, bq)| {
-                (
-                    ep.max((ap * k1 + bp * kdn) * u),
-                    eq.max((aq * k1 + bq * kdn) * u),
-                )
-            },
-        );
-        for n in [1, 2, 7, 64, 255, 1024, 4096] {
-            for q_min in [1e-3, 0.01, 0.1, 0.5, 1.0] {
-                if 2.0 * eq > q_min {
-                    continue;
+        for d in [0.0, 1e-6, 0.01, 0.3, 1.0, 1.7, 2.0] {
+            let (ep, eq) = [Form::Horner, Form::Pixel, Form::Lerp].iter().fold(
+                (0f64, 0f64),
+                |(ep, eq), &form| {
+                    let (ap, bp, aq, bq) = constants(form);
+                    let (dp, dpk, dq, dqk) = dist_constants(form, d);
+                    let p = ((ap * k1 + bp * kdn).min(dp * k1 + dpk * kdn)) * u;
+                    let q = ((aq * k1 + bq * kdn).min(dq * k1 + dqk * kdn)) * u;
+                    (ep.max(p), eq.max(q))
+                },
+            );
+            for n in [1, 2, 7, 64, 255, 1024, 4096] {
+                for q_min in [1e-3, 0.01, 0.1, 0.5, 1.0] {
+                    let applied = phong_bound(&a, n, q_min, d);
+                    if 2.0 * eq > q_min {
+                        assert!(applied.is_none(), "{profile:?} {format:?} d = {d}");
+                        continue;
+                    }
+                    let c = Case {
+                        p: 1.0,
+                        q: q_min,
+                        q_min,
+                        ep,
+                        eq,
+                    };
+                    // `phong_normalize_dot_unit`: normalize-then-dot adds its term to
+                    // `phong_value_recip`'s (κ_in = κ_add = κ_mul = k1 here).
+                    let (eta, lam) = (a.eta, 1.0 + k1 * u + 2.0 * a.eta);
+                    let normalize =
+                        1.03 * lam * (k1 * u + k1 * u + 2.0 * k1 * u) + 2.0 * lam * eta + 8.0 * eta;
+                    let theorem = rhs_recip(&c, (ks, kd, km), u, eta) + normalize;
+                    let applied = applied.unwrap();
+                    assert!(
+                        applied >= theorem && applied <= theorem * (1.0 + 1e-9),
+                        "{profile:?} {format:?} n = {n}, q_min = {q_min}, d = {d}: applied {applied:e}, theorem {theorem:e}"
+                    );
+                    compared += 1;
                 }
-                let c = Case {
-                    p: 1.0,
-                    q: q_min,
-                    q_min,
-                    ep,
-                    eq,
-                };
-                let theorem = rhs_recip(&c, (ks, kd, km), u, a.eta);
-                let applied = phong_derived(&a, n, q_min, 2.0).unwrap();
-                assert!(
-                    applied >= theorem,
-                    "{profile:?} {format:?} n = {n}, q_min = {q_min}: applied {applied:e} < theorem {theorem:e}"
-                );
             }
         }
     }
+    assert!(compared > 600, "{compared}");
+}
+
+/// The variants of the per-pixel normal and the lerp: `(form, fused, recip)`.
+fn normal_variants() -> Vec<(Form, bool, bool)> {
+    let mut out = Vec::new();
+    for form in [Form::Pixel, Form::Lerp] {
+        for fused in [false, true] {
+            for recip in [false, true] {
+                out.push((form, fused, recip));
+            }
+        }
+    }
+    out
+}
+
+/// `pixel_ok_exact_dot` and `lerp_ok_exact_dot` (`proofs/PhongNormalize.v`): the
+/// forms' `p̂` may be the *exact* dot product of the computed normal with `L̂`, so
+/// their count bounds hold for it — checked here exactly (rationals) on every pixel
+/// of the Phong spans, `f32` and `f64`, against `proofs/PhongCount.v`'s constants.
+fn exact_dot(theorem: &str, form: Form) {
+    let mut checked = 0;
+    for s in phong_spans().into_iter().filter(|s| s.n <= tiered(64, 256)) {
+        for (f, fused, recip) in normal_variants().into_iter().filter(|v| v.0 == form) {
+            let (ap, bp, _, _) = constants(f);
+            let kd = if recip {
+                2.0 + 2f64.powi(-20) + 2f64.powi(-36)
+            } else {
+                1.0
+            };
+            for (u, l, nn) in [
+                (
+                    f32::U,
+                    [s.l.x.clone(), s.l.y.clone(), s.l.z.clone()].map(|x| f32::of(&x).q()),
+                    (0..=s.n)
+                        .map(|i| normal::<f32>(f, fused, recip, &s, i).map(|x| x.q()))
+                        .collect::<Vec<_>>(),
+                ),
+                (
+                    f64::U,
+                    [s.l.x.clone(), s.l.y.clone(), s.l.z.clone()].map(|x| f64::of(&x).q()),
+                    (0..=s.n)
+                        .map(|i| normal::<f64>(f, fused, recip, &s, i).map(|x| x.q()))
+                        .collect(),
+                ),
+            ] {
+                for (i, n) in nn.iter().enumerate() {
+                    let exact = n[0].clone() * l[0].clone()
+                        + n[1].clone() * l[1].clone()
+                        + n[2].clone() * l[2].clone();
+                    let e = (exact - s.p_at(i as u32)).abs().to_f64();
+                    let b = (ap + bp * kd) * u;
+                    assert!(e <= b, "{theorem} {f:?} fused {fused} recip {recip}: pixel {i} of n = {}: {:.3}u > {:.3}u", s.n, e / u, b / u);
+                    checked += 1;
+                }
+            }
+        }
+    }
+    assert!(checked > 5_000, "{checked}");
+}
+
+#[test]
+fn pixel_ok_exact_dot() {
+    exact_dot("pixel_ok_exact_dot", Form::Pixel);
+}
+
+#[test]
+fn lerp_ok_exact_dot() {
+    exact_dot("lerp_ok_exact_dot", Form::Lerp);
+}
+
+/// `phong_normalize_dot` (`unit = false`: `λ = |L̂|`, computed here) and
+/// `phong_normalize_dot_unit` (`λ = 1 + κ_in·u + 2η`): normalize-then-dot —
+/// `q̂ = N̂·N̂`, `r = 1/√q̂`, `w = N̂·r`, `v̂ = w·L̂` — of the per-pixel normal and the
+/// lerp, native `ieee` code in `f32` and `f64`, every dot order, fused or not, `/n`
+/// either way, within `phong_value_recip`'s bound (`e_p`, `e_q` the forms' counts)
+/// plus `1.03·λ·(κ_mul·u + κ_mul·u + 2κ_add·u) + 2λη + 8η`, every pixel of the Phong
+/// spans against the exact `p_i/√q_i`. Returns the largest fraction reached.
+fn normalize_dot(theorem: &str, unit: bool) -> f64 {
+    let mut worst = 0f64;
+    let mut checked = 0;
+    // Spans up to n = 16 (256 in the extensive tier): each pixel takes an exact
+    // square root.
+    for s in phong_spans().into_iter().filter(|s| s.n <= tiered(16, 256)) {
+        let want = super::phong_exact(&s);
+        let q_min = (0..=s.n).map(|i| s.q_at(i)).min().unwrap().to_f64() * (1.0 - 1e-12);
+        for (form, fused, recip) in normal_variants() {
+            for how in [Dot::Reversed, Dot::Fused, Dot::RightFirst] {
+                let mut judge = |got: Vec<Q>, u: f64, eta: f64, lam_l: f64| {
+                    let (ap, bp, aq, bq) = constants(form);
+                    let kd = if recip {
+                        2.0 + 2f64.powi(-20) + 2f64.powi(-36)
+                    } else {
+                        1.0
+                    };
+                    let (ep, eq) = ((ap + bp * kd) * u, (aq + bq * kd) * u);
+                    let lam = if unit { 1.0 + u + 2.0 * eta } else { lam_l };
+                    let extra = 1.03 * lam * (4.0 * u) + 2.0 * lam * eta + 8.0 * eta;
+                    for (i, (g, w)) in got.into_iter().zip(&want).enumerate() {
+                        if 2.0 * eq > q_min {
+                            return;
+                        }
+                        let c = Case {
+                            p: s.p_at(i as u32).to_f64(),
+                            q: s.q_at(i as u32).to_f64(),
+                            q_min,
+                            ep,
+                            eq,
+                        };
+                        let b = rhs_recip(&c, (1.0, 1.0, 1.0), u, eta) + extra;
+                        let e = (g - w.clone()).abs().to_f64();
+                        assert!(
+                            e <= b,
+                            "{theorem} {form:?} {how:?} fused {fused} recip {recip}: pixel {i} of n = {}: {e:e} > {b:e}",
+                            s.n
+                        );
+                        worst = worst.max(e / b);
+                        checked += 1;
+                    }
+                };
+                fn run<T: Native>(
+                    s: &Span<Q>,
+                    form: Form,
+                    how: Dot,
+                    fused: bool,
+                    recip: bool,
+                ) -> (Vec<Q>, f64) {
+                    let l = [s.l.x.clone(), s.l.y.clone(), s.l.z.clone()].map(|x| T::of(&x));
+                    let one = T::from_u32(1);
+                    let v = (0..=s.n)
+                        .map(|i| {
+                            let nn = normal::<T>(form, fused, recip, s, i);
+                            let r = one.div(dot(how, nn, nn).sqrt());
+                            dot(how, nn.map(|x| x.mul(r)), l).q()
+                        })
+                        .collect();
+                    // |L̂| rounded up.
+                    let l2 = l
+                        .iter()
+                        .map(|x| x.q() * x.q())
+                        .fold(Q::zero(), |a, b| a + b);
+                    (v, (l2.to_f64() * (1.0 + 1e-15)).sqrt() * (1.0 + 1e-15))
+                }
+                let (v, lam) = run::<f32>(&s, form, how, fused, recip);
+                judge(v, f32::U, Format::Binary32.eta(), lam);
+                let (v, lam) = run::<f64>(&s, form, how, fused, recip);
+                judge(v, f64::U, Format::Binary64.eta(), lam);
+            }
+        }
+    }
+    assert!(checked > 2_000, "{checked}");
+    eprintln!("{theorem}: {checked} pixels, worst {worst:.3} of the bound");
+    worst
+}
+
+#[test]
+fn phong_normalize_dot() {
+    normalize_dot("phong_normalize_dot", false);
+}
+
+#[test]
+fn phong_normalize_dot_unit() {
+    normalize_dot("phong_normalize_dot_unit", true);
 }

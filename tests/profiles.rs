@@ -2196,6 +2196,309 @@ fn adaptive_acceptance_contains_every_run() {
     eprintln!("{checked} adversarial runs outside the band decide as the exact run; {flips_without_4u} flip outside the band without its 4u");
 }
 
+/// `eq24_delta_err` and `fast_delta_err` of `proofs/AdaptiveDelta.v`, written from
+/// the definitions (not read from the library) for a model with `κ_in`, `κ_add`,
+/// `κ_mul`, `κ_div` (the larger of `/n` and `·(1/n)`), `u` and `η`: `(fast, eq24)`.
+fn adaptive_delta_errors(
+    kin: f64,
+    kadd: f64,
+    kmul: f64,
+    kdiv: f64,
+    u: f64,
+    eta: f64,
+) -> (f64, f64) {
+    let k1 = kin.max(kadd).max(kmul).max(1.0);
+    let kd = kdiv.max((1.0 + 2f64.powi(-20)) * kmul + kdiv + 2f64.powi(-36));
+    let (v, d) = (k1 * u, kd * u);
+    let eds = 92.11 * v + 18.06 * d;
+    let fast = eds / 8.0 + 3.004 * v * (0.25 + eds / 8.0) + 562_949_986_975_745.0 * eta;
+    let epg = (2.0 * kin * u + kmul * u + 2.0 * kadd * u) * (1.0 + 1.0 / 131_072.0) + 18.0 * eta;
+    let edp = (kadd * u + kd * u) * (2.0 + 1.0 / 65_536.0) + 16_777_218.0 * eta;
+    let epc = 5.002 * v + 0.001 * d;
+    let er = 20.04 * v + 5.01 * d;
+    let eg = edp + 2.0 * epg;
+    let ec = er + 2.0 * epc + eds / 8.0;
+    let (ma, mb, mc) = (2.0 + eg, 3.0 + 2.0 * epc + eds / 2.0 + er, 1.0 + eds / 2.0);
+    let e4 = eg
+        + ec
+        + (v * ma + eta)
+        + (v * mb + eta)
+        + (v * mc + eta)
+        + (v * (mb + mc + (v * mb + eta) + (v * mc + eta)) + eta);
+    (fast, e4 + v * (0.25 + e4) + eta)
+}
+
+/// `adaptive_delta_conditions_at_profile_bounds` (proofs/AdaptiveDelta.v): at the
+/// applied `ieee` binary32 bounds of Gouraud and corrected Euler the band's
+/// `1.01·(b_G + b_CE) + 2u` covers the crate's closed form of `δ̂` (`17u`) and eq. 24
+/// with shared edges (`63u`) at every `n`, and eq. 24 with separate set-ups (`83u`)
+/// from `n = 6` only. So the band takes `tolerance::profile::adaptive_band`'s
+/// Gouraud bound, raised where needed: checked here against the errors written from
+/// the definitions (`delta_error` equals them), for `ieee` binary32 and binary64,
+/// `shader` and `reference`, at every `n` up to 4096, with the model's unit
+/// (`shader`: `2u`, the products' 2 ulps).
+#[test]
+fn adaptive_delta_conditions_at_profile_bounds() {
+    use phong_approx::tolerance::profile::{adaptive_band, arith, delta_error, profile_bound};
+    let u32_ = Format::Binary32.u();
+    let band = |bg: f64, bce: f64, u: f64| 1.01 * (bg + bce) + 2.0 * u;
+    let (fast, eq24) = adaptive_delta_errors(1.0, 1.0, 1.0, 1.0, u32_, Format::Binary32.eta());
+    assert!(
+        fast <= 17.0 * u32_ && eq24 <= 83.0 * u32_,
+        "{} {}",
+        fast / u32_,
+        eq24 / u32_
+    );
+    let mut short = Vec::new();
+    for n in 1..=4096u32 {
+        let bg = profile_bound(Method::Gouraud, Profile::Ieee, n, 1.0, Format::Binary32).unwrap();
+        let bce = profile_bound(
+            Method::CorrectedEuler,
+            Profile::Ieee,
+            n,
+            1.0,
+            Format::Binary32,
+        )
+        .unwrap();
+        let b = band(bg, bce, u32_);
+        assert!(b >= 17.0 * u32_ && b >= 63.0 * u32_, "n = {n}");
+        if b < 83.0 * u32_ {
+            short.push(n);
+        }
+    }
+    assert_eq!(short, [1, 2, 3, 4, 5], "eq. 24's 83u is covered from n = 6");
+    for (profile, format, model) in [
+        (Profile::Ieee, Format::Binary32, Profile::Ieee),
+        (Profile::Ieee, Format::Binary64, Profile::Ieee),
+        (Profile::Reference, Format::Binary32, Profile::Ieee),
+        (Profile::Reference, Format::Binary64, Profile::Ieee),
+        (Profile::Shader, Format::Binary32, Profile::Shader),
+    ] {
+        let a = arith(model, format).unwrap();
+        let (fast, eq24) = adaptive_delta_errors(a.input, a.add, a.mul, a.div, a.u, a.eta);
+        let e = fast.max(eq24);
+        assert!(
+            (delta_error(&a) - e).abs() <= 1e-9 * e,
+            "{profile:?} {format:?}: delta_error {} against {}",
+            delta_error(&a),
+            e
+        );
+        let unit = a.u * a.mul.max(1.0);
+        for n in (1..=64u32).chain([255, 256, 1023, 1024, 4095, 4096]) {
+            let bound = |m: Method| match profile {
+                Profile::Reference => phong_approx::tolerance::bound(m, n, 1.0, format.u()),
+                p => profile_bound(m, p, n, 1.0, format),
+            };
+            let (bg, bce) = (
+                bound(Method::Gouraud).unwrap(),
+                bound(Method::CorrectedEuler).unwrap(),
+            );
+            let (wg, wce, u) = adaptive_band(profile, format, bg, bce);
+            assert_eq!((wce, u), (bce, unit), "{profile:?} {format:?} n = {n}");
+            assert!(
+                wg >= bg && wg <= bce,
+                "{profile:?} {format:?} n = {n}: {wg:e}"
+            );
+            assert!(
+                band(wg, wce, u) >= e,
+                "{profile:?} {format:?} n = {n}: band {:e} < δ̂'s error {e:e}",
+                band(wg, wce, u)
+            );
+        }
+    }
+}
+
+/// Exact spans of unit normals for the adaptive tests: a grid of rational directions
+/// (`(2a, 2b, 1 − a² − b²)/(1 + a² + b²)`), lengths from 1 to 4096.
+fn adaptive_spans() -> Vec<Span<Q>> {
+    let unit = |a: Q, b: Q| {
+        let one = Q::from_integer(1.into());
+        let den = &one + &a * &a + &b * &b;
+        phong_approx::Vec3::new(
+            q(2, 1) * &a / &den,
+            q(2, 1) * &b / &den,
+            (&one - &a * &a - &b * &b) / &den,
+        )
+    };
+    let mut out = Vec::new();
+    let dirs = [(0, 1), (1, 7), (2, 9), (1, 3), (3, 5), (5, 4)];
+    for (k, &(a, b)) in dirs.iter().enumerate() {
+        for &(c, d) in &dirs[k..] {
+            let na = unit(q(a, 11), q(b, 13));
+            let nb = unit(q(c, 5), q(-d, 17));
+            let l = unit(q(1, 4), q(1, 6));
+            for n in [1, 2, 3, 4, 5, 6, 7, 8, 15, 16, 63, 255, 1024, 4095] {
+                if let Ok(s) = Span::new(na.clone(), nb.clone(), l.clone(), n) {
+                    out.push(s);
+                }
+            }
+        }
+    }
+    out
+}
+
+/// `δ̂` of the crate's two ways in `T`: eq. 24 (`adaptive::decide` on the span set up
+/// in `T`, its step from eq. 23 in `T`) and the fast kernels' closed form
+/// (`FastSpan::delta`), with their errors from the exact `δ`; `None` where the float
+/// step is not `⌈n/2⌉` or `⌊n/2⌋`.
+fn own_delta_errors<T: phong_approx::Real>(
+    s: &Span<Q>,
+    fast: impl Fn(&Span<T>) -> Q,
+) -> (Q, Q, Option<u32>) {
+    let exact = phong_approx::adaptive::decide(s, &Q::from_integer(1.into())).delta;
+    let sf = s.cast::<T>().expect("a float span");
+    let d = phong_approx::adaptive::decide(&sf, &T::one());
+    let eq24 = Q::from_float(d.delta.to_f64()).unwrap();
+    ((eq24 - &exact).abs(), (fast(&sf) - exact).abs(), d.step)
+}
+
+/// `adaptive_acceptance_covers_computed_delta` (proofs/AdaptiveDelta.v, binary32):
+/// the crate's own `f32` `δ̂` — eq. 24 from its set-ups and the fast kernels'
+/// `ds/2·⌊n/2⌋⌈n/2⌉` — are within the theorem's `83u` and `17u` of the exact `δ`
+/// (exactly, in rationals), on spans of every length to 4096.
+#[test]
+fn adaptive_acceptance_covers_computed_delta() {
+    let u = Format::Binary32.u();
+    let (mut worst24, mut worst_fast, mut checked) = (0f64, 0f64, 0);
+    for s in adaptive_spans() {
+        let (e24, efast, step) = own_delta_errors::<f32>(&s, |sf| {
+            Q::from_float(f64::from(
+                phong_approx::fast::FastSpan::<f32>::from_span(sf).delta(),
+            ))
+            .unwrap()
+        });
+        let (e24, efast) = (e24.to_f64() / u, efast.to_f64() / u);
+        let j = s.n.div_ceil(2);
+        assert!(
+            step == Some(j) || step == Some(s.n - j) || step.is_none(),
+            "n = {}: step {step:?}",
+            s.n
+        );
+        assert!(
+            e24 <= 83.0 && efast <= 17.0,
+            "n = {}: eq. 24 {e24:.2}u, fast {efast:.2}u",
+            s.n
+        );
+        worst24 = worst24.max(e24);
+        worst_fast = worst_fast.max(efast);
+        checked += 1;
+    }
+    assert!(checked > 200, "{checked}");
+    eprintln!("{checked} spans: eq. 24's δ̂ within {worst24:.2}u (83u), the closed form's within {worst_fast:.2}u (17u)");
+}
+
+/// `adaptive_acceptance_covers_computed_delta_generic` (proofs/AdaptiveDelta.v): in
+/// binary64 too the crate's `δ̂` are within `delta_error`, and wherever the exact
+/// `|255δ|` is outside the band of `adaptive_too_close` (with `adaptive_band`'s
+/// bounds) the crate's `f32` and `f64` runs decide as the exact run does — on the
+/// spans above and on spans placed at the threshold (`L` chosen so `|255δ|` is
+/// within `10^-3`, `10^-6` and `10^-12` of 1).
+#[test]
+fn adaptive_acceptance_covers_computed_delta_generic() {
+    use phong_approx::adaptive::{decide, Choice};
+    use phong_approx::tolerance::adaptive_too_close;
+    use phong_approx::tolerance::profile::{adaptive_band, arith, delta_error};
+    let e64 = delta_error(&arith(Profile::Ieee, Format::Binary64).unwrap());
+    let mut spans = adaptive_spans();
+    // At the threshold: N_a = (0, 0, 1), N_b at angle θ in the xz-plane, n = 2, so
+    // δ = ds/2 = −(1 − cos θ)·(p_a + p_b)/... scaled by L's z: L = (0, s, c) with c
+    // chosen from δ(c) linear in c.
+    for (num, den) in [(11, 61), (3, 5), (20, 29)] {
+        let nb = phong_approx::Vec3::new(q(2 * num * den, 1), q(0, 1), q(den * den - num * num, 1));
+        let len = Q::from_integer((den * den + num * num).into());
+        let nb = phong_approx::Vec3::new(nb.x / &len, nb.y, nb.z / &len);
+        let z = phong_approx::Vec3::new(q(0, 1), q(0, 1), q(1, 1));
+        for n in [2, 3, 8] {
+            let at = |l: &phong_approx::Vec3<Q>| {
+                Span::new(z.clone(), nb.clone(), l.clone(), n)
+                    .ok()
+                    .map(|s| {
+                        decide(&s, &Q::from_integer(1.into())).delta * Q::from_integer(255.into())
+                    })
+            };
+            // δ is linear in L: find the L on the unit circle of (x, 0, z) with
+            // |255δ| = 1 + ε by bisection on rational L's.
+            for eps in [1e-3, 1e-6, 1e-12, -1e-3, -1e-6, -1e-12] {
+                let target = 1.0 + eps;
+                let l_of = |t: f64| {
+                    let t = Q::from_float(t).unwrap();
+                    let one = Q::from_integer(1.into());
+                    let den = &one + &t * &t;
+                    phong_approx::Vec3::new(q(2, 1) * &t / &den, q(0, 1), (&one - &t * &t) / &den)
+                };
+                let f = |t: f64| at(&l_of(t)).map(|d| d.abs().to_f64() - target);
+                // Every sign change on a grid of t, then bisection.
+                let grid: Vec<f64> = (0..=64).map(|k| -1.0 + f64::from(k) / 32.0).collect();
+                for w in grid.windows(2) {
+                    let (mut lo, mut hi) = (w[0], w[1]);
+                    let (Some(flo), Some(fhi)) = (f(lo), f(hi)) else {
+                        continue;
+                    };
+                    if flo.signum() == fhi.signum() {
+                        continue;
+                    }
+                    for _ in 0..60 {
+                        let mid = 0.5 * (lo + hi);
+                        match f(mid) {
+                            Some(fm) if fm.signum() == flo.signum() => lo = mid,
+                            Some(_) => hi = mid,
+                            None => break,
+                        }
+                    }
+                    if let Ok(s) = Span::new(z.clone(), nb.clone(), l_of(0.5 * (lo + hi)), n) {
+                        spans.push(s);
+                    }
+                }
+            }
+        }
+    }
+    let (mut checked, mut near) = (0, 0);
+    for s in &spans {
+        let (e24, efast, _) = own_delta_errors::<f64>(s, |sf| {
+            Q::from_float(phong_approx::fast::FastSpan::<f64>::from_span(sf).delta()).unwrap()
+        });
+        assert!(
+            e24.to_f64() <= e64 && efast.to_f64() <= e64,
+            "n = {}: {:e}, {:e} > {e64:e}",
+            s.n,
+            e24.to_f64(),
+            efast.to_f64()
+        );
+        let exact = decide(s, &Q::from_integer(1.into()));
+        let delta = exact.delta.to_f64();
+        for format in [Format::Binary32, Format::Binary64] {
+            let bound = |m: Method| phong_approx::tolerance::bound(m, s.n, 1.0, format.u());
+            let (Some(bg), Some(bce)) = (bound(Method::Gouraud), bound(Method::CorrectedEuler))
+            else {
+                continue;
+            };
+            let (wg, wce, u) = adaptive_band(Profile::Reference, format, bg, bce);
+            if adaptive_too_close(delta, 1.0, wg, wce, u) {
+                near += 1;
+                continue;
+            }
+            let choice = match format {
+                Format::Binary32 => decide(&s.cast::<f32>().unwrap(), &1.0f32).choice,
+                _ => decide(&s.cast::<f64>().unwrap(), &1.0f64).choice,
+            };
+            let gouraud = |c: Choice| c == Choice::Gouraud;
+            assert_eq!(
+                gouraud(choice),
+                gouraud(exact.choice.clone()),
+                "n = {}, |255δ| = {}: {format:?} decides otherwise outside the band",
+                s.n,
+                (255.0 * delta).abs()
+            );
+            checked += 1;
+        }
+    }
+    assert!(
+        checked > 400 && near > 0,
+        "{checked} outside the band, {near} inside"
+    );
+    eprintln!("{checked} decisions outside the band as the exact run's; {near} inside it");
+}
+
 /// Phong with a Quake-style reciprocal square root — the magic constant `0x5f3759df`
 /// and two Newton steps, about `4.7·10⁻⁶` relative error (≈ 78u in binary32), outside
 /// the `ieee` class (a correctly rounded square root and division) — fails `check`

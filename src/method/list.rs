@@ -9,8 +9,8 @@ use super::catalogue::{
     ValueRange, WholeSpan,
 };
 use super::profiles::{
-    CORRECTED_EULER_THEOREMS, DUFF_THEOREMS, EULER_THEOREMS, GOURAUD_THEOREMS,
-    SYMMETRIC_PHONG_THEOREMS,
+    ADAPTIVE_THEOREMS, CORRECTED_EULER_THEOREMS, DUFF_THEOREMS, EULER_THEOREMS, GOURAUD_THEOREMS,
+    PHONG_THEOREMS, SYMMETRIC_PHONG_THEOREMS,
 };
 use super::{Prepared, SOURCE_TABLE};
 use crate::adaptive::Decision;
@@ -59,31 +59,37 @@ const ANGLE: Bound = Bound::Angle {
 // Beyond the reference profile (`method/profiles.rs`).
 const NO_FIXED: FixedBound =
     FixedBound::None("proofs/Fixed.v proves Gouraud's and corrected Euler's loops only");
-const fn derived(section: &'static str, form: DerivedForm) -> ProfileBounds {
-    ProfileBounds {
-        reference: None,
-        float: FloatBound::Derived { section, form },
-        fixed: NO_FIXED,
-    }
-}
-const DERIVED_PER_PIXEL: ProfileBounds = derived("docs/float.md §18.4", DerivedForm::PerPixel);
-const fn composed(theorems: &'static [&'static str], form: DerivedForm) -> ProfileBounds {
+const fn composed(
+    theorems: &'static [&'static str],
+    section: &'static str,
+    form: DerivedForm,
+) -> ProfileBounds {
     ProfileBounds {
         reference: None,
         float: FloatBound::Composed {
             theorems,
-            section: "docs/float.md §18.5",
+            section,
             form,
         },
         fixed: NO_FIXED,
     }
 }
-const COMPOSED_RATIO: ProfileBounds = composed(DUFF_THEOREMS, DerivedForm::Ratio);
-const COMPOSED_HALF_RATIO: ProfileBounds =
-    composed(SYMMETRIC_PHONG_THEOREMS, DerivedForm::HalfRatio);
+const COMPOSED_PER_PIXEL: ProfileBounds =
+    composed(PHONG_THEOREMS, "docs/float.md §18.4", DerivedForm::PerPixel);
+const COMPOSED_RATIO: ProfileBounds =
+    composed(DUFF_THEOREMS, "docs/float.md §18.5", DerivedForm::Ratio);
+const COMPOSED_HALF_RATIO: ProfileBounds = composed(
+    SYMMETRIC_PHONG_THEOREMS,
+    "docs/float.md §18.5",
+    DerivedForm::HalfRatio,
+);
 // The larger of the two proved bounds, against the exact run of the method the
 // implementation chose (docs/float.md §10, §18.5).
-const ADAPTIVE_PROFILES: ProfileBounds = derived("docs/float.md §18.5", DerivedForm::LargerOfPicks);
+const ADAPTIVE_PROFILES: ProfileBounds = composed(
+    ADAPTIVE_THEOREMS,
+    "docs/float.md §10",
+    DerivedForm::LargerOfPicks,
+);
 const GOURAUD_PROFILES: ProfileBounds = ProfileBounds {
     reference: Some(["float_gouraud_binary32", "float_gouraud_binary64"]),
     float: FloatBound::Proved(GOURAUD_THEOREMS),
@@ -144,7 +150,7 @@ methods! {
             bound: PHONG,
             picks: None,
             closed_form: None,
-            profiles: DERIVED_PER_PIXEL,
+            profiles: COMPOSED_PER_PIXEL,
         },
     }
     /// [`crate::duff`]: Duff's forward differences (eqs. 5–7).

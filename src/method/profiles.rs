@@ -49,7 +49,7 @@ pub enum FloatBound {
 /// The form of a derived or composed profile bound (`docs/float.md` §18.4–18.5).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum DerivedForm {
-    /// The normal interpolated and normalized per pixel (`phong_derived`).
+    /// The normal interpolated and normalized per pixel (`phong_bound`).
     PerPixel,
     /// `p/√q` of two recurrences (`duff_bound`).
     Ratio,
@@ -323,6 +323,39 @@ pub const DUFF_THEOREMS: &[&str] = &[
     "duff_div_generic",
     "duff_recip_generic",
     "phong_value_either",
+];
+
+/// The theorems Phong's `ieee` and `shader` bounds rest on (`proofs/PhongCountD.v`,
+/// `proofs/PhongCount.v`, `proofs/PhongValue.v`, `proofs/PhongNormalize.v`): the
+/// counts of each form with the span's `|N_b − N_a|` and for any unit normals, either
+/// way of `/n`, the value step, normalize-then-dot.
+pub const PHONG_THEOREMS: &[&str] = &[
+    "phong_horner_div_dist",
+    "phong_horner_recip_dist",
+    "phong_pixel_div_dist",
+    "phong_pixel_recip_dist",
+    "phong_lerp_div_dist",
+    "phong_lerp_recip_dist",
+    "phong_horner_div_generic",
+    "phong_horner_recip_generic",
+    "phong_pixel_div_generic",
+    "phong_pixel_recip_generic",
+    "phong_lerp_div_generic",
+    "phong_lerp_recip_generic",
+    "phong_value_either",
+    "phong_normalize_dot_unit",
+    "pixel_ok_exact_dot",
+    "lerp_ok_exact_dot",
+];
+
+/// The theorems the adaptive scheme's `ieee` and `shader` verdicts rest on, beside
+/// its picks' own (`proofs/AdaptiveDelta.v`, `proofs/Profiles.v`): outside the band
+/// of `tolerance::adaptive_too_close` every implementation decides as the exact run
+/// does, whether its `δ̂` is the crate's closed form, eq. 24 written out, or the
+/// difference of the two methods' values at the middle pixel.
+pub const ADAPTIVE_THEOREMS: &[&str] = &[
+    "adaptive_acceptance_covers_computed_delta_generic",
+    "adaptive_acceptance_contains_every_run",
 ];
 
 /// The theorems symmetric Phong's `ieee` and `shader` bounds rest on.

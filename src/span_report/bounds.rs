@@ -50,7 +50,8 @@ pub(super) fn error_bounds(r: &Request, format: crate::Format) -> ErrorBounds {
             Some((d, kd)) => {
                 let [ma, mb] = r.method.picks()?;
                 let (ba, bb) = (of(ma, p)?, of(mb, p)?);
-                if crate::tolerance::adaptive_too_close(d, kd, ba, bb, format.u()) {
+                let (wa, wb, u) = crate::tolerance::profile::adaptive_band(p, format, ba, bb);
+                if crate::tolerance::adaptive_too_close(d, kd, wa, wb, u) {
                     ba.max(bb) + d * (1.0 + 1e-12)
                 } else {
                     b

@@ -207,7 +207,8 @@ pub fn acceptance<T: Float>(
         };
         let (ba, bb) = (bound(ma)?, bound(mb)?);
         let d = crate::adaptive::decide(span, &crate::BigRational::from_integer(1.into()));
-        if crate::tolerance::adaptive_too_close(d.delta.to_f64(), 1.0, ba, bb, T::FORMAT.u()) {
+        let (wa, wb, u) = crate::tolerance::profile::adaptive_band(profile, T::FORMAT, ba, bb);
+        if crate::tolerance::adaptive_too_close(d.delta.to_f64(), 1.0, wa, wb, u) {
             for (m, b) in [(ma, ba), (mb, bb)] {
                 for (i, v) in m.values(span).ok()?.iter().enumerate() {
                     let (lo, hi) = interval(v.to_f64(), b);

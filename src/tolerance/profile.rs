@@ -36,18 +36,24 @@ use std::str::FromStr;
 
 use crate::Format;
 
+mod adaptive;
 mod counts;
 mod derived;
 mod form;
 mod labels;
 mod model;
+mod phong;
 mod theorems;
 
+pub use adaptive::{adaptive_band, delta_error};
 pub use counts::{duff_bound, symmetric_phong_bound, DuffCounts, DUFF_COUNTS};
-pub use derived::{euler_derived, phong_derived, phong_ieee};
+pub use derived::euler_derived;
 pub use form::{Form, UnknownForm};
 pub use labels::{formula, ieee_table, status_summary, status_table};
 pub use model::{arith, Arith};
+pub use phong::{
+    normalize_then_dot, phong_bound, phong_ieee, PhongCounts, NORMALIZE_EXTRA, PHONG_COUNTS,
+};
 pub use theorems::proved;
 
 /// The most fractional bits of `fixed:M.F`: a fixed-point value below 4 (every
@@ -306,6 +312,18 @@ pub fn status(method: crate::Method, profile: Profile, format: Format) -> Option
             .then(|| derived(section))
             .flatten(),
         FloatBound::Derived { section, .. } => derived(section),
+        // The larger of the picks' proved bounds, composed with the band's theorems:
+        // both picks must be proved.
+        FloatBound::Composed {
+            theorems,
+            form: DerivedForm::LargerOfPicks,
+            ..
+        } => method
+            .picks()?
+            .iter()
+            .all(|&m| proved(m, profile, format).is_some())
+            .then(|| arith(profile, format).map(|_| Status::Proved(theorems[0])))
+            .flatten(),
         // Composed from theorems where the profile has a standard model: the counts'.
         FloatBound::Composed { theorems, .. } => {
             arith(profile, format).map(|_| Status::Proved(theorems[0]))
@@ -317,7 +335,7 @@ pub fn status(method: crate::Method, profile: Profile, format: Format) -> Option
 /// The bound of `method` under `profile` (not `Reference`, whose bounds are
 /// [`crate::tolerance::bound`]) on a span of `n` steps and smallest `q_i` `q_min`, in
 /// `format`: the proved bound ([`proved_bound`]) or the derived
-/// or composed one ([`phong_derived`], [`duff_bound`]); `None` where none covers it. For any
+/// or composed one ([`phong_bound`], [`duff_bound`]); `None` where none covers it. For any
 /// unit normals; [`profile_span_bound`] reads more of a known span.
 pub fn profile_bound(
     method: crate::Method,
@@ -343,7 +361,7 @@ pub fn profile_bound_in(
 
 /// [`profile_bound`] for a known span: Phong's derived bound with the span's own
 /// `|N_b − N_a|` ([`crate::tolerance::Shape::dn`]; up to 3× tighter on the close
-/// normals of a mesh, [`phong_derived`]).
+/// normals of a mesh, [`phong_bound`]).
 /// With a declared `form` ([`Form`]), the bound of that form alone: `None` where the
 /// form has no theorem (Gouraud's closed form, a fixed-point closed form) or the
 /// method's forms are not told apart.
@@ -396,7 +414,7 @@ fn bound_with(
         FloatBound::Derived { form, .. } | FloatBound::Composed { form, .. } => {
             let a = arith(profile, format)?;
             match form {
-                DerivedForm::PerPixel => phong_derived(&a, n, q_min, dn),
+                DerivedForm::PerPixel => phong_bound(&a, n, q_min, dn),
                 DerivedForm::Ratio => duff_bound(&a, n, q_min),
                 DerivedForm::HalfRatio => symmetric_phong_bound(&a, n, q_min),
                 DerivedForm::LargerOfPicks => method.picks()?.iter().try_fold(0f64, |b, &m| {

@@ -27,10 +27,11 @@ pub const DUFF_COUNTS: DuffCounts = DuffCounts {
     q: (65.05, 12.04, 3.004),
 };
 
-/// The counts' `(K1, kd)` for `a`, the larger `kd` of the two ways of `/n`, where the
-/// theorems' conditions hold (`model_ok`: `K·u ≤ 2^-21`, `η·2^84 ≤ u`; the
-/// reciprocal's `kd·u ≤ 2^-21`; `n·κ_add·u ≤ 2^-11`, `1 ≤ n ≤ 2^24`).
-fn model(a: &Arith, n: u32) -> Option<(f64, f64)> {
+/// The count theorems' `(K1, kd)` for `a` (Phong's set-up, `proofs/PhongCount.v`, and
+/// Duff's, `proofs/DuffCount.v`), the larger `kd` of the two ways of `/n`, where their
+/// common conditions hold (`model_ok`: `K·u ≤ 2^-21`, `η·2^84 ≤ u`; the reciprocal's
+/// `kd·u ≤ 2^-21`; `1 ≤ n ≤ 2^24`).
+pub(super) fn setup_model(a: &Arith, n: u32) -> Option<(f64, f64)> {
     let k1 = a.input.max(a.add).max(a.mul).max(1.0);
     let k = k1.max(a.div);
     let kd_recip = (1.0 + 2f64.powi(-20)) * a.mul + a.div + 2f64.powi(-36);
@@ -38,9 +39,15 @@ fn model(a: &Arith, n: u32) -> Option<(f64, f64)> {
         && a.div >= 1.0
         && k * a.u <= 2f64.powi(-21)
         && a.eta * 2f64.powi(84) <= a.u
-        && kd_recip * a.u <= 2f64.powi(-21)
-        && f64::from(n) * a.add * a.u <= 2f64.powi(-11);
+        && kd_recip * a.u <= 2f64.powi(-21);
     ok.then_some((k1, kd_recip.max(a.div)))
+}
+
+/// [`setup_model`] with Duff's walk's condition `n·κ_add·u ≤ 2^-11`.
+fn model(a: &Arith, n: u32) -> Option<(f64, f64)> {
+    (f64::from(n) * a.add * a.u <= 2f64.powi(-11))
+        .then(|| setup_model(a, n))
+        .flatten()
 }
 
 /// `|p̂ − p|` and `|q̂ − q|` after `p_steps` and `q_steps` steps ([`DUFF_COUNTS`]).

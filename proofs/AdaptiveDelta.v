@@ -1,0 +1,900 @@
+(** * AdaptiveDelta.v — the adaptive scheme's acceptance set (Profiles.v,
+    [adaptive_accepts]) covers implementations that compute the test value
+    δ̂ directly from their set-up, not as a difference of two computed pixels:
+
+    (i)  the fast kernel: δ̂ = fl(fl(fl(0.5·ds)·lo)·hi), lo = ⌊n/2⌋, hi = ⌈n/2⌉,
+         or any association of the three products ([fast_delta_ok]);
+    (ii) eq. 24 as written: δ̂ = fl(fl(j·dp) − fl(fl(j·t0) + fl(c·ds))),
+         j = ⌈n/2⌉, c = (j² − j)/2 exact ([eq24_delta_ok]);
+
+    on the set-ups of Profiles.v ([ce_setup_ok] for t0, ds; [gouraud_setup_ok]
+    for dp), every operation in the κ model (FloatModelK.v).  The checker's
+    band x·(1.01(b_G + b_CE) + 2u) + 4u is unchanged: it suffices that the
+    error of δ̂ against the exact δ = G(j) − C(j) is at most
+    1.01(b_G + b_CE) + 2u ([adaptive_accepts_of_delta_error]); the errors are
+    [fast_delta_err] and [eq24_delta_err] (any model), at most 17u and 83u
+    for the ieee binary32 profile, 63u for (ii) when the two set-ups share
+    the computed p_a, p_b ([eq24_shared_delta_err])
+    ([adaptive_acceptance_covers_computed_delta]). *)
+
+From Coq Require Import Reals Lra Lia.
+From Flocq Require Import Core.
+From PhongApprox Require Import Span Euler Adaptive FloatModel Float FloatModelK Profiles.
+Open Scope R_scope.
+
+(** ** The acceptance set, from a bound on the error of δ̂ *)
+Lemma ad_far_below : forall x u E D Dh th2,
+  0 < x -> 0 <= u <= 1/1024 -> Rabs (Dh - D) <= E -> Rabs th2 <= 3 * u ->
+  x * Rabs D < 1 - (x * E + 4 * u) -> Rabs (x * Dh * (1 + th2)) < 1.
+Proof.
+  intros x u E D Dh th2 Hx Hu HD H2 Hlt.
+  assert (HDh : Rabs Dh <= Rabs D + E).
+  { replace Dh with (D + (Dh - D)) by ring. eapply Rle_trans; [apply Rabs_triang|]. lra. }
+  assert (Ha2 : Rabs (1 + th2) <= 1 + 3 * u).
+  { eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_R1. lra. }
+  rewrite !Rabs_mult, (Rabs_pos_eq x) by lra.
+  assert (Hs : x * Rabs Dh <= x * Rabs D + x * E) by (apply Rmult_le_compat_l with (r := x) in HDh; lra).
+  assert (Hk : 0 <= x * Rabs Dh) by (apply Rmult_le_pos; [lra | apply Rabs_pos]).
+  assert (Hp : 0 <= Rabs (1 + th2)) by apply Rabs_pos.
+  apply Rle_lt_trans with (x * Rabs Dh * (1 + 3 * u)).
+  { apply Rmult_le_compat_l; lra. }
+  apply Rlt_le_trans with ((1 - 4 * u) * (1 + 3 * u)).
+  { apply Rmult_lt_compat_r; lra. }
+  nra.
+Qed.
+
+Lemma ad_far_above : forall x u E D Dh th2,
+  0 < x -> 0 <= u <= 1/1024 -> Rabs (Dh - D) <= E -> Rabs th2 <= 3 * u ->
+  1 + (x * E + 4 * u) < x * Rabs D -> 1 <= Rabs (x * Dh * (1 + th2)).
+Proof.
+  intros x u E D Dh th2 Hx Hu HD H2 Hgt.
+  assert (HDh : Rabs D - E <= Rabs Dh).
+  { pose proof (Rabs_triang_inv D Dh) as T. rewrite Rabs_minus_sym in T. lra. }
+  assert (Ha2 : 1 - 3 * u <= Rabs (1 + th2)).
+  { pose proof (Rabs_triang_inv 1 (- th2)) as T.
+    replace (1 - - th2) with (1 + th2) in T by ring.
+    rewrite Rabs_R1, Rabs_Ropp in T. lra. }
+  rewrite !Rabs_mult, (Rabs_pos_eq x) by lra.
+  assert (Hm : x * Rabs D - x * E <= x * Rabs Dh) by (apply Rmult_le_compat_l with (r := x) in HDh; lra).
+  apply Rle_trans with ((1 + 4 * u) * (1 - 3 * u)); [nra|].
+  apply Rmult_le_compat; lra.
+Qed.
+
+Lemma adaptive_accepts_of_delta_error :
+  forall (x u bG bCE D Dh E th2 : R) (G C out : nat -> R) (n : nat),
+    0 < x -> 0 <= u <= 1/1024 ->
+    Rabs (Dh - D) <= E -> E <= 101 / 100 * (bG + bCE) + 2 * u -> Rabs th2 <= 3 * u ->
+    (Rabs (x * Dh * (1 + th2)) < 1 -> within_of bG out G n) ->
+    (1 <= Rabs (x * Dh * (1 + th2)) -> within_of bCE out C n) ->
+    adaptive_accepts x D bG bCE u G C out n.
+Proof.
+  intros x u bG bCE D Dh E th2 G C out n Hx Hu HD HE H2 Hgo Hce.
+  assert (HxE : x * E <= x * (101 / 100 * (bG + bCE) + 2 * u)) by (apply Rmult_le_compat_l; lra).
+  unfold adaptive_accepts, adaptive_band.
+  rewrite Rabs_mult, (Rabs_pos_eq x) by lra.
+  destruct (Rle_or_lt (Rabs (x * Rabs D - 1))
+                      (x * (101 / 100 * (bG + bCE) + 2 * u) + 4 * u)) as [Hnear|Hfar].
+  - left. split; [exact Hnear|].
+    destruct (Rlt_or_le (Rabs (x * Dh * (1 + th2))) 1) as [Ht|Ht];
+      [left; apply Hgo | right; apply Hce]; exact Ht.
+  - right. split; [exact Hfar|].
+    destruct (Rlt_or_le (x * Rabs D) 1) as [Hb|Ha].
+    + left. split; [exact Hb|]. apply Hgo.
+      rewrite Rabs_left in Hfar by lra.
+      apply (ad_far_below x u E D Dh th2); try assumption; lra.
+    + right. split; [exact Ha|]. apply Hce.
+      rewrite Rabs_pos_eq in Hfar by lra.
+      apply (ad_far_above x u E D Dh th2); try assumption; lra.
+Qed.
+
+(** ** Error of the fast kernel (i): a chain of three rounded products *)
+
+Lemma ad_step : forall v eta c y z Z e,
+  0 <= v -> 0 <= c -> ap1 v eta y (c * z) -> Rabs (z - Z) <= e ->
+  Rabs (y - c * Z) <= c * (1 + v) * e + v * (c * Rabs Z) + eta.
+Proof.
+  intros v eta c y z Z e Hv Hc H1 H2. unfold ap1 in H1.
+  assert (Hz : Rabs z <= Rabs Z + e).
+  { replace z with (Z + (z - Z)) by ring. eapply Rle_trans; [apply Rabs_triang|]. lra. }
+  rewrite Rabs_mult, (Rabs_pos_eq c) in H1 by lra.
+  replace (y - c * Z) with ((y - c * z) + c * (z - Z)) by ring.
+  eapply Rle_trans; [apply Rabs_triang|].
+  rewrite Rabs_mult, (Rabs_pos_eq c) by lra.
+  assert (c * Rabs (z - Z) <= c * e) by (apply Rmult_le_compat_l; lra).
+  assert (v * (c * Rabs z) <= v * (c * (Rabs Z + e))).
+  { apply Rmult_le_compat_l; [lra|]. apply Rmult_le_compat_l; lra. }
+  nra.
+Qed.
+
+Lemma ad_chain3 : forall v eta c1 c2 c3 Z y1 y2 y3,
+  0 <= v <= 1/1024 -> 0 <= eta -> 0 <= c1 -> 0 <= c2 -> 0 <= c3 ->
+  ap1 v eta y1 (c1 * Z) -> ap1 v eta y2 (c2 * y1) -> ap1 v eta y3 (c3 * y2) ->
+  Rabs (y3 - c3 * (c2 * (c1 * Z))) <=
+    3004 / 1000 * v * Rabs (c3 * (c2 * (c1 * Z))) + (1 + 2 * c3 + 2 * (c3 * c2)) * eta.
+Proof.
+  intros v eta c1 c2 c3 Z y1 y2 y3 Hv He H1 H2 H3 A1 A2 A3.
+  set (A := c1 * Rabs Z).
+  assert (HA : 0 <= A) by (unfold A; apply Rmult_le_pos; [lra | apply Rabs_pos]).
+  assert (E1 : Rabs (y1 - c1 * Z) <= v * A + eta).
+  { unfold ap1 in A1. rewrite Rabs_mult, (Rabs_pos_eq c1) in A1 by lra. exact A1. }
+  pose proof (ad_step v eta c2 y2 y1 (c1 * Z) _ ltac:(lra) H2 A2 E1) as E2.
+  rewrite Rabs_mult, (Rabs_pos_eq c1) in E2 by lra. fold A in E2.
+  pose proof (ad_step v eta c3 y3 y2 (c2 * (c1 * Z)) _ ltac:(lra) H3 A3 E2) as E3.
+  rewrite Rabs_mult, (Rabs_mult c1), (Rabs_pos_eq c1), (Rabs_pos_eq c2) in E3 by lra. fold A in E3.
+  rewrite !Rabs_mult, (Rabs_pos_eq c1), (Rabs_pos_eq c2), (Rabs_pos_eq c3) by lra. fold A.
+  eapply Rle_trans; [exact E3|].
+  assert (P : 0 <= c3 * c2 * A) by (apply Rmult_le_pos; [apply Rmult_le_pos|]; lra).
+  assert (Q : 0 <= c3 * c2 * eta) by (apply Rmult_le_pos; [apply Rmult_le_pos|]; lra).
+  assert (Q2 : 0 <= c3 * eta) by (apply Rmult_le_pos; lra).
+  replace (c3 * (1 + v) * (c2 * (1 + v) * (v * A + eta) + v * (c2 * A) + eta) + v * (c3 * (c2 * A)) + eta)
+    with ((3 * v + 3 * v * v + v * v * v) * (c3 * c2 * A)
+          + ((1 + v) * (1 + v) * (c3 * c2 * eta) + (1 + v) * (c3 * eta) + eta)) by ring.
+  assert (V0 : v * v <= v * (1 / 1024)) by (apply Rmult_le_compat_l; lra).
+  assert (V0' : v * v * v <= v * v * 1) by (apply Rmult_le_compat_l; nra).
+  assert (V1 : 3 * v + 3 * v * v + v * v * v <= 3004 / 1000 * v) by lra.
+  assert (V2 : (1 + v) * (1 + v) <= 2)
+    by (replace ((1 + v) * (1 + v)) with (1 + 2 * v + v * v) by ring; lra).
+  assert (T1 : (3 * v + 3 * v * v + v * v * v) * (c3 * c2 * A) <= 3004 / 1000 * v * (c3 * (c2 * A))).
+  { replace (c3 * (c2 * A)) with (c3 * c2 * A) by ring. apply Rmult_le_compat_r. exact P. exact V1. }
+  assert (T2 : (1 + v) * (1 + v) * (c3 * c2 * eta) <= 2 * (c3 * c2 * eta)) by (apply Rmult_le_compat_r; lra).
+  assert (T3 : (1 + v) * (c3 * eta) <= 2 * (c3 * eta)) by (apply Rmult_le_compat_r; lra).
+  lra.
+Qed.
+
+(** the kernel's delta = ds/2 * j * lo with j + lo = n, c1 c2 c3 = j lo / 2 *)
+Lemma ad_fast_err : forall v eta nr j lo dsx dsh Eds c1 c2 c3 y1 y2 dh,
+  0 <= v <= 1/1024 -> 0 <= eta -> 1 <= nr -> 0 <= j -> 0 <= lo -> j + lo = nr ->
+  0 <= c1 -> 0 <= c2 -> 0 <= c3 -> c3 <= 16777216 -> c3 * c2 <= 281474976710656 ->
+  c1 * c2 * c3 = j * lo / 2 ->
+  Rabs (nr * nr * dsh - nr * nr * dsx) <= Eds -> Rabs (nr * nr * dsx) <= 2 ->
+  ap1 v eta y1 (c1 * dsh) -> ap1 v eta y2 (c2 * y1) -> ap1 v eta dh (c3 * y2) ->
+  Rabs (dh - dsx / 2 * j * lo) <= Eds / 8 + 3004 / 1000 * v * (1 / 4 + Eds / 8)
+                                   + 562949986975745 * eta.
+Proof.
+  intros v eta nr j lo dsx dsh Eds c1 c2 c3 y1 y2 dh Hv He Hn Hj Hlo Hs H1 H2 H3 H3b H23 Hc
+         Hds Hdx A1 A2 A3.
+  pose proof (ad_chain3 v eta c1 c2 c3 dsh y1 y2 dh Hv He H1 H2 H3 A1 A2 A3) as C.
+  set (kk := j * lo / (2 * (nr * nr))).
+  assert (Hk : 0 <= kk <= 1 / 8).
+  { unfold kk. split.
+    - unfold Rdiv. apply Rmult_le_pos; [apply Rmult_le_pos; lra | apply Rlt_le, Rinv_0_lt_compat; nra].
+    - assert (Hjl : j * lo <= nr * nr / 4) by (rewrite <- Hs; pose proof (Rle_0_sqr (j - lo)) as Sq; unfold Rsqr in Sq; lra).
+      apply (Rmult_le_reg_r (2 * (nr * nr))); [nra|].
+      replace (j * lo / (2 * (nr * nr)) * (2 * (nr * nr))) with (j * lo) by (field; nra).
+      lra. }
+  assert (HX : c3 * (c2 * (c1 * dsh)) = kk * (nr * nr * dsh)).
+  { unfold kk. replace (c3 * (c2 * (c1 * dsh))) with (c1 * c2 * c3 * dsh) by ring.
+    rewrite Hc. field. nra. }
+  assert (HD : dsx / 2 * j * lo = kk * (nr * nr * dsx)) by (unfold kk; field; nra).
+  rewrite HX in C. rewrite HD.
+  assert (Hds0 : 0 <= Eds) by (pose proof (Rabs_pos (nr * nr * dsh - nr * nr * dsx)); lra).
+  assert (B1 : Rabs (kk * (nr * nr * dsh)) <= 1 / 4 + Eds / 8).
+  { rewrite Rabs_mult, (Rabs_pos_eq kk) by lra.
+    assert (Rabs (nr * nr * dsh) <= 2 + Eds).
+    { replace (nr * nr * dsh) with (nr * nr * dsx + (nr * nr * dsh - nr * nr * dsx)) by ring.
+      eapply Rle_trans; [apply Rabs_triang|]. lra. }
+    assert (kk * Rabs (nr * nr * dsh) <= kk * (2 + Eds)) by (apply Rmult_le_compat_l; lra).
+    nra. }
+  assert (B2 : Rabs (kk * (nr * nr * dsh) - kk * (nr * nr * dsx)) <= Eds / 8).
+  { rewrite <- Rmult_minus_distr_l, Rabs_mult, (Rabs_pos_eq kk) by lra.
+    assert (kk * Rabs (nr * nr * dsh - nr * nr * dsx) <= kk * Eds) by (apply Rmult_le_compat_l; lra).
+    nra. }
+  assert (B3 : (1 + 2 * c3 + 2 * (c3 * c2)) * eta <= 562949986975745 * eta)
+    by (apply Rmult_le_compat_r; lra).
+  assert (B4 : 3004 / 1000 * v * Rabs (kk * (nr * nr * dsh)) <= 3004 / 1000 * v * (1 / 4 + Eds / 8))
+    by (apply Rmult_le_compat_l; lra).
+  replace (dh - kk * (nr * nr * dsx))
+    with ((dh - kk * (nr * nr * dsh)) + (kk * (nr * nr * dsh) - kk * (nr * nr * dsx))) by ring.
+  eapply Rle_trans; [apply Rabs_triang|]. lra.
+Qed.
+
+(** ** Error of eq. 24 as written (ii) *)
+
+Lemma ad_ap1_abs : forall v eta y x M, 0 <= v -> ap1 v eta y x -> Rabs x <= M ->
+  Rabs (y - x) <= v * M + eta.
+Proof.
+  intros v eta y x M Hv H HM. unfold ap1 in H.
+  assert (v * Rabs x <= v * M) by (apply Rmult_le_compat_l; lra). lra.
+Qed.
+
+Lemma ad_near : forall X Y e, Rabs (Y - X) <= e -> Rabs Y <= Rabs X + e.
+Proof.
+  intros X Y e H. replace Y with (X + (Y - X)) by ring.
+  eapply Rle_trans; [apply Rabs_triang|]. lra.
+Qed.
+
+Lemma ad_tri5 : forall a b c d e,
+  Rabs (a + b + c + d + e) <= Rabs a + Rabs b + Rabs c + Rabs d + Rabs e.
+Proof.
+  intros. pose proof (Rabs_triang (a + b + c + d) e). pose proof (Rabs_triang (a + b + c) d).
+  pose proof (Rabs_triang (a + b) c). pose proof (Rabs_triang a b). lra.
+Qed.
+
+Lemma ad_tri6 : forall a b c d e f,
+  Rabs (a + b + c + d + e + f) <= Rabs a + Rabs b + Rabs c + Rabs d + Rabs e + Rabs f.
+Proof.
+  intros. pose proof (Rabs_triang (a + b + c + d + e) f). pose proof (ad_tri5 a b c d e). lra.
+Qed.
+
+Lemma ad_eq24_err :
+  forall v eta nr j lo pa pb dsx pag pbg dph pac pbc t0h dsh a b c e dh
+         Epg Edp Epc ER Eds,
+  0 <= v -> 0 <= eta -> 1 <= nr -> 1 <= j -> 0 <= lo -> j + lo = nr ->
+  Rabs pa <= 1 -> Rabs pb <= 1 -> Rabs (nr * nr * dsx) <= 2 ->
+  Rabs (pag - pa) <= Epg -> Rabs (pbg - pb) <= Epg ->
+  Rabs (nr * dph - (pbg - pag)) <= Edp ->
+  Rabs (pac - pa) <= Epc -> Rabs (pbc - pb) <= Epc ->
+  Rabs (nr * t0h - (pbc - pac - nr * (nr - 1) / 2 * dsh)) <= ER ->
+  Rabs (nr * nr * dsh - nr * nr * dsx) <= Eds ->
+  ap1 v eta a (j * dph) -> ap1 v eta b (j * t0h) -> ap1 v eta c ((j * j - j) / 2 * dsh) ->
+  ap1 v eta e (b + c) -> ap1 v eta dh (a - e) ->
+  let EG := Edp + 2 * Epg in
+  let EC := ER + 2 * Epc + Eds / 8 in
+  let MA := 2 + EG in
+  let MB := 3 + 2 * Epc + Eds / 2 + ER in
+  let MC := 1 + Eds / 2 in
+  let E4 := EG + EC + (v * MA + eta) + (v * MB + eta) + (v * MC + eta)
+            + (v * (MB + MC + (v * MB + eta) + (v * MC + eta)) + eta) in
+  Rabs (dh - dsx / 2 * j * lo) <= E4 + v * (1 / 4 + E4) + eta.
+Proof.
+  intros v eta nr j lo pa pb dsx pag pbg dph pac pbc t0h dsh a b c e dh Epg Edp Epc ER Eds
+    Hv He Hn Hj Hlo Hs Hpa Hpb Hdx Hpag Hpbg Hdp Hpac Hpbc HR Hds Aa Ab Ac Ae Adh.
+  intros EG EC MA MB MC E4.
+  set (th := j / nr).
+  assert (Hth : 0 <= th <= 1).
+  { unfold th. split.
+    - unfold Rdiv. apply Rmult_le_pos; [lra | apply Rlt_le, Rinv_0_lt_compat; lra].
+    - apply (Rmult_le_reg_r nr); [lra|].
+      replace (j / nr * nr) with j by (field; lra). lra. }
+  set (kk := j * lo / (2 * (nr * nr))).
+  assert (Hk : 0 <= kk <= 1 / 8).
+  { unfold kk. split.
+    - unfold Rdiv. apply Rmult_le_pos; [apply Rmult_le_pos; lra | apply Rlt_le, Rinv_0_lt_compat; nra].
+    - assert (Hjl : j * lo <= nr * nr / 4)
+        by (rewrite <- Hs; pose proof (Rle_0_sqr (j - lo)) as Sq; unfold Rsqr in Sq; lra).
+      apply (Rmult_le_reg_r (2 * (nr * nr))); [nra|].
+      replace (j * lo / (2 * (nr * nr)) * (2 * (nr * nr))) with (j * lo) by (field; nra).
+      lra. }
+  set (kc := (j * j - j) / (2 * (nr * nr))).
+  assert (Hkc : 0 <= kc <= 1 / 2).
+  { unfold kc. split.
+    - unfold Rdiv. apply Rmult_le_pos; [nra | apply Rlt_le, Rinv_0_lt_compat; nra].
+    - apply (Rmult_le_reg_r (2 * (nr * nr))); [nra|].
+      replace ((j * j - j) / (2 * (nr * nr)) * (2 * (nr * nr))) with (j * j - j) by (field; nra).
+      assert (j * j <= nr * nr) by nra. lra. }
+  assert (Hds0 : 0 <= Eds) by (pose proof (Rabs_pos (nr * nr * dsh - nr * nr * dsx)); lra).
+  assert (HER0 : 0 <= ER) by (pose proof (Rabs_pos (nr * t0h - (pbc - pac - nr * (nr - 1) / 2 * dsh))); lra).
+  assert (HEpc0 : 0 <= Epc) by (pose proof (Rabs_pos (pac - pa)); lra).
+  assert (HEpg0 : 0 <= Epg) by (pose proof (Rabs_pos (pag - pa)); lra).
+  assert (HEdp0 : 0 <= Edp) by (pose proof (Rabs_pos (nr * dph - (pbg - pag))); lra).
+  (* Gouraud part: j dph vs th (pb - pa) *)
+  assert (GA : Rabs (j * dph - th * (pb - pa)) <= EG).
+  { replace (j * dph - th * (pb - pa))
+      with (th * (nr * dph - (pbg - pag)) + th * (pbg - pb) + - (th * (pag - pa)))
+      by (unfold th; field; lra).
+    eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_Ropp.
+    eapply Rle_trans; [apply Rplus_le_compat_r, Rabs_triang|].
+    rewrite !Rabs_mult, (Rabs_pos_eq th) by lra.
+    assert (th * Rabs (nr * dph - (pbg - pag)) <= 1 * Edp) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
+    assert (th * Rabs (pbg - pb) <= 1 * Epg) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
+    assert (th * Rabs (pag - pa) <= 1 * Epg) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
+    unfold EG. lra. }
+  assert (Hpd : Rabs (th * (pb - pa)) <= 2).
+  { rewrite Rabs_mult, (Rabs_pos_eq th) by lra.
+    assert (Rabs (pb - pa) <= 2) by (unfold Rminus; eapply Rle_trans; [apply Rabs_triang|]; rewrite Rabs_Ropp; lra).
+    assert (th * Rabs (pb - pa) <= 1 * 2) by (apply Rmult_le_compat; try lra; apply Rabs_pos). lra. }
+  assert (MAb : Rabs (j * dph) <= MA) by (pose proof (ad_near _ _ _ GA); unfold MA; lra).
+  (* corrected Euler part *)
+  set (Rr := nr * t0h - (pbc - pac - nr * (nr - 1) / 2 * dsh)) in HR.
+  assert (CA : Rabs (j * t0h + (j * j - j) / 2 * dsh - (th * (pb - pa) - dsx / 2 * j * lo)) <= EC).
+  { replace (j * t0h + (j * j - j) / 2 * dsh - (th * (pb - pa) - dsx / 2 * j * lo))
+      with (th * Rr + th * (pbc - pb) + - (th * (pac - pa)) + - (kk * (nr * nr * dsh - nr * nr * dsx)))
+      by (unfold th, Rr, kk; rewrite <- Hs; field; lra).
+    eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_Ropp.
+    eapply Rle_trans; [apply Rplus_le_compat_r, Rabs_triang|]. rewrite Rabs_Ropp.
+    eapply Rle_trans; [apply Rplus_le_compat_r, Rplus_le_compat_r, Rabs_triang|].
+    rewrite !Rabs_mult, (Rabs_pos_eq th), (Rabs_pos_eq kk) by lra.
+    assert (th * Rabs Rr <= 1 * ER) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
+    assert (th * Rabs (pbc - pb) <= 1 * Epc) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
+    assert (th * Rabs (pac - pa) <= 1 * Epc) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
+    assert (kk * Rabs (nr * nr * dsh - nr * nr * dsx) <= 1 / 8 * Eds)
+      by (apply Rmult_le_compat; try lra; apply Rabs_pos).
+    unfold EC. lra. }
+  assert (Hdsh : Rabs (nr * nr * dsh) <= 2 + Eds) by (pose proof (ad_near _ _ _ Hds); lra).
+  assert (MBb : Rabs (j * t0h) <= MB).
+  { assert (E1 : j * t0h = th * (nr * t0h)) by (unfold th; field; lra).
+    assert (E2 : nr * (nr - 1) / 2 * dsh = (nr - 1) / (2 * nr) * (nr * nr * dsh)) by (field; lra).
+    assert (H3 : 0 <= (nr - 1) / (2 * nr) <= 1 / 2).
+    { split.
+      - unfold Rdiv. apply Rmult_le_pos; [lra | apply Rlt_le, Rinv_0_lt_compat; lra].
+      - apply (Rmult_le_reg_r (2 * nr)); [lra|].
+        replace ((nr - 1) / (2 * nr) * (2 * nr)) with (nr - 1) by (field; lra). lra. }
+    assert (H4 : Rabs (nr * (nr - 1) / 2 * dsh) <= 1 + Eds / 2).
+    { rewrite E2, Rabs_mult, (Rabs_pos_eq ((nr - 1) / (2 * nr))) by lra.
+      assert ((nr - 1) / (2 * nr) * Rabs (nr * nr * dsh) <= 1 / 2 * (2 + Eds))
+        by (apply Rmult_le_compat; try lra; apply Rabs_pos). lra. }
+    assert (H5 : Rabs (nr * t0h) <= MB).
+    { replace (nr * t0h) with (Rr + (pbc - pb) + - (pac - pa) + (pb - pa) - nr * (nr - 1) / 2 * dsh)
+        by (unfold Rr; ring).
+      replace (Rr + (pbc - pb) + - (pac - pa) + (pb - pa) - nr * (nr - 1) / 2 * dsh)
+        with (Rr + (pbc - pb) + - (pac - pa) + (pb - pa) + - (nr * (nr - 1) / 2 * dsh)) by ring.
+      eapply Rle_trans; [apply ad_tri5|]. rewrite !Rabs_Ropp.
+      assert (Rabs (pb - pa) <= 2) by (unfold Rminus; eapply Rle_trans; [apply Rabs_triang|]; rewrite Rabs_Ropp; lra).
+      unfold MB. lra. }
+    rewrite E1, Rabs_mult, (Rabs_pos_eq th) by lra.
+    assert (th * Rabs (nr * t0h) <= 1 * MB) by (apply Rmult_le_compat; try lra; apply Rabs_pos). lra. }
+  assert (MCb : Rabs ((j * j - j) / 2 * dsh) <= MC).
+  { replace ((j * j - j) / 2 * dsh) with (kc * (nr * nr * dsh)) by (unfold kc; field; lra).
+    rewrite Rabs_mult, (Rabs_pos_eq kc) by lra.
+    assert (kc * Rabs (nr * nr * dsh) <= 1 / 2 * (2 + Eds)) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
+    unfold MC. lra. }
+  pose proof (ad_ap1_abs _ _ _ _ _ Hv Aa MAb) as Ra.
+  pose proof (ad_ap1_abs _ _ _ _ _ Hv Ab MBb) as Rb.
+  pose proof (ad_ap1_abs _ _ _ _ _ Hv Ac MCb) as Rc.
+  assert (Sbc : Rabs (b + c) <= MB + MC + (v * MB + eta) + (v * MC + eta)).
+  { pose proof (ad_near _ _ _ Rb). pose proof (ad_near _ _ _ Rc).
+    eapply Rle_trans; [apply Rabs_triang|]. lra. }
+  pose proof (ad_ap1_abs _ _ _ _ _ Hv Ae Sbc) as Re.
+  assert (F4 : Rabs ((a - e) - dsx / 2 * j * lo) <= E4).
+  { replace ((a - e) - dsx / 2 * j * lo)
+      with ((a - j * dph) + (j * dph - th * (pb - pa))
+            + - (e - (b + c)) + - (b - j * t0h) + - (c - (j * j - j) / 2 * dsh)
+            + - (j * t0h + (j * j - j) / 2 * dsh - (th * (pb - pa) - dsx / 2 * j * lo))) by ring.
+    eapply Rle_trans; [apply ad_tri6|]. rewrite !Rabs_Ropp.
+    unfold E4. lra. }
+  pose proof (ad_near _ _ _ F4) as Hae.
+  assert (Hdl : Rabs (dsx / 2 * j * lo) <= 1 / 4).
+  { replace (dsx / 2 * j * lo) with (kk * (nr * nr * dsx)) by (unfold kk; field; lra).
+    rewrite Rabs_mult, (Rabs_pos_eq kk) by lra.
+    assert (kk * Rabs (nr * nr * dsx) <= 1 / 8 * 2) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
+    lra. }
+  assert (Hae' : Rabs (a - e) <= 1 / 4 + E4) by lra.
+  pose proof (ad_ap1_abs _ _ _ _ _ Hv Adh Hae') as Rdh.
+  replace (dh - dsx / 2 * j * lo) with ((dh - (a - e)) + ((a - e) - dsx / 2 * j * lo)) by ring.
+  eapply Rle_trans; [apply Rabs_triang|]. lra.
+Qed.
+
+(** The same when Gouraud's and corrected Euler's set-ups share p_a, p_b:
+    their errors cancel in δ̂. *)
+Lemma ad_eq24_err_shared :
+  forall v eta nr j lo pa pb dsx pag pbg dph pac pbc t0h dsh a b c e dh
+         Epg Edp Epc ER Eds,
+  0 <= v -> 0 <= eta -> 1 <= nr -> 1 <= j -> 0 <= lo -> j + lo = nr ->
+  Rabs pa <= 1 -> Rabs pb <= 1 -> Rabs (nr * nr * dsx) <= 2 ->
+  Rabs (pag - pa) <= Epg -> Rabs (pbg - pb) <= Epg ->
+  Rabs (nr * dph - (pbg - pag)) <= Edp ->
+  Rabs (pac - pa) <= Epc -> Rabs (pbc - pb) <= Epc ->
+  Rabs (nr * t0h - (pbc - pac - nr * (nr - 1) / 2 * dsh)) <= ER ->
+  Rabs (nr * nr * dsh - nr * nr * dsx) <= Eds ->
+  ap1 v eta a (j * dph) -> ap1 v eta b (j * t0h) -> ap1 v eta c ((j * j - j) / 2 * dsh) ->
+  ap1 v eta e (b + c) -> ap1 v eta dh (a - e) ->
+  pag = pac -> pbg = pbc ->
+  let EG := Edp + 2 * Epg in
+  let EC := ER + 2 * Epc + Eds / 8 in
+  let EGC := Edp + ER + Eds / 8 in
+  let MA := 2 + EG in
+  let MB := 3 + 2 * Epc + Eds / 2 + ER in
+  let MC := 1 + Eds / 2 in
+  let E4 := EGC + (v * MA + eta) + (v * MB + eta) + (v * MC + eta)
+            + (v * (MB + MC + (v * MB + eta) + (v * MC + eta)) + eta) in
+  Rabs (dh - dsx / 2 * j * lo) <= E4 + v * (1 / 4 + E4) + eta.
+Proof.
+  intros v eta nr j lo pa pb dsx pag pbg dph pac pbc t0h dsh a b c e dh Epg Edp Epc ER Eds
+    Hv He Hn Hj Hlo Hs Hpa Hpb Hdx Hpag Hpbg Hdp Hpac Hpbc HR Hds Aa Ab Ac Ae Adh Sa Sb.
+  intros EG EC EGC MA MB MC E4.
+  set (th := j / nr).
+  assert (Hth : 0 <= th <= 1).
+  { unfold th. split.
+    - unfold Rdiv. apply Rmult_le_pos; [lra | apply Rlt_le, Rinv_0_lt_compat; lra].
+    - apply (Rmult_le_reg_r nr); [lra|].
+      replace (j / nr * nr) with j by (field; lra). lra. }
+  set (kk := j * lo / (2 * (nr * nr))).
+  assert (Hk : 0 <= kk <= 1 / 8).
+  { unfold kk. split.
+    - unfold Rdiv. apply Rmult_le_pos; [apply Rmult_le_pos; lra | apply Rlt_le, Rinv_0_lt_compat; nra].
+    - assert (Hjl : j * lo <= nr * nr / 4)
+        by (rewrite <- Hs; pose proof (Rle_0_sqr (j - lo)) as Sq; unfold Rsqr in Sq; lra).
+      apply (Rmult_le_reg_r (2 * (nr * nr))); [nra|].
+      replace (j * lo / (2 * (nr * nr)) * (2 * (nr * nr))) with (j * lo) by (field; nra).
+      lra. }
+  set (kc := (j * j - j) / (2 * (nr * nr))).
+  assert (Hkc : 0 <= kc <= 1 / 2).
+  { unfold kc. split.
+    - unfold Rdiv. apply Rmult_le_pos; [nra | apply Rlt_le, Rinv_0_lt_compat; nra].
+    - apply (Rmult_le_reg_r (2 * (nr * nr))); [nra|].
+      replace ((j * j - j) / (2 * (nr * nr)) * (2 * (nr * nr))) with (j * j - j) by (field; nra).
+      assert (j * j <= nr * nr) by nra. lra. }
+  assert (Hds0 : 0 <= Eds) by (pose proof (Rabs_pos (nr * nr * dsh - nr * nr * dsx)); lra).
+  assert (HER0 : 0 <= ER) by (pose proof (Rabs_pos (nr * t0h - (pbc - pac - nr * (nr - 1) / 2 * dsh))); lra).
+  assert (HEpc0 : 0 <= Epc) by (pose proof (Rabs_pos (pac - pa)); lra).
+  assert (HEpg0 : 0 <= Epg) by (pose proof (Rabs_pos (pag - pa)); lra).
+  assert (HEdp0 : 0 <= Edp) by (pose proof (Rabs_pos (nr * dph - (pbg - pag))); lra).
+  (* Gouraud part: j dph vs th (pb - pa) *)
+  assert (GA : Rabs (j * dph - th * (pb - pa)) <= EG).
+  { replace (j * dph - th * (pb - pa))
+      with (th * (nr * dph - (pbg - pag)) + th * (pbg - pb) + - (th * (pag - pa)))
+      by (unfold th; field; lra).
+    eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_Ropp.
+    eapply Rle_trans; [apply Rplus_le_compat_r, Rabs_triang|].
+    rewrite !Rabs_mult, (Rabs_pos_eq th) by lra.
+    assert (th * Rabs (nr * dph - (pbg - pag)) <= 1 * Edp) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
+    assert (th * Rabs (pbg - pb) <= 1 * Epg) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
+    assert (th * Rabs (pag - pa) <= 1 * Epg) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
+    unfold EG. lra. }
+  assert (Hpd : Rabs (th * (pb - pa)) <= 2).
+  { rewrite Rabs_mult, (Rabs_pos_eq th) by lra.
+    assert (Rabs (pb - pa) <= 2) by (unfold Rminus; eapply Rle_trans; [apply Rabs_triang|]; rewrite Rabs_Ropp; lra).
+    assert (th * Rabs (pb - pa) <= 1 * 2) by (apply Rmult_le_compat; try lra; apply Rabs_pos). lra. }
+  assert (MAb : Rabs (j * dph) <= MA) by (pose proof (ad_near _ _ _ GA); unfold MA; lra).
+  (* corrected Euler part *)
+  set (Rr := nr * t0h - (pbc - pac - nr * (nr - 1) / 2 * dsh)) in HR.
+  assert (CA : Rabs (j * t0h + (j * j - j) / 2 * dsh - (th * (pb - pa) - dsx / 2 * j * lo)) <= EC).
+  { replace (j * t0h + (j * j - j) / 2 * dsh - (th * (pb - pa) - dsx / 2 * j * lo))
+      with (th * Rr + th * (pbc - pb) + - (th * (pac - pa)) + - (kk * (nr * nr * dsh - nr * nr * dsx)))
+      by (unfold th, Rr, kk; rewrite <- Hs; field; lra).
+    eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_Ropp.
+    eapply Rle_trans; [apply Rplus_le_compat_r, Rabs_triang|]. rewrite Rabs_Ropp.
+    eapply Rle_trans; [apply Rplus_le_compat_r, Rplus_le_compat_r, Rabs_triang|].
+    rewrite !Rabs_mult, (Rabs_pos_eq th), (Rabs_pos_eq kk) by lra.
+    assert (th * Rabs Rr <= 1 * ER) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
+    assert (th * Rabs (pbc - pb) <= 1 * Epc) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
+    assert (th * Rabs (pac - pa) <= 1 * Epc) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
+    assert (kk * Rabs (nr * nr * dsh - nr * nr * dsx) <= 1 / 8 * Eds)
+      by (apply Rmult_le_compat; try lra; apply Rabs_pos).
+    unfold EC. lra. }
+  assert (Hdsh : Rabs (nr * nr * dsh) <= 2 + Eds) by (pose proof (ad_near _ _ _ Hds); lra).
+  assert (MBb : Rabs (j * t0h) <= MB).
+  { assert (E1 : j * t0h = th * (nr * t0h)) by (unfold th; field; lra).
+    assert (E2 : nr * (nr - 1) / 2 * dsh = (nr - 1) / (2 * nr) * (nr * nr * dsh)) by (field; lra).
+    assert (H3 : 0 <= (nr - 1) / (2 * nr) <= 1 / 2).
+    { split.
+      - unfold Rdiv. apply Rmult_le_pos; [lra | apply Rlt_le, Rinv_0_lt_compat; lra].
+      - apply (Rmult_le_reg_r (2 * nr)); [lra|].
+        replace ((nr - 1) / (2 * nr) * (2 * nr)) with (nr - 1) by (field; lra). lra. }
+    assert (H4 : Rabs (nr * (nr - 1) / 2 * dsh) <= 1 + Eds / 2).
+    { rewrite E2, Rabs_mult, (Rabs_pos_eq ((nr - 1) / (2 * nr))) by lra.
+      assert ((nr - 1) / (2 * nr) * Rabs (nr * nr * dsh) <= 1 / 2 * (2 + Eds))
+        by (apply Rmult_le_compat; try lra; apply Rabs_pos). lra. }
+    assert (H5 : Rabs (nr * t0h) <= MB).
+    { replace (nr * t0h) with (Rr + (pbc - pb) + - (pac - pa) + (pb - pa) - nr * (nr - 1) / 2 * dsh)
+        by (unfold Rr; ring).
+      replace (Rr + (pbc - pb) + - (pac - pa) + (pb - pa) - nr * (nr - 1) / 2 * dsh)
+        with (Rr + (pbc - pb) + - (pac - pa) + (pb - pa) + - (nr * (nr - 1) / 2 * dsh)) by ring.
+      eapply Rle_trans; [apply ad_tri5|]. rewrite !Rabs_Ropp.
+      assert (Rabs (pb - pa) <= 2) by (unfold Rminus; eapply Rle_trans; [apply Rabs_triang|]; rewrite Rabs_Ropp; lra).
+      unfold MB. lra. }
+    rewrite E1, Rabs_mult, (Rabs_pos_eq th) by lra.
+    assert (th * Rabs (nr * t0h) <= 1 * MB) by (apply Rmult_le_compat; try lra; apply Rabs_pos). lra. }
+  assert (MCb : Rabs ((j * j - j) / 2 * dsh) <= MC).
+  { replace ((j * j - j) / 2 * dsh) with (kc * (nr * nr * dsh)) by (unfold kc; field; lra).
+    rewrite Rabs_mult, (Rabs_pos_eq kc) by lra.
+    assert (kc * Rabs (nr * nr * dsh) <= 1 / 2 * (2 + Eds)) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
+    unfold MC. lra. }
+  pose proof (ad_ap1_abs _ _ _ _ _ Hv Aa MAb) as Ra.
+  pose proof (ad_ap1_abs _ _ _ _ _ Hv Ab MBb) as Rb.
+  pose proof (ad_ap1_abs _ _ _ _ _ Hv Ac MCb) as Rc.
+  assert (Sbc : Rabs (b + c) <= MB + MC + (v * MB + eta) + (v * MC + eta)).
+  { pose proof (ad_near _ _ _ Rb). pose proof (ad_near _ _ _ Rc).
+    eapply Rle_trans; [apply Rabs_triang|]. lra. }
+  pose proof (ad_ap1_abs _ _ _ _ _ Hv Ae Sbc) as Re.
+  assert (GC : Rabs (j * dph - (j * t0h + (j * j - j) / 2 * dsh) - dsx / 2 * j * lo) <= EGC).
+  { replace (j * dph - (j * t0h + (j * j - j) / 2 * dsh) - dsx / 2 * j * lo)
+      with (th * (nr * dph - (pbg - pag)) + - (th * Rr) + kk * (nr * nr * dsh - nr * nr * dsx))
+      by (unfold th, Rr, kk; rewrite Sa, Sb; rewrite <- Hs; field; lra).
+    eapply Rle_trans; [apply Rabs_triang|].
+    eapply Rle_trans; [apply Rplus_le_compat_r, Rabs_triang|]. rewrite Rabs_Ropp.
+    rewrite !Rabs_mult, (Rabs_pos_eq th), (Rabs_pos_eq kk) by lra.
+    assert (th * Rabs (nr * dph - (pbg - pag)) <= 1 * Edp) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
+    assert (th * Rabs Rr <= 1 * ER) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
+    assert (kk * Rabs (nr * nr * dsh - nr * nr * dsx) <= 1 / 8 * Eds)
+      by (apply Rmult_le_compat; try lra; apply Rabs_pos).
+    unfold EGC. lra. }
+  assert (F4 : Rabs ((a - e) - dsx / 2 * j * lo) <= E4).
+  { replace ((a - e) - dsx / 2 * j * lo)
+      with ((a - j * dph) + (j * dph - (j * t0h + (j * j - j) / 2 * dsh) - dsx / 2 * j * lo)
+            + - (e - (b + c)) + - (b - j * t0h) + - (c - (j * j - j) / 2 * dsh)) by ring.
+    eapply Rle_trans; [apply ad_tri5|]. rewrite !Rabs_Ropp.
+    unfold E4. lra. }
+  pose proof (ad_near _ _ _ F4) as Hae.
+  assert (Hdl : Rabs (dsx / 2 * j * lo) <= 1 / 4).
+  { replace (dsx / 2 * j * lo) with (kk * (nr * nr * dsx)) by (unfold kk; field; lra).
+    rewrite Rabs_mult, (Rabs_pos_eq kk) by lra.
+    assert (kk * Rabs (nr * nr * dsx) <= 1 / 8 * 2) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
+    lra. }
+  assert (Hae' : Rabs (a - e) <= 1 / 4 + E4) by lra.
+  pose proof (ad_ap1_abs _ _ _ _ _ Hv Adh Hae') as Rdh.
+  replace (dh - dsx / 2 * j * lo) with ((dh - (a - e)) + ((a - e) - dsx / 2 * j * lo)) by ring.
+  eapply Rle_trans; [apply Rabs_triang|]. lra.
+Qed.
+
+(** ** The set-up facts used (Profiles.v, sections Gouraud and CE) *)
+
+Lemma ad_ce_facts : forall (M : fmodel) (K K1 : R), model_ok M K ->
+  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 -> 1 <= k_div M ->
+  forall (s : span) (F : fsetup),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  (1 <= n s)%nat -> INR (n s) <= 16777216 ->
+  ce_setup_ok M s F ->
+  let v := K1 * m_u M in let d := k_div M * m_u M in
+  Rabs (fs_pa F - pa s) <= 5002 / 1000 * v + 1 / 1000 * d
+  /\ Rabs (fs_pb F - pb s) <= 5002 / 1000 * v + 1 / 1000 * d
+  /\ Rabs (INR (n s) * fs_t0 F - (fs_pb F - fs_pa F - INR (n s) * (INR (n s) - 1) / 2 * fs_ds F))
+     <= 2004 / 100 * v + 501 / 100 * d
+  /\ Rabs (INR (n s) * INR (n s) * fs_ds F - e_n2ds s) <= 9211 / 100 * v + 1806 / 100 * d.
+Proof.
+  intros M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1 s F Ha Hb Hl Hn1 Hn2 HF v0 d0.
+  pose proof HM as (Hu & He0 & He2 & Ki & Ka & Km & Kd & HK0 & HK2).
+  set (u := m_u M) in *.
+  assert (HKu : K1 * u <= K * u) by (apply Rmult_le_compat_r; lra).
+  assert (HDu : k_div M * u <= K * u) by (apply Rmult_le_compat_r; lra).
+  assert (Hv : small_ok (K1 * u) (m_eta M)).
+  { repeat split; try lra.
+    - apply Rmult_lt_0_compat; lra.
+    - assert (u <= K1 * u) by (rewrite <- (Rmult_1_l u) at 1; apply Rmult_le_compat_r; lra).
+      lra. }
+  assert (Hdv : small_ok (k_div M * u) (m_eta M)).
+  { repeat split; try lra.
+    - apply Rmult_lt_0_compat; lra.
+    - assert (u <= k_div M * u) by (rewrite <- (Rmult_1_l u) at 1; apply Rmult_le_compat_r; lra).
+      lra. }
+  set (v := K1 * u) in *.
+  assert (Wa : k_add M * u <= v) by (unfold v; apply Rmult_le_compat_r; lra).
+  assert (Wm : k_mul M * u <= v) by (unfold v; apply Rmult_le_compat_r; lra).
+  assert (AK : forall k y x, k <= K1 -> approx k u (m_eta M) y x -> ap1 v (m_eta M) y x).
+  { intros k y x Hk H. eapply ap1_mono; [|exact H]. unfold v.
+    apply Rmult_le_compat_r; lra. }
+  assert (FK : forall a b y, fdot_ok M a b y -> fdot_rel v v (m_eta M) a b y)
+    by (intros a b y H; eapply fdot_mono; [exact Wm | exact Wa | exact H]).
+  assert (VK : forall vh w0, vap M vh w0 -> vap1 v (m_eta M) vh w0).
+  { intros vh w0 (A1 & A2 & A3). repeat split; (eapply AK; [| eassumption]); lra. }
+  destruct HF as ((Ina & Inb & Inl) & (tx & Htx & Hkx) & (ty & Hty & Hky) & (tz & Htz & Hkz)
+    & Ha' & Hpa & Hc & (e & He & Hd) & Hpb & (q & Hq & Hdqb) & (h1 & x1 & Hh1 & Hx1 & Hdia)
+    & (h2 & x2 & Hh2 & Hx2 & Hdib) & (w & Hw & Hds) & (q2 & q3 & Hq2 & Hq3 & Hpn)
+    & Heps & Hdeps & Ht0).
+  unfold v0, d0. fold u. fold v.
+  split; [|split; [|split]].
+  - exact (K_pa v (k_div M * u) (m_eta M) Hv Hdv s Ha Hb Hl _ _ _
+             (VK _ _ Ina) (VK _ _ Inl) (FK _ _ _ Hpa)).
+  - exact (K_pb v (k_div M * u) (m_eta M) Hv Hdv s Ha Hb Hl _ _ _
+             (VK _ _ Inb) (VK _ _ Inl) (FK _ _ _ Hpb)).
+  - exact (K_R v (k_div M * u) (m_eta M) Hv Hdv s Ha Hb Hl Hn1 Hn2
+      _ _ _ _ _ _ _ _ _ _ _ _ _ _ _ _ _
+      (VK _ _ Ina) (VK _ _ Inb) (VK _ _ Inl) _ _ _
+      (AK _ _ _ Ha1 Htx) Hkx (AK _ _ _ Ha1 Hty) Hky (AK _ _ _ Ha1 Htz) Hkz
+      (FK _ _ _ Ha') (FK _ _ _ Hpa) (FK _ _ _ Hc) _ (FK _ _ _ He) (AK _ _ _ Hm1 Hd) (FK _ _ _ Hpb)
+      _ (AK _ _ _ Hm1 Hq) (AK _ _ _ Ha1 Hdqb)
+      _ _ Hh1 (AK _ _ _ Hm1 Hx1) (AK _ _ _ Ha1 Hdia)
+      _ _ Hh2 (AK _ _ _ Hm1 Hx2) (AK _ _ _ Ha1 Hdib)
+      _ (AK _ _ _ Ha1 Hw) Hds
+      _ _ (AK _ _ _ Hm1 Hq2) (AK _ _ _ Hm1 Hq3) (sum3_mono _ _ _ _ _ _ _ Wa Hpn)
+      (AK _ _ _ Ha1 Heps) Hdeps (AK _ _ _ Ha1 Ht0)).
+  - exact (K_ds v (k_div M * u) (m_eta M) Hv Hdv s Ha Hb Hl Hn1 Hn2
+      _ _ _ _ _ _ _ _ _ _ _ _ _
+      (VK _ _ Ina) (VK _ _ Inb) (VK _ _ Inl) _ _ _
+      (AK _ _ _ Ha1 Htx) Hkx (AK _ _ _ Ha1 Hty) Hky (AK _ _ _ Ha1 Htz) Hkz
+      (FK _ _ _ Ha') (FK _ _ _ Hpa) (FK _ _ _ Hc) _ (FK _ _ _ He) (AK _ _ _ Hm1 Hd) (FK _ _ _ Hpb)
+      _ (AK _ _ _ Hm1 Hq) (AK _ _ _ Ha1 Hdqb)
+      _ _ Hh1 (AK _ _ _ Hm1 Hx1) (AK _ _ _ Ha1 Hdia)
+      _ _ Hh2 (AK _ _ _ Hm1 Hx2) (AK _ _ _ Ha1 Hdib)
+      _ (AK _ _ _ Ha1 Hw) Hds).
+Qed.
+
+(** j = ⌈n/2⌉ (m_step), lo = ⌊n/2⌋: j + lo = n, and the exact δ. *)
+Lemma ad_j_lo : forall m : nat, (1 <= m)%nat ->
+  1 <= INR (m_step m) /\ 0 <= INR (m / 2) /\ INR (m_step m) + INR (m / 2) = INR m.
+Proof.
+  intros m Hm. unfold m_step.
+  assert (H : ((m + 1) / 2 + m / 2 = m)%nat /\ (1 <= (m + 1) / 2)%nat).
+  { pose proof (Nat.div_mod m 2 ltac:(lia)) as H1.
+    pose proof (Nat.mod_upper_bound m 2 ltac:(lia)) as H2.
+    assert (H3 : (m mod 2 = 0 \/ m mod 2 = 1)%nat) by lia.
+    destruct H3 as [H3 | H3]; rewrite H3 in H1.
+    - replace (m + 1)%nat with (1 + (m / 2) * 2)%nat by lia.
+      rewrite Nat.div_add by lia. change (1 / 2)%nat with 0%nat. lia.
+    - replace (m + 1)%nat with (0 + (m / 2 + 1) * 2)%nat by lia.
+      rewrite Nat.div_add by lia. change (0 / 2)%nat with 0%nat. lia. }
+  destruct H as [H1 H2]. split; [|split].
+  - apply (le_INR 1). exact H2.
+  - apply pos_INR.
+  - rewrite <- plus_INR, H1. reflexivity.
+Qed.
+
+Lemma ad_delta_exact : forall s : span, (1 <= n s)%nat ->
+  gouraud s (m_step (n s)) - ceuler s (m_step (n s))
+  = ds s / 2 * INR (m_step (n s)) * INR (n s / 2)
+  /\ INR (n s) * INR (n s) * ds s = e_n2ds s.
+Proof.
+  intros s Hn. destruct (ad_j_lo (n s) Hn) as (H1 & H2 & H3).
+  split.
+  - rewrite (eq_24_gouraud_minus_corrected_euler s _ ltac:(lia)).
+    replace (INR (n s) - INR (m_step (n s))) with (INR (n s / 2)) by lra. reflexivity.
+  - rewrite (ds_scaled s Hn). field. lra.
+Qed.
+
+(** ** The two implementations, in the κ model *)
+
+(** (i) The fast kernel: ds·lo·hi/2 by three products (each ap_mul) applied
+    to ds in a chain with exact factors c1 c2 c3 = hi·lo/2:
+    fl(fl(fl(0.5·ds)·lo)·hi) is c1 = 1/2, c2 = lo, c3 = hi; any other
+    association of the products of 0.5, ds, lo, hi is such a chain, since the
+    sub-products of 0.5, lo, hi (≤ 2^23) are exact (a step that is exact,
+    factor 1, satisfies ap_mul). *)
+Definition fast_delta_ok (M : fmodel) (m : nat) (dsh dh : R) : Prop :=
+  exists c1 c2 c3 y1 y2 : R,
+    0 <= c1 /\ 0 <= c2 /\ 0 <= c3 /\ c3 <= 16777216 /\ c3 * c2 <= 281474976710656 /\
+    c1 * c2 * c3 = INR (m_step m) * INR (m / 2) / 2 /\
+    ap_mul M y1 (c1 * dsh) /\ ap_mul M y2 (c2 * y1) /\ ap_mul M dh (c3 * y2).
+
+(** (ii) eq. 24 as written, j = m_step m, c = (j^2 - j)/2 exact:
+    a = fl(j dp), b = fl(j t0), c' = fl(c ds), e = fl(b + c'), δ̂ = fl(a - e).
+    A fused multiply-add is the case of an exact product. *)
+Definition eq24_delta_ok (M : fmodel) (m : nat) (dph t0h dsh dh : R) : Prop :=
+  exists a b c e : R,
+    ap_mul M a (INR (m_step m) * dph) /\ ap_mul M b (INR (m_step m) * t0h) /\
+    ap_mul M c ((INR (m_step m) * INR (m_step m) - INR (m_step m)) / 2 * dsh) /\
+    ap_add M e (b + c) /\ ap_add M dh (a - e).
+
+(** The error bounds: v = K1 u (inputs, additions, products), d = k_div u. *)
+Definition fast_delta_err (M : fmodel) (K1 : R) : R :=
+  let Eds := 9211 / 100 * (K1 * m_u M) + 1806 / 100 * (k_div M * m_u M) in
+  Eds / 8 + 3004 / 1000 * (K1 * m_u M) * (1 / 4 + Eds / 8) + 562949986975745 * m_eta M.
+
+Definition eq24_delta_err (M : fmodel) (K1 : R) : R :=
+  let u := m_u M in let eta := m_eta M in let v := K1 * u in let d := k_div M * u in
+  let Epg := (2 * (k_in M * u) + k_mul M * u + 2 * (k_add M * u)) * (1 + / 131072) + 18 * eta in
+  let Edp := (k_add M * u + k_div M * u) * (2 + / 65536) + 16777218 * eta in
+  let Epc := 5002 / 1000 * v + 1 / 1000 * d in
+  let ER := 2004 / 100 * v + 501 / 100 * d in
+  let Eds := 9211 / 100 * v + 1806 / 100 * d in
+  let EG := Edp + 2 * Epg in
+  let EC := ER + 2 * Epc + Eds / 8 in
+  let MA := 2 + EG in
+  let MB := 3 + 2 * Epc + Eds / 2 + ER in
+  let MC := 1 + Eds / 2 in
+  let E4 := EG + EC + (v * MA + eta) + (v * MB + eta) + (v * MC + eta)
+            + (v * (MB + MC + (v * MB + eta) + (v * MC + eta)) + eta) in
+  E4 + v * (1 / 4 + E4) + eta.
+
+Lemma fast_delta_error : forall (M : fmodel) (K K1 : R), model_ok M K ->
+  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 -> 1 <= k_div M ->
+  forall (s : span) (F : fsetup) (dh : R),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  (1 <= n s)%nat -> INR (n s) <= 16777216 ->
+  ce_setup_ok M s F -> fast_delta_ok M (n s) (fs_ds F) dh ->
+  Rabs (dh - (gouraud s (m_step (n s)) - ceuler s (m_step (n s)))) <= fast_delta_err M K1.
+Proof.
+  intros M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1 s F dh Ha Hb Hl Hn1 Hn2 HF
+    (c1 & c2 & c3 & y1 & y2 & H1 & H2 & H3 & H3b & H23 & Hc & A1 & A2 & A3).
+  pose proof HM as (Hu & He0 & He2 & Ki & Ka & Km & Kd & HK0 & HK2).
+  destruct (ad_ce_facts M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1 s F Ha Hb Hl Hn1 Hn2 HF)
+    as (_ & _ & _ & Hds).
+  destruct (ad_delta_exact s Hn1) as [HD Hn2ds].
+  destruct (ad_j_lo (n s) Hn1) as (J1 & J2 & J3).
+  rewrite HD. rewrite <- Hn2ds in Hds.
+  assert (HKu : K1 * m_u M <= K * m_u M) by (apply Rmult_le_compat_r; lra).
+  assert (AK : forall y x, ap_mul M y x -> ap1 (K1 * m_u M) (m_eta M) y x).
+  { intros y x H. eapply ap1_mono; [|exact H]. apply Rmult_le_compat_r; lra. }
+  assert (Hv0 : 0 <= K1 * m_u M) by (apply Rmult_le_pos; lra).
+  pose proof (ad_fast_err (K1 * m_u M) (m_eta M) (INR (n s)) (INR (m_step (n s))) (INR (n s / 2))
+    (ds s) (fs_ds F) _ c1 c2 c3 y1 y2 dh ltac:(lra) He0 ltac:(lra) ltac:(lra) J2 J3
+    H1 H2 H3 H3b H23 Hc Hds ltac:(rewrite Hn2ds; apply n2ds_le; assumption)
+    (AK _ _ A1) (AK _ _ A2) (AK _ _ A3)) as R.
+  unfold fast_delta_err. exact R.
+Qed.
+
+Lemma eq24_delta_error : forall (M : fmodel) (K K1 : R), model_ok M K ->
+  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 -> 1 <= k_div M ->
+  forall (s : span) (FG FC : fsetup) (dh : R),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  (1 <= n s)%nat -> INR (n s) <= 16777216 ->
+  gouraud_setup_ok M s FG -> ce_setup_ok M s FC ->
+  eq24_delta_ok M (n s) (fs_dp FG) (fs_t0 FC) (fs_ds FC) dh ->
+  Rabs (dh - (gouraud s (m_step (n s)) - ceuler s (m_step (n s)))) <= eq24_delta_err M K1.
+Proof.
+  intros M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1 s FG FC dh Ha Hb Hl Hn1 Hn2 HFG HFC
+    (a & b & c & e & Aa & Ab & Ac & Ae & Adh).
+  pose proof HM as (Hu & He0 & He2 & Ki & Ka & Km & Kd & HK0 & HK2).
+  destruct (ad_ce_facts M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1 s FC Ha Hb Hl Hn1 Hn2 HFC)
+    as (Cpa & Cpb & CR & Cds).
+  destruct (g_pa_pb M K HM s Ha Hb Hl FG HFG) as [Gpa Gpb].
+  pose proof (g_dp M K HM s Ha Hb Hl Hn1 Hn2 FG HFG) as Gdp.
+  destruct (ad_delta_exact s Hn1) as [HD Hn2ds].
+  destruct (ad_j_lo (n s) Hn1) as (J1 & J2 & J3).
+  rewrite HD. rewrite <- Hn2ds in Cds.
+  assert (HKu : K1 * m_u M <= K * m_u M) by (apply Rmult_le_compat_r; lra).
+  assert (Hv0 : 0 <= K1 * m_u M) by (apply Rmult_le_pos; lra).
+  assert (AM : forall y x, ap_mul M y x -> ap1 (K1 * m_u M) (m_eta M) y x).
+  { intros y x H. eapply ap1_mono; [|exact H]. apply Rmult_le_compat_r; lra. }
+  assert (AA : forall y x, ap_add M y x -> ap1 (K1 * m_u M) (m_eta M) y x).
+  { intros y x H. eapply ap1_mono; [|exact H]. apply Rmult_le_compat_r; lra. }
+  pose proof (ad_eq24_err (K1 * m_u M) (m_eta M) (INR (n s)) (INR (m_step (n s))) (INR (n s / 2))
+    (pa s) (pb s) (ds s) (fs_pa FG) (fs_pb FG) (fs_dp FG) (fs_pa FC) (fs_pb FC) (fs_t0 FC) (fs_ds FC)
+    a b c e dh _ _ _ _ _ Hv0 He0 ltac:(lra) J1 J2 J3
+    (pa_le s Ha Hl) (pb_le s Hb Hl) ltac:(rewrite Hn2ds; apply n2ds_le; assumption)
+    Gpa Gpb Gdp Cpa Cpb CR Cds (AM _ _ Aa) (AM _ _ Ab) (AM _ _ Ac) (AA _ _ Ae) (AA _ _ Adh)) as R.
+  unfold eq24_delta_err. exact R.
+Qed.
+
+
+(** (ii) with the p_a, p_b of the two set-ups the same computed values. *)
+Definition eq24_shared_delta_err (M : fmodel) (K1 : R) : R :=
+  let u := m_u M in let eta := m_eta M in let v := K1 * u in let d := k_div M * u in
+  let Epg := (2 * (k_in M * u) + k_mul M * u + 2 * (k_add M * u)) * (1 + / 131072) + 18 * eta in
+  let Edp := (k_add M * u + k_div M * u) * (2 + / 65536) + 16777218 * eta in
+  let Epc := 5002 / 1000 * v + 1 / 1000 * d in
+  let ER := 2004 / 100 * v + 501 / 100 * d in
+  let Eds := 9211 / 100 * v + 1806 / 100 * d in
+  let EG := Edp + 2 * Epg in
+  let EGC := Edp + ER + Eds / 8 in
+  let MA := 2 + EG in
+  let MB := 3 + 2 * Epc + Eds / 2 + ER in
+  let MC := 1 + Eds / 2 in
+  let E4 := EGC + (v * MA + eta) + (v * MB + eta) + (v * MC + eta)
+            + (v * (MB + MC + (v * MB + eta) + (v * MC + eta)) + eta) in
+  E4 + v * (1 / 4 + E4) + eta.
+
+Lemma eq24_shared_delta_error : forall (M : fmodel) (K K1 : R), model_ok M K ->
+  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 -> 1 <= k_div M ->
+  forall (s : span) (FG FC : fsetup) (dh : R),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  (1 <= n s)%nat -> INR (n s) <= 16777216 ->
+  gouraud_setup_ok M s FG -> ce_setup_ok M s FC ->
+  eq24_delta_ok M (n s) (fs_dp FG) (fs_t0 FC) (fs_ds FC) dh ->
+  fs_pa FG = fs_pa FC -> fs_pb FG = fs_pb FC ->
+  Rabs (dh - (gouraud s (m_step (n s)) - ceuler s (m_step (n s)))) <= eq24_shared_delta_err M K1.
+Proof.
+  intros M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1 s FG FC dh Ha Hb Hl Hn1 Hn2 HFG HFC
+    (a & b & c & e & Aa & Ab & Ac & Ae & Adh) Sa Sb.
+  pose proof HM as (Hu & He0 & He2 & Ki & Ka & Km & Kd & HK0 & HK2).
+  destruct (ad_ce_facts M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1 s FC Ha Hb Hl Hn1 Hn2 HFC)
+    as (Cpa & Cpb & CR & Cds).
+  destruct (g_pa_pb M K HM s Ha Hb Hl FG HFG) as [Gpa Gpb].
+  pose proof (g_dp M K HM s Ha Hb Hl Hn1 Hn2 FG HFG) as Gdp.
+  destruct (ad_delta_exact s Hn1) as [HD Hn2ds].
+  destruct (ad_j_lo (n s) Hn1) as (J1 & J2 & J3).
+  rewrite HD. rewrite <- Hn2ds in Cds.
+  assert (HKu : K1 * m_u M <= K * m_u M) by (apply Rmult_le_compat_r; lra).
+  assert (Hv0 : 0 <= K1 * m_u M) by (apply Rmult_le_pos; lra).
+  assert (AM : forall y x, ap_mul M y x -> ap1 (K1 * m_u M) (m_eta M) y x).
+  { intros y x H. eapply ap1_mono; [|exact H]. apply Rmult_le_compat_r; lra. }
+  assert (AA : forall y x, ap_add M y x -> ap1 (K1 * m_u M) (m_eta M) y x).
+  { intros y x H. eapply ap1_mono; [|exact H]. apply Rmult_le_compat_r; lra. }
+  pose proof (ad_eq24_err_shared (K1 * m_u M) (m_eta M) (INR (n s)) (INR (m_step (n s))) (INR (n s / 2))
+    (pa s) (pb s) (ds s) (fs_pa FG) (fs_pb FG) (fs_dp FG) (fs_pa FC) (fs_pb FC) (fs_t0 FC) (fs_ds FC)
+    a b c e dh _ _ _ _ _ Hv0 He0 ltac:(lra) J1 J2 J3
+    (pa_le s Ha Hl) (pb_le s Hb Hl) ltac:(rewrite Hn2ds; apply n2ds_le; assumption)
+    Gpa Gpb Gdp Cpa Cpb CR Cds (AM _ _ Aa) (AM _ _ Ab) (AM _ _ Ac) (AA _ _ Ae) (AA _ _ Adh) Sa Sb) as R.
+  unfold eq24_shared_delta_err. exact R.
+Qed.
+
+(** ** Acceptance, any model *)
+
+(* Note: Any model with the size conditions of [profile_corrected_euler_generic];
+   the run's output is within b_G of Gouraud when the implementation's test
+   says Gouraud and within b_CE of corrected Euler otherwise. *)
+(** The checker's acceptance set contains every run of an implementation that
+    computes δ̂ by the fast kernel (i) or by eq. 24 as written (ii) (with or
+    without p_a, p_b shared by the two set-ups), provided
+    the error bound of that δ̂ is at most 1.01(b_G + b_CE) + 2u. *)
+Theorem adaptive_acceptance_covers_computed_delta_generic :
+  forall (M : fmodel) (K K1 : R), model_ok M K ->
+  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 -> 1 <= k_div M ->
+  forall (s : span) (FG FC : fsetup) (dh x bG bCE th2 : R) (G C out : nat -> R),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  (1 <= n s)%nat -> INR (n s) <= 16777216 ->
+  gouraud_setup_ok M s FG -> ce_setup_ok M s FC ->
+  (fast_delta_ok M (n s) (fs_ds FC) dh
+     /\ fast_delta_err M K1 <= 101 / 100 * (bG + bCE) + 2 * m_u M)
+  \/ (eq24_delta_ok M (n s) (fs_dp FG) (fs_t0 FC) (fs_ds FC) dh
+     /\ eq24_delta_err M K1 <= 101 / 100 * (bG + bCE) + 2 * m_u M)
+  \/ (eq24_delta_ok M (n s) (fs_dp FG) (fs_t0 FC) (fs_ds FC) dh
+     /\ fs_pa FG = fs_pa FC /\ fs_pb FG = fs_pb FC
+     /\ eq24_shared_delta_err M K1 <= 101 / 100 * (bG + bCE) + 2 * m_u M) ->
+  0 < x -> Rabs th2 <= 3 * m_u M ->
+  (Rabs (x * dh * (1 + th2)) < 1 -> within_of bG out G (n s)) ->
+  (1 <= Rabs (x * dh * (1 + th2)) -> within_of bCE out C (n s)) ->
+  adaptive_accepts x (gouraud s (m_step (n s)) - ceuler s (m_step (n s))) bG bCE (m_u M)
+    G C out (n s).
+Proof.
+  intros M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1 s FG FC dh x bG bCE th2 G C out
+    Ha Hb Hl Hn1 Hn2 HFG HFC Himpl Hx H2 Hgo Hce.
+  pose proof HM as (Hu & He0 & He2 & Ki & Ka & Km & Kd & HK0 & HK2).
+  assert (Hu1 : m_u M <= K * m_u M) by (rewrite <- (Rmult_1_l (m_u M)) at 1; apply Rmult_le_compat_r; lra).
+  destruct Himpl as [[Hi HE] | [[Hi HE] | (Hi & Sa & Sb & HE)]].
+  - apply (adaptive_accepts_of_delta_error x (m_u M) bG bCE _ dh (fast_delta_err M K1) th2);
+      try assumption; try lra.
+    rewrite Rabs_minus_sym.
+    replace (gouraud s (m_step (n s)) - ceuler s (m_step (n s)) - dh)
+      with (- (dh - (gouraud s (m_step (n s)) - ceuler s (m_step (n s))))) by ring.
+    rewrite Rabs_Ropp.
+    exact (fast_delta_error M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1 s FC dh Ha Hb Hl Hn1 Hn2 HFC Hi).
+  - apply (adaptive_accepts_of_delta_error x (m_u M) bG bCE _ dh (eq24_delta_err M K1) th2);
+      try assumption; try lra.
+    exact (eq24_delta_error M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1 s FG FC dh Ha Hb Hl Hn1 Hn2 HFG HFC Hi).
+  - apply (adaptive_accepts_of_delta_error x (m_u M) bG bCE _ dh (eq24_shared_delta_err M K1) th2);
+      try assumption; try lra.
+    exact (eq24_shared_delta_error M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1 s FG FC dh Ha Hb Hl Hn1 Hn2 HFG HFC Hi
+             Sa Sb).
+Qed.
+
+(** ** The ieee binary32 profile *)
+
+Lemma fast_delta_err_ieee32 : fast_delta_err ieee32 1 <= 17 * bpow radix2 (-24).
+Proof.
+  pose proof ieee32_ok as (Hu & He0 & He2 & _).
+  unfold fast_delta_err, ieee32 in *; cbn [m_u m_eta k_in k_add k_mul k_div] in *.
+  cbv zeta. rewrite u24 in *. lra.
+Qed.
+
+Lemma eq24_delta_err_ieee32 : eq24_delta_err ieee32 1 <= 83 * bpow radix2 (-24).
+Proof.
+  pose proof ieee32_ok as (Hu & He0 & He2 & _).
+  unfold eq24_delta_err, ieee32 in *; cbn [m_u m_eta k_in k_add k_mul k_div] in *.
+  cbv zeta. rewrite u24 in *. lra.
+Qed.
+
+Lemma eq24_shared_delta_err_ieee32 : eq24_shared_delta_err ieee32 1 <= 63 * bpow radix2 (-24).
+Proof.
+  pose proof ieee32_ok as (Hu & He0 & He2 & _).
+  unfold eq24_shared_delta_err, ieee32 in *; cbn [m_u m_eta k_in k_add k_mul k_div] in *.
+  cbv zeta. rewrite u24 in *. lra.
+Qed.
+
+(* Note: ieee profile, binary32 (round to nearest, division correctly rounded or
+   reciprocal then product, subnormals kept), 1 <= n <= 4096; the set-ups as in
+   profile_ieee_gouraud_binary32 (dp) and profile_ieee_corrected_euler_binary32
+   (t0, ds); δ̂ by the fast kernel (i), error <= 17u, or by eq. 24 as written
+   (ii), error <= 83u, or <= 63u when both set-ups use the same computed p_a, p_b; test t̂ = x δ̂ (1 + θ2), |θ2| <= 3u. *)
+(** Adaptive scheme: the checker's acceptance set (band x(1.01(b_G + b_CE) + 2u) + 4u
+    around |x δ| = 1, δ = G(j) - C(j) exact) contains every run of an
+    implementation computing δ̂ from its set-up by (i) or (ii). *)
+Theorem adaptive_acceptance_covers_computed_delta :
+  forall (s : span) (FG FC : fsetup) (dh x bG bCE th2 : R) (G C out : nat -> R),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) -> (1 <= n s <= 4096)%nat ->
+  gouraud_setup_ok ieee32 s FG -> ce_setup_ok ieee32 s FC ->
+  (fast_delta_ok ieee32 (n s) (fs_ds FC) dh
+     /\ 17 * bpow radix2 (-24) <= 101 / 100 * (bG + bCE) + 2 * bpow radix2 (-24))
+  \/ (eq24_delta_ok ieee32 (n s) (fs_dp FG) (fs_t0 FC) (fs_ds FC) dh
+     /\ 83 * bpow radix2 (-24) <= 101 / 100 * (bG + bCE) + 2 * bpow radix2 (-24))
+  \/ (eq24_delta_ok ieee32 (n s) (fs_dp FG) (fs_t0 FC) (fs_ds FC) dh
+     /\ fs_pa FG = fs_pa FC /\ fs_pb FG = fs_pb FC
+     /\ 63 * bpow radix2 (-24) <= 101 / 100 * (bG + bCE) + 2 * bpow radix2 (-24)) ->
+  0 < x -> Rabs th2 <= 3 * bpow radix2 (-24) ->
+  (Rabs (x * dh * (1 + th2)) < 1 -> within_of bG out G (n s)) ->
+  (1 <= Rabs (x * dh * (1 + th2)) -> within_of bCE out C (n s)) ->
+  adaptive_accepts x (gouraud s (m_step (n s)) - ceuler s (m_step (n s))) bG bCE
+    (bpow radix2 (-24)) G C out (n s).
+Proof.
+  intros s FG FC dh x bG bCE th2 G C out Ha Hb Hl Hn HFG HFC Himpl Hx H2 Hgo Hce.
+  pose proof (ce_profile_nr s Hn) as Hn'.
+  pose proof fast_delta_err_ieee32 as E1. pose proof eq24_delta_err_ieee32 as E2.
+  pose proof eq24_shared_delta_err_ieee32 as E3.
+  change (bpow radix2 (-24)) with (m_u ieee32) in *.
+  apply (adaptive_acceptance_covers_computed_delta_generic ieee32 _ 1 ieee32_ok)
+    with (FG := FG) (FC := FC) (dh := dh) (th2 := th2);
+    unfold ieee32 in *; cbn [m_u k_in k_add k_mul k_div] in *; try assumption; try lra; try lia.
+  destruct Himpl as [[Hi HE] | [[Hi HE] | (Hi & Sa & Sb & HE)]].
+  - left. split; [assumption | lra].
+  - right. left. split; [assumption | lra].
+  - right. right. repeat split; try assumption. lra.
+Qed.
+
+(* Note: u = 2^-24; b_G, b_CE at least the ieee binary32 profile bounds
+   (profile_ieee_gouraud_binary32, profile_ieee_corrected_euler_binary32). *)
+(** The conditions of [adaptive_acceptance_covers_computed_delta] at the profile
+    bounds: (i) and (ii) with shared p_a, p_b always, (ii) otherwise for n >= 6. *)
+Theorem adaptive_delta_conditions_at_profile_bounds :
+  forall (m : nat) (bG bCE : R),
+  (1 <= m)%nat ->
+  (10006 / 10000 * INR m + 11001 / 1000) * bpow radix2 (-24) <= bG ->
+  (22 / 10 * INR m + 5121 / 100) * bpow radix2 (-24) <= bCE ->
+  17 * bpow radix2 (-24) <= 101 / 100 * (bG + bCE) + 2 * bpow radix2 (-24)
+  /\ 63 * bpow radix2 (-24) <= 101 / 100 * (bG + bCE) + 2 * bpow radix2 (-24)
+  /\ ((6 <= m)%nat ->
+      83 * bpow radix2 (-24) <= 101 / 100 * (bG + bCE) + 2 * bpow radix2 (-24)).
+Proof.
+  intros m bG bCE Hm HG HC. rewrite u24 in *.
+  assert (H1 : 1 <= INR m) by (apply (le_INR 1); exact Hm).
+  split; [lra|]. split; [lra|].
+  intros H6. assert (6 <= INR m) by (apply (le_INR 6) in H6; simpl in H6; lra). lra.
+Qed.

@@ -1,0 +1,1197 @@
+(** * PhongCountD.v — the bounds of PhongCount.v parametrized by the span's distance.
+
+    With dd >= |Nb - Na| (Euclidean norm of the exact difference, through
+    dot (Nb - Na) (Nb - Na) <= dd^2, 0 <= dd <= 2), the errors of every
+    rounding after the inputs act on the difference Nb - Na as one quantity and
+    scale with dd (Cauchy-Schwarz: sum |D_j| |X_j| <= dd |X|), while the inputs'
+    own roundings (1 - t) Na_j e_a + t Nb_j e_b are bounded by the mixtures
+    M_j = (1 - t) |Na_j| + t |Nb_j| (sum M_j |X_j| <= 1 for |X| <= 1).
+    Same hypotheses and models as PhongCount.v (kd = k_div, or for the
+    reciprocal forms kd = (1 + 2^-20) k_mul + k_div + 2^-36), plus
+    0 <= dd <= 2 and dot (Nb - Na) (Nb - Na) <= dd^2:
+      Horner:  |p^ - p_i| <= ((8.04 + 6.01 dd) K1 + (0.03 + 1.01 dd) kd) u,
+               |q^ - q_i| <= ((10.13 + 18.03 dd + 8.01 dd^2) K1
+                              + (0.07 + 2.02 dd + 2.01 dd^2) kd) u;
+      per-pixel: |p^ - p_i| <= ((6.02 + 2.01 dd) K1 + (0.02 + 1.01 dd) kd) u,
+               |q^ - q_i| <= ((7.02 + 4.01 dd) K1 + (0.02 + 2.01 dd) kd) u;
+      lerp:    |p^ - p_i| <= (8.02 K1 + (0.02 + 1.01 dd) kd) u,
+               |q^ - q_i| <= (11.02 K1 + (0.02 + 2.01 dd) kd) u.
+    The checker takes the minimum of these bounds and the d-free ones. *)
+
+From Coq Require Import Reals Lra Lia.
+From PhongApprox Require Import Span FloatModel Float FloatModelK Profiles PhongCount.
+Open Scope R_scope.
+
+(** ** Cauchy-Schwarz on absolute values *)
+
+Lemma cs_abs : forall (a b : vec) (A : R), 0 <= A -> dot a a <= A * A -> dot b b <= 1 ->
+  Rabs (vx a) * Rabs (vx b) + Rabs (vy a) * Rabs (vy b) + Rabs (vz a) * Rabs (vz b) <= A.
+Proof.
+  intros a b A HA Ha Hb. unfold dot in Ha, Hb.
+  rewrite <- (abs_sq (vx a)), <- (abs_sq (vy a)), <- (abs_sq (vz a)) in Ha.
+  rewrite <- (abs_sq (vx b)), <- (abs_sq (vy b)), <- (abs_sq (vz b)) in Hb.
+  set (x1 := Rabs (vx a)) in *. set (x2 := Rabs (vy a)) in *. set (x3 := Rabs (vz a)) in *.
+  set (y1 := Rabs (vx b)) in *. set (y2 := Rabs (vy b)) in *. set (y3 := Rabs (vz b)) in *.
+  assert (0 <= x1) by apply Rabs_pos. assert (0 <= x2) by apply Rabs_pos.
+  assert (0 <= x3) by apply Rabs_pos. assert (0 <= y1) by apply Rabs_pos.
+  assert (0 <= y2) by apply Rabs_pos. assert (0 <= y3) by apply Rabs_pos.
+  set (S := x1 * y1 + x2 * y2 + x3 * y3).
+  assert (S0 : 0 <= S) by (unfold S; nra).
+  assert (L : S * S <= (x1 * x1 + x2 * x2 + x3 * x3) * (y1 * y1 + y2 * y2 + y3 * y3)).
+  { unfold S. pose proof (Rle_0_sqr (x1 * y2 - x2 * y1)).
+    pose proof (Rle_0_sqr (x1 * y3 - x3 * y1)). pose proof (Rle_0_sqr (x2 * y3 - x3 * y2)).
+    unfold Rsqr in *. nra. }
+  assert (X0 : 0 <= x1 * x1 + x2 * x2 + x3 * x3) by nra.
+  assert (S2 : S * S <= A * A).
+  { eapply Rle_trans; [exact L|].
+    replace (A * A) with ((A * A) * 1) by ring.
+    apply Rmult_le_compat; nra. }
+  nra.
+Qed.
+
+Lemma mix_le : forall t a b, 0 <= t <= 1 -> a <= 1 -> b <= 1 -> (1 - t) * a + t * b <= 1.
+Proof. intros t a b Ht Ha Hb. nra. Qed.
+
+Lemma ap1_le : forall v eta y x X, 0 <= v -> ap1 v eta y x -> Rabs x <= X ->
+  Rabs (y - x) <= v * X + eta.
+Proof.
+  intros v eta y x X Hv H HX. unfold ap1 in H.
+  assert (v * Rabs x <= v * X) by (apply Rmult_le_compat_l; lra). lra.
+Qed.
+
+(** Mixture weights: c1 M_j + c2 |D_j| + 2^-15. *)
+Definition wM (a b : vec) (t c1 c2 : R) : vec :=
+  mkV (c1 * ((1 - t) * Rabs (vx a) + t * Rabs (vx b)) + c2 * Rabs (vx b - vx a) + / 32768)
+      (c1 * ((1 - t) * Rabs (vy a) + t * Rabs (vy b)) + c2 * Rabs (vy b - vy a) + / 32768)
+      (c1 * ((1 - t) * Rabs (vz a) + t * Rabs (vz b)) + c2 * Rabs (vz b - vz a) + / 32768).
+
+(** ** One component of the per-pixel normal, with the mixture weights *)
+
+Lemma pd_comp : forall v d eta m i a0 b0 ra rb tt kj z nj,
+  small_ok v eta -> small_ok d eta -> 1 <= m <= 16777216 -> 0 <= i <= m ->
+  Rabs a0 <= 1 -> Rabs b0 <= 1 ->
+  ap1 v eta ra a0 -> ap1 v eta rb b0 -> ap1 v eta tt (rb - ra) -> ap1 d eta kj (tt / m) ->
+  ap1 v eta z (i * kj) -> ap1 v eta nj (ra + z) ->
+  Rabs (nj - (a0 + i / m * (b0 - a0))) <=
+    v * (2 * ((1 - i / m) * Rabs a0 + i / m * Rabs b0) + 2001 / 1000 * Rabs (b0 - a0) + / 32768)
+    + d * (0 * ((1 - i / m) * Rabs a0 + i / m * Rabs b0) + 1001 / 1000 * Rabs (b0 - a0)
+           + / 32768).
+Proof.
+  intros v d eta m i a0 b0 ra rb tt kj z nj Hv Hd Hm Hi Ha0 Hb0 Hra Hrb Htt Hkj Hz Hnj.
+  pose proof (v_pos v eta Hv). pose proof (v_small v eta Hv).
+  pose proof (v_pos d eta Hd). pose proof (v_small d eta Hd).
+  pose proof (e_pos v eta Hv). pose proof (e_small v eta Hv).
+  pose proof (Rabs_pos a0). pose proof (Rabs_pos b0).
+  pose proof (hc_t m i ltac:(lra) Hi) as Ht.
+  set (t := i / m) in *.
+  set (D := b0 - a0) in *.
+  pose proof (Rabs_pos D).
+  assert (HD2 : Rabs D <= 2) by (unfold D; pose proof (absdiff b0 a0); lra).
+  set (Mj := (1 - t) * Rabs a0 + t * Rabs b0).
+  assert (HM : 0 <= Mj <= 1).
+  { split; [unfold Mj; apply Rplus_le_le_0_compat; apply Rmult_le_pos; lra
+           | apply mix_le; lra]. }
+  assert (Me : m * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra).
+  assert (HI : i = t * m) by (unfold t; field; lra).
+  unfold ap1 in Hra, Hrb, Htt, Hkj, Hz, Hnj.
+  (* the inputs *)
+  assert (A1 : v * Rabs a0 <= v) by (pose proof (Rmult_le_compat_l v _ _ ltac:(lra) Ha0); lra).
+  assert (B1 : v * Rabs b0 <= v) by (pose proof (Rmult_le_compat_l v _ _ ltac:(lra) Hb0); lra).
+  assert (AB : Rabs ((1 - t) * (ra - a0) + t * (rb - b0)) <= v * Mj + eta).
+  { eapply Rle_trans; [apply Rabs_triang|].
+    rewrite !Rabs_mult, (Rabs_pos_eq (1 - t)), (Rabs_pos_eq t) by lra.
+    assert ((1 - t) * Rabs (ra - a0) <= (1 - t) * (v * Rabs a0 + eta))
+      by (apply Rmult_le_compat_l; lra).
+    assert (t * Rabs (rb - b0) <= t * (v * Rabs b0 + eta)) by (apply Rmult_le_compat_l; lra).
+    unfold Mj. lra. }
+  assert (R1 : Rabs (rb - ra) <= Rabs D + / 524288).
+  { replace (rb - ra) with (D + (rb - b0) - (ra - a0)) by (unfold D; ring).
+    eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_Ropp.
+    eapply Rle_trans; [apply Rplus_le_compat_r, Rabs_triang|]. lra. }
+  (* the subtraction *)
+  assert (G : Rabs (tt - (rb - ra)) <= v * Rabs D + / 524288 * v + eta).
+  { assert (v * Rabs (rb - ra) <= v * (Rabs D + / 524288)) by (apply Rmult_le_compat_l; lra).
+    lra. }
+  assert (T1 : Rabs tt <= Rabs D + / 262144).
+  { pose proof (abs_near _ _ _ G). assert (v * Rabs D <= / 2097152 * 2)
+      by (apply Rmult_le_compat; lra). lra. }
+  (* the division, times i *)
+  assert (Dm : Rabs (i * kj - t * tt) <= d * Rabs tt + m * eta).
+  { replace (i * kj - t * tt) with (i * (kj - tt / m)) by (rewrite HI; field; lra).
+    rewrite Rabs_mult, (Rabs_pos_eq i) by lra.
+    assert (Em : Rabs (tt / m) = Rabs tt / m).
+    { unfold Rdiv. rewrite Rabs_mult, (Rabs_pos_eq (/ m)); [reflexivity|].
+      left. apply Rinv_0_lt_compat. lra. }
+    rewrite Em in Hkj.
+    assert (i * Rabs (kj - tt / m) <= i * (d * (Rabs tt / m) + eta))
+      by (apply Rmult_le_compat_l; lra).
+    assert (i * (d * (Rabs tt / m)) = t * (d * Rabs tt)) by (unfold t; field; lra).
+    assert (t * (d * Rabs tt) <= 1 * (d * Rabs tt))
+      by (apply Rmult_le_compat_r; [apply Rmult_le_pos; [lra | apply Rabs_pos] | lra]).
+    assert (i * eta <= m * eta) by (apply Rmult_le_compat_r; lra). lra. }
+  assert (DT : d * Rabs tt <= d * (Rabs D + / 262144)) by (apply Rmult_le_compat_l; lra).
+  assert (Ik : Rabs (i * kj) <= Rabs D + / 131072).
+  { replace (i * kj) with (t * tt + (i * kj - t * tt)) by ring.
+    eapply Rle_trans; [apply Rabs_triang|].
+    assert (Rabs (t * tt) <= Rabs tt) by (apply hc_scale; exact Ht).
+    assert (d * (Rabs D + / 262144) <= / 2097152 * (2 + / 262144))
+      by (apply Rmult_le_compat; lra). lra. }
+  (* the product i k_j *)
+  assert (Z : Rabs (z - i * kj) <= v * Rabs D + / 131072 * v + eta).
+  { assert (v * Rabs (i * kj) <= v * (Rabs D + / 131072)) by (apply Rmult_le_compat_l; lra).
+    lra. }
+  (* the sum *)
+  assert (EN : ra + z - (a0 + t * D)
+               = ((1 - t) * (ra - a0) + t * (rb - b0)) + t * (tt - (rb - ra))
+                 + (i * kj - t * tt) + (z - i * kj)) by (unfold D; ring).
+  assert (TG : Rabs (t * (tt - (rb - ra))) <= v * Rabs D + / 524288 * v + eta)
+    by (eapply Rle_trans; [apply hc_scale; exact Ht | exact G]).
+  assert (Nn : Rabs (a0 + t * D) <= Mj).
+  { replace (a0 + t * D) with ((1 - t) * a0 + t * b0) by (unfold D; ring).
+    eapply Rle_trans; [apply Rabs_triang|].
+    rewrite !Rabs_mult, (Rabs_pos_eq (1 - t)), (Rabs_pos_eq t) by lra. unfold Mj. lra. }
+  assert (E1 : Rabs (ra + z - (a0 + t * D))
+               <= v * Mj + 2 * (v * Rabs D) + d * Rabs D + / 98304 * v + / 131072 * d
+                  + 16777220 * eta).
+  { rewrite EN. eapply Rle_trans; [apply tri4|]. lra. }
+  assert (VS : v * Mj + 2 * (v * Rabs D) + d * Rabs D <= / 2097152 * 7).
+  { assert (v * Mj <= / 2097152 * 1) by (apply Rmult_le_compat; lra).
+    assert (v * Rabs D <= / 2097152 * 2) by (apply Rmult_le_compat; lra).
+    assert (d * Rabs D <= / 2097152 * 2) by (apply Rmult_le_compat; lra). lra. }
+  assert (S1 : Rabs (ra + z) <= Mj + / 65536).
+  { replace (ra + z) with ((a0 + t * D) + (ra + z - (a0 + t * D))) by ring.
+    eapply Rle_trans; [apply Rabs_triang|]. lra. }
+  assert (F : Rabs (nj - (ra + z)) <= v * Mj + / 65536 * v + eta).
+  { assert (v * Rabs (ra + z) <= v * (Mj + / 65536)) by (apply Rmult_le_compat_l; lra). lra. }
+  replace (nj - (a0 + t * D)) with ((nj - (ra + z)) + (ra + z - (a0 + t * D))) by ring.
+  eapply Rle_trans; [apply Rabs_triang|].
+  assert (0 <= v * Rabs D) by (apply Rmult_le_pos; lra).
+  assert (0 <= d * Rabs D) by (apply Rmult_le_pos; lra).
+  assert (0 <= v * Mj) by (apply Rmult_le_pos; lra).
+  fold Mj. lra.
+Qed.
+
+Lemma prod_le : forall X Y x y, Rabs X <= x -> Rabs Y <= y -> Rabs (X * Y) <= x * y.
+Proof.
+  intros X Y x y HX HY. rewrite Rabs_mult.
+  apply Rmult_le_compat; try apply Rabs_pos; assumption.
+Qed.
+
+(** ** One component of the lerp, with the mixture weights *)
+
+Lemma ld_comp : forall v d eta m i a0 b0 ra rb th w y1 y2 nj,
+  small_ok v eta -> small_ok d eta -> 1 <= m <= 16777216 -> 0 <= i <= m ->
+  Rabs a0 <= 1 -> Rabs b0 <= 1 ->
+  ap1 v eta ra a0 -> ap1 v eta rb b0 -> ap1 d eta th (i / m) -> ap1 v eta w (1 - th) ->
+  ap1 v eta y1 (w * ra) -> ap1 v eta y2 (th * rb) -> ap1 v eta nj (y1 + y2) ->
+  Rabs (nj - (a0 + i / m * (b0 - a0))) <=
+    v * (4 * ((1 - i / m) * Rabs a0 + i / m * Rabs b0) + 0 * Rabs (b0 - a0) + / 32768)
+    + d * (0 * ((1 - i / m) * Rabs a0 + i / m * Rabs b0) + 1001 / 1000 * Rabs (b0 - a0)
+           + / 32768).
+Proof.
+  intros v d eta m i a0 b0 ra rb th w y1 y2 nj Hv Hd Hm Hi Ha0 Hb0 Hra Hrb Hth Hw Hy1 Hy2 Hnj.
+  pose proof (v_pos v eta Hv). pose proof (v_small v eta Hv).
+  pose proof (v_pos d eta Hd). pose proof (v_small d eta Hd).
+  pose proof (e_pos v eta Hv). pose proof (e_small v eta Hv).
+  pose proof (Rabs_pos a0). pose proof (Rabs_pos b0).
+  pose proof (hc_t m i ltac:(lra) Hi) as Ht.
+  set (t := i / m) in *.
+  set (D := b0 - a0) in *.
+  pose proof (Rabs_pos D).
+  assert (HD2 : Rabs D <= 2) by (unfold D; pose proof (absdiff b0 a0); lra).
+  set (Mj := (1 - t) * Rabs a0 + t * Rabs b0).
+  unfold ap1 in Hra, Hrb, Hth, Hw, Hy1, Hy2, Hnj.
+  rewrite (Rabs_pos_eq t) in Hth by lra.
+  assert (A1 : v * Rabs a0 <= v) by (pose proof (Rmult_le_compat_l v _ _ ltac:(lra) Ha0); lra).
+  assert (B1 : v * Rabs b0 <= v) by (pose proof (Rmult_le_compat_l v _ _ ltac:(lra) Hb0); lra).
+  assert (E1 : eta * Rabs a0 <= eta) by (pose proof (Rmult_le_compat_l eta _ _ ltac:(lra) Ha0); lra).
+  assert (E2 : eta * Rabs b0 <= eta) by (pose proof (Rmult_le_compat_l eta _ _ ltac:(lra) Hb0); lra).
+  assert (P1 : 0 <= v * t) by (apply Rmult_le_pos; lra).
+  assert (P2 : v * t <= v) by (pose proof (Rmult_le_compat_l v t 1 ltac:(lra) ltac:(lra)); lra).
+  assert (P3 : d * t <= d) by (pose proof (Rmult_le_compat_l d t 1 ltac:(lra) ltac:(lra)); lra).
+  assert (P4 : 0 <= d * t) by (apply Rmult_le_pos; lra).
+  assert (P5 : d * t * Rabs D <= d * Rabs D)
+    by (apply Rmult_le_compat_r; [apply Rabs_pos | lra]).
+  assert (P6 : 0 <= v * t * Rabs a0) by (apply Rmult_le_pos; lra).
+  assert (P7 : 0 <= v * t * Rabs b0) by (apply Rmult_le_pos; lra).
+  assert (P8 : 0 <= v * Rabs a0) by (apply Rmult_le_pos; lra).
+  assert (P9 : 0 <= v * Rabs b0) by (apply Rmult_le_pos; lra).
+  assert (P10 : 0 <= d * Rabs D) by (apply Rmult_le_pos; lra).
+  assert (P11 : eta * Rabs D <= eta * 2) by (apply Rmult_le_compat_l; lra).
+  assert (P12 : d * Rabs D <= / 2097152 * 2) by (apply Rmult_le_compat; lra).
+  assert (P13 : v * t * Rabs b0 <= v * Rabs b0)
+    by (apply Rmult_le_compat_r; [apply Rabs_pos | lra]).
+  assert (P14 : v * t * Rabs a0 <= v * Rabs a0)
+    by (apply Rmult_le_compat_r; [apply Rabs_pos | lra]).
+  (* t^ and 1 - t^ *)
+  assert (Tau : Rabs (th - t) <= d * t + eta) by lra.
+  assert (W1 : Rabs (1 - th) <= (1 - t) + d * t + eta).
+  { replace (1 - th) with ((1 - t) - (th - t)) by ring.
+    eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_Ropp, (Rabs_pos_eq (1 - t)) by lra. lra. }
+  assert (Om : Rabs (w - (1 - th)) <= v * (1 - t) + / 1048576 * v + eta).
+  { assert (v * Rabs (1 - th) <= v * ((1 - t) + d * t + eta)) by (apply Rmult_le_compat_l; lra).
+    assert (v * (d * t + eta) <= v * / 1048576) by (apply Rmult_le_compat_l; lra). lra. }
+  assert (Ra : Rabs ra <= Rabs a0 + / 1048576).
+  { pose proof (abs_near _ _ _ Hra). lra. }
+  assert (Rb : Rabs rb <= Rabs b0 + / 1048576).
+  { pose proof (abs_near _ _ _ Hrb). lra. }
+  assert (Rd : Rabs (rb - ra) <= Rabs D + / 524288).
+  { replace (rb - ra) with (D + (rb - b0) - (ra - a0)) by (unfold D; ring).
+    eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_Ropp.
+    eapply Rle_trans; [apply Rplus_le_compat_r, Rabs_triang|]. lra. }
+  (* the pieces *)
+  assert (X1 : Rabs ((w - (1 - th)) * ra) <= v * ((1 - t) * Rabs a0) + / 131072 * v + 2 * eta).
+  { eapply Rle_trans; [apply (prod_le _ _ _ _ Om Ra)|]. lra. }
+  assert (X2 : Rabs ((th - t) * (rb - ra)) <= d * Rabs D + / 262144 * d + 3 * eta).
+  { eapply Rle_trans; [apply (prod_le _ _ _ _ Tau Rd)|]. lra. }
+  assert (Wb : Rabs w <= (1 - t) + / 524288).
+  { replace w with ((1 - t) + (w - (1 - th)) - (th - t)) by ring.
+    eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_Ropp.
+    eapply Rle_trans; [apply Rplus_le_compat_r, Rabs_triang|].
+    rewrite (Rabs_pos_eq (1 - t)) by lra. lra. }
+  assert (Thb : Rabs th <= t + / 524288).
+  { replace th with (t + (th - t)) by ring.
+    eapply Rle_trans; [apply Rabs_triang|]. rewrite (Rabs_pos_eq t) by lra. lra. }
+  assert (X3 : Rabs (y1 - w * ra) <= v * ((1 - t) * Rabs a0) + / 262144 * v + eta).
+  { pose proof (prod_le _ _ _ _ Wb Ra) as Q.
+    assert (v * Rabs (w * ra) <= v * (((1 - t) + / 524288) * (Rabs a0 + / 1048576)))
+      by (apply Rmult_le_compat_l; lra). lra. }
+  assert (X4 : Rabs (y2 - th * rb) <= v * (t * Rabs b0) + / 262144 * v + eta).
+  { pose proof (prod_le _ _ _ _ Thb Rb) as Q.
+    assert (v * Rabs (th * rb) <= v * ((t + / 524288) * (Rabs b0 + / 1048576)))
+      by (apply Rmult_le_compat_l; lra). lra. }
+  assert (AB : Rabs ((1 - t) * (ra - a0) + t * (rb - b0)) <= v * Mj + eta).
+  { eapply Rle_trans; [apply Rabs_triang|].
+    rewrite !Rabs_mult, (Rabs_pos_eq (1 - t)), (Rabs_pos_eq t) by lra.
+    assert ((1 - t) * Rabs (ra - a0) <= (1 - t) * (v * Rabs a0 + eta))
+      by (apply Rmult_le_compat_l; lra).
+    assert (t * Rabs (rb - b0) <= t * (v * Rabs b0 + eta)) by (apply Rmult_le_compat_l; lra).
+    unfold Mj. lra. }
+  assert (EN : y1 + y2 - (a0 + t * D)
+               = (y1 - w * ra) + (y2 - th * rb) + ((1 - t) * (ra - a0) + t * (rb - b0))
+                 + (w - (1 - th)) * ra + (th - t) * (rb - ra)) by (unfold D; ring).
+  assert (T5 : forall a1 a2 a3 a4 a5 : R,
+    Rabs (a1 + a2 + a3 + a4 + a5) <= Rabs a1 + Rabs a2 + Rabs a3 + Rabs a4 + Rabs a5).
+  { intros. repeat (eapply Rle_trans; [apply Rabs_triang | apply Rplus_le_compat_r]); lra. }
+  assert (HMa : v * Mj = v * ((1 - t) * Rabs a0) + v * (t * Rabs b0)) by (unfold Mj; ring).
+  assert (F1 : Rabs (y1 + y2 - (a0 + t * D))
+               <= 2 * (v * ((1 - t) * Rabs a0)) + v * (t * Rabs b0) + v * Mj + d * Rabs D
+                  + / 65536 * v + / 262144 * d + 8 * eta).
+  { rewrite EN. eapply Rle_trans; [apply T5|]. lra. }
+  assert (Nn : Rabs (a0 + t * D) <= Mj).
+  { replace (a0 + t * D) with ((1 - t) * a0 + t * b0) by (unfold D; ring).
+    eapply Rle_trans; [apply Rabs_triang|].
+    rewrite !Rabs_mult, (Rabs_pos_eq (1 - t)), (Rabs_pos_eq t) by lra. unfold Mj. lra. }
+  assert (HM : 0 <= Mj <= 1).
+  { split; [unfold Mj; apply Rplus_le_le_0_compat; apply Rmult_le_pos; lra
+           | apply mix_le; lra]. }
+  assert (VM : v * Mj <= v) by (pose proof (Rmult_le_compat_l v _ _ ltac:(lra) (proj2 HM)); lra).
+  assert (0 <= v * Mj) by (apply Rmult_le_pos; lra).
+  assert (V1 : v * ((1 - t) * Rabs a0) <= v * Mj).
+  { apply Rmult_le_compat_l; [lra|]. unfold Mj.
+    pose proof (Rmult_le_pos t (Rabs b0) ltac:(lra) ltac:(lra)). lra. }
+  assert (V2 : v * (t * Rabs b0) <= v * Mj).
+  { apply Rmult_le_compat_l; [lra|]. unfold Mj.
+    pose proof (Rmult_le_pos (1 - t) (Rabs a0) ltac:(lra) ltac:(lra)). lra. }
+  assert (S1 : Rabs (y1 + y2) <= Mj + / 262144).
+  { replace (y1 + y2) with ((a0 + t * D) + (y1 + y2 - (a0 + t * D))) by ring.
+    eapply Rle_trans; [apply Rabs_triang|]. lra. }
+  assert (F : Rabs (nj - (y1 + y2)) <= v * Mj + / 262144 * v + eta).
+  { assert (v * Rabs (y1 + y2) <= v * (Mj + / 262144)) by (apply Rmult_le_compat_l; lra). lra. }
+  replace (nj - (a0 + t * D)) with ((nj - (y1 + y2)) + (y1 + y2 - (a0 + t * D))) by ring.
+  eapply Rle_trans; [apply Rabs_triang|].
+  fold Mj. lra.
+Qed.
+
+(** ** The dot products of a computed normal within the mixture weights *)
+
+Lemma wM_sum : forall (a b X : vec) (t c1 c2 dd : R), 0 <= t <= 1 -> 0 <= c1 -> 0 <= c2 ->
+  Rabs (vx a) * Rabs (vx X) + Rabs (vy a) * Rabs (vy X) + Rabs (vz a) * Rabs (vz X) <= 1 ->
+  Rabs (vx b) * Rabs (vx X) + Rabs (vy b) * Rabs (vy X) + Rabs (vz b) * Rabs (vz X) <= 1 ->
+  Rabs (vx (vsub b a)) * Rabs (vx X) + Rabs (vy (vsub b a)) * Rabs (vy X)
+    + Rabs (vz (vsub b a)) * Rabs (vz X) <= dd ->
+  vbounded X 1 ->
+  vx (wM a b t c1 c2) * Rabs (vx X) + vy (wM a b t c1 c2) * Rabs (vy X)
+    + vz (wM a b t c1 c2) * Rabs (vz X) <= c1 + c2 * dd + 3 / 32768.
+Proof.
+  intros a b X t c1 c2 dd Ht H1 H2 HA HB HD [X1 [X2 X3]].
+  unfold vsub in HD; cbn [vx vy vz] in HD. unfold wM; cbn [vx vy vz].
+  set (SA := Rabs (vx a) * Rabs (vx X) + Rabs (vy a) * Rabs (vy X) + Rabs (vz a) * Rabs (vz X))
+    in *.
+  set (SB := Rabs (vx b) * Rabs (vx X) + Rabs (vy b) * Rabs (vy X) + Rabs (vz b) * Rabs (vz X))
+    in *.
+  set (SD := Rabs (vx b - vx a) * Rabs (vx X) + Rabs (vy b - vy a) * Rabs (vy X)
+             + Rabs (vz b - vz a) * Rabs (vz X)) in *.
+  assert (M1 : c1 * ((1 - t) * SA + t * SB) <= c1 * 1)
+    by (apply Rmult_le_compat_l; [lra | apply mix_le; lra]).
+  assert (M2 : c2 * SD <= c2 * dd) by (apply Rmult_le_compat_l; lra).
+  pose proof (Rabs_pos (vx X)). pose proof (Rabs_pos (vy X)). pose proof (Rabs_pos (vz X)).
+  unfold SA, SB, SD in *. lra.
+Qed.
+
+Lemma wM_wb16 : forall (a b : vec) (t c1 c2 : R), 0 <= t <= 1 -> 0 <= c1 <= 4 -> 0 <= c2 <= 3 ->
+  vbounded a 1 -> vbounded b 1 -> wb16 (wM a b t c1 c2).
+Proof.
+  intros a b t c1 c2 Ht Hc1 Hc2 [A1 [A2 A3]] [B1 [B2 B3]].
+  assert (G : forall x y, Rabs x <= 1 -> Rabs y <= 1 ->
+    0 <= c1 * ((1 - t) * Rabs x + t * Rabs y) + c2 * Rabs (y - x) + / 32768 <= 16).
+  { intros x y Hx Hy. pose proof (Rabs_pos x). pose proof (Rabs_pos y).
+    pose proof (Rabs_pos (y - x)). pose proof (absdiff y x).
+    assert (0 <= (1 - t) * Rabs x + t * Rabs y <= 1).
+    { split; [apply Rplus_le_le_0_compat; apply Rmult_le_pos; lra | apply mix_le; lra]. }
+    assert (0 <= c1 * ((1 - t) * Rabs x + t * Rabs y) <= 4 * 1)
+      by (split; [apply Rmult_le_pos | apply Rmult_le_compat]; lra).
+    assert (0 <= c2 * Rabs (y - x) <= 3 * 2)
+      by (split; [apply Rmult_le_pos | apply Rmult_le_compat]; lra).
+    lra. }
+  unfold wb16, wM; cbn [vx vy vz]. repeat split; apply G; assumption.
+Qed.
+
+Lemma pd_tail : forall (v d eta : R) (s : span) (nh l : vec) (t ph qh dd c1 c2 c3 : R),
+  small_ok v eta -> small_ok d eta ->
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) -> 0 <= t <= 1 ->
+  0 <= dd -> dot (vsub (Nb s) (Na s)) (vsub (Nb s) (Na s)) <= dd * dd ->
+  0 <= c1 <= 4 -> 0 <= c2 <= 3 -> 0 <= c3 <= 3 ->
+  vap1 v eta l (L s) ->
+  vapprox 1 1 nh (nrm s t) (vlin v d (wM (Na s) (Nb s) t c1 c2) (wM (Na s) (Nb s) t 0 c3)) ->
+  fdot_rel v v eta nh l ph -> fdot_rel v v eta nh nh qh ->
+  Rabs (ph - dot (nrm s t) (L s)) <= (c1 + c2 * dd + 402 / 100) * v + (c3 * dd + 2 / 100) * d /\
+  Rabs (qh - dot (nrm s t) (nrm s t))
+    <= (2 * c1 + 2 * c2 * dd + 302 / 100) * v + (2 * c3 * dd + 2 / 100) * d.
+Proof.
+  intros v d eta s nh l t ph qh dd c1 c2 c3 Hv Hd Ha Hb Hl Ht Hdd HD Hc1 Hc2 Hc3 Inl VN Hp Hq.
+  destruct (pp_ni s t Ha Hb Ht) as [NB [NX NN]].
+  assert (Q : dot (nrm s t) (nrm s t) <= 1).
+  { unfold dot. rewrite <- (abs_sq (vx (nrm s t))), <- (abs_sq (vy (nrm s t))),
+      <- (abs_sq (vz (nrm s t))). lra. }
+  pose proof (NX _ Hl) as NL. pose proof (NX _ Ha) as NA. pose proof (NX _ Hb) as NBb.
+  pose proof (unit_pair _ _ Ha Hl) as AL. pose proof (unit_pair _ _ Hb Hl) as BL.
+  pose proof (cs_abs _ _ dd Hdd HD (Req_le _ _ Hl)) as DL.
+  pose proof (cs_abs _ _ dd Hdd HD Q) as DN.
+  destruct (unit_bounded _ Hl) as [L1 [L2 L3]].
+  destruct NB as [N1 [N2 N3]].
+  pose proof (wM_wb16 _ _ t c1 c2 Ht Hc1 Hc2 (unit_bounded _ Ha) (unit_bounded _ Hb)) as Wv.
+  pose proof (wM_wb16 _ _ t 0 c3 Ht ltac:(lra) Hc3 (unit_bounded _ Ha) (unit_bounded _ Hb)) as Wd.
+  assert (W0 : wb16 vzero) by (unfold wb16, vzero; cbn [vx vy vz]; repeat split; lra).
+  assert (WL : wb16 (Float.wIn (L s))).
+  { unfold wb16, Float.wIn; cbn [vx vy vz].
+    pose proof (Rabs_pos (vx (L s))). pose proof (Rabs_pos (vy (L s))).
+    pose proof (Rabs_pos (vz (L s))). repeat split; lra. }
+  pose proof (Rabs_pos (vx (L s))). pose proof (Rabs_pos (vy (L s))).
+  pose proof (Rabs_pos (vz (L s))). pose proof (Rabs_pos (vx (nrm s t))).
+  pose proof (Rabs_pos (vy (nrm s t))). pose proof (Rabs_pos (vz (nrm s t))).
+  assert (NB1 : vbounded (nrm s t) 1) by (repeat split; assumption).
+  (* the weighted sums against L and against N *)
+  pose proof (wM_sum _ _ _ t c1 c2 dd Ht ltac:(lra) ltac:(lra) AL BL DL (unit_bounded _ Hl)) as SL1.
+  pose proof (wM_sum _ _ _ t 0 c3 dd Ht ltac:(lra) ltac:(lra) AL BL DL (unit_bounded _ Hl)) as SL2.
+  assert (NA' : Rabs (vx (Na s)) * Rabs (vx (nrm s t)) + Rabs (vy (Na s)) * Rabs (vy (nrm s t))
+                + Rabs (vz (Na s)) * Rabs (vz (nrm s t)) <= 1) by lra.
+  assert (NB' : Rabs (vx (Nb s)) * Rabs (vx (nrm s t)) + Rabs (vy (Nb s)) * Rabs (vy (nrm s t))
+                + Rabs (vz (Nb s)) * Rabs (vz (nrm s t)) <= 1) by lra.
+  pose proof (wM_sum _ _ _ t c1 c2 dd Ht ltac:(lra) ltac:(lra) NA' NB' DN NB1) as SN1.
+  pose proof (wM_sum _ _ _ t 0 c3 dd Ht ltac:(lra) ltac:(lra) NA' NB' DN NB1) as SN2.
+  split.
+  - pose proof (pp_dot v d eta 1 1 ph 1 (c1 + c2 * dd + 402 / 100) (c3 * dd + 2 / 100)
+      nh l (nrm s t) (L s) _ _ _ _ Hv Hd Hp ltac:(lra) ltac:(lra) ltac:(lra) VN
+      (K_in_vec v d eta Hv _ _ Inl) (vb12 _ NB1) (vb12 _ (unit_bounded _ Hl)) Wv Wd WL W0) as HD2.
+    rewrite !Rmult_1_l in HD2. apply HD2; [lra | lra | |].
+    + unfold wsum0, Float.wIn; cbn [vx vy vz]. lra.
+    + unfold wsum0, vzero; cbn [vx vy vz]. lra.
+  - pose proof (pp_dot v d eta 1 1 qh 1 (2 * c1 + 2 * c2 * dd + 302 / 100) (2 * c3 * dd + 2 / 100)
+      nh nh (nrm s t) (nrm s t) _ _ _ _ Hv Hd Hq ltac:(lra) ltac:(lra) ltac:(lra) VN VN
+      (vb12 _ NB1) (vb12 _ NB1) Wv Wd Wv Wd) as HD2.
+    rewrite !Rmult_1_l in HD2. apply HD2; [lra | lra | |].
+    + unfold wsum0; cbn [vx vy vz]. lra.
+    + unfold wsum0; cbn [vx vy vz]. lra.
+Qed.
+
+(** ** The per-pixel normal and the lerp *)
+
+Definition Ddist (s : span) (dd : R) : Prop :=
+  0 <= dd <= 2 /\ dot (vsub (Nb s) (Na s)) (vsub (Nb s) (Na s)) <= dd * dd.
+
+Lemma pd_core : forall (v d eta dd : R) (s : span) (na nb l kk nh : vec) (i : nat)
+  (tx ty tz zx zy zz ph qh : R),
+  small_ok v eta -> small_ok d eta -> Ddist s dd ->
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  (1 <= n s)%nat -> INR (n s) <= 16777216 -> (i <= n s)%nat ->
+  vap1 v eta na (Na s) -> vap1 v eta nb (Nb s) -> vap1 v eta l (L s) ->
+  ap1 v eta tx (vx nb - vx na) -> ap1 d eta (vx kk) (tx / INR (n s)) ->
+  ap1 v eta ty (vy nb - vy na) -> ap1 d eta (vy kk) (ty / INR (n s)) ->
+  ap1 v eta tz (vz nb - vz na) -> ap1 d eta (vz kk) (tz / INR (n s)) ->
+  ap1 v eta zx (INR i * vx kk) -> ap1 v eta (vx nh) (vx na + zx) ->
+  ap1 v eta zy (INR i * vy kk) -> ap1 v eta (vy nh) (vy na + zy) ->
+  ap1 v eta zz (INR i * vz kk) -> ap1 v eta (vz nh) (vz na + zz) ->
+  fdot_rel v v eta nh l ph -> fdot_rel v v eta nh nh qh ->
+  Rabs (ph - p s (INR i)) <= (2 + 2001 / 1000 * dd + 402 / 100) * v
+                             + (1001 / 1000 * dd + 2 / 100) * d /\
+  Rabs (qh - q s (INR i)) <= (2 * 2 + 2 * (2001 / 1000) * dd + 302 / 100) * v
+                             + (2 * (1001 / 1000) * dd + 2 / 100) * d.
+Proof.
+  intros v d eta dd s na nb l kk nh i tx ty tz zx zy zz ph qh Hv Hd [Hdd HD] Ha Hb Hl Hn1 Hn2 Hi
+    Ina Inb Inl Htx Hkx Hty Hky Htz Hkz Hzx Hnx Hzy Hny Hzz Hnz Hp Hq.
+  assert (Hn0 : (n s <> 0)%nat) by lia.
+  assert (Hm : 1 <= INR (n s) <= 16777216) by (split; [apply (le_INR 1); exact Hn1 | exact Hn2]).
+  assert (Hii : 0 <= INR i <= INR (n s)) by (split; [apply pos_INR | apply le_INR; exact Hi]).
+  pose proof (hc_t (INR (n s)) (INR i) ltac:(lra) Hii) as Ht.
+  destruct (unit_bounded _ Ha) as [A1 [A2 A3]].
+  destruct (unit_bounded _ Hb) as [B1 [B2 B3]].
+  destruct Ina as [Ia1 [Ia2 Ia3]]. destruct Inb as [Ib1 [Ib2 Ib3]].
+  assert (VN : vapprox 1 1 nh (nrm s (INR i / INR (n s)))
+                 (vlin v d (wM (Na s) (Nb s) (INR i / INR (n s)) 2 (2001 / 1000))
+                           (wM (Na s) (Nb s) (INR i / INR (n s)) 0 (1001 / 1000)))).
+  { unfold vapprox, vlin, wM, nrm, vadd, vscale, vsub; cbn [vx vy vz]. rewrite !Rmult_1_l.
+    repeat split; eapply pd_comp; eassumption. }
+  rewrite pp_p_form, pp_q_form by exact Hn0.
+  exact (pd_tail v d eta s nh l _ ph qh dd 2 (2001 / 1000) (1001 / 1000) Hv Hd Ha Hb Hl Ht (proj1 Hdd) HD
+           ltac:(lra) ltac:(lra) ltac:(lra) Inl VN Hp Hq).
+Qed.
+
+Lemma ld_core : forall (v d eta dd : R) (s : span) (na nb l nh : vec) (i : nat)
+  (th wx wy wz ax ay az bx by_ bz ph qh : R),
+  small_ok v eta -> small_ok d eta -> Ddist s dd ->
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  (1 <= n s)%nat -> INR (n s) <= 16777216 -> (i <= n s)%nat ->
+  vap1 v eta na (Na s) -> vap1 v eta nb (Nb s) -> vap1 v eta l (L s) ->
+  ap1 d eta th (INR i / INR (n s)) ->
+  ap1 v eta wx (1 - th) -> ap1 v eta ax (wx * vx na) -> ap1 v eta bx (th * vx nb) ->
+  ap1 v eta (vx nh) (ax + bx) ->
+  ap1 v eta wy (1 - th) -> ap1 v eta ay (wy * vy na) -> ap1 v eta by_ (th * vy nb) ->
+  ap1 v eta (vy nh) (ay + by_) ->
+  ap1 v eta wz (1 - th) -> ap1 v eta az (wz * vz na) -> ap1 v eta bz (th * vz nb) ->
+  ap1 v eta (vz nh) (az + bz) ->
+  fdot_rel v v eta nh l ph -> fdot_rel v v eta nh nh qh ->
+  Rabs (ph - p s (INR i)) <= (4 + 0 * dd + 402 / 100) * v + (1001 / 1000 * dd + 2 / 100) * d /\
+  Rabs (qh - q s (INR i)) <= (2 * 4 + 2 * 0 * dd + 302 / 100) * v
+                             + (2 * (1001 / 1000) * dd + 2 / 100) * d.
+Proof.
+  intros v d eta dd s na nb l nh i th wx wy wz ax ay az bx by_ bz ph qh Hv Hd [Hdd HD]
+    Ha Hb Hl Hn1 Hn2 Hi Ina Inb Inl Hth Hwx Hax Hbx Hnx Hwy Hay Hby Hny Hwz Haz Hbz Hnz Hp Hq.
+  assert (Hn0 : (n s <> 0)%nat) by lia.
+  assert (Hm : 1 <= INR (n s) <= 16777216) by (split; [apply (le_INR 1); exact Hn1 | exact Hn2]).
+  assert (Hii : 0 <= INR i <= INR (n s)) by (split; [apply pos_INR | apply le_INR; exact Hi]).
+  pose proof (hc_t (INR (n s)) (INR i) ltac:(lra) Hii) as Ht.
+  destruct (unit_bounded _ Ha) as [A1 [A2 A3]].
+  destruct (unit_bounded _ Hb) as [B1 [B2 B3]].
+  destruct Ina as [Ia1 [Ia2 Ia3]]. destruct Inb as [Ib1 [Ib2 Ib3]].
+  assert (VN : vapprox 1 1 nh (nrm s (INR i / INR (n s)))
+                 (vlin v d (wM (Na s) (Nb s) (INR i / INR (n s)) 4 0)
+                           (wM (Na s) (Nb s) (INR i / INR (n s)) 0 (1001 / 1000)))).
+  { unfold vapprox, vlin, wM, nrm, vadd, vscale, vsub; cbn [vx vy vz]. rewrite !Rmult_1_l.
+    repeat split.
+    - exact (ld_comp v d eta _ _ _ _ _ _ _ _ _ _ _ Hv Hd Hm Hii A1 B1 Ia1 Ib1 Hth Hwx Hax Hbx Hnx).
+    - exact (ld_comp v d eta _ _ _ _ _ _ _ _ _ _ _ Hv Hd Hm Hii A2 B2 Ia2 Ib2 Hth Hwy Hay Hby Hny).
+    - exact (ld_comp v d eta _ _ _ _ _ _ _ _ _ _ _ Hv Hd Hm Hii A3 B3 Ia3 Ib3 Hth Hwz Haz Hbz Hnz). }
+  rewrite pp_p_form, pp_q_form by exact Hn0.
+  exact (pd_tail v d eta s nh l _ ph qh dd 4 0 (1001 / 1000) Hv Hd Ha Hb Hl Ht (proj1 Hdd) HD
+           ltac:(lra) ltac:(lra) ltac:(lra) Inl VN Hp Hq).
+Qed.
+
+(** ** With the model's operations *)
+
+Lemma dd_fin : forall (u K1 kd dd A0 A1 B0 B1 a0 a1 b0 b1 E : R),
+  0 < u -> 1 <= K1 -> 1 <= kd -> 0 <= dd -> A0 <= a0 -> A1 <= a1 -> B0 <= b0 -> B1 <= b1 ->
+  0 <= A1 -> 0 <= B1 ->
+  E <= (A0 + A1 * dd) * (K1 * u) + (B1 * dd + B0) * (kd * u) ->
+  E <= ((a0 + a1 * dd) * K1 + (b0 + b1 * dd) * kd) * u.
+Proof.
+  intros u K1 kd dd A0 A1 B0 B1 a0 a1 b0 b1 E Hu HK Hk Hd H1 H2 H3 H4 H5 H6 HE.
+  eapply Rle_trans; [exact HE|].
+  assert (P1 : 0 <= K1 * u) by (apply Rmult_le_pos; lra).
+  assert (P2 : 0 <= kd * u) by (apply Rmult_le_pos; lra).
+  assert (Q1 : (A0 + A1 * dd) <= (a0 + a1 * dd)).
+  { assert (A1 * dd <= a1 * dd) by (apply Rmult_le_compat_r; lra). lra. }
+  assert (Q2 : (B1 * dd + B0) <= (b0 + b1 * dd)).
+  { assert (B1 * dd <= b1 * dd) by (apply Rmult_le_compat_r; lra). lra. }
+  assert ((A0 + A1 * dd) * (K1 * u) <= (a0 + a1 * dd) * (K1 * u))
+    by (apply Rmult_le_compat_r; lra).
+  assert ((B1 * dd + B0) * (kd * u) <= (b0 + b1 * dd) * (kd * u))
+    by (apply Rmult_le_compat_r; lra).
+  lra.
+Qed.
+
+Lemma dd_fin2 : forall (u K1 kd dd A0 A1 A2 B0 B1 B2 a0 a1 a2 b0 b1 b2 E : R),
+  0 < u -> 1 <= K1 -> 1 <= kd -> 0 <= dd -> A0 <= a0 -> A1 <= a1 -> A2 <= a2 ->
+  B0 <= b0 -> B1 <= b1 -> B2 <= b2 ->
+  E <= (A0 + A1 * dd + A2 * dd * dd) * (K1 * u) + (B0 + B1 * dd + B2 * dd * dd) * (kd * u) ->
+  E <= ((a0 + a1 * dd + a2 * dd * dd) * K1 + (b0 + b1 * dd + b2 * dd * dd) * kd) * u.
+Proof.
+  intros u K1 kd dd A0 A1 A2 B0 B1 B2 a0 a1 a2 b0 b1 b2 E Hu HK Hk Hd H1 H2 H3 H4 H5 H6 HE.
+  eapply Rle_trans; [exact HE|].
+  assert (P1 : 0 <= K1 * u) by (apply Rmult_le_pos; lra).
+  assert (P2 : 0 <= kd * u) by (apply Rmult_le_pos; lra).
+  assert (D2 : 0 <= dd * dd) by (apply Rmult_le_pos; lra).
+  assert (Q1 : A0 + A1 * dd + A2 * dd * dd <= a0 + a1 * dd + a2 * dd * dd).
+  { assert (A1 * dd <= a1 * dd) by (apply Rmult_le_compat_r; lra).
+    assert (A2 * (dd * dd) <= a2 * (dd * dd)) by (apply Rmult_le_compat_r; lra). nra. }
+  assert (Q2 : B0 + B1 * dd + B2 * dd * dd <= b0 + b1 * dd + b2 * dd * dd).
+  { assert (B1 * dd <= b1 * dd) by (apply Rmult_le_compat_r; lra).
+    assert (B2 * (dd * dd) <= b2 * (dd * dd)) by (apply Rmult_le_compat_r; lra). nra. }
+  assert ((A0 + A1 * dd + A2 * dd * dd) * (K1 * u) <= (a0 + a1 * dd + a2 * dd * dd) * (K1 * u))
+    by (apply Rmult_le_compat_r; lra).
+  assert ((B0 + B1 * dd + B2 * dd * dd) * (kd * u) <= (b0 + b1 * dd + b2 * dd * dd) * (kd * u))
+    by (apply Rmult_le_compat_r; lra).
+  lra.
+Qed.
+
+Lemma pixel_model_d : forall (M : fmodel) (K K1 kd dd : R), model_ok M K ->
+  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 ->
+  1 <= kd -> kd * m_u M <= / 2097152 ->
+  forall (s : span) (na nb l kk : vec) (i : nat) (ph qh : R) (tx ty tz : R),
+  Ddist s dd -> is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  (1 <= n s)%nat -> INR (n s) <= 16777216 -> (i <= n s)%nat ->
+  vap M na (Na s) -> vap M nb (Nb s) -> vap M l (L s) ->
+  ap_add M tx (vx nb - vx na) -> ap1 (kd * m_u M) (m_eta M) (vx kk) (tx / INR (n s)) ->
+  ap_add M ty (vy nb - vy na) -> ap1 (kd * m_u M) (m_eta M) (vy kk) (ty / INR (n s)) ->
+  ap_add M tz (vz nb - vz na) -> ap1 (kd * m_u M) (m_eta M) (vz kk) (tz / INR (n s)) ->
+  pixel_ok M i na l kk ph qh ->
+  Rabs (ph - p s (INR i)) <= ((602 / 100 + 201 / 100 * dd) * K1
+                              + (2 / 100 + 101 / 100 * dd) * kd) * m_u M /\
+  Rabs (qh - q s (INR i)) <= ((702 / 100 + 401 / 100 * dd + 0 * dd * dd) * K1
+                              + (2 / 100 + 201 / 100 * dd + 0 * dd * dd) * kd) * m_u M.
+Proof.
+  intros M K K1 kd dd HM HK1 Hin Hadd Hmul Hkd1 Hkd2 s na nb l kk i ph qh tx ty tz
+    HDd Ha Hb Hl Hn1 Hn2 Hi Ina Inb Inl Htx Hkx Hty Hky Htz Hkz
+    (nh & (zx & Hzx & Hnx) & (zy & Hzy & Hny) & (zz & Hzz & Hnz) & Hp & Hq).
+  pose proof (model_u M K HM) as Hu.
+  pose proof (hm_small M K K1 HM HK1) as Hv.
+  pose proof (hm_small_d M K kd HM Hkd1 Hkd2) as Hd.
+  destruct (pd_core (K1 * m_u M) (kd * m_u M) (m_eta M) dd s na nb l kk nh i tx ty tz zx zy zz
+              ph qh Hv Hd HDd Ha Hb Hl Hn1 Hn2 Hi
+              (hm_vap M K1 _ _ Hu Hin Ina) (hm_vap M K1 _ _ Hu Hin Inb)
+              (hm_vap M K1 _ _ Hu Hin Inl)
+              (hm_ap M _ K1 _ _ Hu Hadd Htx) Hkx (hm_ap M _ K1 _ _ Hu Hadd Hty) Hky
+              (hm_ap M _ K1 _ _ Hu Hadd Htz) Hkz
+              (hm_ap M _ K1 _ _ Hu Hmul Hzx) (hm_ap M _ K1 _ _ Hu Hadd Hnx)
+              (hm_ap M _ K1 _ _ Hu Hmul Hzy) (hm_ap M _ K1 _ _ Hu Hadd Hny)
+              (hm_ap M _ K1 _ _ Hu Hmul Hzz) (hm_ap M _ K1 _ _ Hu Hadd Hnz)
+              (hm_fdot M K1 _ _ _ Hu Hadd Hmul Hp) (hm_fdot M K1 _ _ _ Hu Hadd Hmul Hq)) as [P Q].
+  destruct HDd as [Hdd _].
+  split.
+  - eapply (dd_fin _ K1 kd dd (2 + 402 / 100) (2001 / 1000) (2 / 100) (1001 / 1000));
+      try lra; (eapply Rle_trans; [exact P|]; right; ring).
+  - eapply (dd_fin2 _ K1 kd dd (2 * 2 + 302 / 100) (2 * (2001 / 1000)) 0 (2 / 100)
+      (2 * (1001 / 1000)) 0); try lra; (eapply Rle_trans; [exact Q|]; right; ring).
+Qed.
+
+Lemma lerp_model_d : forall (M : fmodel) (K K1 kd dd : R), model_ok M K ->
+  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 ->
+  1 <= kd -> kd * m_u M <= / 2097152 ->
+  forall (s : span) (na nb l : vec) (i : nat) (th ph qh : R),
+  Ddist s dd -> is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  (1 <= n s)%nat -> INR (n s) <= 16777216 -> (i <= n s)%nat ->
+  vap M na (Na s) -> vap M nb (Nb s) -> vap M l (L s) ->
+  ap1 (kd * m_u M) (m_eta M) th (INR i / INR (n s)) ->
+  lerp_ok M th na nb l ph qh ->
+  Rabs (ph - p s (INR i)) <= ((802 / 100 + 0 * dd) * K1
+                              + (2 / 100 + 101 / 100 * dd) * kd) * m_u M /\
+  Rabs (qh - q s (INR i)) <= ((1102 / 100 + 0 * dd + 0 * dd * dd) * K1
+                              + (2 / 100 + 201 / 100 * dd + 0 * dd * dd) * kd) * m_u M.
+Proof.
+  intros M K K1 kd dd HM HK1 Hin Hadd Hmul Hkd1 Hkd2 s na nb l i th ph qh
+    HDd Ha Hb Hl Hn1 Hn2 Hi Ina Inb Inl Hth
+    (nh & (wx & ax & bx & Hwx & Hax & Hbx & Hnx) & (wy & ay & by_ & Hwy & Hay & Hby & Hny)
+     & (wz & az & bz & Hwz & Haz & Hbz & Hnz) & Hp & Hq).
+  pose proof (model_u M K HM) as Hu.
+  pose proof (hm_small M K K1 HM HK1) as Hv.
+  pose proof (hm_small_d M K kd HM Hkd1 Hkd2) as Hd.
+  destruct (ld_core (K1 * m_u M) (kd * m_u M) (m_eta M) dd s na nb l nh i
+              th wx wy wz ax ay az bx by_ bz ph qh Hv Hd HDd Ha Hb Hl Hn1 Hn2 Hi
+              (hm_vap M K1 _ _ Hu Hin Ina) (hm_vap M K1 _ _ Hu Hin Inb)
+              (hm_vap M K1 _ _ Hu Hin Inl) Hth
+              (hm_ap M _ K1 _ _ Hu Hadd Hwx) (hm_ap M _ K1 _ _ Hu Hmul Hax)
+              (hm_ap M _ K1 _ _ Hu Hmul Hbx) (hm_ap M _ K1 _ _ Hu Hadd Hnx)
+              (hm_ap M _ K1 _ _ Hu Hadd Hwy) (hm_ap M _ K1 _ _ Hu Hmul Hay)
+              (hm_ap M _ K1 _ _ Hu Hmul Hby) (hm_ap M _ K1 _ _ Hu Hadd Hny)
+              (hm_ap M _ K1 _ _ Hu Hadd Hwz) (hm_ap M _ K1 _ _ Hu Hmul Haz)
+              (hm_ap M _ K1 _ _ Hu Hmul Hbz) (hm_ap M _ K1 _ _ Hu Hadd Hnz)
+              (hm_fdot M K1 _ _ _ Hu Hadd Hmul Hp) (hm_fdot M K1 _ _ _ Hu Hadd Hmul Hq)) as [P Q].
+  destruct HDd as [Hdd _].
+  split.
+  - eapply (dd_fin _ K1 kd dd (4 + 402 / 100) 0 (2 / 100) (1001 / 1000));
+      try lra; (eapply Rle_trans; [exact P|]; right; ring).
+  - eapply (dd_fin2 _ K1 kd dd (2 * 4 + 302 / 100) 0 0 (2 / 100)
+      (2 * (1001 / 1000)) 0); try lra; (eapply Rle_trans; [exact Q|]; right; ring).
+Qed.
+
+(** The reciprocal's unit kd = (1 + 2^-20) k_mul + k_div + 2^-36 as in PhongCount.v. *)
+Lemma recip_setup : forall (M : fmodel) (K : R), model_ok M K ->
+  ((1 + / 1048576) * k_mul M + k_div M + / 68719476736) * m_u M <= / 2097152 ->
+  1 <= k_div M ->
+  (forall (m x r y : R), 1 <= m <= 16777216 -> ap_div M r (1 / m) -> ap_mul M y (x * r) ->
+     ap1 (((1 + / 1048576) * k_mul M + k_div M + / 68719476736) * m_u M) (m_eta M) y (x / m)) /\
+  1 <= (1 + / 1048576) * k_mul M + k_div M + / 68719476736.
+Proof.
+  intros M K HM Hkd Hdiv.
+  pose proof HM as (U1 & U2 & U3 & _ & _ & [Km0 _] & [Kd0 Kd1] & K8 & K9).
+  assert (Hu : 0 < m_u M <= / 2097152).
+  { split; [exact U1|]. assert (m_u M <= K * m_u M) by (rewrite <- (Rmult_1_l (m_u M)) at 1;
+      apply Rmult_le_compat_r; lra). lra. }
+  assert (Hdu : k_div M * m_u M <= / 2097152).
+  { assert (k_div M * m_u M <= K * m_u M) by (apply Rmult_le_compat_r; lra). lra. }
+  split.
+  - intros m x r y Hm Hr Hy. apply (recip_ap1 _ _ (k_div M) (k_mul M) _ _ r); assumption.
+  - pose proof (Rmult_le_pos (1 + / 1048576) (k_mul M)); lra.
+Qed.
+
+Lemma div_setup : forall (M : fmodel) (K : R), model_ok M K -> k_div M * m_u M <= / 2097152.
+Proof.
+  intros M K HM. pose proof HM as (_ & _ & _ & _ & _ & _ & [_ Hdk] & _ & H9).
+  assert (k_div M * m_u M <= K * m_u M)
+    by (apply Rmult_le_compat_r; [left; apply (model_u M K HM) | exact Hdk]). lra.
+Qed.
+
+(** Phong, per-pixel normal, one division, with the span's distance dd >= |Nb - Na|. *)
+Theorem phong_pixel_div_dist : forall (M : fmodel) (K K1 : R), model_ok M K ->
+  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 -> 1 <= k_div M ->
+  forall (s : span) (na nb l kk : vec) (i : nat) (ph qh dd : R),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  0 <= dd <= 2 -> dot (vsub (Nb s) (Na s)) (vsub (Nb s) (Na s)) <= dd * dd ->
+  (1 <= n s)%nat -> INR (n s) <= 16777216 -> (i <= n s)%nat ->
+  vap M na (Na s) -> vap M nb (Nb s) -> vap M l (L s) ->
+  kcomp_ok M (INR (n s)) (vx kk) (vx na) (vx nb) ->
+  kcomp_ok M (INR (n s)) (vy kk) (vy na) (vy nb) ->
+  kcomp_ok M (INR (n s)) (vz kk) (vz na) (vz nb) ->
+  pixel_ok M i na l kk ph qh ->
+  Rabs (ph - p s (INR i)) <= ((602 / 100 + 201 / 100 * dd) * K1
+                              + (2 / 100 + 101 / 100 * dd) * k_div M) * m_u M /\
+  Rabs (qh - q s (INR i)) <= ((702 / 100 + 401 / 100 * dd + 0 * dd * dd) * K1
+                              + (2 / 100 + 201 / 100 * dd + 0 * dd * dd) * k_div M) * m_u M.
+Proof.
+  intros M K K1 HM HK1 Hin Hadd Hmul Hdiv s na nb l kk i ph qh dd Ha Hb Hl Hd1 Hd2 Hn1 Hn2 Hi
+    Ina Inb Inl (tx & Htx & Hkx) (ty & Hty & Hky) (tz & Htz & Hkz) H.
+  exact (pixel_model_d M K K1 (k_div M) dd HM HK1 Hin Hadd Hmul Hdiv (div_setup M K HM)
+           s na nb l kk i ph qh tx ty tz (conj Hd1 Hd2) Ha Hb Hl Hn1 Hn2 Hi Ina Inb Inl
+           Htx Hkx Hty Hky Htz Hkz H).
+Qed.
+
+(** The same with k_j = (Nb_j - Na_j) * r, r = 1/n a rounded division. *)
+Theorem phong_pixel_recip_dist : forall (M : fmodel) (K K1 : R), model_ok M K ->
+  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 -> 1 <= k_div M ->
+  ((1 + / 1048576) * k_mul M + k_div M + / 68719476736) * m_u M <= / 2097152 ->
+  forall (s : span) (na nb l kk : vec) (i : nat) (ph qh dd : R),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  0 <= dd <= 2 -> dot (vsub (Nb s) (Na s)) (vsub (Nb s) (Na s)) <= dd * dd ->
+  (1 <= n s)%nat -> INR (n s) <= 16777216 -> (i <= n s)%nat ->
+  vap M na (Na s) -> vap M nb (Nb s) -> vap M l (L s) ->
+  krecip_ok M (INR (n s)) (vx kk) (vx na) (vx nb) ->
+  krecip_ok M (INR (n s)) (vy kk) (vy na) (vy nb) ->
+  krecip_ok M (INR (n s)) (vz kk) (vz na) (vz nb) ->
+  pixel_ok M i na l kk ph qh ->
+  Rabs (ph - p s (INR i)) <= ((602 / 100 + 201 / 100 * dd) * K1
+      + (2 / 100 + 101 / 100 * dd) * ((1 + / 1048576) * k_mul M + k_div M + / 68719476736))
+      * m_u M /\
+  Rabs (qh - q s (INR i)) <= ((702 / 100 + 401 / 100 * dd + 0 * dd * dd) * K1
+      + (2 / 100 + 201 / 100 * dd + 0 * dd * dd)
+        * ((1 + / 1048576) * k_mul M + k_div M + / 68719476736)) * m_u M.
+Proof.
+  intros M K K1 HM HK1 Hin Hadd Hmul Hdiv Hkd s na nb l kk i ph qh dd Ha Hb Hl Hd1 Hd2
+    Hn1 Hn2 Hi Ina Inb Inl (tx & rx & Htx & Hrx & Hkx) (ty & ry & Hty & Hry & Hky)
+    (tz & rz & Htz & Hrz & Hkz) H.
+  destruct (recip_setup M K HM Hkd Hdiv) as [R Hk1].
+  assert (Hm : 1 <= INR (n s) <= 16777216) by (split; [apply (le_INR 1); exact Hn1 | exact Hn2]).
+  exact (pixel_model_d M K K1 _ dd HM HK1 Hin Hadd Hmul Hk1 Hkd s na nb l kk i ph qh tx ty tz
+           (conj Hd1 Hd2) Ha Hb Hl Hn1 Hn2 Hi Ina Inb Inl Htx (R _ _ _ _ Hm Hrx Hkx)
+           Hty (R _ _ _ _ Hm Hry Hky) Htz (R _ _ _ _ Hm Hrz Hkz) H).
+Qed.
+
+(** Phong, lerp, t = i/n one rounded division, with the span's distance. *)
+Theorem phong_lerp_div_dist : forall (M : fmodel) (K K1 : R), model_ok M K ->
+  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 -> 1 <= k_div M ->
+  forall (s : span) (na nb l : vec) (i : nat) (th ph qh dd : R),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  0 <= dd <= 2 -> dot (vsub (Nb s) (Na s)) (vsub (Nb s) (Na s)) <= dd * dd ->
+  (1 <= n s)%nat -> INR (n s) <= 16777216 -> (i <= n s)%nat ->
+  vap M na (Na s) -> vap M nb (Nb s) -> vap M l (L s) ->
+  ap_div M th (INR i / INR (n s)) ->
+  lerp_ok M th na nb l ph qh ->
+  Rabs (ph - p s (INR i)) <= ((802 / 100 + 0 * dd) * K1
+                              + (2 / 100 + 101 / 100 * dd) * k_div M) * m_u M /\
+  Rabs (qh - q s (INR i)) <= ((1102 / 100 + 0 * dd + 0 * dd * dd) * K1
+                              + (2 / 100 + 201 / 100 * dd + 0 * dd * dd) * k_div M) * m_u M.
+Proof.
+  intros M K K1 HM HK1 Hin Hadd Hmul Hdiv s na nb l i th ph qh dd Ha Hb Hl Hd1 Hd2 Hn1 Hn2 Hi
+    Ina Inb Inl Hth H.
+  exact (lerp_model_d M K K1 (k_div M) dd HM HK1 Hin Hadd Hmul Hdiv (div_setup M K HM)
+           s na nb l i th ph qh (conj Hd1 Hd2) Ha Hb Hl Hn1 Hn2 Hi Ina Inb Inl Hth H).
+Qed.
+
+(** The same with t = i * r, r = 1/n a rounded division. *)
+Theorem phong_lerp_recip_dist : forall (M : fmodel) (K K1 : R), model_ok M K ->
+  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 -> 1 <= k_div M ->
+  ((1 + / 1048576) * k_mul M + k_div M + / 68719476736) * m_u M <= / 2097152 ->
+  forall (s : span) (na nb l : vec) (i : nat) (r th ph qh dd : R),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  0 <= dd <= 2 -> dot (vsub (Nb s) (Na s)) (vsub (Nb s) (Na s)) <= dd * dd ->
+  (1 <= n s)%nat -> INR (n s) <= 16777216 -> (i <= n s)%nat ->
+  vap M na (Na s) -> vap M nb (Nb s) -> vap M l (L s) ->
+  ap_div M r (1 / INR (n s)) -> ap_mul M th (INR i * r) ->
+  lerp_ok M th na nb l ph qh ->
+  Rabs (ph - p s (INR i)) <= ((802 / 100 + 0 * dd) * K1
+      + (2 / 100 + 101 / 100 * dd) * ((1 + / 1048576) * k_mul M + k_div M + / 68719476736))
+      * m_u M /\
+  Rabs (qh - q s (INR i)) <= ((1102 / 100 + 0 * dd + 0 * dd * dd) * K1
+      + (2 / 100 + 201 / 100 * dd + 0 * dd * dd)
+        * ((1 + / 1048576) * k_mul M + k_div M + / 68719476736)) * m_u M.
+Proof.
+  intros M K K1 HM HK1 Hin Hadd Hmul Hdiv Hkd s na nb l i r th ph qh dd Ha Hb Hl Hd1 Hd2
+    Hn1 Hn2 Hi Ina Inb Inl Hr Hth H.
+  destruct (recip_setup M K HM Hkd Hdiv) as [R Hk1].
+  assert (Hm : 1 <= INR (n s) <= 16777216) by (split; [apply (le_INR 1); exact Hn1 | exact Hn2]).
+  exact (lerp_model_d M K K1 _ dd HM HK1 Hin Hadd Hmul Hk1 Hkd s na nb l i th ph qh
+           (conj Hd1 Hd2) Ha Hb Hl Hn1 Hn2 Hi Ina Inb Inl (R _ _ _ _ Hm Hr Hth) H).
+Qed.
+
+(** ** Horner's closed form *)
+
+(** p^ = (A i) + B, with |a| <= Da (Da = dd, a = D.L). *)
+Lemma hp_abs_d : forall v eta m i fA fB a b cA cB x ph Da,
+  small_ok v eta -> 1 <= m <= 16777216 -> 0 <= i <= m ->
+  Rabs (m * fA - a) <= cA -> Rabs (fB - b) <= cB -> 0 <= cA <= / 1000 -> 0 <= cB <= / 1000 ->
+  0 <= Da <= 2 -> Rabs a <= Da -> Rabs (b + i / m * a) <= 1 ->
+  ap1 v eta x (fA * i) -> ap1 v eta ph (x + fB) ->
+  Rabs (ph - (b + i / m * a)) <= cA + cB + (101 / 100 + Da) * v.
+Proof.
+  intros v eta m i fA fB a b cA cB x ph Da Hv Hm Hi HA HB HcA HcB HDa Ha Hp Hx Hph.
+  unfold ap1 in Hx, Hph.
+  pose proof (v_pos v eta Hv). pose proof (v_small v eta Hv).
+  pose proof (e_pos v eta Hv). pose proof (e_small v eta Hv).
+  pose proof (hc_t m i ltac:(lra) Hi) as Ht.
+  assert (EA : fA * i = i / m * (m * fA)) by (field; lra).
+  assert (B1 : Rabs (fA * i) <= Da + cA).
+  { rewrite EA. eapply Rle_trans; [apply hc_scale; exact Ht|].
+    pose proof (abs_near _ _ _ HA). lra. }
+  assert (E1 : Rabs (x - fA * i) <= v * (Da + cA) + eta).
+  { assert (v * Rabs (fA * i) <= v * (Da + cA)) by (apply Rmult_le_compat_l; lra). lra. }
+  assert (E0 : Rabs (fA * i - i / m * a) <= cA).
+  { replace (fA * i - i / m * a) with (i / m * (m * fA - a)) by (field; lra).
+    eapply Rle_trans; [apply hc_scale; exact Ht|]. exact HA. }
+  assert (V1 : v * (Da + cA) <= / 2097152 * 3) by (apply Rmult_le_compat; lra).
+  assert (S1 : Rabs (x + fB) <= 1004 / 1000).
+  { replace (x + fB) with ((b + i / m * a) + (x - fA * i) + (fA * i - i / m * a) + (fB - b))
+      by ring.
+    eapply Rle_trans; [apply tri4|]. lra. }
+  assert (E2 : Rabs (ph - (x + fB)) <= v * (1004 / 1000) + eta).
+  { assert (v * Rabs (x + fB) <= v * (1004 / 1000)) by (apply Rmult_le_compat_l; lra). lra. }
+  replace (ph - (b + i / m * a))
+    with ((ph - (x + fB)) + (x - fA * i) + (fA * i - i / m * a) + (fB - b)) by ring.
+  eapply Rle_trans; [apply tri4|].
+  assert (v * cA <= v * / 1000) by (apply Rmult_le_compat_l; lra).
+  lra.
+Qed.
+
+(** q^ = ((C i + D) i) + E, D = 2 e exactly, with |c| <= C2 (= dd^2), |dd| <= D1 (= dd). *)
+Lemma hq_abs_d : forall v eta m i fC e fE c dd ee cC cD cE y1 y2 y3 qh C2 D1,
+  small_ok v eta -> 1 <= m <= 16777216 -> 0 <= i <= m ->
+  Rabs (m * m * fC - c) <= cC -> Rabs (m * e - dd) <= cD -> Rabs (fE - ee) <= cE ->
+  0 <= cC <= / 1000 -> 0 <= cD <= / 1000 -> 0 <= cE <= / 1000 ->
+  0 <= C2 <= 4 -> 0 <= D1 <= 2 -> Rabs c <= C2 -> Rabs dd <= D1 ->
+  Rabs (ee + 2 * (i / m) * dd + (i / m) * (i / m) * c) <= 1 ->
+  ap1 v eta y1 (fC * i) -> ap1 v eta y2 (y1 + 2 * e) -> ap1 v eta y3 (y2 * i) ->
+  ap1 v eta qh (y3 + fE) ->
+  Rabs (qh - (ee + 2 * (i / m) * dd + (i / m) * (i / m) * c))
+    <= cE + cC + 2 * cD + (106 / 100 + 4 * D1 + 3 * C2) * v.
+Proof.
+  intros v eta m i fC e fE c dd ee cC cD cE y1 y2 y3 qh C2 D1 Hv Hm Hi HC HD HE HcC HcD HcE
+    HC2 HD1 Hc Hd Hq H1 H2 H3 H4.
+  unfold ap1 in H1, H2, H3, H4.
+  pose proof (v_pos v eta Hv). pose proof (v_small v eta Hv).
+  pose proof (e_pos v eta Hv). pose proof (e_small v eta Hv).
+  pose proof (hc_t m i ltac:(lra) Hi) as Ht.
+  set (t := i / m) in *.
+  assert (Ei : i = t * m) by (unfold t; field; lra).
+  assert (Me : m * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra).
+  set (S2b := C2 + 2 * D1 + / 100).
+  assert (VS : v * S2b <= / 2097152 * (8 + 1 / 100))
+    by (apply Rmult_le_compat; unfold S2b; lra).
+  assert (VC : v * (C2 + cC) <= / 2097152 * (4 + / 1000)) by (apply Rmult_le_compat; lra).
+  assert (F1 : Rabs (m * y1 - t * (m * m * fC)) <= v * (C2 + cC) + m * eta).
+  { replace (m * y1 - t * (m * m * fC)) with (m * (y1 - fC * i)) by (rewrite Ei; ring).
+    rewrite Rabs_mult, (Rabs_pos_eq m) by lra.
+    assert (G : m * Rabs (fC * i) <= C2 + cC).
+    { replace (m * Rabs (fC * i)) with (Rabs (t * (m * m * fC)))
+        by (rewrite Ei, !Rabs_mult, (Rabs_pos_eq m), (Rabs_pos_eq t) by lra; ring).
+      eapply Rle_trans; [apply hc_scale; exact Ht|]. pose proof (abs_near _ _ _ HC). lra. }
+    assert (m * Rabs (y1 - fC * i) <= m * (v * Rabs (fC * i) + eta))
+      by (apply Rmult_le_compat_l; lra).
+    assert (v * (m * Rabs (fC * i)) <= v * (C2 + cC)) by (apply Rmult_le_compat_l; lra).
+    assert (m * (v * Rabs (fC * i) + eta) = v * (m * Rabs (fC * i)) + m * eta) by ring.
+    lra. }
+  assert (F0 : Rabs (t * (m * m * fC) - t * c) <= cC).
+  { replace (t * (m * m * fC) - t * c) with (t * (m * m * fC - c)) by ring.
+    eapply Rle_trans; [apply hc_scale; exact Ht|]. exact HC. }
+  assert (Tc : Rabs (t * c) <= C2) by (eapply Rle_trans; [apply hc_scale; exact Ht|]; lra).
+  assert (S2 : Rabs (m * y1 + 2 * (m * e)) <= S2b).
+  { replace (m * y1 + 2 * (m * e))
+      with (t * c + 2 * dd + (m * y1 - t * (m * m * fC)) + (t * (m * m * fC) - t * c)
+            + 2 * (m * e - dd)) by ring.
+    assert (T : forall a1 a2 a3 a4 a5 : R,
+      Rabs (a1 + a2 + a3 + a4 + a5) <= Rabs a1 + Rabs a2 + Rabs a3 + Rabs a4 + Rabs a5).
+    { intros. repeat (eapply Rle_trans; [apply Rabs_triang | apply Rplus_le_compat_r]); lra. }
+    assert (Rabs (2 * dd) <= 2 * D1) by (rewrite Rabs_mult, (Rabs_pos_eq 2) by lra; lra).
+    assert (Rabs (2 * (m * e - dd)) <= 2 * cD)
+      by (rewrite Rabs_mult, (Rabs_pos_eq 2) by lra; lra).
+    eapply Rle_trans; [apply T|]. unfold S2b. lra. }
+  assert (F2 : Rabs (m * y2 - m * (y1 + 2 * e)) <= v * S2b + m * eta).
+  { rewrite <- Rmult_minus_distr_l, Rabs_mult, (Rabs_pos_eq m) by lra.
+    assert (m * Rabs (y2 - (y1 + 2 * e)) <= m * (v * Rabs (y1 + 2 * e) + eta))
+      by (apply Rmult_le_compat_l; lra).
+    assert (R1 : m * Rabs (y1 + 2 * e) = Rabs (m * y1 + 2 * (m * e)))
+      by (rewrite <- (Rabs_pos_eq m) at 1 by lra; rewrite <- Rabs_mult; f_equal; ring).
+    assert (v * (m * Rabs (y1 + 2 * e)) <= v * S2b)
+      by (apply Rmult_le_compat_l; lra).
+    assert (m * (v * Rabs (y1 + 2 * e) + eta) = v * (m * Rabs (y1 + 2 * e)) + m * eta) by ring.
+    lra. }
+  assert (S3 : Rabs (m * y2) <= S2b + / 100).
+  { replace (m * y2) with ((m * y1 + 2 * (m * e)) + (m * y2 - m * (y1 + 2 * e))) by ring.
+    eapply Rle_trans; [apply Rabs_triang|]. lra. }
+  assert (F3 : Rabs (y3 - y2 * i) <= v * (S2b + / 100) + eta).
+  { assert (Rabs (y2 * i) <= S2b + / 100).
+    { replace (y2 * i) with (t * (m * y2)) by (rewrite Ei; ring).
+      eapply Rle_trans; [apply hc_scale; exact Ht|]. exact S3. }
+    assert (v * Rabs (y2 * i) <= v * (S2b + / 100)) by (apply Rmult_le_compat_l; lra). lra. }
+  set (Q := ee + 2 * t * dd + t * t * c) in *.
+  assert (Eq : y3 + fE - Q = (y3 - y2 * i) + t * (m * y2 - m * (y1 + 2 * e))
+                 + t * (m * y1 - t * (m * m * fC)) + t * (t * (m * m * fC) - t * c)
+                 + 2 * t * (m * e - dd) + (fE - ee)).
+  { unfold Q. rewrite Ei. ring. }
+  assert (T6 : forall a1 a2 a3 a4 a5 a6 : R,
+    Rabs (a1 + a2 + a3 + a4 + a5 + a6)
+      <= Rabs a1 + Rabs a2 + Rabs a3 + Rabs a4 + Rabs a5 + Rabs a6).
+  { intros. repeat (eapply Rle_trans; [apply Rabs_triang | apply Rplus_le_compat_r]); lra. }
+  assert (Rt1 : Rabs (t * (m * y2 - m * (y1 + 2 * e))) <= v * S2b + m * eta)
+    by (eapply Rle_trans; [apply hc_scale; exact Ht | exact F2]).
+  assert (Rt2 : Rabs (t * (m * y1 - t * (m * m * fC))) <= v * (C2 + cC) + m * eta)
+    by (eapply Rle_trans; [apply hc_scale; exact Ht | exact F1]).
+  assert (Rt3 : Rabs (t * (t * (m * m * fC) - t * c)) <= cC)
+    by (eapply Rle_trans; [apply hc_scale; exact Ht | exact F0]).
+  assert (Rt4 : Rabs (2 * t * (m * e - dd)) <= 2 * cD).
+  { replace (2 * t * (m * e - dd)) with (t * (2 * (m * e - dd))) by ring.
+    eapply Rle_trans; [apply hc_scale; exact Ht|].
+    rewrite Rabs_mult, (Rabs_pos_eq 2) by lra. lra. }
+  assert (G : Rabs (y3 + fE - Q) <= cE + cC + 2 * cD
+                + (v * S2b + v * (S2b + / 100) + v * (C2 + cC) + 3 * 16777216 * eta)).
+  { rewrite Eq. eapply Rle_trans; [apply T6|]. lra. }
+  assert (S4 : Rabs (y3 + fE) <= 1005 / 1000).
+  { replace (y3 + fE) with (Q + (y3 + fE - Q)) by ring.
+    eapply Rle_trans; [apply Rabs_triang|]. lra. }
+  assert (F4 : Rabs (qh - (y3 + fE)) <= v * (1005 / 1000) + eta).
+  { assert (v * Rabs (y3 + fE) <= v * (1005 / 1000)) by (apply Rmult_le_compat_l; lra). lra. }
+  replace (qh - Q) with ((qh - (y3 + fE)) + (y3 + fE - Q)) by ring.
+  eapply Rle_trans; [apply Rabs_triang|].
+  assert (v * cC <= v * / 1000) by (apply Rmult_le_compat_l; lra).
+  unfold S2b in *. lra.
+Qed.
+
+(** One component of n k: |n k_j - D_j| <= v (|a_j| + |b_j| + 1.001 |D_j|) + d 1.001 |D_j|. *)
+Lemma hk_comp : forall v d eta m a0 b0 ra rb tt kj,
+  small_ok v eta -> small_ok d eta -> 1 <= m <= 16777216 ->
+  Rabs a0 <= 1 -> Rabs b0 <= 1 ->
+  ap1 v eta ra a0 -> ap1 v eta rb b0 -> ap1 v eta tt (rb - ra) -> ap1 d eta kj (tt / m) ->
+  Rabs (m * kj - (b0 - a0)) <=
+    v * (Rabs a0 + Rabs b0 + 1001 / 1000 * Rabs (b0 - a0) + / 32768)
+    + d * (1001 / 1000 * Rabs (b0 - a0) + / 32768).
+Proof.
+  intros v d eta m a0 b0 ra rb tt kj Hv Hd Hm Ha0 Hb0 Hra Hrb Htt Hkj.
+  pose proof (v_pos v eta Hv). pose proof (v_small v eta Hv).
+  pose proof (v_pos d eta Hd). pose proof (v_small d eta Hd).
+  pose proof (e_pos v eta Hv). pose proof (e_small v eta Hv).
+  pose proof (Rabs_pos a0). pose proof (Rabs_pos b0).
+  set (D := b0 - a0) in *.
+  pose proof (Rabs_pos D).
+  assert (HD2 : Rabs D <= 2) by (unfold D; pose proof (absdiff b0 a0); lra).
+  assert (Me : m * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra).
+  unfold ap1 in Hra, Hrb, Htt, Hkj.
+  assert (A1 : v * Rabs a0 <= v) by (pose proof (Rmult_le_compat_l v _ _ ltac:(lra) Ha0); lra).
+  assert (B1 : v * Rabs b0 <= v) by (pose proof (Rmult_le_compat_l v _ _ ltac:(lra) Hb0); lra).
+  assert (R1 : Rabs (rb - ra) <= Rabs D + / 524288).
+  { replace (rb - ra) with (D + (rb - b0) - (ra - a0)) by (unfold D; ring).
+    eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_Ropp.
+    eapply Rle_trans; [apply Rplus_le_compat_r, Rabs_triang|]. lra. }
+  assert (G : Rabs (tt - (rb - ra)) <= v * Rabs D + / 524288 * v + eta).
+  { assert (v * Rabs (rb - ra) <= v * (Rabs D + / 524288)) by (apply Rmult_le_compat_l; lra).
+    lra. }
+  assert (T1 : Rabs tt <= Rabs D + / 262144).
+  { pose proof (abs_near _ _ _ G). assert (v * Rabs D <= / 2097152 * 2)
+      by (apply Rmult_le_compat; lra). lra. }
+  assert (Dm : Rabs (m * kj - tt) <= d * Rabs tt + m * eta).
+  { replace (m * kj - tt) with (m * (kj - tt / m)) by (field; lra).
+    rewrite Rabs_mult, (Rabs_pos_eq m) by lra.
+    assert (Em : Rabs (tt / m) = Rabs tt / m).
+    { unfold Rdiv. rewrite Rabs_mult, (Rabs_pos_eq (/ m)); [reflexivity|].
+      left. apply Rinv_0_lt_compat. lra. }
+    rewrite Em in Hkj.
+    assert (m * Rabs (kj - tt / m) <= m * (d * (Rabs tt / m) + eta))
+      by (apply Rmult_le_compat_l; lra).
+    assert (m * (d * (Rabs tt / m)) = d * Rabs tt) by (field; lra). lra. }
+  assert (DT : d * Rabs tt <= d * (Rabs D + / 262144)) by (apply Rmult_le_compat_l; lra).
+  replace (m * kj - D) with ((m * kj - tt) + (tt - (rb - ra)) + (rb - b0) - (ra - a0))
+    by (unfold D; ring).
+  eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_Ropp.
+  eapply Rle_trans; [apply Rplus_le_compat_r, tri3|].
+  assert (0 <= v * Rabs D) by (apply Rmult_le_pos; lra).
+  assert (0 <= d * Rabs D) by (apply Rmult_le_pos; lra).
+  lra.
+Qed.
+
+Definition wKD (a b : vec) : vec :=
+  mkV (Rabs (vx a) + Rabs (vx b) + 1001 / 1000 * Rabs (vx b - vx a) + / 32768)
+      (Rabs (vy a) + Rabs (vy b) + 1001 / 1000 * Rabs (vy b - vy a) + / 32768)
+      (Rabs (vz a) + Rabs (vz b) + 1001 / 1000 * Rabs (vz b - vz a) + / 32768).
+
+Section HK.
+Context (v d eta dd : R) (Hv : small_ok v eta) (Hdv : small_ok d eta) (s : span)
+        (HDd : Ddist s dd) (Ha : is_unit (Na s)) (Hb : is_unit (Nb s))
+        (Hn1 : (1 <= n s)%nat) (Hn2 : INR (n s) <= 16777216)
+        (na nb kk : vec) (Ina : vap1 v eta na (Na s)) (Inb : vap1 v eta nb (Nb s))
+        (tx ty tz : R)
+        (Htx : ap1 v eta tx (vx nb - vx na)) (Hkx : ap1 d eta (vx kk) (tx / INR (n s)))
+        (Hty : ap1 v eta ty (vy nb - vy na)) (Hky : ap1 d eta (vy kk) (ty / INR (n s)))
+        (Htz : ap1 v eta tz (vz nb - vz na)) (Hkz : ap1 d eta (vz kk) (tz / INR (n s))).
+
+Local Notation Dl := (vsub (Nb s) (Na s)).
+
+Lemma hk_vec : vapprox 1 (INR (n s)) kk Dl
+  (vlin v d (wKD (Na s) (Nb s)) (wM (Na s) (Nb s) 0 0 (1001 / 1000))).
+Proof.
+  assert (Hm : 1 <= INR (n s) <= 16777216) by (split; [apply (le_INR 1); exact Hn1 | exact Hn2]).
+  destruct (unit_bounded _ Ha) as [A1 [A2 A3]].
+  destruct (unit_bounded _ Hb) as [B1 [B2 B3]].
+  destruct Ina as [I1 [I2 I3]]. destruct Inb as [J1 [J2 J3]].
+  unfold vapprox, vlin, wKD, wM, vsub; cbn [vx vy vz]. rewrite !Rmult_1_l.
+  repeat split; (eapply Rle_trans; [eapply (hk_comp v d eta); eassumption | lra]).
+Qed.
+
+Lemma hk_wb : wb16 (wKD (Na s) (Nb s)) /\ wb16 (wM (Na s) (Nb s) 0 0 (1001 / 1000)).
+Proof.
+  split; [| apply wM_wb16; try lra; apply unit_bounded; assumption].
+  destruct (unit_bounded _ Ha) as [A1 [A2 A3]].
+  destruct (unit_bounded _ Hb) as [B1 [B2 B3]].
+  assert (G : forall x y, Rabs x <= 1 -> Rabs y <= 1 ->
+    0 <= Rabs x + Rabs y + 1001 / 1000 * Rabs (y - x) + / 32768 <= 16).
+  { intros x y Hx Hy. pose proof (Rabs_pos x). pose proof (Rabs_pos y).
+    pose proof (Rabs_pos (y - x)). pose proof (absdiff y x). lra. }
+  unfold wb16, wKD; cbn [vx vy vz]. repeat split; apply G; assumption.
+Qed.
+
+(** n (k.X) for a unit X read as xh: the set-ups A (X = L) and D/2 (X = Na). *)
+Lemma kx_dot : forall (xh X : vec) (y : R), is_unit X -> vap1 v eta xh X ->
+  fdot_rel v v eta kk xh y ->
+  Rabs (INR (n s) * y - dot Dl X) <= (202 / 100 + 501 / 100 * dd) * v
+                                     + (2 / 100 + 101 / 100 * dd) * d.
+Proof.
+  intros xh X y HX IX Hy. destruct HDd as [Hdd HD].
+  assert (Hm : 1 <= INR (n s) <= 16777216) by (split; [apply (le_INR 1); exact Hn1 | exact Hn2]).
+  destruct hk_wb as [W1 W2].
+  assert (W0 : wb16 vzero) by (unfold wb16, vzero; cbn [vx vy vz]; repeat split; lra).
+  assert (WX : wb16 (Float.wIn X)).
+  { destruct (unit_bounded _ HX) as [X1 [X2 X3]]. unfold wb16, Float.wIn; cbn [vx vy vz].
+    pose proof (Rabs_pos (vx X)). pose proof (Rabs_pos (vy X)).
+    pose proof (Rabs_pos (vz X)). repeat split; lra. }
+  pose proof (cs_abs _ _ dd ltac:(lra) HD (Req_le _ _ HX)) as DX.
+  pose proof (unit_pair _ _ Ha HX) as AX. pose proof (unit_pair _ _ Hb HX) as BX.
+  pose proof (diff_bounded _ _ Ha Hb) as [D1 [D2 D3]].
+  destruct (unit_bounded _ HX) as [X1 [X2 X3]].
+  pose proof (Rabs_pos (vx X)). pose proof (Rabs_pos (vy X)). pose proof (Rabs_pos (vz X)).
+  pose proof (Rabs_pos (vx Dl)). pose proof (Rabs_pos (vy Dl)). pose proof (Rabs_pos (vz Dl)).
+  pose proof (pp_dot v d eta (INR (n s)) 1 y dd (202 / 100 + 501 / 100 * dd)
+    (2 / 100 + 101 / 100 * dd) kk xh Dl X _ _ _ _ Hv Hdv Hy ltac:(lra) ltac:(lra) ltac:(lra)
+    hk_vec (K_in_vec v d eta Hv _ _ IX) (diff_bounded _ _ Ha Hb) (vb12 _ (unit_bounded _ HX))
+    W1 W2 WX W0 DX ltac:(lra)) as HD2.
+  rewrite Rmult_1_r in HD2. apply HD2.
+  - unfold wsum0, wKD, Float.wIn; unfold vsub in *; cbn [vx vy vz] in *. lra.
+  - unfold wsum0, wM, vzero; unfold vsub in *; cbn [vx vy vz] in *. lra.
+Qed.
+
+(** n^2 (k.k): the set-up C. *)
+Lemma kk_dot : forall (y : R), fdot_rel v v eta kk kk y ->
+  Rabs (INR (n s) * INR (n s) * y - dot Dl Dl)
+    <= (2 / 100 + 401 / 100 * dd + 501 / 100 * dd * dd) * v
+       + (2 / 100 + 0 * dd + 201 / 100 * dd * dd) * d.
+Proof.
+  intros y Hy. destruct HDd as [Hdd HD].
+  assert (Hm : 1 <= INR (n s) <= 16777216) by (split; [apply (le_INR 1); exact Hn1 | exact Hn2]).
+  destruct hk_wb as [W1 W2].
+  pose proof (cs_abs _ _ dd ltac:(lra) HD (Req_le _ _ Ha)) as DA.
+  pose proof (cs_abs _ _ dd ltac:(lra) HD (Req_le _ _ Hb)) as DB.
+  assert (DD : Rabs (vx Dl) * Rabs (vx Dl) + Rabs (vy Dl) * Rabs (vy Dl)
+               + Rabs (vz Dl) * Rabs (vz Dl) <= dd * dd).
+  { rewrite !abs_sq. exact HD. }
+  pose proof (diff_bounded _ _ Ha Hb) as [D1 [D2 D3]].
+  pose proof (Rabs_pos (vx Dl)). pose proof (Rabs_pos (vy Dl)). pose proof (Rabs_pos (vz Dl)).
+  assert (dd * dd <= 4) by nra.
+  assert (0 <= dd * dd) by nra.
+  pose proof (pp_dot v d eta (INR (n s)) (INR (n s)) y (dd * dd)
+    (2 / 100 + 401 / 100 * dd + 501 / 100 * dd * dd) (2 / 100 + 0 * dd + 201 / 100 * dd * dd)
+    kk kk Dl Dl _ _ _ _ Hv Hdv Hy ltac:(lra) ltac:(lra) ltac:(nra)
+    hk_vec hk_vec (diff_bounded _ _ Ha Hb) (diff_bounded _ _ Ha Hb)
+    W1 W2 W1 W2 DD ltac:(lra)) as HD2.
+  apply HD2.
+  - unfold wsum0, wKD; unfold vsub in *; cbn [vx vy vz] in *. lra.
+  - unfold wsum0, wM; unfold vsub in *; cbn [vx vy vz] in *. lra.
+Qed.
+
+End HK.
+
+Lemma horner_core_d : forall (v d eta dd : R) (s : span) (na nb l kk : vec)
+  (tx ty tz fa fb fc e fe : R) (i : nat) (x ph y1 y2 y3 qh : R),
+  small_ok v eta -> small_ok d eta -> Ddist s dd ->
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  (1 <= n s)%nat -> INR (n s) <= 16777216 -> (i <= n s)%nat ->
+  vap1 v eta na (Na s) -> vap1 v eta nb (Nb s) -> vap1 v eta l (L s) ->
+  ap1 v eta tx (vx nb - vx na) -> ap1 d eta (vx kk) (tx / INR (n s)) ->
+  ap1 v eta ty (vy nb - vy na) -> ap1 d eta (vy kk) (ty / INR (n s)) ->
+  ap1 v eta tz (vz nb - vz na) -> ap1 d eta (vz kk) (tz / INR (n s)) ->
+  fdot_rel v v eta kk l fa -> fdot_rel v v eta na l fb -> fdot_rel v v eta kk kk fc ->
+  fdot_rel v v eta kk na e -> fdot_rel v v eta na na fe ->
+  ap1 v eta x (fa * INR i) -> ap1 v eta ph (x + fb) ->
+  ap1 v eta y1 (fc * INR i) -> ap1 v eta y2 (y1 + 2 * e) -> ap1 v eta y3 (y2 * INR i) ->
+  ap1 v eta qh (y3 + fe) ->
+  Rabs (ph - p s (INR i)) <= (804 / 100 + 601 / 100 * dd) * v + (3 / 100 + 101 / 100 * dd) * d /\
+  Rabs (qh - q s (INR i)) <= (1013 / 100 + 1803 / 100 * dd + 801 / 100 * dd * dd) * v
+                             + (7 / 100 + 202 / 100 * dd + 201 / 100 * dd * dd) * d.
+Proof.
+  intros v d eta dd s na nb l kk tx ty tz fa fb fc e fe i x ph y1 y2 y3 qh Hv Hd HDd Ha Hb Hl
+    Hn1 Hn2 Hi Ina Inb Inl Htx Hkx Hty Hky Htz Hkz Hfa Hfb Hfc Hfe0 Hfe Hx Hph Hy1 Hy2 Hy3 Hqh.
+  pose proof (v_pos v eta Hv). pose proof (v_small v eta Hv).
+  pose proof (v_pos d eta Hd). pose proof (v_small d eta Hd).
+  pose proof HDd as [Hdd HD].
+  assert (Hn0 : (n s <> 0)%nat) by lia.
+  assert (Hm : 1 <= INR (n s) <= 16777216) by (split; [apply (le_INR 1); exact Hn1 | exact Hn2]).
+  assert (Hii : 0 <= INR i <= INR (n s)) by (split; [apply pos_INR | apply le_INR; exact Hi]).
+  pose proof (kx_dot v d eta dd Hv Hd s HDd Ha Hb Hn1 Hn2 na nb kk Ina Inb tx ty tz
+                Htx Hkx Hty Hky Htz Hkz l (L s) fa Hl Inl Hfa) as CA.
+  pose proof (K_pa v d eta Hv Hd s Ha Hb Hl na l fb Ina Inl Hfb) as CB.
+  pose proof (kk_dot v d eta dd Hv Hd s HDd Ha Hb Hn1 Hn2 na nb kk Ina Inb tx ty tz
+                Htx Hkx Hty Hky Htz Hkz fc Hfc) as CC.
+  pose proof (kx_dot v d eta dd Hv Hd s HDd Ha Hb Hn1 Hn2 na nb kk Ina Inb tx ty tz
+                Htx Hkx Hty Hky Htz Hkz na (Na s) e Ha Ina Hfe0) as CD.
+  pose proof (K_pa v d eta Hv Hd (mkSpan (Na s) (Nb s) (Na s) (n s)) Ha Hb Ha na na fe
+                Ina Ina Hfe) as CE.
+  unfold pa in CE; cbn [Na Nb L] in CE.
+  assert (VD : v * dd <= v * 2) by (apply Rmult_le_compat_l; lra).
+  assert (DD : d * dd <= d * 2) by (apply Rmult_le_compat_l; lra).
+  assert (V0 : 0 <= v * dd) by (apply Rmult_le_pos; lra).
+  assert (D0 : 0 <= d * dd) by (apply Rmult_le_pos; lra).
+  assert (Q0 : 0 <= dd * dd <= 4) by (split; nra).
+  assert (VDD : v * (dd * dd) <= v * 4) by (apply Rmult_le_compat_l; lra).
+  assert (DDD : d * (dd * dd) <= d * 4) by (apply Rmult_le_compat_l; lra).
+  assert (V1 : 0 <= v * (dd * dd)) by (apply Rmult_le_pos; lra).
+  assert (D1 : 0 <= d * (dd * dd)) by (apply Rmult_le_pos; lra).
+  assert (SL : Rabs (dot (vsub (Nb s) (Na s)) (L s)) <= dd)
+    by (eapply Rle_trans; [apply hc_dot_abs | apply cs_abs; [lra | exact HD | right; exact Hl]]).
+  assert (SA : Rabs (dot (vsub (Nb s) (Na s)) (Na s)) <= dd)
+    by (eapply Rle_trans; [apply hc_dot_abs | apply cs_abs; [lra | exact HD | right; exact Ha]]).
+  assert (SC : Rabs (dot (vsub (Nb s) (Na s)) (vsub (Nb s) (Na s))) <= dd * dd).
+  { rewrite Rabs_pos_eq; [exact HD|]. unfold dot.
+    pose proof (Rle_0_sqr (vx (vsub (Nb s) (Na s)))).
+    pose proof (Rle_0_sqr (vy (vsub (Nb s) (Na s)))).
+    pose proof (Rle_0_sqr (vz (vsub (Nb s) (Na s)))). unfold Rsqr in *. lra. }
+  split.
+  - rewrite hc_p_form by exact Hn0.
+    eapply Rle_trans.
+    + eapply (hp_abs_d v eta (INR (n s)) (INR i) fa fb _ _ _ _ _ _ dd); try eassumption; try lra.
+      apply hc_p_le1; try assumption. apply hc_t; lra.
+    + lra.
+  - rewrite hc_q_form by exact Hn0.
+    eapply Rle_trans.
+    + eapply (hq_abs_d v eta (INR (n s)) (INR i) fc e fe _ _ _ _ _ _ _ _ _ _ (dd * dd) dd);
+        try eassumption; try lra.
+      apply hc_q_le1; try assumption. apply hc_t; lra.
+    + lra.
+Qed.
+
+Lemma horner_model_d : forall (M : fmodel) (K K1 kd dd : R), model_ok M K ->
+  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 ->
+  1 <= kd -> kd * m_u M <= / 2097152 ->
+  forall (s : span) (na nb l kk : vec) (i : nat) (ph qh : R) (tx ty tz : R),
+  Ddist s dd -> is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  (1 <= n s)%nat -> INR (n s) <= 16777216 -> (i <= n s)%nat ->
+  vap M na (Na s) -> vap M nb (Nb s) -> vap M l (L s) ->
+  ap_add M tx (vx nb - vx na) -> ap1 (kd * m_u M) (m_eta M) (vx kk) (tx / INR (n s)) ->
+  ap_add M ty (vy nb - vy na) -> ap1 (kd * m_u M) (m_eta M) (vy kk) (ty / INR (n s)) ->
+  ap_add M tz (vz nb - vz na) -> ap1 (kd * m_u M) (m_eta M) (vz kk) (tz / INR (n s)) ->
+  horner_ok M i na l kk ph qh ->
+  Rabs (ph - p s (INR i)) <= ((804 / 100 + 601 / 100 * dd) * K1
+                              + (3 / 100 + 101 / 100 * dd) * kd) * m_u M /\
+  Rabs (qh - q s (INR i)) <= ((1013 / 100 + 1803 / 100 * dd + 801 / 100 * dd * dd) * K1
+                              + (7 / 100 + 202 / 100 * dd + 201 / 100 * dd * dd) * kd) * m_u M.
+Proof.
+  intros M K K1 kd dd HM HK1 Hin Hadd Hmul Hkd1 Hkd2 s na nb l kk i ph qh tx ty tz
+    HDd Ha Hb Hl Hn1 Hn2 Hi Ina Inb Inl Htx Hkx Hty Hky Htz Hkz
+    (fa & fb & fc & e & fe & Hfa & Hfb & Hfc & Hfe0 & Hfe & (x & Hx & Hph)
+     & (y1 & y2 & y3 & Hy1 & Hy2 & Hy3 & Hqh)).
+  pose proof (model_u M K HM) as Hu.
+  pose proof (hm_small M K K1 HM HK1) as Hv.
+  pose proof (hm_small_d M K kd HM Hkd1 Hkd2) as Hd.
+  destruct (horner_core_d (K1 * m_u M) (kd * m_u M) (m_eta M) dd s na nb l kk tx ty tz
+              fa fb fc e fe i x ph y1 y2 y3 qh Hv Hd HDd Ha Hb Hl Hn1 Hn2 Hi
+              (hm_vap M K1 _ _ Hu Hin Ina) (hm_vap M K1 _ _ Hu Hin Inb)
+              (hm_vap M K1 _ _ Hu Hin Inl)
+              (hm_ap M _ K1 _ _ Hu Hadd Htx) Hkx (hm_ap M _ K1 _ _ Hu Hadd Hty) Hky
+              (hm_ap M _ K1 _ _ Hu Hadd Htz) Hkz
+              (hm_fdot M K1 _ _ _ Hu Hadd Hmul Hfa) (hm_fdot M K1 _ _ _ Hu Hadd Hmul Hfb)
+              (hm_fdot M K1 _ _ _ Hu Hadd Hmul Hfc) (hm_fdot M K1 _ _ _ Hu Hadd Hmul Hfe0)
+              (hm_fdot M K1 _ _ _ Hu Hadd Hmul Hfe)
+              (hm_ap M _ K1 _ _ Hu Hmul Hx) (hm_ap M _ K1 _ _ Hu Hadd Hph)
+              (hm_ap M _ K1 _ _ Hu Hmul Hy1) (hm_ap M _ K1 _ _ Hu Hadd Hy2)
+              (hm_ap M _ K1 _ _ Hu Hmul Hy3) (hm_ap M _ K1 _ _ Hu Hadd Hqh)) as [P Q].
+  split.
+  - eapply Rle_trans; [exact P|]. right. ring.
+  - eapply Rle_trans; [exact Q|]. right. ring.
+Qed.
+
+(** Phong, Horner's closed form, one division, with the span's distance dd >= |Nb - Na|. *)
+Theorem phong_horner_div_dist : forall (M : fmodel) (K K1 : R), model_ok M K ->
+  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 -> 1 <= k_div M ->
+  forall (s : span) (na nb l kk : vec) (i : nat) (ph qh dd : R),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  0 <= dd <= 2 -> dot (vsub (Nb s) (Na s)) (vsub (Nb s) (Na s)) <= dd * dd ->
+  (1 <= n s)%nat -> INR (n s) <= 16777216 -> (i <= n s)%nat ->
+  vap M na (Na s) -> vap M nb (Nb s) -> vap M l (L s) ->
+  kcomp_ok M (INR (n s)) (vx kk) (vx na) (vx nb) ->
+  kcomp_ok M (INR (n s)) (vy kk) (vy na) (vy nb) ->
+  kcomp_ok M (INR (n s)) (vz kk) (vz na) (vz nb) ->
+  horner_ok M i na l kk ph qh ->
+  Rabs (ph - p s (INR i)) <= ((804 / 100 + 601 / 100 * dd) * K1
+                              + (3 / 100 + 101 / 100 * dd) * k_div M) * m_u M /\
+  Rabs (qh - q s (INR i)) <= ((1013 / 100 + 1803 / 100 * dd + 801 / 100 * dd * dd) * K1
+                              + (7 / 100 + 202 / 100 * dd + 201 / 100 * dd * dd) * k_div M)
+                             * m_u M.
+Proof.
+  intros M K K1 HM HK1 Hin Hadd Hmul Hdiv s na nb l kk i ph qh dd Ha Hb Hl Hd1 Hd2 Hn1 Hn2 Hi
+    Ina Inb Inl (tx & Htx & Hkx) (ty & Hty & Hky) (tz & Htz & Hkz) H.
+  exact (horner_model_d M K K1 (k_div M) dd HM HK1 Hin Hadd Hmul Hdiv (div_setup M K HM)
+           s na nb l kk i ph qh tx ty tz (conj Hd1 Hd2) Ha Hb Hl Hn1 Hn2 Hi Ina Inb Inl
+           Htx Hkx Hty Hky Htz Hkz H).
+Qed.
+
+(** The same with k_j = (Nb_j - Na_j) * r, r = 1/n a rounded division. *)
+Theorem phong_horner_recip_dist : forall (M : fmodel) (K K1 : R), model_ok M K ->
+  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 -> 1 <= k_div M ->
+  ((1 + / 1048576) * k_mul M + k_div M + / 68719476736) * m_u M <= / 2097152 ->
+  forall (s : span) (na nb l kk : vec) (i : nat) (ph qh dd : R),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  0 <= dd <= 2 -> dot (vsub (Nb s) (Na s)) (vsub (Nb s) (Na s)) <= dd * dd ->
+  (1 <= n s)%nat -> INR (n s) <= 16777216 -> (i <= n s)%nat ->
+  vap M na (Na s) -> vap M nb (Nb s) -> vap M l (L s) ->
+  krecip_ok M (INR (n s)) (vx kk) (vx na) (vx nb) ->
+  krecip_ok M (INR (n s)) (vy kk) (vy na) (vy nb) ->
+  krecip_ok M (INR (n s)) (vz kk) (vz na) (vz nb) ->
+  horner_ok M i na l kk ph qh ->
+  Rabs (ph - p s (INR i)) <= ((804 / 100 + 601 / 100 * dd) * K1
+      + (3 / 100 + 101 / 100 * dd) * ((1 + / 1048576) * k_mul M + k_div M + / 68719476736))
+      * m_u M /\
+  Rabs (qh - q s (INR i)) <= ((1013 / 100 + 1803 / 100 * dd + 801 / 100 * dd * dd) * K1
+      + (7 / 100 + 202 / 100 * dd + 201 / 100 * dd * dd)
+        * ((1 + / 1048576) * k_mul M + k_div M + / 68719476736)) * m_u M.
+Proof.
+  intros M K K1 HM HK1 Hin Hadd Hmul Hdiv Hkd s na nb l kk i ph qh dd Ha Hb Hl Hd1 Hd2
+    Hn1 Hn2 Hi Ina Inb Inl (tx & rx & Htx & Hrx & Hkx) (ty & ry & Hty & Hry & Hky)
+    (tz & rz & Htz & Hrz & Hkz) H.
+  destruct (recip_setup M K HM Hkd Hdiv) as [R Hk1].
+  assert (Hm : 1 <= INR (n s) <= 16777216) by (split; [apply (le_INR 1); exact Hn1 | exact Hn2]).
+  exact (horner_model_d M K K1 _ dd HM HK1 Hin Hadd Hmul Hk1 Hkd s na nb l kk i ph qh tx ty tz
+           (conj Hd1 Hd2) Ha Hb Hl Hn1 Hn2 Hi Ina Inb Inl Htx (R _ _ _ _ Hm Hrx Hkx)
+           Hty (R _ _ _ _ Hm Hry Hky) Htz (R _ _ _ _ Hm Hrz Hkz) H).
+Qed.

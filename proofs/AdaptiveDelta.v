@@ -15,7 +15,11 @@
     [fast_delta_err] and [eq24_delta_err] (any model), at most 17u and 83u
     for the ieee binary32 profile, 63u for (ii) when the two set-ups share
     the computed p_a, p_b ([eq24_shared_delta_err])
-    ([adaptive_acceptance_covers_computed_delta]). *)
+    ([adaptive_acceptance_covers_computed_delta]).  The same with (ii) evaluated
+    at j = ⌈n/2⌉ or j = n − ⌈n/2⌉ = ⌊n/2⌋ (a step ⌊m̂⌋ + 1 from eq. 23 computed
+    in floats may be either for odd n), same bounds ([eq24_delta_ok_at],
+    [adaptive_acceptance_covers_computed_delta_generic_step],
+    [adaptive_acceptance_covers_computed_delta_step]). *)
 
 From Coq Require Import Reals Lra Lia.
 From Flocq Require Import Core.
@@ -219,7 +223,7 @@ Qed.
 Lemma ad_eq24_err :
   forall v eta nr j lo pa pb dsx pag pbg dph pac pbc t0h dsh a b c e dh
          Epg Edp Epc ER Eds,
-  0 <= v -> 0 <= eta -> 1 <= nr -> 1 <= j -> 0 <= lo -> j + lo = nr ->
+  0 <= v -> 0 <= eta -> 1 <= nr -> 0 <= j -> 0 <= j * j - j -> 0 <= lo -> j + lo = nr ->
   Rabs pa <= 1 -> Rabs pb <= 1 -> Rabs (nr * nr * dsx) <= 2 ->
   Rabs (pag - pa) <= Epg -> Rabs (pbg - pb) <= Epg ->
   Rabs (nr * dph - (pbg - pag)) <= Edp ->
@@ -238,7 +242,7 @@ Lemma ad_eq24_err :
   Rabs (dh - dsx / 2 * j * lo) <= E4 + v * (1 / 4 + E4) + eta.
 Proof.
   intros v eta nr j lo pa pb dsx pag pbg dph pac pbc t0h dsh a b c e dh Epg Edp Epc ER Eds
-    Hv He Hn Hj Hlo Hs Hpa Hpb Hdx Hpag Hpbg Hdp Hpac Hpbc HR Hds Aa Ab Ac Ae Adh.
+    Hv He Hn Hj Hjj Hlo Hs Hpa Hpb Hdx Hpag Hpbg Hdp Hpac Hpbc HR Hds Aa Ab Ac Ae Adh.
   intros EG EC MA MB MC E4.
   set (th := j / nr).
   assert (Hth : 0 <= th <= 1).
@@ -359,7 +363,7 @@ Qed.
 Lemma ad_eq24_err_shared :
   forall v eta nr j lo pa pb dsx pag pbg dph pac pbc t0h dsh a b c e dh
          Epg Edp Epc ER Eds,
-  0 <= v -> 0 <= eta -> 1 <= nr -> 1 <= j -> 0 <= lo -> j + lo = nr ->
+  0 <= v -> 0 <= eta -> 1 <= nr -> 0 <= j -> 0 <= j * j - j -> 0 <= lo -> j + lo = nr ->
   Rabs pa <= 1 -> Rabs pb <= 1 -> Rabs (nr * nr * dsx) <= 2 ->
   Rabs (pag - pa) <= Epg -> Rabs (pbg - pb) <= Epg ->
   Rabs (nr * dph - (pbg - pag)) <= Edp ->
@@ -380,7 +384,7 @@ Lemma ad_eq24_err_shared :
   Rabs (dh - dsx / 2 * j * lo) <= E4 + v * (1 / 4 + E4) + eta.
 Proof.
   intros v eta nr j lo pa pb dsx pag pbg dph pac pbc t0h dsh a b c e dh Epg Edp Epc ER Eds
-    Hv He Hn Hj Hlo Hs Hpa Hpb Hdx Hpag Hpbg Hdp Hpac Hpbc HR Hds Aa Ab Ac Ae Adh Sa Sb.
+    Hv He Hn Hj Hjj Hlo Hs Hpa Hpb Hdx Hpag Hpbg Hdp Hpac Hpbc HR Hds Aa Ab Ac Ae Adh Sa Sb.
   intros EG EC EGC MA MB MC E4.
   set (th := j / nr).
   assert (Hth : 0 <= th <= 1).
@@ -709,7 +713,7 @@ Proof.
   { intros y x H. eapply ap1_mono; [|exact H]. apply Rmult_le_compat_r; lra. }
   pose proof (ad_eq24_err (K1 * m_u M) (m_eta M) (INR (n s)) (INR (m_step (n s))) (INR (n s / 2))
     (pa s) (pb s) (ds s) (fs_pa FG) (fs_pb FG) (fs_dp FG) (fs_pa FC) (fs_pb FC) (fs_t0 FC) (fs_ds FC)
-    a b c e dh _ _ _ _ _ Hv0 He0 ltac:(lra) J1 J2 J3
+    a b c e dh _ _ _ _ _ Hv0 He0 ltac:(lra) ltac:(lra) ltac:(nra) J2 J3
     (pa_le s Ha Hl) (pb_le s Hb Hl) ltac:(rewrite Hn2ds; apply n2ds_le; assumption)
     Gpa Gpb Gdp Cpa Cpb CR Cds (AM _ _ Aa) (AM _ _ Ab) (AM _ _ Ac) (AA _ _ Ae) (AA _ _ Adh)) as R.
   unfold eq24_delta_err. exact R.
@@ -761,7 +765,140 @@ Proof.
   { intros y x H. eapply ap1_mono; [|exact H]. apply Rmult_le_compat_r; lra. }
   pose proof (ad_eq24_err_shared (K1 * m_u M) (m_eta M) (INR (n s)) (INR (m_step (n s))) (INR (n s / 2))
     (pa s) (pb s) (ds s) (fs_pa FG) (fs_pb FG) (fs_dp FG) (fs_pa FC) (fs_pb FC) (fs_t0 FC) (fs_ds FC)
-    a b c e dh _ _ _ _ _ Hv0 He0 ltac:(lra) J1 J2 J3
+    a b c e dh _ _ _ _ _ Hv0 He0 ltac:(lra) ltac:(lra) ltac:(nra) J2 J3
+    (pa_le s Ha Hl) (pb_le s Hb Hl) ltac:(rewrite Hn2ds; apply n2ds_le; assumption)
+    Gpa Gpb Gdp Cpa Cpb CR Cds (AM _ _ Aa) (AM _ _ Ab) (AM _ _ Ac) (AA _ _ Ae) (AA _ _ Adh) Sa Sb) as R.
+  unfold eq24_shared_delta_err. exact R.
+Qed.
+
+(** ** Eq. 24 at either middle step
+
+    An implementation computing the step from eq. 23 in floats,
+    step = ⌊m̂⌋ + 1, m̂ = fl((dp − t0)/ds), may, for odd n (exact m̂ = (n−1)/2 an
+    integer), get m̂ just below (n−1)/2 and use j = (n−1)/2 = ⌊n/2⌋ = n − ⌈n/2⌉
+    instead of ⌈n/2⌉.  The exact δ is the same at both steps (δ(j) = ds/2·j(n−j)
+    is symmetric), and the coefficients j, (j²−j)/2 are no larger at the smaller
+    step, so the same error bounds hold.  [eq24_delta_ok_at M m j] is
+    [eq24_delta_ok M m] at the step j. *)
+Definition eq24_delta_ok_at (M : fmodel) (m j : nat) (dph t0h dsh dh : R) : Prop :=
+  exists a b c e : R,
+    ap_mul M a (INR j * dph) /\ ap_mul M b (INR j * t0h) /\
+    ap_mul M c ((INR j * INR j - INR j) / 2 * dsh) /\
+    ap_add M e (b + c) /\ ap_add M dh (a - e).
+
+Lemma eq24_delta_ok_at_m_step : forall (M : fmodel) (m : nat) (dph t0h dsh dh : R),
+  eq24_delta_ok M m dph t0h dsh dh <-> eq24_delta_ok_at M m (m_step m) dph t0h dsh dh.
+Proof. intros. split; intro H; exact H. Qed.
+
+Lemma m_sub_m_step : forall m : nat, (m - m_step m = m / 2)%nat.
+Proof.
+  intros m. destruct m as [|m']; [reflexivity|].
+  destruct (ad_j_lo (S m') ltac:(lia)) as (_ & _ & H).
+  rewrite <- plus_INR in H. apply INR_eq in H. lia.
+Qed.
+
+(** j ∈ {⌈m/2⌉, ⌊m/2⌋}, lo = m − j: the conditions of [ad_eq24_err], and
+    j·lo = ⌈m/2⌉·⌊m/2⌋. *)
+Lemma ad_j_lo_at : forall m j : nat, (1 <= m)%nat ->
+  (j = m_step m \/ j = (m - m_step m)%nat) ->
+  0 <= INR j /\ 0 <= INR j * INR j - INR j /\ 0 <= INR (m - j)
+  /\ INR j + INR (m - j) = INR m
+  /\ INR j * INR (m - j) = INR (m_step m) * INR (m / 2).
+Proof.
+  intros m j Hm Hj.
+  destruct (ad_j_lo m Hm) as (_ & _ & H).
+  rewrite <- plus_INR in H. apply INR_eq in H.
+  assert (Hjm : (j <= m)%nat) by (rewrite (m_sub_m_step m) in Hj; lia).
+  assert (Hjj : 0 <= INR j * INR j - INR j).
+  { destruct (Nat.eq_0_gt_0_cases j) as [H0 | H0].
+    - subst j. simpl. lra.
+    - apply (le_INR 1) in H0. simpl in H0. nra. }
+  split; [apply pos_INR|]. split; [exact Hjj|]. split; [apply pos_INR|]. split.
+  - rewrite <- plus_INR. f_equal. lia.
+  - rewrite (m_sub_m_step m) in Hj. destruct Hj as [Hj | Hj].
+    + replace (m - j)%nat with (m / 2)%nat by lia. rewrite Hj. reflexivity.
+    + replace (m - j)%nat with (m_step m) by lia. rewrite Hj. ring.
+Qed.
+
+(** The exact δ, by the symmetry of δ(j) = ds/2·j(n−j). *)
+Lemma ad_delta_exact_at : forall (s : span) (j : nat), (1 <= n s)%nat ->
+  (j = m_step (n s) \/ j = (n s - m_step (n s))%nat) ->
+  gouraud s (m_step (n s)) - ceuler s (m_step (n s)) = ds s / 2 * INR j * INR (n s - j).
+Proof.
+  intros s j Hn Hj.
+  destruct (ad_delta_exact s Hn) as [HD _].
+  destruct (ad_j_lo_at (n s) j Hn Hj) as (_ & _ & _ & _ & Hp).
+  rewrite HD.
+  replace (ds s / 2 * INR j * INR (n s - j)) with (ds s / 2 * (INR j * INR (n s - j))) by ring.
+  rewrite Hp. ring.
+Qed.
+
+Lemma eq24_delta_error_at : forall (M : fmodel) (K K1 : R), model_ok M K ->
+  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 -> 1 <= k_div M ->
+  forall (s : span) (FG FC : fsetup) (j : nat) (dh : R),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  (1 <= n s)%nat -> INR (n s) <= 16777216 ->
+  (j = m_step (n s) \/ j = (n s - m_step (n s))%nat) ->
+  gouraud_setup_ok M s FG -> ce_setup_ok M s FC ->
+  eq24_delta_ok_at M (n s) j (fs_dp FG) (fs_t0 FC) (fs_ds FC) dh ->
+  Rabs (dh - (gouraud s (m_step (n s)) - ceuler s (m_step (n s)))) <= eq24_delta_err M K1.
+Proof.
+  intros M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1 s FG FC j dh Ha Hb Hl Hn1 Hn2 Hj HFG HFC
+    (a & b & c & e & Aa & Ab & Ac & Ae & Adh).
+  pose proof HM as (Hu & He0 & He2 & Ki & Ka & Km & Kd & HK0 & HK2).
+  destruct (ad_ce_facts M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1 s FC Ha Hb Hl Hn1 Hn2 HFC)
+    as (Cpa & Cpb & CR & Cds).
+  destruct (g_pa_pb M K HM s Ha Hb Hl FG HFG) as [Gpa Gpb].
+  pose proof (g_dp M K HM s Ha Hb Hl Hn1 Hn2 FG HFG) as Gdp.
+  destruct (ad_delta_exact s Hn1) as [_ Hn2ds].
+  destruct (ad_j_lo_at (n s) j Hn1 Hj) as (J0 & Jjj & J2 & J3 & _).
+  rewrite (ad_delta_exact_at s j Hn1 Hj). rewrite <- Hn2ds in Cds.
+  assert (Hnr : 1 <= INR (n s)) by (apply (le_INR 1) in Hn1; simpl in Hn1; lra).
+  assert (HKu : K1 * m_u M <= K * m_u M) by (apply Rmult_le_compat_r; lra).
+  assert (Hv0 : 0 <= K1 * m_u M) by (apply Rmult_le_pos; lra).
+  assert (AM : forall y x, ap_mul M y x -> ap1 (K1 * m_u M) (m_eta M) y x).
+  { intros y x H. eapply ap1_mono; [|exact H]. apply Rmult_le_compat_r; lra. }
+  assert (AA : forall y x, ap_add M y x -> ap1 (K1 * m_u M) (m_eta M) y x).
+  { intros y x H. eapply ap1_mono; [|exact H]. apply Rmult_le_compat_r; lra. }
+  pose proof (ad_eq24_err (K1 * m_u M) (m_eta M) (INR (n s)) (INR j) (INR (n s - j))
+    (pa s) (pb s) (ds s) (fs_pa FG) (fs_pb FG) (fs_dp FG) (fs_pa FC) (fs_pb FC) (fs_t0 FC) (fs_ds FC)
+    a b c e dh _ _ _ _ _ Hv0 He0 ltac:(lra) J0 Jjj J2 J3
+    (pa_le s Ha Hl) (pb_le s Hb Hl) ltac:(rewrite Hn2ds; apply n2ds_le; assumption)
+    Gpa Gpb Gdp Cpa Cpb CR Cds (AM _ _ Aa) (AM _ _ Ab) (AM _ _ Ac) (AA _ _ Ae) (AA _ _ Adh)) as R.
+  unfold eq24_delta_err. exact R.
+Qed.
+
+Lemma eq24_shared_delta_error_at : forall (M : fmodel) (K K1 : R), model_ok M K ->
+  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 -> 1 <= k_div M ->
+  forall (s : span) (FG FC : fsetup) (j : nat) (dh : R),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  (1 <= n s)%nat -> INR (n s) <= 16777216 ->
+  (j = m_step (n s) \/ j = (n s - m_step (n s))%nat) ->
+  gouraud_setup_ok M s FG -> ce_setup_ok M s FC ->
+  eq24_delta_ok_at M (n s) j (fs_dp FG) (fs_t0 FC) (fs_ds FC) dh ->
+  fs_pa FG = fs_pa FC -> fs_pb FG = fs_pb FC ->
+  Rabs (dh - (gouraud s (m_step (n s)) - ceuler s (m_step (n s)))) <= eq24_shared_delta_err M K1.
+Proof.
+  intros M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1 s FG FC j dh Ha Hb Hl Hn1 Hn2 Hj HFG HFC
+    (a & b & c & e & Aa & Ab & Ac & Ae & Adh) Sa Sb.
+  pose proof HM as (Hu & He0 & He2 & Ki & Ka & Km & Kd & HK0 & HK2).
+  destruct (ad_ce_facts M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1 s FC Ha Hb Hl Hn1 Hn2 HFC)
+    as (Cpa & Cpb & CR & Cds).
+  destruct (g_pa_pb M K HM s Ha Hb Hl FG HFG) as [Gpa Gpb].
+  pose proof (g_dp M K HM s Ha Hb Hl Hn1 Hn2 FG HFG) as Gdp.
+  destruct (ad_delta_exact s Hn1) as [_ Hn2ds].
+  destruct (ad_j_lo_at (n s) j Hn1 Hj) as (J0 & Jjj & J2 & J3 & _).
+  rewrite (ad_delta_exact_at s j Hn1 Hj). rewrite <- Hn2ds in Cds.
+  assert (Hnr : 1 <= INR (n s)) by (apply (le_INR 1) in Hn1; simpl in Hn1; lra).
+  assert (HKu : K1 * m_u M <= K * m_u M) by (apply Rmult_le_compat_r; lra).
+  assert (Hv0 : 0 <= K1 * m_u M) by (apply Rmult_le_pos; lra).
+  assert (AM : forall y x, ap_mul M y x -> ap1 (K1 * m_u M) (m_eta M) y x).
+  { intros y x H. eapply ap1_mono; [|exact H]. apply Rmult_le_compat_r; lra. }
+  assert (AA : forall y x, ap_add M y x -> ap1 (K1 * m_u M) (m_eta M) y x).
+  { intros y x H. eapply ap1_mono; [|exact H]. apply Rmult_le_compat_r; lra. }
+  pose proof (ad_eq24_err_shared (K1 * m_u M) (m_eta M) (INR (n s)) (INR j) (INR (n s - j))
+    (pa s) (pb s) (ds s) (fs_pa FG) (fs_pb FG) (fs_dp FG) (fs_pa FC) (fs_pb FC) (fs_t0 FC) (fs_ds FC)
+    a b c e dh _ _ _ _ _ Hv0 He0 ltac:(lra) J0 Jjj J2 J3
     (pa_le s Ha Hl) (pb_le s Hb Hl) ltac:(rewrite Hn2ds; apply n2ds_le; assumption)
     Gpa Gpb Gdp Cpa Cpb CR Cds (AM _ _ Aa) (AM _ _ Ab) (AM _ _ Ac) (AA _ _ Ae) (AA _ _ Adh) Sa Sb) as R.
   unfold eq24_shared_delta_err. exact R.
@@ -815,6 +952,54 @@ Proof.
       try assumption; try lra.
     exact (eq24_shared_delta_error M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1 s FG FC dh Ha Hb Hl Hn1 Hn2 HFG HFC Hi
              Sa Sb).
+Qed.
+
+(* Note: as [adaptive_acceptance_covers_computed_delta_generic], eq. 24 (ii)
+   evaluated at a step j that is ⌈n/2⌉ or n − ⌈n/2⌉ = ⌊n/2⌋ (a step computed
+   from eq. 23 in floats, ⌊m̂⌋ + 1, may be either for odd n); the tested δ is
+   still G(⌈n/2⌉) − C(⌈n/2⌉), equal to G(j) − C(j). *)
+(** The checker's acceptance set contains every run of an implementation that
+    computes δ̂ by the fast kernel (i) or by eq. 24 as written (ii) at either
+    middle step (with or without p_a, p_b shared by the two set-ups), provided
+    the error bound of that δ̂ is at most 1.01(b_G + b_CE) + 2u. *)
+Theorem adaptive_acceptance_covers_computed_delta_generic_step :
+  forall (M : fmodel) (K K1 : R), model_ok M K ->
+  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 -> 1 <= k_div M ->
+  forall (s : span) (FG FC : fsetup) (j : nat) (dh x bG bCE th2 : R) (G C out : nat -> R),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  (1 <= n s)%nat -> INR (n s) <= 16777216 ->
+  gouraud_setup_ok M s FG -> ce_setup_ok M s FC ->
+  (fast_delta_ok M (n s) (fs_ds FC) dh
+     /\ fast_delta_err M K1 <= 101 / 100 * (bG + bCE) + 2 * m_u M)
+  \/ (eq24_delta_ok_at M (n s) j (fs_dp FG) (fs_t0 FC) (fs_ds FC) dh
+     /\ (j = m_step (n s) \/ j = (n s - m_step (n s))%nat)
+     /\ eq24_delta_err M K1 <= 101 / 100 * (bG + bCE) + 2 * m_u M)
+  \/ (eq24_delta_ok_at M (n s) j (fs_dp FG) (fs_t0 FC) (fs_ds FC) dh
+     /\ (j = m_step (n s) \/ j = (n s - m_step (n s))%nat)
+     /\ fs_pa FG = fs_pa FC /\ fs_pb FG = fs_pb FC
+     /\ eq24_shared_delta_err M K1 <= 101 / 100 * (bG + bCE) + 2 * m_u M) ->
+  0 < x -> Rabs th2 <= 3 * m_u M ->
+  (Rabs (x * dh * (1 + th2)) < 1 -> within_of bG out G (n s)) ->
+  (1 <= Rabs (x * dh * (1 + th2)) -> within_of bCE out C (n s)) ->
+  adaptive_accepts x (gouraud s (m_step (n s)) - ceuler s (m_step (n s))) bG bCE (m_u M)
+    G C out (n s).
+Proof.
+  intros M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1 s FG FC j dh x bG bCE th2 G C out
+    Ha Hb Hl Hn1 Hn2 HFG HFC Himpl Hx H2 Hgo Hce.
+  pose proof HM as (Hu & He0 & He2 & Ki & Ka & Km & Kd & HK0 & HK2).
+  assert (Hu1 : m_u M <= K * m_u M) by (rewrite <- (Rmult_1_l (m_u M)) at 1; apply Rmult_le_compat_r; lra).
+  destruct Himpl as [[Hi HE] | [(Hi & Hj & HE) | (Hi & Hj & Sa & Sb & HE)]].
+  - apply (adaptive_acceptance_covers_computed_delta_generic M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1
+             s FG FC dh x bG bCE th2 G C out Ha Hb Hl Hn1 Hn2 HFG HFC); try assumption.
+    left. split; assumption.
+  - apply (adaptive_accepts_of_delta_error x (m_u M) bG bCE _ dh (eq24_delta_err M K1) th2);
+      try assumption; try lra.
+    exact (eq24_delta_error_at M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1 s FG FC j dh Ha Hb Hl Hn1 Hn2 Hj
+             HFG HFC Hi).
+  - apply (adaptive_accepts_of_delta_error x (m_u M) bG bCE _ dh (eq24_shared_delta_err M K1) th2);
+      try assumption; try lra.
+    exact (eq24_shared_delta_error_at M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1 s FG FC j dh Ha Hb Hl Hn1 Hn2 Hj
+             HFG HFC Hi Sa Sb).
 Qed.
 
 (** ** The ieee binary32 profile *)
@@ -876,6 +1061,45 @@ Proof.
   destruct Himpl as [[Hi HE] | [[Hi HE] | (Hi & Sa & Sb & HE)]].
   - left. split; [assumption | lra].
   - right. left. split; [assumption | lra].
+  - right. right. repeat split; try assumption. lra.
+Qed.
+
+(* Note: as [adaptive_acceptance_covers_computed_delta], eq. 24 (ii) evaluated
+   at a step j that is ⌈n/2⌉ or n − ⌈n/2⌉ = ⌊n/2⌋ (the step ⌊m̂⌋ + 1 of eq. 23
+   computed in floats may be either for odd n); same error bounds 83u, 63u. *)
+(** Adaptive scheme: the checker's acceptance set contains every run of an
+    implementation computing δ̂ from its set-up by (i) or by (ii) at either
+    middle step. *)
+Theorem adaptive_acceptance_covers_computed_delta_step :
+  forall (s : span) (FG FC : fsetup) (j : nat) (dh x bG bCE th2 : R) (G C out : nat -> R),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) -> (1 <= n s <= 4096)%nat ->
+  gouraud_setup_ok ieee32 s FG -> ce_setup_ok ieee32 s FC ->
+  (fast_delta_ok ieee32 (n s) (fs_ds FC) dh
+     /\ 17 * bpow radix2 (-24) <= 101 / 100 * (bG + bCE) + 2 * bpow radix2 (-24))
+  \/ (eq24_delta_ok_at ieee32 (n s) j (fs_dp FG) (fs_t0 FC) (fs_ds FC) dh
+     /\ (j = m_step (n s) \/ j = (n s - m_step (n s))%nat)
+     /\ 83 * bpow radix2 (-24) <= 101 / 100 * (bG + bCE) + 2 * bpow radix2 (-24))
+  \/ (eq24_delta_ok_at ieee32 (n s) j (fs_dp FG) (fs_t0 FC) (fs_ds FC) dh
+     /\ (j = m_step (n s) \/ j = (n s - m_step (n s))%nat)
+     /\ fs_pa FG = fs_pa FC /\ fs_pb FG = fs_pb FC
+     /\ 63 * bpow radix2 (-24) <= 101 / 100 * (bG + bCE) + 2 * bpow radix2 (-24)) ->
+  0 < x -> Rabs th2 <= 3 * bpow radix2 (-24) ->
+  (Rabs (x * dh * (1 + th2)) < 1 -> within_of bG out G (n s)) ->
+  (1 <= Rabs (x * dh * (1 + th2)) -> within_of bCE out C (n s)) ->
+  adaptive_accepts x (gouraud s (m_step (n s)) - ceuler s (m_step (n s))) bG bCE
+    (bpow radix2 (-24)) G C out (n s).
+Proof.
+  intros s FG FC j dh x bG bCE th2 G C out Ha Hb Hl Hn HFG HFC Himpl Hx H2 Hgo Hce.
+  pose proof (ce_profile_nr s Hn) as Hn'.
+  pose proof fast_delta_err_ieee32 as E1. pose proof eq24_delta_err_ieee32 as E2.
+  pose proof eq24_shared_delta_err_ieee32 as E3.
+  change (bpow radix2 (-24)) with (m_u ieee32) in *.
+  apply (adaptive_acceptance_covers_computed_delta_generic_step ieee32 _ 1 ieee32_ok)
+    with (FG := FG) (FC := FC) (j := j) (dh := dh) (th2 := th2);
+    unfold ieee32 in *; cbn [m_u k_in k_add k_mul k_div] in *; try assumption; try lra; try lia.
+  destruct Himpl as [[Hi HE] | [(Hi & Hj & HE) | (Hi & Hj & Sa & Sb & HE)]].
+  - left. split; [assumption | lra].
+  - right. left. split; [assumption | split; [assumption | lra]].
   - right. right. repeat split; try assumption. lra.
 Qed.
 

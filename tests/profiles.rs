@@ -2387,6 +2387,49 @@ fn adaptive_acceptance_covers_computed_delta() {
     eprintln!("{checked} spans: eq. 24's δ̂ within {worst24:.2}u (83u), the closed form's within {worst_fast:.2}u (17u)");
 }
 
+/// Eq. 24's `δ̂` at both steps eq. 23 may give in floats, `⌈n/2⌉` and `⌊n/2⌋`
+/// (`adaptive::delta_at` on the span set up in `T`), against the exact `δ`: the
+/// largest error in units of `bound`, over the adaptive spans of odd `n` (where the
+/// two steps differ).
+fn delta_at_both_steps<T: phong_approx::Real>(bound: f64) -> f64 {
+    let mut worst = 0f64;
+    let mut checked = 0;
+    for s in adaptive_spans().into_iter().filter(|s| s.n % 2 == 1) {
+        let exact = phong_approx::adaptive::decide(&s, &Q::from_integer(1.into())).delta;
+        let sf = s.cast::<T>().expect("a float span");
+        let j = s.n.div_ceil(2);
+        for step in [j, s.n - j] {
+            let d = Q::from_float(phong_approx::adaptive::delta_at(&sf, step).to_f64()).unwrap();
+            let e = (d - &exact).abs().to_f64();
+            assert!(e <= bound, "n = {}, step {step}: {e:e} > {bound:e}", s.n);
+            worst = worst.max(e / bound);
+            checked += 1;
+        }
+    }
+    assert!(checked > 50, "{checked}");
+    worst
+}
+
+/// `adaptive_acceptance_covers_computed_delta_step` (proofs/AdaptiveDelta.v, binary32):
+/// eq. 24 evaluated at `⌊n/2⌋` — the step eq. 23 gives when the float `m` falls just
+/// below the integer `(n − 1)/2` — is within the same `83u`.
+#[test]
+fn adaptive_acceptance_covers_computed_delta_step() {
+    let w = delta_at_both_steps::<f32>(83.0 * Format::Binary32.u());
+    eprintln!("eq. 24 at both steps in f32: within {w:.3} of 83u");
+}
+
+/// `adaptive_acceptance_covers_computed_delta_generic_step` (proofs/AdaptiveDelta.v):
+/// the same in binary64 against `delta_error` of its model.
+#[test]
+fn adaptive_acceptance_covers_computed_delta_generic_step() {
+    use phong_approx::tolerance::profile::{arith, delta_error};
+    let w = delta_at_both_steps::<f64>(delta_error(
+        &arith(Profile::Ieee, Format::Binary64).unwrap(),
+    ));
+    eprintln!("eq. 24 at both steps in f64: within {w:.3} of delta_error");
+}
+
 /// `adaptive_acceptance_covers_computed_delta_generic` (proofs/AdaptiveDelta.v): in
 /// binary64 too the crate's `δ̂` are within `delta_error`, and wherever the exact
 /// `|255δ|` is outside the band of `adaptive_too_close` (with `adaptive_band`'s

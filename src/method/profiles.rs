@@ -354,6 +354,7 @@ pub const PHONG_THEOREMS: &[&str] = &[
 /// does, whether its `δ̂` is the crate's closed form, eq. 24 written out, or the
 /// difference of the two methods' values at the middle pixel.
 pub const ADAPTIVE_THEOREMS: &[&str] = &[
+    "adaptive_acceptance_covers_computed_delta_generic_step",
     "adaptive_acceptance_covers_computed_delta_generic",
     "adaptive_acceptance_contains_every_run",
 ];

@@ -1,7 +1,12 @@
 //! The adaptive scheme's test too close to call (`docs/float.md` §10, §18.5): how far
 //! an implementation's own `δ̂` may be from the exact `δ`, whichever way it computes it
 //! (`proofs/AdaptiveDelta.v`), and the bounds the band and the verdict take so that
-//! `adaptive_acceptance_covers_computed_delta_generic` holds.
+//! `adaptive_acceptance_covers_computed_delta_generic` holds (in binary32 with its
+//! constants: `adaptive_acceptance_covers_computed_delta`; at the applied `ieee`
+//! bounds, `adaptive_delta_conditions_at_profile_bounds`: eq. 24's `83u` needs the
+//! raised Gouraud bound below `n = 6`); eq. 24 at either step eq. 23 may give in floats,
+//! `⌈n/2⌉` or `⌊n/2⌋`: `adaptive_acceptance_covers_computed_delta_generic_step`,
+//! `adaptive_acceptance_covers_computed_delta_step`).
 
 use super::model::{arith, Arith};
 use super::Profile;

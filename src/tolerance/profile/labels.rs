@@ -59,10 +59,15 @@ pub fn status_table() -> String {
 /// or composition for the bounds that depend on the span's `q_min` too.
 pub fn formula(method: crate::Method, profile: Profile, format: Format) -> Option<String> {
     use crate::method::FloatBound;
-    // The bounds composed from theorems read the span's q_min, as the derived ones.
+    // A method that picks between two (its row's `picks`) takes the larger of their
+    // bounds; the other bounds composed from theorems read the span's q_min, as the
+    // derived ones.
     if let FloatBound::Composed { section, .. } = method.info().profiles.float {
         status(method, profile, format)?;
-        return Some(format!("from n and q_min ({section})"));
+        return Some(match method.picks() {
+            Some([a, b]) => format!("the larger of the bounds of {a} and {b}"),
+            None => format!("from n and q_min ({section})"),
+        });
     }
     match status(method, profile, format)? {
         Status::Proved(_) => {

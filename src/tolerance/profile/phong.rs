@@ -1,7 +1,9 @@
 //! Phong's bound under `ieee` and `shader`, composed from Coq theorems
 //! (`docs/float.md` §18.4): the counts of the computed `p` and `q` of each form
 //! (`proofs/PhongCount.v` for any unit normals, `proofs/PhongCountD.v` read with the
-//! span's `|N_b − N_a|`), the value step `p/√q` (`proofs/PhongValue.v`) and
+//! span's `|N_b − N_a|`), the value step `p/√q` (`proofs/PhongValue.v`:
+//! `phong_value_real` for real arithmetic, `phong_value_div` and `phong_value_recip`
+//! for the two ways of the last operations, `phong_value_either` for both) and
 //! normalize-then-dot (`proofs/PhongNormalize.v`), with the theorems' own constants
 //! ([`PHONG_COUNTS`]; `tests/claims_index.rs` reads the statements and fails when one
 //! differs).
@@ -30,9 +32,11 @@ pub struct PhongCounts {
     pub qd: (f64, f64, f64, f64, f64, f64),
 }
 
-/// The constants of `phong_{horner,pixel,lerp}_{div,recip}_generic`
-/// (`proofs/PhongCount.v`) and `phong_{horner,pixel,lerp}_{div,recip}_dist`
-/// (`proofs/PhongCountD.v`).
+/// The constants of `proofs/PhongCount.v` (`phong_horner_div_generic`,
+/// `phong_horner_recip_generic`, `phong_pixel_div_generic`, `phong_pixel_recip_generic`,
+/// `phong_lerp_div_generic`, `phong_lerp_recip_generic`) and `proofs/PhongCountD.v`
+/// (`phong_horner_div_dist`, `phong_horner_recip_dist`, `phong_pixel_div_dist`,
+/// `phong_pixel_recip_dist`, `phong_lerp_div_dist`, `phong_lerp_recip_dist`).
 pub const PHONG_COUNTS: [PhongCounts; 3] = [
     PhongCounts {
         form: "horner",
@@ -102,7 +106,8 @@ pub fn phong_bound(a: &Arith, n: u32, q_min: f64, dn: f64) -> Option<f64> {
     (1024.0 * a.eta <= q_min - e_q).then(|| value + normalize_then_dot(a))
 }
 
-/// What normalize-then-dot adds to the value step (`phong_normalize_dot_unit`,
+/// What normalize-then-dot adds to the value step (`phong_normalize_dot_unit`, the
+/// instance of `phong_normalize_dot` with `L` a unit vector read into the format,
 /// `proofs/PhongNormalize.v`): the products `N_j·(1/√q̂)` and the dot product with
 /// `L` after them, `1.03·λ·(κ_mul·u + κ_mul·u + 2κ_add·u) + 2λη + 8η`,
 /// `λ = 1 + κ_in·u + 2η` (`|L|` read into the format), rounded up.

@@ -202,8 +202,10 @@ pub fn reference_bound(
 /// difference of the two methods' values at the middle pixel, each within its bound
 /// `b_G`, `b_CE`: outside this band it decides as the exact run does, so the set
 /// `check` accepts — either method's values within the band, the exact run's pick
-/// elsewhere — holds every output of the class. That another way of computing `δ̂`
-/// (eq. 24's, or the closed form `ds/2·⌈n/2⌉⌊n/2⌋`) stays within `e_δ` is derived.
+/// elsewhere — holds every output of the class. For `δ̂` computed as eq. 24 (at either
+/// step eq. 23 gives) or as the closed form `ds/2·⌈n/2⌉⌊n/2⌋`,
+/// `adaptive_acceptance_covers_computed_delta_generic_step` (proofs/AdaptiveDelta.v),
+/// with the bounds and unit of [`profile::adaptive_band`], which every caller passes.
 /// The band is widened by 4 `f64` ulps of 1, its own relative rounding, and `1e-25`
 /// for a `δ` read from 30 significant digits (both sides evaluated in `f64`, each
 /// within a few ulps of the exact value). Where this holds,

@@ -2527,7 +2527,7 @@ fn adaptive_acceptance_covers_computed_delta_generic() {
             let gouraud = |c: Choice| c == Choice::Gouraud;
             assert_eq!(
                 gouraud(choice),
-                gouraud(exact.choice.clone()),
+                gouraud(exact.choice),
                 "n = {}, |255δ| = {}: {format:?} decides otherwise outside the band",
                 s.n,
                 (255.0 * delta).abs()

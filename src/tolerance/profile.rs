@@ -18,14 +18,16 @@
 //! division each; the `_half` ones let the closed forms halve `i − 1` in floats. Every
 //! corrected-Euler theorem takes the coefficient `n(n−1)/2` of `p_n` exact: [`proved`].)
 //!
-//! Duff and symmetric Phong have bounds composed from Coq theorems on the same model
-//! ([`Arith`]): the counts of `p` and `q` (`proofs/DuffCount.v`) and the value step
-//! (`proofs/PhongValue.v`), [`duff_bound`], [`symmetric_phong_bound`], `docs/float.md`
-//! §18.5 — labelled *proved*. Phong and the adaptive scheme have *derived* bounds
-//! under `ieee` and `shader` (written derivations: [`phong_derived`], §18.4–18.5,
-//! attacked by `tests/profiles.rs`; [`euler_derived`] is plain Euler's, which the
-//! theorems now replace under both profiles); [`status`] says which kind a bound is. Angular
-//! interpolation and the related methods have none: a case then fails naming that.
+//! Phong, Duff and symmetric Phong have bounds composed from Coq theorems on the same
+//! model ([`Arith`]): the counts of `p` and `q` (`proofs/PhongCount.v`,
+//! `proofs/PhongCountD.v`, `proofs/DuffCount.v`), the value step
+//! (`proofs/PhongValue.v`) and normalize-then-dot (`proofs/PhongNormalize.v`) —
+//! [`phong_bound`], [`duff_bound`], [`symmetric_phong_bound`], `docs/float.md`
+//! §18.4–18.5 — and the adaptive scheme its picks' theorems with the band of
+//! [`adaptive_band`] (`proofs/AdaptiveDelta.v`): all labelled *proved*
+//! ([`euler_derived`] is plain Euler's written derivation, which the theorems replace
+//! under both profiles); [`status`] says which kind a bound is. Angular interpolation
+//! and the related methods have none: a case then fails naming that.
 //!
 //! Tested, with other implementations written from the definitions (other orders,
 //! `mul_add`, reciprocals, the closed form, a software GPU that truncates, divides

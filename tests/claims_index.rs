@@ -393,3 +393,96 @@ fn the_checkers_duff_constants_are_the_theorems() {
         );
     }
 }
+
+/// Every fraction `a / b` of a statement with a numeric numerator, in order (a bare
+/// `/ 1048576` has none and is not one).
+fn all_fractions(statement: &str) -> Vec<f64> {
+    let t: Vec<&str> = statement.split_whitespace().collect();
+    t.windows(3)
+        .filter(|w| w[1] == "/")
+        .filter_map(|w| {
+            let a: f64 = w[0].trim_start_matches('(').parse().ok()?;
+            let b: f64 = w[2].trim_end_matches([')', ';', ',']).parse().ok()?;
+            Some(a / b)
+        })
+        .collect()
+}
+
+/// The statement of theorem `name` in `file` (up to its proof).
+fn statement_of(file: &str, name: &str) -> String {
+    let text = read(file);
+    let at = text
+        .find(&format!("Theorem {name} "))
+        .unwrap_or_else(|| panic!("{name} in {file}"));
+    text[at..at + text[at..].find("Proof.").expect("its proof")].to_string()
+}
+
+/// The constants the checker composes Phong's `ieee` and `shader` bounds from
+/// (`tolerance::profile::PHONG_COUNTS`, `NORMALIZE_EXTRA`) are the statements' of
+/// `proofs/PhongCount.v`, `proofs/PhongCountD.v` and `proofs/PhongNormalize.v` —
+/// every fraction of each of the twelve count theorems (the zero coefficients are not
+/// written as fractions) and normalize-then-dot's factor with its terms — and the
+/// constants of the adaptive band's error (`tolerance::profile::delta_error`, checked
+/// against the same formula in `tests/profiles.rs`) are `proofs/AdaptiveDelta.v`'s
+/// definitions.
+#[test]
+fn the_checkers_phong_and_adaptive_constants_are_the_theorems() {
+    use phong_approx::tolerance::profile::{NORMALIZE_EXTRA, PHONG_COUNTS};
+    for c in PHONG_COUNTS {
+        for way in ["div", "recip"] {
+            let name = format!("phong_{}_{way}_generic", c.form);
+            let got = all_fractions(&statement_of("proofs/PhongCount.v", &name));
+            assert_eq!(got, [c.p.0, c.p.1, c.q.0, c.q.1], "{name}");
+            let name = format!("phong_{}_{way}_dist", c.form);
+            let got = all_fractions(&statement_of("proofs/PhongCountD.v", &name));
+            let (a0, a1, b0, b1) = c.pd;
+            let (c0, c1, c2, e0, e1, e2) = c.qd;
+            let want: Vec<f64> = [a0, a1, b0, b1, c0, c1, c2, e0, e1, e2]
+                .into_iter()
+                .filter(|&x| x != 0.0)
+                .collect();
+            assert_eq!(got, want, "{name}");
+            let st = statement_of("proofs/PhongCountD.v", &name);
+            assert!(
+                st.contains("0 <= dd <= 2")
+                    && st.contains("dot (vsub (Nb s) (Na s)) (vsub (Nb s) (Na s)) <= dd * dd"),
+                "{name}: d's hypotheses"
+            );
+        }
+    }
+    let st = statement_of("proofs/PhongNormalize.v", "phong_normalize_dot_unit");
+    assert_eq!(
+        all_fractions(&st),
+        [NORMALIZE_EXTRA],
+        "phong_normalize_dot_unit"
+    );
+    let flat: String = st.split_whitespace().collect::<Vec<_>>().join(" ");
+    assert!(
+        flat.contains("(103 / 100 * (1 + kin * u + 2 * eta) * (km * u + um + 2 * ua) + 2 * (1 + kin * u + 2 * eta) * eta + 8 * eta)"),
+        "phong_normalize_dot_unit's term"
+    );
+    // The adaptive band's error terms: the fractions of the two definitions.
+    let text = read("proofs/AdaptiveDelta.v");
+    let def = |name: &str| {
+        let at = text.find(&format!("Definition {name} ")).expect(name);
+        text[at..at + text[at..].find(".\n").expect("its end")].to_string()
+    };
+    assert_eq!(
+        all_fractions(&def("fast_delta_err")),
+        [92.11, 18.06, 3.004, 0.25],
+        "fast_delta_err"
+    );
+    assert!(def("fast_delta_err").contains("562949986975745 * m_eta M"));
+    assert_eq!(
+        all_fractions(&def("eq24_delta_err")),
+        [5.002, 0.001, 20.04, 5.01, 92.11, 18.06, 0.25],
+        "eq24_delta_err"
+    );
+    let e = def("eq24_delta_err");
+    for term in [
+        "(1 + / 131072) + 18 * eta",
+        "(2 + / 65536) + 16777218 * eta",
+    ] {
+        assert!(e.contains(term), "eq24_delta_err: {term}");
+    }
+}

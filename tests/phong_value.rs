@@ -352,7 +352,7 @@ pub(super) fn normal<T: Native>(
 /// `1/n`), at every pixel of every Phong span; returns the largest fraction of a
 /// bound reached.
 fn counts(theorem: &str, form: Form, recip: bool) -> f64 {
-    counts_with(theorem, form, recip, |_| constants(form))
+    counts_with(theorem, form, recip, tiered(64, 1024), |_| constants(form))
 }
 
 /// [`counts`] against the constants `of` a span gives.
@@ -360,6 +360,7 @@ fn counts_with(
     theorem: &str,
     form: Form,
     recip: bool,
+    max_n: u32,
     of: impl Fn(&Span<Q>) -> (f64, f64, f64, f64),
 ) -> f64 {
     let kd = if recip {
@@ -371,10 +372,7 @@ fn counts_with(
     let mut checked = 0usize;
     // The spans up to n = 64 (1024 in the extensive tier): every pixel is checked
     // exactly, in 12 variants.
-    for s in phong_spans()
-        .into_iter()
-        .filter(|s| s.n <= tiered(64, 1024))
-    {
+    for s in phong_spans().into_iter().filter(|s| s.n <= max_n) {
         let (ap, bp, aq, bq) = of(&s);
         let exact: Vec<(Q, Q)> = (0..=s.n).map(|i| (s.p_at(i), s.q_at(i))).collect();
         let mut judge = |got: Vec<(Q, Q)>, u: f64, what: String| {
@@ -454,7 +452,11 @@ fn phong_lerp_recip_generic() {
 /// [`counts`] against `proofs/PhongCountD.v`'s bound at the span's own
 /// `|N_b − N_a|`; returns the largest fraction reached.
 fn counts_dist(theorem: &str, form: Form, recip: bool) -> f64 {
-    counts_with(theorem, form, recip, |s| dist_constants(form, distance(s)))
+    // The same pixels as `counts` in the default tier; up to n = 256 in the extensive
+    // tier (the `_generic` tests take the longer spans).
+    counts_with(theorem, form, recip, tiered(64, 256), |s| {
+        dist_constants(form, distance(s))
+    })
 }
 
 #[test]
@@ -628,12 +630,11 @@ fn lerp_ok_exact_dot() {
 /// either way, within `phong_value_recip`'s bound (`e_p`, `e_q` the forms' counts)
 /// plus `1.03·λ·(κ_mul·u + κ_mul·u + 2κ_add·u) + 2λη + 8η`, every pixel of the Phong
 /// spans against the exact `p_i/√q_i`. Returns the largest fraction reached.
-fn normalize_dot(theorem: &str, unit: bool) -> f64 {
+fn normalize_dot(theorem: &str, unit: bool, max_n: u32) -> f64 {
     let mut worst = 0f64;
     let mut checked = 0;
-    // Spans up to n = 16 (256 in the extensive tier): each pixel takes an exact
-    // square root.
-    for s in phong_spans().into_iter().filter(|s| s.n <= tiered(16, 256)) {
+    // Each pixel takes an exact square root: short spans.
+    for s in phong_spans().into_iter().filter(|s| s.n <= max_n) {
         let want = super::phong_exact(&s);
         let q_min = (0..=s.n).map(|i| s.q_at(i)).min().unwrap().to_f64() * (1.0 - 1e-12);
         for (form, fused, recip) in normal_variants() {
@@ -707,10 +708,10 @@ fn normalize_dot(theorem: &str, unit: bool) -> f64 {
 
 #[test]
 fn phong_normalize_dot() {
-    normalize_dot("phong_normalize_dot", false);
+    normalize_dot("phong_normalize_dot", false, tiered(8, 64));
 }
 
 #[test]
 fn phong_normalize_dot_unit() {
-    normalize_dot("phong_normalize_dot_unit", true);
+    normalize_dot("phong_normalize_dot_unit", true, tiered(16, 64));
 }

@@ -2275,7 +2275,11 @@ fn adaptive_delta_conditions_at_profile_bounds() {
         (Profile::Shader, Format::Binary32, Profile::Shader),
     ] {
         let a = arith(model, format).unwrap();
-        let (fast, eq24) = adaptive_delta_errors(a.input, a.add, a.mul, a.div, a.u, a.eta);
+        // The theorem's model: every addition and product within one unit u' (shader:
+        // 2u, each κ halved).
+        let c = a.mul.max(1.0);
+        let (fast, eq24) =
+            adaptive_delta_errors(a.input / c, a.add / c, a.mul / c, a.div / c, a.u * c, a.eta);
         let e = fast.max(eq24);
         assert!(
             (delta_error(&a) - e).abs() <= 1e-9 * e,

@@ -17,8 +17,21 @@ use crate::Format;
 /// how far `δ̂` may be from `δ` when it is computed as the crate's closed form
 /// `ds/2·⌊n/2⌋·⌈n/2⌉` (any association) or as eq. 24 written out,
 /// `j·dp − (j·t_0 + (j² − j)/2·ds)`, on Gouraud's and corrected Euler's set-ups
-/// (`/n` either way: the larger `κ` of a division). Rounded up.
+/// (`/n` either way: the larger `κ` of a division). Evaluated on the model the band's
+/// theorem is instantiated with: `a` rescaled to the unit `u'` of [`adaptive_band`]
+/// (every `κ` divided by `u'/u`, the same `κ·u`). Rounded up.
 pub fn delta_error(a: &Arith) -> f64 {
+    let c = a.mul.max(1.0);
+    let a = &Arith {
+        u: a.u * c,
+        input: a.input / c,
+        add: a.add / c,
+        mul: a.mul / c,
+        div: a.div / c,
+        half: a.half / c,
+        sqrt: a.sqrt / c,
+        eta: a.eta,
+    };
     let (u, eta) = (a.u, a.eta);
     let k1 = a.input.max(a.add).max(a.mul).max(1.0);
     let kd = a

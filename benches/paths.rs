@@ -4,7 +4,11 @@
 //! - `paths_f32`: the store floor (filling the row with a constant, compiled for the
 //!   same vector width) and the dispatched span kernels — Gouraud, corrected Euler,
 //!   Phong in closed form, the adaptive scheme — at n = 8, 64, 512 and 4096, one span
-//!   per call with its set-up; ids `KERNEL/PATH`.
+//!   per call with its set-up; ids `KERNEL/PATH`. Beside them, what bounds the
+//!   targets of docs/performance.md: `set_up` (`FastSpan::new` alone), the kernels
+//!   with their set-up hoisted out of the loop (`*_kernel`), and `sqrt_div_floor`, a
+//!   row of one correctly rounded square root and one division a pixel (the least a
+//!   Phong pixel takes in `f32` without an approximate reciprocal square root).
 //! - `paths_triangle_f32`: the paper's polygon and larger ones (legs S = 8, 32, 128),
 //!   the batched kernels on each path next to Seiler's per-polygon quadratic,
 //!   Bishop–Weimer and glam's per-pixel Phong (which take no path of ours).
@@ -64,6 +68,37 @@ fn fill(path: Path, out: &mut [f32], v: f32) {
     out.fill(v)
 }
 
+/// The square-root-and-division floor on `path`: `out[i] = p[i]/√q[i]` from rows
+/// already in memory, the loop compiled for the path's vector width.
+fn sqrt_div(path: Path, p: &[f32], q: &[f32], out: &mut [f32]) {
+    #[inline(always)]
+    fn body(p: &[f32], q: &[f32], out: &mut [f32]) {
+        for ((o, p), q) in out.iter_mut().zip(p).zip(q) {
+            *o = p / q.sqrt();
+        }
+    }
+    #[cfg(target_arch = "x86_64")]
+    {
+        #[target_feature(enable = "avx2,fma")]
+        unsafe fn avx2(p: &[f32], q: &[f32], out: &mut [f32]) {
+            body(p, q, out)
+        }
+        #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
+        unsafe fn avx512(p: &[f32], q: &[f32], out: &mut [f32]) {
+            body(p, q, out)
+        }
+        match path {
+            // SAFETY: only the paths this CPU supports are benchmarked.
+            Path::Avx2 => return unsafe { avx2(p, q, out) },
+            // SAFETY: as above.
+            Path::Avx512 => return unsafe { avx512(p, q, out) },
+            Path::Baseline => {}
+        }
+    }
+    let _ = path;
+    body(p, q, out)
+}
+
 /// `len` values of `buf` from a 64-byte boundary: the row starts on a cache line in
 /// every run, so the store floor and the kernels meet the same alignment (a row whose
 /// start moved from run to run moved the ratios to the floor by up to 2×).
@@ -99,6 +134,32 @@ fn spans(c: &mut Criterion) {
                 &n,
                 |b, _| b.iter(|| fill(path, out, black_box(0.5))),
             );
+            // The span's own p_i and q_i (eqs. 2-3), as Phong's kernel sees them.
+            let s0 = FastSpan::<f32>::new(na, nb, l, n);
+            let (p, q): (Vec<f32>, Vec<f32>) = (0..=n)
+                .map(|i| {
+                    let x = i as f32;
+                    (s0.a * x + s0.b, (s0.c * x + s0.d) * x + s0.e)
+                })
+                .unzip();
+            g.bench_with_input(
+                BenchmarkId::new(format!("sqrt_div_floor/{path}"), n),
+                &n,
+                |b, _| b.iter(|| sqrt_div(path, black_box(&p), black_box(&q), out)),
+            );
+            g.bench_with_input(
+                BenchmarkId::new(format!("set_up/{path}"), n),
+                &n,
+                |b, &n| {
+                    b.iter(|| FastSpan::<f32>::new(black_box(na), black_box(nb), black_box(l), n))
+                },
+            );
+            for (name, k) in &kernels[..3] {
+                let name = name.replace("_fast", "_kernel");
+                g.bench_with_input(BenchmarkId::new(format!("{name}/{path}"), n), &n, |b, _| {
+                    b.iter(|| k(black_box(&s0), out))
+                });
+            }
             for (name, k) in kernels {
                 g.bench_with_input(
                     BenchmarkId::new(format!("{name}/{path}"), n),

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Turns `cargo bench --bench paths` (target/criterion) into the vector-path tables of
 docs/performance.md: the span kernels per path in ns per pixel with their ratios to
-the store floor of the same path, the triangles per path against Seiler, Bishop-Weimer
+the store floor of the same path, what bounds the targets (the set-up alone, the kernels
+with the set-up hoisted, the square-root-and-division floor), the triangles per path against Seiler, Bishop-Weimer
 and glam, and the targets of docs/performance.md checked against the numbers of this one run.
 
     python3 benches/paths_table.py [CRITERION_DIR]
@@ -63,6 +64,19 @@ if spans:
         r = [spans[(f"phong_fast/{p}", n)] / spans[(f"corrected_euler_fast/{p}", n)] for n in (512, 4096)]
         ok = all(x <= 2 for x in r)
         print(f"- {p}: phong_fast ÷ corrected_euler_fast = {r[0]:.2f} (n = 512), {r[1]:.2f} (n = 4096): target ≤ 2 {'met' if ok else 'not met'}")
+    if all((f"set_up/{p}", 512) in spans for p in paths):
+        print("\nWhat bounds them (this run): the set-up alone and the kernels with the set-up hoisted, "
+              "÷ the store floor; Phong's kernel ÷ the square-root-and-division floor, and that floor ÷ corrected Euler:\n")
+        print("| path | n | set_up ÷ floor | corrected_euler_kernel ÷ floor | gouraud_kernel ÷ floor "
+              "| phong_kernel ÷ sqrt_div_floor | sqrt_div_floor ÷ corrected_euler_fast |")
+        print("|---|---:|---:|---:|---:|---:|---:|")
+        for p in paths:
+            for n in (512, 4096):
+                v = lambda k: spans[(f"{k}/{p}", n)]
+                fl = v("store_floor")
+                print(f"| {p} | {n} | {v('set_up') / fl:.2f} | {v('corrected_euler_kernel') / fl:.2f} "
+                      f"| {v('gouraud_kernel') / fl:.2f} | {v('phong_kernel') / v('sqrt_div_floor'):.2f} "
+                      f"| {v('sqrt_div_floor') / v('corrected_euler_fast'):.2f} |")
 
 tri = runs("paths_triangle_f32")
 if tri:

@@ -43,60 +43,46 @@ fn span_inputs() -> ([f32; 3], [f32; 3], [f32; 3]) {
     )
 }
 
-/// The store floor on `path`: the row filled with one value, the loop compiled for
-/// the path's vector width.
-fn fill(path: Path, out: &mut [f32], v: f32) {
+/// `body()` compiled for `path`'s vector width: inlined into a function with the
+/// path's target features, as `fast`'s kernels are (`#[inline(always)]` bodies).
+#[inline(always)]
+fn on_path(path: Path, body: impl FnOnce()) {
     #[cfg(target_arch = "x86_64")]
     {
         #[target_feature(enable = "avx2,fma")]
-        unsafe fn avx2(out: &mut [f32], v: f32) {
-            out.fill(v)
+        unsafe fn avx2(body: impl FnOnce()) {
+            body()
         }
         #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
-        unsafe fn avx512(out: &mut [f32], v: f32) {
-            out.fill(v)
+        unsafe fn avx512(body: impl FnOnce()) {
+            body()
         }
         match path {
             // SAFETY: only the paths this CPU supports are benchmarked.
-            Path::Avx2 => return unsafe { avx2(out, v) },
+            Path::Avx2 => return unsafe { avx2(body) },
             // SAFETY: as above.
-            Path::Avx512 => return unsafe { avx512(out, v) },
+            Path::Avx512 => return unsafe { avx512(body) },
             Path::Baseline => {}
         }
     }
     let _ = path;
-    out.fill(v)
+    body()
+}
+
+/// The store floor on `path`: the row filled with one value, the loop compiled for
+/// the path's vector width.
+fn fill(path: Path, out: &mut [f32], v: f32) {
+    on_path(path, || out.fill(v))
 }
 
 /// The square-root-and-division floor on `path`: `out[i] = p[i]/√q[i]` from rows
 /// already in memory, the loop compiled for the path's vector width.
 fn sqrt_div(path: Path, p: &[f32], q: &[f32], out: &mut [f32]) {
-    #[inline(always)]
-    fn body(p: &[f32], q: &[f32], out: &mut [f32]) {
+    on_path(path, || {
         for ((o, p), q) in out.iter_mut().zip(p).zip(q) {
             *o = p / q.sqrt();
         }
-    }
-    #[cfg(target_arch = "x86_64")]
-    {
-        #[target_feature(enable = "avx2,fma")]
-        unsafe fn avx2(p: &[f32], q: &[f32], out: &mut [f32]) {
-            body(p, q, out)
-        }
-        #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
-        unsafe fn avx512(p: &[f32], q: &[f32], out: &mut [f32]) {
-            body(p, q, out)
-        }
-        match path {
-            // SAFETY: only the paths this CPU supports are benchmarked.
-            Path::Avx2 => return unsafe { avx2(p, q, out) },
-            // SAFETY: as above.
-            Path::Avx512 => return unsafe { avx512(p, q, out) },
-            Path::Baseline => {}
-        }
-    }
-    let _ = path;
-    body(p, q, out)
+    })
 }
 
 /// `len` values of `buf` from a 64-byte boundary: the row starts on a cache line in

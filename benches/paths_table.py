@@ -1,9 +1,10 @@
 #!/usr/bin/env python3
 """Turns `cargo bench --bench paths` (target/criterion) into the vector-path tables of
 docs/performance.md: the span kernels per path in ns per pixel with their ratios to
-the store floor of the same path, what bounds the targets (the set-up alone, the kernels
-with the set-up hoisted, the square-root-and-division floor), the triangles per path against Seiler, Bishop-Weimer
-and glam, and the targets of docs/performance.md checked against the numbers of this one run.
+the store floor of the same path, what bounds the targets (the set-up alone, the
+kernels with the set-up hoisted, the square-root-and-division floor), the triangles per
+path against Seiler, Bishop-Weimer and glam, and the targets of docs/performance.md
+checked against the numbers of this one run.
 
     python3 benches/paths_table.py [CRITERION_DIR]
 """

@@ -21,17 +21,7 @@ use crate::Format;
 /// theorem is instantiated with: `a` rescaled to the unit `u'` of [`adaptive_band`]
 /// (every `κ` divided by `u'/u`, the same `κ·u`). Rounded up.
 pub fn delta_error(a: &Arith) -> f64 {
-    let c = a.mul.max(1.0);
-    let a = &Arith {
-        u: a.u * c,
-        input: a.input / c,
-        add: a.add / c,
-        mul: a.mul / c,
-        div: a.div / c,
-        half: a.half / c,
-        sqrt: a.sqrt / c,
-        eta: a.eta,
-    };
+    let a = &rescaled(a);
     let (u, eta) = (a.u, a.eta);
     let k1 = a.input.max(a.add).max(a.mul).max(1.0);
     let kd = a
@@ -58,6 +48,24 @@ pub fn delta_error(a: &Arith) -> f64 {
     fast.max(eq24) * (1.0 + 2f64.powi(-40))
 }
 
+/// The model the band's theorem is instantiated with: `a` with every addition and
+/// product within one unit `u' = max(κ_mul, 1)·u` (`shader`: `2u`), every `κ` divided
+/// by `u'/u` (the same `κ·u`). [`delta_error`] is evaluated on it, and its unit is
+/// [`adaptive_band`]'s `u'`.
+fn rescaled(a: &Arith) -> Arith {
+    let c = a.mul.max(1.0);
+    Arith {
+        u: a.u * c,
+        input: a.input / c,
+        add: a.add / c,
+        mul: a.mul / c,
+        div: a.div / c,
+        half: a.half / c,
+        sqrt: a.sqrt / c,
+        eta: a.eta,
+    }
+}
+
 /// The bounds and unit the adaptive band takes under `profile` in `format`, from the
 /// picks' bounds `b_g` (Gouraud) and `b_ce` (corrected Euler): `(b_g', b_ce, u')`.
 ///
@@ -78,7 +86,7 @@ pub fn adaptive_band(profile: Profile, format: Format, b_g: f64, b_ce: f64) -> (
     let Some(a) = model else {
         return (b_g, b_ce, format.u());
     };
-    let u1 = a.u * a.mul.max(1.0);
+    let u1 = rescaled(&a).u;
     let need = ((delta_error(&a) - 2.0 * u1) / 1.01 - b_ce) * (1.0 + 2f64.powi(-40));
     (b_g.max(need), b_ce, u1)
 }

@@ -98,12 +98,34 @@ impl<T: Real> CosTable<T> {
     /// the surface) give the last entry, `cos 90° = 0`, as the source's 0–90° range
     /// implies, and negative angles the first.
     pub fn lookup(&self, alpha: &T) -> T {
-        let last = self.values.len() - 1;
-        let pos = alpha.clone() * self.per_radian.clone();
-        let half = T::one() / T::from_i64(2);
-        let j = (pos + half).floor_i64().clamp(0, last as i64) as usize;
-        self.values[j].clone()
+        self.values[self.index(&self.position(alpha))].clone()
     }
+
+    /// The table position of the angle `alpha`: `alpha·(size − 1)/(π/2)`, whose
+    /// nearest integer ([`CosTable::index`]) is the entry read.
+    pub fn position(&self, alpha: &T) -> T {
+        alpha.clone() * self.per_radian.clone()
+    }
+
+    /// The entry read at table position `pos`: `⌊pos + ½⌋` clamped to `0..size`.
+    pub fn index(&self, pos: &T) -> usize {
+        let last = self.values.len() - 1;
+        let half = T::one() / T::from_i64(2);
+        (pos.clone() + half).floor_i64().clamp(0, last as i64) as usize
+    }
+}
+
+/// The table position ([`CosTable::position`]) of every pixel's interpolated angle, as
+/// [`shade_table`] computes them: `α_a + i·(α_b − α_a)/n` times `(size − 1)/(π/2)`.
+pub fn table_positions<T: Real>(span: &Span<T>, table: &CosTable<T>) -> Vec<T> {
+    let (mut alpha, d_alpha) = angles(span);
+    (0..span.len())
+        .map(|_| {
+            let pos = table.position(&alpha);
+            alpha = alpha.clone() + d_alpha.clone();
+            pos
+        })
+        .collect()
 }
 
 /// [`shade`] with the cosine read from `table` (the second source's byte table when
@@ -118,10 +140,8 @@ pub fn shade_table<T: Real>(
     out: &mut [T],
 ) -> Result<(), SpanError> {
     span.check_output(out)?;
-    let (mut alpha, d_alpha) = angles(span);
-    for o in out.iter_mut() {
-        *o = table.lookup(&alpha);
-        alpha = alpha + d_alpha.clone();
+    for (o, pos) in out.iter_mut().zip(table_positions(span, table)) {
+        *o = table.values[table.index(&pos)].clone();
     }
     Ok(())
 }

@@ -78,6 +78,12 @@ fn main() -> ExitCode {
         Ok(c) => c,
         Err(e) => return cli::clap_error(e),
     };
+    // A vector path asked for and not taken would change what a run measures without
+    // a word (src/simd.rs): refused before any work.
+    if let Err(message) = phong_approx::simd::from_env() {
+        cli::report(&message);
+        return ExitCode::from(2);
+    }
     let result = match cli.command {
         Command::Span(args) => cli::span::run(&args),
         Command::Reproduce(args) => cli::reproduce::run(&args),

@@ -12,8 +12,9 @@
 //! each path is judged under the `ieee` profile by `tests/profiles.rs` all the same.
 //!
 //! The choice: the best path the CPU has, or the one the environment variable
-//! `PHONG_APPROX_SIMD` names (`baseline`, `avx2`, `avx512`; a path the CPU lacks is
-//! not taken), or the one [`force`] sets (tests and benchmarks run every path so).
+//! `PHONG_APPROX_SIMD` names (`baseline`, `avx2`, `avx512`; [`from_env`]: the command
+//! line refuses an unknown name or a path the CPU lacks, the library then takes the
+//! best path), or the one [`force`] sets (tests and benchmarks run every path so).
 
 use std::fmt;
 use std::str::FromStr;
@@ -111,13 +112,37 @@ pub fn path() -> Path {
 
 #[cold]
 fn choose() -> Path {
-    let asked = std::env::var("PHONG_APPROX_SIMD")
-        .ok()
-        .and_then(|s| s.parse::<Path>().ok())
-        .filter(|p| p.supported());
-    let p = asked.unwrap_or_else(Path::best);
+    let p = from_env().ok().flatten().unwrap_or_else(Path::best);
     store(p);
     p
+}
+
+/// The path `PHONG_APPROX_SIMD` names: `None` when it is unset or empty. The kernels
+/// ignore a value this returns an error for (they take [`Path::best`]); the command
+/// line refuses it with this one-line message and exit 2, so that a run never takes
+/// another path than the one asked for without a word.
+///
+/// # Errors
+/// An unknown name, or a path this CPU cannot take (naming the ones it can).
+pub fn from_env() -> Result<Option<Path>, String> {
+    let Some(v) = std::env::var_os("PHONG_APPROX_SIMD") else {
+        return Ok(None);
+    };
+    let v = v.to_string_lossy();
+    if v.trim().is_empty() {
+        return Ok(None);
+    }
+    let p = v
+        .parse::<Path>()
+        .map_err(|e| format!("PHONG_APPROX_SIMD: {e}"))?;
+    if !p.supported() {
+        let has: Vec<&str> = Path::supported_paths().iter().map(|p| p.name()).collect();
+        return Err(format!(
+            "PHONG_APPROX_SIMD={p}: this CPU cannot take the {p} path (it has {})",
+            has.join(", ")
+        ));
+    }
+    Ok(Some(p))
 }
 
 fn store(p: Path) {

@@ -88,6 +88,29 @@ impl Request {
                 input_bits(&[&self.na, &self.nb, &self.l]),
                 digits,
             );
+            // A tabled cosine builds its table before the first pixel: where the table
+            // alone is over the budget, the table's size is what to change.
+            let table_work = match method {
+                Method::AngularTable(_) => exact_work(
+                    method,
+                    0,
+                    input_bits(&[&self.na, &self.nb, &self.l]),
+                    digits,
+                ),
+                _ => 0,
+            };
+            if table_work > MAX_RECOMPUTED_WORK {
+                if let Method::AngularTable(size) = method {
+                    return Err(ReportError::new(
+                        Field::TableSize,
+                        format!(
+                            "a table of {size} exact cosines to these digits takes about {}× the budget of half a minute",
+                            table_work.div_ceil(MAX_RECOMPUTED_WORK)
+                        ),
+                    )
+                    .or(Remedy::RunAnyway));
+                }
+            }
             if work > MAX_RECOMPUTED_WORK {
                 return Err(ReportError::new(
                     Field::Steps,
@@ -332,6 +355,27 @@ type Computed<T> = (Span<T>, Vec<T>, Option<Decision<T>>);
 fn compute<T: Real>(r: &Request) -> Result<Computed<T>, ReportError> {
     let conv = |v: &Vec3<BigRational>| v.cast::<T>().expect("rationals are finite");
     let (na, nb, l) = (conv(&r.na), conv(&r.nb), conv(&r.l));
+    // A non-zero vector whose every component rounds to 0 in this number type is not
+    // "zero": it underflows (1e-300 in f32), and the message says so.
+    for (exact, typed, field) in [
+        (&r.na, &na, Field::Na),
+        (&r.nb, &nb, Field::Nb),
+        (&r.l, &l, Field::Light),
+    ] {
+        let exact_zero = exact
+            .components()
+            .iter()
+            .all(|c| num_traits::Zero::is_zero(*c));
+        if !exact_zero && typed.components().iter().all(|c| c.is_zero()) {
+            return Err(ReportError::new(
+                field,
+                format!(
+                    "every component underflows to 0 in {}: the vector is too small for this number type (only its direction counts: scale it up, or use a wider type)",
+                    r.arithmetic
+                ),
+            ));
+        }
+    }
     let span = if r.normalize {
         Span::normalized(na, nb, l, r.n)
     } else {

@@ -10,7 +10,10 @@
 #    (-ffp-contract=fast, with -mfma on x86-64, where GCC fuses only when FMA
 #    instructions are enabled) — with -Wall -Wextra -Werror.
 # 2. Checks that phong_kit reads every input as the vector file's f32 and f64 forms,
-#    bit for bit (methods inputs, compared with SET.json).
+#    bit for bit (methods inputs, compared with SET.json); that bad input (9 kinds) is
+#    one line on stderr and exit 2; and, where /dev/full exists, that a write that
+#    fails (the results mid-run and at the last flush, in f32 and f64, the usage,
+#    methods inputs) exits non-zero with one line saying "No space left on device".
 # 3. For f32 and f64, every published set and every method: the plain build under
 #    the reference profile and the default ieee profile, the fused build under ieee
 #    (each method has an ieee bound: proved for gouraud, euler and corrected-euler,
@@ -19,6 +22,14 @@
 # 4. The user's route: run.sh on example_corrected_euler.c must pass, and on a copy
 #    with the first step corrected by ε/(n+1) instead of ε/n (made here, in a
 #    temporary folder) must fail.
+# 5. The kit's version and its old API: pk_version() is PK_VERSION (tests/version.c),
+#    which heads CHANGELOG.md; tests/old_client.c, written against kit 0.1.0's
+#    exact_input.h as harness.c used it, builds against today's deprecated shim with
+#    -std=c99 -Wall -Wextra -Werror -Wno-deprecated-declarations, exits 2 on a bad
+#    fraction, and prints the same inputs (%a) and corrected-Euler values as methods.c
+#    through phong_kit, bit for bit, on every set; without -Wno-deprecated-declarations
+#    it and a file using each of the shim's functions do not compile, each function
+#    reported deprecated (the entry points naming their phong_kit replacement).
 #
 # PHONG_KIT_VECTORS overrides the folder of the vector files, as for run.sh.
 set -euo pipefail
@@ -37,13 +48,14 @@ trap 'exit 129' HUP
 trap 'exit 130' INT
 trap 'exit 143' TERM
 
+# 1. methods.c, plain and fused.
 warn=(-Wall -Wextra -Werror)
 fused=(-ffp-contract=fast)
 case $(cc -dumpmachine 2>/dev/null || uname -m) in x86_64*|amd64*) fused+=(-mfma) ;; esac
 cc -O2 -std=c99 -ffp-contract=off "${warn[@]}" -o "$tmp/plain" "$here/methods.c" "$here/phong_kit.c" -lm
 cc -O2 -std=c99 "${fused[@]}" "${warn[@]}" -o "$tmp/fused" "$here/methods.c" "$here/phong_kit.c" -lm
 
-# phong_kit's floats and doubles are the vector files' nearest-f32 and nearest-f64
+# 2. phong_kit's floats and doubles are the vector files' nearest-f32 and nearest-f64
 # forms, bit for bit.
 for set in "${sets[@]}"; do
   "$tmp/plain" inputs "$vectors/$set-inputs.csv" > "$tmp/inputs.csv"
@@ -102,7 +114,29 @@ bad_input "a row with missing columns" "$tmp/cut.csv"
 bad_input "a line past the kit's cap" "$tmp/long.csv"
 echo "  phong_kit: bad input (9 kinds) is one line and exit 2"
 
-# check BUILD PROFILE PRECISION SET METHOD [--specular]
+# A write that fails says why, in one line: /dev/full is a full disk.
+if [ -w /dev/full ]; then
+  full() { # what, command...
+    local what=$1 rc=0
+    shift
+    "$@" > /dev/full 2> "$tmp/full.err" || rc=$?
+    if [ "$rc" -eq 0 ] || [ "$(wc -l < "$tmp/full.err")" -ne 1 ] ||
+        ! grep -q 'No space left on device' "$tmp/full.err"; then
+      echo "ci.sh: $what to /dev/full: exit $rc, stderr:" >&2; cat "$tmp/full.err" >&2; exit 1
+    fi
+  }
+  { cat "$tmp/header.csv"; echo "$row" | awk -F, 'BEGIN{OFS=","} {$2=1; print}'; } > "$tmp/n1.csv"
+  full "a set's results (failing mid-run)" "$tmp/plain" corrected-euler "$vectors/typical-inputs.csv"
+  full "a set's f64 results" "$tmp/plain" phong --precision f64 "$vectors/typical-inputs.csv"
+  full "two pixels' results (failing at the last flush)" "$tmp/plain" corrected-euler "$tmp/n1.csv"
+  full "the usage" "$tmp/plain" corrected-euler --help
+  full "methods inputs" "$tmp/plain" inputs "$vectors/typical-inputs.csv"
+  echo "  phong_kit: a write to /dev/full (5 kinds) is one line, \"No space left on device\", and a non-zero exit"
+else
+  echo "  phong_kit: no writable /dev/full here: the write-failure checks are skipped"
+fi
+
+# 3. check BUILD PROFILE PRECISION SET METHOD [--specular]
 check() {
   local build=$1 profile=$2 precision=$3 set=$4 method=$5 part=${6:-}
   if ! "$bin" check --vectors "$vectors/$set.json" --results "$tmp/$build.csv" --method "$method" \
@@ -142,7 +176,7 @@ if [ "$differ" -eq 0 ]; then
 fi
 echo "  methods.c: every set and method passes in f32 and f64; the fused build differs on $differ of 15 f32 and $differ64 of 15 f64 set-method pairs"
 
-# The user's route, as the README gives it.
+# 4. The user's route, as the README gives it.
 CFLAGS="${warn[*]}" bash "$here/run.sh" "$here/example_corrected_euler.c" "$bin" --method corrected-euler
 sed 's|t0 = dia - eps / nf;|t0 = dia - eps / (nf + 1);|' "$here/example_corrected_euler.c" > "$tmp/planted.c"
 if cmp -s "$here/example_corrected_euler.c" "$tmp/planted.c"; then
@@ -157,4 +191,76 @@ if [ "$rc" -ne 1 ] || grep -q ' pass: ' "$tmp/out"; then
   exit 1
 fi
 echo "  run.sh: the planted ε/(n+1) fails every set and build ($(grep -c ' FAIL: ' "$tmp/out") of 6)"
-echo "C harness: every set, method and precision passes; the example passes and its planted bug fails"
+
+# 5. The kit's version, and kit 0.1.0's API through the deprecated exact_input.h.
+cc -O2 -std=c99 "${warn[@]}" -I"$here" -o "$tmp/version" "$here/tests/version.c" "$here/phong_kit.c" -lm
+version=$("$tmp/version") || { echo "ci.sh: pk_version() is not PK_VERSION" >&2; exit 1; }
+first=$(grep -m 1 '^## ' "$here/CHANGELOG.md" || true)
+if [ "${first%% *}" != "##" ] || [ "$(echo "$first" | cut -d' ' -f2)" != "[$version]" ]; then
+  echo "ci.sh: harness/c/CHANGELOG.md does not begin with the section of PK_VERSION ($version)" >&2
+  exit 1
+fi
+echo "  phong_kit $version: pk_version() is PK_VERSION, the first section of CHANGELOG.md"
+
+old=(-O2 -std=c99 -ffp-contract=off "${warn[@]}" -I"$here")
+cc "${old[@]}" -Wno-deprecated-declarations -o "$tmp/old_client" "$here/tests/old_client.c" \
+  "$here/phong_kit.c" -lm
+same() { # what, old output, new output
+  if [ "$(wc -l < "$2")" -le 1 ] || ! cmp -s "$2" "$3"; then
+    echo "ci.sh: old_client.c and methods.c differ on $1 (< old, > new):" >&2
+    diff "$2" "$3" | head -n 10 >&2
+    exit 1
+  fi
+}
+for set in "${sets[@]}"; do
+  "$tmp/old_client" inputs < "$vectors/$set-inputs.csv" > "$tmp/old.csv"
+  "$tmp/plain" inputs "$vectors/$set-inputs.csv" > "$tmp/new.csv"
+  sort -o "$tmp/old.csv" "$tmp/old.csv"
+  sort -o "$tmp/new.csv" "$tmp/new.csv"
+  same "$set's inputs" "$tmp/old.csv" "$tmp/new.csv"
+  "$tmp/old_client" corrected-euler < "$vectors/$set-inputs.csv" > "$tmp/old.csv"
+  "$tmp/plain" corrected-euler --precision f32 "$vectors/$set-inputs.csv" > "$tmp/new.csv"
+  same "$set's corrected Euler" "$tmp/old.csv" "$tmp/new.csv"
+done
+{ cat "$tmp/header.csv"; echo "$row" | awk -F, 'BEGIN{OFS=","} {$3="1/0"; print}'; } > "$tmp/frac.csv"
+rc=0
+"$tmp/old_client" corrected-euler < "$tmp/frac.csv" > /dev/null 2> "$tmp/frac.err" || rc=$?
+if [ "$rc" -ne 2 ] || ! grep -q 'not exact inputs' "$tmp/frac.err"; then
+  echo "ci.sh: old_client.c on the fraction 1/0: exit $rc, stderr:" >&2; cat "$tmp/frac.err" >&2; exit 1
+fi
+echo "  exact_input.h (deprecated): old_client.c builds, refuses 1/0, and gives methods.c's inputs and corrected Euler bit for bit"
+
+# Without -Wno-deprecated-declarations, -Werror stops every use of the shim (LC_ALL=C:
+# the compiler's quotes are ASCII).
+rc=0
+LC_ALL=C cc "${old[@]}" -o "$tmp/old_strict" "$here/tests/old_client.c" "$here/phong_kit.c" -lm \
+  2> "$tmp/strict.err" || rc=$?
+if [ "$rc" -eq 0 ]; then
+  echo "ci.sh: old_client.c compiles without -Wno-deprecated-declarations: exact_input.h is not marked deprecated" >&2
+  exit 1
+fi
+for use in exact_input_f32:pk_run_f32 exact_input_f64:pk_run_f64 exact_input:pk_run_f32; do
+  if ! grep -q "'${use%%:*}' is deprecated: .*${use#*:}" "$tmp/strict.err"; then
+    echo "ci.sh: the strict build of old_client.c does not report ${use%%:*} as deprecated (with ${use#*:}):" >&2
+    head -n 20 "$tmp/strict.err" >&2
+    exit 1
+  fi
+done
+names=$(sed -n 's/^static inline [^(]*[ *]\(exact_[a-z0-9_]*\)(.*{.*$/\1/p' "$here/exact_input.h" | sort -u)
+{
+  echo '#include "exact_input.h"'
+  echo 'void (*const every_function[])(void) = {'
+  for f in $names; do echo "    (void (*)(void))$f,"; done
+  echo '};'
+} > "$tmp/every.c"
+cc "${old[@]}" -Wno-deprecated-declarations -c -o "$tmp/every.o" "$tmp/every.c"
+rc=0
+LC_ALL=C cc "${old[@]}" -c -o "$tmp/every.o" "$tmp/every.c" 2> "$tmp/every.err" || rc=$?
+reported=$(grep -o "'exact_[a-z0-9_]*' is deprecated" "$tmp/every.err" | sort -u | wc -l)
+if [ "$rc" -eq 0 ] || [ "$reported" -ne "$(echo "$names" | wc -w)" ] || [ "$reported" -lt 12 ]; then
+  echo "ci.sh: $reported of exact_input.h's $(echo "$names" | wc -w) functions are reported deprecated (exit $rc):" >&2
+  head -n 20 "$tmp/every.err" >&2
+  exit 1
+fi
+echo "  exact_input.h (deprecated): old_client.c does not compile without -Wno-deprecated-declarations; all $reported of the shim's functions are reported deprecated"
+echo "C harness: every set, method and precision passes; the example passes and its planted bug fails; the old API still builds and agrees"

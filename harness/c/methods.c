@@ -12,6 +12,7 @@
  * every input of every case as the kit read it, as `case,component,precision,hex`
  * rows (C99 %a), for ci.sh to compare with the vector file's f32 and f64 forms.
  */
+#include <errno.h>
 #include <math.h>
 #include <stdio.h>
 #include <string.h>
@@ -49,39 +50,59 @@ static const char *const component_names[12] = {"na_x", "na_y", "na_z", "nb_x", 
                                                  "nb_z", "l_x",  "l_y",  "l_z",  "h_x",
                                                  "h_y",  "h_z"};
 
-/* `inputs`: print the case's inputs instead of shading (out is left as NaN). */
+/* `inputs`: print the case's inputs instead of shading (out is left as NaN). A
+ * write to standard output that fails stops the printing, its errno in
+ * *(int *)user (inputs() then says it, in one line). */
+static int printed(int result, void *user) {
+    if (result >= 0) return 0;
+    *(int *)user = errno ? errno : -1;
+    return 1;
+}
+
 static int print_f32(const pk_case_f32 *c, float *out, void *user) {
     const float *v[4] = {c->na, c->nb, c->l, c->h};
     (void)out;
-    (void)user;
-    for (int j = 0; j < (c->has_specular ? 12 : 9); j++)
-        printf("%s,%s,f32,%a\n", c->id, component_names[j], (double)v[j / 3][j % 3]);
+    for (int j = 0; !*(int *)user && j < (c->has_specular ? 12 : 9); j++) {
+        errno = 0;
+        if (printed(printf("%s,%s,f32,%a\n", c->id, component_names[j], (double)v[j / 3][j % 3]), user))
+            break;
+    }
     return 0;
 }
 
 static int print_f64(const pk_case_f64 *c, double *out, void *user) {
     const double *v[4] = {c->na, c->nb, c->l, c->h};
     (void)out;
-    (void)user;
-    for (int j = 0; j < (c->has_specular ? 12 : 9); j++)
-        printf("%s,%s,f64,%a\n", c->id, component_names[j], v[j / 3][j % 3]);
+    for (int j = 0; !*(int *)user && j < (c->has_specular ? 12 : 9); j++) {
+        errno = 0;
+        if (printed(printf("%s,%s,f64,%a\n", c->id, component_names[j], v[j / 3][j % 3]), user))
+            break;
+    }
     return 0;
 }
 
 static int inputs(const char *path) {
     FILE *in = fopen(path, "r"), *sink = tmpfile();
-    int rc = PK_BAD_INPUT;
+    int rc = PK_BAD_INPUT, err = 0;
     if (!in || !sink) {
-        fprintf(stderr, "methods: cannot open %s or a temporary file\n", path);
+        fprintf(stderr, "methods: cannot open %s or a temporary file: %s\n", path, strerror(errno));
     } else {
-        printf("case,component,precision,value\n");
-        rc = pk_run_f32(in, path, sink, 0, print_f32, NULL);
-        rewind(in);
-        if (rc == PK_OK) rc = pk_run_f64(in, path, sink, 0, print_f64, NULL);
+        errno = 0;
+        if (!printed(printf("case,component,precision,value\n"), &err)) {
+            rc = pk_run_f32(in, path, sink, 0, print_f32, &err);
+            rewind(in);
+            if (rc == PK_OK) rc = pk_run_f64(in, path, sink, 0, print_f64, &err);
+        }
     }
     if (in) fclose(in);
     if (sink) fclose(sink);
-    if (rc == PK_OK && (fflush(stdout) != 0 || ferror(stdout))) rc = PK_BAD_INPUT;
+    errno = 0;
+    if (!err && (fflush(stdout) != 0 || ferror(stdout))) err = errno ? errno : -1;
+    if (err) {
+        fprintf(stderr, "methods: cannot write to <stdout>: %s\n",
+                err > 0 ? strerror(err) : "a write error, with no reason given by the C library");
+        rc = PK_BAD_INPUT;
+    }
     return rc;
 }
 

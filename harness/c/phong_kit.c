@@ -255,6 +255,45 @@ static int parse_row(reader_t *r, const layout_t *lay, row_t *row) {
     return 1;
 }
 
+/* The results stream, and the first write to it that failed with the system's reason
+ * (errno right after the failing call; 0 if it gave none). Every write is checked, so
+ * that a full disk or a closed pipe is said as such, not as a bare "write error". */
+typedef struct {
+    FILE *f;
+    const char *who;  /* for messages: "phong_kit", or pk_main's program name */
+    const char *what; /* for messages: "the results to <stdout>", "the results", ... */
+    int failed;
+    int err;
+} writer_t;
+
+/* Records a write's result: `result` is negative (fprintf, fputs) or EOF (fflush)
+ * on failure. Call it right after the write, with errno cleared before it. */
+static int wrote(writer_t *w, int result) {
+    if (result < 0 && !w->failed) {
+        w->failed = 1;
+        w->err = errno;
+    }
+    return !w->failed;
+}
+
+/* Flushes the stream and says the first write failure, if any, in one line on stderr
+ * ("phong_kit: cannot write the results to <stdout>: No space left on device"):
+ * 1 all written, 0 not (said). The stream is not closed. */
+static int finish_writing(writer_t *w) {
+    if (!w->failed) {
+        errno = 0;
+        wrote(w, fflush(w->f));
+    }
+    if (!w->failed && ferror(w->f)) { /* an error before the kit's writes: no errno */
+        w->failed = 1;
+        w->err = 0;
+    }
+    if (!w->failed) return 1;
+    fprintf(stderr, "%s: cannot write %s: %s\n", w->who, w->what,
+            w->err ? strerror(w->err) : "a write error, with no reason given by the C library");
+    return 0;
+}
+
 /* What one precision does with a row. */
 typedef struct {
     int f64;
@@ -265,7 +304,9 @@ typedef struct {
     long cap;
 } run_t;
 
-static int shade_row(run_t *run, const row_t *row, int part, FILE *out) {
+/* Shades one row and writes its values; a write that fails is recorded in *out and
+ * stops the writing (PK_OK is still returned: run_file says the failure). */
+static int shade_row(run_t *run, const row_t *row, int part, writer_t *out) {
     long n = row->n;
     size_t size = run->f64 ? sizeof(double) : sizeof(float);
     if (n + 1 > run->cap) {
@@ -293,11 +334,12 @@ static int shade_row(run_t *run, const row_t *row, int part, FILE *out) {
         c.part = part;
         for (long i = 0; i <= n; i++) v[i] = (double)NAN;
         rc = run->shade64(&c, v, run->user);
-        if (rc == 0)
-            for (long i = 0; i <= n; i++) {
-                if (v[i] != v[i]) fprintf(out, "%s,%ld,nan\n", row->id, i);
-                else fprintf(out, "%s,%ld,%.17g\n", row->id, i, v[i]);
-            }
+        for (long i = 0; rc == 0 && i <= n; i++) {
+            errno = 0;
+            if (!wrote(out, v[i] != v[i] ? fprintf(out->f, "%s,%ld,nan\n", row->id, i)
+                                         : fprintf(out->f, "%s,%ld,%.17g\n", row->id, i, v[i])))
+                break;
+        }
     } else {
         pk_case_f32 c;
         float *v = run->buf;
@@ -313,11 +355,13 @@ static int shade_row(run_t *run, const row_t *row, int part, FILE *out) {
         c.part = part;
         for (long i = 0; i <= n; i++) v[i] = NAN;
         rc = run->shade32(&c, v, run->user);
-        if (rc == 0)
-            for (long i = 0; i <= n; i++) {
-                if (v[i] != v[i]) fprintf(out, "%s,%ld,nan\n", row->id, i);
-                else fprintf(out, "%s,%ld,%.9g\n", row->id, i, (double)v[i]);
-            }
+        for (long i = 0; rc == 0 && i <= n; i++) {
+            errno = 0;
+            if (!wrote(out, v[i] != v[i]
+                                ? fprintf(out->f, "%s,%ld,nan\n", row->id, i)
+                                : fprintf(out->f, "%s,%ld,%.9g\n", row->id, i, (double)v[i])))
+                break;
+        }
     }
     if (rc != 0) {
         fprintf(stderr, "phong_kit: case %.80s: the shading function returned %d\n", row->id, rc);
@@ -326,10 +370,13 @@ static int shade_row(run_t *run, const row_t *row, int part, FILE *out) {
     return PK_OK;
 }
 
-static int run_file(FILE *in, const char *in_name, FILE *out, int flags, run_t *run) {
+/* `out_what` names the output in messages: "the results to <stdout>", "the results". */
+static int run_file(FILE *in, const char *in_name, FILE *out_file, const char *out_what,
+                    int flags, run_t *run) {
     reader_t *r = malloc(sizeof *r);
     layout_t lay;
     row_t row;
+    writer_t out = {out_file, "phong_kit", out_what, 0, 0};
     int rc = PK_OK;
     if (!r) {
         fprintf(stderr, "phong_kit: out of memory\n");
@@ -342,28 +389,23 @@ static int run_file(FILE *in, const char *in_name, FILE *out, int flags, run_t *
         free(r);
         return PK_BAD_INPUT;
     }
-    fputs("case,pixel,value\n", out);
-    for (;;) {
+    errno = 0;
+    wrote(&out, fputs("case,pixel,value\n", out.f));
+    while (!out.failed) {
         int got = read_line(r);
         if (got < 0) { rc = PK_BAD_INPUT; break; }
         if (got == 0) break;
         if (r->len == 0) continue; /* a blank line */
         if (!parse_row(r, &lay, &row)) { rc = PK_BAD_INPUT; break; }
         if ((flags & PK_FLAG_SPECULAR) && !row.has_specular) continue;
-        rc = shade_row(run, &row, (flags & PK_FLAG_SPECULAR) ? PK_SPECULAR : PK_DIFFUSE, out);
+        rc = shade_row(run, &row, (flags & PK_FLAG_SPECULAR) ? PK_SPECULAR : PK_DIFFUSE, &out);
         if (rc != PK_OK) break;
-        if (ferror(out)) break;
     }
     free(r);
     free(run->buf);
     run->buf = NULL;
     run->cap = 0;
-    errno = 0;
-    if (fflush(out) != 0 || ferror(out)) {
-        fprintf(stderr, "phong_kit: writing the results: %s\n",
-                errno ? strerror(errno) : "write error");
-        return PK_BAD_INPUT;
-    }
+    if (!finish_writing(&out)) return PK_BAD_INPUT;
     return rc;
 }
 
@@ -374,7 +416,7 @@ int pk_run_f32(FILE *in, const char *in_name, FILE *out, int flags, pk_shade_f32
         fprintf(stderr, "phong_kit: pk_run_f32 needs an input, an output and a function\n");
         return PK_BAD_INPUT;
     }
-    return run_file(in, in_name, out, flags, &run);
+    return run_file(in, in_name, out, "the results", flags, &run);
 }
 
 int pk_run_f64(FILE *in, const char *in_name, FILE *out, int flags, pk_shade_f64 shade,
@@ -384,12 +426,15 @@ int pk_run_f64(FILE *in, const char *in_name, FILE *out, int flags, pk_shade_f64
         fprintf(stderr, "phong_kit: pk_run_f64 needs an input, an output and a function\n");
         return PK_BAD_INPUT;
     }
-    return run_file(in, in_name, out, flags, &run);
+    return run_file(in, in_name, out, "the results", flags, &run);
 }
 
-static void usage(FILE *to, const char *prog) {
-    fprintf(to, "usage: %s [--precision f32|f64] [--specular] [INPUTS.csv | -] > RESULTS.csv\n",
-            prog);
+const char *pk_version(void) { return PK_VERSION; }
+
+static int usage(FILE *to, const char *prog) {
+    return fprintf(to,
+                   "usage: %s [--precision f32|f64] [--specular] [INPUTS.csv | -] > RESULTS.csv\n",
+                   prog);
 }
 
 int pk_main(int argc, char **argv, pk_shade_f32 shade32, pk_shade_f64 shade64, void *user) {
@@ -401,8 +446,10 @@ int pk_main(int argc, char **argv, pk_shade_f32 shade32, pk_shade_f64 shade64, v
         if (options && !strcmp(a, "--")) {
             options = 0;
         } else if (options && (!strcmp(a, "-h") || !strcmp(a, "--help"))) {
-            usage(stdout, prog);
-            return PK_OK;
+            writer_t w = {stdout, prog, "the usage to <stdout>", 0, 0};
+            errno = 0;
+            wrote(&w, usage(stdout, prog));
+            return finish_writing(&w) ? PK_OK : PK_BAD_INPUT;
         } else if (options && !strcmp(a, "--precision")) {
             if (++i == argc) {
                 fprintf(stderr, "%s: --precision needs f32 or f64\n", prog);
@@ -449,8 +496,8 @@ int pk_main(int argc, char **argv, pk_shade_f32 shade32, pk_shade_f64 shade64, v
         }
         name = path;
     }
-    int rc = f64 ? pk_run_f64(in, name, stdout, flags, shade64, user)
-                 : pk_run_f32(in, name, stdout, flags, shade32, user);
+    run_t run = {f64, shade32, shade64, user, NULL, 0};
+    int rc = run_file(in, name, stdout, "the results to <stdout>", flags, &run);
     if (in != stdin) fclose(in);
     return rc;
 }

@@ -57,7 +57,25 @@
  * so columns the kit does not read may come and go. Any problem stops the run with
  * one line on stderr ("phong_kit: FILE:LINE: what") and a non-zero return, after
  * which the results written so far are incomplete; the kit never exits or aborts on
- * its own.
+ * its own. A write that fails (on a full disk, say) is said with the system's
+ * reason: "phong_kit: cannot write the results to <stdout>: No space left on
+ * device".
+ *
+ * VERSION. PK_VERSION ("MAJOR.MINOR.PATCH") and PK_VERSION_MAJOR, _MINOR and _PATCH
+ * are the version of the header you compiled against; pk_version() returns the
+ * PK_VERSION of the phong_kit.c you linked, so a program can check that the two
+ * agree (strcmp(pk_version(), PK_VERSION) == 0). The kit is versioned on its own,
+ * not with the phong-approx crate. Its policy (semantic versioning):
+ *   - Within 0.x, a minor bump (0.2 -> 0.3) may break the API or the behaviour; a
+ *     patch bump (0.2.0 -> 0.2.1) never does. From 1.0 on only a major bump may.
+ *   - An entry point (a function, type, macro or header) that is removed or
+ *     renamed is kept for one more minor version as a deprecated wrapper, marked
+ *     PK_DEPRECATED("use ... instead"): __attribute__((deprecated("..."))) under
+ *     GCC and Clang, so that a build using it warns and names the replacement.
+ *   - CHANGELOG.md, next to this file, names every change, version by version.
+ * So exact_input.h (kit 0.1.0, removed in 0.2.0 when the kit started reading the
+ * hex columns) is back in 0.2.x, deprecated: the old code compiles and gives the same
+ * results, with a warning naming its replacement; it goes in 0.3.0.
  */
 #ifndef PHONG_KIT_H
 #define PHONG_KIT_H
@@ -67,6 +85,20 @@
 
 #ifdef __cplusplus
 extern "C" {
+#endif
+
+/* The kit's version (see VERSION above): the header's, at compile time. */
+#define PK_VERSION_MAJOR 0
+#define PK_VERSION_MINOR 2
+#define PK_VERSION_PATCH 0
+#define PK_VERSION "0.2.0"
+
+/* Marks a deprecated entry point: a use of it warns, with `msg` (the replacement),
+ * under GCC and Clang; nothing elsewhere. */
+#if defined(__GNUC__) || defined(__clang__)
+#define PK_DEPRECATED(msg) __attribute__((deprecated(msg)))
+#else
+#define PK_DEPRECATED(msg)
 #endif
 
 #define PK_MAX_STEPS (1L << 20) /* largest n: spans of up to 2^20 + 1 pixels */
@@ -138,8 +170,12 @@ int pk_run_f64(FILE *in, const char *in_name, FILE *out, int flags, pk_shade_f64
  * standard output. --precision picks the function (default: f32 if given, else
  * f64); asking for one that is NULL is an error. Returns the exit code: PK_OK,
  * PK_SHADE_FAILED, or PK_BAD_INPUT for bad arguments, input or output; `-h` or
- * `--help` prints the usage and returns PK_OK. */
+ * `--help` prints the usage and returns PK_OK (PK_BAD_INPUT if it cannot be
+ * written). */
 int pk_main(int argc, char **argv, pk_shade_f32 shade32, pk_shade_f64 shade64, void *user);
+
+/* The PK_VERSION of the phong_kit.c linked in, e.g. "0.2.0" (a static string). */
+const char *pk_version(void);
 
 #ifdef __cplusplus
 }

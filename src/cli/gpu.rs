@@ -35,9 +35,13 @@ pub struct GpuCheckArgs {
           value_parser = |s: &str| s.parse::<Profile>())]
     pub profile: Profile,
     /// Also write the verdict for a CI system: `--report junit FILE` or `--report json
-    /// FILE` (FILE `-`: standard output), as `check` does.
+    /// FILE` (FILE `-`: standard output), as `check` does: an existing file only if it
+    /// is a report of this tool, or with --force.
     #[arg(long, num_args = 2, value_names = ["FORMAT", "FILE"])]
     pub report: Option<Vec<String>>,
+    /// Let --report replace an existing file that is not a report of this tool.
+    #[arg(long)]
+    pub force: bool,
     /// The most the dispatch may take, in seconds (1 to 3600).
     #[arg(long, value_name = "SECONDS", default_value = "60",
           value_parser = |s: &str| super::whole(s, 1, 3600, "the timeout"))]
@@ -154,7 +158,7 @@ mod with_gpu {
             ));
         }
         // Read (and refused) before the device is opened.
-        let report = ReportArg::parse(a.report.as_deref())?;
+        let report = ReportArg::parse(a.report.as_deref(), a.force)?;
         let timeout = Duration::from_secs(u64::from(a.timeout));
         // The kernel is read (and GLSL compiled) before the device is opened: a bad
         // file is bad input whether or not there is a GPU.
@@ -253,7 +257,11 @@ mod with_gpu {
                         .unwrap_or(serde_json::Value::Null)
                 })
                 .collect();
-            let v = serde_json::json!({ "adapter": adapter, "sets": per });
+            let v = serde_json::json!({
+                "generator": concat!("phong-approx ", env!("CARGO_PKG_VERSION"), " gpu-check"),
+                "adapter": adapter,
+                "sets": per,
+            });
             return serde_json::to_string_pretty(&v).unwrap_or_default() + "\n";
         }
         let (mut tests, mut failures, mut body) = (0, 0, String::new());

@@ -13,10 +13,12 @@
 //! manifest, [`MANIFEST`], lists what it wrote) or with `--force`; a name that is a
 //! symbolic link is never written through, and neither is an output folder that is a
 //! symbolic link. Nothing of the user's is deleted. A run holds an advisory lock on
-//! the folder ([`LOCK`]) from [`OutDir::open`] to the end of its commit: a second run
-//! into the same folder meanwhile exits 2 at once, naming the first, so the manifest
-//! is only ever read and written by one run at a time. Names that start with a dot
-//! are written like any other.
+//! the folder ([`LOCK`]) from [`OutDir::open`] to the end of its commit, and removes
+//! the lock file when it ends: a second run into the same folder meanwhile exits 2 at
+//! once, naming the first, so the manifest is only ever read and written by one run
+//! at a time. A journal left by a run that died replaces only names the manifest
+//! lists. Names that start with a dot are written like any other. (`--report` files
+//! are single files into any folder and take another route: `cli::check`.)
 
 use super::{read_capped, CliError};
 use phong_approx::conformance::shown;
@@ -238,7 +240,21 @@ impl OutDir {
             let tmp = tmp.file_name().map(|t| t.to_string_lossy().into_owned());
             (tmp.unwrap_or_default(), name)
         });
-        finish_commit(&self.dir, self.arg, &mut self.manifest, renames.collect())
+        finish_commit(
+            &self.dir,
+            self.arg,
+            &mut self.manifest,
+            renames.collect(),
+            false,
+        )
+    }
+}
+
+impl Drop for OutDir {
+    /// Removes the lock file while still holding its lock (a run that opened it
+    /// meanwhile takes the lock again on a new file, see `lock_folder`).
+    fn drop(&mut self) {
+        let _ = fs::remove_file(self.dir.join(LOCK));
     }
 }
 
@@ -247,24 +263,41 @@ impl OutDir {
 /// a one-line refusal naming that run (its process id, as it wrote it).
 fn lock_folder(dir: &Path, arg: &'static str) -> Result<fs::File, CliError> {
     use std::io::{Read, Seek, Write};
+    use std::os::unix::fs::MetadataExt;
     use std::os::unix::fs::OpenOptionsExt;
     use std::os::unix::io::AsRawFd;
     let path = dir.join(LOCK);
-    let mut f = OpenOptions::new()
-        .read(true)
-        .write(true)
-        .create(true)
-        .truncate(false)
-        .custom_flags(libc::O_NOFOLLOW)
-        .open(&path)
-        .map_err(|e| {
-            CliError::arg(
-                arg,
-                format!("cannot open {}: {e}", shown(&path.display().to_string())),
-            )
-        })?;
-    // SAFETY: flock on a descriptor this function owns; LOCK_NB never blocks.
-    let r = unsafe { libc::flock(f.as_raw_fd(), libc::LOCK_EX | libc::LOCK_NB) };
+    let mut tries = 0;
+    let f = loop {
+        let f = OpenOptions::new()
+            .read(true)
+            .write(true)
+            .create(true)
+            .truncate(false)
+            .custom_flags(libc::O_NOFOLLOW)
+            .open(&path)
+            .map_err(|e| {
+                CliError::arg(
+                    arg,
+                    format!("cannot open {}: {e}", shown(&path.display().to_string())),
+                )
+            })?;
+        // SAFETY: flock on a descriptor this function owns; LOCK_NB never blocks.
+        let r = unsafe { libc::flock(f.as_raw_fd(), libc::LOCK_EX | libc::LOCK_NB) };
+        // The run before removes the lock file when it ends ([`OutDir`]'s drop): a
+        // lock taken on a file that is no longer the folder's is taken again.
+        let current = match (f.metadata(), fs::symlink_metadata(&path)) {
+            (Ok(a), Ok(b)) => a.dev() == b.dev() && a.ino() == b.ino(),
+            _ => false,
+        };
+        if r == 0 && !current && tries < 100 {
+            tries += 1;
+            continue;
+        }
+        break (f, r);
+    };
+    let r = f.1;
+    let mut f = f.0;
     if r != 0 {
         let mut holder = String::new();
         let _ = Read::by_ref(&mut f).take(32).read_to_string(&mut holder);
@@ -302,17 +335,33 @@ fn read_manifest(dir: &Path, arg: &'static str) -> Result<BTreeSet<String>, CliE
 
 /// Renames each `(temporary name, final name)` in `dir` whose temporary file exists,
 /// adds the final names to `manifest`, writes the manifest and removes the journal.
+/// A journal left by a run that died (`from_journal`) is trusted only so far: a name
+/// that exists is replaced only if the manifest lists it (the journal may come from
+/// an unpacked archive or a copied folder, and name any file), and each rename
+/// passed over is said on standard error.
 fn finish_commit(
     dir: &Path,
     arg: &'static str,
     manifest: &mut BTreeSet<String>,
     renames: Vec<(String, String)>,
+    from_journal: bool,
 ) -> Result<(), CliError> {
     for (tmp, name) in renames {
         // Only our own temporary files, to plain names in this folder (a name that
         // starts with a dot is a name like any other, but never one of our own
         // bookkeeping files).
         if !tmp.starts_with(".partial-") || !is_plain_output_name(&name) {
+            continue;
+        }
+        if from_journal
+            && !manifest.contains(&name)
+            && fs::symlink_metadata(dir.join(&name)).is_ok()
+        {
+            super::report(&format!(
+                "warning: a commit journal left in {} names {}, which phong-approx did not write: not replacing it",
+                shown(&dir.display().to_string()),
+                shown(&name)
+            ));
             continue;
         }
         let from = dir.join(&tmp);
@@ -382,7 +431,7 @@ fn finish_interrupted_commit(
         .filter_map(|l| l.split_once('\t'))
         .map(|(a, b)| (a.to_string(), b.to_string()))
         .collect();
-    finish_commit(dir, arg, manifest, renames)
+    finish_commit(dir, arg, manifest, renames, true)
 }
 
 /// Removes the temporary files (`.partial-PID-…`) that runs which died left behind:

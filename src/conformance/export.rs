@@ -228,6 +228,7 @@ fn json(suite: &str, j: &Judgement, advice: Advice) -> String {
         .collect();
     let failed = rows.iter().filter(|r| !r.r.pass).count();
     let v = serde_json::json!({
+        "generator": concat!("phong-approx ", env!("CARGO_PKG_VERSION"), " check"),
         "suite": shown(suite),
         "set": shown(&vectors.set),
         "method": key,

@@ -60,28 +60,29 @@ impl Source {
     /// # Errors
     /// As [`Source::from_file`].
     pub fn glsl(text: &str, name: &str) -> Result<Source, GpuError> {
-        let dir = std::env::temp_dir().join(format!(
-            "phong-approx-glsl-{}-{}",
-            std::process::id(),
-            COUNTER.fetch_add(1, std::sync::atomic::Ordering::Relaxed)
-        ));
-        std::fs::create_dir(&dir).map_err(|e| GpuError::Source {
-            path: name.into(),
-            message: format!("cannot make a temporary folder: {e}"),
-        })?;
-        let file = dir.join("kernel.comp");
-        let r = std::fs::write(&file, text)
+        let dir = private_dir(name)?;
+        let file = dir.path().join("kernel.comp");
+        std::fs::write(&file, text)
             .map_err(|e| GpuError::Source {
                 path: name.into(),
                 message: format!("cannot write a temporary file: {e}"),
             })
-            .and_then(|()| glslang(&file, name));
-        let _ = std::fs::remove_dir_all(&dir);
-        r
+            .and_then(|()| glslang(&file, name))
     }
 }
 
-static COUNTER: std::sync::atomic::AtomicU64 = std::sync::atomic::AtomicU64::new(0);
+/// A new private temporary folder (random name, created exclusively, mode 0700,
+/// removed when dropped) for glslang's input and output: nothing in it can be a
+/// file or link planted by someone else.
+fn private_dir(name: &str) -> Result<tempfile::TempDir, GpuError> {
+    tempfile::Builder::new()
+        .prefix("phong-approx-glslang-")
+        .tempdir()
+        .map_err(|e| GpuError::Source {
+            path: name.into(),
+            message: format!("cannot make a temporary folder: {e}"),
+        })
+}
 
 /// SPIR-V bytes as words (little-endian, the magic number checked).
 fn spirv_words(bytes: &[u8]) -> Result<Vec<u32>, String> {
@@ -106,11 +107,8 @@ fn spirv_words(bytes: &[u8]) -> Result<Vec<u32>, String> {
 
 /// Compiles a GLSL compute shader with `glslangValidator -V` into SPIR-V.
 fn glslang(path: &Path, shown: &str) -> Result<Source, GpuError> {
-    let out = std::env::temp_dir().join(format!(
-        "phong-approx-{}-{}.spv",
-        std::process::id(),
-        COUNTER.fetch_add(1, std::sync::atomic::Ordering::Relaxed)
-    ));
+    let dir = private_dir(shown)?;
+    let out = dir.path().join("kernel.spv");
     let run = std::process::Command::new("glslangValidator")
         .arg("-V")
         .arg("-S")
@@ -131,7 +129,6 @@ fn glslang(path: &Path, shown: &str) -> Result<Source, GpuError> {
         }
     };
     if !run.status.success() {
-        let _ = std::fs::remove_file(&out);
         let text = String::from_utf8_lossy(&run.stdout).to_string()
             + &String::from_utf8_lossy(&run.stderr);
         // glslang names the file it was given on each line; keep the lines that say
@@ -146,9 +143,7 @@ fn glslang(path: &Path, shown: &str) -> Result<Source, GpuError> {
             message: message.join("\n"),
         });
     }
-    let bytes = std::fs::read(&out);
-    let _ = std::fs::remove_file(&out);
-    let bytes = bytes.map_err(|e| GpuError::Source {
+    let bytes = std::fs::read(&out).map_err(|e| GpuError::Source {
         path: shown.into(),
         message: format!("glslang's output cannot be read: {e}"),
     })?;

@@ -125,6 +125,13 @@ fn exact_bits(r: &Request, span: &Span<BigRational>) -> Option<i64> {
     if !matches!(r.method, Method::Angular) {
         return Some(own);
     }
+    Some(own.min(normalized_angle_bits(span, b)))
+}
+
+/// The bits the edge angles `acos p_a`, `acos p_b` of a `normalize` run are known to,
+/// from `p`'s error 2^-(b − 18) ([`exact_bits`]): `acos` moves by `e/sin θ`, or at most
+/// `2.23·√e`.
+fn normalized_angle_bits(span: &Span<BigRational>, b: i64) -> i64 {
     // sin²θ ≥ 1 − (|p| + e)² at both ends (the f64 rounding of p is far above e).
     let s2 = [&span.p_a, &span.p_b]
         .iter()
@@ -135,7 +142,120 @@ fn exact_bits(r: &Request, span: &Span<BigRational>) -> Option<i64> {
     } else {
         0
     };
-    Some(own.min(by_slope.max((b - 18) / 2 - 2)))
+    by_slope.max((b - 18) / 2 - 2)
+}
+
+/// `α/π` for an edge of the request whose cosine `p = N·L/(|N||L|)` has `p²` in
+/// `{0, ¼, ½, ¾, 1}`, else `None`. Those are the only angles of a rational multiple of
+/// π whose cosine has a rational square (Niven's theorem applied to `cos 2α = 2p² − 1`),
+/// so only there can a table position be exactly a midpoint, where no precision
+/// decides it; there it is computed exactly instead.
+fn niven_angle(n: &Vec3<BigRational>, l: &Vec3<BigRational>) -> Option<BigRational> {
+    use num_traits::Signed;
+    let q = |a: i64, b: i64| BigRational::new(a.into(), b.into());
+    let x = n.dot(l);
+    let p2 = x.clone() * x.clone() / (n.dot(n) * l.dot(l));
+    let a = [
+        (q(1, 1), q(0, 1)),
+        (q(3, 4), q(1, 6)),
+        (q(1, 2), q(1, 4)),
+        (q(1, 4), q(1, 3)),
+        (q(0, 1), q(1, 2)),
+    ]
+    .into_iter()
+    .find(|(c2, _)| *c2 == p2)
+    .map(|(_, a)| a)?;
+    Some(if x.is_negative() { q(1, 1) - a } else { a })
+}
+
+/// Settles the tabled cosine's index at every pixel (`values` from the exact run at
+/// this thread's accuracy 2^-b, `table` the run's table): where both edge angles are
+/// rational multiples of π ([`niven_angle`]) the positions are exact rationals and each
+/// index is taken from them; elsewhere every position must lie farther than its error
+/// from a midpoint `k + ½` between two entries. The error: the angles are within
+/// 2^-b (`acos` of exact `p`) or 2^-[`normalized_angle_bits`] (`normalize`) and `π/2`
+/// within 2^-b, so `α·(size − 1)/(π/2)` is within `2·(size − 1)·2^-bits`; 4× that is
+/// used.
+///
+/// # Errors
+/// The first pixel whose index is not decided at this accuracy.
+fn settle_table(
+    r: &Request,
+    span: &Span<BigRational>,
+    size: u32,
+    values: &mut [BigRational],
+) -> Result<(), usize> {
+    use crate::angular::{table_positions, CosTable};
+    use num_traits::Signed;
+    let Ok(table) = CosTable::<BigRational>::new(size) else {
+        return Ok(());
+    };
+    let last = BigRational::from_integer((size - 1).into());
+    if let (Some(a), Some(b)) = (niven_angle(&r.na, &r.l), niven_angle(&r.nb, &r.l)) {
+        let n = BigRational::from_integer(r.n.into());
+        let two_last = last.clone() * BigRational::from_integer(2.into());
+        for (i, v) in values.iter_mut().enumerate() {
+            let t = BigRational::from_integer(i.into()) / n.clone();
+            let pos = two_last.clone() * (a.clone() + t * (b.clone() - a.clone()));
+            *v = table.values[table.index(&pos)].clone();
+        }
+        return Ok(());
+    }
+    let b = i64::from(crate::reference::transcendental::bits());
+    let bits = if r.normalize {
+        normalized_angle_bits(span, b).min(b)
+    } else {
+        b
+    };
+    let e = last.clone()
+        * BigRational::new(
+            8.into(),
+            num_bigint::BigInt::from(1) << bits.max(0) as usize,
+        );
+    let half = BigRational::new(1.into(), 2.into());
+    for (i, pos) in table_positions(span, &table).iter().enumerate() {
+        let x = pos.clone() + half.clone();
+        let k = x.round();
+        let inside = k >= BigRational::from_integer(1.into()) && k <= last;
+        if inside && (x - k).abs() <= e {
+            return Err(i);
+        }
+    }
+    Ok(())
+}
+
+/// Settles a `normalize` run's adaptive decision exactly
+/// ([`crate::reference::radical::normalized_adaptive_choice`]): where the run's
+/// approximate square roots picked the other method, the values are those of the
+/// method the exact test picks, on the same span.
+fn settle_adaptive(
+    r: &Request,
+    span: &Span<BigRational>,
+    d: &mut Decision<BigRational>,
+    values: &mut [BigRational],
+) -> Result<(), ReportError> {
+    use crate::adaptive::Choice;
+    if !r.normalize {
+        return Ok(());
+    }
+    let exact =
+        crate::reference::radical::normalized_adaptive_choice((&r.na, &r.nb, &r.l), r.n, &r.kd);
+    if exact != d.choice {
+        d.choice = exact;
+        match exact {
+            Choice::Gouraud => crate::gouraud::shade(span, values),
+            Choice::CorrectedEuler => crate::corrected_euler::shade(span, values),
+        }
+        .map_err(|e| span_error(e, r.normalize))?;
+    }
+    Ok(())
+}
+
+/// Why an exact attempt at some accuracy is not enough: digits not known, or a
+/// tabled cosine's index not decided (its pixel).
+enum Retry {
+    Short(Short, i64),
+    Index(usize),
 }
 
 /// The bits known of MPFR values at `precision` bits: every operation is correctly
@@ -229,43 +349,57 @@ pub fn exact_run(r: &Request) -> Result<ExactRun, ReportError> {
     digits_within_reach(r)?;
     let mut b = BITS;
     loop {
-        let attempt = with_bits(
-            b,
-            || -> Result<Result<ExactRun, (Short, i64)>, ReportError> {
-                let (span, values, decision) = compute::<BigRational>(r)?;
-                let known = exact_bits(r, &span);
-                if let Some(bits) = known {
-                    if let Err(short) = check_digits(r, &values, bits, exact_zeros(r)) {
-                        return Ok(Err((short, bits)));
-                    }
+        let attempt = with_bits(b, || -> Result<Result<ExactRun, Retry>, ReportError> {
+            let (span, mut values, mut decision) = compute::<BigRational>(r)?;
+            if let Some(d) = decision.as_mut() {
+                settle_adaptive(r, &span, d, &mut values)?;
+            }
+            if let Method::AngularTable(size) = r.method {
+                if let Err(pixel) = settle_table(r, &span, size, &mut values) {
+                    return Ok(Err(Retry::Index(pixel)));
                 }
-                // Phong-valued methods: the exact level of p/√q decided with rationals
-                // only; with normalize, in Q(√a, √b, √c) where the approximate value
-                // does not decide it.
-                let one = BigRational::from_integer(1.into());
-                let levels = if r.normalize {
-                    normalized_levels(r, &values, known.unwrap_or(0))
-                } else {
-                    r.method.exact_levels(&span, &values, &one)
-                };
-                let decimals = values.iter().map(|v| v.to_decimal(r.digits)).collect();
-                Ok(Ok(ExactRun {
-                    values,
-                    decimals,
-                    levels,
-                    bits: known,
-                    decision,
-                }))
-            },
-        )?;
+            }
+            let known = exact_bits(r, &span);
+            if let Some(bits) = known {
+                if let Err(short) = check_digits(r, &values, bits, exact_zeros(r)) {
+                    return Ok(Err(Retry::Short(short, bits)));
+                }
+            }
+            // Phong-valued methods: the exact level of p/√q decided with rationals
+            // only; with normalize, in Q(√a, √b, √c) where the approximate value
+            // does not decide it.
+            let one = BigRational::from_integer(1.into());
+            let levels = if r.normalize {
+                normalized_levels(r, &values, known.unwrap_or(0))
+            } else {
+                r.method.exact_levels(&span, &values, &one)
+            };
+            let decimals = values.iter().map(|v| v.to_decimal(r.digits)).collect();
+            Ok(Ok(ExactRun {
+                values,
+                decimals,
+                levels,
+                bits: known,
+                decision,
+            }))
+        })?;
         match attempt {
             // A level within the run's error of a boundary: decided, if at all, by a
             // few more bits (up to 2^-LEVEL_BITS; closer than that it stays undecided:
             // `span` prints `?`, the vectors refuse the case).
             Ok(o) if o.levels.iter().any(Option::is_none) && b < LEVEL_BITS => b *= 2,
             Ok(o) => return Ok(o),
-            Err((short, bits)) if b >= MAX_BITS => return Err(short.error(bits)),
-            Err((short, _)) => {
+            Err(Retry::Index(pixel)) if b >= MAX_BITS => {
+                return Err(ReportError::new(
+                    Field::Span,
+                    format!(
+                        "the cosine table's entry at pixel {pixel} is not decided: its angle is within the run's error of the midpoint between two table angles even at the most bits an exact run takes (2^-{MAX_BITS})"
+                    ),
+                ))
+            }
+            Err(Retry::Index(_)) => b = (2 * b).min(MAX_BITS),
+            Err(Retry::Short(short, bits)) if b >= MAX_BITS => return Err(short.error(bits)),
+            Err(Retry::Short(short, _)) => {
                 let missing = r.digits.saturating_sub(short.known) as f64;
                 let more = (missing / std::f64::consts::LOG10_2).ceil() as u32 + 16;
                 b = (b + more).max(2 * b).min(MAX_BITS);
@@ -276,9 +410,10 @@ pub fn exact_run(r: &Request) -> Result<ExactRun, ReportError> {
 
 pub(super) fn run_exact(r: &Request) -> Result<Outcome, ReportError> {
     let run = exact_run(r)?;
-    let fractions = r
-        .method
-        .is_rational()
+    // Fractions only where the values are the exact rationals: a rational method on
+    // the inputs as given (normalizing takes square roots, so the values are then
+    // approximations of irrational numbers).
+    let fractions = (r.method.is_rational() && !r.normalize)
         .then(|| run.values.iter().map(ToString::to_string).collect());
     let mut o = outcome(r, run.values, run.decision, Some(run.levels));
     o.fractions = fractions;

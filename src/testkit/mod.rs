@@ -63,7 +63,9 @@ pub use crate::Format;
 pub use crate::Method;
 pub use inputs::{published, published_shapes, Float, Inputs, SETS};
 pub use outcome::{Failure, FailureInputs, Report, SetSummary};
-pub use span::{acceptance, check_span, oracle, KitError, Oracle, MAX_STEPS};
+pub use span::{
+    acceptance, check_span, oracle, oracle_without_budget, KitError, Oracle, MAX_STEPS,
+};
 pub use suite::Suite;
 
 /// Everything a test of your own needs, in one import:

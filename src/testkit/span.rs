@@ -106,21 +106,28 @@ pub fn check_span<T: Float, F: FnMut(&Inputs<T>) -> Vec<T>>(
 }
 
 /// The exact reference on a span of your own: the values (exact for the rational
-/// methods, to 2^-250 for the others, [`Method::exact_bits`]), as 30-digit decimals
-/// and their 8-bit levels (decided exactly, `None` only where a non-rational
-/// method's value is within its error of a level boundary).
+/// methods; for the others computed to more bits until every one of the 30 digits
+/// printed is known, [`crate::span_report::exact_run`], the path `span --scalar
+/// exact` takes), as 30-digit decimals and their 8-bit levels (decided exactly,
+/// `None` only where a non-rational method's value is within 2^-1024 of a level
+/// boundary).
 #[derive(Clone, Debug)]
 pub struct Oracle {
-    /// The values, pixel `0..=n`.
+    /// The values, pixel `0..=n`: exact for the rational methods, else within
+    /// 2^-[`Oracle::bits`] of the method's exact values.
     pub values: Vec<crate::BigRational>,
-    /// The values to 30 significant digits.
+    /// The values to 30 significant digits, every digit known.
     pub decimals: Vec<String>,
     /// The levels `floor(255·clamp(v, 0, 1))`.
     pub levels: Vec<Option<u8>>,
+    /// The bits the values are known to (`None`: exact).
+    pub bits: Option<i64>,
 }
 
 /// The exact values and levels of `method` on `span` (exact unit inputs:
-/// [`crate::reference::unit`] makes them). Cost: exact rationals, so about `n`
+/// [`crate::reference::unit`] makes them), within the budget `span --scalar exact`
+/// keeps without `--yes` (about half a minute of exact work,
+/// [`crate::budget::MAX_RECOMPUTED_WORK`]). Cost: exact rationals, so about `n`
 /// times a few microseconds for the rational methods and a few hundred for the ones
 /// with square roots, `acos` or `cos` (`docs/conformance.md`, budgets): keep `n` in
 /// the hundreds in property tests.
@@ -134,20 +141,54 @@ pub struct Oracle {
 /// ```
 ///
 /// # Errors
-/// The method's [`crate::SpanError`] on this span (a normal that vanishes, say).
+/// A [`crate::span_report::ReportError`]: the method's [`crate::SpanError`] on this
+/// span (a normal that vanishes, say), work over the budget
+/// ([`crate::span_report::Remedy::RunAnyway`]: [`oracle_without_budget`] runs it), or
+/// digits not known even at 2^-8192.
 pub fn oracle(
     method: Method,
     span: &crate::Span<crate::BigRational>,
-) -> Result<Oracle, crate::SpanError> {
-    use crate::Scalar as _;
-    let values = method.values(span)?;
-    let one = crate::BigRational::from_integer(1.into());
-    let levels = method.exact_levels(span, &values, &one);
-    let decimals = values.iter().map(|v| v.to_decimal(30)).collect();
+) -> Result<Oracle, crate::span_report::ReportError> {
+    oracle_run(method, span, true)
+}
+
+/// [`oracle`] without the work budget: for spans whose exact run is known to take
+/// long (`n` in the hundred thousands, say).
+///
+/// # Errors
+/// As [`oracle`], but never for the budget.
+pub fn oracle_without_budget(
+    method: Method,
+    span: &crate::Span<crate::BigRational>,
+) -> Result<Oracle, crate::span_report::ReportError> {
+    oracle_run(method, span, false)
+}
+
+fn oracle_run(
+    method: Method,
+    span: &crate::Span<crate::BigRational>,
+    budget: bool,
+) -> Result<Oracle, crate::span_report::ReportError> {
+    let r = crate::span_report::Request {
+        method,
+        na: span.na.clone(),
+        nb: span.nb.clone(),
+        l: span.l.clone(),
+        n: span.n,
+        kd: crate::BigRational::from_integer(1.into()),
+        normalize: false,
+        digits: 30,
+        arithmetic: crate::Arithmetic::Exact,
+    };
+    if budget {
+        r.within_budget()?;
+    }
+    let run = crate::span_report::exact_run(&r)?;
     Ok(Oracle {
-        values,
-        decimals,
-        levels,
+        values: run.values,
+        decimals: run.decimals,
+        levels: run.levels,
+        bits: run.bits,
     })
 }
 

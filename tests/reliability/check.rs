@@ -751,3 +751,48 @@ fn malformed_results_get_one_line_naming_file_line_and_problem() {
         "{err}"
     );
 }
+
+/// Finding 8 of the fifth reliability round: a result beyond f64's range is named, and
+/// one below it is refused alike rather than read as 0.
+#[test]
+fn results_beyond_and_below_f64_are_refused_alike_and_named() {
+    let d = scratch("r8v");
+    let v = root().join("vectors/typical.json").display().to_string();
+    let json = write(
+        &d,
+        "big.json",
+        "{\"cases\": [{\"id\": \"typical-001\", \"values\": [0.5, 1e400]}]}",
+    );
+    refused(
+        &run(&["check", "--vectors", &v, "--results", &json]),
+        "value '1e400' is outside the range of f64",
+    );
+    for (name, text) in [
+        (
+            "tiny.csv",
+            "case,pixel,value\ntypical-001,0,1e-400\n".to_string(),
+        ),
+        (
+            "tiny.json",
+            "{\"cases\": [{\"id\": \"typical-001\", \"values\": [0.5, 1e-400]}]}".to_string(),
+        ),
+        (
+            "tiny-string.json",
+            "{\"cases\": [{\"id\": \"typical-001\", \"values\": [\"1e-400\"]}]}".to_string(),
+        ),
+    ] {
+        let f = write(&d, name, &text);
+        let o = run(&["check", "--vectors", &v, "--results", &f]);
+        assert_eq!(code(&o), 2, "{name}: {}", stderr(&o));
+        assert!(
+            stderr(&o).contains("1e-400") || stderr(&o).contains("not a number"),
+            "{name}: {}",
+            stderr(&o)
+        );
+    }
+    // A zero written as such is a value.
+    let zero = write(&d, "zero.csv", "case,pixel,value\ntypical-001,0,0e-400\n");
+    assert!(
+        !stderr(&run(&["check", "--vectors", &v, "--results", &zero])).contains("below the range")
+    );
+}

@@ -124,3 +124,54 @@ proptest::proptest! {
         let _ = phong_approx::angular::CosTable::<f64>::new(size);
     }
 }
+
+/// Finding 3 of the fifth reliability round: the oracle's digits are the CLI's, every
+/// one known, and it keeps a budget.
+#[test]
+fn the_oracle_prints_only_known_digits_and_keeps_a_budget() {
+    use phong_approx::testkit::{oracle, oracle_without_budget};
+    use phong_approx::{Method, Span, Vec3};
+    let q = |n: BigInt, d: BigInt| BigRational::new(n, d);
+    // N_a on the unit circle through u = 1 + 10^-70: (2u, 0, u² − 1)/(u² + 1), so p_a
+    // = (u² − 1)/(u² + 1) ≈ 10^-70 with L = z, and angular's pixel 0 is cos(acos p_a)
+    // = p_a exactly.
+    let ten70 = BigInt::from(10).pow(70u32);
+    let u = q(ten70.clone() + 1, ten70);
+    let one = BigRational::from_integer(1.into());
+    let zero = BigRational::from_integer(0.into());
+    let uu = u.clone() * u.clone();
+    let na = Vec3::new(
+        u.clone() * BigRational::from_integer(2.into()) / (uu.clone() + one.clone()),
+        zero.clone(),
+        (uu.clone() - one.clone()) / (uu.clone() + one.clone()),
+    );
+    let z = Vec3::new(zero.clone(), zero.clone(), one.clone());
+    let span = Span::new(na.clone(), z.clone(), z.clone(), 2).unwrap();
+    let o = oracle(Method::Angular, &span).unwrap();
+    let got = phong_approx::parse::parse_rational(&o.decimals[0]).unwrap();
+    let want = na.z.clone();
+    // 30 significant digits: within 10^-29 relative.
+    let rel = ((got - want.clone()) / want).abs();
+    assert!(
+        rel < q(1.into(), BigInt::from(10).pow(29u32)),
+        "{}",
+        o.decimals[0]
+    );
+    // Over the budget: refused at once, with the remedy; the unbudgeted call exists.
+    let big = Span::new(z.clone(), z.clone(), z.clone(), 200_000).unwrap();
+    let t = Instant::now();
+    let e = oracle(Method::Angular, &big).unwrap_err();
+    assert_eq!(
+        e.remedy,
+        phong_approx::span_report::Remedy::RunAnyway,
+        "{e}"
+    );
+    assert!(t.elapsed() < Duration::from_secs(2));
+    let small = Span::new(z.clone(), z.clone(), z, 3).unwrap();
+    assert_eq!(
+        oracle_without_budget(Method::Gouraud, &small)
+            .unwrap()
+            .levels,
+        vec![Some(255); 4]
+    );
+}

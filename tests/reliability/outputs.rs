@@ -272,7 +272,9 @@ fn dot_named_outputs_are_written() {
     assert!(out.is_file());
 }
 
-/// Defect q13 of the reliability rounds (docs/conformance.md, "Limits and exit codes").
+/// Defect q13 of the reliability rounds (docs/conformance.md, "Limits and exit codes"):
+/// an output folder in use by another run is refused, naming it; the lock file is gone
+/// when a run ends.
 #[test]
 fn a_second_run_into_a_folder_in_use_exits_2_naming_it() {
     use std::os::unix::io::AsRawFd;
@@ -291,16 +293,127 @@ fn a_second_run_into_a_folder_in_use_exits_2_naming_it() {
         unsafe { libc::flock(lock.as_raw_fd(), libc::LOCK_EX | libc::LOCK_NB) },
         0
     );
-    let report = out.join("r.xml");
-    let o = check_typical(&d, &["--report", "junit", report.to_str().unwrap()]);
+    let o = quick_reproduce(&out, &[]);
     refused(
         &o,
         "being written by another phong-approx run (process 12345)",
     );
     drop(lock);
-    let o = check_typical(&d, &["--report", "junit", report.to_str().unwrap()]);
+    let o = quick_reproduce(&out, &[]);
     assert_eq!(code(&o), 0, "{}", stderr(&o));
-    assert!(report.is_file());
+    assert!(
+        !out.join(".phong-approx-lock").exists(),
+        "the lock file is left"
+    );
+}
+
+/// Finding 4 of the fifth reliability round: a report never replaces a file the tool
+/// did not write (without --force), replaces its own, and leaves nothing else behind.
+#[test]
+fn a_report_never_replaces_a_users_file() {
+    let d = scratch("r4");
+    let notes = d.join("notes.txt");
+    std::fs::write(&notes, "my notes\n").unwrap();
+    for format in ["json", "junit"] {
+        let o = check_typical(&d, &["--report", format, notes.to_str().unwrap()]);
+        refused(&o, "not a report phong-approx wrote: pass --force");
+        assert_eq!(std::fs::read_to_string(&notes).unwrap(), "my notes\n");
+    }
+    // Its own report, from a run before, is replaced; so is an older JSON report
+    // without the "generator" key; and a user's file with --force.
+    let own = d.join("own.json");
+    for _ in 0..2 {
+        let o = check_typical(&d, &["--report", "json", own.to_str().unwrap()]);
+        assert_eq!(code(&o), 0, "{}", stderr(&o));
+    }
+    let mut old: Value = serde_json::from_str(&std::fs::read_to_string(&own).unwrap()).unwrap();
+    assert!(old["generator"]
+        .as_str()
+        .unwrap()
+        .starts_with("phong-approx "));
+    old.as_object_mut().unwrap().remove("generator");
+    std::fs::write(&own, serde_json::to_string_pretty(&old).unwrap()).unwrap();
+    let o = check_typical(&d, &["--report", "json", own.to_str().unwrap()]);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let o = check_typical(
+        &d,
+        &["--report", "junit", notes.to_str().unwrap(), "--force"],
+    );
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    assert!(std::fs::read_to_string(&notes)
+        .unwrap()
+        .contains("<testsuites name=\"phong-approx"));
+    // Nothing but the inputs and the reports is left in the folder.
+    let mut left: Vec<String> = std::fs::read_dir(&d)
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    left.sort();
+    assert_eq!(left, ["notes.txt", "own.json", "r.csv"]);
+}
+
+/// Finding 7 of the fifth reliability round: parallel runs writing different reports
+/// into one folder all succeed.
+#[test]
+fn eight_parallel_reports_into_one_folder_all_succeed() {
+    let d = scratch("r7");
+    let r = write(&d, "r.csv", &results_csv(&typical()));
+    let v = root().join("vectors/typical.json").display().to_string();
+    let children: Vec<_> = (0..8)
+        .map(|k| {
+            let report = d.join(format!("report-{k}.xml")).display().to_string();
+            bin()
+                .args([
+                    "check",
+                    "--vectors",
+                    &v,
+                    "--results",
+                    &r,
+                    "--report",
+                    "junit",
+                    &report,
+                ])
+                .stdout(Stdio::null())
+                .stderr(Stdio::piped())
+                .spawn()
+                .unwrap()
+        })
+        .collect();
+    for (k, c) in children.into_iter().enumerate() {
+        let o = c.wait_with_output().unwrap();
+        assert_eq!(code(&o), 0, "run {k}: {}", stderr(&o));
+        let text = std::fs::read_to_string(d.join(format!("report-{k}.xml"))).unwrap();
+        assert!(text.ends_with("</testsuites>\n"), "run {k}");
+    }
+    let left = std::fs::read_dir(&d).unwrap().count();
+    assert_eq!(left, 9, "only r.csv and the eight reports");
+}
+
+/// Finding 5 of the fifth reliability round: a stale journal that names a file the
+/// tool did not write does not replace it.
+#[test]
+fn a_stale_journal_never_renames_over_a_users_file() {
+    let d = scratch("r5");
+    let out = d.join("out");
+    std::fs::create_dir_all(&out).unwrap();
+    std::fs::write(out.join("important.txt"), "keep me\n").unwrap();
+    std::fs::write(out.join(".partial-1-x"), "replacement\n").unwrap();
+    std::fs::write(
+        out.join(".phong-approx-commit"),
+        ".partial-1-x\timportant.txt\n",
+    )
+    .unwrap();
+    let o = quick_reproduce(&out, &[]);
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    assert_eq!(
+        std::fs::read_to_string(out.join("important.txt")).unwrap(),
+        "keep me\n"
+    );
+    assert!(
+        stderr(&o).contains("did not write: not replacing it"),
+        "{}",
+        stderr(&o)
+    );
 }
 
 /// Defect d13 of the reliability rounds (docs/conformance.md, "Limits and exit codes").

@@ -684,3 +684,144 @@ fn opposite_normals_are_refused_where_undefined() {
     }
     bad(&opposite("phong", "4"), "pixel 2 of n = 4");
 }
+
+// ------------------------------------------------ exact decisions at finite precision
+
+/// A light whose table position is 1.6·10⁻⁸¹ above the midpoint 100.5 (L_z the cosine
+/// of that angle to about 10⁻⁹⁰, a rational point of the unit circle; made and checked
+/// with mpmath at 400 digits): the exact index ⌊pos + ½⌋ is 101.
+const LIGHT_ABOVE_100_5: &str = "6253525788149510366527448862879897692713546792874329916477589382934432517664330818354000000000000000000000000000000000000000000000000000000000000000000000000000000000000/10776646195762738702331955074360151109430211517870561624579277255389710656848629240478015769004590925414459006719811226627100156022128991139745540331932867562723835817329,0,8776646195762738702331955074360151109430211517870561624579277255389710656848629240478015769004590925414459006719811226627100156022128991139745540331932867562723835817329/10776646195762738702331955074360151109430211517870561624579277255389710656848629240478015769004590925414459006719811226627100156022128991139745540331932867562723835817329";
+
+/// N_b = (x, 0, 1) with x rational such that, for the normalized inputs with N_a = L =
+/// (0, 0, 1) and n = 2, 255|δ| = 255x²/(8(1 + x²)) = 1 + 1.8·10⁻⁸⁵ exactly (δ =
+/// −(1 − w²)/8, w = 1/√(1 + x²), from eq. 24 at j = 1): the exact choice is corrected
+/// Euler.
+const NB_JUST_OVER_THE_THRESHOLD: &str = "17996850826633901960628631372210289870565388152307933026935743145888333598798103564469/100000000000000000000000000000000000000000000000000000000000000000000000000000000000000,0,1";
+
+/// Finding 1 of the fifth reliability round: the tabled cosine's index decided exactly.
+#[test]
+fn the_table_index_is_decided_exactly_near_a_midpoint() {
+    let o = span_run(
+        "angular-table256",
+        ["0,0,1", "0,0,1", LIGHT_ABOVE_100_5],
+        "1",
+        &["--scalar", "exact"],
+    );
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let v: Value = serde_json::from_slice(&o.stdout).unwrap();
+    // cos(101π/510) by mpmath; entry 100 would be 0.816196912356221690871852540431.
+    assert_eq!(v["values"][0], "0.812622370966445628419638151755");
+    assert_eq!(v["levels"][0], 207);
+    // An exact tie: N_a = (1, 0, 1)/√2, L = z: α_a = π/4, position 127.5 exactly, so
+    // ⌊128⌋ = 128 (cos(128π/510) by mpmath), whatever the square roots' accuracy.
+    let o = span_run(
+        "angular-table256",
+        ["1,0,1", "0,0,1", "0,0,1"],
+        "2",
+        &["--scalar", "exact", "--normalize"],
+    );
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let v: Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["values"][0], "0.704925546906147157479095692187");
+    assert_eq!(v["values"][1], "0.923289106105489354018447523133");
+}
+
+/// Finding 2 of the fifth reliability round: the adaptive test with --normalize decided
+/// exactly.
+#[test]
+fn the_adaptive_test_with_normalize_is_decided_exactly() {
+    let o = span_run(
+        "adaptive",
+        ["0,0,1", NB_JUST_OVER_THE_THRESHOLD, "0,0,1"],
+        "2",
+        &["--scalar", "exact", "--normalize"],
+    );
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let v: Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["decision"], "corrected-euler");
+    // Corrected Euler's middle pixel (1 + w)/2 + (1 − w²)/8, by mpmath at 60 digits
+    // (Gouraud's would be 0.992094363659144179000903558205).
+    assert_eq!(v["values"][1], "0.996015932286595159393060420950");
+}
+
+/// Finding 8 of the fifth reliability round: fractions only for rational values, and a
+/// vector that underflows is not called zero.
+#[test]
+fn normalize_prints_no_fractions_and_underflow_is_named() {
+    let o = span_run(
+        "gouraud",
+        ["1,0,1", "0,0,1", "0,0,1"],
+        "2",
+        &["--scalar", "exact", "--normalize"],
+    );
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let v: Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert!(v.get("fractions").is_none(), "{v}");
+    let o = span_run(
+        "gouraud",
+        ["0,0,1", "0.6,0,0.8", "0,0,1"],
+        "2",
+        &["--scalar", "exact"],
+    );
+    let v: Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["fractions"][1], "9/10", "{v}");
+    let o = span_run(
+        "gouraud",
+        ["1e-300,0,1e-300", "0,0,1", "0,0,1"],
+        "2",
+        &["--scalar", "f32", "--normalize"],
+    );
+    refused(&o, "underflows to 0 in f32");
+    assert!(!stderr(&o).contains("is zero"), "{}", stderr(&o));
+    let o = span_run(
+        "gouraud",
+        ["1e-300,0,1e-300", "0,0,1", "0,0,1"],
+        "2",
+        &["--scalar", "f64", "--normalize"],
+    );
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+}
+
+/// Finding 8 of the fifth reliability round: a vector path asked for and not taken is
+/// refused, not ignored.
+#[test]
+fn an_unknown_or_missing_vector_path_is_refused() {
+    let o = bin()
+        .env("PHONG_APPROX_SIMD", "sse9")
+        .args([
+            "span", "--method", "gouraud", "--na", "0,0,1", "--nb", "0,0,1", "--light", "0,0,1",
+            "--steps", "1",
+        ])
+        .output()
+        .unwrap();
+    refused(&o, "PHONG_APPROX_SIMD: unknown vector path 'sse9'");
+    for p in phong_approx::simd::Path::ALL {
+        let o = bin()
+            .env("PHONG_APPROX_SIMD", p.name())
+            .args([
+                "span", "--method", "gouraud", "--na", "0,0,1", "--nb", "0,0,1", "--light",
+                "0,0,1", "--steps", "1",
+            ])
+            .output()
+            .unwrap();
+        if p.supported() {
+            assert_eq!(code(&o), 0, "{p}: {}", stderr(&o));
+        } else {
+            refused(&o, "this CPU cannot take");
+        }
+    }
+}
+
+/// Finding 8 of the fifth reliability round: a table over the exact-work budget names
+/// the table, not the steps.
+#[test]
+fn a_table_over_the_budget_names_the_table() {
+    let o = span_run(
+        "angular-table60000",
+        ["0,0,1", "0.6,0,0.8", "0,0,1"],
+        "2",
+        &["--scalar", "exact", "--digits", "600"],
+    );
+    refused(&o, "a table of 60000 exact cosines");
+    assert!(!stderr(&o).contains("--steps"), "{}", stderr(&o));
+}

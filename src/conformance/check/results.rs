@@ -70,6 +70,9 @@ fn parse_value(file: &str, line: usize, s: &str) -> Result<f64, InputError> {
     if v.is_infinite() && !t.to_ascii_lowercase().contains("inf") {
         return Err(err(file, line, out_of_range(t)));
     }
+    if underflows(t, v) {
+        return Err(err(file, line, below_range(t)));
+    }
     Ok(v)
 }
 
@@ -80,6 +83,82 @@ fn out_of_range(t: &str) -> String {
         "value '{}' is outside the range of f64 (an infinite result is written inf, or \"inf\" in JSON)",
         crate::conformance::shown(t)
     )
+}
+
+/// Whether the decimal `t`, read as `v`, is a non-zero number that reads as zero:
+/// below the smallest `f64` (a subnormal, about 4.9e-324).
+pub(crate) fn underflows(t: &str, v: f64) -> bool {
+    let mantissa = t.split(['e', 'E']).next().unwrap_or("");
+    v == 0.0 && mantissa.bytes().any(|b| (b'1'..=b'9').contains(&b))
+}
+
+/// The refusal of a non-zero decimal below `f64`'s range, as [`out_of_range`] refuses
+/// one above it: no float implementation prints one, and reading it as 0 would judge
+/// a value the implementation did not compute.
+pub(crate) fn below_range(t: &str) -> String {
+    format!(
+        "value '{}' is below the range of f64 (its magnitude is under the smallest f64, about 4.9e-324): no float implementation prints it; a result of zero is written 0",
+        crate::conformance::shown(t)
+    )
+}
+
+/// The number literal that ends at 1-based `line` and `column` of `text` (where
+/// serde_json reports a number out of range), for the message.
+fn number_at(text: &str, line: usize, column: usize) -> Option<&str> {
+    let l = text.lines().nth(line.checked_sub(1)?)?;
+    let end = column.min(l.len());
+    let is_num = |c: char| c.is_ascii_digit() || matches!(c, '.' | 'e' | 'E' | '+' | '-');
+    let head = l.get(..end)?;
+    let start = head.rfind(|c: char| !is_num(c)).map_or(0, |k| k + 1);
+    let end = l[start..]
+        .find(|c: char| !is_num(c))
+        .map_or(l.len(), |k| start + k);
+    let t = &l[start..end];
+    (!t.is_empty()).then_some(t)
+}
+
+/// The first number literal of the JSON `text` (outside strings) that is non-zero but
+/// reads as zero ([`underflows`]), with its 1-based line: serde_json reads it as 0
+/// without a word.
+fn json_underflow(text: &str) -> Option<(usize, &str)> {
+    let bytes = text.as_bytes();
+    let (mut i, mut line, mut in_string) = (0, 1, false);
+    while i < bytes.len() {
+        let b = bytes[i];
+        if b == b'\n' {
+            line += 1;
+        }
+        if in_string {
+            match b {
+                b'\\' => i += 1,
+                b'"' => in_string = false,
+                _ => {}
+            }
+            i += 1;
+            continue;
+        }
+        if b == b'"' {
+            in_string = true;
+            i += 1;
+            continue;
+        }
+        if b == b'-' || b.is_ascii_digit() {
+            let start = i;
+            while i < bytes.len()
+                && (bytes[i].is_ascii_digit()
+                    || matches!(bytes[i], b'.' | b'e' | b'E' | b'+' | b'-'))
+            {
+                i += 1;
+            }
+            let t = &text[start..i];
+            if t.parse::<f64>().is_ok_and(|v| underflows(t, v)) {
+                return Some((line, t));
+            }
+            continue;
+        }
+        i += 1;
+    }
+    None
 }
 
 /// The values of one case as they are read: the value and the 1-based line of each
@@ -304,6 +383,9 @@ pub fn parse_results_json(
     if text.trim().is_empty() {
         return Err(err(file, 1, "the file holds no results"));
     }
+    if let Some((line, t)) = json_underflow(text) {
+        return Err(err(file, line, below_range(t)));
+    }
     let need = sizes(vectors, specular);
     let ctx = json::Ctx {
         need: &need,
@@ -319,7 +401,7 @@ pub fn parse_results_json(
             let message = match ctx.problem.borrow_mut().take() {
                 Some(m) => m,
                 None if e.to_string().starts_with("number out of range") => {
-                    out_of_range("a number")
+                    out_of_range(number_at(text, e.line(), e.column()).unwrap_or("a number"))
                 }
                 None => format!("not a results file: {e}"),
             };

@@ -232,7 +232,11 @@ impl<'de> Visitor<'de> for Number {
         Ok(Some(v as f64))
     }
     fn visit_str<E>(self, v: &str) -> Result<Option<f64>, E> {
-        Ok(v.trim().parse::<f64>().ok())
+        // A string that reads as 0 but is not zero (below f64's range) is no value.
+        Ok(v.trim()
+            .parse::<f64>()
+            .ok()
+            .filter(|x| !super::underflows(v.trim(), *x)))
     }
     fn visit_bool<E>(self, _: bool) -> Result<Option<f64>, E> {
         Ok(None)

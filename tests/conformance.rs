@@ -406,7 +406,18 @@ fn check_cli_passes_own_results_and_fails_a_perturbed_one() {
         out.contains("| typical-007 |") && out.contains("FAIL"),
         "{out}"
     );
-    assert!(out.contains("worst case typical-007 (pixel 3, "), "{out}");
+    assert!(
+        out.contains("worst case typical-007 for corrected-euler: pixel 3: expected "),
+        "{out}"
+    );
+    assert!(
+        out.trim_end()
+            .lines()
+            .last()
+            .unwrap()
+            .starts_with("FAIL: 1 of 42 cases"),
+        "{out}"
+    );
     assert!(err.contains("worst: typical-007 (pixel 3: "), "{err}");
     // A levels tolerance of 2 lets it through; 1 does not.
     assert_eq!(
@@ -695,10 +706,10 @@ fn check_reports_for_other_ci_systems() {
         .unwrap()
         .starts_with("phong-approx span --method corrected-euler "));
     // The report is the tool's own output: a report left by an earlier run (a CI
-    // run's, in a fresh checkout the folder's list does not name it) is replaced, and
-    // the verdict's exit code stands.
+    // run's, in a fresh checkout) is replaced, and the verdict's exit code stands; a
+    // file that is not one of its reports is not, without --force.
     let left = dir.join("left.xml");
-    std::fs::write(&left, "an earlier run's report").unwrap();
+    std::fs::copy(&xml_path, &left).unwrap();
     let (code, _, err) = run_check(
         &typical_path(),
         &p,
@@ -706,6 +717,14 @@ fn check_reports_for_other_ci_systems() {
     );
     assert_eq!(code, 1, "{err}");
     assert!(std::fs::read_to_string(&left).unwrap().starts_with("<?xml"));
+    std::fs::write(&left, "an earlier note").unwrap();
+    let (code, _, err) = run_check(
+        &typical_path(),
+        &p,
+        &["--report", "junit", left.to_str().unwrap()],
+    );
+    assert_eq!(code, 2, "{err}");
+    assert_eq!(std::fs::read_to_string(&left).unwrap(), "an earlier note");
     let (code, _, _) = run_check(
         &typical_path(),
         &p,

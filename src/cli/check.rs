@@ -224,6 +224,21 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
             ),
         })?;
     }
+    human(&format!(
+        "{}\n",
+        phong_approx::conformance::verdict::verdict_line(
+            &judged.reports,
+            &format!(
+                "set '{}', {key}, {}, {}",
+                shown(&vectors.set),
+                match &a.tolerance {
+                    Some(t) => format!("tolerance {t}"),
+                    None => format!("{profile} profile"),
+                },
+                a.precision.format()
+            )
+        )
+    ))?;
     match judged.failure() {
         None => Ok(()),
         Some(message) => Err(CliError {

@@ -210,12 +210,12 @@ mod with_gpu {
         let missing: usize = raw.iter().map(|(_, v)| unwritten(v)).sum();
         if missing > 0 {
             human(&format!(
-                "{missing} pixels were never written by the kernel (a loop the driver cut short: lavapipe stops an invocation's loops after about 65535 iterations in all; a workgroup size other than 64; an early return)\n"
+                "{missing} pixels were never written by the kernel (a loop the driver cut short: lavapipe stops an invocation's loops after about 65535 iterations in all; a workgroup size other than 64; an early return; a struct layout other than the interface's, such as a vec3 where it has a vec4, which moves every later field: docs/conformance.md §6)\n"
             ))?;
         }
         let sets = judge_sets(&results, method, a.profile)?;
         for (_, j) in &sets {
-            human(&j.text(crate::cli::check::advice))?;
+            human(&j.text(advice))?;
         }
         human(&format!(
             "tolerance: the {} profile's bound for f32 (docs/float.md §18)\n",
@@ -228,13 +228,64 @@ mod with_gpu {
             )?;
         }
         let all: Vec<CaseReport> = sets.into_iter().flat_map(|(_, j)| j.reports).collect();
+        // A pixel the kernel never wrote is told apart from one it wrote as NaN or
+        // infinity (both are not finite to the verdict).
+        let never = |message: String| {
+            match verdict::worst(&all) {
+            Some(w) => match w.not_finite {
+                Some(p)
+                    if raw
+                        .iter()
+                        .find(|(id, _)| *id == w.id)
+                        .and_then(|(_, v)| v.get(p))
+                        .is_some_and(|x| x.to_bits() == phong_approx::gpu::UNWRITTEN) =>
+                {
+                    message.replace(
+                        &format!("(pixel {p} is not finite)"),
+                        &format!("(pixel {p} was never written by the kernel: {missing} pixels in all, see above)"),
+                    )
+                }
+                _ => message,
+            },
+            None => message,
+        }
+        };
+        human(&format!(
+            "{}\n",
+            never(verdict::verdict_line(
+                &all,
+                &format!(
+                    "{} on {adapter}, {} profile, f32, sets {}",
+                    method_key(method),
+                    a.profile,
+                    SETS.join(", ")
+                )
+            ))
+        ))?;
         match verdict::failure(&all) {
             None => Ok(()),
             Some(message) => Err(CliError {
-                message,
+                message: never(message),
                 code: 1,
                 details: Vec::new(),
             }),
+        }
+    }
+
+    /// What `gpu-check` tells its user to do about a case with no bound: its own
+    /// options only (it has no `--tolerance`; `check` has).
+    fn advice(u: &phong_approx::conformance::check::Unbounded) -> Option<&'static str> {
+        use phong_approx::conformance::check::Unbounded;
+        match u {
+            Unbounded::NoBound { .. } => Some(
+                "--profile reference judges this crate's own evaluation; for a tolerance of your own, write the kernel's values to a file and run `phong-approx check --tolerance`",
+            ),
+            Unbounded::SpecularNotModelled { .. }
+            | Unbounded::OutOfRange { .. }
+            | Unbounded::NoDerivedBound => Some(
+                "for a tolerance of your own, write the kernel's values to a file and run `phong-approx check --tolerance`",
+            ),
+            _ => None,
         }
     }
 
@@ -253,7 +304,7 @@ mod with_gpu {
             let per: Vec<serde_json::Value> = sets
                 .iter()
                 .map(|(set, j)| {
-                    serde_json::from_str(&j.json(&suite(set), crate::cli::check::advice))
+                    serde_json::from_str(&j.json(&suite(set), advice))
                         .unwrap_or(serde_json::Value::Null)
                 })
                 .collect();
@@ -266,7 +317,7 @@ mod with_gpu {
         }
         let (mut tests, mut failures, mut body) = (0, 0, String::new());
         for (set, j) in sets {
-            let one = j.junit(&suite(set), crate::cli::check::advice);
+            let one = j.junit(&suite(set), advice);
             tests += j.reports.len();
             failures += j.reports.iter().filter(|c| !c.pass).count();
             // Keep the <testsuite> element: the lines between <testsuites> and its end.
@@ -336,9 +387,18 @@ mod with_gpu {
             }
         }
         outln!("(shader and ieee: the largest |GPU − exact| over the allowed error, every published case; pixels ≠ CPU: values that differ from the kernel's source evaluated on the CPU in round-to-nearest f32 without contraction; the largest difference between the two in ulps of f32, and over the shader bound of its case)")?;
+        let mutants = KERNELS.iter().filter(|k| k.mutant).count();
+        let good = KERNELS.len() - mutants;
         if wrong.is_empty() {
+            outln!("PASS: all {good} correct kernels pass under shader and all {mutants} planted bugs fail (on {adapter})")?;
             Ok(())
         } else {
+            outln!(
+                "FAIL: {} of {} kernels got the wrong verdict: {} (on {adapter})",
+                wrong.len(),
+                KERNELS.len(),
+                wrong.join("; ")
+            )?;
             Err(CliError {
                 message: format!("wrong verdicts: {}", wrong.join("; ")),
                 code: 1,

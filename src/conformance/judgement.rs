@@ -75,6 +75,7 @@ impl Judgement<'_> {
         super::verdict::text(
             self.vectors,
             &self.reports,
+            self.results,
             &self.key,
             self.specular,
             advice,

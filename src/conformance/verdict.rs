@@ -225,6 +225,7 @@ fn recompute(
 pub(crate) fn text(
     vectors: &VectorFile,
     reports: &[CaseReport],
+    results: &super::check::Results,
     key: &str,
     specular: bool,
     advice: super::check::Advice,
@@ -242,6 +243,7 @@ pub(crate) fn text(
             // A NaN or infinite result fails its case; no difference is printed for it.
             let (abs, ulps) = match r.not_finite {
                 Some(p) => (format!("not finite at pixel {p}"), "—".to_string()),
+                None if !ulps_mean_something(r) => (format!("{:.3e}", r.max_abs), "—".to_string()),
                 None => (format!("{:.3e}", r.max_abs), format!("{:.1}", r.max_ulps)),
             };
             vec![
@@ -287,26 +289,75 @@ pub(crate) fn text(
         / px.max(1) as f64;
     let max_l = reports.iter().map(|r| r.max_levels).max().unwrap_or(0);
     let max_a = reports.iter().map(|r| r.max_abs).fold(0.0, f64::max);
-    let max_u = reports.iter().map(|r| r.max_ulps).fold(0.0, f64::max);
+    let max_u = reports
+        .iter()
+        .filter(|r| r.not_finite.is_none() && ulps_mean_something(r))
+        .map(|r| r.max_ulps)
+        .fold(0.0, f64::max);
     let margin = reports.iter().map(|r| r.ratio).fold(0.0, f64::max);
     s += &format!("\noverall: {px} pixels, max Δlevel {max_l}, mean Δlevel {mean:.4}, max |Δ| {max_a:.3e}, max {max_u:.1} {format} ulps, largest use of the allowance {}\n", times_allowed(margin));
+    if reports
+        .iter()
+        .any(|r| r.not_finite.is_none() && !ulps_mean_something(r))
+    {
+        s += &format!("(ulps —: every value of the case is below one level, 2^-8, where ulps of {format} at the values' own scale say nothing of the absolute error the bound allows)\n");
+    }
     if let Some(w) = worst(reports) {
         if let Some(c) = vectors.cases.get(w.case) {
+            let exp = if specular {
+                c.specular.as_ref().and_then(|sp| sp.expected.get(key))
+            } else {
+                c.expected.get(key)
+            };
+            let expected = exp
+                .and_then(|e| e.values.get(w.worst_pixel))
+                .map_or_else(|| "?".to_string(), |v| shown(v));
+            let got = results
+                .get(&c.id)
+                .and_then(|v| v.get(w.worst_pixel))
+                .map_or_else(|| "?".to_string(), |g| format!("{g:e}"));
+            let what = match (&w.unbounded, w.not_finite) {
+                (_, Some(p)) => format!("pixel {p} is not finite"),
+                (Some(u), None) => format!("no bound: {}", u.with_advice(advice)),
+                (None, None) => format!(
+                    "pixel {}: expected {expected}, got {got}, |Δ| {:.3e} = {} allowed, {} levels off",
+                    w.worst_pixel,
+                    w.max_abs,
+                    times_allowed(w.ratio),
+                    w.max_levels
+                ),
+            };
             s += &format!(
-                "worst case {} (pixel {}, {} allowed, {} levels off): {}; Na = ({}), Nb = ({}), L = ({}), n = {}\n",
+                "worst case {} for {key}: {what}; Na = ({}), Nb = ({}), L = ({}), n = {} (the case: {})\n",
                 shown(&w.id),
-                w.worst_pixel,
-                times_allowed(w.ratio),
-                w.max_levels,
-                shown(&c.comment),
                 shown(&c.na.exact.join(", ")),
                 shown(&c.nb.exact.join(", ")),
                 shown(&c.l.exact.join(", ")),
-                c.n
+                c.n,
+                shown(&c.comment),
             );
         }
     }
     s
+}
+
+/// Whether a case's ulps say something: the tolerance is in ulps, or some value of the
+/// case reaches one level (2^-8); below that, ulps at the values' own scale (10^10 of
+/// them for values of 10^-8) say nothing of the absolute error every bound allows.
+fn ulps_mean_something(r: &CaseReport) -> bool {
+    r.allowed.ends_with("ulps") || r.scale >= 1.0 / 256.0
+}
+
+/// The run's last line for a CI log: `PASS: all N cases …` or `FAIL: k of N cases …
+/// out of tolerance, worst …`, with `what` (the set, method, profile and format).
+pub fn verdict_line(reports: &[CaseReport], what: &str) -> String {
+    match failure(reports) {
+        None => format!(
+            "PASS: all {} cases within tolerance ({what})",
+            reports.len()
+        ),
+        Some(m) => format!("FAIL: {m} ({what})"),
+    }
 }
 
 /// The case that did most harm: the failing case most over its allowance (then the
@@ -352,9 +403,10 @@ pub fn failure(reports: &[CaseReport]) -> Option<String> {
         failed,
         reports.len(),
         shown(&w.id),
-        match w.not_finite {
-            Some(p) => format!(" (pixel {p} is not finite)"),
-            None => format!(
+        match (w.not_finite, &w.unbounded) {
+            (Some(p), _) => format!(" (pixel {p} is not finite)"),
+            (None, Some(u)) => format!(" (no bound: {u})"),
+            (None, None) => format!(
                 " (pixel {}: {} allowed, {} levels off)",
                 w.worst_pixel,
                 times_allowed(w.ratio),
@@ -496,15 +548,29 @@ mod tests {
         };
         let good = run(1.0);
         assert_eq!(failure(&good), None);
-        let t = text(&file, &good, "gouraud", false, |u| u.kit_advice());
+        let res = parse_results(&csv(1.0), "r.csv", &file, false).unwrap();
+        let t = text(&file, &good, &res, "gouraud", false, |u| u.kit_advice());
         assert!(t.starts_with(&format!(
             "diffuse {} set 'edge'",
             crate::conformance::vectors::FORMAT_VERSION
         )));
         assert_eq!(t.matches("| pass |").count(), good.len());
         assert!(t.contains("\noverall: ") && t.contains("\nworst case "));
+        assert!(verdict_line(&good, "edge").starts_with("PASS: all "));
         let bad = run(0.9);
         let f = failure(&bad).unwrap();
+        assert!(verdict_line(&bad, "edge").starts_with("FAIL: "));
+        // The worst case is told by what failed for the method judged: its pixel,
+        // the expected and the computed value.
+        let res = parse_results(&csv(0.9), "r.csv", &file, false).unwrap();
+        let t = text(&file, &bad, &res, "gouraud", false, |u| u.kit_advice());
+        let line = t.lines().find(|l| l.starts_with("worst case ")).unwrap();
+        assert!(
+            line.contains(" for gouraud: pixel ")
+                && line.contains("expected ")
+                && line.contains(", got "),
+            "{line}"
+        );
         let n = bad.iter().filter(|r| !r.pass).count();
         assert!(
             n > 0 && f.starts_with(&format!("{n} of {} cases", bad.len())),

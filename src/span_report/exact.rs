@@ -217,15 +217,114 @@ fn settle_table(
         let x = pos.clone() + half.clone();
         let k = x.round();
         let inside = k >= BigRational::from_integer(1.into()) && k <= last;
-        if inside && (x - k).abs() <= e {
-            return Err(i);
+        if inside && (x - k.clone()).abs() <= e {
+            // Exactly on the midpoint (decided in rationals), the index is k; else the
+            // position is only close to it, and more bits decide its side.
+            match (!r.normalize)
+                .then(|| exact_midpoint(&span.p_a, &span.p_b, r.n, i, size - 1))
+                .flatten()
+            {
+                Some(true) => {
+                    let j = k.to_integer().to_string().parse::<usize>().unwrap_or(0);
+                    values[i] = table.values[j.min(size as usize - 1)].clone();
+                }
+                _ => return Err(i),
+            }
         }
     }
     Ok(())
 }
 
+/// The most `4·(size − 1)·n'` [`exact_midpoint`] takes on (the power's exponent: the
+/// rationals it builds have about that many times the digits of `p`).
+const MIDPOINT_EXPONENT: u64 = 1 << 18;
+
+/// Whether the angle of pixel `i`, `α_i = ((n − i)α_a + i·α_b)/n` with `cos α = p`
+/// (exact rationals in `[−1, 1]`), is exactly a midpoint between two table angles,
+/// `(2k + 1)·π/(4·last)`, `last = size − 1`; `None` where that costs more than
+/// [`MIDPOINT_EXPONENT`] allows. With `d = gcd(i, n)`, `n' = n/d`, `i' = i/d`: a
+/// midpoint gives `4·last·((n' − i')α_a + i'α_b) = (2k + 1)·n'·π`, so `z_a^{4·last·(n' −
+/// i')}·z_b^{4·last·i'} = (−1)^{n'}` with `z = e^{iα} = p + i·√(1 − p²)`; conversely that
+/// equality puts `α_i` on a grid of spacing `2π/(4·last·n')` through the midpoint, and
+/// the caller has `α_i` far closer than that to it. The powers are `A + i·s·B` with `A`,
+/// `B` rational (Chebyshev: `s = sin α`), and the equality is decided in rationals.
+fn exact_midpoint(pa: &BigRational, pb: &BigRational, n: u32, i: usize, last: u32) -> Option<bool> {
+    use num_integer::Integer;
+    use num_traits::{One, Signed, Zero};
+    let i = u64::try_from(i).ok()?;
+    let d = i.gcd(&u64::from(n)).max(1);
+    let (n1, i1) = (u64::from(n) / d, i / d);
+    let m = 4 * u64::from(last);
+    if m.checked_mul(n1)? > MIDPOINT_EXPONENT {
+        return None;
+    }
+    let one = BigRational::one();
+    // (p + i·s)^e as (A, B) with s² = 1 − p² (binary powering).
+    let power = |p: &BigRational, e: u64| -> (BigRational, BigRational) {
+        let s2 = one.clone() - p.clone() * p.clone();
+        let mul = |(a1, b1): &(BigRational, BigRational), (a2, b2): &(BigRational, BigRational)| {
+            (
+                a1.clone() * a2.clone() - s2.clone() * b1.clone() * b2.clone(),
+                a1.clone() * b2.clone() + b1.clone() * a2.clone(),
+            )
+        };
+        let (mut acc, mut base, mut e) = (
+            (one.clone(), BigRational::zero()),
+            (p.clone(), one.clone()),
+            e,
+        );
+        while e > 0 {
+            if e & 1 == 1 {
+                acc = mul(&acc, &base);
+            }
+            e >>= 1;
+            if e > 0 {
+                base = mul(&base, &base);
+            }
+        }
+        acc
+    };
+    let (aa, ba) = power(pa, m * (n1 - i1));
+    let (ab, bb) = power(pb, m * i1);
+    let (ra, rb) = (
+        one.clone() - pa.clone() * pa.clone(),
+        one.clone() - pb.clone() * pb.clone(),
+    );
+    // x = y·√r, exactly (r ≥ 0).
+    let sign = |x: &BigRational| {
+        if x.is_zero() {
+            0
+        } else if x.is_positive() {
+            1
+        } else {
+            -1
+        }
+    };
+    let eq_root = |x: &BigRational, y: &BigRational, r: &BigRational| {
+        let sy = if r.is_zero() { 0 } else { sign(y) };
+        sign(x) == sy && x.clone() * x.clone() == y.clone() * y.clone() * r.clone()
+    };
+    // Real part: A_a·A_b − s_a·s_b·B_a·B_b = (−1)^{n'}.
+    let target = if n1 % 2 == 0 {
+        one.clone()
+    } else {
+        -one.clone()
+    };
+    let real = eq_root(
+        &(aa.clone() * ab.clone() - target),
+        &(ba.clone() * bb.clone()),
+        &(ra.clone() * rb.clone()),
+    );
+    // Imaginary part: s_a·B_a·A_b + s_b·A_a·B_b = 0, i.e. B_a·A_b·√r_a = −A_a·B_b·√r_b.
+    let (p, q) = (ba * ab, -(aa * bb));
+    let sp = if ra.is_zero() { 0 } else { sign(&p) };
+    let sq = if rb.is_zero() { 0 } else { sign(&q) };
+    let imag = sp == sq && p.clone() * p * ra == q.clone() * q * rb;
+    Some(real && imag)
+}
+
 /// Settles a `normalize` run's adaptive decision exactly
-/// ([`crate::reference::radical::normalized_adaptive_choice`]): where the run's
+/// ([`crate::reference::radical::normalized_adaptive_gouraud`]): where the run's
 /// approximate square roots picked the other method, the values are those of the
 /// method the exact test picks, on the same span.
 fn settle_adaptive(
@@ -239,7 +338,12 @@ fn settle_adaptive(
         return Ok(());
     }
     let exact =
-        crate::reference::radical::normalized_adaptive_choice((&r.na, &r.nb, &r.l), r.n, &r.kd);
+        if crate::reference::radical::normalized_adaptive_gouraud((&r.na, &r.nb, &r.l), r.n, &r.kd)
+        {
+            Choice::Gouraud
+        } else {
+            Choice::CorrectedEuler
+        };
     if exact != d.choice {
         d.choice = exact;
         match exact {

@@ -756,7 +756,7 @@ fn malformed_results_get_one_line_naming_file_line_and_problem() {
 /// one below it is refused alike rather than read as 0.
 #[test]
 fn results_beyond_and_below_f64_are_refused_alike_and_named() {
-    let d = scratch("r8v");
+    let d = scratch("f50-range");
     let v = root().join("vectors/typical.json").display().to_string();
     let json = write(
         &d,

@@ -175,3 +175,52 @@ fn the_oracle_prints_only_known_digits_and_keeps_a_budget() {
         vec![Some(255); 4]
     );
 }
+
+/// The exact adaptive choice for normalized inputs (finding 2 of the fifth reliability
+/// round) agrees with eq. 24 evaluated in rationals where the inputs are already unit.
+#[test]
+fn the_exact_adaptive_choice_is_the_rational_one_on_unit_inputs() {
+    // Unit rational inputs normalize to themselves, so the choice in the field is
+    // eq. 24's test evaluated in rationals (`adaptive::decide`), for every kd.
+    use phong_approx::reference::unit::unit_from_ints;
+    let q = |n: i64, d: i64| BigRational::new(n.into(), d.into());
+    let vs = [
+        (0, 0, 1),
+        (1, 0, 3),
+        (-2, 1, 2),
+        (3, 4, 7),
+        (1, 1, 1),
+        (0, -1, 5),
+    ];
+    let mut both = [0; 2];
+    for a in vs {
+        for b in vs {
+            for l in vs {
+                let (na, nb, l) = (
+                    unit_from_ints(a.0, a.1, a.2),
+                    unit_from_ints(b.0, b.1, b.2),
+                    unit_from_ints(l.0, l.1, l.2),
+                );
+                for n in [1, 2, 3, 8] {
+                    for kd in [q(1, 1), q(1, 10), q(1, 200)] {
+                        let span =
+                            phong_approx::Span::new(na.clone(), nb.clone(), l.clone(), n).unwrap();
+                        let want = phong_approx::adaptive::decide(&span, &kd).choice;
+                        let got = if phong_approx::reference::radical::normalized_adaptive_gouraud(
+                            (&na, &nb, &l),
+                            n,
+                            &kd,
+                        ) {
+                            phong_approx::adaptive::Choice::Gouraud
+                        } else {
+                            phong_approx::adaptive::Choice::CorrectedEuler
+                        };
+                        assert_eq!(got, want, "{a:?} {b:?} {l:?} n = {n} kd = {kd}");
+                        both[usize::from(got == phong_approx::adaptive::Choice::Gouraud)] += 1;
+                    }
+                }
+            }
+        }
+    }
+    assert!(both[0] > 0 && both[1] > 0, "{both:?}");
+}

@@ -311,7 +311,7 @@ fn a_second_run_into_a_folder_in_use_exits_2_naming_it() {
 /// did not write (without --force), replaces its own, and leaves nothing else behind.
 #[test]
 fn a_report_never_replaces_a_users_file() {
-    let d = scratch("r4");
+    let d = scratch("f50-reports");
     let notes = d.join("notes.txt");
     std::fs::write(&notes, "my notes\n").unwrap();
     for format in ["json", "junit"] {
@@ -356,7 +356,7 @@ fn a_report_never_replaces_a_users_file() {
 /// into one folder all succeed.
 #[test]
 fn eight_parallel_reports_into_one_folder_all_succeed() {
-    let d = scratch("r7");
+    let d = scratch("f50-parallel");
     let r = write(&d, "r.csv", &results_csv(&typical()));
     let v = root().join("vectors/typical.json").display().to_string();
     let children: Vec<_> = (0..8)
@@ -393,7 +393,7 @@ fn eight_parallel_reports_into_one_folder_all_succeed() {
 /// tool did not write does not replace it.
 #[test]
 fn a_stale_journal_never_renames_over_a_users_file() {
-    let d = scratch("r5");
+    let d = scratch("f50-journal");
     let out = d.join("out");
     std::fs::create_dir_all(&out).unwrap();
     std::fs::write(out.join("important.txt"), "keep me\n").unwrap();

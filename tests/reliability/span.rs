@@ -724,6 +724,18 @@ fn the_table_index_is_decided_exactly_near_a_midpoint() {
     let v: Value = serde_json::from_slice(&o.stdout).unwrap();
     assert_eq!(v["values"][0], "0.704925546906147157479095692187");
     assert_eq!(v["values"][1], "0.923289106105489354018447523133");
+    // An exact tie between edge angles that are no rational multiples of π (edge-008):
+    // acos(3/5) + acos(4/5) = π/2, so pixel 8 of 16 is at π/4, position 127.5, decided
+    // in rationals (z_a^1020·z_b^1020 = 1), entry 128.
+    let o = span_run(
+        "angular-table256",
+        ["0,0,1", "1,0,0", "4/5,0,3/5"],
+        "16",
+        &["--scalar", "exact"],
+    );
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let v: Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["values"][8], "0.704925546906147157479095692187");
 }
 
 /// Finding 2 of the fifth reliability round: the adaptive test with --normalize decided

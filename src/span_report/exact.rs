@@ -559,6 +559,7 @@ pub(super) fn run_mpfr(r: &Request, precision: u32) -> Result<Outcome, ReportErr
             precision,
             crate::method::log2_recip(span.q_min().to_f64()),
         );
+        mpfr_decisions(r, &span, exact.as_ref(), decision.as_ref(), bits, precision)?;
         check_digits(r, &values, bits, exact_zeros(r)).map_err(|s| s.error(bits))?;
         // A level is printed only where it is known: decided exactly where the value
         // is (Phong's p/√q, p_a), else only where its error cannot cross a boundary.
@@ -587,6 +588,79 @@ pub(super) fn run_mpfr(r: &Request, precision: u32) -> Result<Outcome, ReportErr
         o.values = Values::eager(o.values.iter().collect());
         Ok(o)
     })
+}
+
+/// The decisions an MPFR run takes from rounded values, checked against the exact
+/// ones: the adaptive choice (eq. 24 in rationals, or in `Q(√a, √b, √c)` with
+/// `normalize`) must be the exact one, and every tabled cosine's position must lie
+/// farther than its error (`2^-bits`, [`mpfr_bits`], times `8·(size − 1)`) from a
+/// midpoint between two entries; else the values are not the method's to the digits
+/// claimed, and the run is refused (the exact run decides them).
+#[cfg(feature = "mpfr")]
+fn mpfr_decisions(
+    r: &Request,
+    span: &Span<crate::reference::mpfr::Mpfr>,
+    exact: Option<&Span<BigRational>>,
+    decision: Option<&Decision<crate::reference::mpfr::Mpfr>>,
+    bits: i64,
+    precision: u32,
+) -> Result<(), ReportError> {
+    use crate::adaptive::Choice;
+    use num_traits::Signed;
+    let refuse = |what: String| {
+        Err(ReportError::new(
+            Field::Arithmetic,
+            format!("{what} at {precision} bits of MPFR: the exact run decides it (the exact number type), or ask for more bits"),
+        ))
+    };
+    if let Some(d) = decision {
+        let gouraud = match exact {
+            Some(x) => crate::adaptive::decide(x, &r.kd).choice == Choice::Gouraud,
+            None => crate::reference::radical::normalized_adaptive_gouraud(
+                (&r.na, &r.nb, &r.l),
+                r.n,
+                &r.kd,
+            ),
+        };
+        let want = if gouraud {
+            Choice::Gouraud
+        } else {
+            Choice::CorrectedEuler
+        };
+        if d.choice != want {
+            return refuse(format!(
+                "eq. 24's test picks {} where the exact test picks {} (255·|δ| is within the rounding of 1)",
+                d.choice.name(),
+                want.name()
+            ));
+        }
+    }
+    if let Method::AngularTable(size) = r.method {
+        use crate::angular::{table_positions, CosTable};
+        let Ok(table) = CosTable::<crate::reference::mpfr::Mpfr>::new(size) else {
+            return Ok(());
+        };
+        let last = BigRational::from_integer((size - 1).into());
+        let e = last.clone()
+            * BigRational::new(
+                8.into(),
+                num_bigint::BigInt::from(1) << bits.max(0) as usize,
+            );
+        let half = BigRational::new(1.into(), 2.into());
+        for (i, pos) in table_positions(span, &table).iter().enumerate() {
+            let Some(x) = pos.to_rational().map(|p| p + half.clone()) else {
+                continue;
+            };
+            let k = x.round();
+            let inside = k >= BigRational::from_integer(1.into()) && k <= last;
+            if inside && (x - k).abs() <= e {
+                return refuse(format!(
+                    "the cosine table's entry at pixel {i} is not decided (its angle is within the rounding of a midpoint between two table angles)"
+                ));
+            }
+        }
+    }
+    Ok(())
 }
 
 #[cfg(not(feature = "mpfr"))]

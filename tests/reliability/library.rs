@@ -224,3 +224,92 @@ fn the_exact_adaptive_choice_is_the_rational_one_on_unit_inputs() {
     }
     assert!(both[0] > 0 && both[1] > 0, "{both:?}");
 }
+
+/// A rational unit vector `(x, 0, z)` whose `z` lies within 10^-100 of `target` (in
+/// `(−1, 1]`), by inverse stereographic projection through `u ≈ √((1 − z)/(1 + z))`
+/// rounded to 100 decimals: the constructions of the boundary test, exact rationals.
+fn unit_with_z_near(target: &BigRational) -> phong_approx::Vec3<BigRational> {
+    let one = BigRational::from_integer(1.into());
+    let scale = BigInt::from(10).pow(100u32);
+    let r = (one.clone() - target.clone()) / (one + target.clone());
+    let u2 = (r.numer() * &scale * &scale) / r.denom();
+    let u = BigRational::new(u2.sqrt(), scale);
+    phong_approx::reference::unit::unit_from_stereo(&u, &BigRational::from_integer(0.into()))
+}
+
+/// `floor(255·clamp(v, 0, 1))` in integers: the expected level, independent of the
+/// crate's own level code.
+fn level_by_integers(v: &BigRational) -> u8 {
+    use num_integer::Integer;
+    let l = (v.numer() * BigInt::from(255)).div_floor(v.denom());
+    l.max(BigInt::from(0))
+        .min(BigInt::from(255))
+        .to_string()
+        .parse()
+        .unwrap()
+}
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig { cases: 24, ..proptest::prelude::ProptestConfig::default() })]
+
+    /// Values planted 10^-80 from every boundary the exact path decides on: a level
+    /// boundary `k/255` (and the clamps at 0 and 1) for the rational and the
+    /// transcendental methods alike, and eq. 24's threshold `255·|δ| = 1`. Each is
+    /// decided as the exact rationals built here say (finding 1–3 of the fifth
+    /// reliability round: nothing decided at a working precision).
+    #[test]
+    fn values_planted_next_to_a_boundary_are_decided_exactly(k in 0u32..=255, above in proptest::bool::ANY) {
+        use phong_approx::span_report::{exact_run, Request};
+        use phong_approx::{Arithmetic, Method, Vec3};
+        let tiny = BigRational::new(1.into(), BigInt::from(10).pow(80u32));
+        let boundary = BigRational::new(k.into(), 255.into());
+        let target = if above { boundary + tiny.clone() } else { boundary - tiny.clone() };
+        proptest::prop_assume!(target <= BigRational::from_integer(1.into()) && target > BigRational::from_integer((-1).into()));
+        let n = unit_with_z_near(&target);
+        let z = Vec3::new(BigRational::from_integer(0.into()), BigRational::from_integer(0.into()), BigRational::from_integer(1.into()));
+        let want = level_by_integers(&n.z);
+        for method in [Method::Gouraud, Method::CorrectedEuler, Method::Phong, Method::Duff, Method::Angular, Method::Adaptive] {
+            let r = Request {
+                method,
+                na: n.clone(),
+                nb: n.clone(),
+                l: z.clone(),
+                n: 2,
+                kd: BigRational::from_integer(1.into()),
+                normalize: false,
+                digits: 30,
+                arithmetic: Arithmetic::Exact,
+            };
+            let run = exact_run(&r).unwrap();
+            proptest::prop_assert_eq!(&run.levels, &vec![Some(want); 3], "{} at k = {}, above = {}", method, k, above);
+        }
+        // Eq. 24's threshold: N_a = L = z, N_b = (x, 0, c), n = 2: δ = −(1 − c²)/8, so
+        // 255·|δ| = 1 ± 10^-80 for c² = 1 − 8(1 ± 10^-80)/255.
+        let side = if above { BigRational::from_integer(1.into()) + tiny.clone() } else { BigRational::from_integer(1.into()) - tiny };
+        let c2 = BigRational::from_integer(1.into()) - side * BigRational::new(8.into(), 255.into());
+        // c = √c2 to 100 digits, as a rational point of the circle.
+        let c = {
+            let s = BigInt::from(10).pow(100u32);
+            BigRational::new(((c2.numer() * &s * &s) / c2.denom()).sqrt(), s)
+        };
+        let nb = unit_with_z_near(&c);
+        let delta255 = (BigRational::from_integer(1.into()) - nb.z.clone() * nb.z.clone()) * BigRational::new(255.into(), 8.into());
+        let gouraud = delta255 < BigRational::from_integer(1.into());
+        let r = Request {
+            method: Method::Adaptive,
+            na: z.clone(),
+            nb,
+            l: z,
+            n: 2,
+            kd: BigRational::from_integer(1.into()),
+            normalize: false,
+            digits: 30,
+            arithmetic: Arithmetic::Exact,
+        };
+        let run = exact_run(&r).unwrap();
+        let d = phong_approx::span_report::span_report(&r).unwrap();
+        let got = serde_json::to_value(&d).unwrap();
+        proptest::prop_assert_eq!(got["decision"].as_str().unwrap(), if gouraud { "gouraud" } else { "corrected-euler" });
+        proptest::prop_assert_eq!(run.levels.len(), 3);
+    }
+}

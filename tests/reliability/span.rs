@@ -837,3 +837,42 @@ fn a_table_over_the_budget_names_the_table() {
     refused(&o, "a table of 60000 exact cosines");
     assert!(!stderr(&o).contains("--steps"), "{}", stderr(&o));
 }
+
+/// Findings 1 and 2 of the fifth reliability round in MPFR: a decision its rounding
+/// cannot make is refused (naming the exact run), never printed with false digits; with
+/// enough bits the table's entry is the exact one.
+#[cfg(feature = "mpfr")]
+#[test]
+fn mpfr_refuses_decisions_its_rounding_cannot_make() {
+    let o = span_run(
+        "angular-table256",
+        ["0,0,1", "0,0,1", LIGHT_ABOVE_100_5],
+        "1",
+        &["--scalar", "mpfr"],
+    );
+    refused(&o, "the cosine table's entry at pixel 0 is not decided");
+    let o = span_run(
+        "angular-table256",
+        ["0,0,1", "0,0,1", LIGHT_ABOVE_100_5],
+        "1",
+        &["--scalar", "mpfr", "--precision", "400"],
+    );
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let v: Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["values"][0], "0.812622370966445628419638151755");
+    let o = span_run(
+        "adaptive",
+        ["0,0,1", NB_JUST_OVER_THE_THRESHOLD, "0,0,1"],
+        "2",
+        &["--scalar", "mpfr", "--normalize"],
+    );
+    let e = stderr(&o);
+    // MPFR's δ at 256 bits lands on either side: refused, or the exact choice.
+    if code(&o) == 0 {
+        let v: Value = serde_json::from_slice(&o.stdout).unwrap();
+        assert_eq!(v["decision"], "corrected-euler");
+    } else {
+        refused(&o, "where the exact test picks corrected-euler");
+        assert!(e.contains("picks gouraud"), "{e}");
+    }
+}

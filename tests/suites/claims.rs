@@ -18,5 +18,7 @@ mod doc_math;
 mod errata;
 #[path = "../layers.rs"]
 mod layers;
+#[path = "../public_api.rs"]
+mod public_api;
 #[path = "../quickcheck_identities.rs"]
 mod quickcheck_identities;

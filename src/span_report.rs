@@ -20,6 +20,7 @@ use serde::Serialize;
 use std::fmt;
 
 mod bounds;
+mod decide;
 mod error;
 mod exact;
 

@@ -215,6 +215,63 @@ mod on_device {
         assert!(err.contains("bad.comp:"), "{err}");
     }
 
+    /// Finding 6 of the fifth reliability round: glslang's output goes to a private
+    /// folder of random name that is removed afterwards, so nothing planted in the
+    /// temporary folder (a link at a guessable name) is written through; and a report
+    /// over a file the tool did not write is refused (finding 4).
+    #[test]
+    fn glsl_compiles_in_a_private_folder_and_reports_spare_users_files() {
+        let tmp = scratch("tmpdir");
+        let victim = scratch("victim").join("precious.txt");
+        std::fs::write(&victim, "keep\n").unwrap();
+        for k in 0..4 {
+            std::os::unix::fs::symlink(&victim, tmp.join(format!("phong-approx-spv-{k}.spv")))
+                .unwrap();
+        }
+        let before: Vec<_> = std::fs::read_dir(&tmp)
+            .unwrap()
+            .map(|e| e.unwrap().file_name())
+            .collect();
+        let notes = scratch("notes").join("notes.txt");
+        std::fs::write(&notes, "mine\n").unwrap();
+        let _device = gpu();
+        let o = bin()
+            .env("TMPDIR", &tmp)
+            .args(["gpu-check", "--shader"])
+            .arg(repo("harness/gpu/gouraud.comp"))
+            .args(["--method", "gouraud", "--report", "json"])
+            .arg(&notes)
+            .output()
+            .unwrap();
+        let (out, err) = text(&o);
+        assert_eq!(o.status.code(), Some(2), "{out}{err}");
+        assert!(err.contains("not a report phong-approx wrote"), "{err}");
+        assert_eq!(std::fs::read_to_string(&notes).unwrap(), "mine\n");
+        let o = bin()
+            .env("TMPDIR", &tmp)
+            .args(["gpu-check", "--shader"])
+            .arg(repo("harness/gpu/gouraud.comp"))
+            .args(["--method", "gouraud"])
+            .output()
+            .unwrap();
+        let (out, err) = text(&o);
+        assert_eq!(o.status.code(), Some(0), "{out}{err}");
+        assert!(
+            out.trim_end()
+                .lines()
+                .last()
+                .unwrap()
+                .starts_with("PASS: all "),
+            "{out}"
+        );
+        let after: Vec<_> = std::fs::read_dir(&tmp)
+            .unwrap()
+            .map(|e| e.unwrap().file_name())
+            .collect();
+        assert_eq!(before.len(), after.len(), "{after:?}");
+        assert_eq!(std::fs::read_to_string(&victim).unwrap(), "keep\n");
+    }
+
     #[test]
     fn a_spirv_module_from_glslang_passes() {
         let spv = scratch("spirv").join("gouraud.spv");
@@ -255,15 +312,22 @@ mod on_device {
 
     #[test]
     fn nan_values_and_unwritten_pixels_fail_the_cases() {
+        // A NaN written by the kernel (a quiet NaN's bits, which no compiler can fold
+        // away as it may a division by zero) reads "not finite" ...
         let nan = edited(
             "nan",
             "out[s.first + i] = pi;",
-            "out[s.first + i] = pi / (pi - pi);",
+            "out[s.first + i] = bitcast<f32>(0x7fc00000u);",
         );
         let o = gpu_check(&nan, "corrected-euler", &[]);
         let (out, err) = text(&o);
         assert_eq!(o.status.code(), Some(1), "{out}{err}");
         assert!(err.contains("is not finite"), "{err}");
+        assert!(!err.contains("never written"), "{err}");
+        assert!(
+            out.trim_end().lines().last().unwrap().starts_with("FAIL: "),
+            "{out}"
+        );
         // Half the pixels never written: a workgroup of 32 where the dispatch counts 64.
         let half = edited("half", "@workgroup_size(64)", "@workgroup_size(32)");
         let o = gpu_check(&half, "corrected-euler", &[]);
@@ -273,6 +337,8 @@ mod on_device {
             out.contains("pixels were never written by the kernel"),
             "{out}"
         );
+        // ... and a pixel the kernel never wrote is told apart on stderr too.
+        assert!(err.contains("was never written by the kernel"), "{err}");
     }
 
     #[test]

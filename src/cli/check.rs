@@ -145,6 +145,11 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
             "standard input cannot be both --vectors and --results: give one of them as a file",
         ));
     }
+    // The report's file is checked before any work (a refusal costs nothing).
+    let report = ReportArg::parse(a.report.as_deref(), a.force)?;
+    if let Some(r) = &report {
+        r.check(&[&a.vectors, &a.results])?;
+    }
     let vtext = read_capped(&a.vectors, "--vectors", MAX_RESULTS_BYTES)?;
     let loaded = load_vectors(
         vtext,
@@ -165,7 +170,6 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
         };
         CliError::arg(arg, format!("{}{advice}", e.message))
     })?;
-    let report = ReportArg::parse(a.report.as_deref(), a.force)?;
     let human = human_verdict(report.as_ref());
     if loaded.recomputed {
         human(&format!(
@@ -316,6 +320,18 @@ impl ReportArg {
         }))
     }
 
+    /// Refuses, before any work, a report file that [`write_report`] would refuse
+    /// (`inputs`: the command's input files).
+    ///
+    /// # Errors
+    /// As [`write_report`]'s checks.
+    pub(crate) fn check(&self, inputs: &[&str]) -> Result<(), CliError> {
+        match &self.target {
+            ReportTarget::Stdout => Ok(()),
+            ReportTarget::File(file) => report_target(file, inputs, self.force).map(|_| ()),
+        }
+    }
+
     /// Writes `text` where the report goes; `inputs` are the command's input files,
     /// which a report never replaces.
     ///
@@ -383,6 +399,30 @@ const MAX_REPORT_BYTES: u64 = 256 << 20;
 fn write_report(file: &str, text: &str, inputs: &[&str], force: bool) -> Result<(), CliError> {
     use std::io::Write;
     let arg = "--report";
+    let dir = report_target(file, inputs, force)?;
+    let shown_file = shown(file);
+    let fail =
+        |e: &dyn std::fmt::Display| CliError::arg(arg, format!("cannot write {shown_file}: {e}"));
+    let mut tmp = tempfile::Builder::new()
+        .prefix(".phong-approx-report-")
+        .tempfile_in(dir)
+        .map_err(|e| fail(&e))?;
+    tmp.write_all(text.as_bytes())
+        .and_then(|()| tmp.as_file().sync_all())
+        .map_err(|e| fail(&e))?;
+    tmp.persist(file).map_err(|e| fail(&e.error))?;
+    Ok(())
+}
+
+/// Checks that `file` may take a report ([`write_report`]'s rules), and returns its
+/// folder: called before any work (so that a refusal costs nothing) and again just
+/// before the write.
+fn report_target<'a>(
+    file: &'a str,
+    inputs: &[&str],
+    force: bool,
+) -> Result<&'a std::path::Path, CliError> {
+    let arg = "--report";
     let path = std::path::Path::new(file);
     if path.file_name().is_none() {
         return Err(CliError::arg(
@@ -444,17 +484,7 @@ fn write_report(file: &str, text: &str, inputs: &[&str], force: bool) -> Result<
             ),
         ));
     }
-    let fail =
-        |e: &dyn std::fmt::Display| CliError::arg(arg, format!("cannot write {shown_file}: {e}"));
-    let mut tmp = tempfile::Builder::new()
-        .prefix(".phong-approx-report-")
-        .tempfile_in(dir)
-        .map_err(|e| fail(&e))?;
-    tmp.write_all(text.as_bytes())
-        .and_then(|()| tmp.as_file().sync_all())
-        .map_err(|e| fail(&e))?;
-    tmp.persist(path).map_err(|e| fail(&e.error))?;
-    Ok(())
+    Ok(dir)
 }
 
 /// Whether `p` is a symbolic link (not followed).

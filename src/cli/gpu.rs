@@ -159,6 +159,9 @@ mod with_gpu {
         }
         // Read (and refused) before the device is opened.
         let report = ReportArg::parse(a.report.as_deref(), a.force)?;
+        if let Some(r) = &report {
+            r.check(&[a.shader.as_deref().unwrap_or("-")])?;
+        }
         let timeout = Duration::from_secs(u64::from(a.timeout));
         // The kernel is read (and GLSL compiled) before the device is opened: a bad
         // file is bad input whether or not there is a GPU.

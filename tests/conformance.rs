@@ -564,12 +564,17 @@ fn check_profiles_judge_by_the_proved_bounds() {
         "angular-f32.csv",
         &own_results::<f32>(file, Method::Angular, false),
     );
-    let (code, out, _) = run_check(&typical_path(), &angular, &["--method", "angular"]);
+    let (code, out, err) = run_check(&typical_path(), &angular, &["--method", "angular"]);
     assert_eq!(code, 1, "{out}");
     assert!(
         out.contains("the ieee profile has no bound for angular")
             && out.contains("--profile reference"),
         "{out}"
+    );
+    // The failure line says there is no bound, not "∞ × allowed".
+    assert!(
+        err.contains("(no bound: the ieee profile has no bound for angular") && !err.contains('∞'),
+        "{err}"
     );
     let (code, out, err) = run_check(
         &typical_path(),

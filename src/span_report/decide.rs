@@ -112,42 +112,68 @@ pub(super) fn settle_table(
     Ok(())
 }
 
-/// The most `4·(size − 1)·n'` [`exact_midpoint`] takes on (the power's exponent: the
-/// rationals it builds have about that many times the digits of `p`).
-const MIDPOINT_EXPONENT: u64 = 1 << 18;
+/// The most bits [`exact_midpoint`] lets its powers grow to (`4·(size − 1)·n'` times
+/// the bits of the edge cosines' numerators and denominators): about 2^23 bits, a
+/// second or so of integer arithmetic.
+const MIDPOINT_BITS: u64 = 1 << 23;
 
 /// Whether the angle of pixel `i`, `α_i = ((n − i)α_a + i·α_b)/n` with `cos α = p`
 /// (exact rationals in `[−1, 1]`), is exactly a midpoint between two table angles,
-/// `(2k + 1)·π/(4·last)`, `last = size − 1`; `None` where that costs more than
-/// [`MIDPOINT_EXPONENT`] allows. With `d = gcd(i, n)`, `n' = n/d`, `i' = i/d`: a
-/// midpoint gives `4·last·((n' − i')α_a + i'α_b) = (2k + 1)·n'·π`, so `z_a^{4·last·(n' −
-/// i')}·z_b^{4·last·i'} = (−1)^{n'}` with `z = e^{iα} = p + i·√(1 − p²)`; conversely that
-/// equality puts `α_i` on a grid of spacing `2π/(4·last·n')` through the midpoint, and
-/// the caller has `α_i` far closer than that to it. The powers are `A + i·s·B` with `A`,
-/// `B` rational (Chebyshev: `s = sin α`), and the equality is decided in rationals.
+/// `(2k + 1)·π/(4·last)`, `last = size − 1`, for a pixel whose position the caller
+/// already knows to lie within far less than a table step of one; `None` where that
+/// costs more than [`MIDPOINT_BITS`] allows. With `d = gcd(i, n)`, `n' = n/d`, `i' = i/d`: a midpoint
+/// gives `4·last·((n' − i')α_a + i'α_b) = (2k + 1)·n'·π`, so `z_a^{e_a}·z_b^{e_b} =
+/// (−1)^{n'}` with `z = e^{iα} = p + i·√(1 − p²)`, `e_a = 4·last·(n' − i')`, `e_b =
+/// 4·last·i'`; conversely that equality puts `α_i` on a grid of spacing
+/// `2π/(4·last·n')` through the midpoint, and the caller has `α_i` far closer than
+/// that to it. With `p = a/d`, `z^e = (A + i·√R·B)/d^e`, `R = d² − a²`, `A`, `B`
+/// integers (Chebyshev), and the equality is decided in integers. A pixel at an edge
+/// (`i' = 0` or `i' = n'`) is a midpoint only where its cosine is in `{0, ±½, ±1}`
+/// (Niven: a rational cosine of a rational multiple of π), so no power is taken there.
 fn exact_midpoint(pa: &BigRational, pb: &BigRational, n: u32, i: usize, last: u32) -> Option<bool> {
+    use num_bigint::BigInt;
     use num_integer::Integer;
     use num_traits::{One, Signed, Zero};
     let i = u64::try_from(i).ok()?;
-    let d = i.gcd(&u64::from(n)).max(1);
-    let (n1, i1) = (u64::from(n) / d, i / d);
+    let g = i.gcd(&u64::from(n)).max(1);
+    let (n1, i1) = (u64::from(n) / g, i / g);
     let m = 4 * u64::from(last);
-    if m.checked_mul(n1)? > MIDPOINT_EXPONENT {
+    let q = |a: i64, b: i64| BigRational::new(a.into(), b.into());
+    if i1 == 0 || i1 == n1 {
+        // α_i = α_a (or α_b): a rational multiple of π only at Niven's cosines.
+        let p = if i1 == 0 { pa } else { pb };
+        let a = [
+            (q(1, 1), q(0, 1)),
+            (q(1, 2), q(1, 3)),
+            (q(0, 1), q(1, 2)),
+            (q(-1, 2), q(2, 3)),
+            (q(-1, 1), q(1, 1)),
+        ]
+        .into_iter()
+        .find(|(c, _)| c == p)
+        .map(|(_, a)| a);
+        return Some(a.is_some_and(|a| {
+            let pos = BigRational::from_integer((2 * last).into()) * a + q(1, 2);
+            pos.is_integer()
+        }));
+    }
+    let (ea, eb) = (m.checked_mul(n1 - i1)?, m.checked_mul(i1)?);
+    let bits = |p: &BigRational| p.numer().bits() + p.denom().bits();
+    if ea
+        .checked_mul(bits(pa))?
+        .checked_add(eb.checked_mul(bits(pb))?)?
+        > MIDPOINT_BITS
+    {
         return None;
     }
-    let one = BigRational::one();
-    // (p + i·s)^e as (A, B) with s² = 1 − p² (binary powering).
-    let power = |p: &BigRational, e: u64| -> (BigRational, BigRational) {
-        let s2 = one.clone() - p.clone() * p.clone();
-        let mul = |(a1, b1): &(BigRational, BigRational), (a2, b2): &(BigRational, BigRational)| {
-            (
-                a1.clone() * a2.clone() - s2.clone() * b1.clone() * b2.clone(),
-                a1.clone() * b2.clone() + b1.clone() * a2.clone(),
-            )
+    // (a + i·√R)^e as (A, B): A + i·√R·B, R = d² − a² (binary powering, integers only).
+    let power = |a: &BigInt, r: &BigInt, e: u64| -> (BigInt, BigInt) {
+        let mul = |(a1, b1): &(BigInt, BigInt), (a2, b2): &(BigInt, BigInt)| {
+            (a1 * a2 - r * b1 * b2, a1 * b2 + b1 * a2)
         };
         let (mut acc, mut base, mut e) = (
-            (one.clone(), BigRational::zero()),
-            (p.clone(), one.clone()),
+            (BigInt::one(), BigInt::zero()),
+            (a.clone(), BigInt::one()),
             e,
         );
         while e > 0 {
@@ -161,14 +187,13 @@ fn exact_midpoint(pa: &BigRational, pb: &BigRational, n: u32, i: usize, last: u3
         }
         acc
     };
-    let (aa, ba) = power(pa, m * (n1 - i1));
-    let (ab, bb) = power(pb, m * i1);
-    let (ra, rb) = (
-        one.clone() - pa.clone() * pa.clone(),
-        one.clone() - pb.clone() * pb.clone(),
-    );
-    // x = y·√r, exactly (r ≥ 0).
-    let sign = |x: &BigRational| {
+    let (na, da) = (pa.numer().clone(), pa.denom().clone());
+    let (nb, db) = (pb.numer().clone(), pb.denom().clone());
+    let (ra, rb) = (&da * &da - &na * &na, &db * &db - &nb * &nb);
+    let (aa, ba) = power(&na, &ra, ea);
+    let (ab, bb) = power(&nb, &rb, eb);
+    let scale = num_traits::pow::pow(da, ea as usize) * num_traits::pow::pow(db, eb as usize);
+    let sign = |x: &BigInt| {
         if x.is_zero() {
             0
         } else if x.is_positive() {
@@ -177,26 +202,19 @@ fn exact_midpoint(pa: &BigRational, pb: &BigRational, n: u32, i: usize, last: u3
             -1
         }
     };
-    let eq_root = |x: &BigRational, y: &BigRational, r: &BigRational| {
+    // x = y·√r exactly (r ≥ 0).
+    let eq_root = |x: &BigInt, y: &BigInt, r: &BigInt| {
         let sy = if r.is_zero() { 0 } else { sign(y) };
-        sign(x) == sy && x.clone() * x.clone() == y.clone() * y.clone() * r.clone()
+        sign(x) == sy && x * x == y * y * r
     };
-    // Real part: A_a·A_b − s_a·s_b·B_a·B_b = (−1)^{n'}.
-    let target = if n1 % 2 == 0 {
-        one.clone()
-    } else {
-        -one.clone()
-    };
-    let real = eq_root(
-        &(aa.clone() * ab.clone() - target),
-        &(ba.clone() * bb.clone()),
-        &(ra.clone() * rb.clone()),
-    );
-    // Imaginary part: s_a·B_a·A_b + s_b·A_a·B_b = 0, i.e. B_a·A_b·√r_a = −A_a·B_b·√r_b.
-    let (p, q) = (ba * ab, -(aa * bb));
+    // Real part: A_a·A_b − √(R_a·R_b)·B_a·B_b = (−1)^{n'}·d_a^{e_a}·d_b^{e_b}.
+    let target = if n1 % 2 == 0 { scale } else { -scale };
+    let real = eq_root(&(&aa * &ab - target), &(&ba * &bb), &(&ra * &rb));
+    // Imaginary part: √R_a·B_a·A_b = −√R_b·A_a·B_b.
+    let (p, q2) = (&ba * &ab, -(&aa * &bb));
     let sp = if ra.is_zero() { 0 } else { sign(&p) };
-    let sq = if rb.is_zero() { 0 } else { sign(&q) };
-    let imag = sp == sq && p.clone() * p * ra == q.clone() * q * rb;
+    let sq = if rb.is_zero() { 0 } else { sign(&q2) };
+    let imag = sp == sq && &p * &p * &ra == &q2 * &q2 * &rb;
     Some(real && imag)
 }
 
@@ -303,4 +321,37 @@ pub(super) fn mpfr_decisions(
         }
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn q(a: i64, b: i64) -> BigRational {
+        BigRational::new(a.into(), b.into())
+    }
+
+    #[test]
+    fn midpoints_are_decided_in_integers() {
+        // acos(3/5) + acos(4/5) = π/2: pixel 8 of 16 is at π/4, position 127.5 of the
+        // 256-entry table. (The answer means something only for a pixel whose position
+        // is already known to lie near a midpoint, as `settle_table` asks.)
+        assert_eq!(exact_midpoint(&q(3, 5), &q(4, 5), 16, 8, 255), Some(true));
+        // The same angle for the other pairs of steps that reach it: 2 of 4, 4 of 8.
+        assert_eq!(exact_midpoint(&q(3, 5), &q(4, 5), 4, 2, 255), Some(true));
+        assert_eq!(exact_midpoint(&q(4, 5), &q(3, 5), 8, 4, 255), Some(true));
+        // At an edge only the cosines 0, ±½, ±1 are rational multiples of π, and their
+        // positions (0, 85·2, 255, …) are entries: never a midpoint.
+        for p in [q(1, 2), q(0, 1), q(-1, 2), q(1, 1), q(3, 5)] {
+            assert_eq!(exact_midpoint(&p, &q(4, 5), 16, 0, 255), Some(false), "{p}");
+            assert_eq!(
+                exact_midpoint(&q(4, 5), &p, 16, 16, 255),
+                Some(false),
+                "{p}"
+            );
+        }
+        // Powers past the budget are not taken.
+        let big = BigRational::new(1.into(), num_bigint::BigInt::from(10).pow(400u32));
+        assert_eq!(exact_midpoint(&big, &q(4, 5), 4096, 1, 255), None);
+    }
 }

@@ -738,6 +738,10 @@ fn the_table_index_is_decided_exactly_near_a_midpoint() {
     assert_eq!(v["values"][8], "0.704925546906147157479095692187");
 }
 
+/// The same with 255|δ| = 1 − 2.5·10⁻⁸⁵: the exact choice is Gouraud (the square roots
+/// to 2^-256 picked corrected Euler here before).
+const NB_JUST_UNDER_THE_THRESHOLD: &str = "3599370165326780392125726274442057974113077630461586605387148629177666719759620712893/20000000000000000000000000000000000000000000000000000000000000000000000000000000000000,0,1";
+
 /// Finding 2 of the fifth reliability round: the adaptive test with --normalize decided
 /// exactly.
 #[test]
@@ -754,6 +758,17 @@ fn the_adaptive_test_with_normalize_is_decided_exactly() {
     // Corrected Euler's middle pixel (1 + w)/2 + (1 − w²)/8, by mpmath at 60 digits
     // (Gouraud's would be 0.992094363659144179000903558205).
     assert_eq!(v["values"][1], "0.996015932286595159393060420950");
+    let o = span_run(
+        "adaptive",
+        ["0,0,1", NB_JUST_UNDER_THE_THRESHOLD, "0,0,1"],
+        "2",
+        &["--scalar", "exact", "--normalize"],
+    );
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let v: Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["decision"], "gouraud");
+    // Gouraud's middle pixel (1 + w)/2, by mpmath at 60 digits.
+    assert_eq!(v["values"][1], "0.992094363659144179000903558205");
 }
 
 /// Finding 8 of the fifth reliability round: fractions only for rational values, and a

@@ -2,7 +2,9 @@
 
 use super::{out, read_capped, CliError};
 use clap::Args;
-use phong_approx::conformance::check::{parse_results, Tolerance, Unbounded, MAX_RESULTS_BYTES};
+use phong_approx::conformance::check::{
+    denote, parse_results, Tolerance, Unbounded, MAX_RESULTS_BYTES,
+};
 use phong_approx::conformance::judgement::judge;
 use phong_approx::conformance::shown;
 use phong_approx::conformance::vectors::method_key;
@@ -178,11 +180,15 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
     }
     let vectors = &loaded.file;
     let rtext = read_capped(&a.results, "--results", MAX_RESULTS_BYTES)?;
-    let results = parse_results(&rtext, &a.results, vectors, a.specular).map_err(|e| CliError {
-        message: e.to_string(),
-        code: 2,
-        details: Vec::new(),
-    })?;
+    // Each result as the float of --precision it denotes (docs/conformance.md, "The
+    // results").
+    let results = parse_results(&rtext, &a.results, vectors, a.specular)
+        .and_then(|mut r| denote(&mut r, &a.results, a.precision.format()).map(|()| r))
+        .map_err(|e| CliError {
+            message: e.to_string(),
+            code: 2,
+            details: Vec::new(),
+        })?;
     let judged = judge(
         vectors,
         &loaded.shapes,

@@ -6,9 +6,11 @@
 mod results;
 mod tolerance;
 
+pub use results::{
+    denote, parse_results_json, InputError, Results, MAX_CSV_LINE, MAX_RESULTS_BYTES,
+};
 #[cfg(feature = "csv")]
 pub use results::{parse_results, parse_results_csv};
-pub use results::{parse_results_json, InputError, Results, MAX_CSV_LINE, MAX_RESULTS_BYTES};
 pub use tolerance::{Advice, Tolerance, Unbounded};
 
 use super::vectors::{Case, Expected, VectorFile};

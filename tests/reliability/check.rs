@@ -144,8 +144,21 @@ fn levels_tolerance_does_not_pass_absurd_values() {
         &r,
         "--tolerance",
         "levels=0",
+        "--precision",
+        "f64",
     ]);
     assert_eq!(code(&o), 1, "{}", stderr(&o));
+    // In f32 (the default) 1e300 denotes no finite f32: refused as beyond its range.
+    let o = run(&[
+        "check",
+        "--vectors",
+        &vp,
+        "--results",
+        &r,
+        "--tolerance",
+        "levels=0",
+    ]);
+    refused(&o, "is outside the range of f32");
 }
 
 /// Defect d12 of the reliability rounds (docs/conformance.md, "Limits and exit codes").
@@ -794,5 +807,85 @@ fn results_beyond_and_below_f64_are_refused_alike_and_named() {
     let zero = write(&d, "zero.csv", "case,pixel,value\ntypical-001,0,0e-400\n");
     assert!(
         !stderr(&run(&["check", "--vectors", &v, "--results", &zero])).contains("below the range")
+    );
+}
+
+/// A result is judged as the float it denotes (`--precision f32`): the float's
+/// shortest decimal, its exact decimal expansion and a decimal a third of an ulp away
+/// from it denote one `f32`, and get one verdict, to the last digit of every ratio.
+#[test]
+fn a_result_is_the_float_it_denotes() {
+    let d = scratch("f51-denote");
+    let v = typical();
+    let mut files = [
+        String::from("case,pixel,value\n"),
+        String::from("case,pixel,value\n"),
+        String::from("case,pixel,value\n"),
+    ];
+    let mut k = 0i32;
+    for c in v["cases"].as_array().unwrap() {
+        let id = c["id"].as_str().unwrap();
+        for (i, x) in c["expected"]["corrected-euler"]["values"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .enumerate()
+        {
+            // The nearest f32 to the exact value, moved by −1, 0 or 1 ulp.
+            let mut g: f32 = x.as_str().unwrap().parse().unwrap();
+            k += 1;
+            g = match k % 3 {
+                0 => g.next_down(),
+                1 => g,
+                _ => g.next_up(),
+            };
+            let third = f64::from(g) + (f64::from(g.next_up()) - f64::from(g)) / 3.0;
+            files[0] += &format!("{id},{i},{g}\n");
+            files[1] += &format!("{id},{i},{:.80e}\n", f64::from(g));
+            files[2] += &format!("{id},{i},{third:e}\n");
+        }
+    }
+    let vectors = root().join("vectors/typical.json").display().to_string();
+    let verdicts: Vec<Value> = files
+        .iter()
+        .enumerate()
+        .map(|(k, text)| {
+            let r = write(&d, &format!("r{k}.csv"), text);
+            let o = run(&[
+                "check",
+                "--vectors",
+                &vectors,
+                "--results",
+                &r,
+                "--report",
+                "json",
+                "-",
+            ]);
+            assert!(code(&o) <= 1, "{}", stderr(&o));
+            let mut j: Value = serde_json::from_slice(&o.stdout).unwrap();
+            for c in j["cases"].as_array_mut().unwrap() {
+                c.as_object_mut().unwrap().retain(|k, _| {
+                    ["id", "pass", "max_abs", "ratio", "max_levels"].contains(&k.as_str())
+                });
+            }
+            j["cases"].clone()
+        })
+        .collect();
+    assert_eq!(verdicts[0], verdicts[1]);
+    assert_eq!(verdicts[0], verdicts[2]);
+    // A decimal halfway between two f32 denotes neither: refused.
+    let mid = f64::from(0.5f32) + (f64::from(0.5f32.next_up()) - 0.5) / 2.0;
+    let r = write(
+        &d,
+        "mid.csv",
+        &files[0].replacen(
+            &files[0].lines().nth(1).unwrap().to_string(),
+            &format!("typical-001,0,{mid:e}"),
+            1,
+        ),
+    );
+    refused(
+        &run(&["check", "--vectors", &vectors, "--results", &r]),
+        "halfway between two f32",
     );
 }

@@ -410,6 +410,71 @@ pub fn parse_results_json(
     complete(file, vectors, specular, ctx.got.into_inner())
 }
 
+/// Each value of `results` (read as the `f64` nearest its decimal) as the value of
+/// `format` nearest that decimal — the number the implementation computed, whose
+/// shortest decimal is what it prints — so that a verdict compares that number, not a
+/// decimal up to half an ulp away. For `f32` the `f64` is rounded again, which is the
+/// decimal's own rounding except where the `f64` is exactly halfway between two `f32`
+/// (a decimal within 2^-53 of such a midpoint): such a value denotes no one `f32` and
+/// is refused. A finite value beyond the format's range, or non-zero and rounding to
+/// zero in it, is refused as one beyond `f64`'s is; NaN and infinities stay (they fail
+/// their pixel). Binary64 leaves the values as they are; fixed point and binary16
+/// results are judged as read.
+///
+/// # Errors
+/// An [`InputError`] naming the file, the case and the value.
+pub fn denote(results: &mut Results, file: &str, format: crate::Format) -> Result<(), InputError> {
+    if format != crate::Format::Binary32 {
+        return Ok(());
+    }
+    let mut ids: Vec<&String> = results.keys().collect();
+    ids.sort();
+    let mut bad = None;
+    for id in ids {
+        for (i, v) in results[id].iter().enumerate() {
+            if !v.is_finite() {
+                continue;
+            }
+            let f = *v as f32;
+            let why = if f.is_infinite() {
+                Some("is outside the range of f32 (an infinite result is written inf)")
+            } else if f == 0.0 && *v != 0.0 {
+                Some("is below the range of f32 (under its smallest subnormal, about 1.4e-45): a result of zero is written 0")
+            } else {
+                // Halfway between two f32: f lies on one side; the neighbour on the other.
+                let next = if f64::from(f) < *v {
+                    f.next_up()
+                } else {
+                    f.next_down()
+                };
+                let mid = (f64::from(f) + f64::from(next)) / 2.0;
+                (mid == *v).then_some("lies halfway between two f32 (within 2^-53 of the midpoint): it denotes no one f32; write the float's shortest decimal")
+            };
+            if let Some(why) = why {
+                bad = Some(format!(
+                    "case {}: value {i} ({v:e}) {why}",
+                    crate::conformance::shown(id)
+                ));
+                break;
+            }
+        }
+        if bad.is_some() {
+            break;
+        }
+    }
+    if let Some(m) = bad {
+        return Err(err(file, 0, m));
+    }
+    for vals in results.values_mut() {
+        for v in vals.iter_mut() {
+            if v.is_finite() {
+                *v = f64::from(*v as f32);
+            }
+        }
+    }
+    Ok(())
+}
+
 /// Parses results by content: JSON when the first non-blank character is `{`.
 ///
 /// # Errors

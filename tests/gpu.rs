@@ -272,6 +272,49 @@ mod on_device {
         assert_eq!(std::fs::read_to_string(&victim).unwrap(), "keep\n");
     }
 
+    /// `gpu-check --form` (as `check --form`): a closed-form kernel with a drift of
+    /// i·10⁻⁷ passes under the recurrence's bound (undeclared, the largest over every
+    /// form) and fails when declared closed, whose bound does not grow with n.
+    #[test]
+    fn a_declared_closed_form_is_judged_by_its_own_bound() {
+        let source =
+            std::fs::read_to_string(repo("harness/gpu/corrected_euler_closed.wgsl")).unwrap();
+        let from = "out[p] = pa + f32(i) * (t0 + h);";
+        assert!(source.contains(from));
+        let path = scratch("form").join("drift.wgsl");
+        std::fs::write(
+            &path,
+            source.replace(from, "out[p] = pa + f32(i) * (t0 + h) + f32(i) * 1e-7;"),
+        )
+        .unwrap();
+        let o = gpu_check(&path, "corrected-euler", &[]);
+        let (out, err) = text(&o);
+        assert_eq!(o.status.code(), Some(0), "{out}{err}");
+        let o = gpu_check(&path, "corrected-euler", &["--form", "closed"]);
+        let (out, err) = text(&o);
+        assert_eq!(o.status.code(), Some(1), "{out}{err}");
+        assert!(
+            out.trim_end().lines().last().unwrap().starts_with("FAIL: "),
+            "{out}"
+        );
+        // The kernel as written passes declared closed.
+        let o = gpu_check(
+            &repo("harness/gpu/corrected_euler_closed.wgsl"),
+            "corrected-euler",
+            &["--form", "closed"],
+        );
+        let (out, err) = text(&o);
+        assert_eq!(o.status.code(), Some(0), "{out}{err}");
+        // A form for a method whose forms no theorem tells apart is refused.
+        let o = gpu_check(
+            &repo("harness/gpu/phong.wgsl"),
+            "phong",
+            &["--form", "closed"],
+        );
+        let (_, err) = text(&o);
+        assert_eq!(o.status.code(), Some(2), "{err}");
+    }
+
     #[test]
     fn a_spirv_module_from_glslang_passes() {
         let spv = scratch("spirv").join("gouraud.spv");

@@ -4,7 +4,7 @@
 
 use super::CliError;
 use clap::Args;
-use phong_approx::tolerance::profile::Profile;
+use phong_approx::tolerance::profile::{Form, Profile};
 use phong_approx::Method;
 
 /// Arguments of `phong-approx gpu-check`.
@@ -34,6 +34,13 @@ pub struct GpuCheckArgs {
     #[arg(long, value_name = "NAME", default_value = "shader",
           value_parser = |s: &str| s.parse::<Profile>())]
     pub profile: Profile,
+    /// The form your kernel computes, for the profile's bound (as `check --form`): any
+    /// (the default: the largest bound over every form), recurrence or closed. For
+    /// euler and corrected-euler a closed form's bound does not grow with n, so a
+    /// closed-form kernel declared closed is judged by it; other methods take any.
+    #[arg(long, value_name = "FORM", default_value = "any",
+          value_parser = |s: &str| s.parse::<Form>())]
+    pub form: Form,
     /// Also write the verdict for a CI system: `--report junit FILE` or `--report json
     /// FILE` (FILE `-`: standard output), as `check` does: an existing file only if it
     /// is a report of this tool, or with --force.
@@ -75,7 +82,7 @@ mod with_gpu {
     use phong_approx::gpu::kernels::{Kernel, Language, KERNELS};
     use phong_approx::gpu::{published_spans, unwritten, Gpu, GpuError, Source};
     use phong_approx::testkit::{published, published_shapes, SETS};
-    use phong_approx::tolerance::profile::Profile;
+    use phong_approx::tolerance::profile::{Form, Profile};
     use phong_approx::{Format, Method};
     use std::time::{Duration, Instant};
 
@@ -120,11 +127,12 @@ mod with_gpu {
         results: &Results,
         method: Method,
         profile: Profile,
+        form: Form,
     ) -> Result<Sets<'_>, CliError> {
         let tol = Tolerance::Profile {
             profile,
             format: Format::Binary32,
-            form: phong_approx::tolerance::profile::Form::Any,
+            form,
         };
         SETS.iter()
             .filter_map(|set| Some((*set, published(set)?, published_shapes(set)?)))
@@ -151,6 +159,12 @@ mod with_gpu {
     /// # Errors
     /// See [`super::run`].
     pub fn run(a: &GpuCheckArgs) -> Result<(), CliError> {
+        if a.form != Form::Any && !Form::applies_to(a.method.unwrap_or(Method::Gouraud)) {
+            return Err(CliError::arg(
+                "--form",
+                "a declared form tells apart only euler's and corrected-euler's theorems: this method takes --form any",
+            ));
+        }
         if matches!(a.profile, Profile::Fixed { .. }) {
             return Err(CliError::arg(
                 "--profile",
@@ -216,7 +230,7 @@ mod with_gpu {
                 "{missing} pixels were never written by the kernel (a loop the driver cut short: lavapipe stops an invocation's loops after about 65535 iterations in all; a workgroup size other than 64; an early return; a struct layout other than the interface's, such as a vec3 where it has a vec4, which moves every later field: docs/conformance.md §6)\n"
             ))?;
         }
-        let sets = judge_sets(&results, method, a.profile)?;
+        let sets = judge_sets(&results, method, a.profile, a.form)?;
         for (_, j) in &sets {
             human(&j.text(advice))?;
         }
@@ -357,8 +371,8 @@ mod with_gpu {
                 Language::Glsl => Source::glsl(k.text, k.file).map_err(gpu_error)?,
             };
             let (results, raw, _) = values(gpu, &source, k.file, timeout)?;
-            let shader = judge_sets(&results, k.method, Profile::Shader)?;
-            let ieee = judge_sets(&results, k.method, Profile::Ieee)?;
+            let shader = judge_sets(&results, k.method, Profile::Shader, Form::Any)?;
+            let ieee = judge_sets(&results, k.method, Profile::Ieee, Form::Any)?;
             let (differ, max_ulps, of_bound) = differences(&k, &spans, &raw, &shader);
             let verdict = |sets: &Sets| {
                 format!(

@@ -19,7 +19,8 @@
 #    (each method has an ieee bound: proved for gouraud, euler and corrected-euler,
 #    derived for phong and duff); the same for the specular part of the sets that
 #    have one. The fused f32 build must differ from the plain one somewhere.
-# 4. The user's route: run.sh on example_corrected_euler.c must pass, and on a copy
+# 4. The user's route: run.sh on example_corrected_euler.c must pass (and declared
+#    --form recurrence too, but not --form closed), and on a copy
 #    with the first step corrected by ε/(n+1) instead of ε/n (made here, in a
 #    temporary folder) must fail.
 # 5. The kit's version and its old API: pk_version() is PK_VERSION (tests/version.c),
@@ -191,6 +192,21 @@ if [ "$rc" -ne 1 ] || grep -q ' pass: ' "$tmp/out"; then
   exit 1
 fi
 echo "  run.sh: the planted ε/(n+1) fails every set and build ($(grep -c ' FAIL: ' "$tmp/out") of 6)"
+# The declared form: the example is a recurrence, so it passes declared as one and
+# fails declared closed (the closed form's bound does not grow with n; edge's n = 4096
+# spans exceed it); an unknown form is bad input.
+CFLAGS="${warn[*]}" bash "$here/run.sh" "$here/example_corrected_euler.c" "$bin" --form recurrence > "$tmp/out"
+rc=0
+CFLAGS="${warn[*]}" bash "$here/run.sh" "$here/example_corrected_euler.c" "$bin" --form closed > "$tmp/out" || rc=$?
+if [ "$rc" -ne 1 ]; then
+  cat "$tmp/out"
+  echo "ci.sh: run.sh --form closed passed a recurrence (exit $rc)" >&2
+  exit 1
+fi
+rc=0
+bash "$here/run.sh" "$here/example_corrected_euler.c" "$bin" --form bogus 2> "$tmp/err" || rc=$?
+[ "$rc" -eq 2 ] || { cat "$tmp/err"; echo "ci.sh: run.sh --form bogus exited $rc, not 2" >&2; exit 1; }
+echo "  run.sh --form: the recurrence passes declared recurrence, fails declared closed ($(grep -c ' FAIL: ' "$tmp/out") of 6), an unknown form exits 2"
 
 # 5. The kit's version, and kit 0.1.0's API through the deprecated exact_input.h.
 cc -O2 -std=c99 "${warn[@]}" -I"$here" -o "$tmp/version" "$here/tests/version.c" "$here/phong_kit.c" -lm

@@ -4,7 +4,7 @@
 # Tests your C shading code on phong-approx's published vectors.
 #
 #   harness/c/run.sh YOUR_SOURCE.c [CHECKER] [--method M] [--precision f32|f64]
-#                    [--specular] [-- CHECK_OPTIONS...]
+#                    [--form any|recurrence|closed] [--specular] [-- CHECK_OPTIONS...]
 #
 # YOUR_SOURCE.c holds your shading function and a main that calls pk_main
 # (harness/c/phong_kit.h; harness/c/example_corrected_euler.c is one). It is built
@@ -23,6 +23,9 @@
 #   --method M       the method your code implements (default corrected-euler)
 #   --precision P    f32 (default) or f64: the shading function pk_main runs, and
 #                    the checker's --precision
+#   --form F         the form your code computes, for the profile's bound (check
+#                    --form): any (default), recurrence or closed; a closed-form
+#                    euler or corrected-euler is judged by the closed form's own bound
 #   --specular       also check the specular part (pk_main --specular, check
 #                    --specular) on the sets that have specular cases
 #   -- OPTIONS       more options for `check`, e.g. `-- --profile reference`
@@ -35,11 +38,11 @@ set -euo pipefail
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
 usage() {
-  echo "usage: run.sh YOUR_SOURCE.c [CHECKER] [--method M] [--precision f32|f64] [--specular] [-- CHECK_OPTIONS...]"
+  echo "usage: run.sh YOUR_SOURCE.c [CHECKER] [--method M] [--precision f32|f64] [--form any|recurrence|closed] [--specular] [-- CHECK_OPTIONS...]"
 }
 bad() { echo "run.sh: $*" >&2; exit 2; }
 
-src= checker= method=corrected-euler precision=f32 specular=0
+src= checker= method=corrected-euler precision=f32 form=any specular=0
 check_extra=()
 while [ $# -gt 0 ]; do
   case $1 in
@@ -47,6 +50,8 @@ while [ $# -gt 0 ]; do
     --method=*) method=${1#*=}; shift ;;
     --precision) [ $# -ge 2 ] || bad "--precision needs f32 or f64"; precision=$2; shift 2 ;;
     --precision=*) precision=${1#*=}; shift ;;
+    --form) [ $# -ge 2 ] || bad "--form needs any, recurrence or closed"; form=$2; shift 2 ;;
+    --form=*) form=${1#*=}; shift ;;
     --specular) specular=1; shift ;;
     -h|--help) usage; exit 0 ;;
     --) shift; check_extra=("$@"); break ;;
@@ -61,6 +66,7 @@ while [ $# -gt 0 ]; do
 done
 [ -n "$src" ] || { usage >&2; exit 2; }
 case $precision in f32|f64) ;; *) bad "--precision takes f32 or f64, not $precision" ;; esac
+case $form in any|recurrence|closed) ;; *) bad "--form takes any, recurrence or closed, not $form" ;; esac
 [ -f "$src" ] || bad "no such source file: $src"
 [ -f "$here/phong_kit.c" ] && [ -f "$here/phong_kit.h" ] || bad "phong_kit.c and phong_kit.h are not next to run.sh ($here)"
 
@@ -139,7 +145,7 @@ check_one() {
   fi
   rc=0
   "$checker" check --vectors "$vectors/$set.json" --results "$tmp/r.csv" --method "$method" \
-    --precision "$precision" ${copts[@]+"${copts[@]}"} ${check_extra[@]+"${check_extra[@]}"} \
+    --precision "$precision" --form "$form" ${copts[@]+"${copts[@]}"} ${check_extra[@]+"${check_extra[@]}"} \
     > "$tmp/out" 2> "$tmp/err" || rc=$?
   if [ "$rc" -eq 0 ]; then
     printf '  %s pass: %s\n' "$label" "$(grep -m 1 '^overall: ' "$tmp/out" | sed 's/^overall: //')"

@@ -34,7 +34,8 @@ pub struct CheckArgs {
     #[arg(long, value_name = "TYPE", value_enum, default_value = "f32")]
     pub precision: Precision,
     /// The arithmetic profile the results are judged by (docs/float.md §18): ieee
-    /// (the default: IEEE f32/f64 with round to nearest, any order, FMA, reciprocals),
+    /// (the default: IEEE f32/f64 with round to nearest, any order within each dot
+    /// product and p_n's sum, FMA, reciprocals),
     /// shader (Vulkan/WGSL 32-bit rules: truncation, 2.5-ulp division, flushed
     /// denormals; f32), reference (this crate's own operation order, round to
     /// nearest, no FMA: the bounds of every method, angular and the related methods

@@ -94,6 +94,26 @@ fn hostile_library_arguments_give_errors_not_panics() {
     }
 }
 
+/// An exact request of two steps with `K_d = 1` and 30 digits, for the boundary test.
+fn exact_request(
+    method: phong_approx::Method,
+    na: &phong_approx::Vec3<BigRational>,
+    nb: &phong_approx::Vec3<BigRational>,
+    l: &phong_approx::Vec3<BigRational>,
+) -> phong_approx::span_report::Request {
+    phong_approx::span_report::Request {
+        method,
+        na: na.clone(),
+        nb: nb.clone(),
+        l: l.clone(),
+        n: 2,
+        kd: BigRational::from_integer(1.into()),
+        normalize: false,
+        digits: 30,
+        arithmetic: phong_approx::Arithmetic::Exact,
+    }
+}
+
 proptest::proptest! {
     #![proptest_config(proptest::prelude::ProptestConfig::with_cases(256))]
     /// No public constructor or validator panics on a value its type admits (debug
@@ -259,8 +279,8 @@ proptest::proptest! {
     /// reliability round: nothing decided at a working precision).
     #[test]
     fn values_planted_next_to_a_boundary_are_decided_exactly(k in 0u32..=255, above in proptest::bool::ANY) {
-        use phong_approx::span_report::{exact_run, Request};
-        use phong_approx::{Arithmetic, Method, Vec3};
+        use phong_approx::span_report::exact_run;
+        use phong_approx::{Method, Vec3};
         let tiny = BigRational::new(1.into(), BigInt::from(10).pow(80u32));
         let boundary = BigRational::new(k.into(), 255.into());
         let target = if above { boundary + tiny.clone() } else { boundary - tiny.clone() };
@@ -269,18 +289,7 @@ proptest::proptest! {
         let z = Vec3::new(BigRational::from_integer(0.into()), BigRational::from_integer(0.into()), BigRational::from_integer(1.into()));
         let want = level_by_integers(&n.z);
         for method in [Method::Gouraud, Method::CorrectedEuler, Method::Phong, Method::Duff, Method::Angular, Method::Adaptive] {
-            let r = Request {
-                method,
-                na: n.clone(),
-                nb: n.clone(),
-                l: z.clone(),
-                n: 2,
-                kd: BigRational::from_integer(1.into()),
-                normalize: false,
-                digits: 30,
-                arithmetic: Arithmetic::Exact,
-            };
-            let run = exact_run(&r).unwrap();
+            let run = exact_run(&exact_request(method, &n, &n, &z)).unwrap();
             proptest::prop_assert_eq!(&run.levels, &vec![Some(want); 3], "{} at k = {}, above = {}", method, k, above);
         }
         // Eq. 24's threshold: N_a = L = z, N_b = (x, 0, c), n = 2: δ = −(1 − c²)/8, so
@@ -295,17 +304,7 @@ proptest::proptest! {
         let nb = unit_with_z_near(&c);
         let delta255 = (BigRational::from_integer(1.into()) - nb.z.clone() * nb.z.clone()) * BigRational::new(255.into(), 8.into());
         let gouraud = delta255 < BigRational::from_integer(1.into());
-        let r = Request {
-            method: Method::Adaptive,
-            na: z.clone(),
-            nb,
-            l: z,
-            n: 2,
-            kd: BigRational::from_integer(1.into()),
-            normalize: false,
-            digits: 30,
-            arithmetic: Arithmetic::Exact,
-        };
+        let r = exact_request(Method::Adaptive, &z, &nb, &z);
         let run = exact_run(&r).unwrap();
         let d = phong_approx::span_report::span_report(&r).unwrap();
         let got = serde_json::to_value(&d).unwrap();

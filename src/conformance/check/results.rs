@@ -109,7 +109,11 @@ fn number_at(text: &str, line: usize, column: usize) -> Option<&str> {
     let end = column.min(l.len());
     let is_num = |c: char| c.is_ascii_digit() || matches!(c, '.' | 'e' | 'E' | '+' | '-');
     let head = l.get(..end)?;
-    let start = head.rfind(|c: char| !is_num(c)).map_or(0, |k| k + 1);
+    let start = head
+        .char_indices()
+        .rev()
+        .find(|&(_, c)| !is_num(c))
+        .map_or(0, |(k, c)| k + c.len_utf8());
     let end = l[start..]
         .find(|c: char| !is_num(c))
         .map_or(l.len(), |k| start + k);

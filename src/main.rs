@@ -5,6 +5,8 @@
 //! - `phong-approx compare`: every method of the paper and its related work, diffuse
 //!   and specular, in five precisions, with pictures (`docs/comparison.md`).
 //! - `phong-approx vectors` / `check`: the conformance kit.
+//! - `phong-approx setup`: each case's set-up rounded to fixed point, for a hardware
+//!   span unit (`harness/hdl/`).
 //! - `phong-approx gpu-check`: a compute kernel run on a GPU adapter and judged as
 //!   `check` judges results (feature `gpu`).
 //!
@@ -42,6 +44,9 @@ enum Command {
     /// Check an implementation's results against a vector file (exit 0 pass, 1 fail).
     #[command(allow_negative_numbers = true)]
     Check(cli::check::CheckArgs),
+    /// Print each case's set-up rounded to a fixed-point format M.F: the inputs of a
+    /// hardware span unit (harness/hdl, docs/conformance.md "Hardware span units").
+    Setup(cli::setup::SetupArgs),
     /// Run a compute kernel (WGSL, SPIR-V, GLSL) on a GPU adapter over every published
     /// case and judge it as `check` does (exit 0 pass, 1 fail); feature `gpu`.
     #[command(name = "gpu-check")]
@@ -90,6 +95,7 @@ fn main() -> ExitCode {
         Command::Compare(args) => cli::compare::run(&args),
         Command::Vectors(args) => cli::vectors::run(&args),
         Command::Check(args) => cli::check::run(&args),
+        Command::Setup(args) => cli::setup::run(&args),
         Command::GpuCheck(args) => cli::gpu::run(&args),
     };
     match result {

@@ -50,6 +50,7 @@ pub mod compare;
 pub mod gpu;
 pub mod output;
 pub mod reproduce;
+pub mod setup;
 pub mod span;
 pub mod torus;
 pub mod vectors;

@@ -249,7 +249,7 @@ fn adaptive_either(j: &Judging, got: &[f64], method: Method) -> Option<CaseRepor
     let [ma, mb] = method.picks()?;
     let c = j.c;
     let delta: f64 = c.delta.parse().ok()?;
-    // Only where the profile bounds the adaptive scheme at all (not fixed point).
+    // Only where the profile bounds the adaptive scheme at all.
     case_bound(j, method, false)?;
     let (ba, bb) = (case_bound(j, ma, false)?, case_bound(j, mb, false)?);
     let profile = match j.tol {
@@ -258,8 +258,17 @@ fn adaptive_either(j: &Judging, got: &[f64], method: Method) -> Option<CaseRepor
     };
     // The band's bounds (Gouraud's raised where the theorem needs it); each method's
     // values are judged by its own bound, which every run of the class meets.
-    let (band_a, band_b, u) = crate::tolerance::profile::adaptive_band(profile, j.format, ba, bb);
-    if !crate::tolerance::adaptive_too_close(delta, 1.0, band_a, band_b, u) {
+    let close = if let crate::tolerance::profile::Profile::Fixed { frac_bits, .. } = profile {
+        // The unit's δ̂ is exact integer arithmetic on the rounded set-up: off by at
+        // most e_δ (`fixed_point_adaptive_delta_error`); 10^-14 covers reading δ.
+        let e = crate::tolerance::profile::fixed_adaptive_band(c.n, frac_bits);
+        ((255.0 * delta).abs() - 1.0).abs() <= 255.0 * e * (1.0 + 2f64.powi(-40)) + 1e-14
+    } else {
+        let (band_a, band_b, u) =
+            crate::tolerance::profile::adaptive_band(profile, j.format, ba, bb);
+        crate::tolerance::adaptive_too_close(delta, 1.0, band_a, band_b, u)
+    };
+    if !close {
         return None;
     }
     let mut best: Option<CaseReport> = None;

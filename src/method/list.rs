@@ -57,8 +57,9 @@ const ANGLE: Bound = Bound::Angle {
     table: None,
 };
 // Beyond the reference profile (`method/profiles.rs`).
-const NO_FIXED: FixedBound =
-    FixedBound::None("proofs/Fixed.v proves Gouraud's and corrected Euler's loops only");
+const NO_FIXED: FixedBound = FixedBound::None(
+    "proofs/Fixed.v and FixedUnits.v prove the loops of Gouraud, Euler, corrected Euler, the adaptive choice and Duff's unit only",
+);
 const fn composed(
     theorems: &'static [&'static str],
     section: &'static str,
@@ -76,8 +77,12 @@ const fn composed(
 }
 const COMPOSED_PER_PIXEL: ProfileBounds =
     composed(PHONG_THEOREMS, "docs/float.md §18.4", DerivedForm::PerPixel);
-const COMPOSED_RATIO: ProfileBounds =
-    composed(DUFF_THEOREMS, "docs/float.md §18.5", DerivedForm::Ratio);
+const COMPOSED_RATIO: ProfileBounds = ProfileBounds {
+    fixed: FixedBound::Ratio {
+        theorem: "fixed_point_duff_unit_error",
+    },
+    ..composed(DUFF_THEOREMS, "docs/float.md §18.5", DerivedForm::Ratio)
+};
 const COMPOSED_HALF_RATIO: ProfileBounds = composed(
     SYMMETRIC_PHONG_THEOREMS,
     "docs/float.md §18.5",
@@ -85,11 +90,16 @@ const COMPOSED_HALF_RATIO: ProfileBounds = composed(
 );
 // The larger of the two proved bounds, against the exact run of the method the
 // implementation chose (docs/float.md §10, §18.5).
-const ADAPTIVE_PROFILES: ProfileBounds = composed(
-    ADAPTIVE_THEOREMS,
-    "docs/float.md §10",
-    DerivedForm::LargerOfPicks,
-);
+const ADAPTIVE_PROFILES: ProfileBounds = ProfileBounds {
+    fixed: FixedBound::Picks {
+        theorem: "fixed_point_adaptive_decision",
+    },
+    ..composed(
+        ADAPTIVE_THEOREMS,
+        "docs/float.md §10",
+        DerivedForm::LargerOfPicks,
+    )
+};
 const GOURAUD_PROFILES: ProfileBounds = ProfileBounds {
     reference: Some(["float_gouraud_binary32", "float_gouraud_binary64"]),
     float: FloatBound::Proved(GOURAUD_THEOREMS),
@@ -116,7 +126,15 @@ const CORRECTED_EULER_PROFILES: ProfileBounds = ProfileBounds {
 const EULER_PROFILES: ProfileBounds = ProfileBounds {
     reference: None,
     float: FloatBound::Proved(EULER_THEOREMS),
-    fixed: NO_FIXED,
+    // |di_a|, |di_b| ≤ |A| + |p·D/2| ≤ 2/n + 2/n, so every slope up to the one after
+    // the last pixel is within 4/n + 8/n ≤ 12/n, and |p_i| ≤ 1 + n·4/n = 5
+    // (docs/float.md §14).
+    fixed: FixedBound::Proved {
+        theorem: "fixed_point_euler_error",
+        second_order: true,
+        value_max: 5.0,
+        slope_times_n: 12.0,
+    },
 };
 const ANGLE_PROFILES: ProfileBounds = ProfileBounds {
     reference: None,

@@ -177,39 +177,81 @@ impl FromStr for Profile {
     }
 }
 
-/// The bound of `method` (Gouraud or corrected Euler) computed in fixed point
-/// `Q int_bits.frac_bits` on a span of `n` steps (`proofs/Fixed.v`: with every set-up
-/// value rounded once, `|e| ≤ h = 2^-(f+1)`, pixel `i` is off by at most
-/// `h(1 + i + i(i−1)/2)` for corrected Euler and `h(1 + i)` for Gouraud, largest at
-/// `i = n`), or `None` for another method, or when the registers may overflow: the
-/// values reach `|p_i| ≤ 2.5` for corrected Euler (1 for Gouraud) plus the bound, and
-/// the slope `|t_i| ≤ 28/n` (`|dp| ≤ 2/n`) plus `h(1 + n)`, and `m` integer bits hold
-/// magnitudes below `2^(m−1)` (`docs/float.md` §14).
-pub fn fixed_bound(method: crate::Method, n: u32, int_bits: u32, frac_bits: u32) -> Option<f64> {
+/// The bound of `method` computed in fixed point `Q int_bits.frac_bits` on a span of
+/// `n` steps whose smallest `q` is `q_min` (only Duff's reads it), as a span unit of
+/// `harness/hdl/` runs it: every set-up value rounded once to nearest, so off by at
+/// most `h = 2^-(f+1)`, then exact integer loops (`proofs/Fixed.v`,
+/// `proofs/FixedUnits.v`; largest at `i = n`):
+/// - Gouraud `h(1 + n)`; Euler and corrected Euler `h(1 + n + n(n−1)/2)`;
+/// - the adaptive choice: the larger of Gouraud's and corrected Euler's (each run is
+///   judged against the exact run of the method it picked; [`fixed_adaptive_band`]);
+/// - Duff's unit (a truncated square root and divider per pixel):
+///   `(E_p + E_q/(2r) + 2h)/(r − 2h) + 2h` with `E_p = h(1 + n)`,
+///   `E_q = h(1 + n + n(n−1)/2)`, `r = √(q_min − E_q)`, where `r > 2h`.
+///
+/// `None` for another method, where Duff's `r ≤ 2h`, or when the registers may
+/// overflow: `m` integer bits hold magnitudes below `2^(m−1)`, and the values reach
+/// the row's `value_max` (2.5 for corrected Euler, 5 for Euler, 1 for Gouraud and
+/// Duff's `p` and `q`) plus the bound, the slopes its `slope_times_n / n` (Duff's `dq`:
+/// `16/n`) plus `h(1 + n)` (`docs/float.md` §14). Rounded up.
+pub fn fixed_bound(
+    method: crate::Method,
+    n: u32,
+    q_min: f64,
+    int_bits: u32,
+    frac_bits: u32,
+) -> Option<f64> {
     use crate::method::FixedBound;
     if n == 0 || !(1..=64).contains(&int_bits) || !(1..=MAX_FRAC_BITS).contains(&frac_bits) {
         return None;
     }
     let h = 2f64.powi(-(frac_bits as i32) - 1);
     let nf = f64::from(n);
-    // The catalogue row says what `Fixed.v` proves of the method.
-    let FixedBound::Proved {
-        second_order,
-        value_max,
-        slope_times_n,
-        ..
-    } = method.info().profiles.fixed
-    else {
-        return None;
-    };
-    let bound = if second_order {
-        h * (1.0 + nf + nf * (nf - 1.0) / 2.0)
-    } else {
-        h * (1.0 + nf)
-    };
-    let needed = (value_max + bound).max(slope_times_n / nf + h * (1.0 + nf));
-    // The f64 arithmetic above rounds: a relative 2^-40 covers it.
-    (needed < 2f64.powi(int_bits as i32 - 1)).then_some(bound * (1.0 + 2f64.powi(-40)))
+    // Exact in f64 for n < 2^24: h is a power of two, the factors whole numbers.
+    let (e_first, e_second) = (h * (1.0 + nf), h * (1.0 + nf + nf * (nf - 1.0) / 2.0));
+    let fits = |needed: f64| needed < 2f64.powi(int_bits as i32 - 1);
+    // The f64 arithmetic below rounds: a relative 2^-40 covers it.
+    let up = |b: f64| b * (1.0 + 2f64.powi(-40));
+    // The catalogue row says what the theorems prove of the method.
+    match method.info().profiles.fixed {
+        FixedBound::Proved {
+            second_order,
+            value_max,
+            slope_times_n,
+            ..
+        } => {
+            let bound = if second_order { e_second } else { e_first };
+            fits((value_max + bound).max(slope_times_n / nf + e_first)).then(|| up(bound))
+        }
+        FixedBound::Picks { .. } => method.picks()?.iter().try_fold(0f64, |b, &m| {
+            Some(b.max(fixed_bound(m, n, q_min, int_bits, frac_bits)?))
+        }),
+        FixedBound::Ratio { .. } => {
+            // r rounded down: q_min − E_q and its root each lowered past their rounding.
+            let gap = (q_min - e_second) - q_min.abs() * 2f64.powi(-52);
+            if !(gap > 0.0) {
+                return None;
+            }
+            let r = gap.sqrt() * (1.0 - 2f64.powi(-50));
+            let den = (r - 2.0 * h) - r * 2f64.powi(-52);
+            if !(den > 0.0) {
+                return None;
+            }
+            let bound = up((e_first + e_second / (2.0 * r) + 2.0 * h) / den + 2.0 * h);
+            let needed = (1.0 + e_second).max(16.0 / nf + e_first).max(1.0 + bound);
+            (bound.is_finite() && fits(needed)).then_some(bound)
+        }
+        FixedBound::None(_) => None,
+    }
+}
+
+/// What the adaptive unit's `δ̂` may be off by: `h(2k + k(k − 1)/2)`, `k = ⌈n/2⌉`,
+/// `h = 2^-(f+1)` (`fixed_point_adaptive_delta_error`, `proofs/FixedUnits.v`). Where
+/// `|255·|δ| − 1| ≤ 255·e_δ` the unit may pick either method
+/// (`fixed_point_adaptive_decision`); exact in `f64` for `n < 2^24`.
+pub fn fixed_adaptive_band(n: u32, frac_bits: u32) -> f64 {
+    let k = f64::from(n.div_ceil(2));
+    2f64.powi(-(frac_bits.min(MAX_FRAC_BITS) as i32) - 1) * (2.0 * k + k * (k - 1.0) / 2.0)
 }
 
 pub use crate::method::Proved;
@@ -288,13 +330,10 @@ impl Status {
 /// no profile bounds, and the related methods, whose bounds follow this crate's own
 /// evaluation, have none).
 pub fn status(method: crate::Method, profile: Profile, format: Format) -> Option<Status> {
-    use crate::method::{DerivedForm, FixedBound, FloatBound};
+    use crate::method::{DerivedForm, FloatBound};
     let row = method.info().profiles;
     if let Profile::Fixed { .. } = profile {
-        return match row.fixed {
-            FixedBound::Proved { theorem, .. } => Some(Status::Proved(theorem)),
-            FixedBound::None(_) => None,
-        };
+        return row.fixed.theorem().map(Status::Proved);
     }
     // A derivation, where the profile has a standard model in this format.
     let derived = |section| arith(profile, format).map(|_| Status::Derived(section));
@@ -405,7 +444,7 @@ fn bound_with(
     {
         // `Fixed.v` proves the loops: an exact integer recurrence.
         return (form != Form::Closed)
-            .then(|| fixed_bound(method, n, int_bits, frac_bits))
+            .then(|| fixed_bound(method, n, q_min, int_bits, frac_bits))
             .flatten();
     }
     use crate::method::{DerivedForm, FloatBound};

@@ -202,6 +202,16 @@ Check fixed_point_gouraud_error.
 Print Assumptions fixed_point_gouraud_error.
 Check fixed_point_half_level_bits.
 Print Assumptions fixed_point_half_level_bits.
+Check fixed_point_euler_error.
+Print Assumptions fixed_point_euler_error.
+Check fixed_point_adaptive_delta_error.
+Print Assumptions fixed_point_adaptive_delta_error.
+Check fixed_point_adaptive_decision.
+Print Assumptions fixed_point_adaptive_decision.
+Check fixed_point_duff_error.
+Print Assumptions fixed_point_duff_error.
+Check fixed_point_duff_unit_error.
+Print Assumptions fixed_point_duff_unit_error.
 
 (** Profiles.v *)
 Check profile_ieee_gouraud_binary32.

@@ -125,7 +125,8 @@ impl FixedSpan {
     }
 
     /// Plain Euler, `p += s; s += ds` from `s_0 = di_a` (eqs. 12–13), in exact integer
-    /// additions: the raw values of pixels `0..=n`.
+    /// additions: the raw values of pixels `0..=n`, within `h(1 + i + i(i − 1)/2)` of the
+    /// exact run (`fixed_point_euler_error`, proofs/Fixed.v).
     pub fn euler(&self) -> Vec<i64> {
         second_order(self.p_a, self.di_a, self.ds, self.n)
     }
@@ -134,7 +135,7 @@ impl FixedSpan {
     /// `k = ⌈n/2⌉` (eq. 23's step) and `T = k(k − 1)/2`,
     /// `δ̂ = k·dp − k·t_0 − T·ds` (raw), and Gouraud exactly when `255·|δ̂| < 2^f`
     /// (`K_d = 1`). `δ̂` is within `h(2k + T)` of the exact `δ`
-    /// (`fixed_point_adaptive_delta_error`, proofs/FixedUnits.v), so the choice is the
+    /// (`fixed_point_adaptive_delta_error`, proofs/Fixed.v), so the choice is the
     /// exact test's outside that band (`fixed_point_adaptive_decision`).
     pub fn adaptive_choice(&self) -> crate::adaptive::Choice {
         let k = i128::from(self.n.div_ceil(2));
@@ -159,7 +160,10 @@ impl FixedSpan {
     /// `dq += 2C` in exact integer additions, then per pixel the truncated square root
     /// `s = ⌊√(q·2^f)⌋` (raw; a value in `(√q̂ − 2^-f, √q̂]`) and the quotient
     /// `p·2^f / s` truncated toward zero (within `2^-f` of `p̂/ŝ`); `0` where `q ≤ 0`
-    /// or `s = 0`, spans no bound covers (`fixed_point_duff_unit_error`).
+    /// or `s = 0`, spans no bound covers. Within
+    /// `(E_p + E_q/(2r) + 2h)/(r − 2h) + 2h` of `p/√q`, `r = √(q_min − E_q)`: the value
+    /// step `fixed_point_duff_error` composed with the loops,
+    /// `fixed_point_duff_unit_error` (proofs/Fixed.v).
     pub fn duff(&self) -> Vec<i64> {
         let f = self.frac_bits;
         let (mut p, mut q, mut dq) = (self.b, self.q0, self.dq0);

@@ -300,4 +300,253 @@ mod fixed {
             .fold(0.0, f64::max);
         assert!(worst > 1.0 / 510.0, "worst binary16 error {worst}");
     }
+
+    /// `|fixed − exact|` at every pixel, as `f64` (the errors here are far above
+    /// `f64`'s rounding of an exact rational).
+    fn abs_errors(f: &FixedSpan, raw: &[i64], exact: &[Q]) -> Vec<f64> {
+        raw.iter()
+            .zip(exact)
+            .map(|(&r, e)| (f.value(r) - e.clone()).to_f64().abs())
+            .collect()
+    }
+
+    /// Plain Euler's loop: the same bound as corrected Euler's, and the registers'
+    /// reach of the catalogue row (`|p_i| ≤ 5`, `|s_i|·n ≤ 12`, docs/float.md §14).
+    #[test]
+    fn fixed_point_euler_error() {
+        for (c, s) in spans() {
+            let exact = Method::Euler.values(&s).unwrap();
+            let n = Q::from_integer(s.n.into());
+            let mut slope = s.di_a.clone();
+            for e in exact.iter() {
+                assert!(e.to_f64().abs() <= 5.0, "value {e}: {c:?}");
+                assert!((slope.clone() * n.clone()).to_f64().abs() <= 12.0, "{c:?}");
+                slope = slope + s.ds.clone();
+            }
+            for bits in [8, 16, 24, 32] {
+                let f = FixedSpan::new(&s, bits).unwrap();
+                for (i, e) in abs_errors(&f, &f.euler(), &exact).iter().enumerate() {
+                    let b = corrected_euler_bound(i as u32, bits);
+                    assert!(*e <= b, "f = {bits}, pixel {i}: {e} > {b}: {c:?}");
+                }
+            }
+        }
+    }
+
+    /// The unit's `δ̂ = k·dp − k·t_0 − T·ds` on the rounded set-up is within
+    /// `h(2k + T)` of eq. 24's exact `δ`.
+    #[test]
+    fn fixed_point_adaptive_delta_error() {
+        use phong_approx::tolerance::profile::fixed_adaptive_band;
+        for (c, s) in spans() {
+            let exact = phong_approx::adaptive::decide(&s, &Q::from_integer(1.into())).delta;
+            for bits in [8, 16, 24, 32] {
+                let f = FixedSpan::new(&s, bits).unwrap();
+                let k = i128::from(s.n.div_ceil(2));
+                let raw = k * i128::from(f.dp) - k * i128::from(f.t0)
+                    - k * (k - 1) / 2 * i128::from(f.ds);
+                let got = Q::new(raw.into(), num_bigint::BigInt::from(1) << bits);
+                let e = (got - exact.clone()).to_f64().abs();
+                let band = fixed_adaptive_band(s.n, bits);
+                assert!(e <= band, "f = {bits}: {e} > {band}: {c:?}");
+            }
+        }
+    }
+
+    /// Outside the band `|255·|δ| − 1| ≤ 255·e_δ` the unit picks what the exact test
+    /// picks; its run is then that method's loop.
+    #[test]
+    fn fixed_point_adaptive_decision() {
+        use phong_approx::adaptive::{decide, Choice};
+        use phong_approx::tolerance::profile::fixed_adaptive_band;
+        let (mut outside, mut inside) = (0, 0);
+        for (c, s) in spans() {
+            let d = decide(&s, &Q::from_integer(1.into()));
+            let x = (d.delta.to_f64() * 255.0).abs();
+            for bits in [8, 12, 16, 24] {
+                let f = FixedSpan::new(&s, bits).unwrap();
+                let pick = f.adaptive_choice();
+                let run = match pick {
+                    Choice::Gouraud => f.gouraud(),
+                    Choice::CorrectedEuler => f.corrected_euler(),
+                };
+                assert_eq!(f.adaptive(), run);
+                if (x - 1.0).abs() > 255.0 * fixed_adaptive_band(s.n, bits) + 1e-12 {
+                    outside += 1;
+                    assert_eq!(pick, d.choice, "f = {bits}, |255δ| = {x}: {c:?}");
+                } else {
+                    inside += 1;
+                }
+            }
+        }
+        assert!(outside > 100 && inside > 0, "{outside} outside, {inside} inside");
+    }
+
+    /// The value step alone: any `p̂`, `q̂` within `E_p`, `E_q` of `p`, `q`
+    /// (`|p| ≤ √q`, `q ≥ q_min`), a root `ŝ ∈ (√q̂ − 2h, √q̂]` and a quotient within
+    /// `2h` of `p̂/ŝ` — the extremes of each taken — stay within the bound.
+    #[test]
+    fn fixed_point_duff_error() {
+        let mut runner = TestRunner::deterministic();
+        let unit = proptest::num::f64::POSITIVE | proptest::num::f64::NORMAL;
+        let mut tried = 0;
+        for _ in 0..2000 {
+            let mut draw = || unit.new_tree(&mut runner).unwrap().current() % 1.0;
+            let (q_min, h) = (draw().max(1e-3), 2f64.powi(-10 - (draw() * 30.0) as i32));
+            let (ep, eq) = (h * (1.0 + draw() * 100.0), h * (1.0 + draw() * 100.0));
+            if q_min <= eq || (q_min - eq).sqrt() <= 2.0 * h * (1.0 + 1e-9) {
+                continue;
+            }
+            tried += 1;
+            let r = (q_min - eq).sqrt();
+            let bound = (ep + eq / (2.0 * r) + 2.0 * h) / (r - 2.0 * h) + 2.0 * h;
+            let q = q_min + draw() * (1.0 - q_min);
+            let p = q.sqrt() * (2.0 * draw() - 1.0);
+            for (sp, sq, ss, sv) in [(1.0, -1.0, 1.0, 1.0), (-1.0, 1.0, 0.0, -1.0), (1.0, 1.0, 1.0, 1.0)] {
+                let (ph, qh) = (p + sp * ep, q + sq * eq);
+                let sh = qh.sqrt() - ss * 2.0 * h * (1.0 - 1e-9);
+                let vh = ph / sh + sv * 2.0 * h;
+                let err = (vh - p / q.sqrt()).abs();
+                assert!(err <= bound * (1.0 + 1e-9), "{err} > {bound}: p {p}, q {q}, h {h}");
+            }
+        }
+        assert!(tried > 1000, "{tried} cases");
+    }
+
+    /// Duff's unit — the loops of `p` and `q`, then the truncated square root and
+    /// divider — within `(E_p + E_q/(2r) + 2h)/(r − 2h) + 2h` of `p/√q` at every pixel,
+    /// `r = √(q_min − E_q)`, wherever that is defined (`fixed_bound`). The exact value
+    /// is taken in `f64` from the exact `p` and `q` (within 2^-50, far below any bound
+    /// here, which is at least 2^-33).
+    #[test]
+    fn fixed_point_duff_unit_error() {
+        use phong_approx::tolerance::profile::fixed_bound;
+        let mut bounded = 0;
+        for (c, s) in spans() {
+            let q_min = s.q_min().to_f64() * (1.0 - 1e-15);
+            let exact: Vec<f64> = (0..=s.n)
+                .map(|i| {
+                    let i = Q::from_integer(i.into());
+                    let p = s.a.clone() * i.clone() + s.b.clone();
+                    let q = (s.c.clone() * i.clone() + s.d.clone()) * i + s.e.clone();
+                    p.to_f64() / q.to_f64().sqrt()
+                })
+                .collect();
+            for bits in [16, 24, 32] {
+                let Some(b) = fixed_bound(Method::Duff, s.n, q_min, 64, bits) else {
+                    continue;
+                };
+                bounded += 1;
+                let f = FixedSpan::new(&s, bits).unwrap();
+                for (i, (&r, e)) in f.duff().iter().zip(&exact).enumerate() {
+                    let got = r as f64 * 2f64.powi(-(bits as i32));
+                    let err = (got - e).abs();
+                    assert!(err <= b, "f = {bits}, pixel {i}: {err} > {b}: {c:?}");
+                }
+            }
+        }
+        assert!(bounded > 500, "{bounded} spans bounded");
+    }
+
+    /// The hardware units' twins (bit for bit the units of harness/hdl/) pass
+    /// `check --profile fixed:M.F` on every published set; planted bugs fail on at
+    /// least one: ε/(n+1) for ε/n, a set-up truncated to F bits where the theorem
+    /// rounds to nearest, one pixel too few, and Duff's first difference D for C + D.
+    #[test]
+    fn hardware_twins_pass_their_fixed_bounds_and_bugs_fail() {
+        use phong_approx::conformance::check::{check, Tolerance};
+        use phong_approx::conformance::integrity::case_span;
+        use phong_approx::conformance::vectors::method_key;
+        use phong_approx::testkit::published;
+        use phong_approx::tolerance::profile::{Form, Profile};
+        type Run = fn(&FixedSpan, &phong_approx::Span<Q>) -> Vec<i64>;
+        let verdict = |set: &str, method: Method, f: u32, run: Run| -> usize {
+            let file = published(set).unwrap();
+            let mut results = std::collections::HashMap::new();
+            for c in &file.cases {
+                let s = case_span(c).unwrap();
+                let fs = FixedSpan::new(&s, f).unwrap();
+                let v = run(&fs, &s);
+                let v = v.iter().map(|&r| r as f64 * 2f64.powi(-(f as i32)));
+                results.insert(c.id.clone(), v.collect());
+            }
+            let tol = Tolerance::Profile {
+                profile: Profile::Fixed {
+                    int_bits: 8,
+                    frac_bits: f,
+                },
+                format: phong_approx::Format::Binary64,
+                form: Form::Any,
+            };
+            let key = method_key(method);
+            let r = check(file, &results, method, &key, tol, false).unwrap();
+            r.iter().filter(|c| !c.pass).count()
+        };
+        let good: [(Method, Run); 5] = [
+            (Method::Gouraud, |f, _| f.gouraud()),
+            (Method::Euler, |f, _| f.euler()),
+            (Method::CorrectedEuler, |f, _| f.corrected_euler()),
+            (Method::Adaptive, |f, _| f.adaptive()),
+            (Method::Duff, |f, _| f.duff()),
+        ];
+        for set in ["typical", "edge", "paper"] {
+            for (m, run) in good {
+                assert_eq!(verdict(set, m, 40, run), 0, "{m} on {set}");
+            }
+        }
+        // ε/(n+1): t_0 = di_a − ε/(n + 1), rounded as the unit's host would.
+        let eps_n1: Run = |f, s| {
+            let n1 = Q::from_integer((s.n + 1).into());
+            let t0 = s.di_a.clone() - s.eps.clone() / n1;
+            let raw = (t0 * Q::from_integer(num_bigint::BigInt::from(1) << f.frac_bits))
+                .round()
+                .to_integer();
+            let g = FixedSpan {
+                t0: i64::try_from(raw).unwrap(),
+                ..*f
+            };
+            g.corrected_euler()
+        };
+        // The set-up rounded to F + 8 bits, then truncated to F.
+        let truncated: Run = |f, s| {
+            let fine = FixedSpan::new(s, f.frac_bits + 8).unwrap();
+            let t = |x: i64| x >> 8;
+            let g = FixedSpan {
+                p_a: t(fine.p_a),
+                t0: t(fine.t0),
+                ds: t(fine.ds),
+                ..*f
+            };
+            g.corrected_euler()
+        };
+        let short: Run = |f, _| {
+            let mut v = f.corrected_euler();
+            v.pop();
+            v
+        };
+        // Duff's first difference D for C + D (eq. 7).
+        let first_difference: Run = |f, s| {
+            let raw = (s.d.clone() * Q::from_integer(num_bigint::BigInt::from(1) << f.frac_bits))
+                .round()
+                .to_integer();
+            let g = FixedSpan {
+                dq0: i64::try_from(raw).unwrap(),
+                ..*f
+            };
+            g.duff()
+        };
+        let bugs: [(&str, Method, u32, Run); 4] = [
+            ("eps/(n+1)", Method::CorrectedEuler, 24, eps_n1),
+            ("truncated set-up", Method::CorrectedEuler, 24, truncated),
+            ("one pixel too few", Method::CorrectedEuler, 40, short),
+            ("D for C + D", Method::Duff, 40, first_difference),
+        ];
+        for (what, m, f, run) in bugs {
+            let failed: usize = ["typical", "edge", "paper"]
+                .iter()
+                .map(|set| verdict(set, m, f, run))
+                .sum();
+            assert!(failed > 0, "{what}: every published set passes");
+        }
+    }
 }

@@ -36,16 +36,27 @@ fn names_round_trip() {
 #[test]
 fn fixed_bounds_are_the_theorems_and_need_their_registers() {
     // h(1 + n + n(n−1)/2), h = 2^-17: at n = 4, 11·2^-17.
-    let b = fixed_bound(Method::CorrectedEuler, 4, 16, 16).unwrap();
+    let b = fixed_bound(Method::CorrectedEuler, 4, 1.0, 16, 16).unwrap();
     assert!((b / 2f64.powi(-17) - 11.0).abs() < 1e-9);
-    let g = fixed_bound(Method::Gouraud, 4, 16, 16).unwrap();
+    let g = fixed_bound(Method::Gouraud, 4, 1.0, 16, 16).unwrap();
     assert!((g / 2f64.powi(-17) - 5.0).abs() < 1e-9);
     // Q3.f holds corrected Euler's values (|p| ≤ 2.5 < 4) but not its slope at
     // n = 1 (|t| ≤ 28); from n = 12 the slope is below 2.5 too.
-    assert!(fixed_bound(Method::CorrectedEuler, 1, 3, 16).is_none());
-    assert!(fixed_bound(Method::CorrectedEuler, 1, 6, 16).is_some());
-    assert!(fixed_bound(Method::CorrectedEuler, 12, 3, 16).is_some());
-    assert!(fixed_bound(Method::Phong, 4, 16, 16).is_none());
+    assert!(fixed_bound(Method::CorrectedEuler, 1, 1.0, 3, 16).is_none());
+    assert!(fixed_bound(Method::CorrectedEuler, 1, 1.0, 6, 16).is_some());
+    assert!(fixed_bound(Method::CorrectedEuler, 12, 1.0, 3, 16).is_some());
+    assert!(fixed_bound(Method::Phong, 4, 1.0, 16, 16).is_none());
+    // Euler as corrected Euler (|p| ≤ 5 needs Q4.f); the adaptive choice the larger of
+    // its picks'; Duff's unit needs r = √(q_min − E_q) > 2h and reads q_min.
+    let e = fixed_bound(Method::Euler, 4, 1.0, 16, 16).unwrap();
+    assert!((e / 2f64.powi(-17) - 11.0).abs() < 1e-9);
+    assert!(fixed_bound(Method::Euler, 12, 1.0, 3, 16).is_none());
+    assert_eq!(fixed_bound(Method::Adaptive, 4, 1.0, 16, 16), Some(b));
+    // n = 1: E_p = E_q = 2h = 2^-16, r = √(1 − 2^-16); the bound ≈ 2^-16·2.5 + 2^-16.
+    let d = fixed_bound(Method::Duff, 1, 1.0, 16, 16).unwrap();
+    assert!((d / 2f64.powi(-16) - 3.5).abs() < 1e-3, "{d}");
+    assert!(fixed_bound(Method::Duff, 1, 1.0, 16, 16).unwrap() < fixed_bound(Method::Duff, 1, 0.5, 16, 16).unwrap());
+    assert!(fixed_bound(Method::Duff, 4096, 1e-3, 16, 16).is_none());
 }
 
 #[test]

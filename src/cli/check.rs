@@ -101,6 +101,7 @@ pub(crate) fn advice(u: &Unbounded) -> Option<&'static str> {
             Some("--profile reference judges this crate's own evaluation; or pass --tolerance")
         }
         Unbounded::FixedOverflow { .. } => Some("more integer bits, or pass --tolerance"),
+        Unbounded::FixedQMin { .. } => Some("more fractional bits, or pass --tolerance"),
         Unbounded::SpecularNotModelled { .. }
         | Unbounded::OutOfRange { .. }
         | Unbounded::NoDerivedBound => Some("pass --tolerance"),

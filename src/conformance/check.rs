@@ -289,6 +289,22 @@ fn adaptive_either(j: &Judging, got: &[f64], method: Method) -> Option<CaseRepor
     best
 }
 
+/// The fractional bits of a fixed-point profile whose Duff bound fails on the case
+/// for its `q_min` alone (with registers as wide as any: `fixed_bound`'s `r ≤ 2h`).
+fn duff_q_min_too_small(j: &Judging, method: Method) -> Option<u32> {
+    let Tolerance::Profile {
+        profile: crate::tolerance::profile::Profile::Fixed { frac_bits, .. },
+        ..
+    } = j.tol
+    else {
+        return None;
+    };
+    let q_min = j.shape?.q_min;
+    (method == Method::Duff
+        && crate::tolerance::profile::fixed_bound(method, j.c.n, q_min, 64, frac_bits).is_none())
+    .then_some(frac_bits)
+}
+
 /// Whether the result `g` is farther than the bound `b` from the expected value
 /// (`e`, its decimal `ev` of 30 significant digits), decided so that the verdict never
 /// rests on `f64` rounding: the bound, evaluated in `f64` in at most a few dozen
@@ -466,6 +482,11 @@ fn case_report(
                 }
             } else if form == Form::Closed && matches!(profile, Profile::Fixed { .. }) {
                 Unbounded::FixedClosedForm { profile: p }
+            } else if let Some(frac_bits) = duff_q_min_too_small(j, method) {
+                Unbounded::FixedQMin {
+                    profile: p,
+                    frac_bits,
+                }
             } else if let Profile::Fixed { int_bits, .. } = profile {
                 Unbounded::FixedOverflow {
                     profile: p,

@@ -58,7 +58,7 @@ const ANGLE: Bound = Bound::Angle {
 };
 // Beyond the reference profile (`method/profiles.rs`).
 const NO_FIXED: FixedBound = FixedBound::None(
-    "proofs/Fixed.v and FixedUnits.v prove the loops of Gouraud, Euler, corrected Euler, the adaptive choice and Duff's unit only",
+    "proofs/Fixed.v proves the loops of Gouraud, Euler, corrected Euler, the adaptive choice and Duff's unit only",
 );
 const fn composed(
     theorems: &'static [&'static str],

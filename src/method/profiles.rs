@@ -77,14 +77,14 @@ pub enum FixedBound {
         /// The largest `|slope|` times `n`.
         slope_times_n: f64,
     },
-    /// Duff's unit (`proofs/FixedUnits.v`): `p` and `q` by the loops above, then a
+    /// Duff's unit (`proofs/Fixed.v`): `p` and `q` by the loops above, then a
     /// square root and a divider each truncated to within one unit of the last place;
     /// the bound needs the span's `q_min` (`tolerance::profile::fixed_bound`).
     Ratio {
         /// The theorem.
         theorem: &'static str,
     },
-    /// The adaptive choice (`proofs/FixedUnits.v`): eq. 24's test in exact integers on
+    /// The adaptive choice (`proofs/Fixed.v`): eq. 24's test in exact integers on
     /// the rounded set-up, then the loop of the method it picks, judged by that
     /// method's bound; either pick passes where the rounded `δ` may fall on either side.
     Picks {

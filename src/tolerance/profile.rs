@@ -181,7 +181,7 @@ impl FromStr for Profile {
 /// `n` steps whose smallest `q` is `q_min` (only Duff's reads it), as a span unit of
 /// `harness/hdl/` runs it: every set-up value rounded once to nearest, so off by at
 /// most `h = 2^-(f+1)`, then exact integer loops (`proofs/Fixed.v`,
-/// `proofs/FixedUnits.v`; largest at `i = n`):
+/// `proofs/Fixed.v`; largest at `i = n`):
 /// - Gouraud `h(1 + n)`; Euler and corrected Euler `h(1 + n + n(n−1)/2)`;
 /// - the adaptive choice: the larger of Gouraud's and corrected Euler's (each run is
 ///   judged against the exact run of the method it picked; [`fixed_adaptive_band`]);
@@ -246,7 +246,7 @@ pub fn fixed_bound(
 }
 
 /// What the adaptive unit's `δ̂` may be off by: `h(2k + k(k − 1)/2)`, `k = ⌈n/2⌉`,
-/// `h = 2^-(f+1)` (`fixed_point_adaptive_delta_error`, `proofs/FixedUnits.v`). Where
+/// `h = 2^-(f+1)` (`fixed_point_adaptive_delta_error`, `proofs/Fixed.v`). Where
 /// `|255·|δ| − 1| ≤ 255·e_δ` the unit may pick either method
 /// (`fixed_point_adaptive_decision`); exact in `f64` for `n < 2^24`.
 pub fn fixed_adaptive_band(n: u32, frac_bits: u32) -> f64 {

@@ -67,8 +67,8 @@ fn hostile_library_arguments_give_errors_not_panics() {
     use phong_approx::testkit::Suite;
     use phong_approx::tolerance::profile::{fixed_bound, Profile};
     use phong_approx::{Method, Span, Vec3};
-    assert_eq!(fixed_bound(Method::Gouraud, 4, 64, 1 << 31), None);
-    assert_eq!(fixed_bound(Method::Gouraud, 4, 1 << 31, 16), None);
+    assert_eq!(fixed_bound(Method::Gouraud, 4, 1.0, 64, 1 << 31), None);
+    assert_eq!(fixed_bound(Method::Gouraud, 4, 1.0, 1 << 31, 16), None);
     assert!(Profile::Fixed {
         int_bits: 64,
         frac_bits: 1 << 31
@@ -134,8 +134,8 @@ proptest::proptest! {
         use phong_approx::Method;
         let p = Profile::Fixed { int_bits: m, frac_bits: f };
         let _ = p.validate();
-        for method in [Method::Gouraud, Method::CorrectedEuler, Method::Phong] {
-            let _ = fixed_bound(method, n, m, f);
+        for method in [Method::Gouraud, Method::CorrectedEuler, Method::Phong, Method::Duff, Method::Adaptive] {
+            let _ = fixed_bound(method, n, x, m, f);
         }
         let format = phong_approx::Format::ALL[fi];
         for t in [Tolerance::Abs(x), Tolerance::Ulps(x), Tolerance::Default { format }, Tolerance::Profile { profile: p, format, form: phong_approx::tolerance::profile::Form::Any }] {

@@ -175,6 +175,15 @@ pub enum Unbounded {
         /// The registers' integer bits.
         int_bits: u32,
     },
+    /// Duff's fixed-point unit on a span whose `q_min` is too small for its fractional
+    /// bits: `r = √(q_min − E_q)` must exceed `2^-F` (`fixed_point_duff_unit_error`).
+    #[error("the {profile} profile bounds Duff's unit only where r = √(q_min − E_q) > 2^-{frac_bits}, E_q = 2^-({frac_bits}+1)·(1 + n + n(n−1)/2): this span's q_min is too small (docs/float.md §14)")]
+    FixedQMin {
+        /// The profile.
+        profile: String,
+        /// Its fractional bits.
+        frac_bits: u32,
+    },
     /// The profile's bound does not reach this span: `n` past its range, or `q` may
     /// lose half of itself.
     #[error(
@@ -203,6 +212,7 @@ impl Unbounded {
                 "Profile::Reference judges this crate's own evaluation; or give Suite::tolerance",
             ),
             Unbounded::FixedOverflow { .. } => Some("more integer bits, or give Suite::tolerance"),
+            Unbounded::FixedQMin { .. } => Some("more fractional bits, or give Suite::tolerance"),
             Unbounded::SpecularNotModelled { .. }
             | Unbounded::OutOfRange { .. }
             | Unbounded::NoDerivedBound => Some("give Suite::tolerance"),

@@ -553,3 +553,92 @@ fn every_suggested_flag_is_accepted() {
         "advice naming flags the command does not take: {wrong:?}"
     );
 }
+
+/// `setup`: each published case's set-up, every value within half a grid step
+/// (`2^-(F+1)`) of the exact set-up read from the case's exact span — the rounding
+/// proofs/Fixed.v assumes — in the columns of docs/conformance.md ("Hardware span
+/// units"); a method without a unit, a format past 64 bits or a value that does not
+/// fit the registers is refused with exit code 2.
+#[test]
+fn setup_rounds_each_cases_set_up_to_nearest() {
+    use phong_approx::conformance::integrity::case_span;
+    let f = 28u32;
+    for (method, columns) in [
+        ("gouraud", ["p_a", "dp", "", "", "", "", ""]),
+        ("euler", ["p_a", "", "di_a", "ds", "", "", ""]),
+        ("corrected-euler", ["p_a", "", "t0", "ds", "", "", ""]),
+        ("adaptive", ["p_a", "dp", "t0", "ds", "", "", ""]),
+        ("duff", ["b", "a", "", "", "e", "c+d", "2c"]),
+    ] {
+        let out = bin()
+            .args([
+                "setup",
+                "--vectors",
+                "vectors/edge.json",
+                "--method",
+                method,
+            ])
+            .args(["--fixed", &format!("8.{f}")])
+            .output()
+            .unwrap();
+        assert!(
+            out.status.success(),
+            "{method}: {}",
+            String::from_utf8_lossy(&out.stderr)
+        );
+        let text = String::from_utf8(out.stdout).unwrap();
+        let mut lines = text.lines();
+        assert_eq!(lines.next(), Some("case,n,p0,dp,t0,ds,q0,dq0,d2q"));
+        let file = phong_approx::testkit::published("edge").unwrap();
+        for (line, c) in lines.zip(&file.cases) {
+            let cells: Vec<&str> = line.split(',').collect();
+            assert_eq!(
+                (cells[0], cells[1]),
+                (c.id.as_str(), c.n.to_string().as_str())
+            );
+            let s = case_span(c).unwrap();
+            for (cell, col) in cells[2..].iter().zip(columns) {
+                let exact = match col {
+                    "p_a" => s.p_a.clone(),
+                    "dp" => s.dp.clone(),
+                    "di_a" => s.di_a.clone(),
+                    "t0" => s.t0.clone(),
+                    "ds" => s.ds.clone(),
+                    "b" => s.b.clone(),
+                    "a" => s.a.clone(),
+                    "e" => s.e.clone(),
+                    "c+d" => s.c.clone() + s.d.clone(),
+                    "2c" => s.c.clone() + s.c.clone(),
+                    _ => Q::zero(),
+                };
+                let raw: BigInt = cell.parse().unwrap();
+                let err = (Q::new(raw, BigInt::one() << f) - exact).abs();
+                assert!(
+                    err <= Q::new(BigInt::one(), BigInt::one() << (f + 1)),
+                    "{method} {col} of {}: off by {err}",
+                    c.id
+                );
+            }
+        }
+    }
+    for (args, needle) in [
+        (
+            ["--method", "phong", "--fixed", "8.28"],
+            "no hardware set-up for phong",
+        ),
+        (["--method", "duff", "--fixed", "40.40"], "at most 64"),
+        (["--method", "duff", "--fixed", "1.20"], "does not fit 1.20"),
+    ] {
+        let out = bin()
+            .args(["setup", "--vectors", "vectors/edge.json"])
+            .args(args)
+            .output()
+            .unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {err}");
+        assert!(
+            err.contains(needle) && err.lines().count() == 1,
+            "{args:?}: {err}"
+        );
+    }
+}

@@ -39,7 +39,9 @@ pub struct SetupArgs {
 
 /// `--method`: a method a unit implements.
 fn hardware_method(s: &str) -> Result<Method, String> {
-    let m: Method = s.parse().map_err(|e: phong_approx::method::UnknownMethod| e.to_string())?;
+    let m: Method = s
+        .parse()
+        .map_err(|e: phong_approx::method::UnknownMethod| e.to_string())?;
     if HARDWARE.contains(&m) {
         Ok(m)
     } else {

@@ -321,7 +321,7 @@ mod fixed {
             for e in exact.iter() {
                 assert!(e.to_f64().abs() <= 5.0, "value {e}: {c:?}");
                 assert!((slope.clone() * n.clone()).to_f64().abs() <= 12.0, "{c:?}");
-                slope = slope + s.ds.clone();
+                slope += s.ds.clone();
             }
             for bits in [8, 16, 24, 32] {
                 let f = FixedSpan::new(&s, bits).unwrap();
@@ -343,7 +343,8 @@ mod fixed {
             for bits in [8, 16, 24, 32] {
                 let f = FixedSpan::new(&s, bits).unwrap();
                 let k = i128::from(s.n.div_ceil(2));
-                let raw = k * i128::from(f.dp) - k * i128::from(f.t0)
+                let raw = k * i128::from(f.dp)
+                    - k * i128::from(f.t0)
                     - k * (k - 1) / 2 * i128::from(f.ds);
                 let got = Q::new(raw.into(), num_bigint::BigInt::from(1) << bits);
                 let e = (got - exact.clone()).to_f64().abs();
@@ -379,7 +380,10 @@ mod fixed {
                 }
             }
         }
-        assert!(outside > 100 && inside > 0, "{outside} outside, {inside} inside");
+        assert!(
+            outside > 100 && inside > 0,
+            "{outside} outside, {inside} inside"
+        );
     }
 
     /// The value step alone: any `p̂`, `q̂` within `E_p`, `E_q` of `p`, `q`
@@ -402,12 +406,19 @@ mod fixed {
             let bound = (ep + eq / (2.0 * r) + 2.0 * h) / (r - 2.0 * h) + 2.0 * h;
             let q = q_min + draw() * (1.0 - q_min);
             let p = q.sqrt() * (2.0 * draw() - 1.0);
-            for (sp, sq, ss, sv) in [(1.0, -1.0, 1.0, 1.0), (-1.0, 1.0, 0.0, -1.0), (1.0, 1.0, 1.0, 1.0)] {
+            for (sp, sq, ss, sv) in [
+                (1.0, -1.0, 1.0, 1.0),
+                (-1.0, 1.0, 0.0, -1.0),
+                (1.0, 1.0, 1.0, 1.0),
+            ] {
                 let (ph, qh) = (p + sp * ep, q + sq * eq);
                 let sh = qh.sqrt() - ss * 2.0 * h * (1.0 - 1e-9);
                 let vh = ph / sh + sv * 2.0 * h;
                 let err = (vh - p / q.sqrt()).abs();
-                assert!(err <= bound * (1.0 + 1e-9), "{err} > {bound}: p {p}, q {q}, h {h}");
+                assert!(
+                    err <= bound * (1.0 + 1e-9),
+                    "{err} > {bound}: p {p}, q {q}, h {h}"
+                );
             }
         }
         assert!(tried > 1000, "{tried} cases");

@@ -55,7 +55,10 @@ fn fixed_bounds_are_the_theorems_and_need_their_registers() {
     // n = 1: E_p = E_q = 2h = 2^-16, r = √(1 − 2^-16); the bound ≈ 2^-16·2.5 + 2^-16.
     let d = fixed_bound(Method::Duff, 1, 1.0, 16, 16).unwrap();
     assert!((d / 2f64.powi(-16) - 3.5).abs() < 1e-3, "{d}");
-    assert!(fixed_bound(Method::Duff, 1, 1.0, 16, 16).unwrap() < fixed_bound(Method::Duff, 1, 0.5, 16, 16).unwrap());
+    assert!(
+        fixed_bound(Method::Duff, 1, 1.0, 16, 16).unwrap()
+            < fixed_bound(Method::Duff, 1, 0.5, 16, 16).unwrap()
+    );
     assert!(fixed_bound(Method::Duff, 4096, 1e-3, 16, 16).is_none());
 }
 

@@ -229,12 +229,12 @@ pub fn fixed_bound(
         FixedBound::Ratio { .. } => {
             // r rounded down: q_min − E_q and its root each lowered past their rounding.
             let gap = (q_min - e_second) - q_min.abs() * 2f64.powi(-52);
-            if !(gap > 0.0) {
+            if gap.is_nan() || gap <= 0.0 {
                 return None;
             }
             let r = gap.sqrt() * (1.0 - 2f64.powi(-50));
             let den = (r - 2.0 * h) - r * 2f64.powi(-52);
-            if !(den > 0.0) {
+            if den.is_nan() || den <= 0.0 {
                 return None;
             }
             let bound = up((e_first + e_second / (2.0 * r) + 2.0 * h) / den + 2.0 * h);

@@ -172,3 +172,62 @@ fn the_docs_default_bounds_table_is_the_datas() {
         "regenerate the table in docs/conformance.md:\n{want}"
     );
 }
+
+/// No dead bound kind: every variant of the catalogue's profile columns
+/// (`FloatBound`, `FixedBound`, `DerivedForm`) is the kind of some method's row, and
+/// every method with a bound under a profile has a proved status there. The matches
+/// are exhaustive, so a new variant does not compile until it is listed here.
+#[test]
+fn every_bound_kind_is_used_by_a_row() {
+    use phong_approx::method::{DerivedForm, FixedBound, FloatBound};
+    use phong_approx::tolerance::profile::{status, Profile, Status};
+    use std::collections::BTreeSet;
+    let float = |b: &FloatBound| match b {
+        FloatBound::Proved(_) => "float Proved",
+        FloatBound::Composed { .. } => "float Composed",
+        FloatBound::None(_) => "float None",
+    };
+    let form = |f: &DerivedForm| match f {
+        DerivedForm::PerPixel => "form PerPixel",
+        DerivedForm::Ratio => "form Ratio",
+        DerivedForm::HalfRatio => "form HalfRatio",
+        DerivedForm::LargerOfPicks => "form LargerOfPicks",
+    };
+    let fixed = |b: &FixedBound| match b {
+        FixedBound::Proved { .. } => "fixed Proved",
+        FixedBound::Ratio { .. } => "fixed Ratio",
+        FixedBound::Picks { .. } => "fixed Picks",
+        FixedBound::None(_) => "fixed None",
+    };
+    let all = [
+        "float Proved",
+        "float Composed",
+        "float None",
+        "form PerPixel",
+        "form Ratio",
+        "form HalfRatio",
+        "form LargerOfPicks",
+        "fixed Proved",
+        "fixed Ratio",
+        "fixed Picks",
+        "fixed None",
+    ];
+    let mut used = BTreeSet::new();
+    for m in Method::ALL {
+        let row = m.info().profiles;
+        used.insert(float(&row.float));
+        if let FloatBound::Composed { form: f, .. } = &row.float {
+            used.insert(form(f));
+        }
+        used.insert(fixed(&row.fixed));
+        for p in [Profile::Ieee, Profile::Shader] {
+            match status(m, p, phong_approx::Format::Binary32) {
+                Some(Status::Proved(t)) => assert!(!t.is_empty(), "{m} under {p}"),
+                None => {}
+            }
+        }
+    }
+    for kind in all {
+        assert!(used.contains(kind), "no method's row is of the kind {kind}: remove it");
+    }
+}

@@ -35,13 +35,6 @@ pub enum FloatBound {
         /// Its form: [`DerivedForm::Ratio`] or [`DerivedForm::HalfRatio`].
         form: DerivedForm,
     },
-    /// A written derivation on the profile's standard model (`tolerance::profile::Arith`).
-    Derived {
-        /// The section of the derivation (`docs/float.md §18.4`).
-        section: &'static str,
-        /// Its form.
-        form: DerivedForm,
-    },
     /// No bound: why.
     None(&'static str),
 }

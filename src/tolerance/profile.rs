@@ -24,9 +24,8 @@
 //! (`proofs/PhongValue.v`) and normalize-then-dot (`proofs/PhongNormalize.v`) —
 //! [`phong_bound`], [`duff_bound`], [`symmetric_phong_bound`], `docs/float.md`
 //! §18.4–18.5 — and the adaptive scheme its picks' theorems with the band of
-//! [`adaptive_band`] (`proofs/AdaptiveDelta.v`): all labelled *proved*
-//! ([`euler_derived`] is plain Euler's written derivation, which the theorems replace
-//! under both profiles); [`status`] says which kind a bound is. Angular interpolation
+//! [`adaptive_band`] (`proofs/AdaptiveDelta.v`): all labelled *proved*, and
+//! [`status`] names the theorem. Angular interpolation
 //! and the related methods have none: a case then fails naming that.
 //!
 //! Tested, with other implementations written from the definitions (other orders,
@@ -40,7 +39,6 @@ use crate::Format;
 
 mod adaptive;
 mod counts;
-mod derived;
 mod form;
 mod labels;
 mod model;
@@ -49,7 +47,6 @@ mod theorems;
 
 pub use adaptive::{adaptive_band, delta_error};
 pub use counts::{duff_bound, symmetric_phong_bound, DuffCounts, DUFF_COUNTS};
-pub use derived::euler_derived;
 pub use form::{Form, UnknownForm};
 pub use labels::{formula, ieee_table, status_summary, status_table};
 pub use model::{arith, Arith};
@@ -306,19 +303,16 @@ pub fn proved_in(
 /// How a profile's bound for a method is known.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Status {
-    /// A Coq theorem of `proofs/Profiles.v` (its name).
+    /// A Coq theorem (its name): every bound of the `ieee`, `shader` and fixed-point
+    /// profiles is proved or composed from proved theorems.
     Proved(&'static str),
-    /// A written derivation (the `docs/float.md` section), attacked by the searches of
-    /// `tests/profiles.rs`.
-    Derived(&'static str),
 }
 
 impl Status {
-    /// `proved (theorem)` or `derived (section)`, as the docs and `span` label a bound.
+    /// `proved (theorem)`, as the docs and `span` label a bound.
     pub fn label(&self) -> String {
         match self {
             Status::Proved(t) => format!("proved ({t})"),
-            Status::Derived(d) => format!("derived ({d})"),
         }
     }
 }
@@ -335,24 +329,11 @@ pub fn status(method: crate::Method, profile: Profile, format: Format) -> Option
     if let Profile::Fixed { .. } = profile {
         return row.fixed.theorem().map(Status::Proved);
     }
-    // A derivation, where the profile has a standard model in this format.
-    let derived = |section| arith(profile, format).map(|_| Status::Derived(section));
     match row.float {
         // A float profile's theorems ([`proved`]), the first form's name.
         FloatBound::Proved(_) => {
             proved(method, profile, format).map(|forms| Status::Proved(forms[0].theorem))
         }
-        // The larger of the picks' proved bounds: both must be proved.
-        FloatBound::Derived {
-            section,
-            form: DerivedForm::LargerOfPicks,
-        } => method
-            .picks()?
-            .iter()
-            .all(|&m| proved(m, profile, format).is_some())
-            .then(|| derived(section))
-            .flatten(),
-        FloatBound::Derived { section, .. } => derived(section),
         // The larger of the picks' proved bounds, composed with the band's theorems:
         // both picks must be proved.
         FloatBound::Composed {
@@ -452,7 +433,7 @@ fn bound_with(
     match method.info().profiles.float {
         FloatBound::Proved(_) => proved_bound_in(method, profile, form, n, format),
         FloatBound::None(_) => None,
-        FloatBound::Derived { form, .. } | FloatBound::Composed { form, .. } => {
+        FloatBound::Composed { form, .. } => {
             let a = arith(profile, format)?;
             match form {
                 DerivedForm::PerPixel => phong_bound(&a, n, q_min, dn),

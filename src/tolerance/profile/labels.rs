@@ -45,7 +45,6 @@ pub fn status_table() -> String {
         for c in cells {
             let label = c.map_or("none".to_string(), |c| match c {
                 Status::Proved(t) => format!("proved (`{t}`)"),
-                Status::Derived(d) => format!("derived ({d})"),
             });
             s += &format!(" {label} |");
         }
@@ -88,12 +87,6 @@ pub fn formula(method: crate::Method, profile: Profile, format: Format) -> Optio
                 format!("max({})", forms.join(", "))
             })
         }
-        // A method that picks between two (its row's `picks`) takes the larger of
-        // their bounds; the others' derived bounds read the span's q_min.
-        Status::Derived(section) => Some(match method.picks() {
-            Some([a, b]) => format!("the larger of the bounds of {a} and {b}"),
-            None => format!("from n and q_min ({section})"),
-        }),
     }
 }
 
@@ -123,7 +116,6 @@ pub fn ieee_table() -> String {
         };
         let label = status(m, Profile::Ieee, b32).map_or(String::new(), |st| match st {
             Status::Proved(t) => format!("proved (`{t}`)"),
-            Status::Derived(d) => format!("derived ({d})"),
         });
         s += &format!(
             "| `{}` | {f} | {} | {} | {} | {label} |\n",
@@ -136,24 +128,17 @@ pub fn ieee_table() -> String {
     s
 }
 
-/// One line per profile naming the methods whose bound is proved and those whose
-/// bound is derived (the `--profile` help of `check`, from [`status`]).
+/// One line per profile naming the methods whose bound is proved (the `--profile`
+/// help of `check`, from [`status`]).
 pub fn status_summary() -> String {
     let mut parts = Vec::new();
     for (name, p, format) in COLUMNS {
-        let (mut proved, mut derived) = (Vec::new(), Vec::new());
-        for m in crate::Method::ALL {
-            match status(m, p, format) {
-                Some(Status::Proved(_)) => proved.push(m.name().into_owned()),
-                Some(Status::Derived(_)) => derived.push(m.name().into_owned()),
-                None => {}
-            }
-        }
-        let mut line = format!("{name}: proved for {}", list(&proved));
-        if !derived.is_empty() {
-            line += &format!(", derived for {}", list(&derived));
-        }
-        parts.push(line);
+        let proved: Vec<String> = crate::Method::ALL
+            .into_iter()
+            .filter(|&m| status(m, p, format).is_some())
+            .map(|m| m.name().into_owned())
+            .collect();
+        parts.push(format!("{name}: proved for {}", list(&proved)));
     }
     parts.join("; ")
 }

@@ -43,30 +43,16 @@ fn span_inputs() -> ([f32; 3], [f32; 3], [f32; 3]) {
     )
 }
 
-/// `body()` compiled for `path`'s vector width: inlined into a function with the
-/// path's target features, as `fast`'s kernels are (`#[inline(always)]` bodies).
+/// `body()` compiled for `path`'s vector width, through the kernels' own dispatch
+/// (`simd::dispatch`): `path` is the one forced for the run.
 #[inline(always)]
 fn on_path(path: Path, body: impl FnOnce()) {
-    #[cfg(target_arch = "x86_64")]
-    {
-        #[target_feature(enable = "avx2,fma")]
-        unsafe fn avx2(body: impl FnOnce()) {
-            body()
-        }
-        #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
-        unsafe fn avx512(body: impl FnOnce()) {
-            body()
-        }
-        match path {
-            // SAFETY: only the paths this CPU supports are benchmarked.
-            Path::Avx2 => return unsafe { avx2(body) },
-            // SAFETY: as above.
-            Path::Avx512 => return unsafe { avx512(body) },
-            Path::Baseline => {}
-        }
-    }
-    let _ = path;
-    body()
+    debug_assert_eq!(
+        path,
+        simd::path(),
+        "the path being measured is the forced one"
+    );
+    simd::dispatch(|_| body())
 }
 
 /// The store floor on `path`: the row filled with one value, the loop compiled for

@@ -286,31 +286,18 @@ macro_rules! fast_impl {
             if out.len() < WIDE_FROM {
                 return each_x_w::<8>(out, f);
             }
-            match crate::simd::path() {
-                #[cfg(target_arch = "x86_64")]
-                // SAFETY: `path()` is `Avx512` only where the CPU has AVX-512 F and VL,
-                // AVX2 and FMA (`Path::supported`).
-                crate::simd::Path::Avx512 => unsafe { each_x_avx512(out, f) },
-                #[cfg(target_arch = "x86_64")]
-                // SAFETY: `path()` is `Avx2` only where the CPU has AVX2 and FMA.
-                crate::simd::Path::Avx2 => unsafe { each_x_avx2(out, f) },
+            // Eight-pixel chunks (one AVX2 `f32` vector) but on AVX-512: sixteen.
+            crate::simd::dispatch(|p| match p {
+                crate::simd::Path::Avx512 => each_x_16(out, f),
                 _ => each_x_w::<8>(out, f),
-            }
+            })
         }
 
-        /// [`each_x_w`] in eight-pixel chunks with AVX2 (one `f32` vector).
-        #[cfg(target_arch = "x86_64")]
-        #[target_feature(enable = "avx2,fma")]
-        unsafe fn each_x_avx2(out: &mut [$f], f: impl Fn($f) -> $f) {
-            each_x_w::<8>(out, f)
-        }
-
-        /// [`each_x_w`] in sixteen-pixel chunks with AVX-512 (one `f32` vector), the
+        /// [`each_x_w`] in sixteen-pixel chunks (one AVX-512 `f32` vector), the
         /// last fifteen pixels or fewer in eight-pixel chunks (a short row is not one
         /// wide partial chunk and a copy).
-        #[cfg(target_arch = "x86_64")]
-        #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
-        unsafe fn each_x_avx512(out: &mut [$f], f: impl Fn($f) -> $f) {
+        #[inline(always)]
+        fn each_x_16(out: &mut [$f], f: impl Fn($f) -> $f) {
             let wide = out.len() / 16 * 16;
             let (head, tail) = out.split_at_mut(wide);
             let off: [$f; 16] = std::array::from_fn(|j| j as $f);
@@ -379,15 +366,7 @@ macro_rules! fast_impl {
         /// closed form stays small enough to inline where it is called.
         #[inline(never)]
         fn stepped_on_path(p0: $f, t: $f, ds: $f, out: &mut [$f]) {
-            match crate::simd::path() {
-                #[cfg(target_arch = "x86_64")]
-                // SAFETY: as in `each_x`.
-                crate::simd::Path::Avx512 => unsafe { stepped_avx512(p0, t, ds, out) },
-                #[cfg(target_arch = "x86_64")]
-                // SAFETY: as in `each_x`.
-                crate::simd::Path::Avx2 => unsafe { stepped_avx2(p0, t, ds, out) },
-                _ => stepped(p0, t, ds, out),
-            }
+            crate::simd::dispatch(|_| stepped(p0, t, ds, out))
         }
 
         /// `p0 + i·dp` for `i = 0..len`: in closed form on a row shorter than
@@ -403,29 +382,7 @@ macro_rules! fast_impl {
         /// [`stepped_linear`] on the chosen path, out of line as [`stepped_on_path`].
         #[inline(never)]
         fn stepped_linear_on_path(p0: $f, dp: $f, out: &mut [$f]) {
-            match crate::simd::path() {
-                #[cfg(target_arch = "x86_64")]
-                // SAFETY: as in `each_x`.
-                crate::simd::Path::Avx512 => unsafe { stepped_linear_avx512(p0, dp, out) },
-                #[cfg(target_arch = "x86_64")]
-                // SAFETY: as in `each_x`.
-                crate::simd::Path::Avx2 => unsafe { stepped_linear_avx2(p0, dp, out) },
-                _ => stepped_linear(p0, dp, out),
-            }
-        }
-
-        /// [`stepped_linear`] with AVX2.
-        #[cfg(target_arch = "x86_64")]
-        #[target_feature(enable = "avx2,fma")]
-        unsafe fn stepped_linear_avx2(p0: $f, dp: $f, out: &mut [$f]) {
-            stepped_linear(p0, dp, out)
-        }
-
-        /// [`stepped_linear`] with AVX-512.
-        #[cfg(target_arch = "x86_64")]
-        #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
-        unsafe fn stepped_linear_avx512(p0: $f, dp: $f, out: &mut [$f]) {
-            stepped_linear(p0, dp, out)
+            crate::simd::dispatch(|_| stepped_linear(p0, dp, out))
         }
 
         /// Gouraud's `g += dp` taken [`LANES`] pixels at a step, in [`LANES`] lanes:
@@ -449,20 +406,6 @@ macro_rules! fast_impl {
             for (o, v) in chunks.into_remainder().iter_mut().zip(p) {
                 *o = v;
             }
-        }
-
-        /// [`stepped`] with AVX2.
-        #[cfg(target_arch = "x86_64")]
-        #[target_feature(enable = "avx2,fma")]
-        unsafe fn stepped_avx2(p0: $f, t: $f, ds: $f, out: &mut [$f]) {
-            stepped(p0, t, ds, out)
-        }
-
-        /// [`stepped`] with AVX-512.
-        #[cfg(target_arch = "x86_64")]
-        #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
-        unsafe fn stepped_avx512(p0: $f, t: $f, ds: $f, out: &mut [$f]) {
-            stepped(p0, t, ds, out)
         }
 
         /// The paper's recurrence `p += t; t += ds` (eqs. 16–17) taken [`LANES`]

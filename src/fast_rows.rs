@@ -336,40 +336,8 @@ macro_rules! rows_impl {
                 y: &[$f; BATCH],
                 n: &[u32; BATCH],
             ) -> Self {
-                match crate::simd::path() {
-                    #[cfg(target_arch = "x86_64")]
-                    // SAFETY: `path()` is `Avx512` only where the CPU has AVX-512 F and
-                    // VL, AVX2 and FMA (`Path::supported`).
-                    crate::simd::Path::Avx512 => unsafe { Self::set_up_avx512(f, x, y, n) },
-                    #[cfg(target_arch = "x86_64")]
-                    // SAFETY: `path()` is `Avx2` only where the CPU has AVX2 and FMA.
-                    crate::simd::Path::Avx2 => unsafe { Self::set_up_avx2(f, x, y, n) },
-                    _ => Self::set_up_lanes(f, x, y, n),
-                }
-            }
-
-            /// [`Batch::set_up`] with AVX2: the eight rows in one `f32` vector.
-            #[cfg(target_arch = "x86_64")]
-            #[target_feature(enable = "avx2,fma")]
-            unsafe fn set_up_avx2(
-                f: &Field<$f>,
-                x: &[$f; BATCH],
-                y: &[$f; BATCH],
-                n: &[u32; BATCH],
-            ) -> Self {
-                Self::set_up_lanes(f, x, y, n)
-            }
-
-            /// [`Batch::set_up`] with AVX-512: the eight rows in one `f64` vector.
-            #[cfg(target_arch = "x86_64")]
-            #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
-            unsafe fn set_up_avx512(
-                f: &Field<$f>,
-                x: &[$f; BATCH],
-                y: &[$f; BATCH],
-                n: &[u32; BATCH],
-            ) -> Self {
-                Self::set_up_lanes(f, x, y, n)
+                // The eight rows in one AVX2 `f32` vector, or one AVX-512 `f64` vector.
+                crate::simd::dispatch(|_| Self::set_up_lanes(f, x, y, n))
             }
 
             /// The rows lane by lane, for the vectorizer.

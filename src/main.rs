@@ -86,7 +86,7 @@ fn main() -> ExitCode {
     // A vector path asked for and not taken would change what a run measures without
     // a word (src/simd.rs): refused before any work.
     if let Err(message) = phong_approx::simd::from_env() {
-        cli::report(&message);
+        cli::report(&message.to_string());
         return ExitCode::from(2);
     }
     let result = match cli.command {

@@ -81,18 +81,42 @@ impl fmt::Display for Path {
     }
 }
 
+/// Why a vector path cannot be taken.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
+pub enum PathError {
+    /// A name that is no path.
+    #[error("unknown vector path '{}' (expected baseline, avx2 or avx512)", crate::error::shown(.0))]
+    Unknown(String),
+    /// A path this CPU lacks, and the paths it has.
+    #[error("this CPU cannot take the {path} path (it has {})", .has.join(", "))]
+    Unsupported {
+        /// The path asked for.
+        path: Path,
+        /// The names of the paths this CPU has.
+        has: Vec<&'static str>,
+    },
+    /// `PHONG_APPROX_SIMD` names no path this CPU can take.
+    #[error("PHONG_APPROX_SIMD: {0}")]
+    Env(Box<PathError>),
+}
+
+impl PathError {
+    fn unsupported(path: Path) -> Self {
+        PathError::Unsupported {
+            path,
+            has: Path::supported_paths().iter().map(|p| p.name()).collect(),
+        }
+    }
+}
+
 impl FromStr for Path {
-    type Err = String;
-    fn from_str(s: &str) -> Result<Path, String> {
+    type Err = PathError;
+    fn from_str(s: &str) -> Result<Path, PathError> {
         Path::ALL
             .into_iter()
             .find(|p| p.name() == s.trim())
-            .ok_or_else(|| {
-                format!(
-                    "unknown vector path '{}' (expected baseline, avx2 or avx512)",
-                    crate::error::shown(s)
-                )
-            })
+            .ok_or_else(|| PathError::Unknown(s.to_string()))
     }
 }
 
@@ -124,7 +148,7 @@ fn choose() -> Path {
 ///
 /// # Errors
 /// An unknown name, or a path this CPU cannot take (naming the ones it can).
-pub fn from_env() -> Result<Option<Path>, String> {
+pub fn from_env() -> Result<Option<Path>, PathError> {
     let Some(v) = std::env::var_os("PHONG_APPROX_SIMD") else {
         return Ok(None);
     };
@@ -132,17 +156,42 @@ pub fn from_env() -> Result<Option<Path>, String> {
     if v.trim().is_empty() {
         return Ok(None);
     }
-    let p = v
-        .parse::<Path>()
-        .map_err(|e| format!("PHONG_APPROX_SIMD: {e}"))?;
+    let p = v.parse::<Path>().map_err(|e| PathError::Env(Box::new(e)))?;
     if !p.supported() {
-        let has: Vec<&str> = Path::supported_paths().iter().map(|p| p.name()).collect();
-        return Err(format!(
-            "PHONG_APPROX_SIMD={p}: this CPU cannot take the {p} path (it has {})",
-            has.join(", ")
-        ));
+        return Err(PathError::Env(Box::new(PathError::unsupported(p))));
     }
     Ok(Some(p))
+}
+
+/// Runs `body` compiled for the chosen path's target features, handing it the path
+/// (so that it can pick its chunk width): the one place where the kernels of
+/// [`crate::fast`] and [`crate::fast_rows`] enter a vector path. `body` is inlined into
+/// a function compiled with the path's features (`#[target_feature]`), so its loops
+/// vectorize for that width; on the baseline it runs as it is.
+#[inline(always)]
+pub fn dispatch<R, F: FnOnce(Path) -> R>(body: F) -> R {
+    #[cfg(target_arch = "x86_64")]
+    {
+        #[target_feature(enable = "avx2,fma")]
+        unsafe fn avx2<R, F: FnOnce(Path) -> R>(body: F) -> R {
+            body(Path::Avx2)
+        }
+        #[target_feature(enable = "avx512f,avx512vl,avx2,fma")]
+        unsafe fn avx512<R, F: FnOnce(Path) -> R>(body: F) -> R {
+            body(Path::Avx512)
+        }
+        let wide: unsafe fn(F) -> R = match path() {
+            Path::Avx2 => avx2::<R, F>,
+            Path::Avx512 => avx512::<R, F>,
+            Path::Baseline => return body(Path::Baseline),
+        };
+        // SAFETY: `path()` is `Avx2` only where the CPU has AVX2 and FMA, and `Avx512`
+        // only where it has AVX-512 F and VL besides (`Path::supported`: `best` picks
+        // among the supported paths, and `force` and `from_env` refuse the others).
+        return unsafe { wide(body) };
+    }
+    #[allow(unreachable_code)]
+    body(Path::Baseline)
 }
 
 fn store(p: Path) {
@@ -157,9 +206,9 @@ fn store(p: Path) {
 ///
 /// # Errors
 /// The path's name when this CPU cannot take it (nothing changes).
-pub fn force(p: Path) -> Result<Path, String> {
+pub fn force(p: Path) -> Result<Path, PathError> {
     if !p.supported() {
-        return Err(format!("this CPU cannot take the {p} path"));
+        return Err(PathError::unsupported(p));
     }
     let before = path();
     store(p);

@@ -228,6 +228,9 @@ fn every_bound_kind_is_used_by_a_row() {
         }
     }
     for kind in all {
-        assert!(used.contains(kind), "no method's row is of the kind {kind}: remove it");
+        assert!(
+            used.contains(kind),
+            "no method's row is of the kind {kind}: remove it"
+        );
     }
 }

@@ -8,6 +8,8 @@ mod common;
 
 #[path = "../fast.rs"]
 mod fast;
+#[path = "../fast_paths.rs"]
+mod fast_paths;
 #[cfg(feature = "lowp")]
 #[path = "../lowp.rs"]
 mod lowp;

@@ -53,7 +53,10 @@ fn hardware_method(s: &str) -> Result<Method, String> {
 
 /// `--fixed`: `M.F`, as the profile `fixed:M.F` takes it, with `M + F ≤ 64`.
 fn fixed_format(s: &str) -> Result<(u32, u32), String> {
-    match format!("fixed:{s}").parse::<Profile>()? {
+    match format!("fixed:{s}")
+        .parse::<Profile>()
+        .map_err(|e| e.to_string())?
+    {
         Profile::Fixed {
             int_bits,
             frac_bits,

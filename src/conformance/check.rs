@@ -11,7 +11,7 @@ pub use results::{
 };
 #[cfg(feature = "csv")]
 pub use results::{parse_results, parse_results_csv};
-pub use tolerance::{Advice, Tolerance, Unbounded};
+pub use tolerance::{Advice, Tolerance, ToleranceError, Unbounded};
 
 use super::vectors::{Case, Expected, VectorFile};
 use crate::method::Method;
@@ -68,9 +68,9 @@ pub struct CaseReport {
 /// Why [`check_in`] cannot judge a file, naming the input at fault.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 pub enum JudgeError {
-    /// The tolerance means nothing ([`Tolerance::validate`]'s message).
-    #[error("{0}")]
-    Tolerance(String),
+    /// The tolerance means nothing ([`Tolerance::validate`]).
+    #[error(transparent)]
+    Tolerance(#[from] ToleranceError),
     /// The vector file holds no expectations of the method.
     #[error("the vector file has no method '{key}'")]
     Method {

@@ -122,18 +122,41 @@ impl Profile {
     /// below 4 exactly only up to 51 fractional bits); the float profiles always are.
     ///
     /// # Errors
-    /// A one-line message naming the widths.
-    pub fn validate(&self) -> Result<(), String> {
+    /// [`ProfileError::FixedWidths`], naming the widths.
+    pub fn validate(&self) -> Result<(), ProfileError> {
         match *self {
             Profile::Fixed {
                 int_bits,
                 frac_bits,
-            } if !((1..=64).contains(&int_bits) && (1..=MAX_FRAC_BITS).contains(&frac_bits)) => Err(format!(
-                "fixed point needs 1 ≤ M ≤ 64 integer bits and 1 ≤ F ≤ {MAX_FRAC_BITS} fractional bits (got M = {int_bits}, F = {frac_bits})"
-            )),
+            } if !((1..=64).contains(&int_bits) && (1..=MAX_FRAC_BITS).contains(&frac_bits)) => {
+                Err(ProfileError::FixedWidths {
+                    int_bits,
+                    frac_bits,
+                })
+            }
             _ => Ok(()),
         }
     }
+}
+
+/// A profile that is not one: its name or its fixed-point widths.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
+pub enum ProfileError {
+    /// A name that is no profile.
+    #[error("unknown profile '{}' (expected reference, ieee, shader or fixed:M.F)", crate::error::shown(.0))]
+    Unknown(String),
+    /// `fixed:…` that is not `fixed:M.F` with widths the bounds take.
+    #[error("'{}' is not fixed:M.F with 1 ≤ M ≤ 64 integer bits and 1 ≤ F ≤ {MAX_FRAC_BITS} fractional bits (e.g. fixed:16.16; results are read as f64, exact up to 51 fractional bits)", crate::error::shown(.0))]
+    FixedSyntax(String),
+    /// A fixed-point profile built with widths the bounds do not take.
+    #[error("fixed point needs 1 ≤ M ≤ 64 integer bits and 1 ≤ F ≤ {MAX_FRAC_BITS} fractional bits (got M = {int_bits}, F = {frac_bits})")]
+    FixedWidths {
+        /// `M`.
+        int_bits: u32,
+        /// `F`.
+        frac_bits: u32,
+    },
 }
 
 impl fmt::Display for Profile {
@@ -143,9 +166,9 @@ impl fmt::Display for Profile {
 }
 
 impl FromStr for Profile {
-    type Err = String;
+    type Err = ProfileError;
 
-    fn from_str(s: &str) -> Result<Self, String> {
+    fn from_str(s: &str) -> Result<Self, ProfileError> {
         if let Some(q) = s.strip_prefix("fixed:") {
             let bits = q
                 .split_once('.')
@@ -156,21 +179,13 @@ impl FromStr for Profile {
                     int_bits,
                     frac_bits,
                 }),
-                None => Err(format!(
-                    "'{}' is not fixed:M.F with 1 ≤ M ≤ 64 integer bits and 1 ≤ F ≤ {MAX_FRAC_BITS} fractional bits (e.g. fixed:16.16; results are read as f64, exact up to 51 fractional bits)",
-                    crate::error::shown(s)
-                )),
+                None => Err(ProfileError::FixedSyntax(s.to_string())),
             };
         }
         Profile::ALL
             .into_iter()
             .find(|p| p.name() == s)
-            .ok_or_else(|| {
-                format!(
-                    "unknown profile '{}' (expected reference, ieee, shader or fixed:M.F)",
-                    crate::error::shown(s)
-                )
-            })
+            .ok_or_else(|| ProfileError::Unknown(s.to_string()))
     }
 }
 

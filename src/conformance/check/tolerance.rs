@@ -64,35 +64,24 @@ impl Tolerance {
     /// Parses `levels=N`, `abs=X` or `ulps=N`.
     ///
     /// # Errors
-    /// A message saying what was expected.
-    pub fn parse(s: &str) -> Result<Tolerance, String> {
-        let (k, v) = s.split_once('=').ok_or_else(|| {
-            format!(
-                "'{}' is not levels=N, abs=X or ulps=N",
-                crate::conformance::shown(s)
-            )
-        })?;
+    /// A [`ToleranceError`] saying what was expected.
+    pub fn parse(s: &str) -> Result<Tolerance, ToleranceError> {
+        let (k, v) = s
+            .split_once('=')
+            .ok_or_else(|| ToleranceError::Syntax(s.to_string()))?;
         let num: f64 = v
             .trim()
             .parse()
-            .map_err(|_| format!("'{}' is not a number", crate::conformance::shown(v)))?;
+            .map_err(|_| ToleranceError::NotANumber(v.to_string()))?;
         if !(num.is_finite() && num >= 0.0) {
-            return Err(format!(
-                "'{}' must be a finite number ≥ 0",
-                crate::conformance::shown(v)
-            ));
+            return Err(ToleranceError::NotFinite(v.to_string()));
         }
         match k.trim() {
             "levels" if num.fract() == 0.0 && num <= 255.0 => Ok(Tolerance::Levels(num as u32)),
-            "levels" => Err(format!(
-                "levels must be a whole number from 0 to 255 (got {v})"
-            )),
+            "levels" => Err(ToleranceError::Levels(v.to_string())),
             "abs" => Ok(Tolerance::Abs(num)),
             "ulps" => Ok(Tolerance::Ulps(num)),
-            other => Err(format!(
-                "unknown tolerance '{}' (expected levels, abs or ulps)",
-                crate::conformance::shown(other)
-            )),
+            other => Err(ToleranceError::Unknown(other.to_string())),
         }
     }
 }
@@ -116,22 +105,43 @@ impl Tolerance {
     /// ([`crate::tolerance::profile::Profile::validate`]).
     ///
     /// # Errors
-    /// A one-line message saying what is wrong.
-    pub fn validate(&self) -> Result<(), String> {
+    /// A [`ToleranceError`] saying what is wrong.
+    pub fn validate(&self) -> Result<(), ToleranceError> {
         let ok = |x: f64| x.is_finite() && x >= 0.0;
         match *self {
-            Tolerance::Levels(n) if n > 255 => Err(format!("levels must be at most 255 (got {n})")),
+            Tolerance::Levels(n) if n > 255 => Err(ToleranceError::Levels(n.to_string())),
             Tolerance::Abs(x) | Tolerance::Ulps(x) if !ok(x) => {
-                Err(format!("a tolerance must be a finite number ≥ 0 (got {x})"))
+                Err(ToleranceError::NotFinite(x.to_string()))
             }
-            Tolerance::Profile {
-                profile: profile @ crate::tolerance::profile::Profile::Fixed { .. },
-                ..
-            } => profile.validate(),
-            Tolerance::Profile { profile, .. } => profile.validate(),
+            Tolerance::Profile { profile, .. } => Ok(profile.validate()?),
             _ => Ok(()),
         }
     }
+}
+
+/// A tolerance that is not one: how `levels=N`, `abs=X` or `ulps=N` was misspelt, or
+/// a profile the bounds do not take.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
+pub enum ToleranceError {
+    /// No `=`.
+    #[error("'{}' is not levels=N, abs=X or ulps=N", crate::conformance::shown(.0))]
+    Syntax(String),
+    /// The value is not a number.
+    #[error("'{}' is not a number", crate::conformance::shown(.0))]
+    NotANumber(String),
+    /// The value is negative, infinite or NaN.
+    #[error("'{}' must be a finite number ≥ 0", crate::conformance::shown(.0))]
+    NotFinite(String),
+    /// `levels=` not a whole number from 0 to 255.
+    #[error("levels must be a whole number from 0 to 255 (got {})", crate::conformance::shown(.0))]
+    Levels(String),
+    /// A kind other than levels, abs and ulps.
+    #[error("unknown tolerance '{}' (expected levels, abs or ulps)", crate::conformance::shown(.0))]
+    Unknown(String),
+    /// A profile the bounds do not take.
+    #[error(transparent)]
+    Profile(#[from] crate::tolerance::profile::ProfileError),
 }
 
 /// Why a case has no bound under its tolerance, so that it fails: as data, so that

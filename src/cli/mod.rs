@@ -84,12 +84,30 @@ impl CliError {
     }
 }
 
+/// A value an argument's parser refused, in words: clap prints it after the
+/// argument's name (`--steps: n must be between 1 and 16777216 (got 0)`).
+#[derive(Debug, thiserror::Error)]
+#[error("{0}")]
+pub struct BadValue(pub String);
+
+impl From<String> for BadValue {
+    fn from(s: String) -> Self {
+        BadValue(s)
+    }
+}
+
+impl From<&str> for BadValue {
+    fn from(s: &str) -> Self {
+        BadValue(s.to_string())
+    }
+}
+
 /// Parses a whole number within `lo..=hi`; `what` names it in the range message
 /// (empty for none). The value parser of every whole-number argument.
 ///
 /// # Errors
 /// Not a whole number, or out of range, in words.
-pub fn whole(s: &str, lo: u32, hi: u32, what: &str) -> Result<u32, String> {
+pub fn whole(s: &str, lo: u32, hi: u32, what: &str) -> Result<u32, BadValue> {
     let v: u64 = s
         .trim()
         .parse()
@@ -100,7 +118,9 @@ pub fn whole(s: &str, lo: u32, hi: u32, what: &str) -> Result<u32, String> {
         } else {
             format!("{what} ")
         };
-        return Err(format!("{what}must be between {lo} and {hi} (got {v})"));
+        return Err(BadValue::from(format!(
+            "{what}must be between {lo} and {hi} (got {v})"
+        )));
     }
     Ok(v as u32)
 }

@@ -1,6 +1,7 @@
 //! `phong-approx setup`: each case's set-up rounded to a fixed-point format, the inputs
 //! of a hardware span unit (`harness/hdl/`, docs/conformance.md "Hardware span units").
 
+use super::BadValue;
 use super::{read_capped, CliError};
 use clap::Args;
 use phong_approx::conformance::check::MAX_RESULTS_BYTES;
@@ -38,21 +39,21 @@ pub struct SetupArgs {
 }
 
 /// `--method`: a method a unit implements.
-fn hardware_method(s: &str) -> Result<Method, String> {
+fn hardware_method(s: &str) -> Result<Method, BadValue> {
     let m: Method = s
         .parse()
         .map_err(|e: phong_approx::method::UnknownMethod| e.to_string())?;
     if HARDWARE.contains(&m) {
         Ok(m)
     } else {
-        Err(format!(
+        Err(BadValue::from(format!(
             "no hardware set-up for {m} (gouraud, euler, corrected-euler, adaptive or duff)"
-        ))
+        )))
     }
 }
 
 /// `--fixed`: `M.F`, as the profile `fixed:M.F` takes it, with `M + F ≤ 64`.
-fn fixed_format(s: &str) -> Result<(u32, u32), String> {
+fn fixed_format(s: &str) -> Result<(u32, u32), BadValue> {
     match format!("fixed:{s}")
         .parse::<Profile>()
         .map_err(|e| e.to_string())?
@@ -61,10 +62,10 @@ fn fixed_format(s: &str) -> Result<(u32, u32), String> {
             int_bits,
             frac_bits,
         } if int_bits + frac_bits <= 64 => Ok((int_bits, frac_bits)),
-        Profile::Fixed { .. } => Err(format!(
+        Profile::Fixed { .. } => Err(BadValue::from(format!(
             "'{}': the registers are M + F bits, at most 64",
             phong_approx::conformance::shown(s)
-        )),
+        ))),
         _ => unreachable!("fixed:… parses as a fixed-point profile or not at all"),
     }
 }

@@ -2,6 +2,7 @@
 //! are parsed here; the run and its report are the library's
 //! ([`phong_approx::span_report`]).
 
+use super::BadValue;
 use super::CliError;
 use clap::{Args, ValueEnum};
 use phong_approx::parse::{parse_rational, parse_vec3};
@@ -84,11 +85,11 @@ pub enum Format {
     Table,
 }
 
-fn vector(s: &str) -> Result<Vec3<BigRational>, String> {
-    parse_vec3(s).map_err(|e| e.to_string())
+fn vector(s: &str) -> Result<Vec3<BigRational>, BadValue> {
+    parse_vec3(s).map_err(|e| BadValue(e.to_string()))
 }
 
-fn kd(s: &str) -> Result<BigRational, String> {
+fn kd(s: &str) -> Result<BigRational, BadValue> {
     let kd = parse_rational(s).map_err(|e| e.to_string())?;
     let (zero, most) = (
         BigRational::from_integer(0.into()),

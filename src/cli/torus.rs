@@ -1,6 +1,7 @@
 //! The arguments `reproduce` and `compare` share: the image size and the torus radii
 //! (with the run budget), and the error of a file that could not be written.
 
+use super::BadValue;
 use super::CliError;
 use clap::Args;
 use phong_approx::conformance::shown;
@@ -61,21 +62,21 @@ impl TorusArgs {
 }
 
 /// Parses `--size` (`WxH`, each 16 to 4096).
-fn parse_size(s: &str) -> Result<(u32, u32), String> {
+fn parse_size(s: &str) -> Result<(u32, u32), BadValue> {
     let bad = || format!("'{}' is not WxH, e.g. 200x200", shown(s));
     let (w, h) = s.split_once(['x', 'X']).ok_or_else(bad)?;
     let w: u32 = w.trim().parse().map_err(|_| bad())?;
     let h: u32 = h.trim().parse().map_err(|_| bad())?;
     if !(16..=4096).contains(&w) || !(16..=4096).contains(&h) {
-        return Err(format!(
+        return Err(BadValue::from(format!(
             "{w}x{h} is out of range: width and height must be between 16 and 4096"
-        ));
+        )));
     }
     Ok((w, h))
 }
 
 /// Parses `--radii` (`R,r` with 0 < r < R).
-fn parse_radii(s: &str) -> Result<(f32, f32), String> {
+fn parse_radii(s: &str) -> Result<(f32, f32), BadValue> {
     let bad = |why: &str| format!("'{}': {why}", shown(s));
     let (a, b) = s
         .split_once(',')
@@ -83,7 +84,7 @@ fn parse_radii(s: &str) -> Result<(f32, f32), String> {
     let big: f32 = a.trim().parse().map_err(|_| bad("R is not a number"))?;
     let small: f32 = b.trim().parse().map_err(|_| bad("r is not a number"))?;
     if !(big.is_finite() && small.is_finite() && small > 0.0 && big > small) {
-        return Err(bad("need 0 < r < R"));
+        return Err(BadValue::from(bad("need 0 < r < R")));
     }
     Ok((big, small))
 }

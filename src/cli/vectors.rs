@@ -1,6 +1,7 @@
 //! `phong-approx vectors`: write the test vector files.
 
 use super::output::OutDir;
+use super::BadValue;
 use super::CliError;
 use clap::Args;
 use phong_approx::conformance::integrity::sha256_hex;
@@ -31,14 +32,14 @@ const SCHEMA: &str = "schema.json";
 const SUMS: &str = "SHA256SUMS";
 
 /// `--set`: one of the published sets, or `all`.
-fn set_name(s: &str) -> Result<String, String> {
+fn set_name(s: &str) -> Result<String, BadValue> {
     if s == "all" || SETS.contains(&s) {
         Ok(s.to_string())
     } else {
-        Err(format!(
+        Err(BadValue::from(format!(
             "unknown set '{}' (expected typical, edge, paper or all)",
             shown(s)
-        ))
+        )))
     }
 }
 

@@ -29,6 +29,46 @@ pub fn published() -> impl Iterator<Item = (&'static str, &'static str)> {
 
 pub use super::vectors::MAX_CASE_STEPS;
 
+/// What is wrong with a vector file: the case at fault (`None` for the file as a
+/// whole: its version, its case count, its method list) and the problem in words.
+#[derive(Clone, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub struct VectorError {
+    /// The id of the case at fault, if one is.
+    pub case: Option<String>,
+    /// The problem, in words.
+    pub problem: String,
+}
+
+impl std::fmt::Display for VectorError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match &self.case {
+            Some(id) => write!(f, "case {id}: {}", self.problem),
+            None => f.write_str(&self.problem),
+        }
+    }
+}
+
+impl std::error::Error for VectorError {}
+
+impl VectorError {
+    /// A problem of the case `id`.
+    pub fn case(id: &str, problem: impl Into<String>) -> Self {
+        VectorError {
+            case: Some(id.to_string()),
+            problem: problem.into(),
+        }
+    }
+
+    /// A problem of the file as a whole.
+    pub fn file(problem: impl Into<String>) -> Self {
+        VectorError {
+            case: None,
+            problem: problem.into(),
+        }
+    }
+}
+
 pub use crate::budget::{exact_work, input_bits, MAX_RECOMPUTED_WORK};
 
 /// The most cases a vector file may hold.
@@ -75,19 +115,20 @@ pub fn published_set(digest: &str) -> Option<&'static str> {
 ///
 /// # Errors
 /// A message naming the case and what is wrong.
-pub fn case_span(c: &Case) -> Result<Span<BigRational>, String> {
+pub fn case_span(c: &Case) -> Result<Span<BigRational>, VectorError> {
     let id = &c.id;
     if c.n == 0 || c.n > MAX_CASE_STEPS {
-        return Err(format!(
-            "case {id}: n = {} is outside 1..={MAX_CASE_STEPS}",
-            c.n
+        return Err(VectorError::case(
+            id,
+            format!("n = {} is outside 1..={MAX_CASE_STEPS}", c.n),
         ));
     }
     let v = |x, what: &str| {
-        exact_input(x).ok_or_else(|| format!("case {id}: {what} is not three exact numbers"))
+        exact_input(x)
+            .ok_or_else(|| VectorError::case(id, format!("{what} is not three exact numbers")))
     };
     Span::new(v(&c.na, "na")?, v(&c.nb, "nb")?, v(&c.l, "l")?, c.n)
-        .map_err(|e| format!("case {id}: {e}"))
+        .map_err(|e| VectorError::case(id, format!("{e}")))
 }
 
 /// The nearest `f64` to the exact `x` read from `v`: Rust's parser of a plain decimal
@@ -125,27 +166,34 @@ fn check_expected(
     n: u32,
     e: &Expected,
     range: Option<f64>,
-) -> Result<(), String> {
+) -> Result<(), VectorError> {
     let len = n as usize + 1;
     if e.values.len() != len || e.levels.len() != len {
-        return Err(format!(
-            "case {id}: {what} has {} values and {} levels, the span has {len} pixels",
-            e.values.len(),
-            e.levels.len()
+        return Err(VectorError::case(
+            id,
+            format!(
+                "{what} has {} values and {} levels, the span has {len} pixels",
+                e.values.len(),
+                e.levels.len()
+            ),
         ));
     }
     for (i, (v, &l)) in e.values.iter().zip(&e.levels).enumerate() {
-        let x = parse_rational(v)
-            .map_err(|_| format!("case {id}: {what} value {i} is not a decimal number"))?;
+        let x = parse_rational(v).map_err(|_| {
+            VectorError::case(id, format!("{what} value {i} is not a decimal number"))
+        })?;
         let f = nearest_f64(v, &x);
         let ok = match range {
             Some(r) => f.abs() <= r,
             None => f >= 0.0 && f.is_finite(),
         };
         if !ok {
-            return Err(format!(
-                "case {id}: {what} value {i} = {} is out of range",
-                crate::conformance::shown(v)
+            return Err(VectorError::case(
+                id,
+                format!(
+                    "{what} value {i} = {} is out of range",
+                    crate::conformance::shown(v)
+                ),
             ));
         }
         let lv = exact_level(&x);
@@ -154,9 +202,12 @@ fn check_expected(
         let scaled = f * 255.0;
         let near_boundary = (scaled - scaled.round()).abs() < 1e-9;
         if lv != l && !(near_boundary && lv.abs_diff(l) == 1) {
-            return Err(format!(
-                "case {id}: {what} pixel {i}: level {l} is not the level of value {} ({lv})",
-                crate::conformance::shown(v)
+            return Err(VectorError::case(
+                id,
+                format!(
+                    "{what} pixel {i}: level {l} is not the level of value {} ({lv})",
+                    crate::conformance::shown(v)
+                ),
             ));
         }
     }
@@ -171,81 +222,83 @@ fn check_expected(
 ///
 /// # Errors
 /// The first problem found, naming the case.
-pub fn validate(file: &VectorFile) -> Result<Vec<Option<Shape>>, String> {
+pub fn validate(file: &VectorFile) -> Result<Vec<Option<Shape>>, VectorError> {
     let major = file.version.split('.').next().unwrap_or("");
     if major != "1" {
-        return Err(format!(
+        return Err(VectorError::file(format!(
             "version '{}' is not supported (this checker reads 1.x)",
             crate::conformance::shown(&file.version)
-        ));
+        )));
     }
     if file.cases.len() > MAX_CASES {
-        return Err(format!("more than {MAX_CASES} cases"));
+        return Err(VectorError::file(format!("more than {MAX_CASES} cases")));
     }
     if file.cases.is_empty() {
-        return Err("the file has no cases".into());
+        return Err(VectorError::file("the file has no cases"));
     }
     if file.number_of_cases != file.cases.len() {
-        return Err(format!(
+        return Err(VectorError::file(format!(
             "number_of_cases is {} but the file holds {} cases",
             file.number_of_cases,
             file.cases.len()
-        ));
+        )));
     }
     let known = method_keys();
     if file.methods.is_empty() {
-        return Err("the file lists no methods".into());
+        return Err(VectorError::file("the file lists no methods"));
     }
     for m in &file.methods {
         if !known.contains(m) {
-            return Err(format!(
+            return Err(VectorError::file(format!(
                 "unknown method '{}' (known: {})",
                 crate::conformance::shown(m),
                 known.join(", ")
-            ));
+            )));
         }
     }
     let mut ids = std::collections::HashSet::new();
     let mut shapes = Vec::with_capacity(file.cases.len());
     for c in &file.cases {
         if c.id.is_empty() || !ids.insert(c.id.as_str()) {
-            return Err(format!(
+            return Err(VectorError::file(format!(
                 "case id '{}' is empty or not unique",
                 crate::conformance::shown(&c.id)
-            ));
+            )));
         }
         let span = case_span(c)?;
         let q = span.q_min().to_f64();
         if !(c.q_min.is_finite() && c.q_min > 0.0 && (c.q_min - q).abs() <= 1e-12 * q) {
-            return Err(format!(
-                "case {}: q_min = {} but the span's is {q}",
-                c.id, c.q_min
+            return Err(VectorError::case(
+                &c.id,
+                format!("q_min = {} but the span's is {q}", c.q_min),
             ));
         }
         if c.decision != "gouraud" && c.decision != "corrected-euler" {
-            return Err(format!("case {}: unknown decision", c.id));
+            return Err(VectorError::case(&c.id, "unknown decision"));
         }
         if parse_rational(&c.delta).is_err() {
-            return Err(format!("case {}: delta is not a number", c.id));
+            return Err(VectorError::case(&c.id, "delta is not a number"));
         }
         for m in &file.methods {
-            let e = c
-                .expected
-                .get(m)
-                .ok_or_else(|| format!("case {}: no expectations for method {m}", c.id))?;
+            let e = c.expected.get(m).ok_or_else(|| {
+                VectorError::case(&c.id, format!("no expectations for method {m}"))
+            })?;
             check_expected(&c.id, m, c.n, e, Some(value_range(m, &span)))?;
         }
         if let Some(sp) = &c.specular {
             let h = exact_input(&sp.h)
-                .ok_or_else(|| format!("case {}: h is not three exact numbers", c.id))?;
+                .ok_or_else(|| VectorError::case(&c.id, "h is not three exact numbers"))?;
             Span::new(span.na.clone(), span.nb.clone(), h, c.n)
-                .map_err(|e| format!("case {}: specular: {e}", c.id))?;
+                .map_err(|e| VectorError::case(&c.id, format!("specular: {e}")))?;
             if sp.s == 0 || sp.s > super::vectors::MAX_SHININESS {
-                return Err(format!("case {}: shininess {} out of range", c.id, sp.s));
+                return Err(VectorError::case(
+                    &c.id,
+                    format!("shininess {} out of range", sp.s),
+                ));
             }
             for m in &file.methods {
                 let e = sp.expected.get(m).ok_or_else(|| {
-                    format!("case {}: no specular expectations for method {m}", c.id)
+                    VectorError::case(&c.id, format!("no specular expectations for method {m}"))
                 })?;
                 check_expected(&c.id, &format!("specular {m}"), c.n, e, None)?;
             }

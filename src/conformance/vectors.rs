@@ -240,11 +240,11 @@ pub const SETS: [&str; 3] = ["typical", "edge", "paper"];
 /// # Errors
 /// The unknown set's name; a case whose level at some pixel the exact run cannot
 /// decide (named, with the method and pixel).
-pub fn generate(set: &str) -> Result<VectorFile, String> {
+pub fn generate(set: &str) -> Result<VectorFile, crate::conformance::integrity::VectorError> {
     let cases = specs(set)?
         .into_iter()
         .map(CaseSpec::compute)
-        .collect::<Result<Vec<Case>, String>>()?;
+        .collect::<Result<Vec<Case>, _>>()?;
     Ok(file_of(set, cases))
 }
 

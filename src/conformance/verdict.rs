@@ -98,7 +98,7 @@ pub fn load_vectors(
         drop(text);
         recompute(name, &inputs, method, specular)?
     };
-    let shapes = validate(&file).map_err(vectors_error)?;
+    let shapes = validate(&file).map_err(|e| vectors_error(e.to_string()))?;
     let key = method_key(method);
     if !file.methods.contains(&key) {
         return Err(missing_method(name, &key, &file.methods));
@@ -215,7 +215,9 @@ fn recompute(
              more than {MAX_RECOMPUTED_WORK} (about half a minute); split the file"
         )));
     }
-    inputs.recompute(method, specular).map_err(bad)
+    inputs
+        .recompute(method, specular)
+        .map_err(|e| bad(e.to_string()))
 }
 
 /// The verdict as text: a heading line (diffuse or specular, version, set, cases,

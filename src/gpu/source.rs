@@ -45,7 +45,7 @@ impl Source {
             }
             "spv" => {
                 let bytes = std::fs::read(path).map_err(|e| err(format!("cannot read it: {e}")))?;
-                spirv_words(&bytes).map(Source::SpirV).map_err(err)
+                spirv_words(&bytes, &shown).map(Source::SpirV)
             }
             "comp" | "glsl" => glslang(path, &shown),
             _ => Err(err(format!(
@@ -84,23 +84,28 @@ fn private_dir(name: &str) -> Result<tempfile::TempDir, GpuError> {
         })
 }
 
-/// SPIR-V bytes as words (little-endian, the magic number checked).
-fn spirv_words(bytes: &[u8]) -> Result<Vec<u32>, String> {
+/// SPIR-V bytes as words (little-endian, the magic number checked); a refusal names
+/// the kernel `path`.
+fn spirv_words(bytes: &[u8], path: &str) -> Result<Vec<u32>, GpuError> {
+    let bad = |message: String| GpuError::Source {
+        path: path.into(),
+        message,
+    };
     if !bytes.len().is_multiple_of(4) || bytes.len() < 20 {
-        return Err(format!(
+        return Err(bad(format!(
             "{} bytes is not a SPIR-V module (a header of 5 words, then whole words)",
             bytes.len()
-        ));
+        )));
     }
     let words: Vec<u32> = bytes
         .chunks_exact(4)
         .map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]]))
         .collect();
     if words[0] != 0x0723_0203 {
-        return Err(format!(
+        return Err(bad(format!(
             "not a SPIR-V module (magic number 0x{:08x}, expected 0x07230203)",
             words[0]
-        ));
+        )));
     }
     Ok(words)
 }
@@ -147,10 +152,5 @@ fn glslang(path: &Path, shown: &str) -> Result<Source, GpuError> {
         path: shown.into(),
         message: format!("glslang's output cannot be read: {e}"),
     })?;
-    spirv_words(&bytes)
-        .map(Source::SpirV)
-        .map_err(|message| GpuError::Source {
-            path: shown.into(),
-            message,
-        })
+    spirv_words(&bytes, shown).map(Source::SpirV)
 }

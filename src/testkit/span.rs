@@ -25,7 +25,7 @@ pub enum KitError {
     TooLong(u32),
     /// The exact reference cannot give the case (a level it cannot decide, say).
     #[error("the exact reference cannot give this span: {0}")]
-    Oracle(String),
+    Oracle(crate::conformance::integrity::VectorError),
 }
 
 /// The most steps [`check_span`] takes: its exact oracle costs about `n` times a few

@@ -2,6 +2,7 @@
 //! decided to levels, the specular values, from a [`CaseSpec`].
 
 use super::*;
+use crate::conformance::integrity::VectorError;
 
 fn fraction(x: &BigRational) -> String {
     x.to_string()
@@ -18,13 +19,15 @@ fn input(v: &Vec3<BigRational>) -> VectorInput {
 
 /// Decided levels, or the message naming the first pixel whose level the exact run
 /// cannot decide (its value within its error of a level boundary).
-fn decided(levels: Vec<Option<u8>>, method: Method, what: &str) -> Result<Vec<u8>, String> {
+fn decided(levels: Vec<Option<u8>>, method: Method, what: &str) -> Result<Vec<u8>, VectorError> {
     levels
         .into_iter()
         .enumerate()
         .map(|(i, l)| {
             l.ok_or_else(|| {
-                format!("{method}: the {what} level of pixel {i} is not decided by the exact run")
+                VectorError::file(format!(
+                    "{method}: the {what} level of pixel {i} is not decided by the exact run"
+                ))
             })
         })
         .collect()
@@ -36,7 +39,7 @@ fn decided(levels: Vec<Option<u8>>, method: Method, what: &str) -> Result<Vec<u8
 fn exact_run(
     method: Method,
     span: &Span<BigRational>,
-) -> Result<crate::span_report::ExactRun, String> {
+) -> Result<crate::span_report::ExactRun, VectorError> {
     use crate::span_report::{exact_run, Arithmetic, Request};
     exact_run(&Request {
         method,
@@ -49,12 +52,12 @@ fn exact_run(
         digits: DIGITS,
         arithmetic: Arithmetic::Exact,
     })
-    .map_err(|e| format!("{method}: {}", e.message))
+    .map_err(|e| VectorError::file(format!("{method}: {}", e.message)))
 }
 
 /// The exact expectations of `method` on `span` (values to [`DIGITS`] digits, every
 /// one known; levels decided exactly, [`Method::exact_levels`]).
-fn expected(method: Method, span: &Span<BigRational>) -> Result<Expected, String> {
+fn expected(method: Method, span: &Span<BigRational>) -> Result<Expected, VectorError> {
     let run = exact_run(method, span)?;
     let levels = decided(run.levels, method, "diffuse")?;
     Ok(Expected {
@@ -70,7 +73,7 @@ fn specular_expected(
     method: Method,
     span_h: &Span<BigRational>,
     s: u32,
-) -> Result<Expected, String> {
+) -> Result<Expected, VectorError> {
     let run = exact_run(method, span_h)?;
     let base = run.values;
     let v: Vec<BigRational> = base.iter().map(|x| power(x, s)).collect();
@@ -79,9 +82,9 @@ fn specular_expected(
         for (i, x) in base.iter().enumerate() {
             let (lo, hi) = (power(&(x - &e), s), power(&(x + &e), s));
             if lo.to_decimal(DIGITS) != hi.to_decimal(DIGITS) {
-                return Err(format!(
+                return Err(VectorError::file(format!(
                     "{method}: the specular value of pixel {i} is not known to {DIGITS} digits"
-                ));
+                )));
             }
         }
     }
@@ -149,7 +152,7 @@ impl CaseSpec {
     /// # Errors
     /// A level at some pixel that the exact run cannot decide (named, with the method
     /// and pixel).
-    pub fn compute(self) -> Result<Case, String> {
+    pub fn compute(self) -> Result<Case, VectorError> {
         let CaseSpec {
             id,
             comment,
@@ -173,7 +176,7 @@ pub(crate) fn case_for_span(
     id: &str,
     comment: &str,
     span: &Span<BigRational>,
-) -> Result<Case, String> {
+) -> Result<Case, VectorError> {
     let (na, nb, l) = (span.na.clone(), span.nb.clone(), span.l.clone());
     compute_case_for(methods, id.to_string(), comment, na, nb, l, span.n, None)
 }
@@ -189,9 +192,10 @@ pub(super) fn compute_case_for(
     l: Vec3<BigRational>,
     n: u32,
     h: Option<(Vec3<BigRational>, u32)>,
-) -> Result<Case, String> {
-    let at = |e: String| format!("{id}: {e}");
-    let span = Span::new(na.clone(), nb.clone(), l.clone(), n).map_err(|e| format!("{id}: {e}"))?;
+) -> Result<Case, VectorError> {
+    let at = |e: VectorError| VectorError::case(&id, e.problem);
+    let span = Span::new(na.clone(), nb.clone(), l.clone(), n)
+        .map_err(|e| VectorError::case(&id, e.to_string()))?;
     let q_min = (0..=n)
         .map(|i| span.q_at(i).to_f64())
         .fold(f64::INFINITY, f64::min);
@@ -199,15 +203,15 @@ pub(super) fn compute_case_for(
     let expected = methods
         .iter()
         .map(|&m| Ok((method_key(m), self::expected(m, &span)?)))
-        .collect::<Result<_, String>>()
+        .collect::<Result<_, VectorError>>()
         .map_err(at)?;
-    let specular = h.map(|(h, s)| -> Result<SpecularCase, String> {
+    let specular = h.map(|(h, s)| -> Result<SpecularCase, VectorError> {
         let span_h = Span::new(na.clone(), nb.clone(), h.clone(), n)
-            .map_err(|e| format!("specular: {e}"))?;
+            .map_err(|e| VectorError::file(format!("specular: {e}")))?;
         let expected = methods
             .iter()
             .map(|&m| Ok((method_key(m), specular_expected(m, &span_h, s)?)))
-            .collect::<Result<_, String>>()?;
+            .collect::<Result<_, VectorError>>()?;
         Ok(SpecularCase {
             h: input(&h),
             s,

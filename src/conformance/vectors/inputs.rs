@@ -3,6 +3,7 @@
 //! with the exact reference.
 
 use super::*;
+use crate::conformance::integrity::VectorError;
 
 /// A case as `check` reads it from a vector file that is not published
 /// (`--allow-modified-vectors`): its inputs only. Whatever expectations the file holds
@@ -66,27 +67,27 @@ pub fn exact_input(v: &VectorInput) -> Option<Vec3<BigRational>> {
 
 /// Whether a file's `f32` and `f64` forms of an input are the nearest floats to its
 /// exact value (`ours`, as [`input`] writes them).
-fn same_floats(theirs: &VectorInput, ours: &VectorInput) -> Result<(), String> {
+fn same_floats(theirs: &VectorInput, ours: &VectorInput) -> Result<(), VectorError> {
     for i in 0..3 {
         let t32 = theirs.f32[i].trim().parse::<f32>();
         let t64 = theirs.f64[i].trim().parse::<f64>();
         let o32 = ours.f32[i].parse::<f32>();
         let o64 = ours.f64[i].parse::<f64>();
         if t32.ok().map(f32::to_bits) != o32.ok().map(f32::to_bits) {
-            return Err(format!(
+            return Err(VectorError::file(format!(
                 "component {}: the f32 form '{}' is not the nearest f32 to the exact value ({})",
                 i + 1,
                 crate::conformance::shown(&theirs.f32[i]),
                 ours.f32[i]
-            ));
+            )));
         }
         if t64.ok().map(f64::to_bits) != o64.ok().map(f64::to_bits) {
-            return Err(format!(
+            return Err(VectorError::file(format!(
                 "component {}: the f64 form '{}' is not the nearest f64 to the exact value ({})",
                 i + 1,
                 crate::conformance::shown(&theirs.f64[i]),
                 ours.f64[i]
-            ));
+            )));
         }
     }
     Ok(())
@@ -103,34 +104,34 @@ impl InputsFile {
     /// A case whose inputs are not exact unit vectors, whose `n` is out of range, whose
     /// shininess is outside `1..=`[`MAX_SHININESS`] (checked for every case before any
     /// work), or whose level or digits the exact run cannot decide (named).
-    pub fn recompute(&self, method: Method, specular: bool) -> Result<VectorFile, String> {
+    pub fn recompute(&self, method: Method, specular: bool) -> Result<VectorFile, VectorError> {
         if let Some(c) = self.cases.iter().find(|c| {
             c.specular
                 .as_ref()
                 .is_some_and(|sp| sp.s == 0 || sp.s > MAX_SHININESS)
         }) {
-            return Err(format!(
-                "case {}: shininess {} is outside 1..={MAX_SHININESS}",
-                crate::conformance::shown(&c.id),
-                c.specular.as_ref().map_or(0, |sp| sp.s)
+            return Err(VectorError::case(
+                &crate::conformance::shown(&c.id),
+                format!(
+                    "shininess {} is outside 1..={MAX_SHININESS}",
+                    c.specular.as_ref().map_or(0, |sp| sp.s)
+                ),
             ));
         }
         let v = |c: &CaseInputs, x: &VectorInput, what: &str| {
             exact_input(x).ok_or_else(|| {
-                format!(
-                    "case {}: {what} is not three exact numbers",
-                    crate::conformance::shown(&c.id)
+                VectorError::case(
+                    &crate::conformance::shown(&c.id),
+                    format!("{what} is not three exact numbers"),
                 )
             })
         };
         let mut cases = Vec::with_capacity(self.cases.len());
         for c in &self.cases {
             if c.n == 0 || c.n > MAX_CASE_STEPS {
-                return Err(format!(
-                    "case {}: n = {} is outside 1..={}",
-                    crate::conformance::shown(&c.id),
-                    c.n,
-                    MAX_CASE_STEPS
+                return Err(VectorError::case(
+                    &crate::conformance::shown(&c.id),
+                    format!("n = {} is outside 1..={MAX_CASE_STEPS}", c.n),
                 ));
             }
             let h = match &c.specular {
@@ -162,7 +163,10 @@ impl InputsFile {
             }
             for (what, theirs, ours) in pairs {
                 same_floats(theirs, ours).map_err(|e| {
-                    format!("case {}: {what}: {e}", crate::conformance::shown(&c.id))
+                    VectorError::case(
+                        &crate::conformance::shown(&c.id),
+                        format!("{what}: {}", e.problem),
+                    )
                 })?;
             }
             cases.push(case);

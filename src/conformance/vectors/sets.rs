@@ -356,13 +356,14 @@ fn paper() -> Vec<CaseSpec> {
 ///
 /// # Errors
 /// The unknown set's name.
-pub fn specs(set: &str) -> Result<Vec<CaseSpec>, String> {
+pub fn specs(set: &str) -> Result<Vec<CaseSpec>, crate::conformance::integrity::VectorError> {
     match set {
         "typical" => Ok(typical()),
         "edge" => Ok(edge()),
         "paper" => Ok(paper()),
-        other => Err(format!(
-            "unknown set '{other}' (expected typical, edge or paper)"
-        )),
+        other => Err(crate::conformance::integrity::VectorError::file(format!(
+            "unknown set '{}' (expected typical, edge or paper)",
+            crate::conformance::shown(other)
+        ))),
     }
 }

@@ -242,6 +242,29 @@ fn verdict(m: &Mutant, file: &VectorFile, profile: Profile) -> (usize, usize, bo
     (failed, reports.len(), no_bound)
 }
 
+/// Whether an adaptive mutant accepted under a fixed-point profile is accepted
+/// because that profile does not pin the decision: a unit with `F` fractional bits
+/// rounds `δ` by up to `e_δ = h(2k + T)` (`fixed_point_adaptive_delta_error`), so on a
+/// case with `|255·|δ| − 1| ≤ 255·e_δ` it may pick either method
+/// (`fixed_point_adaptive_decision`), and at 16.16 that band holds every case whose
+/// pick the decision mutants change. Checked, not assumed: every case on which the
+/// mutant's pick differs from the exact test's must lie in the band.
+fn decision_unpinned(m: &Mutant, file: &VectorFile, profile: Profile) -> bool {
+    let Profile::Fixed { frac_bits, .. } = profile else {
+        return false;
+    };
+    if m.method != Method::Adaptive {
+        return false;
+    }
+    file.cases.iter().all(|c| {
+        let picked_gouraud = (m.run)(c) == gouraud_run(&setup(c, false, false), c.n);
+        let exact_gouraud = c.decision == "gouraud";
+        let delta: f64 = c.delta.parse().unwrap();
+        let band = phong_approx::tolerance::profile::fixed_adaptive_band(c.n, frac_bits);
+        picked_gouraud == exact_gouraud || ((255.0 * delta).abs() - 1.0).abs() <= 255.0 * band
+    })
+}
+
 #[test]
 fn every_mutant_is_rejected_under_every_profile_on_every_set() {
     let files: Vec<VectorFile> = SETS.iter().map(|s| committed(s)).collect();
@@ -255,7 +278,7 @@ fn every_mutant_is_rejected_under_every_profile_on_every_set() {
                 .zip(&files)
                 .map(|(set, f)| {
                     let (failed, total, no_bound) = verdict(m, f, profile);
-                    if failed == 0 {
+                    if failed == 0 && !decision_unpinned(m, f, profile) {
                         missed.push(format!("{} / {profile} / {set}", m.name));
                     }
                     if no_bound {

@@ -86,6 +86,7 @@ pub mod lowp;
 pub mod method;
 pub mod parse;
 pub mod phong;
+pub mod profile;
 pub mod quantize;
 #[cfg(feature = "harness")]
 pub mod raster;

@@ -32,8 +32,8 @@ mod profiles;
 pub use list::Method;
 
 pub use catalogue::{
-    Bound, DerivedForm, Family, FixedBound, FloatBound, FloatProfile, Info, Needs, PhongPixels,
-    ProfileBounds, Proved, ValueRange, WholeSpan,
+    Bound, DerivedForm, Family, FixedBound, FloatBound, Info, Needs, PhongPixels, ProfileBounds,
+    Proved, ValueRange, WholeSpan,
 };
 
 /// The table size of the second source's byte angles.

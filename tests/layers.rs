@@ -23,6 +23,7 @@ const LAYERS: &[(&str, u32)] = &[
     // The number types.
     ("scalar.rs", 1),
     ("format.rs", 1),
+    ("profile.rs", 1),
     ("vector.rs", 2),
     ("lowp.rs", 2),
     ("quantize.rs", 2),

@@ -255,3 +255,24 @@ fn a_declared_form_takes_its_own_theorems() {
     }
     assert!("horner".parse::<Form>().is_err());
 }
+
+/// Each theorem row states its form ([`phong_approx::method::Proved::closed`]); the
+/// statement agrees: a closed form's bound does not grow with `n` (α = 0) and its
+/// theorem is named `_closed`, a recurrence's grows.
+#[test]
+fn every_theorem_row_states_its_form() {
+    let mut closed = 0;
+    for m in Method::ALL {
+        for p in [Profile::Ieee, Profile::Shader] {
+            for f in [Format::Binary32, Format::Binary64] {
+                for t in proved(m, p, f).unwrap_or_default() {
+                    assert_eq!(t.closed, t.alpha == 0.0, "{}", t.theorem);
+                    assert_eq!(t.closed, t.theorem.contains("_closed"), "{}", t.theorem);
+                    assert_eq!(t.profile, p, "{}", t.theorem);
+                    closed += usize::from(t.closed);
+                }
+            }
+        }
+    }
+    assert_eq!(closed, 12);
+}

@@ -29,45 +29,7 @@ pub fn published() -> impl Iterator<Item = (&'static str, &'static str)> {
 
 pub use super::vectors::MAX_CASE_STEPS;
 
-/// What is wrong with a vector file: the case at fault (`None` for the file as a
-/// whole: its version, its case count, its method list) and the problem in words.
-#[derive(Clone, Debug, PartialEq, Eq)]
-#[non_exhaustive]
-pub struct VectorError {
-    /// The id of the case at fault, if one is.
-    pub case: Option<String>,
-    /// The problem, in words.
-    pub problem: String,
-}
-
-impl std::fmt::Display for VectorError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        match &self.case {
-            Some(id) => write!(f, "case {id}: {}", self.problem),
-            None => f.write_str(&self.problem),
-        }
-    }
-}
-
-impl std::error::Error for VectorError {}
-
-impl VectorError {
-    /// A problem of the case `id`.
-    pub fn case(id: &str, problem: impl Into<String>) -> Self {
-        VectorError {
-            case: Some(id.to_string()),
-            problem: problem.into(),
-        }
-    }
-
-    /// A problem of the file as a whole.
-    pub fn file(problem: impl Into<String>) -> Self {
-        VectorError {
-            case: None,
-            problem: problem.into(),
-        }
-    }
-}
+pub use super::vectors::VectorError;
 
 pub use crate::budget::{exact_work, input_bits, MAX_RECOMPUTED_WORK};
 

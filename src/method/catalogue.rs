@@ -12,9 +12,7 @@ use crate::span::Span;
 use crate::BigRational;
 use std::fmt;
 
-pub use super::profiles::{
-    DerivedForm, FixedBound, FloatBound, FloatProfile, ProfileBounds, Proved,
-};
+pub use super::profiles::{DerivedForm, FixedBound, FloatBound, ProfileBounds, Proved};
 
 /// What a method asks of the number type.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -100,23 +100,14 @@ impl FixedBound {
     }
 }
 
-/// A float profile with Coq theorems (`proofs/Profiles.v`).
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum FloatProfile {
-    /// IEEE with round to nearest, any order and fusion (`docs/float.md` §18.1).
-    Ieee,
-    /// The Vulkan/WGSL precision rules for 32-bit floats.
-    Shader,
-}
-
 /// A bound `(α·n + β)·u` proved for a class of implementations (a float profile, a
 /// format, one form of the method), with the largest `n` it is proved for: the
 /// statement of a theorem of `proofs/Profiles.v` (`tests/claims_index.rs` reads the
 /// statements and fails when a constant here differs).
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct Proved {
-    /// The profile.
-    pub profile: FloatProfile,
+    /// The profile: [`Profile::Ieee`] or [`Profile::Shader`].
+    pub profile: Profile,
     /// The format.
     pub format: crate::Format,
     /// `α`.
@@ -127,6 +118,10 @@ pub struct Proved {
     pub max_n: u32,
     /// The theorem's name in `proofs/Profiles.v`.
     pub theorem: &'static str,
+    /// Whether the theorem is of the closed form in `i` (no loop-carried sum; its
+    /// bound does not grow with `n`), not of the recurrence: what a declared form
+    /// (`check --form`) selects.
+    pub closed: bool,
 }
 
 impl Proved {
@@ -137,7 +132,7 @@ impl Proved {
 }
 
 const fn p(
-    profile: FloatProfile,
+    profile: Profile,
     format: crate::Format,
     (alpha, beta): (f64, f64),
     max_n: u32,
@@ -150,11 +145,27 @@ const fn p(
         beta,
         max_n,
         theorem,
+        closed: false,
     }
 }
 
+/// [`p`] for a theorem of the closed form.
+const fn closed(
+    profile: Profile,
+    format: crate::Format,
+    constants: (f64, f64),
+    max_n: u32,
+    theorem: &'static str,
+) -> Proved {
+    Proved {
+        closed: true,
+        ..p(profile, format, constants, max_n, theorem)
+    }
+}
+
+use crate::profile::Profile;
 use crate::Format::{Binary32 as B32, Binary64 as B64};
-use FloatProfile::{Ieee, Shader};
+use Profile::{Ieee, Shader};
 
 /// Gouraud's (`g += dp`): under `shader` the `_recip` recurrence first — it covers both ways of dividing, so it names the bound.
 pub const GOURAUD_THEOREMS: &[Proved] = &[
@@ -197,7 +208,7 @@ pub const CORRECTED_EULER_THEOREMS: &[Proved] = &[
         4096,
         "profile_ieee_corrected_euler_binary32",
     ),
-    p(
+    closed(
         Ieee,
         B32,
         (0.0, 59.61),
@@ -211,7 +222,7 @@ pub const CORRECTED_EULER_THEOREMS: &[Proved] = &[
         1 << 24,
         "profile_ieee_corrected_euler_binary64_large",
     ),
-    p(
+    closed(
         Ieee,
         B64,
         (0.0, 59.61),
@@ -232,28 +243,28 @@ pub const CORRECTED_EULER_THEOREMS: &[Proved] = &[
         4096,
         "profile_shader_corrected_euler_binary32",
     ),
-    p(
+    closed(
         Shader,
         B32,
         (0.0, 126.5),
         4096,
         "profile_shader_corrected_euler_closed_binary32",
     ),
-    p(
+    closed(
         Shader,
         B32,
         (0.0, 141.11),
         4096,
         "profile_shader_corrected_euler_closed_recip_binary32",
     ),
-    p(
+    closed(
         Shader,
         B32,
         (0.0, 131.5),
         4096,
         "profile_shader_corrected_euler_closed_half_binary32",
     ),
-    p(
+    closed(
         Shader,
         B32,
         (0.0, 148.11),
@@ -271,7 +282,7 @@ pub const EULER_THEOREMS: &[Proved] = &[
         4096,
         "profile_ieee_euler_binary32",
     ),
-    p(
+    closed(
         Ieee,
         B32,
         (0.0, 131.41),
@@ -285,7 +296,7 @@ pub const EULER_THEOREMS: &[Proved] = &[
         1 << 24,
         "profile_ieee_euler_binary64_large",
     ),
-    p(
+    closed(
         Ieee,
         B64,
         (0.0, 131.41),
@@ -306,28 +317,28 @@ pub const EULER_THEOREMS: &[Proved] = &[
         4096,
         "profile_shader_euler_binary32",
     ),
-    p(
+    closed(
         Shader,
         B32,
         (0.0, 277.9),
         4096,
         "profile_shader_euler_closed_binary32",
     ),
-    p(
+    closed(
         Shader,
         B32,
         (0.0, 308.11),
         4096,
         "profile_shader_euler_closed_recip_binary32",
     ),
-    p(
+    closed(
         Shader,
         B32,
         (0.0, 281.65),
         4096,
         "profile_shader_euler_closed_half_binary32",
     ),
-    p(
+    closed(
         Shader,
         B32,
         (0.0, 313.36),

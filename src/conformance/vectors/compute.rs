@@ -2,7 +2,6 @@
 //! decided to levels, the specular values, from a [`CaseSpec`].
 
 use super::*;
-use crate::conformance::integrity::VectorError;
 
 fn fraction(x: &BigRational) -> String {
     x.to_string()

@@ -3,7 +3,6 @@
 //! with the exact reference.
 
 use super::*;
-use crate::conformance::integrity::VectorError;
 
 /// A case as `check` reads it from a vector file that is not published
 /// (`--allow-modified-vectors`): its inputs only. Whatever expectations the file holds

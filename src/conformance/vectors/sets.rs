@@ -356,12 +356,12 @@ fn paper() -> Vec<CaseSpec> {
 ///
 /// # Errors
 /// The unknown set's name.
-pub fn specs(set: &str) -> Result<Vec<CaseSpec>, crate::conformance::integrity::VectorError> {
+pub fn specs(set: &str) -> Result<Vec<CaseSpec>, super::VectorError> {
     match set {
         "typical" => Ok(typical()),
         "edge" => Ok(edge()),
         "paper" => Ok(paper()),
-        other => Err(crate::conformance::integrity::VectorError::file(format!(
+        other => Err(super::VectorError::file(format!(
             "unknown set '{}' (expected typical, edge or paper)",
             crate::conformance::shown(other)
         ))),

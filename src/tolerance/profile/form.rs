@@ -51,13 +51,13 @@ impl Form {
         })
     }
 
-    /// Whether a theorem's bound `(α·n + β)·u` is of this form: a closed form's has
-    /// `α = 0`, a recurrence's grows with `n`.
+    /// Whether a theorem is of this form, as its catalogue row states
+    /// ([`Proved::closed`]).
     pub(super) fn covers(self, p: &Proved) -> bool {
         match self {
             Form::Any => true,
-            Form::Recurrence => p.alpha > 0.0,
-            Form::Closed => p.alpha == 0.0,
+            Form::Recurrence => !p.closed,
+            Form::Closed => p.closed,
         }
     }
 }

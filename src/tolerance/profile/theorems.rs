@@ -45,17 +45,15 @@ use crate::Format;
 /// `0.5`. Not covered by any theorem: `n(n−1)/2` formed by a 2.5-ulp `/2` or with a
 /// computed `1/2`.
 pub fn proved(method: crate::Method, profile: Profile, format: Format) -> Option<Vec<Proved>> {
-    use crate::method::{FloatBound, FloatProfile};
+    use crate::method::FloatBound;
     // The theorems are the catalogue row's ([`crate::method::ProfileBounds`]).
     let FloatBound::Proved(theorems) = method.info().profiles.float else {
         return None;
     };
-    let profile = match profile {
-        Profile::Ieee => FloatProfile::Ieee,
-        Profile::Shader => FloatProfile::Shader,
-        // The reference and fixed-point profiles have bounds of their own.
-        Profile::Reference | Profile::Fixed { .. } => return None,
-    };
+    // The reference and fixed-point profiles have bounds of their own.
+    if !matches!(profile, Profile::Ieee | Profile::Shader) {
+        return None;
+    }
     let forms: Vec<Proved> = theorems
         .iter()
         .filter(|t| t.profile == profile && t.format == format)

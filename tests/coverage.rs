@@ -267,3 +267,53 @@ fn the_hardware_cost_table_is_of_the_current_units() {
         "the units changed since the cost table was made: run harness/hdl/synth/cost.sh --write"
     );
 }
+
+/// The README's method table and lib.rs's are the catalogue's: every method of
+/// `Method::ALL` is a row of the README's (by its `--method` name, the tabled angular
+/// method as `angular-table256`) with its module, and every module of lib.rs's rows
+/// is a method's; no row names a method the catalogue lacks.
+#[test]
+fn the_method_tables_of_readme_and_lib_are_the_catalogues() {
+    let readme = read("README.md");
+    let rows: Vec<&str> = readme
+        .lines()
+        .skip_while(|l| !l.starts_with("| method (`--method`) |"))
+        .skip(2)
+        .take_while(|l| l.starts_with('|'))
+        .collect();
+    let mut listed = std::collections::BTreeSet::new();
+    for r in &rows {
+        let first = r.split('|').nth(1).unwrap();
+        for name in first.split('`').skip(1).step_by(2) {
+            listed.insert(name.to_string());
+        }
+    }
+    let lib = read("src/lib.rs");
+    for m in Method::ALL {
+        let name = m.name().into_owned();
+        assert!(
+            listed.remove(&name),
+            "README's method table has no row for {name}"
+        );
+        let module = m.info().module;
+        let row = rows
+            .iter()
+            .find(|r| r.split('|').nth(1).unwrap().contains(&format!("`{name}`")))
+            .unwrap();
+        let last = module.rsplit("::").next().unwrap();
+        assert!(
+            row.contains(&format!("[`{module}`]")) || row.contains(&format!("`{last}`")),
+            "README's row of {name} does not name its module {module}: {row}"
+        );
+        if !module.contains("::") && m.info().family != phong_approx::method::Family::Related {
+            assert!(
+                lib.contains(&format!("[`{module}`]")),
+                "lib.rs's method table lacks {module} ({name})"
+            );
+        }
+    }
+    assert!(
+        listed.is_empty(),
+        "README's table names methods the catalogue lacks: {listed:?}"
+    );
+}

@@ -46,7 +46,7 @@
     reciprocal forms kd u <= 2^-21. *)
 
 From Coq Require Import Reals Lra Lia.
-From PhongApprox Require Import Span FloatModel Float FloatModelK Profiles PhongCount.
+From PhongApprox Require Import Span FloatModel Float FloatModelK Profiles PhongCount PhongCountD.
 From PhongApprox Require Symmetry.
 Open Scope R_scope.
 
@@ -498,11 +498,8 @@ Theorem duff_div_generic : forall (M : fmodel) (K K1 : R), model_ok M K ->
 Proof.
   intros M K K1 HM HK1 Hin Hadd Hmul Hdiv s na nb l kk P Q G Ha Hb Hl Hn1 Hn2 Hnw
     Ina Inb Inl (tx & Htx & Hkx) (ty & Hty & Hky) (tz & Htz & Hkz) H.
-  pose proof HM as (_ & _ & _ & _ & _ & _ & [_ Hdk] & _ & H9).
-  assert (k_div M * m_u M <= / 2097152).
-  { assert (k_div M * m_u M <= K * m_u M)
-      by (apply Rmult_le_compat_r; [left; apply (model_u M K HM) | exact Hdk]). lra. }
-  eapply (duff_model M K K1 (k_div M) HM HK1 Hin Hadd Hmul Hdiv); eassumption.
+  exact (duff_model M K K1 (k_div M) HM HK1 Hin Hadd Hmul Hdiv (div_setup M K HM)
+           s na nb l kk P Q G tx ty tz Ha Hb Hl Hn1 Hn2 Hnw Ina Inb Inl Htx Hkx Hty Hky Htz Hkz H).
 Qed.
 
 (** The same with k_j = (Nb_j - Na_j) * r, r = 1/n a rounded division:
@@ -529,23 +526,11 @@ Proof.
   intros M K K1 HM HK1 Hin Hadd Hmul Hdiv Hkd s na nb l kk P Q G Ha Hb Hl Hn1 Hn2 Hnw
     Ina Inb Inl (tx & rx & Htx & Hrx & Hkx) (ty & ry & Hty & Hry & Hky)
     (tz & rz & Htz & Hrz & Hkz) H.
-  pose proof HM as (U1 & U2 & U3 & _ & _ & [Km0 _] & [Kd0 Kd1] & K8 & K9).
-  assert (Hu : 0 < m_u M <= / 2097152).
-  { split; [exact U1|]. assert (m_u M <= K * m_u M) by (rewrite <- (Rmult_1_l (m_u M)) at 1;
-      apply Rmult_le_compat_r; lra). lra. }
-  assert (Hdu : k_div M * m_u M <= / 2097152).
-  { assert (k_div M * m_u M <= K * m_u M) by (apply Rmult_le_compat_r; lra). lra. }
+  destruct (recip_setup M K HM Hkd Hdiv) as [R Hk1].
   assert (Hm : 1 <= INR (n s) <= 16777216) by (split; [apply (le_INR 1); exact Hn1 | exact Hn2]).
-  set (kd := (1 + / 1048576) * k_mul M + k_div M + / 68719476736) in *.
-  assert (Kx : ap1 (kd * m_u M) (m_eta M) (vx kk) (tx / INR (n s)))
-    by (unfold kd; apply (recip_ap1 _ _ (k_div M) (k_mul M) _ _ rx); assumption).
-  assert (Ky : ap1 (kd * m_u M) (m_eta M) (vy kk) (ty / INR (n s)))
-    by (unfold kd; apply (recip_ap1 _ _ (k_div M) (k_mul M) _ _ ry); assumption).
-  assert (Kz : ap1 (kd * m_u M) (m_eta M) (vz kk) (tz / INR (n s)))
-    by (unfold kd; apply (recip_ap1 _ _ (k_div M) (k_mul M) _ _ rz); assumption).
-  assert (Hk1 : 1 <= kd) by (unfold kd; pose proof (Rmult_le_pos (1 + / 1048576) (k_mul M)); lra).
-  exact (duff_model M K K1 kd HM HK1 Hin Hadd Hmul Hk1 Hkd s na nb l kk P Q G tx ty tz
-           Ha Hb Hl Hn1 Hn2 Hnw Ina Inb Inl Htx Kx Hty Ky Htz Kz H).
+  exact (duff_model M K K1 _ HM HK1 Hin Hadd Hmul Hk1 Hkd s na nb l kk P Q G tx ty tz
+           Ha Hb Hl Hn1 Hn2 Hnw Ina Inb Inl Htx (R _ _ _ _ Hm Hrx Hkx)
+           Hty (R _ _ _ _ Hm Hry Hky) Htz (R _ _ _ _ Hm Hrz Hkz) H).
 Qed.
 
 (** ** Symmetric Phong: q walked to h = floor(n/2), reused as q(n - i) = q(i) *)

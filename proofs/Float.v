@@ -23,6 +23,7 @@
 From Coq Require Import Reals Lra Lia.
 From Flocq Require Import Core.
 From PhongApprox Require Import Span Euler Adaptive FloatModel.
+From PhongApprox Require FloatModelK.
 Open Scope R_scope.
 
 (** ** The float computation, for a rounding function [rnd] *)
@@ -468,6 +469,24 @@ Proof.
   unfold Rdiv. apply Rmult_le_compat_r; [apply Rlt_le, Rinv_0_lt_compat|]; lra.
 Qed.
 
+(** The facts on the unit inputs of a span used by the set-up bounds (here
+    and in Profiles.v): component bounds, products, squares. *)
+Ltac unit_facts_of s Hua Hub Hul :=
+  pose proof (unit_bounded _ Hua) as [UA1 [UA2 UA3]];
+  pose proof (unit_bounded _ Hub) as [UB1 [UB2 UB3]];
+  pose proof (unit_bounded _ Hul) as [UL1 [UL2 UL3]];
+  pose proof (diff_bounded _ _ Hua Hub) as [UD1 [UD2 UD3]];
+  pose proof (unit_pair _ _ Hua Hul); pose proof (unit_pair _ _ Hub Hul);
+  pose proof (unit_pair _ _ Hub Hua); pose proof (unit_abs_sq _ Hua);
+  pose proof (diff_pair _ _ _ Hua Hub Hul); pose proof (diff_pair _ _ _ Hua Hub Hua);
+  pose proof (diff_pair _ _ _ Hua Hub Hub); pose proof (diff_abs_sq _ _ Hua Hub);
+  pose proof (Rabs_pos (vx (Na s))); pose proof (Rabs_pos (vy (Na s)));
+  pose proof (Rabs_pos (vz (Na s))); pose proof (Rabs_pos (vx (Nb s)));
+  pose proof (Rabs_pos (vy (Nb s))); pose proof (Rabs_pos (vz (Nb s)));
+  pose proof (Rabs_pos (vx (L s))); pose proof (Rabs_pos (vy (L s)));
+  pose proof (Rabs_pos (vz (L s))); pose proof (Rabs_pos (vx (vsub (Nb s) (Na s))));
+  pose proof (Rabs_pos (vy (vsub (Nb s) (Na s)))); pose proof (Rabs_pos (vz (vsub (Nb s) (Na s)))).
+
 Section Chain.
 Context (rnd : R -> R) (u eta : R) (Hstd : std_model rnd u eta) (Hok : fmt_ok u eta).
 
@@ -559,21 +578,7 @@ Proof.
   repeat split; apply k_comp; assumption.
 Qed.
 
-Ltac unit_facts :=
-  pose proof (unit_bounded _ Hua) as [UA1 [UA2 UA3]];
-  pose proof (unit_bounded _ Hub) as [UB1 [UB2 UB3]];
-  pose proof (unit_bounded _ Hul) as [UL1 [UL2 UL3]];
-  pose proof (diff_bounded _ _ Hua Hub) as [UD1 [UD2 UD3]];
-  pose proof (unit_pair _ _ Hua Hul); pose proof (unit_pair _ _ Hub Hul);
-  pose proof (unit_pair _ _ Hub Hua); pose proof (unit_abs_sq _ Hua);
-  pose proof (diff_pair _ _ _ Hua Hub Hul); pose proof (diff_pair _ _ _ Hua Hub Hua);
-  pose proof (diff_pair _ _ _ Hua Hub Hub); pose proof (diff_abs_sq _ _ Hua Hub);
-  pose proof (Rabs_pos (vx (Na s))); pose proof (Rabs_pos (vy (Na s)));
-  pose proof (Rabs_pos (vz (Na s))); pose proof (Rabs_pos (vx (Nb s)));
-  pose proof (Rabs_pos (vy (Nb s))); pose proof (Rabs_pos (vz (Nb s)));
-  pose proof (Rabs_pos (vx (L s))); pose proof (Rabs_pos (vy (L s)));
-  pose proof (Rabs_pos (vz (L s))); pose proof (Rabs_pos (vx (vsub (Nb s) (Na s))));
-  pose proof (Rabs_pos (vy (vsub (Nb s) (Na s)))); pose proof (Rabs_pos (vz (vsub (Nb s) (Na s)))).
+Ltac unit_facts := unit_facts_of s Hua Hub Hul.
 
 Lemma L_pa : Rabs (f_pa rnd s - pa s) <= 5002 / 1000 * u.
 Proof.
@@ -1029,7 +1034,8 @@ Proof.
   assert (Ems : nr * (u * Ms + eta) = 2001 / 1000 * u + nr * eta) by (unfold Ms; field; lra).
   assert (Ems2 : nr * nr / 2 * (u * Ms + eta) = 10005 / 10000 * (nr * u) + nr * nr * eta / 2)
     by (unfold Ms; field; lra).
-  destruct (floop_err rnd u eta Hstd Hok (f_pa rnd s) (f_t0 rnd s) (f_ds rnd s) (n s) Ms Mp
+  destruct (FloatModelK.floop_err rnd u eta Hstd Hok (f_pa rnd s) (f_t0 rnd s) (f_ds rnd s)
+              (n s) Ms Mp
               HMs ltac:(unfold Mp; lra)) with (i := i) as [_ HP]; [| | exact Hi |].
   - intros j Hj. pose proof (slope_f (S j) Hj) as G0.
     assert (G1 : Rabs (f_t0 rnd s + INR (S j) * f_ds rnd s) <= (2 + 200 * u) / nr).
@@ -1077,7 +1083,7 @@ Proof.
   intros i Hi. basics. pose proof (eta_pos u eta Hok) as He0. pose proof (eta_small u eta Hok) as He1.
   assert (Hnu : nr * u <= 4096 * u) by (apply Rmult_le_compat_r; lra).
   assert (Hne : nr * eta <= 4096 * eta) by (apply Rmult_le_compat_r; lra).
-  pose proof (gloop_err rnd u eta Hstd Hok (f_pa rnd s) (f_dp rnd s) (n s) (1001 / 1000)
+  pose proof (FloatModelK.gloop_err rnd u eta Hstd Hok (f_pa rnd s) (f_dp rnd s) (n s) (1001 / 1000)
                 ltac:(lra)) as HG.
   assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
   specialize (HG ltac:(intros j Hj;

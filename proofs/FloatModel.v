@@ -14,7 +14,9 @@
 
     The rest is a small forward-error library: rounding a scaled value,
     the three-term dot product [(x + y) + z] with rounded products, and
-    the two float loops (corrected Euler, eqs. 16-17, and Gouraud). *)
+    the two float loops (corrected Euler, eqs. 16-17, and Gouraud), whose
+    bounds [floop_err], [gloop_err] are FloatModelK.v's relational loops at
+    one rounding function. *)
 
 From Coq Require Import Reals Lra Lia.
 From Flocq Require Import Core Relative.
@@ -137,6 +139,107 @@ Qed.
 
 (** ** Error lemmas *)
 
+(** The product of two approximations (unit v: u of the standard model,
+    or v of FloatModelK.v's section V). *)
+Lemma comp_prod_gen : forall v, 0 < v <= / 2097152 -> forall A a B b wa wb,
+  Rabs (A - a) <= v * wa -> Rabs (B - b) <= v * wb ->
+  Rabs a <= 2 -> Rabs b <= 2 -> 0 <= wa <= 8 -> 0 <= wb <= 8 ->
+  Rabs (A * B - a * b) <= v * (Rabs a * wb + wa * Rabs b) + 64 * (v * v)
+  /\ Rabs (A * B) <= Rabs a * Rabs b + 33 * v.
+Proof.
+  intros v Hv A a B b wa wb HA HB Ha Hb Hwa Hwb.
+  assert (E : A * B - a * b = (A - a) * b + a * (B - b) + (A - a) * (B - b)) by ring.
+  assert (T1 : Rabs ((A - a) * b) <= v * wa * Rabs b).
+  { rewrite Rabs_mult. apply Rmult_le_compat_r; [apply Rabs_pos | exact HA]. }
+  assert (T2 : Rabs (a * (B - b)) <= Rabs a * (v * wb)).
+  { rewrite Rabs_mult. apply Rmult_le_compat_l; [apply Rabs_pos | exact HB]. }
+  assert (T3 : Rabs ((A - a) * (B - b)) <= (v * wa) * (v * wb)).
+  { rewrite Rabs_mult. apply Rmult_le_compat; try apply Rabs_pos; assumption. }
+  assert (T4 : (v * wa) * (v * wb) <= 64 * (v * v)).
+  { replace ((v * wa) * (v * wb)) with ((v * v) * (wa * wb)) by ring.
+    replace (64 * (v * v)) with ((v * v) * 64) by ring.
+    apply Rmult_le_compat_l; [nra|]. nra. }
+  assert (D : Rabs (A * B - a * b) <= v * (Rabs a * wb + wa * Rabs b) + 64 * (v * v)).
+  { rewrite E. eapply Rle_trans; [apply Rabs_triang|].
+    eapply Rle_trans; [apply Rplus_le_compat_r, Rabs_triang|]. nra. }
+  split; [exact D|].
+  assert (M1 : v * (Rabs a * wb + wa * Rabs b) <= v * 32).
+  { apply Rmult_le_compat_l; [lra|].
+    assert (Rabs a * wb <= 2 * 8) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
+    assert (wa * Rabs b <= 8 * 2) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
+    lra. }
+  assert (M2 : v * v <= v / 2097152).
+  { assert (v * v <= / 2097152 * v) by (apply Rmult_le_compat_r; lra). lra. }
+  replace (A * B) with (a * b + (A * B - a * b)) by ring.
+  eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_mult. lra.
+Qed.
+
+(** A computed dot product y within (3 + 2^-17) v sum |a_j b_j| + 13 eta of
+    a.b (the standard model's [fdot], or FloatModelK.v's [fdot_rel]), of the
+    scaled approximations lam ah, mu bh of a, b with weights wa, wb. *)
+Lemma fdot_weighted_gen : forall (v eta lam mu y : R) (ah bh a b wa wb : vec),
+  0 < v <= / 2097152 -> 0 <= eta -> eta * 1152921504606846976 <= v ->
+  Rabs (y - dot ah bh) <=
+    (3 + / 131072) * v * (Rabs (vx ah * vx bh) + Rabs (vy ah * vy bh) + Rabs (vz ah * vz bh))
+    + 13 * eta ->
+  0 < lam -> 0 < mu -> lam * mu <= 16777216 ->
+  vapprox v lam ah a wa -> vapprox v mu bh b wb ->
+  vbounded a 2 -> vbounded b 2 -> wbounded wa -> wbounded wb ->
+  Rabs (lam * mu * y - dot a b) <= v * (wsum a b wa wb + / 1000).
+Proof.
+  intros v eta lam mu y ah bh a b wa wb Hv He He2 F Hl Hm Hlm [Ha1 [Ha2 Ha3]] [Hb1 [Hb2 Hb3]]
+    [Ma1 [Ma2 Ma3]] [Mb1 [Mb2 Mb3]] [Wa1 [Wa2 Wa3]] [Wb1 [Wb2 Wb3]].
+  pose proof (comp_prod_gen v Hv) as comp_prod.
+  destruct (comp_prod _ _ _ _ _ _ Ha1 Hb1 Ma1 Mb1 Wa1 Wb1) as [Px Qx].
+  destruct (comp_prod _ _ _ _ _ _ Ha2 Hb2 Ma2 Mb2 Wa2 Wb2) as [Py Qy].
+  destruct (comp_prod _ _ _ _ _ _ Ha3 Hb3 Ma3 Mb3 Wa3 Wb3) as [Pz Qz].
+  assert (E : lam * mu * y - dot a b =
+     lam * mu * (y - dot ah bh)
+     + ((lam * vx ah) * (mu * vx bh) - vx a * vx b)
+     + ((lam * vy ah) * (mu * vy bh) - vy a * vy b)
+     + ((lam * vz ah) * (mu * vz bh) - vz a * vz b)) by (unfold dot; ring).
+  rewrite E.
+  assert (G : Rabs (lam * mu * (y - dot ah bh)) <=
+     (3 + / 131072) * v * (Rabs ((lam * vx ah) * (mu * vx bh))
+        + Rabs ((lam * vy ah) * (mu * vy bh)) + Rabs ((lam * vz ah) * (mu * vz bh)))
+     + 13 * (16777216 * eta)).
+  { rewrite Rabs_mult, (Rabs_pos_eq (lam * mu)) by nra.
+    assert (R1 : forall x z, Rabs ((lam * x) * (mu * z)) = lam * mu * Rabs (x * z)).
+    { intros. replace ((lam * x) * (mu * z)) with ((lam * mu) * (x * z)) by ring.
+      rewrite Rabs_mult, Rabs_pos_eq by nra. reflexivity. }
+    rewrite !R1.
+    assert (K : lam * mu * Rabs (y - dot ah bh) <=
+              lam * mu * ((3 + / 131072) * v * (Rabs (vx ah * vx bh)
+                + Rabs (vy ah * vy bh) + Rabs (vz ah * vz bh)) + 13 * eta))
+      by (apply Rmult_le_compat_l; [nra | exact F]).
+    assert (K2 : lam * mu * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra).
+    nra. }
+  set (S := Rabs (vx a) * Rabs (vx b) + Rabs (vy a) * Rabs (vy b) + Rabs (vz a) * Rabs (vz b)).
+  assert (HS0 : 0 <= S).
+  { unfold S. pose proof (Rabs_pos (vx a)). pose proof (Rabs_pos (vy a)).
+    pose proof (Rabs_pos (vz a)). pose proof (Rabs_pos (vx b)).
+    pose proof (Rabs_pos (vy b)). pose proof (Rabs_pos (vz b)). nra. }
+  assert (HS : S <= 12).
+  { unfold S.
+    assert (Rabs (vx a) * Rabs (vx b) <= 2 * 2) by (apply Rmult_le_compat; try apply Rabs_pos; lra).
+    assert (Rabs (vy a) * Rabs (vy b) <= 2 * 2) by (apply Rmult_le_compat; try apply Rabs_pos; lra).
+    assert (Rabs (vz a) * Rabs (vz b) <= 2 * 2) by (apply Rmult_le_compat; try apply Rabs_pos; lra).
+    lra. }
+  assert (G2 : (3 + / 131072) * v * (Rabs ((lam * vx ah) * (mu * vx bh))
+        + Rabs ((lam * vy ah) * (mu * vy bh)) + Rabs ((lam * vz ah) * (mu * vz bh)))
+        <= (3 + / 131072) * v * (S + 99 * v)).
+  { apply Rmult_le_compat_l; [lra|]. unfold S. lra. }
+  assert (G3 : v * S <= v * 12) by (apply Rmult_le_compat_l; lra).
+  assert (G4 : v * v <= v / 2097152)
+    by (assert (v * v <= / 2097152 * v) by (apply Rmult_le_compat_r; lra); lra).
+  assert (G5 : 0 <= v * S) by (apply Rmult_le_pos; lra).
+  unfold wsum. fold S.
+  assert (Tr : forall a1 a2 a3 a4 : R,
+    Rabs (a1 + a2 + a3 + a4) <= Rabs a1 + Rabs a2 + Rabs a3 + Rabs a4).
+  { intros. repeat (eapply Rle_trans; [apply Rabs_triang | apply Rplus_le_compat_r]); lra. }
+  eapply Rle_trans; [apply Tr|]. unfold S in *. lra.
+Qed.
+
 Section Model.
 Context (rnd : R -> R) (u eta : R).
 Context (Hstd : std_model rnd u eta) (Hok : fmt_ok u eta).
@@ -257,41 +360,6 @@ Proof.
   apply Rmult_le_compat_r; [apply Rmult_le_pos|]; lra.
 Qed.
 
-(** One component of a product of two approximations. *)
-Lemma comp_prod : forall A a B b wa wb,
-  Rabs (A - a) <= u * wa -> Rabs (B - b) <= u * wb ->
-  Rabs a <= 2 -> Rabs b <= 2 -> 0 <= wa <= 8 -> 0 <= wb <= 8 ->
-  Rabs (A * B - a * b) <= u * (Rabs a * wb + wa * Rabs b) + 64 * (u * u)
-  /\ Rabs (A * B) <= Rabs a * Rabs b + 33 * u.
-Proof.
-  intros A a B b wa wb HA HB Ha Hb Hwa Hwb.
-  pose proof u_pos. pose proof u_small.
-  assert (E : A * B - a * b = (A - a) * b + a * (B - b) + (A - a) * (B - b)) by ring.
-  assert (T1 : Rabs ((A - a) * b) <= u * wa * Rabs b).
-  { rewrite Rabs_mult. apply Rmult_le_compat_r; [apply Rabs_pos | exact HA]. }
-  assert (T2 : Rabs (a * (B - b)) <= Rabs a * (u * wb)).
-  { rewrite Rabs_mult. apply Rmult_le_compat_l; [apply Rabs_pos | exact HB]. }
-  assert (T3 : Rabs ((A - a) * (B - b)) <= (u * wa) * (u * wb)).
-  { rewrite Rabs_mult. apply Rmult_le_compat; try apply Rabs_pos; assumption. }
-  assert (T4 : (u * wa) * (u * wb) <= 64 * (u * u)).
-  { replace ((u * wa) * (u * wb)) with ((u * u) * (wa * wb)) by ring.
-    replace (64 * (u * u)) with ((u * u) * 64) by ring.
-    apply Rmult_le_compat_l; [nra|]. nra. }
-  assert (D : Rabs (A * B - a * b) <= u * (Rabs a * wb + wa * Rabs b) + 64 * (u * u)).
-  { rewrite E. eapply Rle_trans; [apply Rabs_triang|].
-    eapply Rle_trans; [apply Rplus_le_compat_r, Rabs_triang|]. nra. }
-  split; [exact D|].
-  assert (M1 : u * (Rabs a * wb + wa * Rabs b) <= u * 32).
-  { apply Rmult_le_compat_l; [lra|].
-    assert (Rabs a * wb <= 2 * 8) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
-    assert (wa * Rabs b <= 8 * 2) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
-    lra. }
-  assert (M2 : u * u <= u / 16777216).
-  { pose proof (u_u 1). lra. }
-  replace (A * B) with (a * b + (A * B - a * b)) by ring.
-  eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_mult. lra.
-Qed.
-
 (** Weighted error of a dot product of two approximated vectors: component j
     of [lam ah] is within [u * wa_j] of [a_j], component j of [mu bh] within
     [u * wb_j] of [b_j]. *)
@@ -301,57 +369,12 @@ Lemma fdot_weighted : forall (lam mu : R) (ah bh a b wa wb : vec),
   vbounded a 2 -> vbounded b 2 -> wbounded wa -> wbounded wb ->
   Rabs (lam * mu * fdot rnd ah bh - dot a b) <= u * (wsum a b wa wb + / 1000).
 Proof.
-  intros lam mu ah bh a b wa wb Hl Hm Hlm [Ha1 [Ha2 Ha3]] [Hb1 [Hb2 Hb3]]
-    [Ma1 [Ma2 Ma3]] [Mb1 [Mb2 Mb3]] [Wa1 [Wa2 Wa3]] [Wb1 [Wb2 Wb3]].
-  pose proof u_pos. pose proof u_small. pose proof eta_pos. pose proof eta_small.
-  destruct (comp_prod _ _ _ _ _ _ Ha1 Hb1 Ma1 Mb1 Wa1 Wb1) as [Px Qx].
-  destruct (comp_prod _ _ _ _ _ _ Ha2 Hb2 Ma2 Mb2 Wa2 Wb2) as [Py Qy].
-  destruct (comp_prod _ _ _ _ _ _ Ha3 Hb3 Ma3 Mb3 Wa3 Wb3) as [Pz Qz].
-  pose proof (fdot_round ah bh) as F.
-  assert (E : lam * mu * fdot rnd ah bh - dot a b =
-     lam * mu * (fdot rnd ah bh - dot ah bh)
-     + ((lam * vx ah) * (mu * vx bh) - vx a * vx b)
-     + ((lam * vy ah) * (mu * vy bh) - vy a * vy b)
-     + ((lam * vz ah) * (mu * vz bh) - vz a * vz b)) by (unfold dot; ring).
-  rewrite E.
-  assert (G : Rabs (lam * mu * (fdot rnd ah bh - dot ah bh)) <=
-     (3 + / 1048576) * u * (Rabs ((lam * vx ah) * (mu * vx bh))
-        + Rabs ((lam * vy ah) * (mu * vy bh)) + Rabs ((lam * vz ah) * (mu * vz bh)))
-     + 13 * (16777216 * eta)).
-  { rewrite Rabs_mult, (Rabs_pos_eq (lam * mu)) by nra.
-    assert (R1 : forall x y, Rabs ((lam * x) * (mu * y)) = lam * mu * Rabs (x * y)).
-    { intros. replace ((lam * x) * (mu * y)) with ((lam * mu) * (x * y)) by ring.
-      rewrite Rabs_mult, Rabs_pos_eq by nra. reflexivity. }
-    rewrite !R1.
-    assert (K : lam * mu * Rabs (fdot rnd ah bh - dot ah bh) <=
-              lam * mu * ((3 + / 1048576) * u * (Rabs (vx ah * vx bh)
-                + Rabs (vy ah * vy bh) + Rabs (vz ah * vz bh)) + 13 * eta))
-      by (apply Rmult_le_compat_l; [nra | exact F]).
-    assert (K2 : lam * mu * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra).
-    nra. }
-  set (S := Rabs (vx a) * Rabs (vx b) + Rabs (vy a) * Rabs (vy b) + Rabs (vz a) * Rabs (vz b)).
-  assert (HS0 : 0 <= S).
-  { unfold S. pose proof (Rabs_pos (vx a)). pose proof (Rabs_pos (vy a)).
-    pose proof (Rabs_pos (vz a)). pose proof (Rabs_pos (vx b)).
-    pose proof (Rabs_pos (vy b)). pose proof (Rabs_pos (vz b)). nra. }
-  assert (HS : S <= 12).
-  { unfold S.
-    assert (Rabs (vx a) * Rabs (vx b) <= 2 * 2) by (apply Rmult_le_compat; try apply Rabs_pos; lra).
-    assert (Rabs (vy a) * Rabs (vy b) <= 2 * 2) by (apply Rmult_le_compat; try apply Rabs_pos; lra).
-    assert (Rabs (vz a) * Rabs (vz b) <= 2 * 2) by (apply Rmult_le_compat; try apply Rabs_pos; lra).
-    lra. }
-  assert (G2 : (3 + / 1048576) * u * (Rabs ((lam * vx ah) * (mu * vx bh))
-        + Rabs ((lam * vy ah) * (mu * vy bh)) + Rabs ((lam * vz ah) * (mu * vz bh)))
-        <= (3 + / 1048576) * u * (S + 99 * u)).
-  { apply Rmult_le_compat_l; [lra|]. unfold S. lra. }
-  assert (G3 : u * S <= u * 12) by (apply Rmult_le_compat_l; lra).
-  assert (G4 : u * u <= u / 16777216) by (pose proof (u_u 1); lra).
-  assert (G5 : 0 <= u * S) by (apply Rmult_le_pos; lra).
-  unfold wsum. fold S.
-  assert (Tr : forall a1 a2 a3 a4 : R,
-    Rabs (a1 + a2 + a3 + a4) <= Rabs a1 + Rabs a2 + Rabs a3 + Rabs a4).
-  { intros. repeat (eapply Rle_trans; [apply Rabs_triang | apply Rplus_le_compat_r]); lra. }
-  eapply Rle_trans; [apply Tr|]. unfold S in *. lra.
+  intros lam mu ah bh a b wa wb. pose proof u_pos. pose proof u_small.
+  pose proof eta_pos. pose proof eta_small. pose proof (fdot_round ah bh).
+  pose proof (Rabs_pos (vx ah * vx bh)). pose proof (Rabs_pos (vy ah * vy bh)).
+  pose proof (Rabs_pos (vz ah * vz bh)).
+  apply (fdot_weighted_gen u eta); try lra. eapply Rle_trans; [eassumption|].
+  apply Rplus_le_compat_r, Rmult_le_compat_r; lra.
 Qed.
 
 Lemma dot_inst : forall (lam mu : R) (ah bh a b wa wb : vec) (K : R),
@@ -363,107 +386,6 @@ Lemma dot_inst : forall (lam mu : R) (ah bh a b wa wb : vec) (K : R),
 Proof.
   intros. eapply Rle_trans; [eapply fdot_weighted; eassumption|].
   rewrite (Rmult_comm K). apply Rmult_le_compat_l; [pose proof u_pos; lra | assumption].
-Qed.
-
-(** The corrected-Euler loop against Euler on the same (computed) start
-    values: for i <= m, the slope is within i (u Ms + eta) and the value
-    within i(i-1)/2 (u Ms + eta) + i (u Mp + eta), provided Ms, Mp bound
-    the slopes and values of the loop (plus the accumulated error). *)
-Lemma floop_err : forall (p0 s0 d : R) (m : nat) (Ms Mp : R), 0 <= Ms -> 0 <= Mp ->
-  (forall j, (S j < m)%nat ->
-     Rabs (s0 + INR (S j) * d) + INR m * (u * Ms + eta) <= Ms) ->
-  (forall j, (j < m)%nat ->
-     Rabs (p0 + INR (S j) * s0 + INR (S j) * (INR (S j) - 1) / 2 * d)
-     + INR m * INR m / 2 * (u * Ms + eta) + INR m * (u * Mp + eta) <= Mp) ->
-  forall i, (i <= m)%nat ->
-  ((i < m)%nat ->
-   Rabs (snd (floop rnd p0 s0 d i) - (s0 + INR i * d)) <= INR i * (u * Ms + eta))
-  /\ Rabs (fst (floop rnd p0 s0 d i) - (p0 + INR i * s0 + INR i * (INR i - 1) / 2 * d))
-     <= INR i * (INR i - 1) / 2 * (u * Ms + eta) + INR i * (u * Mp + eta).
-Proof.
-  intros p0 s0 d m Ms Mp HMs HMp HS HP i.
-  pose proof u_pos. pose proof eta_pos.
-  assert (Ems : 0 <= u * Ms + eta) by (pose proof (Rmult_le_pos u Ms); lra).
-  assert (Emp : 0 <= u * Mp + eta) by (pose proof (Rmult_le_pos u Mp); lra).
-  induction i as [| i IH]; intros Hi.
-  - cbn [floop fst snd INR]. split; [intros _|]; rewrite Rabs_right; lra.
-  - destruct (IH ltac:(lia)) as [IS IP]. specialize (IS ltac:(lia)).
-    rewrite floop_S. cbn [fst snd].
-    set (Sh := snd (floop rnd p0 s0 d i)) in *.
-    set (Ph := fst (floop rnd p0 s0 d i)) in *.
-    specialize (HP i ltac:(lia)).
-    assert (Him : INR (S i) <= INR m) by (apply le_INR; lia).
-    assert (Hi0 : 0 <= INR i) by apply pos_INR.
-    assert (Him' : INR i <= INR m) by (apply le_INR; lia).
-    rewrite S_INR in *.
-    (* value *)
-    assert (AP : Rabs (Ph + Sh) <= Mp).
-    { replace (Ph + Sh) with ((p0 + (INR i + 1) * s0 + (INR i + 1) * (INR i + 1 - 1) / 2 * d)
-         + (Ph - (p0 + INR i * s0 + INR i * (INR i - 1) / 2 * d))
-         + (Sh - (s0 + INR i * d))) by field.
-      eapply Rle_trans; [apply Rabs_triang|].
-      eapply Rle_trans; [apply Rplus_le_compat_r, Rabs_triang|].
-      assert (INR i * (INR i - 1) / 2 + INR i <= INR m * INR m / 2) by nra.
-      assert ((INR i * (INR i - 1) / 2 + INR i) * (u * Ms + eta)
-                <= INR m * INR m / 2 * (u * Ms + eta)) by (apply Rmult_le_compat_r; lra).
-      assert (INR i * (u * Mp + eta) <= INR m * (u * Mp + eta))
-        by (apply Rmult_le_compat_r; lra).
-      lra. }
-    assert (RP : Rabs (rnd (Ph + Sh) - (Ph + Sh)) <= u * Mp + eta).
-    { eapply Rle_trans; [apply Hstd|]. apply Rplus_le_compat_r, Rmult_le_compat_l; lra. }
-    split.
-    + intros Hlt. specialize (HS i Hlt). rewrite S_INR in HS.
-      assert (AS : Rabs (Sh + d) <= Ms).
-      { replace (Sh + d) with ((s0 + (INR i + 1) * d) + (Sh - (s0 + INR i * d))) by ring.
-        eapply Rle_trans; [apply Rabs_triang|].
-        assert (INR i * (u * Ms + eta) <= INR m * (u * Ms + eta))
-          by (apply Rmult_le_compat_r; lra).
-        lra. }
-      assert (RS : Rabs (rnd (Sh + d) - (Sh + d)) <= u * Ms + eta).
-      { eapply Rle_trans; [apply Hstd|]. apply Rplus_le_compat_r, Rmult_le_compat_l; lra. }
-      replace (rnd (Sh + d) - (s0 + (INR i + 1) * d))
-        with ((rnd (Sh + d) - (Sh + d)) + (Sh - (s0 + INR i * d))) by ring.
-      eapply Rle_trans; [apply Rabs_triang|]. lra.
-    + replace (rnd (Ph + Sh) - (p0 + (INR i + 1) * s0 + (INR i + 1) * (INR i + 1 - 1) / 2 * d))
-        with ((rnd (Ph + Sh) - (Ph + Sh))
-              + (Ph - (p0 + INR i * s0 + INR i * (INR i - 1) / 2 * d))
-              + (Sh - (s0 + INR i * d))) by field.
-      eapply Rle_trans; [apply Rabs_triang|].
-      eapply Rle_trans; [apply Rplus_le_compat_r, Rabs_triang|].
-      assert (E1 : (INR i + 1) * (INR i + 1 - 1) / 2 * (u * Ms + eta) + (INR i + 1) * (u * Mp + eta)
-               = INR i * (INR i - 1) / 2 * (u * Ms + eta) + INR i * (u * Mp + eta)
-                 + INR i * (u * Ms + eta) + (u * Mp + eta)) by field.
-      rewrite E1. lra.
-Qed.
-
-(** The Gouraud loop against g0 + i d. *)
-Lemma gloop_err : forall (g0 d : R) (m : nat) (Mg : R), 0 <= Mg ->
-  (forall j, (j < m)%nat -> Rabs (g0 + INR (S j) * d) + INR m * (u * Mg + eta) <= Mg) ->
-  forall i, (i <= m)%nat ->
-  Rabs (gloop rnd g0 d i - (g0 + INR i * d)) <= INR i * (u * Mg + eta).
-Proof.
-  intros g0 d m Mg HMg HG i.
-  pose proof u_pos. pose proof eta_pos.
-  induction i as [| i IH]; intros Hi.
-  - cbn [gloop INR]. rewrite Rabs_right; lra.
-  - specialize (IH ltac:(lia)). cbn [gloop].
-    set (Gh := gloop rnd g0 d i) in *.
-    specialize (HG i ltac:(lia)).
-    assert (Him : INR (S i) <= INR m) by (apply le_INR; lia).
-    assert (Hi0 : 0 <= INR i) by apply pos_INR.
-    rewrite S_INR in *.
-    assert (Emg : 0 <= u * Mg + eta) by (pose proof (Rmult_le_pos u Mg); lra).
-    assert (AG : Rabs (Gh + d) <= Mg).
-    { replace (Gh + d) with ((g0 + (INR i + 1) * d) + (Gh - (g0 + INR i * d))) by ring.
-      eapply Rle_trans; [apply Rabs_triang|].
-      assert (INR i * (u * Mg + eta) <= INR m * (u * Mg + eta))
-        by (apply Rmult_le_compat_r; lra).
-      lra. }
-    assert (RG : Rabs (rnd (Gh + d) - (Gh + d)) <= u * Mg + eta).
-    { eapply Rle_trans; [apply Hstd|]. apply Rplus_le_compat_r, Rmult_le_compat_l; lra. }
-    replace (rnd (Gh + d) - (g0 + (INR i + 1) * d))
-      with ((rnd (Gh + d) - (Gh + d)) + (Gh - (g0 + INR i * d))) by ring.
-    eapply Rle_trans; [apply Rabs_triang|]. lra.
 Qed.
 
 End Model.

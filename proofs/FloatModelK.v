@@ -41,7 +41,9 @@
     relation bounded by one unit v (every k u <= v), [fdot_abs] is the
     weighted dot-product lemma with absolute weights, and [gseq_err],
     [cseq_err] are the loops (Gouraud, corrected Euler) with a possibly
-    different rounding at every step. *)
+    different rounding at every step ([gloop_err], [floop_err]: FloatModel.v's
+    loops as their instances).  The product and dot-product steps shared with
+    FloatModel.v are its [comp_prod_gen] and [fdot_weighted_gen]. *)
 
 From Coq Require Import Reals Lra Lia.
 From Flocq Require Import Core Relative.
@@ -217,23 +219,6 @@ Qed.
 Definition small_ok (v eta : R) : Prop :=
   0 < v /\ v <= / 2097152 /\ 0 <= eta /\ eta * 19342813113834066795298816 <= v.
 
-Lemma model_small : forall M K, model_ok M K -> small_ok (K * m_u M) (m_eta M).
-Proof.
-  intros M K H. pose proof H as (H1 & H2 & H3 & _ & _ & _ & _ & H8 & H9).
-  repeat split; try lra.
-  - apply Rmult_lt_0_compat; lra.
-  - assert (m_u M <= K * m_u M) by (rewrite <- (Rmult_1_l (m_u M)) at 1;
-      apply Rmult_le_compat_r; lra). lra.
-Qed.
-
-(** Any operation of the model is an operation of unit K u. *)
-Lemma approx_K : forall M K k y x, model_ok M K -> k <= K ->
-  approx k (m_u M) (m_eta M) y x -> ap1 (K * m_u M) (m_eta M) y x.
-Proof.
-  intros M K k y x HM Hk H. eapply ap1_mono; [|exact H].
-  apply Rmult_le_compat_r; [apply Rlt_le, (model_u M K HM) | exact Hk].
-Qed.
-
 Section V.
 Context (v eta : R) (Hv : small_ok v eta).
 
@@ -304,41 +289,6 @@ Proof.
   pose proof (Rabs_pos (vz a * vz b)). lra.
 Qed.
 
-(** One component of a product of two approximations. *)
-Lemma comp_prod : forall A a B b wa wb,
-  Rabs (A - a) <= v * wa -> Rabs (B - b) <= v * wb ->
-  Rabs a <= 2 -> Rabs b <= 2 -> 0 <= wa <= 8 -> 0 <= wb <= 8 ->
-  Rabs (A * B - a * b) <= v * (Rabs a * wb + wa * Rabs b) + 64 * (v * v)
-  /\ Rabs (A * B) <= Rabs a * Rabs b + 33 * v.
-Proof.
-  intros A a B b wa wb HA HB Ha Hb Hwa Hwb.
-  pose proof v_pos. pose proof v_small.
-  assert (E : A * B - a * b = (A - a) * b + a * (B - b) + (A - a) * (B - b)) by ring.
-  assert (T1 : Rabs ((A - a) * b) <= v * wa * Rabs b).
-  { rewrite Rabs_mult. apply Rmult_le_compat_r; [apply Rabs_pos | exact HA]. }
-  assert (T2 : Rabs (a * (B - b)) <= Rabs a * (v * wb)).
-  { rewrite Rabs_mult. apply Rmult_le_compat_l; [apply Rabs_pos | exact HB]. }
-  assert (T3 : Rabs ((A - a) * (B - b)) <= (v * wa) * (v * wb)).
-  { rewrite Rabs_mult. apply Rmult_le_compat; try apply Rabs_pos; assumption. }
-  assert (T4 : (v * wa) * (v * wb) <= 64 * (v * v)).
-  { replace ((v * wa) * (v * wb)) with ((v * v) * (wa * wb)) by ring.
-    replace (64 * (v * v)) with ((v * v) * 64) by ring.
-    apply Rmult_le_compat_l; [nra|]. nra. }
-  assert (D : Rabs (A * B - a * b) <= v * (Rabs a * wb + wa * Rabs b) + 64 * (v * v)).
-  { rewrite E. eapply Rle_trans; [apply Rabs_triang|].
-    eapply Rle_trans; [apply Rplus_le_compat_r, Rabs_triang|]. nra. }
-  split; [exact D|].
-  assert (M1 : v * (Rabs a * wb + wa * Rabs b) <= v * 32).
-  { apply Rmult_le_compat_l; [lra|].
-    assert (Rabs a * wb <= 2 * 8) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
-    assert (wa * Rabs b <= 8 * 2) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
-    lra. }
-  assert (M2 : v * v <= v / 2097152).
-  { pose proof (v_v 1). lra. }
-  replace (A * B) with (a * b + (A * B - a * b)) by ring.
-  eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_mult. lra.
-Qed.
-
 (** Weighted error of a computed dot product of two approximated vectors
     (as FloatModel.fdot_weighted, for any evaluation order). *)
 Lemma fdot_weighted : forall (lam mu y : R) (ah bh a b wa wb : vec),
@@ -348,57 +298,9 @@ Lemma fdot_weighted : forall (lam mu y : R) (ah bh a b wa wb : vec),
   vbounded a 2 -> vbounded b 2 -> wbounded wa -> wbounded wb ->
   Rabs (lam * mu * y - dot a b) <= v * (wsum a b wa wb + / 1000).
 Proof.
-  intros lam mu y ah bh a b wa wb Hy Hl Hm Hlm [Ha1 [Ha2 Ha3]] [Hb1 [Hb2 Hb3]]
-    [Ma1 [Ma2 Ma3]] [Mb1 [Mb2 Mb3]] [Wa1 [Wa2 Wa3]] [Wb1 [Wb2 Wb3]].
-  pose proof v_pos. pose proof v_small. pose proof e_pos. pose proof e_small.
-  destruct (comp_prod _ _ _ _ _ _ Ha1 Hb1 Ma1 Mb1 Wa1 Wb1) as [Px Qx].
-  destruct (comp_prod _ _ _ _ _ _ Ha2 Hb2 Ma2 Mb2 Wa2 Wb2) as [Py Qy].
-  destruct (comp_prod _ _ _ _ _ _ Ha3 Hb3 Ma3 Mb3 Wa3 Wb3) as [Pz Qz].
-  pose proof (fdot_v ah bh y Hy) as F.
-  assert (E : lam * mu * y - dot a b =
-     lam * mu * (y - dot ah bh)
-     + ((lam * vx ah) * (mu * vx bh) - vx a * vx b)
-     + ((lam * vy ah) * (mu * vy bh) - vy a * vy b)
-     + ((lam * vz ah) * (mu * vz bh) - vz a * vz b)) by (unfold dot; ring).
-  rewrite E.
-  assert (G : Rabs (lam * mu * (y - dot ah bh)) <=
-     (3 + / 131072) * v * (Rabs ((lam * vx ah) * (mu * vx bh))
-        + Rabs ((lam * vy ah) * (mu * vy bh)) + Rabs ((lam * vz ah) * (mu * vz bh)))
-     + 8 * (16777216 * eta)).
-  { rewrite Rabs_mult, (Rabs_pos_eq (lam * mu)) by nra.
-    assert (R1 : forall x z, Rabs ((lam * x) * (mu * z)) = lam * mu * Rabs (x * z)).
-    { intros. replace ((lam * x) * (mu * z)) with ((lam * mu) * (x * z)) by ring.
-      rewrite Rabs_mult, Rabs_pos_eq by nra. reflexivity. }
-    rewrite !R1.
-    assert (K : lam * mu * Rabs (y - dot ah bh) <=
-              lam * mu * ((3 + / 131072) * v * (Rabs (vx ah * vx bh)
-                + Rabs (vy ah * vy bh) + Rabs (vz ah * vz bh)) + 8 * eta))
-      by (apply Rmult_le_compat_l; [nra | exact F]).
-    assert (K2 : lam * mu * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra).
-    nra. }
-  set (S := Rabs (vx a) * Rabs (vx b) + Rabs (vy a) * Rabs (vy b) + Rabs (vz a) * Rabs (vz b)).
-  assert (HS0 : 0 <= S).
-  { unfold S. pose proof (Rabs_pos (vx a)). pose proof (Rabs_pos (vy a)).
-    pose proof (Rabs_pos (vz a)). pose proof (Rabs_pos (vx b)).
-    pose proof (Rabs_pos (vy b)). pose proof (Rabs_pos (vz b)). nra. }
-  assert (HS : S <= 12).
-  { unfold S.
-    assert (Rabs (vx a) * Rabs (vx b) <= 2 * 2) by (apply Rmult_le_compat; try apply Rabs_pos; lra).
-    assert (Rabs (vy a) * Rabs (vy b) <= 2 * 2) by (apply Rmult_le_compat; try apply Rabs_pos; lra).
-    assert (Rabs (vz a) * Rabs (vz b) <= 2 * 2) by (apply Rmult_le_compat; try apply Rabs_pos; lra).
-    lra. }
-  assert (G2 : (3 + / 131072) * v * (Rabs ((lam * vx ah) * (mu * vx bh))
-        + Rabs ((lam * vy ah) * (mu * vy bh)) + Rabs ((lam * vz ah) * (mu * vz bh)))
-        <= (3 + / 131072) * v * (S + 99 * v)).
-  { apply Rmult_le_compat_l; [lra|]. unfold S. lra. }
-  assert (G3 : v * S <= v * 12) by (apply Rmult_le_compat_l; lra).
-  assert (G4 : v * v <= v / 2097152) by (pose proof (v_v 1); lra).
-  assert (G5 : 0 <= v * S) by (apply Rmult_le_pos; lra).
-  unfold wsum. fold S.
-  assert (Tr : forall a1 a2 a3 a4 : R,
-    Rabs (a1 + a2 + a3 + a4) <= Rabs a1 + Rabs a2 + Rabs a3 + Rabs a4).
-  { intros. repeat (eapply Rle_trans; [apply Rabs_triang | apply Rplus_le_compat_r]); lra. }
-  eapply Rle_trans; [apply Tr|]. unfold S in *. lra.
+  intros lam mu y ah bh a b wa wb Hy. pose proof v_pos. pose proof v_small.
+  pose proof e_pos. pose proof e_small. pose proof (fdot_v ah bh y Hy).
+  apply (fdot_weighted_gen v eta); lra.
 Qed.
 
 Lemma dot_inst : forall (lam mu y : R) (ah bh a b wa wb : vec) (K : R),
@@ -508,7 +410,7 @@ End VA.
 (** ** The loops, with a possibly different rounding at every step *)
 
 (** Corrected Euler: P_{j+1} within w|P_j + Q_j| + eta of P_j + Q_j, and
-    Q_{j+1} within w|Q_j + d| + eta of Q_j + d (as FloatModel.floop_err). *)
+    Q_{j+1} within w|Q_j + d| + eta of Q_j + d (as [floop_err] below). *)
 Lemma cseq_err : forall (w eta : R) (P Q : nat -> R) (d : R) (m : nat) (Ms Mp : R),
   0 <= w -> 0 <= eta -> 0 <= Ms -> 0 <= Mp ->
   (forall j, (j < m)%nat -> ap1 w eta (P (S j)) (P j + Q j) /\ ap1 w eta (Q (S j)) (Q j + d)) ->
@@ -575,7 +477,7 @@ Proof.
       rewrite E1. lra.
 Qed.
 
-(** Gouraud: G_{j+1} within w|G_j + d| + eta of G_j + d (as FloatModel.gloop_err). *)
+(** Gouraud: G_{j+1} within w|G_j + d| + eta of G_j + d (as [gloop_err] below). *)
 Lemma gseq_err : forall (w eta : R) (G : nat -> R) (d : R) (m : nat) (Mg : R),
   0 <= w -> 0 <= eta -> 0 <= Mg ->
   (forall j, (j < m)%nat -> ap1 w eta (G (S j)) (G j + d)) ->
@@ -605,4 +507,43 @@ Proof.
     replace (G (S i) - (g0 + (INR i + 1) * d))
       with ((G (S i) - (Gh + d)) + (Gh - (g0 + INR i * d))) by ring.
     eapply Rle_trans; [apply Rabs_triang|]. lra.
+Qed.
+
+(** FloatModel.v's loops (one rounding function in the standard model) are
+    the case w = u of [cseq_err] and [gseq_err]. *)
+(** The corrected-Euler loop against Euler on the same (computed) start
+    values: for i <= m, the slope is within i (u Ms + eta) and the value
+    within i(i-1)/2 (u Ms + eta) + i (u Mp + eta), provided Ms, Mp bound
+    the slopes and values of the loop (plus the accumulated error). *)
+Lemma floop_err : forall (rnd : R -> R) (u eta : R), std_model rnd u eta -> fmt_ok u eta ->
+  forall (p0 s0 d : R) (m : nat) (Ms Mp : R), 0 <= Ms -> 0 <= Mp ->
+  (forall j, (S j < m)%nat ->
+     Rabs (s0 + INR (S j) * d) + INR m * (u * Ms + eta) <= Ms) ->
+  (forall j, (j < m)%nat ->
+     Rabs (p0 + INR (S j) * s0 + INR (S j) * (INR (S j) - 1) / 2 * d)
+     + INR m * INR m / 2 * (u * Ms + eta) + INR m * (u * Mp + eta) <= Mp) ->
+  forall i, (i <= m)%nat ->
+  ((i < m)%nat ->
+   Rabs (snd (floop rnd p0 s0 d i) - (s0 + INR i * d)) <= INR i * (u * Ms + eta))
+  /\ Rabs (fst (floop rnd p0 s0 d i) - (p0 + INR i * s0 + INR i * (INR i - 1) / 2 * d))
+     <= INR i * (INR i - 1) / 2 * (u * Ms + eta) + INR i * (u * Mp + eta).
+Proof.
+  intros rnd u eta Hstd Hok p0 s0 d m Ms Mp HMs HMp H1 H2 i Hi.
+  destruct Hok as (Hu & _ & He & _).
+  apply (cseq_err u eta (fun j => fst (floop rnd p0 s0 d j)) (fun j => snd (floop rnd p0 s0 d j))
+           d m Ms Mp ltac:(lra) He HMs HMp); [| exact H1 | exact H2 | exact Hi].
+  intros j _. cbv beta. rewrite floop_S. cbn [fst snd]. unfold ap1. split; apply Hstd.
+Qed.
+
+(** The Gouraud loop against g0 + i d. *)
+Lemma gloop_err : forall (rnd : R -> R) (u eta : R), std_model rnd u eta -> fmt_ok u eta ->
+  forall (g0 d : R) (m : nat) (Mg : R), 0 <= Mg ->
+  (forall j, (j < m)%nat -> Rabs (g0 + INR (S j) * d) + INR m * (u * Mg + eta) <= Mg) ->
+  forall i, (i <= m)%nat ->
+  Rabs (gloop rnd g0 d i - (g0 + INR i * d)) <= INR i * (u * Mg + eta).
+Proof.
+  intros rnd u eta Hstd Hok g0 d m Mg HMg HG i Hi.
+  destruct Hok as (Hu & _ & He & _).
+  apply (gseq_err u eta (gloop rnd g0 d) d m Mg ltac:(lra) He HMg); [| exact HG | exact Hi].
+  intros j _. cbn [gloop]. unfold ap1. apply Hstd.
 Qed.

@@ -16,11 +16,317 @@
                |q^ - q_i| <= ((7.02 + 4.01 dd) K1 + (0.02 + 2.01 dd) kd) u;
       lerp:    |p^ - p_i| <= (8.02 K1 + (0.02 + 1.01 dd) kd) u,
                |q^ - q_i| <= (11.02 K1 + (0.02 + 2.01 dd) kd) u.
-    The checker takes the minimum of these bounds and the d-free ones. *)
+    The checker takes the minimum of these bounds and the d-free ones.
+    The relations ([horner_ok], [pixel_ok], [lerp_ok], [krecip_ok], ...) and
+    the steps shared with PhongCount.v, DuffCount.v and PhongNormalize.v come
+    first; PhongCount.v's per-pixel and lerp bounds are these at dd = 2. *)
 
 From Coq Require Import Reals Lra Lia.
-From PhongApprox Require Import Span FloatModel Float FloatModelK Profiles PhongCount.
+From PhongApprox Require Import Span FloatModel Float FloatModelK Profiles.
 Open Scope R_scope.
+
+(** ** Real-arithmetic steps *)
+
+Lemma hc_t : forall m i, 1 <= m -> 0 <= i <= m -> 0 <= i / m <= 1.
+Proof.
+  intros m i Hm Hi. split.
+  - apply Rmult_le_pos; [lra | left; apply Rinv_0_lt_compat; lra].
+  - apply (Rmult_le_reg_r m); [lra|]. unfold Rdiv. rewrite Rmult_assoc, Rinv_l by lra. lra.
+Qed.
+
+Lemma hc_scale : forall t X, 0 <= t <= 1 -> Rabs (t * X) <= Rabs X.
+Proof.
+  intros t X Ht. rewrite Rabs_mult, Rabs_pos_eq by lra.
+  pose proof (Rabs_pos X). nra.
+Qed.
+
+(** ** The exact p_i, q_i and their sizes *)
+
+Lemma hc_dot_abs : forall a b : vec,
+  Rabs (dot a b) <= Rabs (vx a) * Rabs (vx b) + Rabs (vy a) * Rabs (vy b) + Rabs (vz a) * Rabs (vz b).
+Proof. intros a b. unfold dot. rewrite <- !Rabs_mult. apply tri3. Qed.
+
+Lemma hc_p_form : forall s x, (n s <> 0)%nat ->
+  p s x = pa s + x / INR (n s) * dot (vsub (Nb s) (Na s)) (L s).
+Proof.
+  intros s x Hn. apply not_0_INR in Hn. unfold p, A, B, pa, k, dot, vscale, vsub; cbn [vx vy vz].
+  field. exact Hn.
+Qed.
+
+Lemma hc_q_form : forall s x, (n s <> 0)%nat ->
+  q s x = dot (Na s) (Na s) + 2 * (x / INR (n s)) * dot (vsub (Nb s) (Na s)) (Na s)
+          + (x / INR (n s)) * (x / INR (n s)) * dot (vsub (Nb s) (Na s)) (vsub (Nb s) (Na s)).
+Proof.
+  intros s x Hn. apply not_0_INR in Hn. unfold q, C, D, E, k, dot, vscale, vsub; cbn [vx vy vz].
+  field. exact Hn.
+Qed.
+
+Lemma hc_p_le1 : forall s t, is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) -> 0 <= t <= 1 ->
+  Rabs (pa s + t * dot (vsub (Nb s) (Na s)) (L s)) <= 1.
+Proof.
+  intros s t Ha Hb Hl Ht.
+  assert (X : Rabs (dot (Na s) (L s)) <= 1)
+    by (eapply Rle_trans; [apply hc_dot_abs | apply unit_pair; assumption]).
+  assert (Y : Rabs (dot (Nb s) (L s)) <= 1)
+    by (eapply Rle_trans; [apply hc_dot_abs | apply unit_pair; assumption]).
+  replace (pa s + t * dot (vsub (Nb s) (Na s)) (L s))
+    with ((1 - t) * dot (Na s) (L s) + t * dot (Nb s) (L s))
+    by (unfold pa, dot, vsub; cbn [vx vy vz]; ring).
+  eapply Rle_trans; [apply Rabs_triang|].
+  rewrite !Rabs_mult, (Rabs_pos_eq (1 - t)), (Rabs_pos_eq t) by lra. nra.
+Qed.
+
+Lemma hc_q_le1 : forall s t, is_unit (Na s) -> is_unit (Nb s) -> 0 <= t <= 1 ->
+  Rabs (dot (Na s) (Na s) + 2 * t * dot (vsub (Nb s) (Na s)) (Na s)
+        + t * t * dot (vsub (Nb s) (Na s)) (vsub (Nb s) (Na s))) <= 1.
+Proof.
+  intros s t Ha Hb Ht.
+  assert (X : Rabs (dot (Na s) (Nb s)) <= 1)
+    by (eapply Rle_trans; [apply hc_dot_abs | apply unit_pair; assumption]).
+  assert (E : dot (Na s) (Na s) + 2 * t * dot (vsub (Nb s) (Na s)) (Na s)
+        + t * t * dot (vsub (Nb s) (Na s)) (vsub (Nb s) (Na s))
+        = (1 - t) * (1 - t) * dot (Na s) (Na s) + t * t * dot (Nb s) (Nb s)
+          + 2 * t * (1 - t) * dot (Na s) (Nb s))
+    by (unfold dot, vsub; cbn [vx vy vz]; ring).
+  rewrite E. unfold is_unit in Ha, Hb. rewrite Ha, Hb.
+  set (r := dot (Na s) (Nb s)) in *.
+  assert (R : - 1 <= r <= 1) by (unfold Rabs in X; destruct (Rcase_abs r); lra).
+  assert (P : 0 <= 2 * t * (1 - t)) by nra.
+  apply Rabs_le. split; nra.
+Qed.
+
+Lemma hc_sizes : forall s, is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  Rabs (dot (vsub (Nb s) (Na s)) (L s)) <= 2 /\
+  Rabs (dot (vsub (Nb s) (Na s)) (Na s)) <= 2 /\
+  Rabs (dot (vsub (Nb s) (Na s)) (vsub (Nb s) (Na s))) <= 4.
+Proof.
+  intros s Ha Hb Hl. split; [|split].
+  - eapply Rle_trans; [apply hc_dot_abs | apply diff_pair; assumption].
+  - eapply Rle_trans; [apply hc_dot_abs | apply diff_pair; assumption].
+  - pose proof (diff_sq _ _ Ha Hb).
+    assert (0 <= dot (vsub (Nb s) (Na s)) (vsub (Nb s) (Na s))).
+    { unfold dot. pose proof (Rle_0_sqr (vx (vsub (Nb s) (Na s)))).
+      pose proof (Rle_0_sqr (vy (vsub (Nb s) (Na s)))).
+      pose proof (Rle_0_sqr (vz (vsub (Nb s) (Na s)))). unfold Rsqr in *. lra. }
+    rewrite Rabs_pos_eq; lra.
+Qed.
+
+(** ** A division as a reciprocal then a product *)
+
+Lemma recip_ap1 : forall (u eta kd km m x r y : R),
+  0 < u <= / 2097152 -> 0 <= eta -> eta * 19342813113834066795298816 <= u ->
+  0 <= kd -> kd * u <= / 2097152 -> 0 <= km -> 1 <= m <= 16777216 ->
+  ap1 (kd * u) eta r (1 / m) -> ap1 (km * u) eta y (x * r) ->
+  ap1 (((1 + / 1048576) * km + kd + / 68719476736) * u) eta y (x / m).
+Proof.
+  intros u eta kd km m x r y Hu He He2 Hkd Hkdu Hkm Hm Hr Hy. unfold ap1 in *.
+  assert (Im : 0 < / m) by (apply Rinv_0_lt_compat; lra).
+  assert (Im2 : / 16777216 <= / m) by (apply Rinv_le_contravar; lra).
+  replace (1 / m) with (/ m) in Hr by (field; lra).
+  rewrite (Rabs_pos_eq (/ m)) in Hr by lra.
+  set (dd := (kd + / 68719476736) * u).
+  assert (R1 : Rabs (r - / m) <= dd * / m).
+  { assert (eta <= / 68719476736 * u * / m).
+    { assert (/ 68719476736 * u * / 16777216 <= / 68719476736 * u * / m)
+        by (apply Rmult_le_compat_l; nra). lra. }
+    unfold dd. lra. }
+  assert (Hdd : 0 <= dd <= / 1048576).
+  { unfold dd. split; [nra|].
+    lra. }
+  assert (X1 : Rabs (x * r - x / m) <= dd * Rabs (x / m)).
+  { replace (x * r - x / m) with (x * (r - / m)) by (field; lra).
+    replace (x / m) with (x * / m) by (field; lra).
+    rewrite !Rabs_mult, (Rabs_pos_eq (/ m)) by lra.
+    replace (dd * (Rabs x * / m)) with (Rabs x * (dd * / m)) by ring.
+    apply Rmult_le_compat_l; [apply Rabs_pos | exact R1]. }
+  assert (X2 : Rabs (x * r) <= (1 + dd) * Rabs (x / m)).
+  { pose proof (abs_near _ _ _ X1). lra. }
+  assert (X3 : km * u * Rabs (x * r) <= km * u * ((1 + dd) * Rabs (x / m)))
+    by (apply Rmult_le_compat_l; nra).
+  assert (X4 : km * u * (dd * Rabs (x / m)) <= km * u * (/ 1048576 * Rabs (x / m))).
+  { apply Rmult_le_compat_l; [nra|]. apply Rmult_le_compat_r; [apply Rabs_pos | lra]. }
+  replace (y - x / m) with ((y - x * r) + (x * r - x / m)) by ring.
+  eapply Rle_trans; [apply Rabs_triang|].
+  pose proof (Rabs_pos (x / m)).
+  assert (E : ((1 + / 1048576) * km + kd + / 68719476736) * u * Rabs (x / m)
+              = km * u * Rabs (x / m) + km * u * (/ 1048576 * Rabs (x / m))
+                + dd * Rabs (x / m)) by (unfold dd; ring).
+  rewrite E. nra.
+Qed.
+
+(** ** The computation as a relation, for a model M *)
+
+(** k_j as a rounded subtraction, a reciprocal 1/m (a division) and a product. *)
+Definition krecip_ok (M : fmodel) (m kj a b : R) : Prop :=
+  exists t r, ap_add M t (b - a) /\ ap_div M r (1 / m) /\ ap_mul M kj (t * r).
+
+(** Horner's closed form from the computed na, l, k, at the pixel i. *)
+Definition horner_ok (M : fmodel) (i : nat) (na l kk : vec) (ph qh : R) : Prop :=
+  exists fa fb fc e fe,
+    fdot_ok M kk l fa /\ fdot_ok M na l fb /\ fdot_ok M kk kk fc /\
+    fdot_ok M kk na e /\ fdot_ok M na na fe /\
+    (exists x, ap_mul M x (fa * INR i) /\ ap_add M ph (x + fb)) /\
+    (exists y1 y2 y3, ap_mul M y1 (fc * INR i) /\ ap_add M y2 (y1 + 2 * e) /\
+                      ap_mul M y3 (y2 * INR i) /\ ap_add M qh (y3 + fe)).
+
+Lemma hm_small : forall M K K1, model_ok M K -> 1 <= K1 <= K -> small_ok (K1 * m_u M) (m_eta M).
+Proof.
+  intros M K K1 HM HK. pose proof HM as (H1 & H2 & H3 & _ & _ & _ & _ & H8 & H9).
+  repeat split; try lra.
+  - apply Rmult_lt_0_compat; lra.
+  - assert (K1 * m_u M <= K * m_u M) by (apply Rmult_le_compat_r; lra). lra.
+  - assert (m_u M <= K1 * m_u M) by (rewrite <- (Rmult_1_l (m_u M)) at 1;
+      apply Rmult_le_compat_r; lra). lra.
+Qed.
+
+Lemma hm_small_d : forall M K kd, model_ok M K -> 1 <= kd -> kd * m_u M <= / 2097152 ->
+  small_ok (kd * m_u M) (m_eta M).
+Proof.
+  intros M K kd HM H1 H2. pose proof HM as (U1 & U2 & U3 & _).
+  repeat split; try lra.
+  - apply Rmult_lt_0_compat; lra.
+  - assert (m_u M <= kd * m_u M) by (rewrite <- (Rmult_1_l (m_u M)) at 1;
+      apply Rmult_le_compat_r; lra). lra.
+Qed.
+
+Lemma hm_ap : forall M k K1 y x, 0 < m_u M -> k <= K1 ->
+  approx k (m_u M) (m_eta M) y x -> ap1 (K1 * m_u M) (m_eta M) y x.
+Proof.
+  intros M k K1 y x Hu Hk H. eapply ap1_mono; [|exact H].
+  apply Rmult_le_compat_r; lra.
+Qed.
+
+Lemma hm_vap : forall M K1 vh w, 0 < m_u M -> k_in M <= K1 ->
+  vap M vh w -> vap1 (K1 * m_u M) (m_eta M) vh w.
+Proof.
+  intros M K1 vh w Hu Hk [A1 [A2 A3]].
+  repeat split; eapply hm_ap; eassumption.
+Qed.
+
+Lemma hm_fdot : forall M K1 a b y, 0 < m_u M -> k_add M <= K1 -> k_mul M <= K1 ->
+  fdot_ok M a b y -> fdot_rel (K1 * m_u M) (K1 * m_u M) (m_eta M) a b y.
+Proof.
+  intros M K1 a b y Hu Ha Hm H. unfold fdot_ok in H.
+  eapply fdot_mono; [| | exact H]; apply Rmult_le_compat_r; lra.
+Qed.
+
+(** ** The per-pixel normal: N_j = na_j + (i k_j), p^ = N.l, q^ = N.N *)
+
+Definition wb16 (w : vec) : Prop :=
+  0 <= vx w <= 16 /\ 0 <= vy w <= 16 /\ 0 <= vz w <= 16.
+
+(** [Profiles.K_dot] with weights up to 16. *)
+Lemma pp_dot : forall (v d eta lam mu y Sb Cv Cd : R) (ah bh a0 b0 wa1 wa2 wb1 wb2 : vec),
+  small_ok v eta -> small_ok d eta ->
+  fdot_rel v v eta ah bh y -> 0 < lam -> 0 < mu -> lam * mu <= 281474976710656 ->
+  vapprox 1 lam ah a0 (vlin v d wa1 wa2) -> vapprox 1 mu bh b0 (vlin v d wb1 wb2) ->
+  vbounded a0 2 -> vbounded b0 2 -> wb16 wa1 -> wb16 wa2 -> wb16 wb1 -> wb16 wb2 ->
+  Rabs (vx a0) * Rabs (vx b0) + Rabs (vy a0) * Rabs (vy b0) + Rabs (vz a0) * Rabs (vz b0) <= Sb ->
+  Sb <= 12 ->
+  wsum0 a0 b0 wa1 wb1 + 3 * Sb + / 100 <= Cv -> wsum0 a0 b0 wa2 wb2 + / 100 <= Cd ->
+  Rabs (lam * mu * y - dot a0 b0) <= Cv * v + Cd * d.
+Proof.
+  intros v d eta lam mu y Sb Cv Cd ah bh a0 b0 wa1 wa2 wb1 wb2 Hv Hdv Hy Hl Hm Hlm HA HB Ba Bb
+    W1 W2 W3 W4 HS HS12 C1 C2.
+  pose proof (v_pos v eta Hv). pose proof (v_small v eta Hv).
+  pose proof (v_pos d eta Hdv). pose proof (v_small d eta Hdv).
+  pose proof (e_pos v eta Hv). pose proof (e_small v eta Hv).
+  assert (WL : forall w1 w2, wb16 w1 -> wb16 w2 -> wle (vlin v d w1 w2) (16 * (v + d))).
+  { intros w1 w2 [X1 [X2 X3]] [Y1 [Y2 Y3]]. unfold wle, vlin; cbn [vx vy vz].
+    repeat split; nra. }
+  pose proof (fdot_abs v eta Hv lam mu y (16 * (v + d)) ah bh a0 b0 _ _ Hy Hl Hm Hlm HA HB Ba Bb
+                (WL _ _ W1 W2) (WL _ _ W3 W4)) as F.
+  assert (E : wsum0 a0 b0 (vlin v d wa1 wa2) (vlin v d wb1 wb2)
+              = v * wsum0 a0 b0 wa1 wb1 + d * wsum0 a0 b0 wa2 wb2)
+    by (unfold wsum0, vlin; cbn [vx vy vz]; ring).
+  rewrite E in F.
+  set (S := Rabs (vx a0) * Rabs (vx b0) + Rabs (vy a0) * Rabs (vy b0) + Rabs (vz a0) * Rabs (vz b0))
+    in *.
+  assert (S0 : 0 <= S).
+  { unfold S. pose proof (Rabs_pos (vx a0)). pose proof (Rabs_pos (vy a0)).
+    pose proof (Rabs_pos (vz a0)). pose proof (Rabs_pos (vx b0)).
+    pose proof (Rabs_pos (vy b0)). pose proof (Rabs_pos (vz b0)). nra. }
+  assert (V1 : v * (wsum0 a0 b0 wa1 wb1 + 3 * Sb + / 100) <= v * Cv)
+    by (apply Rmult_le_compat_l; lra).
+  assert (V2 : d * (wsum0 a0 b0 wa2 wb2 + / 100) <= d * Cd) by (apply Rmult_le_compat_l; lra).
+  assert (F1 : v * S <= v * Sb) by (apply Rmult_le_compat_l; lra).
+  assert (F2 : v * Sb <= v * 12) by (apply Rmult_le_compat_l; lra).
+  assert (F3 : (v + d) * (v + d) <= / 1048576 * (v + d)) by (apply Rmult_le_compat_r; lra).
+  assert (F4 : v * (v + d) <= / 2097152 * (v + d)) by (apply Rmult_le_compat_r; lra).
+  assert (F5 : v * ((v + d) * (v + d)) <= / 2097152 * (v + d)).
+  { assert ((v + d) * (v + d) <= v + d) by lra.
+    apply Rmult_le_compat; try lra. apply Rmult_le_pos; lra. }
+  assert (F6 : 0 <= v * S) by (apply Rmult_le_pos; lra).
+  eapply Rle_trans; [exact F|]. lra.
+Qed.
+
+(** The exact normal N_i = Na + t (Nb - Na), 0 <= t <= 1. *)
+Definition nrm (s : span) (t : R) : vec := vadd (Na s) (vscale t (vsub (Nb s) (Na s))).
+
+Lemma pp_ni : forall s t, is_unit (Na s) -> is_unit (Nb s) -> 0 <= t <= 1 ->
+  vbounded (nrm s t) 1 /\
+  (forall X, is_unit X ->
+     Rabs (vx (nrm s t)) * Rabs (vx X) + Rabs (vy (nrm s t)) * Rabs (vy X)
+     + Rabs (vz (nrm s t)) * Rabs (vz X) <= 1) /\
+  Rabs (vx (nrm s t)) * Rabs (vx (nrm s t)) + Rabs (vy (nrm s t)) * Rabs (vy (nrm s t))
+     + Rabs (vz (nrm s t)) * Rabs (vz (nrm s t)) <= 1.
+Proof.
+  intros s t Ha Hb Ht.
+  assert (Q : dot (nrm s t) (nrm s t) <= 1).
+  { pose proof (hc_q_le1 s t Ha Hb Ht) as H.
+    replace (dot (nrm s t) (nrm s t)) with (dot (Na s) (Na s)
+        + 2 * t * dot (vsub (Nb s) (Na s)) (Na s)
+        + t * t * dot (vsub (Nb s) (Na s)) (vsub (Nb s) (Na s)))
+      by (unfold nrm, dot, vadd, vscale, vsub; cbn [vx vy vz]; ring).
+    unfold Rabs in H. destruct (Rcase_abs _); lra. }
+  destruct (unit_bounded _ Ha) as [A1 [A2 A3]].
+  destruct (unit_bounded _ Hb) as [B1 [B2 B3]].
+  assert (C : forall a b, Rabs a <= 1 -> Rabs b <= 1 -> Rabs (a + t * (b - a)) <= 1).
+  { intros a b H1 H2. replace (a + t * (b - a)) with ((1 - t) * a + t * b) by ring.
+    eapply Rle_trans; [apply Rabs_triang|].
+    rewrite !Rabs_mult, (Rabs_pos_eq (1 - t)), (Rabs_pos_eq t) by lra.
+    pose proof (Rabs_pos a). pose proof (Rabs_pos b). nra. }
+  split; [|split].
+  - unfold vbounded, nrm, vadd, vscale, vsub; cbn [vx vy vz]. repeat split; apply C; assumption.
+  - intros X HX. unfold is_unit in HX.
+    pose proof (amgm1 (vx (nrm s t)) (vx X)). pose proof (amgm1 (vy (nrm s t)) (vy X)).
+    pose proof (amgm1 (vz (nrm s t)) (vz X)). unfold dot in Q, HX. lra.
+  - rewrite !abs_sq. unfold dot in Q. lra.
+Qed.
+
+Lemma pp_p_form : forall s i, (n s <> 0)%nat ->
+  p s (INR i) = dot (nrm s (INR i / INR (n s))) (L s).
+Proof.
+  intros s i Hn. rewrite hc_p_form by exact Hn.
+  unfold nrm, pa, dot, vadd, vscale, vsub; cbn [vx vy vz]. ring.
+Qed.
+
+Lemma pp_q_form : forall s i, (n s <> 0)%nat ->
+  q s (INR i) = dot (nrm s (INR i / INR (n s))) (nrm s (INR i / INR (n s))).
+Proof.
+  intros s i Hn. rewrite hc_q_form by exact Hn.
+  unfold nrm, dot, vadd, vscale, vsub; cbn [vx vy vz]. ring.
+Qed.
+
+(** The per-pixel normal from the computed na, k at the pixel i (each product
+    i k_j rounded, or exact when fused into the sum), then p^ = N.l, q^ = N.N. *)
+Definition ncomp_ok (M : fmodel) (i : nat) (nj naj kj : R) : Prop :=
+  exists z, ap_mul M z (INR i * kj) /\ ap_add M nj (naj + z).
+
+Definition pixel_ok (M : fmodel) (i : nat) (na l kk : vec) (ph qh : R) : Prop :=
+  exists nh, ncomp_ok M i (vx nh) (vx na) (vx kk) /\ ncomp_ok M i (vy nh) (vy na) (vy kk) /\
+    ncomp_ok M i (vz nh) (vz na) (vz kk) /\ fdot_ok M nh l ph /\ fdot_ok M nh nh qh.
+
+
+(** The lerp with the model's operations: t^ within ap1 (kd u) of i/n, then
+    w = 1 - t^ (a subtraction), (w na_j) + (t^ nb_j), each product rounded or fused. *)
+Definition lcomp_ok (M : fmodel) (th nj naj nbj : R) : Prop :=
+  exists w a b, ap_add M w (1 - th) /\ ap_mul M a (w * naj) /\ ap_mul M b (th * nbj)
+                /\ ap_add M nj (a + b).
+
+Definition lerp_ok (M : fmodel) (th : R) (na nb l : vec) (ph qh : R) : Prop :=
+  exists nh, lcomp_ok M th (vx nh) (vx na) (vx nb) /\ lcomp_ok M th (vy nh) (vy na) (vy nb) /\
+    lcomp_ok M th (vz nh) (vz na) (vz nb) /\ fdot_ok M nh l ph /\ fdot_ok M nh nh qh.
 
 (** ** Cauchy-Schwarz on absolute values *)
 
@@ -51,13 +357,6 @@ Qed.
 
 Lemma mix_le : forall t a b, 0 <= t <= 1 -> a <= 1 -> b <= 1 -> (1 - t) * a + t * b <= 1.
 Proof. intros t a b Ht Ha Hb. nra. Qed.
-
-Lemma ap1_le : forall v eta y x X, 0 <= v -> ap1 v eta y x -> Rabs x <= X ->
-  Rabs (y - x) <= v * X + eta.
-Proof.
-  intros v eta y x X Hv H HX. unfold ap1 in H.
-  assert (v * Rabs x <= v * X) by (apply Rmult_le_compat_l; lra). lra.
-Qed.
 
 (** Mixture weights: c1 M_j + c2 |D_j| + 2^-15. *)
 Definition wM (a b : vec) (t c1 c2 : R) : vec :=

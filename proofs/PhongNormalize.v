@@ -31,7 +31,7 @@
     um, ua <= 2^-21 (the dot products' units: k_mul u, k_add u). *)
 
 From Coq Require Import Reals Lra.
-From PhongApprox Require Import Span FloatModel Float FloatModelK Profiles PhongValue PhongCount.
+From PhongApprox Require Import Span FloatModel Float FloatModelK Profiles PhongValue PhongCount PhongCountD.
 Open Scope R_scope.
 
 (** ** Helpers *)

@@ -31,9 +31,6 @@ Open Scope R_scope.
 Lemma pv_abs_le : forall x a, Rabs x <= a -> - a <= x <= a.
 Proof. intros x a H. unfold Rabs in H. destruct (Rcase_abs x); lra. Qed.
 
-Lemma pv_abs_le_intro : forall x a, - a <= x <= a -> Rabs x <= a.
-Proof. intros x a H. unfold Rabs. destruct (Rcase_abs x); lra. Qed.
-
 Lemma pv_div_abs : forall x y, 0 < y -> Rabs (x / y) = Rabs x / y.
 Proof.
   intros x y Hy. unfold Rdiv. rewrite Rabs_mult, Rabs_inv, (Rabs_pos_eq y) by lra.

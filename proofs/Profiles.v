@@ -497,6 +497,29 @@ End Gouraud.
 Lemma nat_R : forall (m : nat) (z : Z), (Z.of_nat m <= z)%Z -> INR m <= IZR z.
 Proof. intros m z H. rewrite INR_IZR_INZ. apply IZR_le. exact H. Qed.
 
+Lemma ce_profile_nr : forall s : span, (1 <= n s <= 4096)%nat ->
+  1 <= INR (n s) <= 4096.
+Proof.
+  intros s Hn. split; [apply (le_INR 1); lia | apply (nat_R _ 4096); lia].
+Qed.
+
+(** One instantiation tactic for every profile: [gen] is a generic bound at
+    the profile's model; the size conditions come from n <= 4096 (or
+    n <= 2^24), the constants from unfolding the model. *)
+Ltac profile_inst gen :=
+  intros;
+  repeat match goal with
+  | H : (1 <= n ?s <= 4096)%nat |- _ => pose proof (ce_profile_nr s H); destruct H
+  | H : (Z.of_nat (n ?s) <= 16777216)%Z |- _ =>
+      pose proof (nat_R _ _ H); pose proof (pos_INR (n s)); clear H
+  end;
+  eapply Rle_trans;
+  [ eapply gen; try eassumption;
+    cbn [ieee32 ieee64 shader32 shader32_recip m_u k_in k_add k_mul k_div];
+    rewrite ?u24, ?u53; solve [lra | lia]
+  | cbn [ieee32 ieee64 shader32 shader32_recip m_u k_in k_add k_mul k_div];
+    apply Rmult_le_compat_r; [apply bpow_ge_0 | lra] ].
+
 (** ** Gouraud: the generic bound and the profiles *)
 
 (** Any model with the size conditions, 1 <= n <= 2^24 and n k_add u <= 2^-11. *)
@@ -522,17 +545,7 @@ Theorem profile_ieee_gouraud_binary32 : forall (s : span) (F : fsetup) (G : nat 
   gouraud_setup_ok ieee32 s F -> gouraud_run ieee32 F (n s) G ->
   forall i, (i <= n s)%nat ->
   Rabs (G i - gouraud s i) <= (10006 / 10000 * INR (n s) + 11001 / 1000) * bpow radix2 (-24).
-Proof.
-  intros s F G Ha Hb Hl Hn HF HG i Hi.
-  assert (Hn' : INR (n s) <= 4096) by (apply (nat_R _ 4096); lia).
-  assert (H1 : 0 <= INR (n s)) by apply pos_INR.
-  eapply Rle_trans.
-  { apply (profile_gouraud_generic ieee32 _ ieee32_ok s F G Ha Hb Hl ltac:(lia)); try assumption.
-    - lra.
-    - unfold ieee32; cbn [m_u k_add]. rewrite u24. lra. }
-  unfold ieee32; cbn [m_u k_in k_add k_mul k_div].
-  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
-Qed.
+Proof. profile_inst (profile_gouraud_generic ieee32 _ ieee32_ok). Qed.
 
 (* Note: ieee profile, binary64 (u = 2^-53, eta = 2^-1075). *)
 (** Gouraud, ieee profile, binary64: |G_i - gouraud i| <= (1.0006 n + 11.001) 2^-53. *)
@@ -541,17 +554,7 @@ Theorem profile_ieee_gouraud_binary64 : forall (s : span) (F : fsetup) (G : nat 
   gouraud_setup_ok ieee64 s F -> gouraud_run ieee64 F (n s) G ->
   forall i, (i <= n s)%nat ->
   Rabs (G i - gouraud s i) <= (10006 / 10000 * INR (n s) + 11001 / 1000) * bpow radix2 (-53).
-Proof.
-  intros s F G Ha Hb Hl Hn HF HG i Hi.
-  assert (Hn' : INR (n s) <= 4096) by (apply (nat_R _ 4096); lia).
-  assert (H1 : 0 <= INR (n s)) by apply pos_INR.
-  eapply Rle_trans.
-  { apply (profile_gouraud_generic ieee64 _ ieee64_ok s F G Ha Hb Hl ltac:(lia)); try assumption.
-    - lra.
-    - unfold ieee64; cbn [m_u k_add]. rewrite u53. lra. }
-  unfold ieee64; cbn [m_u k_in k_add k_mul k_div].
-  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
-Qed.
+Proof. profile_inst (profile_gouraud_generic ieee64 _ ieee64_ok). Qed.
 
 (* Note: ieee profile, binary64, spans up to 2^24 pixels. *)
 (** Gouraud, ieee profile, binary64, n <= 2^24: |G_i - gouraud i| <= (1.0006 n + 11.001) 2^-53. *)
@@ -561,16 +564,7 @@ Theorem profile_ieee_gouraud_binary64_large : forall (s : span) (F : fsetup) (G 
   gouraud_setup_ok ieee64 s F -> gouraud_run ieee64 F (n s) G ->
   forall i, (i <= n s)%nat ->
   Rabs (G i - gouraud s i) <= (10006 / 10000 * INR (n s) + 11001 / 1000) * bpow radix2 (-53).
-Proof.
-  intros s F G Ha Hb Hl Hn1 Hn HF HG i Hi.
-  assert (Hn' : INR (n s) <= 16777216) by (apply nat_R; exact Hn).
-  assert (H1 : 0 <= INR (n s)) by apply pos_INR.
-  eapply Rle_trans.
-  { apply (profile_gouraud_generic ieee64 _ ieee64_ok s F G Ha Hb Hl Hn1); try assumption.
-    unfold ieee64; cbn [m_u k_add]. rewrite u53. lra. }
-  unfold ieee64; cbn [m_u k_in k_add k_mul k_div].
-  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
-Qed.
+Proof. profile_inst (profile_gouraud_generic ieee64 _ ieee64_ok). Qed.
 
 (* Note: shader profile (Vulkan / WGSL float32): add, sub, mul within 2u
    (nearest or toward zero), division within 2.5 ulp (5u), inputs and results
@@ -581,17 +575,7 @@ Theorem profile_shader_gouraud_binary32 : forall (s : span) (F : fsetup) (G : na
   gouraud_setup_ok shader32 s F -> gouraud_run shader32 F (n s) G ->
   forall i, (i <= n s)%nat ->
   Rabs (G i - gouraud s i) <= (20012 / 10000 * INR (n s) + 24002 / 1000) * bpow radix2 (-24).
-Proof.
-  intros s F G Ha Hb Hl Hn HF HG i Hi.
-  assert (Hn' : INR (n s) <= 4096) by (apply (nat_R _ 4096); lia).
-  assert (H1 : 0 <= INR (n s)) by apply pos_INR.
-  eapply Rle_trans.
-  { apply (profile_gouraud_generic shader32 _ shader32_ok s F G Ha Hb Hl ltac:(lia)); try assumption.
-    - lra.
-    - unfold shader32; cbn [m_u k_add]. rewrite u24. lra. }
-  unfold shader32; cbn [m_u k_in k_add k_mul k_div].
-  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
-Qed.
+Proof. profile_inst (profile_gouraud_generic shader32 _ shader32_ok). Qed.
 
 (** ** Halving computed in floats (closed forms)
 
@@ -608,6 +592,81 @@ Definition half_rel (v d eta : R) (i : nat) (ds hh : R) : Prop :=
 Definition half_ok (M : fmodel) (i : nat) (ds h : R) : Prop :=
   (exists c, ap_div M c ((INR i - 1) / 2) /\ ap_mul M h (c * ds)) \/
   (exists y, ap_mul M y ((INR i - 1) * ds) /\ ap_div M h (y / 2)).
+
+(** The closed forms p = p_a + i (t + h), h within w |X| + e of
+    X = (i-1)/2 ds (a product, or the halving of [half_rel]), evaluated as
+    g = t + h, m = i g, p = p_a + m: |n t| <= T, |n^2 ds| <= D, the ideal
+    value within E0 of the exact ex, |ex| <= B; Sg, Spm bound |i g|, |p_a + m|. *)
+Lemma closed_form_err : forall v eta w e nr ii t fds hh g m p fpa ex T D E0 B Sg Spm,
+  0 <= v <= / 2097152 -> 0 <= eta -> 0 <= w -> 0 <= e ->
+  1 <= nr <= 16777216 -> 0 <= ii <= nr ->
+  Rabs (nr * t) <= T -> Rabs (nr * nr * fds) <= D ->
+  Rabs (hh - (ii - 1) / 2 * fds) <= w * Rabs ((ii - 1) / 2 * fds) + e ->
+  ap1 v eta g (t + hh) -> ap1 v eta m (ii * g) -> ap1 v eta p (fpa + m) ->
+  Rabs (fpa + ii * t + ii * (ii - 1) / 2 * fds - ex) <= E0 -> Rabs ex <= B ->
+  let Eh := w * (D / 2) + 16777216 * e in
+  let E2 := v * (T + D / 2) + (1 + / 2097152) * Eh + 16777216 * eta in
+  T + D / 2 + E2 <= Sg -> E0 + B + (Sg * v + eta) + E2 <= Spm ->
+  Rabs (p - ex) <= Spm * v + eta + (Sg * v + eta) + E2 + E0.
+Proof.
+  intros v eta w e nr ii t fds hh g m p fpa ex T D E0 B Sg Spm Hv He Hw Hee Hnr Hi S0 D2 Hh
+    Hg Hm Hp G0 G1 Eh E2 HSg HSpm.
+  unfold ap1 in Hg, Hm, Hp.
+  set (X := (ii - 1) / 2 * fds) in *.
+  assert (EX : nr * X = (ii - 1) / (2 * nr) * (nr * nr * fds)) by (unfold X; field; lra).
+  assert (Hci : Rabs ((ii - 1) / (2 * nr)) <= 1 / 2).
+  { apply Rabs_le. split; apply (Rmult_le_reg_r (2 * nr)); try lra; unfold Rdiv;
+      rewrite Rmult_assoc, Rinv_l by lra; lra. }
+  assert (BX : Rabs (nr * X) <= D / 2).
+  { rewrite EX, Rabs_mult. replace (D / 2) with (1 / 2 * D) by field.
+    apply Rmult_le_compat; try apply Rabs_pos; lra. }
+  set (Gx := t + X).
+  assert (BG : Rabs (nr * Gx) <= T + D / 2).
+  { unfold Gx. rewrite Rmult_plus_distr_l. eapply Rle_trans; [apply Rabs_triang|]. lra. }
+  assert (AB : forall z, Rabs (nr * z) = nr * Rabs z)
+    by (intros z; rewrite Rabs_mult, Rabs_pos_eq by lra; reflexivity).
+  rewrite AB in BX, BG.
+  assert (E1 : nr * Rabs (hh - X) <= Eh).
+  { assert (nr * Rabs (hh - X) <= nr * (w * Rabs X + e)) by (apply Rmult_le_compat_l; lra).
+    assert (w * (nr * Rabs X) <= w * (D / 2)) by (apply Rmult_le_compat_l; lra).
+    assert (nr * e <= 16777216 * e) by (apply Rmult_le_compat_r; lra).
+    unfold Eh. lra. }
+  assert (E2b : nr * Rabs (g - Gx) <= E2).
+  { replace (g - Gx) with ((g - (t + hh)) + (hh - X)) by (unfold Gx; ring).
+    assert (Rabs (t + hh) <= Rabs Gx + Rabs (hh - X)).
+    { replace (t + hh) with (Gx + (hh - X)) by (unfold Gx; ring). apply Rabs_triang. }
+    assert (nr * Rabs (g - (t + hh)) <= nr * (v * (Rabs Gx + Rabs (hh - X)) + eta)).
+    { apply Rmult_le_compat_l; [lra|]. eapply Rle_trans; [exact Hg|].
+      apply Rplus_le_compat_r, Rmult_le_compat_l; lra. }
+    assert (v * (nr * Rabs Gx) <= v * (T + D / 2)) by (apply Rmult_le_compat_l; lra).
+    assert (v * (nr * Rabs (hh - X)) <= / 2097152 * (nr * Rabs (hh - X)))
+      by (apply Rmult_le_compat_r; [apply Rmult_le_pos; [lra | apply Rabs_pos] | lra]).
+    assert (nr * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra).
+    assert (nr * Rabs (g - (t + hh) + (hh - X))
+            <= nr * Rabs (g - (t + hh)) + nr * Rabs (hh - X)).
+    { rewrite <- Rmult_plus_distr_l. apply Rmult_le_compat_l; [lra | apply Rabs_triang]. }
+    unfold E2. lra. }
+  assert (Ii : forall z, 0 <= z -> ii * z <= nr * z) by (intros z Hz; apply Rmult_le_compat_r; lra).
+  assert (IG : Rabs (ii * Gx) <= T + D / 2).
+  { rewrite Rabs_mult, (Rabs_pos_eq ii) by lra. pose proof (Ii (Rabs Gx) (Rabs_pos _)). lra. }
+  assert (IE : Rabs (ii * (g - Gx)) <= E2).
+  { rewrite Rabs_mult, (Rabs_pos_eq ii) by lra. pose proof (Ii (Rabs (g - Gx)) (Rabs_pos _)). lra. }
+  assert (Bg : Rabs (ii * g) <= Sg).
+  { replace (ii * g) with (ii * Gx + ii * (g - Gx)) by ring.
+    eapply Rle_trans; [apply Rabs_triang|]. lra. }
+  assert (E3 : Rabs (m - ii * g) <= Sg * v + eta).
+  { assert (v * Rabs (ii * g) <= v * Sg) by (apply Rmult_le_compat_l; lra). lra. }
+  replace (fpa + ii * t + ii * (ii - 1) / 2 * fds) with (fpa + ii * Gx) in G0
+    by (unfold Gx, X; field).
+  assert (Bpm : Rabs (fpa + m) <= Spm).
+  { replace (fpa + m) with ((fpa + ii * Gx - ex) + ex + (m - ii * g) + ii * (g - Gx)) by ring.
+    eapply Rle_trans; [apply tri4|]. lra. }
+  assert (E4 : Rabs (p - (fpa + m)) <= Spm * v + eta).
+  { assert (v * Rabs (fpa + m) <= v * Spm) by (apply Rmult_le_compat_l; lra). lra. }
+  replace (p - ex) with ((p - (fpa + m)) + (m - ii * g) + ii * (g - Gx) + (fpa + ii * Gx - ex))
+    by ring.
+  eapply Rle_trans; [apply tri4|]. lra.
+Qed.
 
 (** ** Corrected Euler: the set-up, with unit v for inputs, additions and
     products and unit d for divisions *)
@@ -786,21 +845,7 @@ Proof.
   eapply Rle_trans; [exact F|]. lra.
 Qed.
 
-Ltac unit_facts :=
-  pose proof (unit_bounded _ Hua) as [UA1 [UA2 UA3]];
-  pose proof (unit_bounded _ Hub) as [UB1 [UB2 UB3]];
-  pose proof (unit_bounded _ Hul) as [UL1 [UL2 UL3]];
-  pose proof (diff_bounded _ _ Hua Hub) as [UD1 [UD2 UD3]];
-  pose proof (unit_pair _ _ Hua Hul); pose proof (unit_pair _ _ Hub Hul);
-  pose proof (unit_pair _ _ Hub Hua); pose proof (unit_abs_sq _ Hua);
-  pose proof (diff_pair _ _ _ Hua Hub Hul); pose proof (diff_pair _ _ _ Hua Hub Hua);
-  pose proof (diff_pair _ _ _ Hua Hub Hub); pose proof (diff_abs_sq _ _ Hua Hub);
-  pose proof (Rabs_pos (vx (Na s))); pose proof (Rabs_pos (vy (Na s)));
-  pose proof (Rabs_pos (vz (Na s))); pose proof (Rabs_pos (vx (Nb s)));
-  pose proof (Rabs_pos (vy (Nb s))); pose proof (Rabs_pos (vz (Nb s)));
-  pose proof (Rabs_pos (vx (L s))); pose proof (Rabs_pos (vy (L s)));
-  pose proof (Rabs_pos (vz (L s))); pose proof (Rabs_pos (vx (vsub (Nb s) (Na s))));
-  pose proof (Rabs_pos (vy (vsub (Nb s) (Na s)))); pose proof (Rabs_pos (vz (vsub (Nb s) (Na s)))).
+Ltac unit_facts := unit_facts_of s Hua Hub Hul.
 
 Ltac wKb := first [ apply vzero_bounded
   | apply (wIn_bounded _ (unit_bounded _ Hua)) | apply (wIn_bounded _ (unit_bounded _ Hub))
@@ -1168,6 +1213,72 @@ Proof.
   pose proof (abs_near _ _ _ B). lra.
 Qed.
 
+(** The loops p += s, s += ds from (p_a, t), t = t0 (corrected Euler) or
+    di_a (Euler), with their own addition unit ua <= v, n ua <= 2^-11:
+    |n (t + J ds)| <= Cs + 200 (v + d), the closed form on the computed values
+    within E0 of ex and |ex| <= B; Msn / n and Mp bound the loop's s and p. *)
+Lemma K_final_gen : forall (t Cs Msn Mp E0 B : R) (ex : nat -> R) (ua : R) (P Q : nat -> R),
+  0 <= ua <= v -> nr * ua <= / 2048 -> 0 <= Msn -> 0 <= Mp ->
+  Cs + 200 * (v + d) + Msn / 2048 + 281474976710656 * eta <= Msn ->
+  B + E0 + (Msn / 2 + Mp) / 2048 + 281474976710656 * eta <= Mp ->
+  (forall J, (J < n s)%nat -> Rabs (nr * (t + INR J * fds)) <= Cs + 200 * (v + d)) ->
+  (forall j, (j <= n s)%nat ->
+     Rabs (fpa + INR j * t + INR j * (INR j - 1) / 2 * fds - ex j) <= E0 /\ Rabs (ex j) <= B) ->
+  P O = fpa -> Q O = t ->
+  (forall j, (j < n s)%nat -> ap1 ua eta (P (S j)) (P j + Q j) /\ ap1 ua eta (Q (S j)) (Q j + fds)) ->
+  forall i, (i <= n s)%nat ->
+  Rabs (P i - ex i) <= (Msn / 2 + Mp) * (nr * ua) + E0 + 281474976710656 * eta.
+Proof.
+  intros t Cs Msn Mp E0 B ex ua P Q Hua0 Hnua HMsn HMp HC1 HC2 Hsl Hid HP0 HQ0 Hstep i Hi. basics.
+  pose proof (e_pos v eta Hv) as He0. pose proof (e_small v eta Hv) as He1.
+  set (Ms := Msn / nr).
+  assert (HMs : 0 <= Ms)
+    by (unfold Ms, Rdiv; apply Rmult_le_pos; [lra | apply Rlt_le, Rinv_0_lt_compat; lra]).
+  assert (Hnn : nr * nr <= 281474976710656) by nra.
+  assert (Hne : nr * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra).
+  assert (Hnne : nr * nr * eta <= 281474976710656 * eta) by (apply Rmult_le_compat_r; lra).
+  assert (Hnu0 : 0 <= nr * ua) by (apply Rmult_le_pos; lra).
+  assert (Hs1 : Msn * (nr * ua) <= Msn / 2048) by (apply Rmult_le_compat_l; lra).
+  assert (Hp1 : Mp * (nr * ua) <= Mp / 2048) by (apply Rmult_le_compat_l; lra).
+  assert (Ems2 : nr * nr / 2 * (ua * Ms + eta) = Msn / 2 * (nr * ua) + nr * nr * eta / 2)
+    by (unfold Ms; field; lra).
+  assert (Emp : nr * (ua * Mp + eta) = Mp * (nr * ua) + nr * eta) by ring.
+  destruct (cseq_err ua eta P Q fds (n s) Ms Mp ltac:(lra) He0 HMs HMp Hstep)
+    with (i := i) as [_ HPi]; [| | exact Hi |].
+  - intros j Hj. rewrite HQ0. pose proof (Hsl (S j) Hj) as G0.
+    assert (G1 : Rabs (t + INR (S j) * fds) <= (Cs + 200 * (v + d)) / nr).
+    { replace (t + INR (S j) * fds) with (nr * (t + INR (S j) * fds) / nr) by (field; lra).
+      unfold Rdiv. rewrite Rabs_mult, (Rabs_pos_eq (/ nr))
+        by (apply Rlt_le, Rinv_0_lt_compat; lra).
+      apply Rmult_le_compat_r; [apply Rlt_le, Rinv_0_lt_compat; lra | exact G0]. }
+    assert (G2 : (Cs + 200 * (v + d)) / nr + nr * (ua * Ms + eta) <= Ms).
+    { unfold Ms. apply div_helper; [lra|].
+      replace (nr * (ua * (Msn / nr) + eta) * nr) with (Msn * (nr * ua) + nr * nr * eta)
+        by (field; lra).
+      lra. }
+    lra.
+  - intros j Hj. rewrite HP0, HQ0. destruct (Hid (S j) Hj) as [G0 G1].
+    pose proof (abs_near _ _ _ G0) as G2. rewrite Ems2, Emp. lra.
+  - rewrite HP0, HQ0 in HPi. destruct (Hid i Hi) as [G0 _].
+    assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
+    replace (P i - ex i)
+      with ((P i - (fpa + INR i * t + INR i * (INR i - 1) / 2 * fds))
+            + (fpa + INR i * t + INR i * (INR i - 1) / 2 * fds - ex i)) by ring.
+    eapply Rle_trans; [apply Rabs_triang|].
+    assert (Es0 : 0 <= ua * Ms + eta) by (pose proof (Rmult_le_pos ua Ms); lra).
+    assert (K1 : INR i * (INR i - 1) / 2 <= nr * (nr - 1) / 2) by nra.
+    assert (K2 : INR i * (INR i - 1) / 2 * (ua * Ms + eta) <= nr * (nr - 1) / 2 * (ua * Ms + eta))
+      by (apply Rmult_le_compat_r; lra).
+    assert (K3 : nr * (nr - 1) / 2 * (ua * Ms + eta)
+                 = Msn / 2 * (nr * ua) - Msn / 2 * ua + nr * nr * eta / 2 - nr * eta / 2)
+      by (unfold Ms; field; lra).
+    assert (K4 : INR i * (ua * Mp + eta) <= nr * (ua * Mp + eta))
+      by (apply Rmult_le_compat_r; [nra | lra]).
+    assert (K5 : 0 <= Msn / 2 * ua) by (apply Rmult_le_pos; lra).
+    assert (K6 : 0 <= nr * eta) by (apply Rmult_le_pos; lra).
+    lra.
+Qed.
+
 (** The loop, with its own addition unit ua <= v and n ua <= 2^-11. *)
 Lemma K_ce_final : forall (ua : R) (P Q : nat -> R), 0 <= ua <= v -> nr * ua <= / 2048 ->
   P O = fpa -> Q O = ft0 ->
@@ -1177,53 +1288,11 @@ Lemma K_ce_final : forall (ua : R) (P Q : nat -> R), 0 <= ua <= v -> nr * ua <= 
 Proof.
   intros ua P Q Hua0 Hnua HP0 HQ0 Hstep i Hi. basics.
   pose proof (e_pos v eta Hv) as He0. pose proof (e_small v eta Hv) as He1.
-  set (Ms := 2002 / 1000 / nr). set (Mp := 1194 / 1000).
-  assert (HMs : 0 <= Ms) by (unfold Ms, Rdiv; apply Rmult_le_pos; [lra | apply Rlt_le, Rinv_0_lt_compat; lra]).
-  assert (Hnn : nr * nr <= 281474976710656) by nra.
-  assert (Hne : nr * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra).
-  assert (Hnne : nr * nr * eta <= 281474976710656 * eta) by (apply Rmult_le_compat_r; lra).
-  assert (Ems2 : nr * nr / 2 * (ua * Ms + eta) = 1001 / 1000 * (nr * ua) + nr * nr * eta / 2)
-    by (unfold Ms; field; lra).
-  assert (Hnu0 : 0 <= nr * ua) by (apply Rmult_le_pos; lra).
-  destruct (cseq_err ua eta P Q fds (n s) Ms Mp ltac:(lra) He0 HMs ltac:(unfold Mp; lra) Hstep)
-    with (i := i) as [_ HPi]; [| | exact Hi |].
-  - intros j Hj. rewrite HQ0. pose proof (K_slope (S j) Hj) as G0.
-    assert (G1 : Rabs (ft0 + INR (S j) * fds) <= (2 + 200 * (v + d)) / nr).
-    { replace (ft0 + INR (S j) * fds)
-        with (nr * (ft0 + INR (S j) * fds) / nr) by (field; lra).
-      unfold Rdiv. rewrite Rabs_mult, (Rabs_pos_eq (/ nr))
-        by (apply Rlt_le, Rinv_0_lt_compat; lra).
-      apply Rmult_le_compat_r; [apply Rlt_le, Rinv_0_lt_compat; lra | exact G0]. }
-    assert (G2 : (2 + 200 * (v + d)) / nr + nr * (ua * Ms + eta) <= Ms).
-    { unfold Ms. apply div_helper; [lra|].
-      replace (nr * (ua * (2002 / 1000 / nr) + eta) * nr)
-        with (2002 / 1000 * (nr * ua) + nr * nr * eta) by (field; lra).
-      lra. }
-    lra.
-  - intros j Hj. rewrite HP0, HQ0.
-    pose proof (K_ce_ideal (S j) Hj) as G0. pose proof (ceuler_le s Hua Hub Hul Hn1 (S j) Hj) as G1.
-    pose proof (abs_near _ _ _ G0) as G2.
-    rewrite Ems2. unfold Mp.
-    assert (nr * (ua * (1194 / 1000) + eta) = 1194 / 1000 * (nr * ua) + nr * eta) by ring.
-    lra.
-  - rewrite HP0, HQ0 in HPi. pose proof (K_ce_ideal i Hi) as G0.
-    assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
-    replace (P i - ceuler s i)
-      with ((P i - (fpa + INR i * ft0 + INR i * (INR i - 1) / 2 * fds))
-            + (fpa + INR i * ft0 + INR i * (INR i - 1) / 2 * fds - ceuler s i)) by ring.
-    eapply Rle_trans; [apply Rabs_triang|].
-    assert (Es0 : 0 <= ua * Ms + eta) by (pose proof (Rmult_le_pos ua Ms); lra).
-    assert (K1 : INR i * (INR i - 1) / 2 <= nr * (nr - 1) / 2) by nra.
-    assert (K2 : INR i * (INR i - 1) / 2 * (ua * Ms + eta) <= nr * (nr - 1) / 2 * (ua * Ms + eta))
-      by (apply Rmult_le_compat_r; lra).
-    assert (K3 : nr * (nr - 1) / 2 * (ua * Ms + eta)
-                 = 1001 / 1000 * (nr * ua) - 1001 / 1000 * ua + nr * nr * eta / 2 - nr * eta / 2)
-      by (unfold Ms; field; lra).
-    assert (K4 : INR i * (ua * Mp + eta) <= nr * (ua * Mp + eta))
-      by (apply Rmult_le_compat_r; [unfold Mp; nra | lra]).
-    assert (K6 : 0 <= nr * eta) by (apply Rmult_le_pos; lra).
-    assert (K7 : nr * (ua * Mp + eta) = 1194 / 1000 * (nr * ua) + nr * eta) by (unfold Mp; ring).
-    lra.
+  pose proof (K_final_gen ft0 2 (2002 / 1000) (1194 / 1000) (3656 / 100 * v + 727 / 100 * d)
+    (11925 / 10000) (ceuler s) ua P Q Hua0 Hnua ltac:(lra) ltac:(lra) ltac:(lra) ltac:(lra)
+    K_slope (fun j Hj => conj (K_ce_ideal j Hj) (ceuler_le s Hua Hub Hul Hn1 j Hj))
+    HP0 HQ0 Hstep i Hi).
+  assert (0 <= nr * ua) by (apply Rmult_le_pos; lra). lra.
 Qed.
 
 (** The closed form p_i = p_a + i (t0 + (i-1)/2 ds), evaluated as
@@ -1237,81 +1306,14 @@ Proof.
   intros i Hi hh g m p Hh Hg Hm Hp. basics.
   pose proof (e_pos v eta Hv) as He0. pose proof (e_small v eta Hv) as He1.
   assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
-  pose proof (K_slope 0 ltac:(lia)) as S0. cbn [INR] in S0.
-  rewrite Rmult_0_l, Rplus_0_r in S0.
-  pose proof K_ds as D0. pose proof (n2ds_le s Hua Hub Hul) as D1.
-  assert (D2 : Rabs (nr * nr * fds) <= 2001 / 1000) by (pose proof (abs_near _ _ _ D0); lra).
-  set (X := (INR i - 1) / 2 * fds) in *.
-  assert (EX : nr * X = (INR i - 1) / (2 * nr) * (nr * nr * fds)) by (unfold X; field; lra).
-  assert (Hci : Rabs ((INR i - 1) / (2 * nr)) <= 1 / 2).
-  { apply Rabs_le. split.
-    - apply (Rmult_le_reg_r (2 * nr)); [lra|]. unfold Rdiv.
-      rewrite Rmult_assoc, Rinv_l by lra. lra.
-    - apply (Rmult_le_reg_r (2 * nr)); [lra|]. unfold Rdiv.
-      rewrite Rmult_assoc, Rinv_l by lra. lra. }
-  assert (BX : Rabs (nr * X) <= 10005 / 10000).
-  { rewrite EX, Rabs_mult. replace (10005 / 10000) with (1 / 2 * (2001 / 1000)) by field.
-    apply Rmult_le_compat; try apply Rabs_pos; lra. }
-  set (Gx := ft0 + X).
-  assert (BG : Rabs (nr * Gx) <= 30008 / 10000).
-  { unfold Gx. rewrite Rmult_plus_distr_l. eapply Rle_trans; [apply Rabs_triang|]. lra. }
-  assert (Hnr0 : 0 < nr) by lra.
-  assert (AB : forall z, Rabs (nr * z) = nr * Rabs z)
-    by (intros z; rewrite Rabs_mult, Rabs_pos_eq by lra; reflexivity).
-  rewrite AB in BX, BG.
-  unfold ap1 in Hh, Hg, Hm, Hp.
-  (* h *)
-  assert (E1 : nr * Rabs (hh - X) <= 10006 / 10000 * v + 16777216 * eta).
-  { assert (nr * Rabs (hh - X) <= nr * (v * Rabs X + eta)) by (apply Rmult_le_compat_l; lra).
-    assert (v * (nr * Rabs X) <= v * (10005 / 10000)) by (apply Rmult_le_compat_l; lra).
-    assert (nr * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra). nra. }
-  (* g *)
-  assert (E2 : nr * Rabs (g - Gx) <= 40016 / 10000 * v + 33554433 * eta).
-  { replace (g - Gx) with ((g - (ft0 + hh)) + (hh - X)) by (unfold Gx; ring).
-    assert (Rabs (ft0 + hh) <= Rabs Gx + Rabs (hh - X)).
-    { replace (ft0 + hh) with (Gx + (hh - X)) by (unfold Gx; ring). apply Rabs_triang. }
-    assert (nr * Rabs (g - (ft0 + hh)) <= nr * (v * (Rabs Gx + Rabs (hh - X)) + eta)).
-    { apply Rmult_le_compat_l; [lra|]. eapply Rle_trans; [exact Hg|].
-      apply Rplus_le_compat_r, Rmult_le_compat_l; lra. }
-    assert (v * (nr * Rabs Gx) <= v * (30008 / 10000)) by (apply Rmult_le_compat_l; lra).
-    assert (v * (nr * Rabs (hh - X)) <= / 2097152 * (nr * Rabs (hh - X)))
-      by (apply Rmult_le_compat_r; [apply Rmult_le_pos; [lra | apply Rabs_pos] | lra]).
-    assert (nr * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra).
-    assert (nr * Rabs (g - (ft0 + hh) + (hh - X))
-            <= nr * Rabs (g - (ft0 + hh)) + nr * Rabs (hh - X)).
-    { rewrite <- Rmult_plus_distr_l. apply Rmult_le_compat_l; [lra | apply Rabs_triang]. }
-    nra. }
-  (* scaling by i <= n *)
-  assert (Ii : forall z, 0 <= z -> INR i * z <= nr * z) by (intros z Hz; apply Rmult_le_compat_r; lra).
-  assert (IG : Rabs (INR i * Gx) <= 30008 / 10000).
-  { rewrite Rabs_mult, (Rabs_pos_eq (INR i)) by lra.
-    pose proof (Ii (Rabs Gx) (Rabs_pos _)). lra. }
-  assert (IE : Rabs (INR i * (g - Gx)) <= 40016 / 10000 * v + 33554433 * eta).
-  { rewrite Rabs_mult, (Rabs_pos_eq (INR i)) by lra.
-    pose proof (Ii (Rabs (g - Gx)) (Rabs_pos _)). lra. }
-  assert (Bg : Rabs (INR i * g) <= 30009 / 10000).
-  { replace (INR i * g) with (INR i * Gx + INR i * (g - Gx)) by ring.
-    eapply Rle_trans; [apply Rabs_triang|]. lra. }
-  (* m *)
-  assert (E3 : Rabs (m - INR i * g) <= 30009 / 10000 * v + eta).
-  { assert (v * Rabs (INR i * g) <= v * (30009 / 10000)) by (apply Rmult_le_compat_l; lra).
-    lra. }
-  (* the ideal value *)
+  pose proof (K_slope 0 ltac:(lia)) as S0. cbn [INR] in S0. rewrite Rmult_0_l, Rplus_0_r in S0.
+  pose proof K_ds as D0. pose proof (n2ds_le s Hua Hub Hul) as D1. pose proof (abs_near _ _ _ D0).
   pose proof (K_ce_ideal i Hi) as G0. pose proof (ceuler_le s Hua Hub Hul Hn1 i Hi) as G1.
-  assert (Eid : fpa + INR i * ft0 + INR i * (INR i - 1) / 2 * fds = fpa + INR i * Gx)
-    by (unfold Gx, X; field).
-  rewrite Eid in G0.
-  assert (Bpm : Rabs (fpa + m) <= 11926 / 10000).
-  { replace (fpa + m) with ((fpa + INR i * Gx - ceuler s i) + ceuler s i
-                            + (m - INR i * g) + INR i * (g - Gx)) by ring.
-    eapply Rle_trans; [apply tri4|]. lra. }
-  assert (E4 : Rabs (p - (fpa + m)) <= 11926 / 10000 * v + eta).
-  { assert (v * Rabs (fpa + m) <= v * (11926 / 10000)) by (apply Rmult_le_compat_l; lra).
-    lra. }
-  replace (p - ceuler s i)
-    with ((p - (fpa + m)) + (m - INR i * g) + INR i * (g - Gx) + (fpa + INR i * Gx - ceuler s i))
-    by ring.
-  eapply Rle_trans; [apply tri4|]. lra.
+  eapply Rle_trans;
+    [eapply (closed_form_err v eta v eta nr (INR i) ft0 fds
+              hh g m p fpa (ceuler s i)
+              (20002 / 10000) (2001 / 1000) _ _ (30009 / 10000) (11926 / 10000));
+     try eassumption; try lra | lra].
 Qed.
 
 
@@ -1425,53 +1427,11 @@ Lemma K_eu_final : forall (ua : R) (P Q : nat -> R), 0 <= ua <= v -> nr * ua <= 
 Proof.
   intros ua P Q Hua0 Hnua HP0 HQ0 Hstep i Hi. basics.
   pose proof (e_pos v eta Hv) as He0. pose proof (e_small v eta Hv) as He1.
-  set (Ms := 3545 / 1000 / nr). set (Mp := 3775 / 1000).
-  assert (HMs : 0 <= Ms) by (unfold Ms, Rdiv; apply Rmult_le_pos; [lra | apply Rlt_le, Rinv_0_lt_compat; lra]).
-  assert (Hnn : nr * nr <= 281474976710656) by nra.
-  assert (Hne : nr * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra).
-  assert (Hnne : nr * nr * eta <= 281474976710656 * eta) by (apply Rmult_le_compat_r; lra).
-  assert (Ems2 : nr * nr / 2 * (ua * Ms + eta) = 35450 / 20000 * (nr * ua) + nr * nr * eta / 2)
-    by (unfold Ms; field; lra).
-  assert (Hnu0 : 0 <= nr * ua) by (apply Rmult_le_pos; lra).
-  destruct (cseq_err ua eta P Q fds (n s) Ms Mp ltac:(lra) He0 HMs ltac:(unfold Mp; lra) Hstep)
-    with (i := i) as [_ HPi]; [| | exact Hi |].
-  - intros j Hj. rewrite HQ0. pose proof (K_eu_slope (S j) ltac:(lia)) as G0.
-    assert (G1 : Rabs (fdia + INR (S j) * fds) <= (354 / 100 + 200 * (v + d)) / nr).
-    { replace (fdia + INR (S j) * fds)
-        with (nr * (fdia + INR (S j) * fds) / nr) by (field; lra).
-      unfold Rdiv. rewrite Rabs_mult, (Rabs_pos_eq (/ nr))
-        by (apply Rlt_le, Rinv_0_lt_compat; lra).
-      apply Rmult_le_compat_r; [apply Rlt_le, Rinv_0_lt_compat; lra | exact G0]. }
-    assert (G2 : (354 / 100 + 200 * (v + d)) / nr + nr * (ua * Ms + eta) <= Ms).
-    { unfold Ms. apply div_helper; [lra|].
-      replace (nr * (ua * (3545 / 1000 / nr) + eta) * nr)
-        with (3545 / 1000 * (nr * ua) + nr * nr * eta) by (field; lra).
-      lra. }
-    lra.
-  - intros j Hj. rewrite HP0, HQ0.
-    pose proof (K_eu_ideal (S j) Hj) as G0. pose proof (K_eu_le (S j) Hj) as G1.
-    pose proof (abs_near _ _ _ G0) as G2.
-    rewrite Ems2. unfold Mp.
-    assert (nr * (ua * (3775 / 1000) + eta) = 3775 / 1000 * (nr * ua) + nr * eta) by ring.
-    lra.
-  - rewrite HP0, HQ0 in HPi. pose proof (K_eu_ideal i Hi) as G0.
-    assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
-    replace (P i - euler_span s i)
-      with ((P i - (fpa + INR i * fdia + INR i * (INR i - 1) / 2 * fds))
-            + (fpa + INR i * fdia + INR i * (INR i - 1) / 2 * fds - euler_span s i)) by ring.
-    eapply Rle_trans; [apply Rabs_triang|].
-    assert (Es0 : 0 <= ua * Ms + eta) by (pose proof (Rmult_le_pos ua Ms); lra).
-    assert (K1 : INR i * (INR i - 1) / 2 <= nr * (nr - 1) / 2) by nra.
-    assert (K2 : INR i * (INR i - 1) / 2 * (ua * Ms + eta) <= nr * (nr - 1) / 2 * (ua * Ms + eta))
-      by (apply Rmult_le_compat_r; lra).
-    assert (K3 : nr * (nr - 1) / 2 * (ua * Ms + eta)
-                 = 35450 / 20000 * (nr * ua) - 35450 / 20000 * ua + nr * nr * eta / 2 - nr * eta / 2)
-      by (unfold Ms; field; lra).
-    assert (K4 : INR i * (ua * Mp + eta) <= nr * (ua * Mp + eta))
-      by (apply Rmult_le_compat_r; [unfold Mp; nra | lra]).
-    assert (K6 : 0 <= nr * eta) by (apply Rmult_le_pos; lra).
-    assert (K7 : nr * (ua * Mp + eta) = 3775 / 1000 * (nr * ua) + nr * eta) by (unfold Mp; ring).
-    lra.
+  pose proof (K_final_gen fdia (354 / 100) (3545 / 1000) (3775 / 1000)
+    (9111 / 100 * v + 1507 / 100 * d) (377 / 100) (euler_span s) ua P Q Hua0 Hnua
+    ltac:(lra) ltac:(lra) ltac:(lra) ltac:(lra) (fun J HJ => K_eu_slope J ltac:(lia))
+    (fun j Hj => conj (K_eu_ideal j Hj) (K_eu_le j Hj)) HP0 HQ0 Hstep i Hi).
+  assert (0 <= nr * ua) by (apply Rmult_le_pos; lra). lra.
 Qed.
 
 
@@ -1486,81 +1446,14 @@ Proof.
   intros i Hi hh g m p Hh Hg Hm Hp. basics.
   pose proof (e_pos v eta Hv) as He0. pose proof (e_small v eta Hv) as He1.
   assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
-  pose proof K_dia as A0. pose proof (ndia_le s Hua Hub Hul) as A1.
-  assert (S0 : Rabs (nr * fdia) <= 20001 / 10000) by (pose proof (abs_near _ _ _ A0); lra).
-  pose proof K_ds as D0. pose proof (n2ds_le' s Hua Hub Hul) as D1.
-  assert (D2 : Rabs (nr * nr * fds) <= 15401 / 10000) by (pose proof (abs_near _ _ _ D0); lra).
-  set (X := (INR i - 1) / 2 * fds) in *.
-  assert (EX : nr * X = (INR i - 1) / (2 * nr) * (nr * nr * fds)) by (unfold X; field; lra).
-  assert (Hci : Rabs ((INR i - 1) / (2 * nr)) <= 1 / 2).
-  { apply Rabs_le. split.
-    - apply (Rmult_le_reg_r (2 * nr)); [lra|]. unfold Rdiv.
-      rewrite Rmult_assoc, Rinv_l by lra. lra.
-    - apply (Rmult_le_reg_r (2 * nr)); [lra|]. unfold Rdiv.
-      rewrite Rmult_assoc, Rinv_l by lra. lra. }
-  assert (BX : Rabs (nr * X) <= 77005 / 100000).
-  { rewrite EX, Rabs_mult. replace (77005 / 100000) with (1 / 2 * (15401 / 10000)) by field.
-    apply Rmult_le_compat; try apply Rabs_pos; lra. }
-  set (Gx := fdia + X).
-  assert (BG : Rabs (nr * Gx) <= 27702 / 10000).
-  { unfold Gx. rewrite Rmult_plus_distr_l. eapply Rle_trans; [apply Rabs_triang|]. lra. }
-  assert (Hnr0 : 0 < nr) by lra.
-  assert (AB : forall z, Rabs (nr * z) = nr * Rabs z)
-    by (intros z; rewrite Rabs_mult, Rabs_pos_eq by lra; reflexivity).
-  rewrite AB in BX, BG.
-  unfold ap1 in Hh, Hg, Hm, Hp.
-  (* h *)
-  assert (E1 : nr * Rabs (hh - X) <= 77006 / 100000 * v + 16777216 * eta).
-  { assert (nr * Rabs (hh - X) <= nr * (v * Rabs X + eta)) by (apply Rmult_le_compat_l; lra).
-    assert (v * (nr * Rabs X) <= v * (77005 / 100000)) by (apply Rmult_le_compat_l; lra).
-    assert (nr * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra). nra. }
-  (* g *)
-  assert (E2 : nr * Rabs (g - Gx) <= 35404 / 10000 * v + 33554433 * eta).
-  { replace (g - Gx) with ((g - (fdia + hh)) + (hh - X)) by (unfold Gx; ring).
-    assert (Rabs (fdia + hh) <= Rabs Gx + Rabs (hh - X)).
-    { replace (fdia + hh) with (Gx + (hh - X)) by (unfold Gx; ring). apply Rabs_triang. }
-    assert (nr * Rabs (g - (fdia + hh)) <= nr * (v * (Rabs Gx + Rabs (hh - X)) + eta)).
-    { apply Rmult_le_compat_l; [lra|]. eapply Rle_trans; [exact Hg|].
-      apply Rplus_le_compat_r, Rmult_le_compat_l; lra. }
-    assert (v * (nr * Rabs Gx) <= v * (27702 / 10000)) by (apply Rmult_le_compat_l; lra).
-    assert (v * (nr * Rabs (hh - X)) <= / 2097152 * (nr * Rabs (hh - X)))
-      by (apply Rmult_le_compat_r; [apply Rmult_le_pos; [lra | apply Rabs_pos] | lra]).
-    assert (nr * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra).
-    assert (nr * Rabs (g - (fdia + hh) + (hh - X))
-            <= nr * Rabs (g - (fdia + hh)) + nr * Rabs (hh - X)).
-    { rewrite <- Rmult_plus_distr_l. apply Rmult_le_compat_l; [lra | apply Rabs_triang]. }
-    nra. }
-  (* scaling by i <= n *)
-  assert (Ii : forall z, 0 <= z -> INR i * z <= nr * z) by (intros z Hz; apply Rmult_le_compat_r; lra).
-  assert (IG : Rabs (INR i * Gx) <= 27702 / 10000).
-  { rewrite Rabs_mult, (Rabs_pos_eq (INR i)) by lra.
-    pose proof (Ii (Rabs Gx) (Rabs_pos _)). lra. }
-  assert (IE : Rabs (INR i * (g - Gx)) <= 35404 / 10000 * v + 33554433 * eta).
-  { rewrite Rabs_mult, (Rabs_pos_eq (INR i)) by lra.
-    pose proof (Ii (Rabs (g - Gx)) (Rabs_pos _)). lra. }
-  assert (Bg : Rabs (INR i * g) <= 27703 / 10000).
-  { replace (INR i * g) with (INR i * Gx + INR i * (g - Gx)) by ring.
-    eapply Rle_trans; [apply Rabs_triang|]. lra. }
-  (* m *)
-  assert (E3 : Rabs (m - INR i * g) <= 27703 / 10000 * v + eta).
-  { assert (v * Rabs (INR i * g) <= v * (27703 / 10000)) by (apply Rmult_le_compat_l; lra).
-    lra. }
-  (* the ideal value *)
+  pose proof K_dia as A0. pose proof (ndia_le s Hua Hub Hul) as A1. pose proof (abs_near _ _ _ A0).
+  pose proof K_ds as D0. pose proof (n2ds_le' s Hua Hub Hul) as D1. pose proof (abs_near _ _ _ D0).
   pose proof (K_eu_ideal i Hi) as G0. pose proof (K_eu_le i Hi) as G1.
-  assert (Eid : fpa + INR i * fdia + INR i * (INR i - 1) / 2 * fds = fpa + INR i * Gx)
-    by (unfold Gx, X; field).
-  rewrite Eid in G0.
-  assert (Bpm : Rabs (fpa + m) <= 37702 / 10000).
-  { replace (fpa + m) with ((fpa + INR i * Gx - euler_span s i) + euler_span s i
-                            + (m - INR i * g) + INR i * (g - Gx)) by ring.
-    eapply Rle_trans; [apply tri4|]. lra. }
-  assert (E4 : Rabs (p - (fpa + m)) <= 37702 / 10000 * v + eta).
-  { assert (v * Rabs (fpa + m) <= v * (37702 / 10000)) by (apply Rmult_le_compat_l; lra).
-    lra. }
-  replace (p - euler_span s i)
-    with ((p - (fpa + m)) + (m - INR i * g) + INR i * (g - Gx) + (fpa + INR i * Gx - euler_span s i))
-    by ring.
-  eapply Rle_trans; [apply tri4|]. lra.
+  eapply Rle_trans;
+    [eapply (closed_form_err v eta v eta nr (INR i) fdia fds
+              hh g m p fpa (euler_span s i)
+              (20001 / 10000) (15401 / 10000) _ _ (27703 / 10000) (37702 / 10000));
+     try eassumption; try lra | lra].
 Qed.
 
 
@@ -1628,83 +1521,14 @@ Proof.
   pose proof (K_half i hh Hh0) as Hh.
   pose proof (e_pos v eta Hv) as He0. pose proof (e_small v eta Hv) as He1.
   assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
-  pose proof (K_slope 0 ltac:(lia)) as S0. cbn [INR] in S0.
-  rewrite Rmult_0_l, Rplus_0_r in S0.
-  pose proof K_ds as D0. pose proof (n2ds_le s Hua Hub Hul) as D1.
-  assert (D2 : Rabs (nr * nr * fds) <= 2001 / 1000) by (pose proof (abs_near _ _ _ D0); lra).
-  set (X := (INR i - 1) / 2 * fds) in *.
-  assert (EX : nr * X = (INR i - 1) / (2 * nr) * (nr * nr * fds)) by (unfold X; field; lra).
-  assert (Hci : Rabs ((INR i - 1) / (2 * nr)) <= 1 / 2).
-  { apply Rabs_le. split.
-    - apply (Rmult_le_reg_r (2 * nr)); [lra|]. unfold Rdiv.
-      rewrite Rmult_assoc, Rinv_l by lra. lra.
-    - apply (Rmult_le_reg_r (2 * nr)); [lra|]. unfold Rdiv.
-      rewrite Rmult_assoc, Rinv_l by lra. lra. }
-  assert (BX : Rabs (nr * X) <= 10005 / 10000).
-  { rewrite EX, Rabs_mult. replace (10005 / 10000) with (1 / 2 * (2001 / 1000)) by field.
-    apply Rmult_le_compat; try apply Rabs_pos; lra. }
-  set (Gx := ft0 + X).
-  assert (BG : Rabs (nr * Gx) <= 30008 / 10000).
-  { unfold Gx. rewrite Rmult_plus_distr_l. eapply Rle_trans; [apply Rabs_triang|]. lra. }
-  assert (Hnr0 : 0 < nr) by lra.
-  assert (AB : forall z, Rabs (nr * z) = nr * Rabs z)
-    by (intros z; rewrite Rabs_mult, Rabs_pos_eq by lra; reflexivity).
-  rewrite AB in BX, BG.
-  unfold ap1 in Hg, Hm, Hp.
-  (* h *)
-  assert (E1 : nr * Rabs (hh - X) <= 10006 / 10000 * (v + d) + 67108864 * eta).
-  { assert (nr * Rabs (hh - X) <= nr * ((v + d) * (1 + / 2097152) * Rabs X + 4 * eta))
-      by (apply Rmult_le_compat_l; lra).
-    assert ((v + d) * (1 + / 2097152) * (nr * Rabs X) <= (v + d) * (1 + / 2097152) * (10005 / 10000))
-      by (apply Rmult_le_compat_l; lra).
-    assert (nr * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra). nra. }
-  (* g *)
-  assert (E2 : nr * Rabs (g - Gx) <= 40016 / 10000 * v + 10007 / 10000 * d + 100000000 * eta).
-  { replace (g - Gx) with ((g - (ft0 + hh)) + (hh - X)) by (unfold Gx; ring).
-    assert (Rabs (ft0 + hh) <= Rabs Gx + Rabs (hh - X)).
-    { replace (ft0 + hh) with (Gx + (hh - X)) by (unfold Gx; ring). apply Rabs_triang. }
-    assert (nr * Rabs (g - (ft0 + hh)) <= nr * (v * (Rabs Gx + Rabs (hh - X)) + eta)).
-    { apply Rmult_le_compat_l; [lra|]. eapply Rle_trans; [exact Hg|].
-      apply Rplus_le_compat_r, Rmult_le_compat_l; lra. }
-    assert (v * (nr * Rabs Gx) <= v * (30008 / 10000)) by (apply Rmult_le_compat_l; lra).
-    assert (v * (nr * Rabs (hh - X)) <= / 2097152 * (nr * Rabs (hh - X)))
-      by (apply Rmult_le_compat_r; [apply Rmult_le_pos; [lra | apply Rabs_pos] | lra]).
-    assert (nr * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra).
-    assert (nr * Rabs (g - (ft0 + hh) + (hh - X))
-            <= nr * Rabs (g - (ft0 + hh)) + nr * Rabs (hh - X)).
-    { rewrite <- Rmult_plus_distr_l. apply Rmult_le_compat_l; [lra | apply Rabs_triang]. }
-    nra. }
-  (* scaling by i <= n *)
-  assert (Ii : forall z, 0 <= z -> INR i * z <= nr * z) by (intros z Hz; apply Rmult_le_compat_r; lra).
-  assert (IG : Rabs (INR i * Gx) <= 30008 / 10000).
-  { rewrite Rabs_mult, (Rabs_pos_eq (INR i)) by lra.
-    pose proof (Ii (Rabs Gx) (Rabs_pos _)). lra. }
-  assert (IE : Rabs (INR i * (g - Gx)) <= 40016 / 10000 * v + 10007 / 10000 * d + 100000000 * eta).
-  { rewrite Rabs_mult, (Rabs_pos_eq (INR i)) by lra.
-    pose proof (Ii (Rabs (g - Gx)) (Rabs_pos _)). lra. }
-  assert (Bg : Rabs (INR i * g) <= 30009 / 10000).
-  { replace (INR i * g) with (INR i * Gx + INR i * (g - Gx)) by ring.
-    eapply Rle_trans; [apply Rabs_triang|]. lra. }
-  (* m *)
-  assert (E3 : Rabs (m - INR i * g) <= 30009 / 10000 * v + eta).
-  { assert (v * Rabs (INR i * g) <= v * (30009 / 10000)) by (apply Rmult_le_compat_l; lra).
-    lra. }
-  (* the ideal value *)
+  pose proof (K_slope 0 ltac:(lia)) as S0. cbn [INR] in S0. rewrite Rmult_0_l, Rplus_0_r in S0.
+  pose proof K_ds as D0. pose proof (n2ds_le s Hua Hub Hul) as D1. pose proof (abs_near _ _ _ D0).
   pose proof (K_ce_ideal i Hi) as G0. pose proof (ceuler_le s Hua Hub Hul Hn1 i Hi) as G1.
-  assert (Eid : fpa + INR i * ft0 + INR i * (INR i - 1) / 2 * fds = fpa + INR i * Gx)
-    by (unfold Gx, X; field).
-  rewrite Eid in G0.
-  assert (Bpm : Rabs (fpa + m) <= 11926 / 10000).
-  { replace (fpa + m) with ((fpa + INR i * Gx - ceuler s i) + ceuler s i
-                            + (m - INR i * g) + INR i * (g - Gx)) by ring.
-    eapply Rle_trans; [apply tri4|]. lra. }
-  assert (E4 : Rabs (p - (fpa + m)) <= 11926 / 10000 * v + eta).
-  { assert (v * Rabs (fpa + m) <= v * (11926 / 10000)) by (apply Rmult_le_compat_l; lra).
-    lra. }
-  replace (p - ceuler s i)
-    with ((p - (fpa + m)) + (m - INR i * g) + INR i * (g - Gx) + (fpa + INR i * Gx - ceuler s i))
-    by ring.
-  eapply Rle_trans; [apply tri4|]. lra.
+  eapply Rle_trans;
+    [eapply (closed_form_err v eta ((v + d) * (1 + / 2097152)) (4 * eta) nr (INR i) ft0 fds
+              hh g m p fpa (ceuler s i)
+              (20002 / 10000) (2001 / 1000) _ _ (30009 / 10000) (11926 / 10000));
+     try eassumption; try lra | lra].
 Qed.
 
 (** Euler's closed form with h from [half_rel]: 101.2 v + 15.85 d. *)
@@ -1717,135 +1541,78 @@ Proof.
   pose proof (K_half i hh Hh0) as Hh.
   pose proof (e_pos v eta Hv) as He0. pose proof (e_small v eta Hv) as He1.
   assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
-  pose proof K_dia as A0. pose proof (ndia_le s Hua Hub Hul) as A1.
-  assert (S0 : Rabs (nr * fdia) <= 20001 / 10000) by (pose proof (abs_near _ _ _ A0); lra).
-  pose proof K_ds as D0. pose proof (n2ds_le' s Hua Hub Hul) as D1.
-  assert (D2 : Rabs (nr * nr * fds) <= 15401 / 10000) by (pose proof (abs_near _ _ _ D0); lra).
-  set (X := (INR i - 1) / 2 * fds) in *.
-  assert (EX : nr * X = (INR i - 1) / (2 * nr) * (nr * nr * fds)) by (unfold X; field; lra).
-  assert (Hci : Rabs ((INR i - 1) / (2 * nr)) <= 1 / 2).
-  { apply Rabs_le. split.
-    - apply (Rmult_le_reg_r (2 * nr)); [lra|]. unfold Rdiv.
-      rewrite Rmult_assoc, Rinv_l by lra. lra.
-    - apply (Rmult_le_reg_r (2 * nr)); [lra|]. unfold Rdiv.
-      rewrite Rmult_assoc, Rinv_l by lra. lra. }
-  assert (BX : Rabs (nr * X) <= 77005 / 100000).
-  { rewrite EX, Rabs_mult. replace (77005 / 100000) with (1 / 2 * (15401 / 10000)) by field.
-    apply Rmult_le_compat; try apply Rabs_pos; lra. }
-  set (Gx := fdia + X).
-  assert (BG : Rabs (nr * Gx) <= 27702 / 10000).
-  { unfold Gx. rewrite Rmult_plus_distr_l. eapply Rle_trans; [apply Rabs_triang|]. lra. }
-  assert (Hnr0 : 0 < nr) by lra.
-  assert (AB : forall z, Rabs (nr * z) = nr * Rabs z)
-    by (intros z; rewrite Rabs_mult, Rabs_pos_eq by lra; reflexivity).
-  rewrite AB in BX, BG.
-  unfold ap1 in Hg, Hm, Hp.
-  (* h *)
-  assert (E1 : nr * Rabs (hh - X) <= 77006 / 100000 * (v + d) + 67108864 * eta).
-  { assert (nr * Rabs (hh - X) <= nr * ((v + d) * (1 + / 2097152) * Rabs X + 4 * eta))
-      by (apply Rmult_le_compat_l; lra).
-    assert ((v + d) * (1 + / 2097152) * (nr * Rabs X)
-            <= (v + d) * (1 + / 2097152) * (77005 / 100000))
-      by (apply Rmult_le_compat_l; lra).
-    assert (nr * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra). nra. }
-  (* g *)
-  assert (E2 : nr * Rabs (g - Gx) <= 35404 / 10000 * v + 7701 / 10000 * d + 100000000 * eta).
-  { replace (g - Gx) with ((g - (fdia + hh)) + (hh - X)) by (unfold Gx; ring).
-    assert (Rabs (fdia + hh) <= Rabs Gx + Rabs (hh - X)).
-    { replace (fdia + hh) with (Gx + (hh - X)) by (unfold Gx; ring). apply Rabs_triang. }
-    assert (nr * Rabs (g - (fdia + hh)) <= nr * (v * (Rabs Gx + Rabs (hh - X)) + eta)).
-    { apply Rmult_le_compat_l; [lra|]. eapply Rle_trans; [exact Hg|].
-      apply Rplus_le_compat_r, Rmult_le_compat_l; lra. }
-    assert (v * (nr * Rabs Gx) <= v * (27702 / 10000)) by (apply Rmult_le_compat_l; lra).
-    assert (v * (nr * Rabs (hh - X)) <= / 2097152 * (nr * Rabs (hh - X)))
-      by (apply Rmult_le_compat_r; [apply Rmult_le_pos; [lra | apply Rabs_pos] | lra]).
-    assert (nr * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra).
-    assert (nr * Rabs (g - (fdia + hh) + (hh - X))
-            <= nr * Rabs (g - (fdia + hh)) + nr * Rabs (hh - X)).
-    { rewrite <- Rmult_plus_distr_l. apply Rmult_le_compat_l; [lra | apply Rabs_triang]. }
-    nra. }
-  (* scaling by i <= n *)
-  assert (Ii : forall z, 0 <= z -> INR i * z <= nr * z) by (intros z Hz; apply Rmult_le_compat_r; lra).
-  assert (IG : Rabs (INR i * Gx) <= 27702 / 10000).
-  { rewrite Rabs_mult, (Rabs_pos_eq (INR i)) by lra.
-    pose proof (Ii (Rabs Gx) (Rabs_pos _)). lra. }
-  assert (IE : Rabs (INR i * (g - Gx)) <= 35404 / 10000 * v + 7701 / 10000 * d + 100000000 * eta).
-  { rewrite Rabs_mult, (Rabs_pos_eq (INR i)) by lra.
-    pose proof (Ii (Rabs (g - Gx)) (Rabs_pos _)). lra. }
-  assert (Bg : Rabs (INR i * g) <= 27703 / 10000).
-  { replace (INR i * g) with (INR i * Gx + INR i * (g - Gx)) by ring.
-    eapply Rle_trans; [apply Rabs_triang|]. lra. }
-  (* m *)
-  assert (E3 : Rabs (m - INR i * g) <= 27703 / 10000 * v + eta).
-  { assert (v * Rabs (INR i * g) <= v * (27703 / 10000)) by (apply Rmult_le_compat_l; lra).
-    lra. }
-  (* the ideal value *)
+  pose proof K_dia as A0. pose proof (ndia_le s Hua Hub Hul) as A1. pose proof (abs_near _ _ _ A0).
+  pose proof K_ds as D0. pose proof (n2ds_le' s Hua Hub Hul) as D1. pose proof (abs_near _ _ _ D0).
   pose proof (K_eu_ideal i Hi) as G0. pose proof (K_eu_le i Hi) as G1.
-  assert (Eid : fpa + INR i * fdia + INR i * (INR i - 1) / 2 * fds = fpa + INR i * Gx)
-    by (unfold Gx, X; field).
-  rewrite Eid in G0.
-  assert (Bpm : Rabs (fpa + m) <= 37702 / 10000).
-  { replace (fpa + m) with ((fpa + INR i * Gx - euler_span s i) + euler_span s i
-                            + (m - INR i * g) + INR i * (g - Gx)) by ring.
-    eapply Rle_trans; [apply tri4|]. lra. }
-  assert (E4 : Rabs (p - (fpa + m)) <= 37702 / 10000 * v + eta).
-  { assert (v * Rabs (fpa + m) <= v * (37702 / 10000)) by (apply Rmult_le_compat_l; lra).
-    lra. }
-  replace (p - euler_span s i)
-    with ((p - (fpa + m)) + (m - INR i * g) + INR i * (g - Gx) + (fpa + INR i * Gx - euler_span s i))
-    by ring.
-  eapply Rle_trans; [apply tri4|]. lra.
+  eapply Rle_trans;
+    [eapply (closed_form_err v eta ((v + d) * (1 + / 2097152)) (4 * eta) nr (INR i) fdia fds
+              hh g m p fpa (euler_span s i)
+              (20001 / 10000) (15401 / 10000) _ _ (27703 / 10000) (37702 / 10000));
+     try eassumption; try lra | lra].
 Qed.
 
 End CE.
 
-(** ** Corrected Euler: the generic bound and the profiles *)
-
-(** Any model with the size conditions, 1 <= n <= 2^24 and n k_add u <= 2^-11;
-    K1 >= 1 bounds k_in, k_add, k_mul (unit v = K1 u) and k_div >= 1 (unit
-    d = k_div u): the loop contributes 2.2 k_add n u, the set-up
-    36.6 v + 7.3 d. *)
-Lemma profile_corrected_euler_generic : forall (M : fmodel) (K K1 : R), model_ok M K ->
+(** The units of a model as the set-up's v = K1 u and d = k_div u. *)
+Lemma model_units : forall (M : fmodel) (K K1 : R), model_ok M K ->
   1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 -> 1 <= k_div M ->
-  forall (s : span) (F : fsetup) (P Q : nat -> R),
-  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
-  (1 <= n s)%nat -> INR (n s) <= 16777216 -> INR (n s) * (k_add M * m_u M) <= / 2048 ->
-  ce_setup_ok M s F -> ceuler_run M F (n s) P Q ->
-  forall i, (i <= n s)%nat ->
-  Rabs (P i - ceuler s i) <=
-  (22 / 10 * k_add M * INR (n s) + 366 / 10 * K1 + 73 / 10 * k_div M) * m_u M.
+  small_ok (K1 * m_u M) (m_eta M) /\ small_ok (k_div M * m_u M) (m_eta M) /\
+  k_add M * m_u M <= K1 * m_u M /\ 0 <= k_add M * m_u M /\
+  (forall k y x, k <= K1 -> approx k (m_u M) (m_eta M) y x -> ap1 (K1 * m_u M) (m_eta M) y x) /\
+  (forall a b y, fdot_ok M a b y -> fdot_rel (K1 * m_u M) (K1 * m_u M) (m_eta M) a b y) /\
+  (forall vh w0, vap M vh w0 -> vap1 (K1 * m_u M) (m_eta M) vh w0).
 Proof.
-  intros M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1 s F P Q Ha Hb Hl Hn1 Hn2 Hnu HF [HP0 [HQ0 Hst]] i Hi.
+  intros M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1.
   pose proof HM as (Hu & He0 & He2 & Ki & Ka & Km & Kd & HK0 & HK2).
   set (u := m_u M) in *.
-  assert (HKu : K1 * u <= K * u) by (apply Rmult_le_compat_r; lra).
-  assert (HDu : k_div M * u <= K * u) by (apply Rmult_le_compat_r; lra).
-  assert (Hv : small_ok (K1 * u) (m_eta M)).
-  { repeat split; try lra.
-    - apply Rmult_lt_0_compat; lra.
-    - assert (u <= K1 * u) by (rewrite <- (Rmult_1_l u) at 1; apply Rmult_le_compat_r; lra).
-      lra. }
-  assert (Hdv : small_ok (k_div M * u) (m_eta M)).
-  { repeat split; try lra.
-    - apply Rmult_lt_0_compat; lra.
-    - assert (u <= k_div M * u) by (rewrite <- (Rmult_1_l u) at 1; apply Rmult_le_compat_r; lra).
-      lra. }
-  set (v := K1 * u) in *.
-  assert (Wa : k_add M * u <= v) by (unfold v; apply Rmult_le_compat_r; lra).
-  assert (Wm : k_mul M * u <= v) by (unfold v; apply Rmult_le_compat_r; lra).
-  assert (Wa0 : 0 <= k_add M * u) by (apply Rmult_le_pos; lra).
-  assert (AK : forall k y x, k <= K1 -> approx k u (m_eta M) y x -> ap1 v (m_eta M) y x).
-  { intros k y x Hk H. eapply ap1_mono; [|exact H]. unfold v.
-    apply Rmult_le_compat_r; lra. }
-  assert (FK : forall a b y, fdot_ok M a b y -> fdot_rel v v (m_eta M) a b y)
-    by (intros a b y H; eapply fdot_mono; [exact Wm | exact Wa | exact H]).
-  assert (VK : forall vh w0, vap M vh w0 -> vap1 v (m_eta M) vh w0).
-  { intros vh w0 (A1 & A2 & A3). repeat split; (eapply AK; [| eassumption]); lra. }
+  assert (Hsm : forall k, 1 <= k <= K -> small_ok (k * u) (m_eta M)).
+  { intros k Hk. assert (k * u <= K * u) by (apply Rmult_le_compat_r; lra).
+    assert (u <= k * u) by (rewrite <- (Rmult_1_l u) at 1; apply Rmult_le_compat_r; lra).
+    repeat split; lra. }
+  assert (AK : forall k y x, k <= K1 -> approx k u (m_eta M) y x -> ap1 (K1 * u) (m_eta M) y x).
+  { intros k y x Hk H. eapply ap1_mono; [|exact H]. apply Rmult_le_compat_r; lra. }
+  assert (Wa : k_add M * u <= K1 * u) by (apply Rmult_le_compat_r; lra).
+  assert (Wm : k_mul M * u <= K1 * u) by (apply Rmult_le_compat_r; lra).
+  split; [apply Hsm; lra|]. split; [apply Hsm; lra|]. split; [exact Wa|].
+  split; [apply Rmult_le_pos; lra|]. split; [exact AK|].
+  split; [intros a b y H; eapply fdot_mono; [exact Wm | exact Wa | exact H]|].
+  intros vh w0 (A1 & A2 & A3). repeat split; (eapply AK; [| eassumption]); lra.
+Qed.
+
+(** The set-up of the class in the section's terms: [lem] is a lemma of
+    section CE (corrected Euler) or its Euler part, [R0] its instance. *)
+Ltac eu_core lem :=
+  match goal with
+  | HM : model_ok ?M ?K, HK1 : 1 <= ?K1 <= ?K, Hi1 : k_in ?M <= ?K1, Ha1 : k_add ?M <= ?K1,
+    Hm1 : k_mul ?M <= ?K1, Hd1 : 1 <= k_div ?M, HF : eu_setup_ok ?M ?s _,
+    Ha : is_unit (Na ?s), Hb : is_unit (Nb ?s), Hl : is_unit (L ?s),
+    Hn1 : (1 <= n ?s)%nat, Hn2 : INR (n ?s) <= 16777216 |- _ =>
+  destruct (model_units M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1) as (Hv & Hdv & Wa & Wa0 & AK & FK & VK);
+  destruct HF as ((Ina & Inb & Inl) & (tx & Htx & Hkx) & (ty & Hty & Hky) & (tz & Htz & Hkz)
+    & Ha' & Hpa & Hc & (e & He & Hd) & Hpb & (q & Hq & Hdqb) & (h1 & x1 & Hh1 & Hx1 & Hdia)
+    & (h2 & x2 & Hh2 & Hx2 & Hdib) & (w & Hw & Hds));
+  pose proof (lem _ _ _ Hv Hdv s Ha Hb Hl Hn1 Hn2
+    _ _ _ _ _ _ _ _ _ _ _ _ _
+    (VK _ _ Ina) (VK _ _ Inb) (VK _ _ Inl) _ _ _
+    (AK _ _ _ Ha1 Htx) Hkx (AK _ _ _ Ha1 Hty) Hky (AK _ _ _ Ha1 Htz) Hkz
+    (FK _ _ _ Ha') (FK _ _ _ Hpa) (FK _ _ _ Hc) _ (FK _ _ _ He) (AK _ _ _ Hm1 Hd) (FK _ _ _ Hpb)
+    _ (AK _ _ _ Hm1 Hq) (AK _ _ _ Ha1 Hdqb)
+    _ _ Hh1 (AK _ _ _ Hm1 Hx1) (AK _ _ _ Ha1 Hdia)
+    _ _ Hh2 (AK _ _ _ Hm1 Hx2) (AK _ _ _ Ha1 Hdib)
+    _ (AK _ _ _ Ha1 Hw) Hds) as R0
+  end.
+Ltac ce_core lem :=
+  match goal with
+  | HM : model_ok ?M ?K, HK1 : 1 <= ?K1 <= ?K, Hi1 : k_in ?M <= ?K1, Ha1 : k_add ?M <= ?K1,
+    Hm1 : k_mul ?M <= ?K1, Hd1 : 1 <= k_div ?M, HF : ce_setup_ok ?M ?s _,
+    Ha : is_unit (Na ?s), Hb : is_unit (Nb ?s), Hl : is_unit (L ?s),
+    Hn1 : (1 <= n ?s)%nat, Hn2 : INR (n ?s) <= 16777216 |- _ =>
+  destruct (model_units M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1) as (Hv & Hdv & Wa & Wa0 & AK & FK & VK);
   destruct HF as ((Ina & Inb & Inl) & (tx & Htx & Hkx) & (ty & Hty & Hky) & (tz & Htz & Hkz)
     & Ha' & Hpa & Hc & (e & He & Hd) & Hpb & (q & Hq & Hdqb) & (h1 & x1 & Hh1 & Hx1 & Hdia)
     & (h2 & x2 & Hh2 & Hx2 & Hdib) & (w & Hw & Hds) & (q2 & q3 & Hq2 & Hq3 & Hpn)
-    & Heps & Hdeps & Ht0).
-  pose proof (K_ce_final v (k_div M * u) (m_eta M) Hv Hdv s Ha Hb Hl Hn1 Hn2
+    & Heps & Hdeps & Ht0);
+  pose proof (lem _ _ _ Hv Hdv s Ha Hb Hl Hn1 Hn2
     _ _ _ _ _ _ _ _ _ _ _ _ _ _ _ _ _
     (VK _ _ Ina) (VK _ _ Inb) (VK _ _ Inl) _ _ _
     (AK _ _ _ Ha1 Htx) Hkx (AK _ _ _ Ha1 Hty) Hky (AK _ _ _ Ha1 Htz) Hkz
@@ -1855,16 +1622,125 @@ Proof.
     _ _ Hh2 (AK _ _ _ Hm1 Hx2) (AK _ _ _ Ha1 Hdib)
     _ (AK _ _ _ Ha1 Hw) Hds
     _ _ (AK _ _ _ Hm1 Hq2) (AK _ _ _ Hm1 Hq3) (sum3_mono _ _ _ _ _ _ _ Wa Hpn)
-    (AK _ _ _ Ha1 Heps) Hdeps (AK _ _ _ Ha1 Ht0)
-    (k_add M * u) P Q ltac:(lra) Hnu HP0 HQ0 Hst i Hi) as R.
-  eapply Rle_trans; [exact R|]. unfold v. lra.
+    (AK _ _ _ Ha1 Heps) Hdeps (AK _ _ _ Ha1 Ht0)) as R0
+  end.
+
+(** ** The generic bounds of corrected Euler and Euler
+
+    Any model with the size conditions (model_ok M K, K1 >= 1 bounding k_in,
+    k_add, k_mul, so v = K1 u, and k_div >= 1, so d = k_div u) and any span of
+    unit vectors with 1 <= n <= 2^24. *)
+
+Lemma half_ok_rel : forall (M : fmodel) (K1 : R) (i : nat) (ds h : R),
+  0 <= m_u M -> k_mul M <= K1 -> half_ok M i ds h ->
+  half_rel (K1 * m_u M) (k_div M * m_u M) (m_eta M) i ds h.
+Proof.
+  intros M K1 i ds h Hu Hm [(c & Hc & Hh) | (y & Hy & Hh)]; [left; exists c | right; exists y];
+    split; try exact Hc; try exact Hh;
+    (eapply ap1_mono; [| eassumption]); apply Rmult_le_compat_r; lra.
 Qed.
 
-Lemma ce_profile_nr : forall s : span, (1 <= n s <= 4096)%nat ->
-  1 <= INR (n s) <= 4096.
+Section Generic.
+Context (M : fmodel) (K K1 : R) (HM : model_ok M K) (HK1 : 1 <= K1 <= K) (Hi1 : k_in M <= K1)
+        (Ha1 : k_add M <= K1) (Hm1 : k_mul M <= K1) (Hd1 : 1 <= k_div M).
+Context (s : span) (Ha : is_unit (Na s)) (Hb : is_unit (Nb s)) (Hl : is_unit (L s))
+        (Hn1 : (1 <= n s)%nat) (Hn2 : INR (n s) <= 16777216).
+
+(** Any model with the size conditions, 1 <= n <= 2^24 and n k_add u <= 2^-11;
+    K1 >= 1 bounds k_in, k_add, k_mul (unit v = K1 u) and k_div >= 1 (unit
+    d = k_div u): the loop contributes 2.2 k_add n u, the set-up
+    36.6 v + 7.3 d. *)
+Lemma profile_corrected_euler_generic :
+  forall (F : fsetup) (P Q : nat -> R), INR (n s) * (k_add M * m_u M) <= / 2048 ->
+  ce_setup_ok M s F -> ceuler_run M F (n s) P Q ->
+  forall i, (i <= n s)%nat ->
+  Rabs (P i - ceuler s i) <=
+  (22 / 10 * k_add M * INR (n s) + 366 / 10 * K1 + 73 / 10 * k_div M) * m_u M.
 Proof.
-  intros s Hn. split; [apply (le_INR 1); lia | apply (nat_R _ 4096); lia].
+  intros F P Q Hnu HF [HP0 [HQ0 Hst]] i Hi.
+  ce_core K_ce_final.
+  eapply Rle_trans; [exact (R0 (k_add M * m_u M) P Q ltac:(lra) Hnu HP0 HQ0 Hst i Hi)|]. lra.
 Qed.
+
+(** Any model with the size conditions, 1 <= n <= 2^24 and n k_add u <= 2^-11;
+    K1 as in [profile_corrected_euler_generic]: the loop contributes
+    5.55 k_add n u, the set-up 91.2 v + 15.1 d (no end-point correction:
+    the errors of di_a and ds reach pixel i multiplied by i and i(i-1)/2). *)
+Lemma profile_euler_generic :
+  forall (F : fsetup) (P Q : nat -> R), INR (n s) * (k_add M * m_u M) <= / 2048 ->
+  eu_setup_ok M s F -> euler_run M F (n s) P Q ->
+  forall i, (i <= n s)%nat ->
+  Rabs (P i - euler_span s i) <=
+  (555 / 100 * k_add M * INR (n s) + 912 / 10 * K1 + 151 / 10 * k_div M) * m_u M.
+Proof.
+  intros F P Q Hnu HF [HP0 [HQ0 Hst]] i Hi.
+  eu_core K_eu_final.
+  eapply Rle_trans; [exact (R0 (k_add M * m_u M) P Q ltac:(lra) Hnu HP0 HQ0 Hst i Hi)|]. lra.
+Qed.
+
+(** Euler's closed form p_i = p_a + i (di_a + (i-1)/2 ds) evaluated in the model
+    (h = (i-1)/2 ds, g = di_a + h, m = i g, p = p_a + m; fused or not), on a
+    set-up of the class. *)
+Lemma profile_euler_closed_generic : forall F : fsetup, eu_setup_ok M s F ->
+  forall i, (i <= n s)%nat -> forall h g m p : R,
+  ap_mul M h ((INR i - 1) / 2 * fs_ds F) -> ap_add M g (fs_dia F + h) ->
+  ap_mul M m (INR i * g) -> ap_add M p (fs_pa F + m) ->
+  Rabs (p - euler_span s i) <= (1012 / 10 * K1 + 151 / 10 * k_div M) * m_u M.
+Proof.
+  intros F HF i Hi h g m p Hh Hg Hm Hp.
+  eu_core K_eu_closed.
+  eapply Rle_trans; [exact (R0 i Hi h g m p (AK _ _ _ Hm1 Hh) (AK _ _ _ Ha1 Hg) (AK _ _ _ Hm1 Hm)
+                              (AK _ _ _ Ha1 Hp))|]. lra.
+Qed.
+
+(** p_i = p_a + i (t0 + (i-1)/2 ds) evaluated in the model (h = (i-1)/2 ds,
+    g = t0 + h, m = i g, p = p_a + m; fused or not), on a set-up of the class. *)
+Lemma profile_corrected_euler_closed_generic : forall F : fsetup, ce_setup_ok M s F ->
+  forall i, (i <= n s)%nat -> forall h g m p : R,
+  ap_mul M h ((INR i - 1) / 2 * fs_ds F) -> ap_add M g (fs_t0 F + h) ->
+  ap_mul M m (INR i * g) -> ap_add M p (fs_pa F + m) ->
+  Rabs (p - ceuler s i) <= (45 * K1 + 73 / 10 * k_div M) * m_u M.
+Proof.
+  intros F HF i Hi h g m p Hh Hg Hm Hp.
+  ce_core K_closed.
+  eapply Rle_trans; [exact (R0 i Hi h g m p (AK _ _ _ Hm1 Hh) (AK _ _ _ Ha1 Hg) (AK _ _ _ Hm1 Hm)
+                              (AK _ _ _ Ha1 Hp))|]. lra.
+Qed.
+
+(** As [profile_corrected_euler_closed_generic] and
+    [profile_euler_closed_generic], with h from [half_ok]: (i-1)/2 rounded as
+    a division (or (i-1) ds rounded, then halved by a division) before the
+    rest of the closed form.  The halving adds about |i (i-1)/2 ds| k_div u
+    (at most 1.0007 and 0.7701 k_div u). *)
+Lemma profile_corrected_euler_closed_half_generic : forall F : fsetup, ce_setup_ok M s F ->
+  forall i, (i <= n s)%nat -> forall h g m p : R,
+  half_ok M i (fs_ds F) h -> ap_add M g (fs_t0 F + h) ->
+  ap_mul M m (INR i * g) -> ap_add M p (fs_pa F + m) ->
+  Rabs (p - ceuler s i) <= (45 * K1 + 83 / 10 * k_div M) * m_u M.
+Proof.
+  intros F HF i Hi h g m p Hh Hg Hm Hp.
+  pose proof (half_ok_rel M K1 i (fs_ds F) h ltac:(pose proof (model_u M K HM); lra) Hm1 Hh) as HH.
+  ce_core K_closed_h.
+  eapply Rle_trans;
+    [exact (R0 i Hi h g m p HH (AK _ _ _ Ha1 Hg) (AK _ _ _ Hm1 Hm) (AK _ _ _ Ha1 Hp))|]. lra.
+Qed.
+
+Lemma profile_euler_closed_half_generic : forall F : fsetup, eu_setup_ok M s F ->
+  forall i, (i <= n s)%nat -> forall h g m p : R,
+  half_ok M i (fs_ds F) h -> ap_add M g (fs_dia F + h) ->
+  ap_mul M m (INR i * g) -> ap_add M p (fs_pa F + m) ->
+  Rabs (p - euler_span s i) <= (1012 / 10 * K1 + 1585 / 100 * k_div M) * m_u M.
+Proof.
+  intros F HF i Hi h g m p Hh Hg Hm Hp.
+  pose proof (half_ok_rel M K1 i (fs_ds F) h ltac:(pose proof (model_u M K HM); lra) Hm1 Hh) as HH.
+  eu_core K_eu_closed_h.
+  eapply Rle_trans;
+    [exact (R0 i Hi h g m p HH (AK _ _ _ Ha1 Hg) (AK _ _ _ Hm1 Hm) (AK _ _ _ Ha1 Hp))|]. lra.
+Qed.
+
+End Generic.
+
+(** ** Corrected Euler: the profiles *)
 
 (* Note: ieee profile, binary32 (see profile_ieee_gouraud_binary32). *)
 (** Corrected Euler, ieee profile, binary32: |P_i - ceuler i| <= (2.2 n + 51.21) 2^-24. *)
@@ -1874,16 +1750,7 @@ Theorem profile_ieee_corrected_euler_binary32 :
   ce_setup_ok ieee32 s F -> ceuler_run ieee32 F (n s) P Q ->
   forall i, (i <= n s)%nat ->
   Rabs (P i - ceuler s i) <= (22 / 10 * INR (n s) + 5121 / 100) * bpow radix2 (-24).
-Proof.
-  intros s F P Q Ha Hb Hl Hn HF HR i Hi.
-  pose proof (ce_profile_nr s Hn) as Hn'.
-  eapply Rle_trans.
-  { apply (profile_corrected_euler_generic ieee32 _ 1 ieee32_ok) with (F := F) (Q := Q); unfold ieee32; cbn [m_u k_in k_add k_mul k_div];
-      try assumption; try lra; try lia.
-    rewrite u24. lra. }
-  unfold ieee32; cbn [m_u k_add k_div].
-  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
-Qed.
+Proof. profile_inst (profile_corrected_euler_generic ieee32 _ 1 ieee32_ok). Qed.
 
 (* Note: ieee profile, binary64 (see profile_ieee_gouraud_binary64). *)
 (** Corrected Euler, ieee profile, binary64: |P_i - ceuler i| <= (2.2 n + 51.21) 2^-53. *)
@@ -1893,16 +1760,7 @@ Theorem profile_ieee_corrected_euler_binary64 :
   ce_setup_ok ieee64 s F -> ceuler_run ieee64 F (n s) P Q ->
   forall i, (i <= n s)%nat ->
   Rabs (P i - ceuler s i) <= (22 / 10 * INR (n s) + 5121 / 100) * bpow radix2 (-53).
-Proof.
-  intros s F P Q Ha Hb Hl Hn HF HR i Hi.
-  pose proof (ce_profile_nr s Hn) as Hn'.
-  eapply Rle_trans.
-  { apply (profile_corrected_euler_generic ieee64 _ 1 ieee64_ok) with (F := F) (Q := Q); unfold ieee64; cbn [m_u k_in k_add k_mul k_div];
-      try assumption; try lra; try lia.
-    rewrite u53. lra. }
-  unfold ieee64; cbn [m_u k_add k_div].
-  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
-Qed.
+Proof. profile_inst (profile_corrected_euler_generic ieee64 _ 1 ieee64_ok). Qed.
 
 (* Note: shader profile (see profile_shader_gouraud_binary32). *)
 (** Corrected Euler, shader profile: |P_i - ceuler i| <= (4.4 n + 109.7) 2^-24. *)
@@ -1912,74 +1770,9 @@ Theorem profile_shader_corrected_euler_binary32 :
   ce_setup_ok shader32 s F -> ceuler_run shader32 F (n s) P Q ->
   forall i, (i <= n s)%nat ->
   Rabs (P i - ceuler s i) <= (44 / 10 * INR (n s) + 1097 / 10) * bpow radix2 (-24).
-Proof.
-  intros s F P Q Ha Hb Hl Hn HF HR i Hi.
-  pose proof (ce_profile_nr s Hn) as Hn'.
-  eapply Rle_trans.
-  { apply (profile_corrected_euler_generic shader32 _ 2 shader32_ok) with (F := F) (Q := Q); unfold shader32; cbn [m_u k_in k_add k_mul k_div];
-      try assumption; try lra; try lia.
-    rewrite u24. lra. }
-  unfold shader32; cbn [m_u k_add k_div].
-  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
-Qed.
+Proof. profile_inst (profile_corrected_euler_generic shader32 _ 2 shader32_ok). Qed.
 
-(** ** Plain Euler: the generic bound and the profiles *)
-
-(** Any model with the size conditions, 1 <= n <= 2^24 and n k_add u <= 2^-11;
-    K1 as in [profile_corrected_euler_generic]: the loop contributes
-    5.55 k_add n u, the set-up 91.2 v + 15.1 d (no end-point correction:
-    the errors of di_a and ds reach pixel i multiplied by i and i(i-1)/2). *)
-Lemma profile_euler_generic : forall (M : fmodel) (K K1 : R), model_ok M K ->
-  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 -> 1 <= k_div M ->
-  forall (s : span) (F : fsetup) (P Q : nat -> R),
-  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
-  (1 <= n s)%nat -> INR (n s) <= 16777216 -> INR (n s) * (k_add M * m_u M) <= / 2048 ->
-  eu_setup_ok M s F -> euler_run M F (n s) P Q ->
-  forall i, (i <= n s)%nat ->
-  Rabs (P i - euler_span s i) <=
-  (555 / 100 * k_add M * INR (n s) + 912 / 10 * K1 + 151 / 10 * k_div M) * m_u M.
-Proof.
-  intros M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1 s F P Q Ha Hb Hl Hn1 Hn2 Hnu HF [HP0 [HQ0 Hst]] i Hi.
-  pose proof HM as (Hu & He0 & He2 & Ki & Ka & Km & Kd & HK0 & HK2).
-  set (u := m_u M) in *.
-  assert (HKu : K1 * u <= K * u) by (apply Rmult_le_compat_r; lra).
-  assert (HDu : k_div M * u <= K * u) by (apply Rmult_le_compat_r; lra).
-  assert (Hv : small_ok (K1 * u) (m_eta M)).
-  { repeat split; try lra.
-    - apply Rmult_lt_0_compat; lra.
-    - assert (u <= K1 * u) by (rewrite <- (Rmult_1_l u) at 1; apply Rmult_le_compat_r; lra).
-      lra. }
-  assert (Hdv : small_ok (k_div M * u) (m_eta M)).
-  { repeat split; try lra.
-    - apply Rmult_lt_0_compat; lra.
-    - assert (u <= k_div M * u) by (rewrite <- (Rmult_1_l u) at 1; apply Rmult_le_compat_r; lra).
-      lra. }
-  set (v := K1 * u) in *.
-  assert (Wa : k_add M * u <= v) by (unfold v; apply Rmult_le_compat_r; lra).
-  assert (Wm : k_mul M * u <= v) by (unfold v; apply Rmult_le_compat_r; lra).
-  assert (Wa0 : 0 <= k_add M * u) by (apply Rmult_le_pos; lra).
-  assert (AK : forall k y x, k <= K1 -> approx k u (m_eta M) y x -> ap1 v (m_eta M) y x).
-  { intros k y x Hk H. eapply ap1_mono; [|exact H]. unfold v.
-    apply Rmult_le_compat_r; lra. }
-  assert (FK : forall a b y, fdot_ok M a b y -> fdot_rel v v (m_eta M) a b y)
-    by (intros a b y H; eapply fdot_mono; [exact Wm | exact Wa | exact H]).
-  assert (VK : forall vh w0, vap M vh w0 -> vap1 v (m_eta M) vh w0).
-  { intros vh w0 (A1 & A2 & A3). repeat split; (eapply AK; [| eassumption]); lra. }
-  destruct HF as ((Ina & Inb & Inl) & (tx & Htx & Hkx) & (ty & Hty & Hky) & (tz & Htz & Hkz)
-    & Ha' & Hpa & Hc & (e & He & Hd) & Hpb & (q & Hq & Hdqb) & (h1 & x1 & Hh1 & Hx1 & Hdia)
-    & (h2 & x2 & Hh2 & Hx2 & Hdib) & (w & Hw & Hds)).
-  pose proof (K_eu_final v (k_div M * u) (m_eta M) Hv Hdv s Ha Hb Hl Hn1 Hn2
-    _ _ _ _ _ _ _ _ _ _ _ _ _
-    (VK _ _ Ina) (VK _ _ Inb) (VK _ _ Inl) _ _ _
-    (AK _ _ _ Ha1 Htx) Hkx (AK _ _ _ Ha1 Hty) Hky (AK _ _ _ Ha1 Htz) Hkz
-    (FK _ _ _ Ha') (FK _ _ _ Hpa) (FK _ _ _ Hc) _ (FK _ _ _ He) (AK _ _ _ Hm1 Hd) (FK _ _ _ Hpb)
-    _ (AK _ _ _ Hm1 Hq) (AK _ _ _ Ha1 Hdqb)
-    _ _ Hh1 (AK _ _ _ Hm1 Hx1) (AK _ _ _ Ha1 Hdia)
-    _ _ Hh2 (AK _ _ _ Hm1 Hx2) (AK _ _ _ Ha1 Hdib)
-    _ (AK _ _ _ Ha1 Hw) Hds
-    (k_add M * u) P Q ltac:(lra) Hnu HP0 HQ0 Hst i Hi) as R.
-  eapply Rle_trans; [exact R|]. unfold v. lra.
-Qed.
+(** ** Plain Euler: the profiles *)
 
 (* Note: ieee profile, binary32 (see profile_ieee_gouraud_binary32). *)
 (** Euler, ieee profile, binary32: |P_i - euler_span i| <= (5.55 n + 121.41) 2^-24. *)
@@ -1989,16 +1782,7 @@ Theorem profile_ieee_euler_binary32 :
   eu_setup_ok ieee32 s F -> euler_run ieee32 F (n s) P Q ->
   forall i, (i <= n s)%nat ->
   Rabs (P i - euler_span s i) <= (555 / 100 * INR (n s) + 12141 / 100) * bpow radix2 (-24).
-Proof.
-  intros s F P Q Ha Hb Hl Hn HF HR i Hi.
-  pose proof (ce_profile_nr s Hn) as Hn'.
-  eapply Rle_trans.
-  { apply (profile_euler_generic ieee32 _ 1 ieee32_ok) with (F := F) (Q := Q);
-      unfold ieee32; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; try lia.
-    rewrite u24. lra. }
-  unfold ieee32; cbn [m_u k_add k_div].
-  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
-Qed.
+Proof. profile_inst (profile_euler_generic ieee32 _ 1 ieee32_ok). Qed.
 
 (* Note: ieee profile, binary64 (see profile_ieee_gouraud_binary64). *)
 (** Euler, ieee profile, binary64: |P_i - euler_span i| <= (5.55 n + 121.41) 2^-53. *)
@@ -2008,16 +1792,7 @@ Theorem profile_ieee_euler_binary64 :
   eu_setup_ok ieee64 s F -> euler_run ieee64 F (n s) P Q ->
   forall i, (i <= n s)%nat ->
   Rabs (P i - euler_span s i) <= (555 / 100 * INR (n s) + 12141 / 100) * bpow radix2 (-53).
-Proof.
-  intros s F P Q Ha Hb Hl Hn HF HR i Hi.
-  pose proof (ce_profile_nr s Hn) as Hn'.
-  eapply Rle_trans.
-  { apply (profile_euler_generic ieee64 _ 1 ieee64_ok) with (F := F) (Q := Q);
-      unfold ieee64; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; try lia.
-    rewrite u53. lra. }
-  unfold ieee64; cbn [m_u k_add k_div].
-  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
-Qed.
+Proof. profile_inst (profile_euler_generic ieee64 _ 1 ieee64_ok). Qed.
 
 (* Note: ieee profile, binary64, spans up to 2^24 pixels. *)
 (** Euler, ieee profile, binary64, n <= 2^24: |P_i - euler_span i| <= (5.55 n + 121.41) 2^-53. *)
@@ -2028,17 +1803,7 @@ Theorem profile_ieee_euler_binary64_large :
   eu_setup_ok ieee64 s F -> euler_run ieee64 F (n s) P Q ->
   forall i, (i <= n s)%nat ->
   Rabs (P i - euler_span s i) <= (555 / 100 * INR (n s) + 12141 / 100) * bpow radix2 (-53).
-Proof.
-  intros s F P Q Ha Hb Hl Hn1 Hn HF HR i Hi.
-  assert (Hn' : INR (n s) <= 16777216) by (apply nat_R; exact Hn).
-  assert (H1 : 0 <= INR (n s)) by apply pos_INR.
-  eapply Rle_trans.
-  { apply (profile_euler_generic ieee64 _ 1 ieee64_ok) with (F := F) (Q := Q);
-      unfold ieee64; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; try lia.
-    rewrite u53. lra. }
-  unfold ieee64; cbn [m_u k_add k_div].
-  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
-Qed.
+Proof. profile_inst (profile_euler_generic ieee64 _ 1 ieee64_ok). Qed.
 
 (* Note: shader profile (see profile_shader_gouraud_binary32). *)
 (** Euler, shader profile: |P_i - euler_span i| <= (11.1 n + 257.9) 2^-24. *)
@@ -2048,70 +1813,7 @@ Theorem profile_shader_euler_binary32 :
   eu_setup_ok shader32 s F -> euler_run shader32 F (n s) P Q ->
   forall i, (i <= n s)%nat ->
   Rabs (P i - euler_span s i) <= (111 / 10 * INR (n s) + 2579 / 10) * bpow radix2 (-24).
-Proof.
-  intros s F P Q Ha Hb Hl Hn HF HR i Hi.
-  pose proof (ce_profile_nr s Hn) as Hn'.
-  eapply Rle_trans.
-  { apply (profile_euler_generic shader32 _ 2 shader32_ok) with (F := F) (Q := Q);
-      unfold shader32; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; try lia.
-    rewrite u24. lra. }
-  unfold shader32; cbn [m_u k_add k_div].
-  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
-Qed.
-
-(** Euler's closed form p_i = p_a + i (di_a + (i-1)/2 ds) evaluated in the model
-    (h = (i-1)/2 ds, g = di_a + h, m = i g, p = p_a + m; fused or not), on a
-    set-up of the class. *)
-Lemma profile_euler_closed_generic : forall (M : fmodel) (K K1 : R), model_ok M K ->
-  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 -> 1 <= k_div M ->
-  forall (s : span) (F : fsetup),
-  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
-  (1 <= n s)%nat -> INR (n s) <= 16777216 -> eu_setup_ok M s F ->
-  forall i, (i <= n s)%nat -> forall h g m p : R,
-  ap_mul M h ((INR i - 1) / 2 * fs_ds F) -> ap_add M g (fs_dia F + h) ->
-  ap_mul M m (INR i * g) -> ap_add M p (fs_pa F + m) ->
-  Rabs (p - euler_span s i) <= (1012 / 10 * K1 + 151 / 10 * k_div M) * m_u M.
-Proof.
-  intros M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1 s F Ha Hb Hl Hn1 Hn2 HF i Hi h g m p Hh Hg Hm Hp.
-  pose proof HM as (Hu & He0 & He2 & Ki & Ka & Km & Kd & HK0 & HK2).
-  set (u := m_u M) in *.
-  assert (HKu : K1 * u <= K * u) by (apply Rmult_le_compat_r; lra).
-  assert (HDu : k_div M * u <= K * u) by (apply Rmult_le_compat_r; lra).
-  assert (Hv : small_ok (K1 * u) (m_eta M)).
-  { repeat split; try lra.
-    - apply Rmult_lt_0_compat; lra.
-    - assert (u <= K1 * u) by (rewrite <- (Rmult_1_l u) at 1; apply Rmult_le_compat_r; lra).
-      lra. }
-  assert (Hdv : small_ok (k_div M * u) (m_eta M)).
-  { repeat split; try lra.
-    - apply Rmult_lt_0_compat; lra.
-    - assert (u <= k_div M * u) by (rewrite <- (Rmult_1_l u) at 1; apply Rmult_le_compat_r; lra).
-      lra. }
-  set (v := K1 * u) in *.
-  assert (Wa : k_add M * u <= v) by (unfold v; apply Rmult_le_compat_r; lra).
-  assert (Wm : k_mul M * u <= v) by (unfold v; apply Rmult_le_compat_r; lra).
-  assert (AK : forall k y x, k <= K1 -> approx k u (m_eta M) y x -> ap1 v (m_eta M) y x).
-  { intros k y x Hk H. eapply ap1_mono; [|exact H]. unfold v.
-    apply Rmult_le_compat_r; lra. }
-  assert (FK : forall a b y, fdot_ok M a b y -> fdot_rel v v (m_eta M) a b y)
-    by (intros a b y H; eapply fdot_mono; [exact Wm | exact Wa | exact H]).
-  assert (VK : forall vh w0, vap M vh w0 -> vap1 v (m_eta M) vh w0).
-  { intros vh w0 (A1 & A2 & A3). repeat split; (eapply AK; [| eassumption]); lra. }
-  destruct HF as ((Ina & Inb & Inl) & (tx & Htx & Hkx) & (ty & Hty & Hky) & (tz & Htz & Hkz)
-    & Ha' & Hpa & Hc & (e & He & Hd) & Hpb & (q & Hq & Hdqb) & (h1 & x1 & Hh1 & Hx1 & Hdia)
-    & (h2 & x2 & Hh2 & Hx2 & Hdib) & (w & Hw & Hds)).
-  pose proof (K_eu_closed v (k_div M * u) (m_eta M) Hv Hdv s Ha Hb Hl Hn1 Hn2
-    _ _ _ _ _ _ _ _ _ _ _ _ _
-    (VK _ _ Ina) (VK _ _ Inb) (VK _ _ Inl) _ _ _
-    (AK _ _ _ Ha1 Htx) Hkx (AK _ _ _ Ha1 Hty) Hky (AK _ _ _ Ha1 Htz) Hkz
-    (FK _ _ _ Ha') (FK _ _ _ Hpa) (FK _ _ _ Hc) _ (FK _ _ _ He) (AK _ _ _ Hm1 Hd) (FK _ _ _ Hpb)
-    _ (AK _ _ _ Hm1 Hq) (AK _ _ _ Ha1 Hdqb)
-    _ _ Hh1 (AK _ _ _ Hm1 Hx1) (AK _ _ _ Ha1 Hdia)
-    _ _ Hh2 (AK _ _ _ Hm1 Hx2) (AK _ _ _ Ha1 Hdib)
-    _ (AK _ _ _ Ha1 Hw) Hds
-    i Hi h g m p (AK _ _ _ Hm1 Hh) (AK _ _ _ Ha1 Hg) (AK _ _ _ Hm1 Hm) (AK _ _ _ Ha1 Hp)) as R.
-  eapply Rle_trans; [exact R|]. unfold v. lra.
-Qed.
+Proof. profile_inst (profile_euler_generic shader32 _ 2 shader32_ok). Qed.
 
 (* Note: ieee profile, binary32; the bound does not grow with n. *)
 (** Euler by its closed form, ieee profile, binary32:
@@ -2123,15 +1825,7 @@ Theorem profile_ieee_euler_closed_binary32 : forall (s : span) (F : fsetup),
   ap_mul ieee32 h ((INR i - 1) / 2 * fs_ds F) -> ap_add ieee32 g (fs_dia F + h) ->
   ap_mul ieee32 m (INR i * g) -> ap_add ieee32 p (fs_pa F + m) ->
   Rabs (p - euler_span s i) <= 13141 / 100 * bpow radix2 (-24).
-Proof.
-  intros s F Ha Hb Hl Hn HF i Hi h g m p Hh Hg Hm Hp.
-  pose proof (ce_profile_nr s Hn) as Hn'.
-  eapply Rle_trans.
-  { apply (profile_euler_closed_generic ieee32 _ 1 ieee32_ok) with (F := F) (h := h) (g := g) (m := m);
-      unfold ieee32; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; lia. }
-  unfold ieee32; cbn [m_u k_div].
-  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
-Qed.
+Proof. profile_inst (profile_euler_closed_generic ieee32 _ 1 ieee32_ok). Qed.
 
 (* Note: ieee profile, binary64. *)
 (** Euler by its closed form, ieee profile, binary64:
@@ -2143,15 +1837,7 @@ Theorem profile_ieee_euler_closed_binary64 : forall (s : span) (F : fsetup),
   ap_mul ieee64 h ((INR i - 1) / 2 * fs_ds F) -> ap_add ieee64 g (fs_dia F + h) ->
   ap_mul ieee64 m (INR i * g) -> ap_add ieee64 p (fs_pa F + m) ->
   Rabs (p - euler_span s i) <= 13141 / 100 * bpow radix2 (-53).
-Proof.
-  intros s F Ha Hb Hl Hn HF i Hi h g m p Hh Hg Hm Hp.
-  pose proof (ce_profile_nr s Hn) as Hn'.
-  eapply Rle_trans.
-  { apply (profile_euler_closed_generic ieee64 _ 1 ieee64_ok) with (F := F) (h := h) (g := g) (m := m);
-      unfold ieee64; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; lia. }
-  unfold ieee64; cbn [m_u k_div].
-  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
-Qed.
+Proof. profile_inst (profile_euler_closed_generic ieee64 _ 1 ieee64_ok). Qed.
 
 (* Note: ieee profile, binary64, spans up to 2^24 pixels. *)
 (** Euler by its closed form, ieee profile, binary64, n <= 2^24:
@@ -2164,73 +1850,9 @@ Theorem profile_ieee_euler_closed_binary64_large : forall (s : span) (F : fsetup
   ap_mul ieee64 h ((INR i - 1) / 2 * fs_ds F) -> ap_add ieee64 g (fs_dia F + h) ->
   ap_mul ieee64 m (INR i * g) -> ap_add ieee64 p (fs_pa F + m) ->
   Rabs (p - euler_span s i) <= 13141 / 100 * bpow radix2 (-53).
-Proof.
-  intros s F Ha Hb Hl Hn1 Hn HF i Hi h g m p Hh Hg Hm Hp.
-  assert (Hn' : INR (n s) <= 16777216) by (apply nat_R; exact Hn).
-  eapply Rle_trans.
-  { apply (profile_euler_closed_generic ieee64 _ 1 ieee64_ok) with (F := F) (h := h) (g := g) (m := m);
-      unfold ieee64; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; lia. }
-  unfold ieee64; cbn [m_u k_div].
-  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
-Qed.
+Proof. profile_inst (profile_euler_closed_generic ieee64 _ 1 ieee64_ok). Qed.
 
 (** ** Corrected Euler by its closed form *)
-
-(** p_i = p_a + i (t0 + (i-1)/2 ds) evaluated in the model (h = (i-1)/2 ds,
-    g = t0 + h, m = i g, p = p_a + m; fused or not), on a set-up of the class. *)
-Lemma profile_corrected_euler_closed_generic : forall (M : fmodel) (K K1 : R), model_ok M K ->
-  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 -> 1 <= k_div M ->
-  forall (s : span) (F : fsetup),
-  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
-  (1 <= n s)%nat -> INR (n s) <= 16777216 -> ce_setup_ok M s F ->
-  forall i, (i <= n s)%nat -> forall h g m p : R,
-  ap_mul M h ((INR i - 1) / 2 * fs_ds F) -> ap_add M g (fs_t0 F + h) ->
-  ap_mul M m (INR i * g) -> ap_add M p (fs_pa F + m) ->
-  Rabs (p - ceuler s i) <= (45 * K1 + 73 / 10 * k_div M) * m_u M.
-Proof.
-  intros M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1 s F Ha Hb Hl Hn1 Hn2 HF i Hi h g m p Hh Hg Hm Hp.
-  pose proof HM as (Hu & He0 & He2 & Ki & Ka & Km & Kd & HK0 & HK2).
-  set (u := m_u M) in *.
-  assert (HKu : K1 * u <= K * u) by (apply Rmult_le_compat_r; lra).
-  assert (HDu : k_div M * u <= K * u) by (apply Rmult_le_compat_r; lra).
-  assert (Hv : small_ok (K1 * u) (m_eta M)).
-  { repeat split; try lra.
-    - apply Rmult_lt_0_compat; lra.
-    - assert (u <= K1 * u) by (rewrite <- (Rmult_1_l u) at 1; apply Rmult_le_compat_r; lra).
-      lra. }
-  assert (Hdv : small_ok (k_div M * u) (m_eta M)).
-  { repeat split; try lra.
-    - apply Rmult_lt_0_compat; lra.
-    - assert (u <= k_div M * u) by (rewrite <- (Rmult_1_l u) at 1; apply Rmult_le_compat_r; lra).
-      lra. }
-  set (v := K1 * u) in *.
-  assert (Wa : k_add M * u <= v) by (unfold v; apply Rmult_le_compat_r; lra).
-  assert (Wm : k_mul M * u <= v) by (unfold v; apply Rmult_le_compat_r; lra).
-  assert (AK : forall k y x, k <= K1 -> approx k u (m_eta M) y x -> ap1 v (m_eta M) y x).
-  { intros k y x Hk H. eapply ap1_mono; [|exact H]. unfold v.
-    apply Rmult_le_compat_r; lra. }
-  assert (FK : forall a b y, fdot_ok M a b y -> fdot_rel v v (m_eta M) a b y)
-    by (intros a b y H; eapply fdot_mono; [exact Wm | exact Wa | exact H]).
-  assert (VK : forall vh w0, vap M vh w0 -> vap1 v (m_eta M) vh w0).
-  { intros vh w0 (A1 & A2 & A3). repeat split; (eapply AK; [| eassumption]); lra. }
-  destruct HF as ((Ina & Inb & Inl) & (tx & Htx & Hkx) & (ty & Hty & Hky) & (tz & Htz & Hkz)
-    & Ha' & Hpa & Hc & (e & He & Hd) & Hpb & (q & Hq & Hdqb) & (h1 & x1 & Hh1 & Hx1 & Hdia)
-    & (h2 & x2 & Hh2 & Hx2 & Hdib) & (w & Hw & Hds) & (q2 & q3 & Hq2 & Hq3 & Hpn)
-    & Heps & Hdeps & Ht0).
-  pose proof (K_closed v (k_div M * u) (m_eta M) Hv Hdv s Ha Hb Hl Hn1 Hn2
-    _ _ _ _ _ _ _ _ _ _ _ _ _ _ _ _ _
-    (VK _ _ Ina) (VK _ _ Inb) (VK _ _ Inl) _ _ _
-    (AK _ _ _ Ha1 Htx) Hkx (AK _ _ _ Ha1 Hty) Hky (AK _ _ _ Ha1 Htz) Hkz
-    (FK _ _ _ Ha') (FK _ _ _ Hpa) (FK _ _ _ Hc) _ (FK _ _ _ He) (AK _ _ _ Hm1 Hd) (FK _ _ _ Hpb)
-    _ (AK _ _ _ Hm1 Hq) (AK _ _ _ Ha1 Hdqb)
-    _ _ Hh1 (AK _ _ _ Hm1 Hx1) (AK _ _ _ Ha1 Hdia)
-    _ _ Hh2 (AK _ _ _ Hm1 Hx2) (AK _ _ _ Ha1 Hdib)
-    _ (AK _ _ _ Ha1 Hw) Hds
-    _ _ (AK _ _ _ Hm1 Hq2) (AK _ _ _ Hm1 Hq3) (sum3_mono _ _ _ _ _ _ _ Wa Hpn)
-    (AK _ _ _ Ha1 Heps) Hdeps (AK _ _ _ Ha1 Ht0)
-    i Hi h g m p (AK _ _ _ Hm1 Hh) (AK _ _ _ Ha1 Hg) (AK _ _ _ Hm1 Hm) (AK _ _ _ Ha1 Hp)) as R.
-  eapply Rle_trans; [exact R|]. unfold v. lra.
-Qed.
 
 (* Note: ieee profile, binary32; the bound does not grow with n. *)
 (** Corrected Euler by its closed form, ieee profile, binary32:
@@ -2242,15 +1864,7 @@ Theorem profile_ieee_corrected_euler_closed_binary32 : forall (s : span) (F : fs
   ap_mul ieee32 h ((INR i - 1) / 2 * fs_ds F) -> ap_add ieee32 g (fs_t0 F + h) ->
   ap_mul ieee32 m (INR i * g) -> ap_add ieee32 p (fs_pa F + m) ->
   Rabs (p - ceuler s i) <= 5961 / 100 * bpow radix2 (-24).
-Proof.
-  intros s F Ha Hb Hl Hn HF i Hi h g m p Hh Hg Hm Hp.
-  pose proof (ce_profile_nr s Hn) as Hn'.
-  eapply Rle_trans.
-  { apply (profile_corrected_euler_closed_generic ieee32 _ 1 ieee32_ok) with (F := F) (h := h) (g := g) (m := m);
-      unfold ieee32; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; lia. }
-  unfold ieee32; cbn [m_u k_div].
-  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
-Qed.
+Proof. profile_inst (profile_corrected_euler_closed_generic ieee32 _ 1 ieee32_ok). Qed.
 
 (* Note: ieee profile, binary64. *)
 (** Corrected Euler by its closed form, ieee profile, binary64:
@@ -2262,15 +1876,7 @@ Theorem profile_ieee_corrected_euler_closed_binary64 : forall (s : span) (F : fs
   ap_mul ieee64 h ((INR i - 1) / 2 * fs_ds F) -> ap_add ieee64 g (fs_t0 F + h) ->
   ap_mul ieee64 m (INR i * g) -> ap_add ieee64 p (fs_pa F + m) ->
   Rabs (p - ceuler s i) <= 5961 / 100 * bpow radix2 (-53).
-Proof.
-  intros s F Ha Hb Hl Hn HF i Hi h g m p Hh Hg Hm Hp.
-  pose proof (ce_profile_nr s Hn) as Hn'.
-  eapply Rle_trans.
-  { apply (profile_corrected_euler_closed_generic ieee64 _ 1 ieee64_ok) with (F := F) (h := h) (g := g) (m := m);
-      unfold ieee64; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; lia. }
-  unfold ieee64; cbn [m_u k_div].
-  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
-Qed.
+Proof. profile_inst (profile_corrected_euler_closed_generic ieee64 _ 1 ieee64_ok). Qed.
 
 (* Note: ieee profile, binary64, spans up to 2^24 pixels. *)
 (** Corrected Euler, ieee profile, binary64, n <= 2^24: |P_i - ceuler i| <= (2.2 n + 51.21) 2^-53. *)
@@ -2281,18 +1887,7 @@ Theorem profile_ieee_corrected_euler_binary64_large :
   ce_setup_ok ieee64 s F -> ceuler_run ieee64 F (n s) P Q ->
   forall i, (i <= n s)%nat ->
   Rabs (P i - ceuler s i) <= (22 / 10 * INR (n s) + 5121 / 100) * bpow radix2 (-53).
-Proof.
-  intros s F P Q Ha Hb Hl Hn1 Hn HF HR i Hi.
-  assert (Hn' : INR (n s) <= 16777216) by (apply nat_R; exact Hn).
-  assert (H1 : 0 <= INR (n s)) by apply pos_INR.
-  eapply Rle_trans.
-  { apply (profile_corrected_euler_generic ieee64 _ 1 ieee64_ok) with (F := F) (Q := Q);
-      unfold ieee64; cbn [m_u k_in k_add k_mul k_div];
-      try assumption; try lra; try lia.
-    rewrite u53. lra. }
-  unfold ieee64; cbn [m_u k_add k_div].
-  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
-Qed.
+Proof. profile_inst (profile_corrected_euler_generic ieee64 _ 1 ieee64_ok). Qed.
 
 (* Note: ieee profile, binary64, spans up to 2^24 pixels. *)
 (** Corrected Euler by its closed form, ieee profile, binary64, n <= 2^24:
@@ -2305,138 +1900,7 @@ Theorem profile_ieee_corrected_euler_closed_binary64_large : forall (s : span) (
   ap_mul ieee64 h ((INR i - 1) / 2 * fs_ds F) -> ap_add ieee64 g (fs_t0 F + h) ->
   ap_mul ieee64 m (INR i * g) -> ap_add ieee64 p (fs_pa F + m) ->
   Rabs (p - ceuler s i) <= 5961 / 100 * bpow radix2 (-53).
-Proof.
-  intros s F Ha Hb Hl Hn1 Hn HF i Hi h g m p Hh Hg Hm Hp.
-  assert (Hn' : INR (n s) <= 16777216) by (apply nat_R; exact Hn).
-  eapply Rle_trans.
-  { apply (profile_corrected_euler_closed_generic ieee64 _ 1 ieee64_ok) with (F := F) (h := h) (g := g) (m := m);
-      unfold ieee64; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; lia. }
-  unfold ieee64; cbn [m_u k_div].
-  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
-Qed.
-
-(** ** The closed forms with the halving computed in floats
-
-    As [profile_corrected_euler_closed_generic] and
-    [profile_euler_closed_generic], with h from [half_ok]: (i-1)/2 rounded as
-    a division (or (i-1) ds rounded, then halved by a division) before the
-    rest of the closed form.  The halving adds about |i (i-1)/2 ds| k_div u
-    (at most 1.0007 and 0.7701 k_div u). *)
-Lemma half_ok_rel : forall (M : fmodel) (K1 : R) (i : nat) (ds h : R),
-  0 <= m_u M -> k_mul M <= K1 -> half_ok M i ds h ->
-  half_rel (K1 * m_u M) (k_div M * m_u M) (m_eta M) i ds h.
-Proof.
-  intros M K1 i ds h Hu Hm [(c & Hc & Hh) | (y & Hy & Hh)]; [left; exists c | right; exists y];
-    split; try exact Hc; try exact Hh;
-    (eapply ap1_mono; [| eassumption]); apply Rmult_le_compat_r; lra.
-Qed.
-
-Lemma profile_corrected_euler_closed_half_generic : forall (M : fmodel) (K K1 : R), model_ok M K ->
-  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 -> 1 <= k_div M ->
-  forall (s : span) (F : fsetup),
-  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
-  (1 <= n s)%nat -> INR (n s) <= 16777216 -> ce_setup_ok M s F ->
-  forall i, (i <= n s)%nat -> forall h g m p : R,
-  half_ok M i (fs_ds F) h -> ap_add M g (fs_t0 F + h) ->
-  ap_mul M m (INR i * g) -> ap_add M p (fs_pa F + m) ->
-  Rabs (p - ceuler s i) <= (45 * K1 + 83 / 10 * k_div M) * m_u M.
-Proof.
-  intros M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1 s F Ha Hb Hl Hn1 Hn2 HF i Hi h g m p Hh Hg Hm Hp.
-  pose proof HM as (Hu & He0 & He2 & Ki & Ka & Km & Kd & HK0 & HK2).
-  pose proof (half_ok_rel M K1 i (fs_ds F) h ltac:(lra) Hm1 Hh) as HH.
-  set (u := m_u M) in *.
-  assert (HKu : K1 * u <= K * u) by (apply Rmult_le_compat_r; lra).
-  assert (HDu : k_div M * u <= K * u) by (apply Rmult_le_compat_r; lra).
-  assert (Hv : small_ok (K1 * u) (m_eta M)).
-  { repeat split; try lra.
-    - apply Rmult_lt_0_compat; lra.
-    - assert (u <= K1 * u) by (rewrite <- (Rmult_1_l u) at 1; apply Rmult_le_compat_r; lra).
-      lra. }
-  assert (Hdv : small_ok (k_div M * u) (m_eta M)).
-  { repeat split; try lra.
-    - apply Rmult_lt_0_compat; lra.
-    - assert (u <= k_div M * u) by (rewrite <- (Rmult_1_l u) at 1; apply Rmult_le_compat_r; lra).
-      lra. }
-  set (v := K1 * u) in *.
-  assert (Wa : k_add M * u <= v) by (unfold v; apply Rmult_le_compat_r; lra).
-  assert (Wm : k_mul M * u <= v) by (unfold v; apply Rmult_le_compat_r; lra).
-  assert (AK : forall k y x, k <= K1 -> approx k u (m_eta M) y x -> ap1 v (m_eta M) y x).
-  { intros k y x Hk H. eapply ap1_mono; [|exact H]. unfold v.
-    apply Rmult_le_compat_r; lra. }
-  assert (FK : forall a b y, fdot_ok M a b y -> fdot_rel v v (m_eta M) a b y)
-    by (intros a b y H; eapply fdot_mono; [exact Wm | exact Wa | exact H]).
-  assert (VK : forall vh w0, vap M vh w0 -> vap1 v (m_eta M) vh w0).
-  { intros vh w0 (A1 & A2 & A3). repeat split; (eapply AK; [| eassumption]); lra. }
-  destruct HF as ((Ina & Inb & Inl) & (tx & Htx & Hkx) & (ty & Hty & Hky) & (tz & Htz & Hkz)
-    & Ha' & Hpa & Hc & (e & He & Hd) & Hpb & (q & Hq & Hdqb) & (h1 & x1 & Hh1 & Hx1 & Hdia)
-    & (h2 & x2 & Hh2 & Hx2 & Hdib) & (w & Hw & Hds) & (q2 & q3 & Hq2 & Hq3 & Hpn)
-    & Heps & Hdeps & Ht0).
-  pose proof (K_closed_h v (k_div M * u) (m_eta M) Hv Hdv s Ha Hb Hl Hn1 Hn2
-    _ _ _ _ _ _ _ _ _ _ _ _ _ _ _ _ _
-    (VK _ _ Ina) (VK _ _ Inb) (VK _ _ Inl) _ _ _
-    (AK _ _ _ Ha1 Htx) Hkx (AK _ _ _ Ha1 Hty) Hky (AK _ _ _ Ha1 Htz) Hkz
-    (FK _ _ _ Ha') (FK _ _ _ Hpa) (FK _ _ _ Hc) _ (FK _ _ _ He) (AK _ _ _ Hm1 Hd) (FK _ _ _ Hpb)
-    _ (AK _ _ _ Hm1 Hq) (AK _ _ _ Ha1 Hdqb)
-    _ _ Hh1 (AK _ _ _ Hm1 Hx1) (AK _ _ _ Ha1 Hdia)
-    _ _ Hh2 (AK _ _ _ Hm1 Hx2) (AK _ _ _ Ha1 Hdib)
-    _ (AK _ _ _ Ha1 Hw) Hds
-    _ _ (AK _ _ _ Hm1 Hq2) (AK _ _ _ Hm1 Hq3) (sum3_mono _ _ _ _ _ _ _ Wa Hpn)
-    (AK _ _ _ Ha1 Heps) Hdeps (AK _ _ _ Ha1 Ht0)
-    i Hi h g m p HH (AK _ _ _ Ha1 Hg) (AK _ _ _ Hm1 Hm) (AK _ _ _ Ha1 Hp)) as R.
-  eapply Rle_trans; [exact R|]. unfold v. lra.
-Qed.
-
-Lemma profile_euler_closed_half_generic : forall (M : fmodel) (K K1 : R), model_ok M K ->
-  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 -> 1 <= k_div M ->
-  forall (s : span) (F : fsetup),
-  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
-  (1 <= n s)%nat -> INR (n s) <= 16777216 -> eu_setup_ok M s F ->
-  forall i, (i <= n s)%nat -> forall h g m p : R,
-  half_ok M i (fs_ds F) h -> ap_add M g (fs_dia F + h) ->
-  ap_mul M m (INR i * g) -> ap_add M p (fs_pa F + m) ->
-  Rabs (p - euler_span s i) <= (1012 / 10 * K1 + 1585 / 100 * k_div M) * m_u M.
-Proof.
-  intros M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1 s F Ha Hb Hl Hn1 Hn2 HF i Hi h g m p Hh Hg Hm Hp.
-  pose proof HM as (Hu & He0 & He2 & Ki & Ka & Km & Kd & HK0 & HK2).
-  pose proof (half_ok_rel M K1 i (fs_ds F) h ltac:(lra) Hm1 Hh) as HH.
-  set (u := m_u M) in *.
-  assert (HKu : K1 * u <= K * u) by (apply Rmult_le_compat_r; lra).
-  assert (HDu : k_div M * u <= K * u) by (apply Rmult_le_compat_r; lra).
-  assert (Hv : small_ok (K1 * u) (m_eta M)).
-  { repeat split; try lra.
-    - apply Rmult_lt_0_compat; lra.
-    - assert (u <= K1 * u) by (rewrite <- (Rmult_1_l u) at 1; apply Rmult_le_compat_r; lra).
-      lra. }
-  assert (Hdv : small_ok (k_div M * u) (m_eta M)).
-  { repeat split; try lra.
-    - apply Rmult_lt_0_compat; lra.
-    - assert (u <= k_div M * u) by (rewrite <- (Rmult_1_l u) at 1; apply Rmult_le_compat_r; lra).
-      lra. }
-  set (v := K1 * u) in *.
-  assert (Wa : k_add M * u <= v) by (unfold v; apply Rmult_le_compat_r; lra).
-  assert (Wm : k_mul M * u <= v) by (unfold v; apply Rmult_le_compat_r; lra).
-  assert (AK : forall k y x, k <= K1 -> approx k u (m_eta M) y x -> ap1 v (m_eta M) y x).
-  { intros k y x Hk H. eapply ap1_mono; [|exact H]. unfold v.
-    apply Rmult_le_compat_r; lra. }
-  assert (FK : forall a b y, fdot_ok M a b y -> fdot_rel v v (m_eta M) a b y)
-    by (intros a b y H; eapply fdot_mono; [exact Wm | exact Wa | exact H]).
-  assert (VK : forall vh w0, vap M vh w0 -> vap1 v (m_eta M) vh w0).
-  { intros vh w0 (A1 & A2 & A3). repeat split; (eapply AK; [| eassumption]); lra. }
-  destruct HF as ((Ina & Inb & Inl) & (tx & Htx & Hkx) & (ty & Hty & Hky) & (tz & Htz & Hkz)
-    & Ha' & Hpa & Hc & (e & He & Hd) & Hpb & (q & Hq & Hdqb) & (h1 & x1 & Hh1 & Hx1 & Hdia)
-    & (h2 & x2 & Hh2 & Hx2 & Hdib) & (w & Hw & Hds)).
-  pose proof (K_eu_closed_h v (k_div M * u) (m_eta M) Hv Hdv s Ha Hb Hl Hn1 Hn2
-    _ _ _ _ _ _ _ _ _ _ _ _ _
-    (VK _ _ Ina) (VK _ _ Inb) (VK _ _ Inl) _ _ _
-    (AK _ _ _ Ha1 Htx) Hkx (AK _ _ _ Ha1 Hty) Hky (AK _ _ _ Ha1 Htz) Hkz
-    (FK _ _ _ Ha') (FK _ _ _ Hpa) (FK _ _ _ Hc) _ (FK _ _ _ He) (AK _ _ _ Hm1 Hd) (FK _ _ _ Hpb)
-    _ (AK _ _ _ Hm1 Hq) (AK _ _ _ Ha1 Hdqb)
-    _ _ Hh1 (AK _ _ _ Hm1 Hx1) (AK _ _ _ Ha1 Hdia)
-    _ _ Hh2 (AK _ _ _ Hm1 Hx2) (AK _ _ _ Ha1 Hdib)
-    _ (AK _ _ _ Ha1 Hw) Hds
-    i Hi h g m p HH (AK _ _ _ Ha1 Hg) (AK _ _ _ Hm1 Hm) (AK _ _ _ Ha1 Hp)) as R.
-  eapply Rle_trans; [exact R|]. unfold v. lra.
-Qed.
+Proof. profile_inst (profile_corrected_euler_closed_generic ieee64 _ 1 ieee64_ok). Qed.
 
 (** ** The shader profile: division as .(1/n), the closed forms, the halving *)
 
@@ -2449,18 +1913,7 @@ Theorem profile_shader_gouraud_recip_binary32 : forall (s : span) (F : fsetup) (
   gouraud_setup_ok shader32_recip s F -> gouraud_run shader32_recip F (n s) G ->
   forall i, (i <= n s)%nat ->
   Rabs (G i - gouraud s i) <= (20012 / 10000 * INR (n s) + 280014 / 10000) * bpow radix2 (-24).
-Proof.
-  intros s F G Ha Hb Hl Hn HF HG i Hi.
-  assert (Hn' : INR (n s) <= 4096) by (apply (nat_R _ 4096); lia).
-  assert (H1 : 0 <= INR (n s)) by apply pos_INR.
-  eapply Rle_trans.
-  { apply (profile_gouraud_generic shader32_recip _ shader32_recip_ok s F G Ha Hb Hl ltac:(lia));
-      try assumption.
-    - lra.
-    - unfold shader32_recip; cbn [m_u k_add]. rewrite u24. lra. }
-  unfold shader32_recip; cbn [m_u k_in k_add k_mul k_div].
-  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
-Qed.
+Proof. profile_inst (profile_gouraud_generic shader32_recip _ shader32_recip_ok). Qed.
 
 (* Note: shader profile, every division (by n, by 2) a reciprocal within 2.5 ulp
    then a product, or one 2.5-ulp division ([shader32_recip]). *)
@@ -2471,16 +1924,7 @@ Theorem profile_shader_corrected_euler_recip_binary32 :
   ce_setup_ok shader32_recip s F -> ceuler_run shader32_recip F (n s) P Q ->
   forall i, (i <= n s)%nat ->
   Rabs (P i - ceuler s i) <= (44 / 10 * INR (n s) + 12431 / 100) * bpow radix2 (-24).
-Proof.
-  intros s F P Q Ha Hb Hl Hn HF HR i Hi.
-  pose proof (ce_profile_nr s Hn) as Hn'.
-  eapply Rle_trans.
-  { apply (profile_corrected_euler_generic shader32_recip _ 2 shader32_recip_ok) with (F := F) (Q := Q);
-      unfold shader32_recip; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; try lia.
-    rewrite u24. lra. }
-  unfold shader32_recip; cbn [m_u k_add k_div].
-  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
-Qed.
+Proof. profile_inst (profile_corrected_euler_generic shader32_recip _ 2 shader32_recip_ok). Qed.
 
 (* Note: shader profile, every division (by n, by 2) a reciprocal within 2.5 ulp
    then a product, or one 2.5-ulp division ([shader32_recip]). *)
@@ -2491,16 +1935,7 @@ Theorem profile_shader_euler_recip_binary32 :
   eu_setup_ok shader32_recip s F -> euler_run shader32_recip F (n s) P Q ->
   forall i, (i <= n s)%nat ->
   Rabs (P i - euler_span s i) <= (111 / 10 * INR (n s) + 28811 / 100) * bpow radix2 (-24).
-Proof.
-  intros s F P Q Ha Hb Hl Hn HF HR i Hi.
-  pose proof (ce_profile_nr s Hn) as Hn'.
-  eapply Rle_trans.
-  { apply (profile_euler_generic shader32_recip _ 2 shader32_recip_ok) with (F := F) (Q := Q);
-      unfold shader32_recip; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; try lia.
-    rewrite u24. lra. }
-  unfold shader32_recip; cbn [m_u k_add k_div].
-  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
-Qed.
+Proof. profile_inst (profile_euler_generic shader32_recip _ 2 shader32_recip_ok). Qed.
 
 (* Note: shader profile (one 2.5-ulp division per division); the bound does
    not grow with n. *)
@@ -2512,15 +1947,7 @@ Theorem profile_shader_corrected_euler_closed_binary32 : forall (s : span) (F : 
   ap_mul shader32 h ((INR i - 1) / 2 * fs_ds F) -> ap_add shader32 g (fs_t0 F + h) ->
   ap_mul shader32 m (INR i * g) -> ap_add shader32 p (fs_pa F + m) ->
   Rabs (p - ceuler s i) <= 1265 / 10 * bpow radix2 (-24).
-Proof.
-  intros s F Ha Hb Hl Hn HF i Hi h g m p Hh Hg Hm Hp.
-  pose proof (ce_profile_nr s Hn) as Hn'.
-  eapply Rle_trans.
-  { apply (profile_corrected_euler_closed_generic shader32 _ 2 shader32_ok) with (F := F) (h := h) (g := g) (m := m);
-      unfold shader32; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; lia. }
-  unfold shader32; cbn [m_u k_div].
-  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
-Qed.
+Proof. profile_inst (profile_corrected_euler_closed_generic shader32 _ 2 shader32_ok). Qed.
 
 (* Note: shader profile, every division (by n, by 2) a reciprocal within 2.5 ulp
    then a product, or one 2.5-ulp division ([shader32_recip]). *)
@@ -2533,15 +1960,7 @@ Theorem profile_shader_corrected_euler_closed_recip_binary32 : forall (s : span)
   ap_mul shader32_recip h ((INR i - 1) / 2 * fs_ds F) -> ap_add shader32_recip g (fs_t0 F + h) ->
   ap_mul shader32_recip m (INR i * g) -> ap_add shader32_recip p (fs_pa F + m) ->
   Rabs (p - ceuler s i) <= 14111 / 100 * bpow radix2 (-24).
-Proof.
-  intros s F Ha Hb Hl Hn HF i Hi h g m p Hh Hg Hm Hp.
-  pose proof (ce_profile_nr s Hn) as Hn'.
-  eapply Rle_trans.
-  { apply (profile_corrected_euler_closed_generic shader32_recip _ 2 shader32_recip_ok) with (F := F) (h := h) (g := g) (m := m);
-      unfold shader32_recip; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; lia. }
-  unfold shader32_recip; cbn [m_u k_div].
-  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
-Qed.
+Proof. profile_inst (profile_corrected_euler_closed_generic shader32_recip _ 2 shader32_recip_ok). Qed.
 
 (* Note: shader profile; (i-1)/2 halved in floats ([half_ok]): c = (i-1)/2
    by a division then h = c ds, or y = (i-1) ds then h = y/2. *)
@@ -2554,15 +1973,7 @@ Theorem profile_shader_corrected_euler_closed_half_binary32 : forall (s : span) 
   half_ok shader32 i (fs_ds F) h -> ap_add shader32 g (fs_t0 F + h) ->
   ap_mul shader32 m (INR i * g) -> ap_add shader32 p (fs_pa F + m) ->
   Rabs (p - ceuler s i) <= 1315 / 10 * bpow radix2 (-24).
-Proof.
-  intros s F Ha Hb Hl Hn HF i Hi h g m p Hh Hg Hm Hp.
-  pose proof (ce_profile_nr s Hn) as Hn'.
-  eapply Rle_trans.
-  { apply (profile_corrected_euler_closed_half_generic shader32 _ 2 shader32_ok) with (F := F) (h := h) (g := g) (m := m);
-      unfold shader32; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; lia. }
-  unfold shader32; cbn [m_u k_div].
-  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
-Qed.
+Proof. profile_inst (profile_corrected_euler_closed_half_generic shader32 _ 2 shader32_ok). Qed.
 
 (* Note: shader profile, every division (by n, by 2, the halving of the
    closed form) a reciprocal then a product, or one 2.5-ulp division. *)
@@ -2575,15 +1986,7 @@ Theorem profile_shader_corrected_euler_closed_half_recip_binary32 : forall (s : 
   half_ok shader32_recip i (fs_ds F) h -> ap_add shader32_recip g (fs_t0 F + h) ->
   ap_mul shader32_recip m (INR i * g) -> ap_add shader32_recip p (fs_pa F + m) ->
   Rabs (p - ceuler s i) <= 14811 / 100 * bpow radix2 (-24).
-Proof.
-  intros s F Ha Hb Hl Hn HF i Hi h g m p Hh Hg Hm Hp.
-  pose proof (ce_profile_nr s Hn) as Hn'.
-  eapply Rle_trans.
-  { apply (profile_corrected_euler_closed_half_generic shader32_recip _ 2 shader32_recip_ok) with (F := F) (h := h) (g := g) (m := m);
-      unfold shader32_recip; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; lia. }
-  unfold shader32_recip; cbn [m_u k_div].
-  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
-Qed.
+Proof. profile_inst (profile_corrected_euler_closed_half_generic shader32_recip _ 2 shader32_recip_ok). Qed.
 
 (* Note: shader profile (one 2.5-ulp division per division); the bound does
    not grow with n. *)
@@ -2595,15 +1998,7 @@ Theorem profile_shader_euler_closed_binary32 : forall (s : span) (F : fsetup),
   ap_mul shader32 h ((INR i - 1) / 2 * fs_ds F) -> ap_add shader32 g (fs_dia F + h) ->
   ap_mul shader32 m (INR i * g) -> ap_add shader32 p (fs_pa F + m) ->
   Rabs (p - euler_span s i) <= 2779 / 10 * bpow radix2 (-24).
-Proof.
-  intros s F Ha Hb Hl Hn HF i Hi h g m p Hh Hg Hm Hp.
-  pose proof (ce_profile_nr s Hn) as Hn'.
-  eapply Rle_trans.
-  { apply (profile_euler_closed_generic shader32 _ 2 shader32_ok) with (F := F) (h := h) (g := g) (m := m);
-      unfold shader32; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; lia. }
-  unfold shader32; cbn [m_u k_div].
-  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
-Qed.
+Proof. profile_inst (profile_euler_closed_generic shader32 _ 2 shader32_ok). Qed.
 
 (* Note: shader profile, every division (by n, by 2) a reciprocal within 2.5 ulp
    then a product, or one 2.5-ulp division ([shader32_recip]). *)
@@ -2616,15 +2011,7 @@ Theorem profile_shader_euler_closed_recip_binary32 : forall (s : span) (F : fset
   ap_mul shader32_recip h ((INR i - 1) / 2 * fs_ds F) -> ap_add shader32_recip g (fs_dia F + h) ->
   ap_mul shader32_recip m (INR i * g) -> ap_add shader32_recip p (fs_pa F + m) ->
   Rabs (p - euler_span s i) <= 30811 / 100 * bpow radix2 (-24).
-Proof.
-  intros s F Ha Hb Hl Hn HF i Hi h g m p Hh Hg Hm Hp.
-  pose proof (ce_profile_nr s Hn) as Hn'.
-  eapply Rle_trans.
-  { apply (profile_euler_closed_generic shader32_recip _ 2 shader32_recip_ok) with (F := F) (h := h) (g := g) (m := m);
-      unfold shader32_recip; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; lia. }
-  unfold shader32_recip; cbn [m_u k_div].
-  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
-Qed.
+Proof. profile_inst (profile_euler_closed_generic shader32_recip _ 2 shader32_recip_ok). Qed.
 
 (* Note: shader profile; (i-1)/2 halved in floats ([half_ok]): c = (i-1)/2
    by a division then h = c ds, or y = (i-1) ds then h = y/2. *)
@@ -2637,15 +2024,7 @@ Theorem profile_shader_euler_closed_half_binary32 : forall (s : span) (F : fsetu
   half_ok shader32 i (fs_ds F) h -> ap_add shader32 g (fs_dia F + h) ->
   ap_mul shader32 m (INR i * g) -> ap_add shader32 p (fs_pa F + m) ->
   Rabs (p - euler_span s i) <= 28165 / 100 * bpow radix2 (-24).
-Proof.
-  intros s F Ha Hb Hl Hn HF i Hi h g m p Hh Hg Hm Hp.
-  pose proof (ce_profile_nr s Hn) as Hn'.
-  eapply Rle_trans.
-  { apply (profile_euler_closed_half_generic shader32 _ 2 shader32_ok) with (F := F) (h := h) (g := g) (m := m);
-      unfold shader32; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; lia. }
-  unfold shader32; cbn [m_u k_div].
-  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
-Qed.
+Proof. profile_inst (profile_euler_closed_half_generic shader32 _ 2 shader32_ok). Qed.
 
 (* Note: shader profile, every division (by n, by 2, the halving of the
    closed form) a reciprocal then a product, or one 2.5-ulp division. *)
@@ -2658,15 +2037,7 @@ Theorem profile_shader_euler_closed_half_recip_binary32 : forall (s : span) (F :
   half_ok shader32_recip i (fs_ds F) h -> ap_add shader32_recip g (fs_dia F + h) ->
   ap_mul shader32_recip m (INR i * g) -> ap_add shader32_recip p (fs_pa F + m) ->
   Rabs (p - euler_span s i) <= 31336 / 100 * bpow radix2 (-24).
-Proof.
-  intros s F Ha Hb Hl Hn HF i Hi h g m p Hh Hg Hm Hp.
-  pose proof (ce_profile_nr s Hn) as Hn'.
-  eapply Rle_trans.
-  { apply (profile_euler_closed_half_generic shader32_recip _ 2 shader32_recip_ok) with (F := F) (h := h) (g := g) (m := m);
-      unfold shader32_recip; cbn [m_u k_in k_add k_mul k_div]; try assumption; try lra; lia. }
-  unfold shader32_recip; cbn [m_u k_div].
-  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
-Qed.
+Proof. profile_inst (profile_euler_closed_half_generic shader32_recip _ 2 shader32_recip_ok). Qed.
 
 (** ** What the profile factors cover (Flocq) *)
 

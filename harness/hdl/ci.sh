@@ -6,9 +6,9 @@
 #   harness/hdl/ci.sh [CHECKER]     (default: $PHONG_APPROX_BIN, else target/release/phong-approx)
 #
 # 1. Lints every unit in units/ with `verilator --lint-only -Wall` (no warning at
-#    8.40, the default, nor at 16.16) and checks that each planted bug in mutants/ is
-#    its unit with one line changed, marked PLANTED, and that docs/conformance.md
-#    shows units/gouraud.sv as it is.
+#    8.40, the default, nor at 16.16) and checks that each planted bug in mutants/ (a
+#    one-line sed script on its unit) changes one line of it, marked PLANTED, and that
+#    docs/conformance.md shows units/gouraud.sv as it is.
 # 2. run.sh: every unit passes every published set — gouraud, euler and
 #    corrected-euler (both units/corrected_euler.sv), adaptive and duff, at 8.40, where
 #    every published case has a bound (duff's included).
@@ -53,8 +53,12 @@ for unit in "$here"/units/*.sv; do
     fi
   done
 done
-for mutant in "$here"/mutants/*.sv; do
-  name=${mutant##*/}
+# Each planted bug is a one-line sed script on its unit (mutants/NAME.sed, named
+# UNIT_what): applied here into $tmp/mutants/NAME.sv, it must change exactly the one
+# line it names, mark it PLANTED, and lint.
+mkdir -p "$tmp/mutants"
+for script in "$here"/mutants/*.sed; do
+  name=$(basename "$script" .sed)
   unit=
   case $name in
     corrected_euler_*) unit=$here/units/corrected_euler.sv ;;
@@ -62,16 +66,14 @@ for mutant in "$here"/mutants/*.sv; do
     duff_*) unit=$here/units/duff.sv ;;
     adaptive_*) unit=$here/units/adaptive.sv ;;
   esac
-  [ -n "$unit" ] && [ -f "$unit" ] || fail "mutants/$name: no unit it is a copy of"
-  # The mutant without its header (down to "The unit it is a copy of" and the line after).
-  awk 'skip == 2 { print; next } NR <= 2 { print; next }
-       skip == 1 { skip = 2; next } /^\/\/ The unit it is a copy of/ { skip = 1 }' "$mutant" > "$tmp/stripped.sv"
-  diff "$unit" "$tmp/stripped.sv" > "$tmp/diff" || true
+  [ -n "$unit" ] && [ -f "$unit" ] || fail "mutants/$name.sed: no unit it applies to"
+  sed -f "$script" "$unit" > "$tmp/mutants/$name.sv"
+  diff "$unit" "$tmp/mutants/$name.sv" > "$tmp/diff" || true
   if [ "$(grep -c '^[<>]' "$tmp/diff")" -ne 2 ] || ! grep -q '^>.*PLANTED' "$tmp/diff"; then
     cat "$tmp/diff" >&2
-    fail "mutants/$name is not units/${unit##*/} with one line changed and marked PLANTED"
+    fail "mutants/$name.sed does not change exactly one line of units/${unit##*/}, marked PLANTED (has the unit changed?)"
   fi
-  verilator --lint-only -Wall -Wno-DECLFILENAME "$mutant" > "$tmp/lint.log" 2>&1 || { cat "$tmp/lint.log" >&2; fail "mutants/$name does not lint"; }
+  verilator --lint-only -Wall -Wno-DECLFILENAME "$tmp/mutants/$name.sv" > "$tmp/lint.log" 2>&1 || { cat "$tmp/lint.log" >&2; fail "mutants/$name.sed gives a unit that does not lint"; }
 done
 awk '/<!-- example unit: begin -->/ { on = 1; next } /<!-- example unit: end -->/ { on = 0 }
      on && !/^```/ { print }' "$docs" > "$tmp/documented.sv"
@@ -109,10 +111,10 @@ fails() { # label, run.sh arguments...
 fails "eps/(n+1) for eps/n (host set-up, corrected Euler)" "$here/units/corrected_euler.sv" --method corrected-euler --mutant eps-n1
 fails "set-up truncated, not rounded (corrected Euler)" "$here/units/corrected_euler.sv" --method corrected-euler --mutant truncated-setup
 fails "set-up truncated, not rounded (Gouraud)" "$here/units/gouraud.sv" --method gouraud --mutant truncated-setup
-fails "mutants/gouraud_n_pixels.sv (n pixels)" "$here/mutants/gouraud_n_pixels.sv" --method gouraud
-fails "mutants/corrected_euler_n2_pixels.sv (n + 2 pixels)" "$here/mutants/corrected_euler_n2_pixels.sv" --method corrected-euler
-fails "mutants/duff_divider_short.sv (quotient's last bit dropped)" "$here/mutants/duff_divider_short.sv" --method duff
-fails "mutants/duff_root_short.sv (root's last bit dropped)" "$here/mutants/duff_root_short.sv" --method duff
+fails "mutants/gouraud_n_pixels.sed (n pixels)" "$tmp/mutants/gouraud_n_pixels.sv" --method gouraud
+fails "mutants/corrected_euler_n2_pixels.sed (n + 2 pixels)" "$tmp/mutants/corrected_euler_n2_pixels.sv" --method corrected-euler
+fails "mutants/duff_divider_short.sed (quotient's last bit dropped)" "$tmp/mutants/duff_divider_short.sv" --method duff
+fails "mutants/duff_root_short.sed (root's last bit dropped)" "$tmp/mutants/duff_root_short.sv" --method duff
 
 # 4. run.sh's failure modes, on copies of the example with one line changed.
 plant() { # name, sed script: a copy of units/gouraud.sv in $tmp/NAME.sv

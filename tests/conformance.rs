@@ -6,9 +6,9 @@
 mod runner;
 use runner::bin;
 
-use phong_approx::conformance::check::{check, parse_results, Tolerance};
+use phong_approx::conformance::check::{check, parse_results, Criteria, Tolerance};
 use phong_approx::conformance::vectors::{
-    self as vectors, inputs_csv, method_key, to_csv, Case, VectorFile, SETS,
+    self as vectors, inputs_csv, to_csv, Case, VectorFile, SETS,
 };
 use phong_approx::parse::parse_rational;
 use phong_approx::{Method, Real, Scalar, Span, Vec3};
@@ -272,19 +272,13 @@ fn passes(
     specular: bool,
 ) -> Vec<String> {
     let results = parse_results(text, "own", file, specular).unwrap();
-    check(
-        file,
-        &results,
-        method,
-        &method_key(method),
-        Tolerance::Default { format },
-        specular,
-    )
-    .unwrap()
-    .into_iter()
-    .filter(|r| !r.pass)
-    .map(|r| format!("{} max |Δ| {:e} > {}", r.id, r.max_abs, r.allowed))
-    .collect()
+    let criteria = Criteria::new(method, Tolerance::Default { format }).specular(specular);
+    check(file, &results, &criteria)
+        .unwrap()
+        .into_iter()
+        .filter(|r| !r.pass)
+        .map(|r| format!("{} max |Δ| {:e} > {}", r.id, r.max_abs, r.allowed))
+        .collect()
 }
 
 /// The failures that are not "no derived bound" for a related method: spherical
@@ -835,15 +829,7 @@ fn check_profile_fixed_judges_a_span_unit() {
             .iter()
             .map(|c| (c.id.clone(), fixed_point_unit(c, 16, mutant)))
             .collect();
-        check(
-            file,
-            &results,
-            Method::CorrectedEuler,
-            "corrected-euler",
-            tol,
-            false,
-        )
-        .unwrap()
+        check(file, &results, &Criteria::new(Method::CorrectedEuler, tol)).unwrap()
     };
     for set in SETS {
         let file = committed(set);
@@ -924,15 +910,8 @@ fn check_profile_fixed_is_exact_up_to_51_fractional_bits() {
                     .iter()
                     .map(|c| (c.id.clone(), fixed_point_unit(c, f, mutant)))
                     .collect();
-                let reports = check(
-                    file,
-                    &results,
-                    Method::CorrectedEuler,
-                    "corrected-euler",
-                    tol,
-                    false,
-                )
-                .unwrap();
+                let reports =
+                    check(file, &results, &Criteria::new(Method::CorrectedEuler, tol)).unwrap();
                 failed += reports.iter().filter(|r| !r.pass).count();
             }
             assert_eq!(

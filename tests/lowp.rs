@@ -465,9 +465,8 @@ mod fixed {
     /// rounds to nearest, one pixel too few, and Duff's first difference D for C + D.
     #[test]
     fn hardware_twins_pass_their_fixed_bounds_and_bugs_fail() {
-        use phong_approx::conformance::check::{check, Tolerance};
+        use phong_approx::conformance::check::{check, Criteria, Tolerance};
         use phong_approx::conformance::integrity::case_span;
-        use phong_approx::conformance::vectors::method_key;
         use phong_approx::testkit::published;
         use phong_approx::tolerance::profile::{Form, Profile};
         type Run = fn(&FixedSpan, &phong_approx::Span<Q>) -> Vec<i64>;
@@ -489,8 +488,7 @@ mod fixed {
                 format: phong_approx::Format::Binary64,
                 form: Form::Any,
             };
-            let key = method_key(method);
-            let r = check(file, &results, method, &key, tol, false).unwrap();
+            let r = check(file, &results, &Criteria::new(method, tol)).unwrap();
             r.iter().filter(|c| !c.pass).count()
         };
         let good: [(Method, Run); 5] = [

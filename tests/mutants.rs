@@ -7,7 +7,7 @@
 //!
 //! Prints the table mutant × profile × set (`cargo test --test numerics mutants:: -- --nocapture`).
 
-use phong_approx::conformance::check::{check, Results, Tolerance};
+use phong_approx::conformance::check::{check, Criteria, Results, Tolerance};
 use phong_approx::conformance::vectors::{Case, VectorFile};
 use phong_approx::tolerance::profile::Profile;
 use phong_approx::Method;
@@ -233,8 +233,7 @@ fn verdict(m: &Mutant, file: &VectorFile, profile: Profile) -> (usize, usize, bo
             form: phong_approx::tolerance::profile::Form::Any,
         },
     };
-    let key = m.method.name().into_owned();
-    let reports = check(file, &results, m.method, &key, tol, false).unwrap();
+    let reports = check(file, &results, &Criteria::new(m.method, tol)).unwrap();
     let failed = reports.iter().filter(|r| !r.pass).count();
     let no_bound = reports
         .iter()

@@ -1972,19 +1972,17 @@ fn adaptive_threshold_accepts_either_method() {
     assert!((g[1] - ce[1]).abs() > 1.0 / 256.0, "a whole level apart");
     let judge = |values: Vec<f64>, format: Format| {
         let results = [(case.id.clone(), values)].into_iter().collect();
+        let tol = Tolerance::Profile {
+            profile: Profile::Ieee,
+            format,
+            form: phong_approx::tolerance::profile::Form::Any,
+        };
+        let criteria = phong_approx::conformance::check::Criteria::new(Method::Adaptive, tol);
         let r = check_in(
             &vectors,
             &phong_approx::conformance::check::shapes(&vectors),
             &results,
-            Method::Adaptive,
-            "adaptive",
-            Tolerance::Profile {
-                profile: Profile::Ieee,
-                format,
-                form: phong_approx::tolerance::profile::Form::Any,
-            },
-            false,
-            format,
+            &criteria,
         )
         .unwrap();
         (r[0].pass, r[0].allowed.clone())

@@ -3,7 +3,7 @@
 use super::{out, read_capped, CliError};
 use clap::Args;
 use phong_approx::conformance::check::{
-    denote, parse_results, Tolerance, Unbounded, MAX_RESULTS_BYTES,
+    denote, parse_results, Criteria, Tolerance, Unbounded, MAX_RESULTS_BYTES,
 };
 use phong_approx::conformance::judgement::judge;
 use phong_approx::conformance::shown;
@@ -191,16 +191,10 @@ pub fn run(a: &CheckArgs) -> Result<(), CliError> {
             code: 2,
             details: Vec::new(),
         })?;
-    let judged = judge(
-        vectors,
-        &loaded.shapes,
-        &results,
-        method,
-        tol,
-        a.specular,
-        a.precision.format(),
-    )
-    .map_err(|e| {
+    let criteria = Criteria::new(method, tol)
+        .specular(a.specular)
+        .in_format(a.precision.format());
+    let judged = judge(vectors, &loaded.shapes, &results, &criteria).map_err(|e| {
         let tolerance = if a.tolerance.is_some() {
             "--tolerance"
         } else {

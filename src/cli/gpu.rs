@@ -75,7 +75,7 @@ pub use with_gpu::run;
 mod with_gpu {
     use super::{CliError, GpuCheckArgs};
     use crate::cli::check::{ReportArg, ReportFormat};
-    use phong_approx::conformance::check::{CaseReport, Results, Tolerance};
+    use phong_approx::conformance::check::{CaseReport, Criteria, Results, Tolerance};
     use phong_approx::conformance::judgement::{judge, Judgement};
     use phong_approx::conformance::vectors::method_key;
     use phong_approx::conformance::verdict;
@@ -137,7 +137,7 @@ mod with_gpu {
         SETS.iter()
             .filter_map(|set| Some((*set, published(set)?, published_shapes(set)?)))
             .map(|(set, file, shapes)| {
-                judge(file, shapes, results, method, tol, false, Format::Binary32)
+                judge(file, shapes, results, &Criteria::new(method, tol))
                     .map(|j| (set, j))
                     .map_err(|e| crate::cli::judge_error(e, "--profile"))
             })

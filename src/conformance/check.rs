@@ -88,8 +88,53 @@ pub enum JudgeError {
     },
 }
 
-/// Compares `results` with the vector file's expectations for `method`, counting ulps
-/// in the format the tolerance names (`f32` when it names none: see [`check_in`]).
+/// What a verdict judges by — one request, taken by [`check`], [`check_in`],
+/// [`super::judgement::judge`], the test kit and `gpu-check`: the method (its key in
+/// the vector files is [`Criteria::key`]), the tolerance, the part (diffuse, or the
+/// specular `max(0, method(N·H))^s`) and the implementation's format, whose ulps
+/// [`Tolerance::Ulps`] and the report count.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Criteria {
+    /// The method the results are of.
+    pub method: Method,
+    /// How close they must be.
+    pub tolerance: Tolerance,
+    /// Whether they are the specular part.
+    pub specular: bool,
+    /// The implementation's format.
+    pub format: crate::Format,
+}
+
+impl Criteria {
+    /// Diffuse results of `method` judged by `tolerance`, in the format it names
+    /// (`f32` where it names none).
+    pub fn new(method: Method, tolerance: Tolerance) -> Self {
+        Criteria {
+            method,
+            tolerance,
+            specular: false,
+            format: tolerance.format().unwrap_or(crate::Format::Binary32),
+        }
+    }
+
+    /// The same criteria for the specular part (`true`) or the diffuse one.
+    pub fn specular(self, specular: bool) -> Self {
+        Criteria { specular, ..self }
+    }
+
+    /// The same criteria for an implementation in `format`.
+    pub fn in_format(self, format: crate::Format) -> Self {
+        Criteria { format, ..self }
+    }
+
+    /// The method's key in the vector files
+    /// ([`crate::conformance::vectors::method_key`]).
+    pub fn key(&self) -> String {
+        super::vectors::method_key(self.method)
+    }
+}
+
+/// Compares `results` with the vector file's expectations by `criteria`.
 ///
 /// # Errors
 /// A [`JudgeError`]: the method is not in the file, or the tolerance is not valid
@@ -97,16 +142,9 @@ pub enum JudgeError {
 pub fn check(
     vectors: &VectorFile,
     results: &Results,
-    method: Method,
-    method_key: &str,
-    tol: Tolerance,
-    specular: bool,
+    criteria: &Criteria,
 ) -> Result<Vec<CaseReport>, JudgeError> {
-    let format = tol.format().unwrap_or(crate::Format::Binary32);
-    let shapes = shapes(vectors);
-    check_in(
-        vectors, &shapes, results, method, method_key, tol, specular, format,
-    )
+    check_in(vectors, &shapes(vectors), results, criteria)
 }
 
 /// The shape of each case's exact span, in the file's case order: read once from the
@@ -126,22 +164,24 @@ pub fn shapes(vectors: &VectorFile) -> Vec<Option<crate::tolerance::Shape>> {
         .collect()
 }
 
-/// [`check`] for an implementation in `format`: ulps (of [`Tolerance::Ulps`] and of
-/// the report) are that format's.
+/// [`check`] with the shapes of the file's spans read once ([`shapes`]).
 ///
 /// # Errors
 /// As [`check`], and [`JudgeError::Shapes`] where `shapes` are not the file's.
-#[allow(clippy::too_many_arguments)]
 pub fn check_in(
     vectors: &VectorFile,
     shapes: &[Option<crate::tolerance::Shape>],
     results: &Results,
-    method: Method,
-    method_key: &str,
-    tol: Tolerance,
-    specular: bool,
-    format: crate::Format,
+    criteria: &Criteria,
 ) -> Result<Vec<CaseReport>, JudgeError> {
+    let Criteria {
+        method,
+        tolerance: tol,
+        specular,
+        format,
+    } = *criteria;
+    let key = criteria.key();
+    let method_key = key.as_str();
     tol.validate().map_err(JudgeError::Tolerance)?;
     if shapes.len() != vectors.cases.len() {
         return Err(JudgeError::Shapes {

@@ -4,8 +4,8 @@
 //! JSON ([`Judgement::junit`], [`Judgement::json`], in `export.rs`), as a one-line failure
 //! ([`Judgement::failure`]) or case by case ([`Judgement::failing`]).
 
-use super::check::{check_in, Advice, CaseReport, JudgeError, Results, Tolerance};
-use super::vectors::{method_key, Case, VectorFile};
+use super::check::{check_in, Advice, CaseReport, Criteria, JudgeError, Results, Tolerance};
+use super::vectors::{Case, VectorFile};
 use crate::tolerance::Shape;
 use crate::{Format, Method};
 use std::collections::HashMap;
@@ -31,7 +31,7 @@ pub struct Judgement<'a> {
     pub reports: Vec<CaseReport>,
 }
 
-/// Judges `results` against `vectors` for `method` ([`check_in`]): the one verdict
+/// Judges `results` against `vectors` by `criteria` ([`check_in`]): the one verdict
 /// every caller renders. `shapes`: the file's exact spans' ([`super::check::shapes`],
 /// or what [`super::integrity::validate`] or [`super::verdict::load_vectors`] read).
 ///
@@ -41,23 +41,17 @@ pub fn judge<'a>(
     vectors: &'a VectorFile,
     shapes: &[Option<Shape>],
     results: &'a Results,
-    method: Method,
-    tolerance: Tolerance,
-    specular: bool,
-    format: Format,
+    criteria: &Criteria,
 ) -> Result<Judgement<'a>, JudgeError> {
-    let key = method_key(method);
-    let reports = check_in(
-        vectors, shapes, results, method, &key, tolerance, specular, format,
-    )?;
+    let reports = check_in(vectors, shapes, results, criteria)?;
     Ok(Judgement {
         vectors,
         results,
-        method,
-        key,
-        tolerance,
-        specular,
-        format,
+        method: criteria.method,
+        key: criteria.key(),
+        tolerance: criteria.tolerance,
+        specular: criteria.specular,
+        format: criteria.format,
         reports,
     })
 }

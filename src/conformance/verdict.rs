@@ -479,51 +479,26 @@ mod tests {
 
     #[test]
     fn a_file_that_cannot_be_judged_names_the_input_at_fault() {
-        use crate::conformance::check::{check_in, shapes, JudgeError, Results};
+        use crate::conformance::check::{check_in, shapes, Criteria, JudgeError, Results};
         let m = Method::Gouraud;
         let l = load_vectors(EDGE.to_string(), "edge.json", m, false, false).unwrap();
         let res = Results::new();
-        let f = crate::Format::Binary32;
-        let e = check_in(
-            &l.file,
-            &l.shapes,
-            &res,
-            m,
-            "nosuch",
-            Tolerance::Levels(0),
-            false,
-            f,
-        );
-        let key = "nosuch".to_string();
+        let levels = Criteria::new(m, Tolerance::Levels(0));
+        // A method the file does not hold: a cosine table of another size.
+        let other = Criteria::new(Method::AngularTable(64), Tolerance::Levels(0));
+        let e = check_in(&l.file, &l.shapes, &res, &other);
+        let key = "angular-table64".to_string();
         assert_eq!(e.unwrap_err(), JudgeError::Method { key });
-        let bad = Tolerance::Abs(f64::NAN);
-        let e = check_in(&l.file, &l.shapes, &res, m, "gouraud", bad, false, f);
+        let bad = Criteria::new(m, Tolerance::Abs(f64::NAN));
+        let e = check_in(&l.file, &l.shapes, &res, &bad);
         assert!(matches!(e, Err(JudgeError::Tolerance(_))), "{e:?}");
-        let e = check_in(
-            &l.file,
-            &[],
-            &res,
-            m,
-            "gouraud",
-            Tolerance::Levels(0),
-            false,
-            f,
-        );
+        let e = check_in(&l.file, &[], &res, &levels);
         let cases = l.file.cases.len();
         assert_eq!(e.unwrap_err(), JudgeError::Shapes { shapes: 0, cases });
         // The shapes `load_vectors` read are `shapes`' for the same file.
         assert_eq!(l.shapes, shapes(&l.file));
         // Results that lack a case fail it; they do not panic.
-        let r = check_in(
-            &l.file,
-            &l.shapes,
-            &res,
-            m,
-            "gouraud",
-            Tolerance::Levels(0),
-            false,
-            f,
-        );
+        let r = check_in(&l.file, &l.shapes, &res, &levels);
         assert!(r.unwrap().iter().all(|c| !c.pass));
     }
 
@@ -546,7 +521,12 @@ mod tests {
         let tol = Tolerance::Levels(0);
         let run = |scale: f64| {
             let res = parse_results(&csv(scale), "r.csv", &file, false).unwrap();
-            check(&file, &res, m, "gouraud", tol, false).unwrap()
+            check(
+                &file,
+                &res,
+                &crate::conformance::check::Criteria::new(m, tol),
+            )
+            .unwrap()
         };
         let good = run(1.0);
         assert_eq!(failure(&good), None);

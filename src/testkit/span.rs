@@ -4,7 +4,7 @@
 use super::inputs::{Float, Inputs};
 use super::outcome::Report;
 use super::suite::judge;
-use crate::conformance::check::Tolerance;
+use crate::conformance::check::{Criteria, Tolerance};
 use crate::conformance::vectors::{case_for_span, file_of};
 use crate::tolerance::profile::Profile;
 use crate::{BigRational, Method, Span};
@@ -92,16 +92,8 @@ pub fn check_span<T: Float, F: FnMut(&Inputs<T>) -> Vec<T>>(
     );
     // The span is exact already: its shape is read from it, not from the case's text.
     let shapes = [Some(crate::tolerance::Shape::of(span))];
-    judge(
-        &mut report,
-        "span",
-        &file,
-        &shapes,
-        method,
-        tol,
-        false,
-        &mut shade,
-    );
+    let criteria = Criteria::new(method, tol).in_format(T::FORMAT);
+    judge(&mut report, "span", &file, &shapes, &criteria, &mut shade);
     Ok(report)
 }
 

@@ -3,7 +3,7 @@
 
 use super::inputs::{published, published_shapes, Float, Inputs, SETS};
 use super::outcome::{self, case_inputs, Failure, Report};
-use crate::conformance::check::{Results, Tolerance};
+use crate::conformance::check::{Criteria, Results, Tolerance};
 use crate::conformance::vectors::VectorFile;
 use crate::tolerance::profile::{Form, Profile};
 use crate::Method;
@@ -230,16 +230,10 @@ impl Suite {
                 }
             };
             found = true;
-            judge(
-                &mut report,
-                set,
-                file,
-                shapes,
-                self.method,
-                tol,
-                self.specular,
-                &mut shade,
-            );
+            let criteria = Criteria::new(self.method, tol)
+                .specular(self.specular)
+                .in_format(T::FORMAT);
+            judge(&mut report, set, file, shapes, &criteria, &mut shade);
         }
         if let (Some(id), false) = (&self.case, found) {
             report.add_failure(Failure::of_suite(
@@ -257,19 +251,17 @@ impl Suite {
     }
 }
 
-/// Runs `shade` on every case of `file` (the specular ones for `specular`), judges the
-/// values as `check` does, and adds the set to `report`.
-#[allow(clippy::too_many_arguments)]
+/// Runs `shade` on every case of `file` (the specular ones where `criteria` are
+/// specular), judges the values as `check` does, and adds the set to `report`.
 pub(crate) fn judge<T: Float>(
     report: &mut Report,
     set: &'static str,
     file: &VectorFile,
     shapes: &[Option<crate::tolerance::Shape>],
-    method: Method,
-    tol: Tolerance,
-    specular: bool,
+    criteria: &Criteria,
     shade: &mut dyn FnMut(&Inputs<T>) -> Vec<T>,
 ) {
+    let specular = criteria.specular;
     let mut results = Results::new();
     for c in file
         .cases
@@ -283,15 +275,7 @@ pub(crate) fn judge<T: Float>(
         results.insert(c.id.clone(), got);
     }
     let judged_by = report.judged_by.clone();
-    let judged = match crate::conformance::judgement::judge(
-        file,
-        shapes,
-        &results,
-        method,
-        tol,
-        specular,
-        T::FORMAT,
-    ) {
+    let judged = match crate::conformance::judgement::judge(file, shapes, &results, criteria) {
         Ok(j) => j,
         // A method the published sets do not hold (a cosine table of another size), or
         // a tolerance that means nothing: a failure, not a panic.

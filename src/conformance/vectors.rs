@@ -19,7 +19,7 @@ mod sets;
 mod twins;
 
 pub(crate) use compute::case_for_span;
-use compute::{compute_case_for, make_case};
+use compute::{compute_case_for, make_case, ExactCase};
 pub use compute::{CaseSpec, MAX_SHININESS};
 pub use inputs::{exact_input, CaseInputs, InputsFile, SpecularInputs};
 pub use sets::specs;

@@ -161,7 +161,16 @@ impl CaseSpec {
             n,
             h,
         } = self;
-        compute_case_for(&Method::ALL, id, comment, na, nb, l, n, h)
+        let exact = ExactCase {
+            id,
+            comment,
+            na,
+            nb,
+            l,
+            n,
+            h,
+        };
+        compute_case_for(&Method::ALL, exact)
     }
 }
 
@@ -176,22 +185,48 @@ pub(crate) fn case_for_span(
     comment: &str,
     span: &Span<BigRational>,
 ) -> Result<Case, VectorError> {
-    let (na, nb, l) = (span.na.clone(), span.nb.clone(), span.l.clone());
-    compute_case_for(methods, id.to_string(), comment, na, nb, l, span.n, None)
+    let exact = ExactCase {
+        id: id.to_string(),
+        comment,
+        na: span.na.clone(),
+        nb: span.nb.clone(),
+        l: span.l.clone(),
+        n: span.n,
+        h: None,
+    };
+    compute_case_for(methods, exact)
+}
+
+/// A case's exact inputs, whose expectations [`compute_case_for`] computes: a
+/// [`CaseSpec`] whose comment may be borrowed (from a file being recomputed).
+pub(super) struct ExactCase<'a> {
+    /// The case id.
+    pub id: String,
+    /// Why the case is there.
+    pub comment: &'a str,
+    /// `N_a`, exactly unit.
+    pub na: Vec3<BigRational>,
+    /// `N_b`, exactly unit.
+    pub nb: Vec3<BigRational>,
+    /// `L`, exactly unit.
+    pub l: Vec3<BigRational>,
+    /// Steps.
+    pub n: u32,
+    /// The half vector and exponent of the specular expectations, if any.
+    pub h: Option<(Vec3<BigRational>, u32)>,
 }
 
 /// A case from exact unit inputs, with the expectations of `methods`.
-#[allow(clippy::too_many_arguments)]
-pub(super) fn compute_case_for(
-    methods: &[Method],
-    id: String,
-    comment: &str,
-    na: Vec3<BigRational>,
-    nb: Vec3<BigRational>,
-    l: Vec3<BigRational>,
-    n: u32,
-    h: Option<(Vec3<BigRational>, u32)>,
-) -> Result<Case, VectorError> {
+pub(super) fn compute_case_for(methods: &[Method], exact: ExactCase) -> Result<Case, VectorError> {
+    let ExactCase {
+        id,
+        comment,
+        na,
+        nb,
+        l,
+        n,
+        h,
+    } = exact;
     let at = |e: VectorError| VectorError::case(&id, e.problem);
     let span = Span::new(na.clone(), nb.clone(), l.clone(), n)
         .map_err(|e| VectorError::case(&id, e.to_string()))?;

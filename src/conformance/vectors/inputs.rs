@@ -140,16 +140,16 @@ impl InputsFile {
             // The adaptive scheme is judged against both of its methods where its test
             // is too close to call (`check::check_in`): their expectations too.
             let methods = method.with_picks();
-            let case = compute_case_for(
-                &methods,
-                c.id.clone(),
-                &c.comment,
-                v(c, &c.na, "na")?,
-                v(c, &c.nb, "nb")?,
-                v(c, &c.l, "l")?,
-                c.n,
+            let exact = ExactCase {
+                id: c.id.clone(),
+                comment: &c.comment,
+                na: v(c, &c.na, "na")?,
+                nb: v(c, &c.nb, "nb")?,
+                l: v(c, &c.l, "l")?,
+                n: c.n,
                 h,
-            )?;
+            };
+            let case = compute_case_for(&methods, exact)?;
             // The f32 and f64 forms an implementation reads must be the nearest floats
             // to the exact inputs the reference runs on.
             let mut pairs = vec![

@@ -190,32 +190,40 @@ mod with_gpu {
         }
         let gpu = Gpu::new().map_err(gpu_error)?;
         let adapter = gpu.adapter().to_string();
+        let device = Device {
+            gpu: &gpu,
+            adapter: &adapter,
+            timeout,
+        };
         match (user, &a.shader, a.method) {
-            (Some(source), Some(path), Some(method)) => user_kernel(
-                a,
-                report.as_ref(),
-                &gpu,
-                &adapter,
-                &source,
-                path,
-                method,
-                timeout,
-            ),
-            _ => builtin(&gpu, &adapter, timeout),
+            (Some(source), Some(path), Some(method)) => {
+                user_kernel(a, report.as_ref(), &device, &source, path, method)
+            }
+            _ => builtin(&device),
         }
     }
 
-    #[allow(clippy::too_many_arguments)]
+    /// The device a run uses: the GPU, its adapter's name and the time an invocation
+    /// may take.
+    struct Device<'a> {
+        gpu: &'a Gpu,
+        adapter: &'a str,
+        timeout: Duration,
+    }
+
     fn user_kernel(
         a: &GpuCheckArgs,
         report: Option<&ReportArg>,
-        gpu: &Gpu,
-        adapter: &str,
+        device: &Device,
         source: &Source,
         path: &str,
         method: Method,
-        timeout: Duration,
     ) -> Result<(), CliError> {
+        let Device {
+            gpu,
+            adapter,
+            timeout,
+        } = *device;
         let human = crate::cli::check::human_verdict(report);
         human(&format!("adapter: {adapter}\n"))?;
         let (results, raw, seconds) = values(gpu, source, path, timeout)?;
@@ -359,7 +367,12 @@ mod with_gpu {
     }
 
     /// Every kernel of `harness/gpu/`: the table of docs/conformance.md §6.
-    fn builtin(gpu: &Gpu, adapter: &str, timeout: Duration) -> Result<(), CliError> {
+    fn builtin(device: &Device) -> Result<(), CliError> {
+        let Device {
+            gpu,
+            adapter,
+            timeout,
+        } = *device;
         outln!("adapter: {adapter}")?;
         outln!("| kernel | method | form | shader: worst × allowed | ieee: worst × allowed | pixels ≠ CPU | largest difference | of the shader bound |")?;
         outln!("|---|---|---|---|---|---|---|---|")?;

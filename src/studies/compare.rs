@@ -46,7 +46,7 @@ pub use crate::raster::shader::Shader;
 
 mod rows;
 pub use rows::{runs_in, Direction, RowKernels};
-pub(crate) use rows::{shade_row, RowInfo, TriangleSetup};
+pub(crate) use rows::{shade_row, RowAt, RowInfo, TriangleSetup};
 
 /// Every column of the comparison, the reference first: every span method of the
 /// catalogue ([`Method::ALL`], in its order), each followed by the polygon methods it
@@ -284,6 +284,45 @@ struct Comparison {
     spec64: Vec<Vec<f64>>,
 }
 
+impl Comparison {
+    /// The levels of the row `at` (the half vector's; the light's share its `x0`, `y`
+    /// and `n`) for every shader: diffuse, then specular per shininess, from the
+    /// values [`shade_row`] left in `out32`, `out64`, `spec32` and `spec64`.
+    fn row_levels(
+        &self,
+        s32: &TriangleSetup<f32>,
+        h32: &RowInfo<f32>,
+        at: RowAt,
+    ) -> Vec<RowLevels> {
+        let (out32, out64, spec32, spec64) = (&self.out32, &self.out64, &self.spec32, &self.spec64);
+        let len = at.n as usize + 1;
+        COLUMNS
+            .iter()
+            .enumerate()
+            .map(|(c, &sh)| {
+                (0..len)
+                    .map(|j| {
+                        let mut l = [0u8; 4];
+                        if c == 0 {
+                            l[0] = level(&out64[0][j]);
+                            for (k, pt) in self.powers.iter().enumerate() {
+                                l[k + 1] = level(&power(Shader::PhongPixel, spec64[0][j], pt));
+                            }
+                        } else {
+                            l[0] = level(&out32[c][j]);
+                            for (k, pt) in self.powers.iter().enumerate() {
+                                let v = specular_value(sh, &spec32[c], s32, h32, at, j, pt);
+                                l[k + 1] = level(&v);
+                            }
+                        }
+                        l
+                    })
+                    .collect()
+            })
+            .collect()
+    }
+}
+
 impl Shading for Comparison {
     type Row = CompareRow;
 
@@ -306,33 +345,26 @@ impl Shading for Comparison {
         let y = f64::from(row.y) + 0.5 - yc;
         let reference = [Shader::PhongPixel];
         let all: &[Shader] = &COLUMNS;
-        let shaded = shade_row(s32, 0, x0, y, n, &self.prep32, all, &mut self.out32)
+        let light = RowAt { d: 0, x0, y, n };
+        let half = RowAt { d: 1, ..light };
+        let shaded = shade_row(s32, light, &self.prep32, all, &mut self.out32)
             .zip(shade_row(
                 s64,
-                0,
-                x0,
-                y,
-                n,
+                light,
                 &self.prep64,
                 &reference,
                 &mut self.out64,
             ))
             .zip(shade_row(
                 s32,
-                1,
-                x0,
-                y,
-                n,
+                half,
                 &self.prep32,
                 &COLUMNS[..],
                 &mut self.spec32,
             ))
             .zip(shade_row(
                 s64,
-                1,
-                x0,
-                y,
-                n,
+                half,
                 &self.prep64,
                 &reference,
                 &mut self.spec64,
@@ -342,11 +374,9 @@ impl Shading for Comparison {
             return None;
         };
         let len = n as usize + 1;
+        let levels = self.row_levels(s32, &h32, half);
         let (out32, out64, spec32, spec64) = (&self.out32, &self.out64, &self.spec32, &self.spec64);
         let powers = &self.powers;
-        let levels = row_levels(
-            out32, out64, spec32, spec64, s32, 1, &h32, x0, y, len, powers,
-        );
         let stats = &mut self.stats;
         if n >= 1 {
             stats.spans += 1;
@@ -380,7 +410,7 @@ impl Shading for Comparison {
                             let (dv, sv) = if c == 0 {
                                 (out64[0][j], power(Shader::PhongPixel, spec64[0][j], pt))
                             } else {
-                                let sv = specular_value(sh, &spec32[c], s32, &h32, x0, y, j, n, pt);
+                                let sv = specular_value(sh, &spec32[c], s32, &h32, half, j, pt);
                                 (f64::from(out32[c][j]), sv)
                             };
                             level(&(ka + kd * dv.max(0.0) + ks * sv))
@@ -404,19 +434,17 @@ impl Shading for Comparison {
     }
 }
 
-/// The specular value (after the power) of shader `sh` at pixel `j` of a row.
-#[allow(clippy::too_many_arguments)]
+/// The specular value (after the power) of shader `sh` at pixel `j` of the row `at`.
 fn specular_value(
     sh: Shader,
     base: &[f32],
     s: &TriangleSetup<f32>,
     info: &RowInfo<f32>,
-    x0: f64,
-    y: f64,
+    at: RowAt,
     j: usize,
-    n: u32,
     pt: &PowerTable,
 ) -> f64 {
+    let RowAt { x0, y, n, .. } = at;
     match sh {
         // Behrens: the exact intensity at the span's edges, linear between.
         Shader::Span(Method::Gouraud) => {
@@ -443,48 +471,6 @@ fn specular_value(
         }
         _ => power(sh, f64::from(base[j]), pt),
     }
-}
-
-/// The levels of one row for every shader: diffuse, then specular per shininess.
-#[allow(clippy::too_many_arguments)]
-fn row_levels(
-    out32: &[Vec<f32>],
-    out64: &[Vec<f64>],
-    spec32: &[Vec<f32>],
-    spec64: &[Vec<f64>],
-    s32: &TriangleSetup<f32>,
-    _d: usize,
-    h32: &RowInfo<f32>,
-    x0: f64,
-    y: f64,
-    len: usize,
-    powers: &[PowerTable],
-) -> Vec<RowLevels> {
-    let n = (len - 1) as u32;
-    COLUMNS
-        .iter()
-        .enumerate()
-        .map(|(c, &sh)| {
-            (0..len)
-                .map(|j| {
-                    let mut l = [0u8; 4];
-                    if c == 0 {
-                        l[0] = level(&out64[0][j]);
-                        for (k, pt) in powers.iter().enumerate() {
-                            l[k + 1] = level(&power(Shader::PhongPixel, spec64[0][j], pt));
-                        }
-                    } else {
-                        l[0] = level(&out32[c][j]);
-                        for (k, pt) in powers.iter().enumerate() {
-                            let v = specular_value(sh, &spec32[c], s32, h32, x0, y, j, n, pt);
-                            l[k + 1] = level(&v);
-                        }
-                    }
-                    l
-                })
-                .collect()
-        })
-        .collect()
 }
 
 /// The comparison over one torus.

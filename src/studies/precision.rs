@@ -11,7 +11,7 @@
 //!   rounded to the precision ([`Span::cast`]), the steps in the precision.
 
 use super::compare::{
-    runs_in, shade_row, triangle_inputs, RowKernels, Shader, TriangleSetup, COLUMNS,
+    runs_in, shade_row, triangle_inputs, RowAt, RowKernels, Shader, TriangleSetup, COLUMNS,
 };
 use super::render::{Deviation, Scene};
 use crate::lowp::{f16, I16F16, I8F8};
@@ -153,7 +153,7 @@ pub fn frame<T: RowKernels>(mesh: &Mesh, scene: &Scene, f: u32) -> PrecisionStat
             let n = (row.x_last - row.x_first) as u32;
             let x0 = f64::from(row.x_first) + 0.5 - xc;
             let y = f64::from(row.y) + 0.5 - yc;
-            if shade_row(&s64, 0, x0, y, n, &table64, &in64, &mut out64).is_none() {
+            if shade_row(&s64, RowAt { d: 0, x0, y, n }, &table64, &in64, &mut out64).is_none() {
                 return;
             }
             st.rows += 1;
@@ -161,7 +161,7 @@ pub fn frame<T: RowKernels>(mesh: &Mesh, scene: &Scene, f: u32) -> PrecisionStat
             // All shaders at once; if that fails, each alone, to count per shader.
             let all_ok = st_t
                 .as_ref()
-                .and_then(|s| shade_row(s, 0, x0, y, n, &table_t, &here, &mut out_t))
+                .and_then(|s| shade_row(s, RowAt { d: 0, x0, y, n }, &table_t, &here, &mut out_t))
                 .is_some();
             for &sh in &here {
                 let c = super::compare::index(sh);
@@ -170,7 +170,9 @@ pub fn frame<T: RowKernels>(mesh: &Mesh, scene: &Scene, f: u32) -> PrecisionStat
                 } else {
                     let ok = st_t
                         .as_ref()
-                        .and_then(|s| shade_row(s, 0, x0, y, n, &table_t, &[sh], &mut one))
+                        .and_then(|s| {
+                            shade_row(s, RowAt { d: 0, x0, y, n }, &table_t, &[sh], &mut one)
+                        })
                         .is_some();
                     if !ok {
                         st.failed_rows[c] += 1;

@@ -227,19 +227,29 @@ pub(crate) struct RowInfo<T> {
     pub(super) edges: (T, T),
 }
 
-/// Shades one row of `n + 1` pixels starting at centroid-relative `(x0, y)` for
-/// direction `d`, for every shader in `which`, into `out[shader index]`.
-#[allow(clippy::too_many_arguments)]
+/// Where a row is: `n + 1` pixels starting at centroid-relative `(x0, y)`, shaded for
+/// direction `d` of the triangle's set-up (0: the light, 1: the half vector).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct RowAt {
+    /// The direction's index.
+    pub d: usize,
+    /// The first pixel's centre, relative to the centroid.
+    pub x0: f64,
+    /// The row's centre, relative to the centroid.
+    pub y: f64,
+    /// Steps: the row has `n + 1` pixels.
+    pub n: u32,
+}
+
+/// Shades the row `at` for every shader in `which`, into `out[shader index]`.
 pub(crate) fn shade_row<T: RowKernels>(
     s: &TriangleSetup<T>,
-    d: usize,
-    x0: f64,
-    y: f64,
-    n: u32,
+    at: RowAt,
     prep: &Prepared<T>,
     which: &[Shader],
     out: &mut [Vec<T>],
 ) -> Option<RowInfo<T>> {
+    let RowAt { d, x0, y, n } = at;
     let dir = &s.dirs[d];
     let (tx0, ty) = (to_t::<T>(x0), to_t::<T>(y));
     let txn = to_t::<T>(x0 + f64::from(n));

@@ -272,7 +272,12 @@ fn passes(
     specular: bool,
 ) -> Vec<String> {
     let results = parse_results(text, "own", file, specular).unwrap();
-    let criteria = Criteria::new(method, Tolerance::Default { format }).specular(specular);
+    let reference = Tolerance::Profile {
+        profile: phong_approx::tolerance::profile::Profile::Reference,
+        format,
+        form: phong_approx::tolerance::profile::Form::Any,
+    };
+    let criteria = Criteria::new(method, reference).specular(specular);
     check(file, &results, &criteria)
         .unwrap()
         .into_iter()

@@ -225,13 +225,10 @@ fn verdict(m: &Mutant, file: &VectorFile, profile: Profile) -> (usize, usize, bo
         .map(|c| (c.id.clone(), (m.run)(c)))
         .collect();
     let format = phong_approx::Format::Binary32;
-    let tol = match profile {
-        Profile::Reference => Tolerance::Default { format },
-        p => Tolerance::Profile {
-            profile: p,
-            format,
-            form: phong_approx::tolerance::profile::Form::Any,
-        },
+    let tol = Tolerance::Profile {
+        profile,
+        format,
+        form: phong_approx::tolerance::profile::Form::Any,
     };
     let reports = check(file, &results, &Criteria::new(m.method, tol)).unwrap();
     let failed = reports.iter().filter(|r| !r.pass).count();

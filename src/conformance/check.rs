@@ -189,15 +189,6 @@ pub fn check_in(
             cases: vectors.cases.len(),
         });
     }
-    // The reference profile is the crate's own bounds.
-    let tol = match tol {
-        Tolerance::Profile {
-            profile: crate::tolerance::profile::Profile::Reference,
-            format,
-            ..
-        } => Tolerance::Default { format },
-        t => t,
-    };
     let mut reports = Vec::new();
     for (k, (c, shape)) in vectors.cases.iter().zip(shapes).enumerate() {
         let exp: &Expected = if specular {
@@ -255,11 +246,15 @@ fn case_bound(j: &Judging, method: Method, specular: bool) -> Option<f64> {
     // span could not be built, the vector file's, which is to nearest, a relative
     // 2^-40 lower (below the span's: `integrity` holds it within 10^-12 of it).
     let q_min = shape.map_or(c.q_min * (1.0 - 2f64.powi(-40)), |s| s.q_min);
-    // The reference profile is `Default` here (`check_in`).
     match j.tol {
-        // Specular cases shade N·H: the span's edge values are N·L's, so the bound
-        // takes n and q_min only (q does not depend on the light).
-        Tolerance::Default { format } => match shape.filter(|_| !specular) {
+        // The reference profile: the crate's own bounds. Specular cases shade N·H:
+        // the span's edge values are N·L's, so the bound takes n and q_min only (q
+        // does not depend on the light).
+        Tolerance::Profile {
+            profile: crate::tolerance::profile::Profile::Reference,
+            format,
+            ..
+        } => match shape.filter(|_| !specular) {
             Some(shape) => crate::tolerance::span_bound(method, shape, format.u()),
             None => crate::tolerance::bound(method, c.n, q_min, format.u()),
         },
@@ -421,13 +416,12 @@ fn case_report(
         } if specular => None,
         // No bound (n too long for the precision, or q may round to zero): the case
         // cannot pass on the profile's tolerance.
-        Tolerance::Profile { format, .. } | Tolerance::Default { format } => {
+        Tolerance::Profile { format, .. } => {
             case_bound(j, method, specular).map(|b| raise(b, format))
         }
         _ => None,
     };
-    let unbounded = matches!(tol, Tolerance::Default { .. } | Tolerance::Profile { .. })
-        && allowed_abs.is_none();
+    let unbounded = matches!(tol, Tolerance::Profile { .. }) && allowed_abs.is_none();
     let (mut max_levels, mut sum_levels, mut max_abs, mut max_ulps) = (0u32, 0u64, 0f64, 0f64);
     let (mut worst, mut worst_excess, mut pass) = (0usize, f64::NEG_INFINITY, true);
     let mut ratio = 0f64;
@@ -502,6 +496,11 @@ fn case_report(
         ratio = 0.0;
     }
     let why = match tol {
+        // The reference profile's bounds are the crate's own, derived.
+        Tolerance::Profile {
+            profile: Profile::Reference,
+            ..
+        } if unbounded => Some(Unbounded::NoDerivedBound),
         Tolerance::Profile {
             profile,
             format,

@@ -16,17 +16,12 @@ pub enum Tolerance {
     /// absolute, on values of that magnitude; the ulp of a value near zero would make
     /// a tiny absolute error look like tens of thousands of ulps.
     Ulps(f64),
-    /// The crate's documented float bound for the method, case and precision
-    /// (`src/tolerance.rs`) in the implementation's format. The `reference` profile.
-    Default {
-        /// The implementation's float format.
-        format: crate::Format,
-    },
-    /// The bound for every implementation of an arithmetic profile — proved or derived,
-    /// as [`crate::tolerance::profile::status`] labels it per method and format
-    /// ([`crate::tolerance::profile`], `docs/float.md` §18); `Reference` is
-    /// [`Tolerance::Default`]. A case with no proved bound for the profile fails,
-    /// naming why.
+    /// The bound for every implementation of an arithmetic profile, as
+    /// [`crate::tolerance::profile::status`] labels it per method and format
+    /// ([`crate::tolerance::profile`], `docs/float.md` §18); under
+    /// [`Profile::Reference`](crate::tolerance::profile::Profile::Reference), the
+    /// crate's documented float bound for its own evaluation (`src/tolerance.rs`). A
+    /// case with no bound for the profile fails, naming why.
     Profile {
         /// The profile.
         profile: crate::tolerance::profile::Profile,
@@ -47,7 +42,6 @@ impl fmt::Display for Tolerance {
             Tolerance::Levels(n) => write!(f, "levels={n}"),
             Tolerance::Abs(x) => write!(f, "abs={x}"),
             Tolerance::Ulps(x) => write!(f, "ulps={x}"),
-            Tolerance::Default { .. } => f.write_str("the reference profile's bound"),
             Tolerance::Profile {
                 profile,
                 form: crate::tolerance::profile::Form::Any,
@@ -95,7 +89,7 @@ impl Tolerance {
                 profile: crate::tolerance::profile::Profile::Fixed { .. },
                 ..
             } => None,
-            Tolerance::Default { format } | Tolerance::Profile { format, .. } => Some(format),
+            Tolerance::Profile { format, .. } => Some(format),
             _ => None,
         }
     }

@@ -503,15 +503,17 @@ mod fixed {
                 assert_eq!(verdict(set, m, 40, run), 0, "{m} on {set}");
             }
         }
-        // ε/(n+1): t_0 = di_a − ε/(n + 1), rounded as the unit's host would.
+        // `x` rounded to the grid of `f`, to nearest, as the unit's host rounds.
+        fn grid(x: Q, f: &FixedSpan) -> i64 {
+            let raw = (x * Q::from_integer(num_bigint::BigInt::from(1) << f.frac_bits)).round();
+            i64::try_from(raw.to_integer()).unwrap()
+        }
+        // ε/(n+1): t_0 = di_a − ε/(n + 1).
         let eps_n1: Run = |f, s| {
             let n1 = Q::from_integer((s.n + 1).into());
             let t0 = s.di_a.clone() - s.eps.clone() / n1;
-            let raw = (t0 * Q::from_integer(num_bigint::BigInt::from(1) << f.frac_bits))
-                .round()
-                .to_integer();
             let g = FixedSpan {
-                t0: i64::try_from(raw).unwrap(),
+                t0: grid(t0, f),
                 ..*f
             };
             g.corrected_euler()
@@ -535,11 +537,8 @@ mod fixed {
         };
         // Duff's first difference D for C + D (eq. 7).
         let first_difference: Run = |f, s| {
-            let raw = (s.d.clone() * Q::from_integer(num_bigint::BigInt::from(1) << f.frac_bits))
-                .round()
-                .to_integer();
             let g = FixedSpan {
-                dq0: i64::try_from(raw).unwrap(),
+                dq0: grid(s.d.clone(), f),
                 ..*f
             };
             g.duff()

@@ -71,15 +71,17 @@ fn fixed_format(s: &str) -> Result<(u32, u32), BadValue> {
 }
 
 /// The row of one case: `p0, dp, t0, ds, q0, dq0, d2q` for `method` (columns the method
-/// does not use are 0; docs/conformance.md, "Hardware span units").
-pub fn row(f: &FixedSpan, method: Method) -> [i64; 7] {
-    match method {
+/// does not use are 0; docs/conformance.md, "Hardware span units"), or `None` for a
+/// method no unit implements.
+pub fn row(f: &FixedSpan, method: Method) -> Option<[i64; 7]> {
+    Some(match method {
         Method::Gouraud => [f.p_a, f.dp, 0, 0, 0, 0, 0],
         Method::Euler => [f.p_a, 0, f.di_a, f.ds, 0, 0, 0],
         Method::CorrectedEuler => [f.p_a, 0, f.t0, f.ds, 0, 0, 0],
         Method::Adaptive => [f.p_a, f.dp, f.t0, f.ds, 0, 0, 0],
-        _ => [f.b, f.a, 0, 0, f.q0, f.dq0, f.d2q],
-    }
+        Method::Duff => [f.b, f.a, 0, 0, f.q0, f.dq0, f.d2q],
+        _ => return None,
+    })
 }
 
 /// The column names of [`row`].
@@ -101,7 +103,9 @@ pub fn run(a: &SetupArgs) -> Result<(), CliError> {
     for c in &loaded.file.cases {
         let span = case_span(c).map_err(|e| CliError::arg("--vectors", e))?;
         let fs = FixedSpan::new(&span, f).map_err(|e| CliError::arg("--fixed", e))?;
-        let values = row(&fs, a.method);
+        let values = row(&fs, a.method).ok_or_else(|| {
+            CliError::arg("--method", format!("no hardware set-up for {}", a.method))
+        })?;
         for (v, name) in values.iter().zip(COLUMNS) {
             if i128::from(*v).abs() >= limit {
                 return Err(CliError::arg(

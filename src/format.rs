@@ -81,6 +81,31 @@ impl Format {
         }
     }
 
+    /// The largest finite number (`65504`, `(2 − 2^-23)·2^127`, `f64::MAX`).
+    pub fn max(self) -> f64 {
+        match self {
+            Format::Binary16 => 65504.0,
+            Format::Binary32 => f64::from(f32::MAX),
+            Format::Binary64 => f64::MAX,
+        }
+    }
+
+    /// Whether the format holds `x` exactly (finite, on the format's grid: an integer
+    /// multiple of the ulp at `x`, within range).
+    pub fn holds(self, x: f64) -> bool {
+        if !x.is_finite() || x.abs() > self.max() {
+            return false;
+        }
+        if x == 0.0 {
+            return true;
+        }
+        match self {
+            Format::Binary32 => f64::from(x as f32) == x,
+            Format::Binary64 => true,
+            Format::Binary16 => (x / self.ulp(x)).fract() == 0.0,
+        }
+    }
+
     /// The name results and reports use: `binary16`, `f32`, `f64`.
     pub const fn name(self) -> &'static str {
         match self {

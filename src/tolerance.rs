@@ -25,6 +25,8 @@
 //! The related span methods (spherical, binary, Bishop–Weimer): [`related`]
 //! (`docs/float.md` §16, tested in `tests/float_bounds_related.rs`).
 
+pub mod graph;
+pub mod graphs;
 pub mod profile;
 pub mod related;
 pub mod rows;

@@ -27,6 +27,8 @@
 mod common;
 /// Duff's and symmetric Phong's counts against `proofs/DuffCount.v` (`duff_count::*`).
 mod duff_count;
+/// The operation graphs' per-case bounds against every implementation here (`graph::*`).
+mod graph;
 /// Phong's value step against `proofs/PhongValue.v` (`phong_value::phong_value_*`).
 mod phong_value;
 /// The profiles' tables against the theorems' statements (`profile_tables::test`).

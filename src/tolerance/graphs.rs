@@ -1,0 +1,426 @@
+//! Each method's operation graphs (`docs/float.md` §19): the paper's set-up (eqs. 2–3,
+//! 10–11, 14–17, in [`crate::span::Span`]'s order) and every form an implementation
+//! of the class may compute, written once as [`Graph`]s whose per-pixel nodes
+//! [`evaluate`](super::graph::evaluate) bounds for the case's own inputs.
+//!
+//! A method's bound on a case is, at each pixel, the largest over its forms' graphs
+//! (an implementation computes one of them); each graph's bound is `graph_sound`'s
+//! (`proofs/Graph.v`). Inputs: `N_a` (0–2), `N_b` (3–5), `L` (6–8).
+
+use super::graph::{evaluate, Bounds, Graph, GraphError, Id, Model};
+use super::profile::Form;
+use crate::Method;
+
+/// One form of a method: its graph and the node of each pixel's value.
+#[derive(Clone, Debug)]
+pub struct MethodGraph {
+    /// The form's name (`recurrence`, `closed`, `horner/div`, …).
+    pub name: String,
+    /// The graph.
+    pub graph: Graph,
+    /// The node whose value is pixel `i`'s, for `i = 0..=n`.
+    pub pixels: Vec<Id>,
+}
+
+/// The set-up's nodes, in the paper's names.
+struct Setup {
+    n: Id,
+    na: [Id; 3],
+    nb: [Id; 3],
+    l: [Id; 3],
+    k: [Id; 3],
+    a: Id,
+    b: Id,
+    c: Id,
+    d: Id,
+    e: Id,
+    p_a: Id,
+    di_a: Id,
+    ds: Id,
+    t0: Id,
+    dp: Id,
+}
+
+/// The paper's set-up (`Span::new`'s formulas and order): every division by `n` either
+/// way, the halvings of `p_a` and `p_b` in the class `Half`, `p_n`'s three terms in any
+/// order with `n(n−1)/2` exact.
+fn setup(g: &mut Graph, n: u32) -> Setup {
+    let na = [0, 1, 2].map(|c| g.input(c));
+    let nb = [3, 4, 5].map(|c| g.input(c));
+    let l = [6, 7, 8].map(|c| g.input(c));
+    let nn = g.cst(f64::from(n));
+    let k = [0, 1, 2].map(|c| {
+        let diff = g.sub(nb[c], na[c]);
+        g.div_either(diff, nn)
+    });
+    let a = g.dot(k, l);
+    let b = g.dot(na, l);
+    let c = g.dot(k, k);
+    let kna = g.dot(k, na);
+    let two = g.cst(2.0);
+    let d = g.mul(two, kna);
+    let e = g.dot(na, na);
+    let p_a = b;
+    let p_b = g.dot(nb, l);
+    let dq_a = d;
+    let two_n = g.cst(2.0 * f64::from(n));
+    let two_n_c = g.mul(two_n, c);
+    let dq_b = g.add(two_n_c, d);
+    let half_pa = g.half(p_a);
+    let t_a = g.mul(half_pa, dq_a);
+    let di_a = g.sub(a, t_a);
+    let half_pb = g.half(p_b);
+    let t_b = g.mul(half_pb, dq_b);
+    let di_b = g.sub(a, t_b);
+    let ddi = g.sub(di_b, di_a);
+    let ds = g.div_either(ddi, nn);
+    let tri = g.cst((f64::from(n) * (f64::from(n) - 1.0) / 2.0).floor());
+    let n_dia = g.mul(nn, di_a);
+    let tri_ds = g.mul(tri, ds);
+    let p_n = g.sum(&[p_a, n_dia, tri_ds]);
+    let eps = g.sub(p_n, p_b);
+    let d_eps = g.div_either(eps, nn);
+    let t0 = g.sub(di_a, d_eps);
+    let dpb = g.sub(p_b, p_a);
+    let dp = g.div_either(dpb, nn);
+    Setup {
+        n: nn,
+        na,
+        nb,
+        l,
+        k,
+        a,
+        b,
+        c,
+        d,
+        e,
+        p_a,
+        di_a,
+        ds,
+        t0,
+        dp,
+    }
+}
+
+/// A second-order recurrence `v += s; s += ds` from `(v0, s0)`: corrected Euler's
+/// (`t_0`) and Euler's (`di_a`) loops, and Gouraud's with `ds` absent.
+fn recurrence(g: &mut Graph, n: u32, v0: Id, s0: Id, ds: Option<Id>) -> Vec<Id> {
+    let (mut v, mut s) = (v0, s0);
+    let mut out = vec![v];
+    for _ in 0..n {
+        v = g.add(v, s);
+        if let Some(ds) = ds {
+            s = g.add(s, ds);
+        }
+        out.push(v);
+    }
+    out
+}
+
+/// How a closed form forms `(i − 1)/2 · ds`.
+#[derive(Clone, Copy)]
+enum Halving {
+    /// `(i − 1)·0.5` exact, then the product.
+    Exact,
+    /// `c = (i − 1)/2` by a division (either way), then `c·ds`.
+    Coefficient,
+    /// `(i − 1)·ds`, then halved (either way).
+    Product,
+}
+
+/// `p_a + i·(s0 + (i − 1)/2·ds)`: corrected Euler's (`s0 = t_0`) and Euler's
+/// (`s0 = di_a`) closed forms.
+fn closed(g: &mut Graph, n: u32, p_a: Id, s0: Id, ds: Id, how: Halving) -> Vec<Id> {
+    let mut out = vec![p_a];
+    for i in 1..=n {
+        let fi = f64::from(i);
+        let c_ds = match how {
+            Halving::Exact => {
+                let c = g.cst((fi - 1.0) / 2.0);
+                g.mul(c, ds)
+            }
+            Halving::Coefficient => {
+                let m = g.cst(fi - 1.0);
+                let c = g.half(m);
+                g.mul(c, ds)
+            }
+            Halving::Product => {
+                let m = g.cst(fi - 1.0);
+                let m_ds = g.mul(m, ds);
+                g.half(m_ds)
+            }
+        };
+        let slope = g.add(s0, c_ds);
+        let ic = g.cst(fi);
+        let step = g.mul(ic, slope);
+        out.push(g.add(p_a, step));
+    }
+    out
+}
+
+/// `√x` as the model computes a square root: one operation, or `1/inverseSqrt(x)`.
+fn root(g: &mut Graph, model: &Model, x: Id) -> Id {
+    if model.sqrt_is_recip_rsqrt {
+        let one = g.cst(1.0);
+        let r = g.rsqrt(x);
+        g.div(one, r)
+    } else {
+        g.sqrt(x)
+    }
+}
+
+/// `1/√x`: `1/√x` by a division, or (where the model has it) `inverseSqrt(x)`.
+fn recip_roots(g: &mut Graph, model: &Model, x: Id) -> Vec<Id> {
+    let one = g.cst(1.0);
+    let s = root(g, model, x);
+    let mut ways = vec![g.div(one, s)];
+    if model.sqrt_is_recip_rsqrt {
+        ways.push(g.rsqrt(x));
+    }
+    ways
+}
+
+/// The ways of `p/√q`: `p/√q`, `p·(1/√q)` (and `p·inverseSqrt(q)` where the model has
+/// it), each as a node of `g`.
+fn values(g: &mut Graph, model: &Model, p: Id, q: Id) -> Vec<Id> {
+    let s = root(g, model, q);
+    let mut ways = vec![g.div(p, s)];
+    for r in recip_roots(g, model, q) {
+        ways.push(g.mul(p, r));
+    }
+    ways
+}
+
+/// The forms of `method` in `form` on a span of `n` steps, each a graph and its
+/// pixels' nodes; `None` where the method has no operation graph here (angular
+/// interpolation, the related methods, the adaptive scheme, which is judged by its
+/// picks) or the declared form is not one of its graphs.
+pub fn method_graphs(
+    method: Method,
+    form: Form,
+    n: u32,
+    model: &Model,
+) -> Option<Vec<MethodGraph>> {
+    let mut out = Vec::new();
+    let mut add = |name: &str, build: &dyn Fn(&mut Graph, &Setup) -> Vec<Id>| {
+        let mut g = Graph::new();
+        let s = setup(&mut g, n);
+        let pixels = build(&mut g, &s);
+        out.push(MethodGraph {
+            name: name.to_string(),
+            graph: g,
+            pixels,
+        });
+    };
+    let recur = !matches!(form, Form::Closed);
+    let closed_ok = !matches!(form, Form::Recurrence);
+    let halvings = [
+        ("closed", Halving::Exact),
+        ("closed/half-coefficient", Halving::Coefficient),
+        ("closed/half-product", Halving::Product),
+    ];
+    match method {
+        Method::Gouraud if form == Form::Any => {
+            add("recurrence", &|g, s| recurrence(g, n, s.p_a, s.dp, None));
+        }
+        Method::CorrectedEuler | Method::Euler => {
+            let euler = method == Method::Euler;
+            if recur {
+                add("recurrence", &|g, s| {
+                    let s0 = if euler { s.di_a } else { s.t0 };
+                    recurrence(g, n, s.p_a, s0, Some(s.ds))
+                });
+            }
+            if closed_ok {
+                for (name, how) in halvings {
+                    add(name, &|g, s| {
+                        let s0 = if euler { s.di_a } else { s.t0 };
+                        closed(g, n, s.p_a, s0, s.ds, how)
+                    });
+                }
+            }
+        }
+        Method::Duff | Method::SymmetricPhong if form == Form::Any => {
+            let symmetric = method == Method::SymmetricPhong;
+            for way in 0..3 {
+                add(&format!("forward-differences/{way}"), &|g, s| {
+                    duff(g, model, s, n, symmetric, way)
+                });
+            }
+        }
+        Method::Phong if form == Form::Any => {
+            for pq in ["horner", "pixel", "lerp"] {
+                for way in 0..4 {
+                    if way == 3 && pq == "horner" {
+                        continue;
+                    }
+                    add(&format!("{pq}/{way}"), &|g, s| {
+                        phong(g, model, s, n, pq, way)
+                    });
+                }
+            }
+        }
+        _ => return None,
+    }
+    // A way the model does not have (`inverseSqrt` under `ieee`) is an empty graph.
+    out.retain(|m| !m.pixels.is_empty());
+    Some(out)
+}
+
+/// Duff's forward differences (eqs. 5–7): `p += A`, `q += dq`, `dq += 2C` from
+/// `p_0 = B`, `q_0 = E`, `dq_0 = C + D`; the value by way `way` of [`values`]. Symmetric
+/// Phong (§4) takes the roots of the left half for the right: `√q_i = √q_{n−i}`.
+fn duff(g: &mut Graph, model: &Model, s: &Setup, n: u32, symmetric: bool, way: usize) -> Vec<Id> {
+    let dq0 = g.add(s.c, s.d);
+    let d2q = g.add(s.c, s.c);
+    let (mut p, mut q, mut dq) = (s.b, s.e, dq0);
+    let last = if symmetric { n / 2 } else { n };
+    let mut ps = Vec::new();
+    let mut qs = Vec::new();
+    for i in 0..=n {
+        ps.push(p);
+        if i <= last {
+            qs.push(q);
+        }
+        p = g.add(p, s.a);
+        if i < last {
+            q = g.add(q, dq);
+            dq = g.add(dq, d2q);
+        }
+    }
+    let one = g.cst(1.0);
+    // Per pixel the value's way; the roots (or reciprocal roots) of the mirrored half
+    // are the same nodes.
+    let mut roots = Vec::new();
+    for &q in &qs {
+        let r = match way {
+            0 => Some(root(g, model, q)),
+            1 => {
+                let s = root(g, model, q);
+                Some(g.div(one, s))
+            }
+            _ if model.sqrt_is_recip_rsqrt => Some(g.rsqrt(q)),
+            _ => None,
+        };
+        match r {
+            Some(r) => roots.push(r),
+            None => return Vec::new(),
+        }
+    }
+    let nu = n as usize;
+    (0..=nu)
+        .map(|i| {
+            let r = roots[if i < roots.len() { i } else { nu - i }];
+            if way == 0 {
+                g.div(ps[i], r)
+            } else {
+                g.mul(ps[i], r)
+            }
+        })
+        .collect()
+}
+
+/// Phong's forms (`docs/float.md` §18.4): `p` and `q` by Horner (`A·i + B`,
+/// `(C·i + D)·i + E`), by the per-pixel normal `N_a + i·k`, or by the lerp
+/// `(1 − t)·N_a + t·N_b` with `t = i/n` either way; then way `way`: `p/√q` (0),
+/// `p·(1/√q)` (1), `p·inverseSqrt(q)` (2, where the model has it), or, for a normal,
+/// normalize then dot: `(N·(1/√q))·L` (3).
+fn phong(g: &mut Graph, model: &Model, s: &Setup, n: u32, pq: &str, way: usize) -> Vec<Id> {
+    if way == 2 && !model.sqrt_is_recip_rsqrt {
+        return Vec::new();
+    }
+    let one = g.cst(1.0);
+    let mut out = Vec::new();
+    for i in 0..=n {
+        let ic = g.cst(f64::from(i));
+        let normal = match pq {
+            "pixel" => Some([0, 1, 2].map(|c| {
+                let ik = g.mul(ic, s.k[c]);
+                g.add(s.na[c], ik)
+            })),
+            "lerp" => {
+                let t = g.div_either(ic, s.n);
+                let omt = g.sub(one, t);
+                Some([0, 1, 2].map(|c| {
+                    let a = g.mul(omt, s.na[c]);
+                    let b = g.mul(t, s.nb[c]);
+                    g.add(a, b)
+                }))
+            }
+            _ => None,
+        };
+        let (p, q) = match normal {
+            Some(nv) => (g.dot(nv, s.l), g.dot(nv, nv)),
+            None => {
+                let ai = g.mul(s.a, ic);
+                let p = g.add(ai, s.b);
+                let ci = g.mul(s.c, ic);
+                let cid = g.add(ci, s.d);
+                let cidi = g.mul(cid, ic);
+                (p, g.add(cidi, s.e))
+            }
+        };
+        let v = match (way, normal) {
+            (3, Some(nv)) => {
+                let sq = root(g, model, q);
+                let r = g.div(one, sq);
+                let w = nv.map(|c| g.mul(c, r));
+                g.dot(w, s.l)
+            }
+            (3, None) => return Vec::new(),
+            (w, _) => values(g, model, p, q)[w],
+        };
+        out.push(v);
+    }
+    out
+}
+
+/// The bound of `method` in `form` at every pixel of the case with exact inputs in the
+/// intervals `inputs` (`N_a`, `N_b`, `L`), `n` steps: the largest over its forms'
+/// graphs, pixel by pixel. `Ok(None)` where the method has no graph here.
+///
+/// # Errors
+/// The first form's [`GraphError`] (the case then has no bound from the graphs).
+pub fn pixel_bounds(
+    method: Method,
+    form: Form,
+    n: u32,
+    inputs: &[(f64, f64); 9],
+    model: &Model,
+) -> Result<Option<Vec<f64>>, GraphError> {
+    let Some(forms) = method_graphs(method, form, n, model) else {
+        return Ok(None);
+    };
+    let mut worst = vec![0f64; n as usize + 1];
+    for f in &forms {
+        let Bounds { err, .. } = evaluate(&f.graph, inputs, model)?;
+        for (w, &p) in worst.iter_mut().zip(&f.pixels) {
+            *w = w.max(err[p]);
+        }
+    }
+    Ok(Some(worst))
+}
+
+/// The graph model of an acceptance profile in `format` (`docs/float.md` §18.1, the
+/// constants of [`super::profile::arith`]); under `shader` a square root is
+/// `1/inverseSqrt` (2 ulps, `κ = 4`, then a 2.5-ulp division) and `inverseSqrt` is an
+/// operation an implementation may call. `None` where the profile has no model
+/// (`reference`, fixed point, binary16).
+pub fn model(profile: super::profile::Profile, format: crate::Format) -> Option<Model> {
+    let a = super::profile::arith(profile, format)?;
+    let shader = profile == super::profile::Profile::Shader;
+    Some(Model {
+        u: a.u,
+        eta: a.eta,
+        input: a.input,
+        add: a.add,
+        mul: a.mul,
+        div: a.div,
+        half: if shader { a.div } else { a.half },
+        sqrt: a.sqrt,
+        rsqrt: if shader { 4.0 } else { a.sqrt },
+        sqrt_is_recip_rsqrt: shader,
+        max: format.max(),
+        format,
+    })
+}

@@ -1,0 +1,303 @@
+//! The operation graphs' per-case bounds (`phong_approx::tolerance::graph`,
+//! `proofs/Graph.v`): `graph_sound` holds for every implementation of this binary —
+//! the native `ieee` variants in `f32` and `f64`, the software GPUs under `shader` —
+//! at every pixel of the profile spans and the published sets, against exact values.
+
+use super::*;
+use phong_approx::tolerance::graph::Model;
+use phong_approx::tolerance::graphs::{model, pixel_bounds};
+
+/// A software GPU's run of a method on a span.
+type GpuRun = dyn Fn(Gpu, &Span<Q>) -> Vec<Q>;
+
+/// The exact input `x` as an `f64` interval: `(x, x)` when `x` is an `f64`, else the
+/// two neighbours of its nearest `f64`.
+fn interval(x: &Q) -> (f64, f64) {
+    let f = x.to_f64();
+    if Q::from_float(f).as_ref() == Some(x) {
+        (f, f)
+    } else {
+        (f.next_down(), f.next_up())
+    }
+}
+
+/// `N_a`, `N_b`, `L` of `s` as the graphs' nine input intervals.
+fn inputs(s: &Span<Q>) -> [(f64, f64); 9] {
+    let mut out = [(0.0, 0.0); 9];
+    for (k, v) in [&s.na, &s.nb, &s.l].into_iter().enumerate() {
+        for (c, x) in v.components().iter().enumerate() {
+            out[3 * k + c] = interval(x);
+        }
+    }
+    out
+}
+
+/// The graphs' bound at every pixel of `s` for `method` (any form).
+fn graph_bound(method: Method, profile: Profile, format: Format, s: &Span<Q>) -> Option<Vec<f64>> {
+    let m: Model = model(profile, format)?;
+    pixel_bounds(method, Form::Any, s.n, &inputs(s), &m)
+        .ok()
+        .flatten()
+}
+
+/// The worst `|got − exact| / bound` over the pixels; panics where a pixel is over.
+fn over(what: &str, got: &[Q], want: &[Q], bound: &[f64]) -> f64 {
+    let mut worst = 0f64;
+    for (i, ((g, w), b)) in got.iter().zip(want).zip(bound).enumerate() {
+        let e = (g.clone() - w.clone()).abs().to_f64();
+        assert!(
+            e <= *b,
+            "{what}: pixel {i}: error {e:e} > graph bound {b:e}"
+        );
+        worst = worst.max(e / b);
+    }
+    worst
+}
+
+/// The exact values of `method` on `s`: Phong's (and Duff's, symmetric Phong's) to
+/// 2^-256, the others exactly.
+fn exact(method: Method, c: Option<&Case>, s: &Span<Q>) -> Vec<Q> {
+    match (method, c) {
+        (Method::Phong | Method::Duff | Method::SymmetricPhong, _) => phong_exact(s),
+        (m, Some(c)) => exact_values(m, c, s).to_vec(),
+        (m, None) => m.values(s).unwrap(),
+    }
+}
+
+/// `graph_sound` (`proofs/Graph.v`): every native `ieee` implementation of this binary
+/// (Gouraud, corrected Euler and Euler as recurrences and closed forms, Duff, Phong's
+/// three forms; three orders of the dot products, fused or not, `/n` either way), in
+/// `f32` and `f64`, is within the graphs' bound at every pixel of the profile spans and
+/// of every published case; and the software GPUs under `shader`.
+#[test]
+fn graph_sound() {
+    let mut cases: Vec<(Option<Case>, Span<Q>)> =
+        spans().into_iter().map(|(c, s)| (Some(c), s)).collect();
+    for set in phong_approx::testkit::SETS {
+        cases.extend(published_spans(set).into_values().map(|s| (None, s)));
+    }
+    let mut worst: std::collections::BTreeMap<String, f64> = Default::default();
+    let mut runs = 0;
+    for (c, s) in &cases {
+        if s.n > 1024 {
+            continue;
+        }
+        macro_rules! native_runs {
+            ($t:ty, $f:ident) => {
+                for (m, name, imp, _) in implementations::<$t>() {
+                    let Some(b) = graph_bound(m, Profile::Ieee, Format::$f, s) else {
+                        continue;
+                    };
+                    let want = exact(m, c.as_ref(), s);
+                    for v in VARIANTS {
+                        let got = imp(v, s);
+                        let what = format!("{m} {name} {v:?} {}: {s}", stringify!($t));
+                        let r = over(&what, &got, &want, &b);
+                        let key = format!("ieee {} {m}", stringify!($t));
+                        let w = worst.entry(key).or_default();
+                        *w = w.max(r);
+                        runs += 1;
+                    }
+                }
+            };
+        }
+        native_runs!(f32, Binary32);
+        native_runs!(f64, Binary64);
+        for &g in &GPUS[..tiered(1, 4)] {
+            let gpu_imps: [(Method, &GpuRun); 5] = [
+                (Method::Gouraud, &|g, s| {
+                    gpu_recurrence(Method::Gouraud, g, Division::Reciprocal, s)
+                }),
+                (Method::CorrectedEuler, &|g, s| {
+                    gpu_recurrence(Method::CorrectedEuler, g, Division::Once, s)
+                }),
+                (Method::Euler, &gpu_euler),
+                (Method::Duff, &|g, s| {
+                    gpu_duff_or_phong(g, s, false, Division::Once)
+                }),
+                (Method::Phong, &|g, s| {
+                    gpu_duff_or_phong(g, s, true, Division::Once)
+                }),
+            ];
+            for (m, imp) in gpu_imps {
+                let Some(b) = graph_bound(m, Profile::Shader, Format::Binary32, s) else {
+                    continue;
+                };
+                let want = exact(m, c.as_ref(), s);
+                let got = imp(g, s);
+                let r = over(&format!("{m} {g:?}: {s}"), &got, &want, &b);
+                let w = worst.entry(format!("shader {m}")).or_default();
+                *w = w.max(r);
+                runs += 1;
+            }
+        }
+    }
+    for (k, w) in &worst {
+        println!("{k}: worst error {w:.3} of the graph bound");
+    }
+    assert!(runs > 1000, "{runs}");
+}
+
+/// How the graphs' bounds compare with the profiles' formulas on the published sets
+/// (printed; asserts only that the graphs' are never above the formulas' by more than
+/// the 2^-20 of their rounding).
+#[test]
+fn graph_bounds_against_the_formulas() {
+    for set in phong_approx::testkit::SETS {
+        let spans = published_spans(set);
+        for m in [
+            Method::Gouraud,
+            Method::CorrectedEuler,
+            Method::Euler,
+            Method::Duff,
+            Method::Phong,
+            Method::SymmetricPhong,
+        ] {
+            for (profile, format) in [
+                (Profile::Ieee, Format::Binary32),
+                (Profile::Shader, Format::Binary32),
+            ] {
+                let (mut lo, mut hi, mut none) = (f64::INFINITY, 0f64, 0);
+                for s in spans.values() {
+                    let old = profile_bound_of(m, profile, s, format);
+                    let new = graph_bound(m, profile, format, s)
+                        .map(|b| b.into_iter().fold(0f64, f64::max));
+                    match (old, new) {
+                        (Some(o), Some(n)) => {
+                            lo = lo.min(o / n);
+                            hi = hi.max(o / n);
+                        }
+                        _ => none += 1,
+                    }
+                }
+                println!(
+                    "{set} {m} {profile}: formula / graph {lo:.2}–{hi:.2}; {none} without both"
+                );
+            }
+        }
+    }
+}
+
+/// Every pixel node's interval holds the method's exact value: the graphs compute the
+/// method (the paper's set-up and loops), so `graph_sound`'s bound is on the right
+/// quantity. On the profile spans and every published case up to n = 1024.
+#[test]
+fn graph_exact_values_are_the_methods() {
+    use phong_approx::tolerance::graph::evaluate;
+    use phong_approx::tolerance::graphs::method_graphs;
+    let mut cases: Vec<(Option<Case>, Span<Q>)> =
+        spans().into_iter().map(|(c, s)| (Some(c), s)).collect();
+    for set in phong_approx::testkit::SETS {
+        cases.extend(published_spans(set).into_values().map(|s| (None, s)));
+    }
+    let mut checked = 0;
+    for (c, s) in cases.iter().filter(|(_, s)| s.n <= 1024) {
+        for profile in [Profile::Ieee, Profile::Shader] {
+            let m = model(profile, Format::Binary32).unwrap();
+            for method in [
+                Method::Gouraud,
+                Method::CorrectedEuler,
+                Method::Euler,
+                Method::Duff,
+                Method::Phong,
+                Method::SymmetricPhong,
+            ] {
+                let want = exact(method, c.as_ref(), s);
+                for f in method_graphs(method, Form::Any, s.n, &m).unwrap() {
+                    let Ok(b) = evaluate(&f.graph, &inputs(s), &m) else {
+                        continue;
+                    };
+                    for (i, &p) in f.pixels.iter().enumerate() {
+                        // Phong's exact values are to 2^-256; the intervals are wider.
+                        let (lo, hi) = (
+                            Q::from_float(b.lo[p]).unwrap(),
+                            Q::from_float(b.hi[p]).unwrap(),
+                        );
+                        assert!(
+                            lo <= want[i] && want[i] <= hi,
+                            "{method} {} pixel {i}: [{}, {}] misses {}: {s}",
+                            f.name,
+                            b.lo[p],
+                            b.hi[p],
+                            want[i].to_f64()
+                        );
+                        checked += 1;
+                    }
+                }
+            }
+        }
+    }
+    assert!(checked > 100_000, "{checked}");
+}
+
+/// Duff with a Quake-style reciprocal square root (`0x5f3759df`, two Newton steps,
+/// about 78u relative in binary32: outside `ieee` and `shader`) is over the graphs'
+/// bound at some pixel of some published case under both profiles, where the same
+/// kernel with `1/√q` is within it everywhere; with the profiles' formulas it passed
+/// every published set (docs/float.md §19).
+#[test]
+fn quake_rsqrt_duff_exceeds_the_graph_bound() {
+    fn quake(x: f32) -> f32 {
+        let mut y = f32::from_bits(0x5f37_59df_u32.wrapping_sub(x.to_bits() >> 1));
+        for _ in 0..2 {
+            y = y * (1.5 - 0.5 * x * y * y);
+        }
+        y
+    }
+    fn exact_rsqrt(x: f32) -> f32 {
+        1.0 / x.sqrt()
+    }
+    // Duff's forward differences in f32 (eqs. 5–7), value p·rsqrt(q).
+    fn duff32(s: &Span<Q>, rsqrt: fn(f32) -> f32) -> Vec<Q> {
+        let v = |x: &phong_approx::Vec3<Q>| {
+            [x.x.clone(), x.y.clone(), x.z.clone()].map(|c| f32::of(&c))
+        };
+        let (na, nb, l) = (v(&s.na), v(&s.nb), v(&s.l));
+        let dot = |a: [f32; 3], b: [f32; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+        let nf = s.n as f32;
+        let k = [0, 1, 2].map(|j| (nb[j] - na[j]) / nf);
+        let (a, c, d) = (dot(k, l), dot(k, k), 2.0 * dot(k, na));
+        let (mut p, mut q, mut dq, d2q) = (dot(na, l), dot(na, na), c + d, c + c);
+        (0..=s.n)
+            .map(|_| {
+                let out = (p * rsqrt(q)).q();
+                p += a;
+                q += dq;
+                dq += d2q;
+                out
+            })
+            .collect()
+    }
+    for profile in [Profile::Ieee, Profile::Shader] {
+        let mut caught = 0;
+        for set in phong_approx::testkit::SETS {
+            for s in published_spans(set).values() {
+                let Some(b) = graph_bound(Method::Duff, profile, Format::Binary32, s) else {
+                    continue;
+                };
+                let want = phong_exact(s);
+                let err = |got: Vec<Q>| {
+                    got.iter()
+                        .zip(&want)
+                        .zip(&b)
+                        .map(|((g, w), b)| (g.clone() - w.clone()).abs().to_f64() / b)
+                        .fold(0f64, f64::max)
+                };
+                assert!(
+                    err(duff32(s, exact_rsqrt)) <= 1.0,
+                    "{profile} {s}: 1/√q over the bound"
+                );
+                if err(duff32(s, quake)) > 1.0 {
+                    caught += 1;
+                }
+            }
+        }
+        println!(
+            "{profile}: the Quake rsqrt Duff is over the graph bound on {caught} published cases"
+        );
+        assert!(
+            caught > 0,
+            "{profile}: the Quake rsqrt Duff is within the graph bound on every published case"
+        );
+    }
+}

@@ -5,7 +5,7 @@
     on the standard library axioms of the real numbers. *)
 
 From PhongApprox Require Import Span Duff Euler Derivative Symmetry Adaptive Angular.
-From PhongApprox Require Import ClosedForms Angle FastSetup Related Float PhongValue.
+From PhongApprox Require Import ClosedForms Angle FastSetup Related Float Graph PhongValue.
 From PhongApprox Require Import PhongCountD PhongCount PhongNormalize Profiles.
 From PhongApprox Require Import AdaptiveDelta DuffCount Fixed.
 
@@ -188,6 +188,10 @@ Check float_corrected_euler_binary32.
 Print Assumptions float_corrected_euler_binary32.
 Check float_corrected_euler_binary64.
 Print Assumptions float_corrected_euler_binary64.
+
+(** Graph.v *)
+Check graph_sound.
+Print Assumptions graph_sound.
 
 (** PhongValue.v *)
 Check phong_value_real.

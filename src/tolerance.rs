@@ -241,6 +241,9 @@ pub struct Shape {
     /// `|N_b − N_a|`, rounded up (Phong's derived profile bound,
     /// [`profile::phong_bound`]).
     pub dn: f64,
+    /// `N_a`, `N_b`, `L` as intervals of `f64` (exact where the input is an `f64`):
+    /// the inputs of the operation graphs' bounds ([`graphs::pixel_bounds`]).
+    pub inputs: [(f64, f64); 9],
 }
 
 impl Shape {
@@ -259,6 +262,7 @@ impl Shape {
             sin2.to_f64().max(f64::MIN_POSITIVE)
         };
         Shape {
+            inputs: graph::inputs_of(&span.na, &span.nb, &span.l),
             n: span.n,
             q_min: span.q_min().to_f64() * (1.0 - 1e-15),
             p_a: span.p_a.to_f64(),

@@ -301,3 +301,152 @@ fn quake_rsqrt_duff_exceeds_the_graph_bound() {
         );
     }
 }
+
+/// The rules of `proofs/Graph.v` this file checks, as the `.v` states them: the test
+/// below fails when one of them is no longer in the file.
+const GRAPH_V_RULES: [&str; 12] = [
+    "| In _ => v * m + eta <= E j",
+    "| Add a b | Sub a b => E a + E b + v * (m + E a + E b) + eta <= E j",
+    "let d := mag (lo a) (hi a) * E b + mag (lo b) (hi b) * E a + E a * E b in",
+    "let d := (E a + m * E b) / (lb - E b) in",
+    "d + v * (2 + v) * (m + d) + (1 + v) * (mag (lo a) (hi a) + E a) * eta + eta <= E j",
+    "E a <= S j * S j /\\ 0 <= T j /\\ T j * T j <= lo a - E a /\\",
+    "let d := E a / (S j + T j) in",
+    "E a <= lo a - S j * S j /\\",
+    "let d := E a / (2 * (S j * S j * S j)) in",
+    "sumR E l + (w - 1) * sumR (fun i => mag (lo i) (hi i) + E i) l",
+    "| Sqrt a => 0 < S j /\\ S j * S j <= lo a /\\ lo j <= S j /\\ 0 <= hi j /\\ hi a <= hi j * hi j",
+    "| Rsqrt a => 0 < S j /\\ S j * S j <= lo a /\\ 0 < lo j /\\ lo j * lo j * hi a <= 1 /\\ 1 <= hi j * S j",
+];
+
+/// The certificate the evaluator computes (`tolerance::graph::evaluate`, in `f64`
+/// rounded outward) satisfies `iv_ok` and `err_ok` of `proofs/Graph.v` **exactly**,
+/// checked here in rationals rule by rule as the `.v` states them
+/// ([`GRAPH_V_RULES`], each found in the file), at every node of every method's graphs
+/// under `ieee` (binary32, binary64) and `shader` on the profile spans up to n = 64 and
+/// the published cases up to n = 64 (n = 4 in the default tier: exact arithmetic on
+/// every node is slow): so `graph_sound` applies to what `check` uses.
+#[test]
+fn graph_certificates_satisfy_the_theorems_rules() {
+    use phong_approx::tolerance::graph::{evaluate, Op};
+    use phong_approx::tolerance::graphs::method_graphs;
+    let v_file = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/proofs/Graph.v")).unwrap();
+    let flat = |s: &str| s.split_whitespace().collect::<Vec<_>>().join(" ");
+    let text = flat(&v_file);
+    for rule in GRAPH_V_RULES {
+        assert!(text.contains(&flat(rule)), "proofs/Graph.v no longer states: {rule}");
+    }
+    let r = |x: f64| Q::from_float(x).unwrap();
+    let mag = |l: &Q, h: &Q| l.abs().max(h.abs());
+    let mut cases: Vec<Span<Q>> = spans().into_iter().map(|(_, s)| s).collect();
+    for set in phong_approx::testkit::SETS {
+        cases.extend(published_spans(set).into_values());
+    }
+    let mut nodes = 0usize;
+    let limit = tiered(4, 64);
+    // The default tier: every third case, binary64 only in the extensive tier.
+    let step = tiered(3, 1);
+    for s in cases.iter().filter(|s| s.n <= limit).step_by(step) {
+        let x_in = {
+            let mut v = Vec::new();
+            for vec in [&s.na, &s.nb, &s.l] {
+                #[allow(clippy::clone_on_copy, clippy::redundant_clone)]
+                v.extend(vec.components().into_iter().map(|x| x.clone()));
+            }
+            v
+        };
+        let profiles = [(Profile::Ieee, Format::Binary32), (Profile::Shader, Format::Binary32), (Profile::Ieee, Format::Binary64)];
+        for &(profile, format) in &profiles[..tiered(2, 3)] {
+            let m = model(profile, format).unwrap();
+            for method in [Method::Gouraud, Method::CorrectedEuler, Method::Euler, Method::Duff, Method::Phong, Method::SymmetricPhong] {
+                for f in method_graphs(method, Form::Any, s.n, &m).unwrap() {
+                    let Ok(b) = evaluate(&f.graph, &inputs(s), &m) else {
+                        continue;
+                    };
+                    let (lo, hi, e, sj, tj): (Vec<Q>, Vec<Q>, Vec<Q>, Vec<Q>, Vec<Q>) = (
+                        b.lo.iter().map(|&x| r(x)).collect(),
+                        b.hi.iter().map(|&x| r(x)).collect(),
+                        b.err.iter().map(|&x| r(x)).collect(),
+                        b.s.iter().map(|&x| r(x)).collect(),
+                        b.t.iter().map(|&x| r(x)).collect(),
+                    );
+                    let eta = r(m.eta);
+                    let (zero, one, two) = (Q::zero(), Q::from_integer(1.into()), Q::from_integer(2.into()));
+                    for (j, node) in f.graph.nodes().iter().enumerate() {
+                        let v = r(m.kappa(node.class)) * r(m.u);
+                        let mj = mag(&lo[j], &hi[j]);
+                        let ok_iv = |lj: &Q, hj: &Q, ps: &[Q]| ps.iter().all(|p| lj <= p && p <= hj);
+                        let tail = |d: &Q| d.clone() + v.clone() * (mj.clone() + d.clone()) + eta.clone();
+                        let what = format!("{method} {} node {j} {:?}: {s}", f.name, node.op);
+                        assert!(lo[j] <= hi[j] && e[j] >= zero, "{what}");
+                        let (iv, er) = match &node.op {
+                            Op::In(i) => (
+                                lo[j] <= x_in[*i] && x_in[*i] <= hi[j],
+                                v.clone() * mj.clone() + eta.clone() <= e[j],
+                            ),
+                            Op::Cst(c) => (lo[j] <= r(*c) && r(*c) <= hi[j], true),
+                            Op::Add(a, c) | Op::Sub(a, c) => {
+                                let iv = if matches!(node.op, Op::Add(..)) {
+                                    lo[j] <= &lo[*a] + &lo[*c] && &hi[*a] + &hi[*c] <= hi[j]
+                                } else {
+                                    lo[j] <= &lo[*a] - &hi[*c] && &hi[*a] - &lo[*c] <= hi[j]
+                                };
+                                let d = &e[*a] + &e[*c];
+                                (iv, tail(&d) <= e[j])
+                            }
+                            Op::Mul(a, c) => {
+                                let ps = [&lo[*a] * &lo[*c], &lo[*a] * &hi[*c], &hi[*a] * &lo[*c], &hi[*a] * &hi[*c]];
+                                let d = mag(&lo[*a], &hi[*a]) * &e[*c] + mag(&lo[*c], &hi[*c]) * &e[*a] + &e[*a] * &e[*c];
+                                (ok_iv(&lo[j], &hi[j], &ps), tail(&d) <= e[j])
+                            }
+                            Op::Div(a, c) | Op::DivE(a, c) => {
+                                let sign = lo[*c] > zero || hi[*c] < zero;
+                                let ps = [&lo[*a] / &lo[*c], &lo[*a] / &hi[*c], &hi[*a] / &lo[*c], &hi[*a] / &hi[*c]];
+                                let lb = lo[*c].abs().min(hi[*c].abs());
+                                let d = (&e[*a] + &mj * &e[*c]) / (&lb - &e[*c]);
+                                let mut er = e[*c] < lb && tail(&d) <= e[j];
+                                if matches!(node.op, Op::DivE(..)) {
+                                    let second = &d + &v * (&two + &v) * (&mj + &d)
+                                        + (&one + &v) * (mag(&lo[*a], &hi[*a]) + &e[*a]) * &eta
+                                        + &eta;
+                                    er = er && second <= e[j];
+                                }
+                                (sign && ok_iv(&lo[j], &hi[j], &ps), er)
+                            }
+                            Op::Sqrt(a) => (
+                                sj[j] > zero && &sj[j] * &sj[j] <= lo[*a] && lo[j] <= sj[j] && hi[j] >= zero && hi[*a] <= &hi[j] * &hi[j],
+                                e[*a] <= &sj[j] * &sj[j]
+                                    && tj[j] >= zero
+                                    && &tj[j] * &tj[j] <= &lo[*a] - &e[*a]
+                                    && tail(&(&e[*a] / (&sj[j] + &tj[j]))) <= e[j],
+                            ),
+                            Op::Rsqrt(a) => (
+                                sj[j] > zero && &sj[j] * &sj[j] <= lo[*a] && lo[j] > zero && &lo[j] * &lo[j] * &hi[*a] <= one && &hi[j] * &sj[j] >= one,
+                                e[*a] <= &lo[*a] - &sj[j] * &sj[j]
+                                    && tail(&(&e[*a] / (&two * (&sj[j] * &sj[j] * &sj[j])))) <= e[j],
+                            ),
+                            Op::Sum(l) => {
+                                let k = l.len();
+                                let mut w = one.clone();
+                                for _ in 1..k {
+                                    w = w * (&one + &v);
+                                }
+                                let se: Q = l.iter().map(|&i| e[i].clone()).sum();
+                                let sm: Q = l.iter().map(|&i| mag(&lo[i], &hi[i]) + &e[i]).sum();
+                                let bound = se + (&w - &one) * sm + Q::from_integer((k as i64 - 1).into()) * &w * &eta;
+                                let iv = lo[j] <= l.iter().map(|&i| lo[i].clone()).sum::<Q>()
+                                    && l.iter().map(|&i| hi[i].clone()).sum::<Q>() <= hi[j];
+                                (iv, bound <= e[j])
+                            }
+                        };
+                        assert!(iv, "iv_ok fails: {what}");
+                        assert!(er, "err_ok fails: {what}");
+                        nodes += 1;
+                    }
+                }
+            }
+        }
+    }
+    println!("{nodes} nodes' certificates checked exactly");
+    assert!(nodes > tiered(10_000, 1_000_000), "{nodes}");
+}

@@ -16,6 +16,7 @@ pub use tolerance::{Advice, Tolerance, ToleranceError, Unbounded};
 use super::vectors::{Case, Expected, VectorFile};
 use crate::method::Method;
 use crate::quantize::level;
+use tolerance::exceeds;
 
 /// The comparison of one case.
 #[derive(Clone, Debug, PartialEq)]
@@ -340,37 +341,6 @@ fn duff_q_min_too_small(j: &Judging, method: Method) -> Option<u32> {
     .then_some(frac_bits)
 }
 
-/// Whether the result `g` is farther than the bound `b` from the expected value
-/// (`e`, its decimal `ev` of 30 significant digits), decided so that the verdict never
-/// rests on `f64` rounding: the bound, evaluated in `f64` in at most a few dozen
-/// operations, is taken `2^-45` (relatively) larger, which covers up to 256 roundings
-/// of its formula; where `|g − e|` computed in `f64` (off by at most
-/// `(|g| + |e|)·2^-52`) is within that of the bound, the difference is computed
-/// exactly in rationals from the decimal, allowed `10^-29·|e|` more for the decimal's
-/// own rounding. So a fixed-point result with up to 51 fractional bits (exact in
-/// `f64`) is judged by its exact error.
-fn exceeds(g: f64, e: f64, ev: &str, b: f64) -> bool {
-    let b = b * (1.0 + 2f64.powi(-45));
-    let d = (g - e).abs();
-    let slack = (g.abs() + e.abs()) * 2f64.powi(-52) + f64::from_bits(1);
-    if d + slack < b {
-        return false;
-    }
-    if d - slack > b + 1e-29 * e.abs() {
-        return true;
-    }
-    let (Some(gq), Ok(eq), Some(bq)) = (
-        crate::BigRational::from_float(g),
-        crate::parse::parse_rational(ev),
-        crate::BigRational::from_float(b),
-    ) else {
-        return d > b;
-    };
-    let decimal = crate::BigRational::new(1.into(), num_bigint::BigInt::from(10).pow(29))
-        * num_traits::Signed::abs(&eq);
-    num_traits::Signed::abs(&(gq - eq)) > bq + decimal
-}
-
 fn case_report(
     j: &Judging,
     exp: &Expected,
@@ -406,7 +376,36 @@ fn case_report(
         None => b,
         Some((s, v_max)) => crate::tolerance::specular_bound(b, s, v_max, format),
     };
+    // Under `ieee` and `shader`, a bound per pixel where the operation graphs give one
+    // (`tolerance::graphs::profile_pixel_bounds`: the smaller of the formula and the
+    // graphs' at each pixel); the adaptive scheme is judged by its picks' formulas.
+    let per_pixel = match (tol, j.shape) {
+        (
+            Tolerance::Profile {
+                profile: profile @ (Profile::Ieee | Profile::Shader),
+                format,
+                form,
+            },
+            Some(shape),
+        ) if method.picks().is_none() && !(specular && profile == Profile::Shader) => {
+            let light = match (&c.specular, specular) {
+                (Some(sp), true) => super::vectors::exact_input(&sp.h)
+                    .map(|h| [&h.x, &h.y, &h.z].map(crate::tolerance::graph::interval)),
+                _ => None,
+            };
+            (light.is_some() || !specular)
+                .then(|| {
+                    crate::tolerance::graphs::profile_pixel_bounds(
+                        method, profile, form, shape, light, format,
+                    )
+                })
+                .flatten()
+                .map(|b| b.into_iter().map(|b| raise(b, format)).collect::<Vec<f64>>())
+        }
+        _ => None,
+    };
     let allowed_abs = match tol {
+        _ if per_pixel.is_some() => per_pixel.as_ref().map(|b| b.iter().copied().fold(0f64, f64::max)),
         Tolerance::Abs(x) => Some(x),
         // The power is not in the shader profile's model (Vulkan's pow is exp2 of a
         // log2, with errors relative to neither), nor in fixed point's: diffuse only.
@@ -462,6 +461,11 @@ fn case_report(
         sum_levels += u64::from(dl);
         max_abs = max_abs.max(d);
         max_ulps = max_ulps.max(du);
+        // This pixel's bound: its own where the bounds are per pixel.
+        let allowed_abs = per_pixel
+            .as_ref()
+            .and_then(|b| b.get(i).copied())
+            .or(allowed_abs);
         let excess = match tol {
             Tolerance::Levels(n) => f64::from(dl) - f64::from(n),
             Tolerance::Ulps(n) => du - n,

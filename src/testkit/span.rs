@@ -205,16 +205,30 @@ pub fn acceptance<T: Float>(
 ) -> Option<Vec<(f64, f64)>> {
     use crate::Scalar as _;
     let shape = crate::tolerance::Shape::of(span);
-    let b = match profile {
-        Profile::Reference => crate::tolerance::span_bound(method, &shape, T::FORMAT.u()),
-        p => crate::tolerance::profile::profile_span_bound(
+    // Per pixel: under `ieee` and `shader` the smaller of the formula and the operation
+    // graphs' bound at each pixel (the adaptive scheme: its picks' formulas).
+    let n1 = span.n as usize + 1;
+    let b: Vec<f64> = match profile {
+        Profile::Reference => vec![crate::tolerance::span_bound(method, &shape, T::FORMAT.u())?; n1],
+        p if method.picks().is_some() => vec![
+            crate::tolerance::profile::profile_span_bound(
+                method,
+                p,
+                crate::tolerance::profile::Form::Any,
+                &shape,
+                T::FORMAT,
+            )?;
+            n1
+        ],
+        p => crate::tolerance::graphs::profile_pixel_bounds(
             method,
             p,
             crate::tolerance::profile::Form::Any,
             &shape,
+            None,
             T::FORMAT,
-        ),
-    }?;
+        )?,
+    };
     let values = method.values(span).ok()?;
     let interval = |x: f64, b: f64| {
         // The f64 of the exact value is within half an f64 ulp: widen by one.
@@ -223,7 +237,11 @@ pub fn acceptance<T: Float>(
         let hi = (x + b) + slack + f64::EPSILON * (x + b).abs();
         (lo, hi)
     };
-    let mut iv: Vec<(f64, f64)> = values.iter().map(|v| interval(v.to_f64(), b)).collect();
+    let mut iv: Vec<(f64, f64)> = values
+        .iter()
+        .zip(&b)
+        .map(|(v, &b)| interval(v.to_f64(), b))
+        .collect();
     // The adaptive scheme where its test is too close to call (docs/float.md §10): an
     // implementation may pick either method, so each pixel's interval also holds the
     // other method's (the hull of the two; `check` asks one method for the whole span).

@@ -257,6 +257,32 @@ pub enum GraphError {
     },
 }
 
+/// An exact rational as an `f64` interval: `(x, x)` when `x` is an `f64`, else the
+/// two neighbours of its nearest `f64`.
+pub fn interval(x: &crate::BigRational) -> (f64, f64) {
+    use crate::Scalar;
+    let f = x.to_f64();
+    match crate::BigRational::from_float(f) {
+        Some(q) if q == *x => (f, f),
+        _ => (f.next_down(), f.next_up()),
+    }
+}
+
+/// `N_a`, `N_b`, `L` as the method graphs' nine input intervals.
+pub fn inputs_of(
+    na: &crate::Vec3<crate::BigRational>,
+    nb: &crate::Vec3<crate::BigRational>,
+    l: &crate::Vec3<crate::BigRational>,
+) -> [(f64, f64); 9] {
+    let mut out = [(0.0, 0.0); 9];
+    for (k, v) in [na, nb, l].into_iter().enumerate() {
+        for (c, x) in [&v.x, &v.y, &v.z].into_iter().enumerate() {
+            out[3 * k + c] = interval(x);
+        }
+    }
+    out
+}
+
 /// Each node's certificate: the interval of its exact value and its error bound.
 #[derive(Clone, Debug, PartialEq)]
 pub struct Bounds {
@@ -266,6 +292,13 @@ pub struct Bounds {
     pub hi: Vec<f64>,
     /// Bounds on `|computed − exact|`, for every execution the model allows.
     pub err: Vec<f64>,
+    /// `S j` of the theorem: a positive lower bound of the exact root of a
+    /// [`Op::Sqrt`] (of the computed and the exact operand's of an [`Op::Rsqrt`]); 0
+    /// elsewhere.
+    pub s: Vec<f64>,
+    /// `T j`: a lower bound (≥ 0) of the computed operand's root of an [`Op::Sqrt`]; 0
+    /// elsewhere.
+    pub t: Vec<f64>,
 }
 
 // Outward rounding: the operations of f64 round to nearest, so the neighbouring float
@@ -329,6 +362,7 @@ pub fn evaluate(graph: &Graph, inputs: &[(f64, f64)], model: &Model) -> Result<B
         Vec::with_capacity(len),
         Vec::<f64>::with_capacity(len),
     );
+    let (mut sj, mut tj) = (vec![0.0; len], vec![0.0; len]);
     let eta = model.eta;
     for (j, node) in graph.nodes.iter().enumerate() {
         let v = mul_up(model.kappa(node.class), model.u);
@@ -409,6 +443,7 @@ pub fn evaluate(graph: &Graph, inputs: &[(f64, f64)], model: &Model) -> Result<B
                 // √y_a ≥ s2 with s2² ≤ lo_a − E_a (0 where that is not positive):
                 // |√y_a − √x_a| = |y_a − x_a|/(√y_a + √x_a) ≤ E_a/(s + s2).
                 let s2 = root_below(dn(lo[*a] - err[*a])).unwrap_or(0.0);
+                (sj[j], tj[j]) = (s, s2);
                 let d = div_up(err[*a], dn(s + s2));
                 (s, h, rounded(d, v, mag(s, h), eta))
             }
@@ -428,6 +463,7 @@ pub fn evaluate(graph: &Graph, inputs: &[(f64, f64)], model: &Model) -> Result<B
                 while dn(h * s) < 1.0 {
                     h = up(h);
                 }
+                sj[j] = s;
                 let d = div_up(err[*a], dn(2.0 * dn(dn(s * s) * s)));
                 (l, h, rounded(d, v, h, eta))
             }
@@ -458,5 +494,11 @@ pub fn evaluate(graph: &Graph, inputs: &[(f64, f64)], model: &Model) -> Result<B
         hi.push(h);
         err.push(e);
     }
-    Ok(Bounds { lo, hi, err })
+    Ok(Bounds {
+        lo,
+        hi,
+        err,
+        s: sj,
+        t: tj,
+    })
 }

@@ -424,3 +424,33 @@ pub fn model(profile: super::profile::Profile, format: crate::Format) -> Option<
         format,
     })
 }
+
+/// The bound of `method` under `profile` at every pixel of the span of `shape`, in
+/// `format`: at each pixel the smaller of the profile's formula
+/// ([`super::profile::profile_span_bound`], the count theorems) and the operation
+/// graphs' bound ([`pixel_bounds`], `graph_sound`) — both proved, so their minimum is
+/// a bound. `light` replaces `L` by another unit vector (the half vector `H` of a
+/// specular case). `None` where neither gives one; the formula alone where the
+/// method has no graph or the graphs none on this case (a divisor or a root that may
+/// vanish).
+pub fn profile_pixel_bounds(
+    method: Method,
+    profile: super::profile::Profile,
+    form: Form,
+    shape: &super::Shape,
+    light: Option<[(f64, f64); 3]>,
+    format: crate::Format,
+) -> Option<Vec<f64>> {
+    let formula = super::profile::profile_span_bound(method, profile, form, shape, format);
+    let mut inputs = shape.inputs;
+    if let Some(h) = light {
+        inputs[6..].copy_from_slice(&h);
+    }
+    let graph = model(profile, format)
+        .and_then(|m| pixel_bounds(method, form, shape.n, &inputs, &m).ok().flatten());
+    match (formula, graph) {
+        (Some(f), Some(g)) => Some(g.into_iter().map(|x| x.min(f)).collect()),
+        (Some(f), None) => Some(vec![f; shape.n as usize + 1]),
+        (None, g) => g,
+    }
+}

@@ -231,3 +231,34 @@ impl Unbounded {
         }
     }
 }
+
+/// Whether the result `g` is farther than the bound `b` from the expected value
+/// (`e`, its decimal `ev` of 30 significant digits), decided so that the verdict never
+/// rests on `f64` rounding: the bound, evaluated in `f64` in at most a few dozen
+/// operations, is taken `2^-45` (relatively) larger, which covers up to 256 roundings
+/// of its formula; where `|g − e|` computed in `f64` (off by at most
+/// `(|g| + |e|)·2^-52`) is within that of the bound, the difference is computed
+/// exactly in rationals from the decimal, allowed `10^-29·|e|` more for the decimal's
+/// own rounding. So a fixed-point result with up to 51 fractional bits (exact in
+/// `f64`) is judged by its exact error.
+pub(super) fn exceeds(g: f64, e: f64, ev: &str, b: f64) -> bool {
+    let b = b * (1.0 + 2f64.powi(-45));
+    let d = (g - e).abs();
+    let slack = (g.abs() + e.abs()) * 2f64.powi(-52) + f64::from_bits(1);
+    if d + slack < b {
+        return false;
+    }
+    if d - slack > b + 1e-29 * e.abs() {
+        return true;
+    }
+    let (Some(gq), Ok(eq), Some(bq)) = (
+        crate::BigRational::from_float(g),
+        crate::parse::parse_rational(ev),
+        crate::BigRational::from_float(b),
+    ) else {
+        return d > b;
+    };
+    let decimal = crate::BigRational::new(1.into(), num_bigint::BigInt::from(10).pow(29))
+        * num_traits::Signed::abs(&eq);
+    num_traits::Signed::abs(&(gq - eq)) > bq + decimal
+}

@@ -1,0 +1,695 @@
+(** * Graph.v — a running error bound for straight-line float programs.
+
+    A program is a list of nodes [g 0], [g 1], ..., [g (N-1)]; node j applies
+    one operation to inputs or to earlier nodes (operands have indices < j):
+    reading an input [In i] (the exact real [X i], rounded into the format),
+    a constant [Cst c] held exactly, [Add], [Sub], [Mul], [Div], [DivE] (a
+    division either way: one rounded division, or a rounded reciprocal 1/b
+    followed by a rounded product, each within the node's unit), [Sqrt],
+    [Rsqrt] (1 / sqrt, e.g. GPU inverseSqrt) and [Sum l], a sum of several
+    nodes in ANY order: any binary tree of additions over any permutation of
+    its terms ([sum_exec]).
+
+    Exact values [x j] apply each operation to the exact values of the
+    operands ([exact_op]).  An execution [y] is any assignment of values in
+    which every node is within FloatModelK's bound [ap1 v eta] of its
+    operation applied to the COMPUTED operands ([exec_op]), with its own unit
+    v = kappa u ([nv]); so each operation may round differently (direction,
+    mode, flushing), and an exact operation (the product inside a fused
+    multiply-add) is allowed too.
+
+    A certificate gives per node an interval [lo j, hi j], an error bound
+    [E j] and, for square roots, a positive lower bound [S j] of the root of
+    the exact operand and (for [Sqrt]) a lower bound [T j >= 0] of the root
+    of the computed operand, so that
+        |sqrt y_a - sqrt x_a| = |y_a - x_a| / (sqrt y_a + sqrt x_a)
+                              <= E a / (S j + T j).
+    [DivE] takes the [Div] interval rule; its error rule covers both ways:
+    with d the [Div] bound on |y_a / y_b - x_a / x_b| and Q = |y_a / y_b|
+    <= m + d, the reciprocal-then-product way is within
+        Q v (2 + v) + (1 + v) |y_a| eta + eta
+    of y_a / y_b, where |y_a| <= mag (lo a) (hi a) + E a.
+    It is checked node by node by the local rules [iv_ok] (interval
+    arithmetic) and [err_ok] (first-order error propagation made rigorous:
+    every product of errors is kept).  [graph_sound] says: if every node is
+    well formed and its certificate satisfies the local rules, then for EVERY
+    execution, every exact value lies in its interval and every computed value
+    is within [E j] of the exact one:
+
+        lo j <= x j <= hi j   /\   |y j - x j| <= E j.
+
+    The sum rule rests on [sum_exec_err]: a sum of k computed terms t_i in any
+    order, each addition with unit v, is within
+        ((1+v)^(k-1) - 1) sum |t_i| + (k-1) (1+v)^(k-1) eta
+    of the exact sum.  [sum3_rel_exec]: FloatModelK's three-term sums in any
+    order ([sum3_rel]) are instances of [sum_exec]. *)
+
+From Coq Require Import Reals Lra Lia List Permutation.
+From PhongApprox Require Import FloatModelK.
+Import ListNotations.
+Open Scope R_scope.
+
+(** ** The language *)
+
+(** Operations. Operands are indices of earlier nodes. *)
+Inductive op : Type :=
+| In (i : nat)          (* input i: an exact real X i, read (rounded) into the format *)
+| Cst (c : R)           (* a constant the format holds exactly: no rounding *)
+| Add (a b : nat)
+| Sub (a b : nat)
+| Mul (a b : nat)
+| Div (a b : nat)
+| DivE (a b : nat)      (* a division either way: y a / y b, or a reciprocal r of y b then y a * r *)
+| Sqrt (a : nat)
+| Rsqrt (a : nat)       (* 1 / sqrt, e.g. GPU inverseSqrt *)
+| Sum (l : list nat).   (* a sum of several nodes in ANY order: any binary tree of additions over any permutation *)
+
+(** A node: its operation and the unit v = kappa * u of its rounding (for Sum, of each of its additions). *)
+Record node := Node { nop : op; nv : R }.
+
+(** Operands come before the node; a Sum has at least one term. *)
+Definition op_wf (o : op) (j : nat) : Prop :=
+  match o with
+  | In _ | Cst _ => True
+  | Add a b | Sub a b | Mul a b | Div a b | DivE a b => (a < j)%nat /\ (b < j)%nat
+  | Sqrt a | Rsqrt a => (a < j)%nat
+  | Sum l => l <> [] /\ Forall (fun a => (a < j)%nat) l
+  end.
+
+(** The exact value of a node from the exact inputs X and the exact values x of earlier nodes. *)
+Definition exact_op (X x : nat -> R) (o : op) : R :=
+  match o with
+  | In i => X i
+  | Cst c => c
+  | Add a b => x a + x b
+  | Sub a b => x a - x b
+  | Mul a b => x a * x b
+  | Div a b => x a / x b
+  | DivE a b => x a / x b
+  | Sqrt a => sqrt (x a)
+  | Rsqrt a => / sqrt (x a)
+  | Sum l => fold_right Rplus 0 (map x l)
+  end.
+
+(** Sums in any order: any binary tree of additions over any permutation of the terms,
+    each addition within ap1 v eta of the exact sum of its (computed) operands. *)
+Inductive sum_exec (v eta : R) : list R -> R -> Prop :=
+| sum_one : forall t, sum_exec v eta [t] t
+| sum_split : forall l l1 l2 r1 r2 y,
+    Permutation l (l1 ++ l2) -> l1 <> [] -> l2 <> [] ->
+    sum_exec v eta l1 r1 -> sum_exec v eta l2 r2 ->
+    ap1 v eta y (r1 + r2) -> sum_exec v eta l y.
+
+(** What an execution may compute at a node: within ap1 (nv node) eta of the exact operation on the COMPUTED operands y.
+    A fused multiply-add is covered: its product is exact, which ap1 allows for any v >= 0. *)
+Definition exec_op (eta : R) (X y : nat -> R) (g : node) (yj : R) : Prop :=
+  let v := nv g in
+  match nop g with
+  | In i => ap1 v eta yj (X i)
+  | Cst c => yj = c
+  | Add a b => ap1 v eta yj (y a + y b)
+  | Sub a b => ap1 v eta yj (y a - y b)
+  | Mul a b => ap1 v eta yj (y a * y b)
+  | Div a b => ap1 v eta yj (y a / y b)
+  | DivE a b => ap1 v eta yj (y a / y b) \/ (exists r, ap1 v eta r (/ y b) /\ ap1 v eta yj (y a * r))
+  | Sqrt a => ap1 v eta yj (sqrt (y a))
+  | Rsqrt a => ap1 v eta yj (/ sqrt (y a))
+  | Sum l => sum_exec v eta (map y l) yj
+  end.
+
+(** ** The certificate *)
+
+(** An interval [lo j, hi j] of the exact value, an error bound E j, and for
+    Sqrt/Rsqrt a positive lower bound S j of the root (of the exact operand)
+    and for Sqrt a lower bound T j >= 0 of the root of the computed operand. *)
+Definition mag (lo hi : R) : R := Rmax (Rabs lo) (Rabs hi).
+
+Definition sumR (f : nat -> R) (l : list nat) : R := fold_right Rplus 0 (map f l).
+
+(** The interval rules. *)
+Definition iv_ok (g : nat -> node) (X lo hi S : nat -> R) (j : nat) : Prop :=
+  lo j <= hi j /\
+  match nop (g j) with
+  | In i => lo j <= X i <= hi j
+  | Cst c => lo j <= c <= hi j
+  | Add a b => lo j <= lo a + lo b /\ hi a + hi b <= hi j
+  | Sub a b => lo j <= lo a - hi b /\ hi a - lo b <= hi j
+  | Mul a b => Forall (fun p => lo j <= p <= hi j)
+                 [lo a * lo b; lo a * hi b; hi a * lo b; hi a * hi b]
+  | Div a b | DivE a b => (0 < lo b \/ hi b < 0) /\
+               Forall (fun p => lo j <= p <= hi j)
+                 [lo a / lo b; lo a / hi b; hi a / lo b; hi a / hi b]
+  | Sqrt a => 0 < S j /\ S j * S j <= lo a /\ lo j <= S j /\ 0 <= hi j /\ hi a <= hi j * hi j
+  | Rsqrt a => 0 < S j /\ S j * S j <= lo a /\ 0 < lo j /\ lo j * lo j * hi a <= 1 /\ 1 <= hi j * S j
+  | Sum l => lo j <= sumR lo l /\ sumR hi l <= hi j
+  end.
+
+(** The error rules: E j bounds |y j - x j| given the operands' bounds.
+    For Rsqrt, [E a <= lo a - S j * S j] makes both the exact and the
+    computed operand at least S j ^ 2 > 0.  For Sqrt,
+    [T j * T j <= lo a - E a] makes the computed operand at least T j ^ 2. *)
+Definition err_ok (g : nat -> node) (eta : R) (lo hi E S T : nat -> R) (j : nat) : Prop :=
+  let v := nv (g j) in
+  let m := mag (lo j) (hi j) in
+  0 <= E j /\
+  match nop (g j) with
+  | In _ => v * m + eta <= E j
+  | Cst _ => True
+  | Add a b | Sub a b => E a + E b + v * (m + E a + E b) + eta <= E j
+  | Mul a b =>
+      let d := mag (lo a) (hi a) * E b + mag (lo b) (hi b) * E a + E a * E b in
+      d + v * (m + d) + eta <= E j
+  | Div a b =>
+      let lb := Rmin (Rabs (lo b)) (Rabs (hi b)) in
+      E b < lb /\
+      let d := (E a + m * E b) / (lb - E b) in
+      d + v * (m + d) + eta <= E j
+  | DivE a b =>
+      let lb := Rmin (Rabs (lo b)) (Rabs (hi b)) in
+      E b < lb /\
+      let d := (E a + m * E b) / (lb - E b) in
+      d + v * (m + d) + eta <= E j /\
+      d + v * (2 + v) * (m + d) + (1 + v) * (mag (lo a) (hi a) + E a) * eta + eta <= E j
+  | Sqrt a =>
+      E a <= S j * S j /\ 0 <= T j /\ T j * T j <= lo a - E a /\
+      let d := E a / (S j + T j) in
+      d + v * (m + d) + eta <= E j
+  | Rsqrt a =>
+      E a <= lo a - S j * S j /\
+      let d := E a / (2 * (S j * S j * S j)) in
+      d + v * (m + d) + eta <= E j
+  | Sum l =>
+      let k := length l in
+      let w := (1 + v) ^ (k - 1) in
+      sumR E l + (w - 1) * sumR (fun i => mag (lo i) (hi i) + E i) l
+        + INR (k - 1) * w * eta <= E j
+  end.
+
+(** ** Real-number lemmas *)
+
+Lemma mag_ge : forall lo hi x, lo <= x <= hi -> Rabs x <= mag lo hi.
+Proof.
+  intros lo hi x Hx. unfold mag.
+  pose proof (Rmax_l (Rabs lo) (Rabs hi)). pose proof (Rmax_r (Rabs lo) (Rabs hi)).
+  destruct (Rle_or_lt 0 x).
+  - rewrite Rabs_pos_eq by lra. pose proof (Rle_abs hi). lra.
+  - rewrite Rabs_left by lra. pose proof (Rle_abs (- lo)). rewrite Rabs_Ropp in *. lra.
+Qed.
+
+(** One rounded operation: z is the operation on the computed operands, within d of the
+    exact value xj, and yj is within ap1 of z. *)
+Lemma ap1_step : forall v eta yj z xj d m, 0 <= v -> ap1 v eta yj z ->
+  Rabs (z - xj) <= d -> Rabs xj <= m -> Rabs (yj - xj) <= d + v * (m + d) + eta.
+Proof.
+  unfold ap1. intros v eta yj z xj d m Hv Hy Hz Hm.
+  assert (Hzm : Rabs z <= m + d) by (pose proof (Rabs_triang_inv z xj); lra).
+  assert (v * Rabs z <= v * (m + d)) by (apply Rmult_le_compat_l; lra).
+  replace (yj - xj) with ((yj - z) + (z - xj)) by ring.
+  pose proof (Rabs_triang (yj - z) (z - xj)). lra.
+Qed.
+
+Lemma add_err : forall xa xb ya yb Ea Eb, Rabs (ya - xa) <= Ea -> Rabs (yb - xb) <= Eb ->
+  Rabs ((ya + yb) - (xa + xb)) <= Ea + Eb.
+Proof.
+  intros. replace ((ya + yb) - (xa + xb)) with ((ya - xa) + (yb - xb)) by ring.
+  pose proof (Rabs_triang (ya - xa) (yb - xb)). lra.
+Qed.
+
+Lemma sub_err : forall xa xb ya yb Ea Eb, Rabs (ya - xa) <= Ea -> Rabs (yb - xb) <= Eb ->
+  Rabs ((ya - yb) - (xa - xb)) <= Ea + Eb.
+Proof.
+  intros. replace ((ya - yb) - (xa - xb)) with ((ya - xa) + - (yb - xb)) by ring.
+  pose proof (Rabs_triang (ya - xa) (- (yb - xb))). rewrite Rabs_Ropp in *. lra.
+Qed.
+
+Lemma mul_err : forall xa xb ya yb Ea Eb ma mb,
+  Rabs (ya - xa) <= Ea -> Rabs (yb - xb) <= Eb -> Rabs xa <= ma -> Rabs xb <= mb ->
+  Rabs (ya * yb - xa * xb) <= ma * Eb + mb * Ea + Ea * Eb.
+Proof.
+  intros xa xb ya yb Ea Eb ma mb Ha Hb Hma Hmb.
+  replace (ya * yb - xa * xb) with (xa * (yb - xb) + xb * (ya - xa) + (ya - xa) * (yb - xb))
+    by ring.
+  pose proof (Rabs_triang (xa * (yb - xb) + xb * (ya - xa)) ((ya - xa) * (yb - xb))).
+  pose proof (Rabs_triang (xa * (yb - xb)) (xb * (ya - xa))).
+  rewrite !Rabs_mult in *.
+  assert (Rabs xa * Rabs (yb - xb) <= ma * Eb) by (apply Rmult_le_compat; auto using Rabs_pos).
+  assert (Rabs xb * Rabs (ya - xa) <= mb * Ea) by (apply Rmult_le_compat; auto using Rabs_pos).
+  assert (Rabs (ya - xa) * Rabs (yb - xb) <= Ea * Eb)
+    by (apply Rmult_le_compat; auto using Rabs_pos).
+  lra.
+Qed.
+
+(** Products of intervals: x y lies between the extremes of the four corners. *)
+Lemma lin_between : forall c a1 a2 x L H, a1 <= x <= a2 ->
+  L <= c * a1 <= H -> L <= c * a2 <= H -> L <= c * x <= H.
+Proof.
+  intros c a1 a2 x L H Hx H1 H2. destruct (Rle_or_lt 0 c).
+  - assert (c * a1 <= c * x) by (apply Rmult_le_compat_l; lra).
+    assert (c * x <= c * a2) by (apply Rmult_le_compat_l; lra). lra.
+  - assert (c * x <= c * a1) by (apply Rmult_le_compat_neg_l; lra).
+    assert (c * a2 <= c * x) by (apply Rmult_le_compat_neg_l; lra). lra.
+Qed.
+
+Lemma mul_between : forall a1 a2 b1 b2 x y L H, a1 <= x <= a2 -> b1 <= y <= b2 ->
+  L <= a1 * b1 <= H -> L <= a1 * b2 <= H -> L <= a2 * b1 <= H -> L <= a2 * b2 <= H ->
+  L <= x * y <= H.
+Proof.
+  intros a1 a2 b1 b2 x y L H Hx Hy H11 H12 H21 H22.
+  assert (L <= a1 * y <= H) by (apply (lin_between a1 b1 b2); auto).
+  assert (L <= a2 * y <= H) by (apply (lin_between a2 b1 b2); auto).
+  rewrite Rmult_comm. apply (lin_between y a1 a2); [auto | rewrite Rmult_comm; auto ..].
+Qed.
+
+Lemma Forall4 : forall (P : R -> Prop) a b c d, Forall P [a; b; c; d] ->
+  P a /\ P b /\ P c /\ P d.
+Proof. intros P a b c d H. rewrite !Forall_cons_iff in H. tauto. Qed.
+
+(** A sign-definite divisor interval: 1/x_b lies in [1/hi b, 1/lo b], |x_b| >= lb. *)
+Lemma inv_between : forall lb hb xb, lb <= xb <= hb -> (0 < lb \/ hb < 0) ->
+  / hb <= / xb <= / lb.
+Proof.
+  intros lb hb xb Hx [Hp | Hn].
+  - split; apply Rinv_le_contravar; lra.
+  - assert (/ - xb <= / - hb) by (apply Rinv_le_contravar; lra).
+    assert (/ - lb <= / - xb) by (apply Rinv_le_contravar; lra).
+    rewrite !Rinv_opp in *. lra.
+Qed.
+
+Lemma div_lb : forall lb hb xb, lb <= xb <= hb -> (0 < lb \/ hb < 0) ->
+  Rmin (Rabs lb) (Rabs hb) <= Rabs xb.
+Proof.
+  intros lb hb xb Hx [Hp | Hn].
+  - pose proof (Rmin_l (Rabs lb) (Rabs hb)).
+    rewrite (Rabs_pos_eq lb), (Rabs_pos_eq xb) in * by lra. lra.
+  - pose proof (Rmin_r (Rabs lb) (Rabs hb)).
+    rewrite (Rabs_left hb), (Rabs_left xb) in * by lra. lra.
+Qed.
+
+Lemma div_between : forall la ha lb hb xa xb L H, la <= xa <= ha -> lb <= xb <= hb ->
+  (0 < lb \/ hb < 0) -> Forall (fun p => L <= p <= H) [la / lb; la / hb; ha / lb; ha / hb] ->
+  L <= xa / xb <= H.
+Proof.
+  intros la ha lb hb xa xb L H Ha Hb Hs HF.
+  apply Forall4 in HF. unfold Rdiv in *.
+  apply (mul_between la ha (/ hb) (/ lb)); try tauto. now apply inv_between.
+Qed.
+
+Lemma div_err : forall xa xb ya yb Ea Eb m lbd,
+  lbd <= Rabs xb -> Eb < lbd -> Rabs (ya - xa) <= Ea -> Rabs (yb - xb) <= Eb ->
+  Rabs (xa / xb) <= m -> Rabs (ya / yb - xa / xb) <= (Ea + m * Eb) / (lbd - Eb).
+Proof.
+  intros xa xb ya yb Ea Eb m lbd Hl HE Ha Hb Hm.
+  assert (Hyb : lbd - Eb <= Rabs yb).
+  { pose proof (Rabs_triang_inv xb yb). rewrite Rabs_minus_sym in Hb. lra. }
+  assert (Hxb : xb <> 0) by (intro Hz; rewrite Hz, Rabs_R0 in Hl; pose proof (Rabs_pos (yb - xb)); lra).
+  assert (Hyb0 : yb <> 0) by (intro Hz; rewrite Hz, Rabs_R0 in Hyb; pose proof (Rabs_pos (yb - xb)); lra).
+  replace (ya / yb - xa / xb) with (((ya - xa) - xa / xb * (yb - xb)) * / yb)
+    by (field; split; assumption).
+  rewrite Rabs_mult, Rabs_inv.
+  assert (Hn : Rabs ((ya - xa) - xa / xb * (yb - xb)) <= Ea + m * Eb).
+  { pose proof (Rabs_triang (ya - xa) (- (xa / xb * (yb - xb)))).
+    rewrite Rabs_Ropp, Rabs_mult in H.
+    assert (Rabs (xa / xb) * Rabs (yb - xb) <= m * Eb)
+      by (apply Rmult_le_compat; auto using Rabs_pos).
+    unfold Rminus at 1. lra. }
+  unfold Rdiv. apply Rmult_le_compat; auto using Rabs_pos.
+  - left. apply Rinv_0_lt_compat. pose proof (Rabs_pos (yb - xb)). lra.
+  - apply Rinv_le_contravar; [pose proof (Rabs_pos (yb - xb)) |]; lra.
+Qed.
+
+(** The second way of DivE: a rounded reciprocal r of yb, then a rounded product ya * r. *)
+Lemma recip_err : forall v eta ya yb r y q p, 0 <= v -> 0 <= eta -> yb <> 0 ->
+  ap1 v eta r (/ yb) -> ap1 v eta y (ya * r) -> Rabs (ya / yb) <= q -> Rabs ya <= p ->
+  Rabs (y - ya / yb) <= v * (2 + v) * q + (1 + v) * p * eta + eta.
+Proof.
+  unfold ap1. intros v eta ya yb r y q p Hv He Hb Hr Hy Hq Hp.
+  assert (HA : Rabs ya * Rabs (/ yb) = Rabs (ya / yb)) by (unfold Rdiv; now rewrite Rabs_mult).
+  assert (H1 : Rabs (ya * r - ya / yb) <= v * Rabs (ya / yb) + Rabs ya * eta).
+  { replace (ya * r - ya / yb) with (ya * (r - / yb)) by (field; exact Hb).
+    rewrite Rabs_mult. pose proof (Rabs_pos ya).
+    assert (Rabs ya * Rabs (r - / yb) <= Rabs ya * (v * Rabs (/ yb) + eta))
+      by (apply Rmult_le_compat_l; lra).
+    rewrite <- HA. lra. }
+  assert (H2 : Rabs (ya * r) <= (1 + v) * Rabs (ya / yb) + Rabs ya * eta)
+    by (pose proof (Rabs_triang_inv (ya * r) (ya / yb)); lra).
+  assert (v * Rabs (ya * r) <= v * ((1 + v) * Rabs (ya / yb) + Rabs ya * eta))
+    by (apply Rmult_le_compat_l; lra).
+  replace (y - ya / yb) with ((y - ya * r) + (ya * r - ya / yb)) by ring.
+  pose proof (Rabs_triang (y - ya * r) (ya * r - ya / yb)).
+  assert (v * (2 + v) * Rabs (ya / yb) <= v * (2 + v) * q) by (apply Rmult_le_compat_l; nra).
+  assert ((1 + v) * Rabs ya * eta <= (1 + v) * p * eta)
+    by (apply Rmult_le_compat_r; [lra | apply Rmult_le_compat_l; lra]).
+  lra.
+Qed.
+
+Lemma sqrt_ge : forall S xa, 0 < S -> S * S <= xa -> S <= sqrt xa.
+Proof.
+  intros S xa HS Hx. rewrite <- (sqrt_square S) by lra. now apply sqrt_le_1_alt.
+Qed.
+
+(** T j bounds the root of the computed operand from below: sqrt y_a >= T j >= 0. *)
+Lemma sqrt_err : forall xa ya Ea S T, 0 < S -> S * S <= xa -> 0 <= T -> T * T <= ya ->
+  Rabs (ya - xa) <= Ea -> Rabs (sqrt ya - sqrt xa) <= Ea / (S + T).
+Proof.
+  intros xa ya Ea S T HS Hx HT Hy Ha.
+  assert (HSx := sqrt_ge S xa HS Hx).
+  assert (HTy : T <= sqrt ya) by (rewrite <- (sqrt_square T) by lra; now apply sqrt_le_1_alt).
+  assert (0 <= xa) by nra. assert (0 <= ya) by nra.
+  assert (Heq : (sqrt ya - sqrt xa) * (sqrt ya + sqrt xa) = ya - xa).
+  { transitivity (sqrt ya * sqrt ya - sqrt xa * sqrt xa); [ring|].
+    rewrite !sqrt_sqrt by lra. reflexivity. }
+  assert (Habs : Rabs (sqrt ya - sqrt xa) * (sqrt ya + sqrt xa) = Rabs (ya - xa)).
+  { rewrite <- Heq, Rabs_mult, (Rabs_pos_eq (sqrt ya + sqrt xa)) by lra. reflexivity. }
+  apply Rmult_le_reg_r with (S + T); [lra|]. unfold Rdiv.
+  rewrite Rmult_assoc, Rinv_l, Rmult_1_r by lra.
+  pose proof (Rabs_pos (sqrt ya - sqrt xa)).
+  assert (Rabs (sqrt ya - sqrt xa) * (S + T) <= Rabs (sqrt ya - sqrt xa) * (sqrt ya + sqrt xa))
+    by (apply Rmult_le_compat_l; lra).
+  lra.
+Qed.
+
+Lemma sqrt_between : forall la ha xa L H S, la <= xa <= ha -> 0 < S -> S * S <= la ->
+  L <= S -> 0 <= H -> ha <= H * H -> L <= sqrt xa <= H.
+Proof.
+  intros la ha xa L H S Hx HS HSl HL HH Hh. split.
+  - pose proof (sqrt_ge S xa HS). lra.
+  - rewrite <- (sqrt_square H) by lra. apply sqrt_le_1_alt. lra.
+Qed.
+
+Lemma rsqrt_err : forall xa ya Ea S, 0 < S -> S * S <= xa -> S * S <= ya ->
+  Rabs (ya - xa) <= Ea -> Rabs (/ sqrt ya - / sqrt xa) <= Ea / (2 * (S * S * S)).
+Proof.
+  intros xa ya Ea S HS Hx Hy Ha.
+  pose proof (sqrt_ge S xa HS Hx) as Hp. pose proof (sqrt_ge S ya HS Hy) as Hq.
+  pose proof (Rmult_le_pos S S ltac:(lra) ltac:(lra)).
+  set (p := sqrt xa) in *. set (q := sqrt ya) in *.
+  assert (Heq : (/ q - / p) * (p * q * (p + q)) = xa - ya).
+  { transitivity (p * p - q * q); [field; split; lra|].
+    unfold p, q. rewrite !sqrt_sqrt by lra. reflexivity. }
+  assert (Habs : Rabs (/ q - / p) * (p * q * (p + q)) = Rabs (ya - xa)).
+  { rewrite (Rabs_minus_sym ya xa), <- Heq, Rabs_mult, (Rabs_pos_eq (p * q * (p + q))).
+    - reflexivity.
+    - apply Rmult_le_pos; [apply Rmult_le_pos|]; lra. }
+  assert (HS2 : S * S <= p * q) by (apply Rmult_le_compat; lra).
+  assert (HS3 : S * S * (2 * S) <= p * q * (p + q))
+    by (apply Rmult_le_compat; lra).
+  assert (HS3p : 0 < S * S * S) by (repeat apply Rmult_lt_0_compat; lra).
+  apply Rmult_le_reg_r with (2 * (S * S * S)); [lra|]. unfold Rdiv.
+  rewrite (Rmult_assoc Ea), Rinv_l, Rmult_1_r by lra.
+  pose proof (Rabs_pos (/ q - / p)).
+  assert (Rabs (/ q - / p) * (S * S * (2 * S)) <= Rabs (/ q - / p) * (p * q * (p + q)))
+    by (apply Rmult_le_compat_l; lra).
+  replace (Rabs (/ q - / p) * (2 * (S * S * S)))
+    with (Rabs (/ q - / p) * (S * S * (2 * S))) by ring.
+  lra.
+Qed.
+
+Lemma rsqrt_between : forall la ha xa L H S, la <= xa <= ha -> 0 < S -> S * S <= la ->
+  0 < L -> L * L * ha <= 1 -> 1 <= H * S -> L <= / sqrt xa <= H.
+Proof.
+  intros la ha xa L H S Hx HS HSl HL HLh HH.
+  pose proof (Rmult_le_pos S S ltac:(lra) ltac:(lra)).
+  pose proof (sqrt_ge S xa HS ltac:(lra)) as Hp.
+  assert (Hsx : sqrt xa * sqrt xa = xa) by (apply sqrt_sqrt; lra).
+  split.
+  - assert (HL2 : L * L * xa <= L * L * ha)
+      by (apply Rmult_le_compat_l; [apply Rmult_le_pos|]; lra).
+    assert (Ht : 0 <= L * sqrt xa) by (apply Rmult_le_pos; lra).
+    assert (Ht2 : (L * sqrt xa) * (L * sqrt xa) <= 1)
+      by (replace ((L * sqrt xa) * (L * sqrt xa)) with (L * L * (sqrt xa * sqrt xa)) by ring;
+          rewrite Hsx; lra).
+    assert (Ht1 : L * sqrt xa <= 1) by nra.
+    apply Rmult_le_reg_r with (sqrt xa); [lra|]. rewrite Rinv_l by lra. exact Ht1.
+  - assert (/ sqrt xa <= / S) by (apply Rinv_le_contravar; lra).
+    assert (/ S <= H).
+    { apply Rmult_le_reg_r with S; [lra|]. rewrite Rinv_l by lra. exact HH. }
+    lra.
+Qed.
+
+(** ** Sums in any order *)
+
+Lemma fold_app : forall l1 l2,
+  fold_right Rplus 0 (l1 ++ l2) = fold_right Rplus 0 l1 + fold_right Rplus 0 l2.
+Proof. induction l1 as [|a l1 IH]; simpl; intros; [ring | rewrite IH; ring]. Qed.
+
+Lemma fold_perm : forall l l', Permutation l l' -> fold_right Rplus 0 l = fold_right Rplus 0 l'.
+Proof. induction 1; simpl; [reflexivity | congruence | ring | congruence]. Qed.
+
+Lemma fold_abs : forall l, Rabs (fold_right Rplus 0 l) <= fold_right Rplus 0 (map Rabs l).
+Proof.
+  induction l as [|a l IH]; simpl.
+  - rewrite Rabs_R0. lra.
+  - pose proof (Rabs_triang a (fold_right Rplus 0 l)). lra.
+Qed.
+
+Lemma le_mul_ge1 : forall a w, 0 <= a -> 1 <= w -> a <= a * w.
+Proof. intros. nra. Qed.
+
+(** One addition joining two partial sums of n1 + 1 and n2 + 1 terms. *)
+Lemma sum_step : forall v eta (n1 n2 : nat) s1 s2 A1 A2 r1 r2 y,
+  0 <= v -> 0 <= eta -> Rabs s1 <= A1 -> Rabs s2 <= A2 ->
+  Rabs (r1 - s1) <= ((1 + v) ^ n1 - 1) * A1 + INR n1 * (1 + v) ^ n1 * eta ->
+  Rabs (r2 - s2) <= ((1 + v) ^ n2 - 1) * A2 + INR n2 * (1 + v) ^ n2 * eta ->
+  ap1 v eta y (r1 + r2) ->
+  Rabs (y - (s1 + s2)) <= ((1 + v) ^ (n1 + n2 + 1) - 1) * (A1 + A2)
+                          + INR (n1 + n2 + 1) * (1 + v) ^ (n1 + n2 + 1) * eta.
+Proof.
+  intros v eta n1 n2 s1 s2 A1 A2 r1 r2 y Hv He H1 H2 E1 E2 Hy. unfold ap1 in Hy.
+  assert (Hw : (1 + v) ^ (n1 + n2 + 1) = (1 + v) ^ n1 * (1 + v) ^ n2 * (1 + v))
+    by (rewrite !pow_add; ring).
+  rewrite Hw, !plus_INR. simpl (INR 1).
+  pose proof (pow_R1_Rle (1 + v) n1 ltac:(lra)) as W1.
+  pose proof (pow_R1_Rle (1 + v) n2 ltac:(lra)) as W2.
+  set (w1 := (1 + v) ^ n1) in *. set (w2 := (1 + v) ^ n2) in *.
+  pose proof (pos_INR n1) as N1. pose proof (pos_INR n2) as N2.
+  pose proof (Rabs_pos s1). pose proof (Rabs_pos s2).
+  assert (Hr : Rabs (r1 + r2) <= w1 * A1 + w2 * A2 + (INR n1 * w1 + INR n2 * w2) * eta).
+  { replace (r1 + r2) with ((r1 - s1) + (r2 - s2) + (s1 + s2)) by ring.
+    pose proof (Rabs_triang ((r1 - s1) + (r2 - s2)) (s1 + s2)).
+    pose proof (Rabs_triang (r1 - s1) (r2 - s2)). pose proof (Rabs_triang s1 s2). lra. }
+  assert (v * Rabs (r1 + r2) <= v * (w1 * A1 + w2 * A2 + (INR n1 * w1 + INR n2 * w2) * eta))
+    by (apply Rmult_le_compat_l; lra).
+  replace (y - (s1 + s2)) with ((y - (r1 + r2)) + (r1 - s1) + (r2 - s2)) by ring.
+  pose proof (Rabs_triang ((y - (r1 + r2)) + (r1 - s1)) (r2 - s2)).
+  pose proof (Rabs_triang (y - (r1 + r2)) (r1 - s1)).
+  pose proof (le_mul_ge1 ((1 + v) * w1 * A1) w2 ltac:(repeat apply Rmult_le_pos; lra) W2).
+  pose proof (le_mul_ge1 ((1 + v) * w2 * A2) w1 ltac:(repeat apply Rmult_le_pos; lra) W1).
+  pose proof (le_mul_ge1 ((1 + v) * INR n1 * w1 * eta) w2
+                ltac:(repeat apply Rmult_le_pos; lra) W2).
+  pose proof (le_mul_ge1 ((1 + v) * INR n2 * w2 * eta) w1
+                ltac:(repeat apply Rmult_le_pos; lra) W1).
+  assert (1 <= w1 * w2 * (1 + v)).
+  { pose proof (le_mul_ge1 w1 w2 ltac:(lra) W2).
+    pose proof (le_mul_ge1 (w1 * w2) (1 + v) ltac:(lra) ltac:(lra)). lra. }
+  pose proof (le_mul_ge1 eta (w1 * w2 * (1 + v)) He ltac:(lra)).
+  nra.
+Qed.
+
+(** The error of a sum of k >= 1 computed terms in any order. *)
+Lemma sum_exec_err : forall v eta, 0 <= v -> 0 <= eta -> forall ts y, sum_exec v eta ts y ->
+  (1 <= length ts)%nat /\
+  Rabs (y - fold_right Rplus 0 ts)
+    <= ((1 + v) ^ (length ts - 1) - 1) * fold_right Rplus 0 (map Rabs ts)
+       + INR (length ts - 1) * (1 + v) ^ (length ts - 1) * eta.
+Proof.
+  intros v eta Hv He ts y H.
+  induction H as [t | l l1 l2 r1 r2 y Hp Hl1 Hl2 Hs1 [Hk1 IH1] Hs2 [Hk2 IH2] Hy].
+  - simpl. split; [lia|]. replace (t - (t + 0)) with 0 by ring. rewrite Rabs_R0.
+    pose proof (Rabs_pos t). simpl. lra.
+  - assert (Hlen : length l = (length l1 + length l2)%nat)
+      by (rewrite (Permutation_length Hp); apply app_length).
+    rewrite (fold_perm _ _ Hp), (fold_perm _ _ (Permutation_map Rabs Hp)), map_app, !fold_app.
+    rewrite Hlen.
+    replace (length l1 + length l2 - 1)%nat
+      with ((length l1 - 1) + (length l2 - 1) + 1)%nat by lia.
+    split; [lia|].
+    apply sum_step with r1 r2; auto using fold_abs.
+Qed.
+
+(** ** Lemmas on sums over node lists *)
+
+Lemma sumR_le : forall f h l, Forall (fun i => f i <= h i) l -> sumR f l <= sumR h l.
+Proof.
+  intros f h l H. unfold sumR. induction H; simpl; lra.
+Qed.
+
+Lemma sumR_diff : forall f h e l, Forall (fun i => Rabs (f i - h i) <= e i) l ->
+  Rabs (sumR f l - sumR h l) <= sumR e l.
+Proof.
+  intros f h e l H. unfold sumR. induction H as [|i l Hi _ IH]; simpl.
+  - rewrite Rminus_diag_eq, Rabs_R0 by reflexivity. lra.
+  - replace (f i + fold_right Rplus 0 (map f l) - (h i + fold_right Rplus 0 (map h l)))
+      with ((f i - h i) + (fold_right Rplus 0 (map f l) - fold_right Rplus 0 (map h l)))
+      by ring.
+    pose proof (Rabs_triang (f i - h i)
+                  (fold_right Rplus 0 (map f l) - fold_right Rplus 0 (map h l))). lra.
+Qed.
+
+(** ** The rules, one operation at a time *)
+
+Lemma case_sum : forall v eta (l : list nat) (x y lo hi E : nat -> R) yj L H Ej,
+  0 <= v -> 0 <= eta ->
+  Forall (fun i => lo i <= x i <= hi i /\ Rabs (y i - x i) <= E i) l ->
+  sum_exec v eta (map y l) yj -> L <= sumR lo l -> sumR hi l <= H ->
+  sumR E l + ((1 + v) ^ (length l - 1) - 1) * sumR (fun i => mag (lo i) (hi i) + E i) l
+    + INR (length l - 1) * (1 + v) ^ (length l - 1) * eta <= Ej ->
+  L <= sumR x l <= H /\ Rabs (yj - sumR x l) <= Ej.
+Proof.
+  intros v eta l x y lo hi E yj L H Ej Hv He HF Hs HL HH HE. split.
+  - assert (sumR lo l <= sumR x l) by (apply sumR_le; eapply Forall_impl; [|exact HF]; simpl; intros; lra).
+    assert (sumR x l <= sumR hi l) by (apply sumR_le; eapply Forall_impl; [|exact HF]; simpl; intros; lra).
+    lra.
+  - destruct (sum_exec_err v eta Hv He _ _ Hs) as [_ Herr].
+    rewrite map_length, map_map in Herr. change (fold_right Rplus 0 (map y l)) with (sumR y l) in Herr.
+    change (fold_right Rplus 0 (map (fun i => Rabs (y i)) l))
+      with (sumR (fun i => Rabs (y i)) l) in Herr.
+    assert (Habs : sumR (fun i => Rabs (y i)) l <= sumR (fun i => mag (lo i) (hi i) + E i) l).
+    { apply sumR_le. eapply Forall_impl; [|exact HF]. simpl. intros i [Hi Ei].
+      pose proof (mag_ge _ _ _ Hi). pose proof (Rabs_triang_inv (y i) (x i)). lra. }
+    assert (Hd : Rabs (sumR y l - sumR x l) <= sumR E l)
+      by (apply sumR_diff; eapply Forall_impl; [|exact HF]; simpl; tauto).
+    pose proof (pow_R1_Rle (1 + v) (length l - 1) ltac:(lra)).
+    assert (((1 + v) ^ (length l - 1) - 1) * sumR (fun i => Rabs (y i)) l
+            <= ((1 + v) ^ (length l - 1) - 1) * sumR (fun i => mag (lo i) (hi i) + E i) l)
+      by (apply Rmult_le_compat_l; lra).
+    replace (yj - sumR x l) with ((yj - sumR y l) + (sumR y l - sumR x l)) by ring.
+    pose proof (Rabs_triang (yj - sumR y l) (sumR y l - sumR x l)). lra.
+Qed.
+
+(** ** Soundness *)
+
+(** One node, given the claims for all earlier nodes. *)
+Lemma node_sound : forall (g : nat -> node) (X : nat -> R) (eta : R) (x y lo hi E S T : nat -> R) j,
+  0 <= eta ->
+  (forall a, (a < j)%nat -> lo a <= x a <= hi a /\ Rabs (y a - x a) <= E a) ->
+  op_wf (nop (g j)) j -> 0 <= nv (g j) ->
+  x j = exact_op X x (nop (g j)) -> exec_op eta X y (g j) (y j) ->
+  iv_ok g X lo hi S j -> err_ok g eta lo hi E S T j ->
+  lo j <= x j <= hi j /\ Rabs (y j - x j) <= E j.
+Proof.
+  intros g X eta x y lo hi E S T j He IH. unfold exec_op, iv_ok, err_ok.
+  destruct (g j) as [o v]. cbn [nop nv].
+  destruct o as [i | c | a b | a b | a b | a b | a b | a | a | l];
+    cbn [op_wf exact_op]; intros Hwf Hv Hx Hy [Hlh Hiv] [HE0 Her]; rewrite Hx.
+  - (* In *)
+    split; [exact Hiv|].
+    pose proof (ap1_step v eta (y j) (X i) (X i) 0 (mag (lo j) (hi j)) Hv Hy).
+    rewrite Rminus_diag_eq, Rabs_R0 in H by reflexivity.
+    pose proof (H (Rle_refl 0) (mag_ge _ _ _ Hiv)). lra.
+  - (* Cst *)
+    split; [exact Hiv|]. rewrite Hy, Rminus_diag_eq, Rabs_R0 by reflexivity. exact HE0.
+  - (* Add *)
+    destruct Hwf as [Ha Hb]. destruct (IH a Ha) as [Ia Ea]. destruct (IH b Hb) as [Ib Eb].
+    assert (Hi : lo j <= x a + x b <= hi j) by lra. split; [exact Hi|].
+    pose proof (ap1_step v eta (y j) (y a + y b) (x a + x b) (E a + E b) _ Hv Hy
+                  (add_err _ _ _ _ _ _ Ea Eb) (mag_ge _ _ _ Hi)). lra.
+  - (* Sub *)
+    destruct Hwf as [Ha Hb]. destruct (IH a Ha) as [Ia Ea]. destruct (IH b Hb) as [Ib Eb].
+    assert (Hi : lo j <= x a - x b <= hi j) by lra. split; [exact Hi|].
+    pose proof (ap1_step v eta (y j) (y a - y b) (x a - x b) (E a + E b) _ Hv Hy
+                  (sub_err _ _ _ _ _ _ Ea Eb) (mag_ge _ _ _ Hi)). lra.
+  - (* Mul *)
+    destruct Hwf as [Ha Hb]. destruct (IH a Ha) as [Ia Ea]. destruct (IH b Hb) as [Ib Eb].
+    apply Forall4 in Hiv.
+    assert (Hi : lo j <= x a * x b <= hi j)
+      by (apply (mul_between (lo a) (hi a) (lo b) (hi b)); tauto).
+    split; [exact Hi|].
+    pose proof (ap1_step v eta (y j) (y a * y b) (x a * x b) _ _ Hv Hy
+             (mul_err _ _ _ _ _ _ _ _ Ea Eb (mag_ge _ _ _ Ia) (mag_ge _ _ _ Ib))
+             (mag_ge _ _ _ Hi)). lra.
+  - (* Div *)
+    destruct Hwf as [Ha Hb]. destruct (IH a Ha) as [Ia Ea]. destruct (IH b Hb) as [Ib Eb].
+    destruct Hiv as [Hs Hiv]. destruct Her as [Hlb Her].
+    assert (Hi : lo j <= x a / x b <= hi j) by (apply (div_between (lo a) (hi a) (lo b) (hi b)); auto).
+    split; [exact Hi|].
+    pose proof (ap1_step v eta (y j) (y a / y b) (x a / x b) _ _ Hv Hy
+             (div_err _ _ _ _ _ _ _ _ (div_lb _ _ _ Ib Hs) Hlb Ea Eb (mag_ge _ _ _ Hi))
+             (mag_ge _ _ _ Hi)). lra.
+  - (* DivE *)
+    destruct Hwf as [Ha Hb]. destruct (IH a Ha) as [Ia Ea]. destruct (IH b Hb) as [Ib Eb].
+    destruct Hiv as [Hs Hiv]. destruct Her as (Hlb & Her1 & Her2).
+    assert (Hi : lo j <= x a / x b <= hi j) by (apply (div_between (lo a) (hi a) (lo b) (hi b)); auto).
+    split; [exact Hi|].
+    pose proof (div_lb _ _ _ Ib Hs) as Hl.
+    pose proof (div_err _ _ _ _ _ _ _ _ Hl Hlb Ea Eb (mag_ge _ _ _ Hi)) as Hd.
+    destruct Hy as [Hy | (r & Hr & Hy)].
+    + pose proof (ap1_step v eta (y j) (y a / y b) (x a / x b) _ _ Hv Hy Hd (mag_ge _ _ _ Hi)). lra.
+    + assert (Hyb : y b <> 0).
+      { intro Hz. pose proof (Rabs_triang_inv (x b) (y b)). rewrite Rabs_minus_sym in Eb.
+        rewrite Hz, Rminus_0_r in *. lra. }
+      assert (HQ : Rabs (y a / y b) <= mag (lo j) (hi j) + (E a + mag (lo j) (hi j) * E b)
+                                        / (Rmin (Rabs (lo b)) (Rabs (hi b)) - E b)).
+      { pose proof (Rabs_triang_inv (y a / y b) (x a / x b)). pose proof (mag_ge _ _ _ Hi). lra. }
+      assert (HP : Rabs (y a) <= mag (lo a) (hi a) + E a).
+      { pose proof (Rabs_triang_inv (y a) (x a)). pose proof (mag_ge _ _ _ Ia). lra. }
+      pose proof (recip_err v eta (y a) (y b) r (y j) _ _ Hv He Hyb Hr Hy HQ HP).
+      replace (y j - x a / x b) with ((y j - y a / y b) + (y a / y b - x a / x b)) by ring.
+      pose proof (Rabs_triang (y j - y a / y b) (y a / y b - x a / x b)). lra.
+  - (* Sqrt *)
+    destruct (IH a Hwf) as [Ia Ea]. destruct Hiv as (HS & HSl & HL & HH & Hh).
+    destruct Her as (HES & HT & HTl & Her).
+    assert (Hi : lo j <= sqrt (x a) <= hi j) by (apply (sqrt_between (lo a) (hi a) _ _ _ (S j)); auto).
+    split; [exact Hi|].
+    assert (Hya : T j * T j <= y a).
+    { pose proof (Rabs_triang_inv (x a) (y a)). rewrite Rabs_minus_sym in Ea.
+      unfold Rabs in *. destruct Rcase_abs; lra. }
+    pose proof (ap1_step v eta (y j) (sqrt (y a)) (sqrt (x a)) _ _ Hv Hy
+             (sqrt_err (x a) (y a) (E a) (S j) (T j) HS ltac:(lra) HT Hya Ea) (mag_ge _ _ _ Hi)).
+    lra.
+  - (* Rsqrt *)
+    destruct (IH a Hwf) as [Ia Ea]. destruct Hiv as (HS & HSl & HL & HLh & HH).
+    destruct Her as [HES Her].
+    assert (Hi : lo j <= / sqrt (x a) <= hi j)
+      by (apply (rsqrt_between (lo a) (hi a) _ _ _ (S j)); auto).
+    split; [exact Hi|].
+    assert (Hya : S j * S j <= y a).
+    { pose proof (Rabs_triang_inv (x a) (y a)). rewrite Rabs_minus_sym in Ea.
+      unfold Rabs in *. destruct Rcase_abs; lra. }
+    pose proof (ap1_step v eta (y j) (/ sqrt (y a)) (/ sqrt (x a)) _ _ Hv Hy
+             (rsqrt_err (x a) (y a) (E a) (S j) HS ltac:(lra) Hya Ea) (mag_ge _ _ _ Hi)). lra.
+  - (* Sum *)
+    destruct Hwf as [_ Hl]. destruct Hiv as [HL HH].
+    change (fold_right Rplus 0 (map x l)) with (sumR x l).
+    apply (case_sum v eta l x y lo hi E); auto.
+    eapply Forall_impl; [|exact Hl]. intros a Ha. exact (IH a Ha).
+Qed.
+
+Theorem graph_sound :
+  forall (g : nat -> node) (N : nat) (X : nat -> R) (eta : R) (x y lo hi E S T : nat -> R),
+  0 <= eta ->
+  (forall j, (j < N)%nat -> op_wf (nop (g j)) j /\ 0 <= nv (g j)) ->
+  (forall j, (j < N)%nat -> x j = exact_op X x (nop (g j))) ->
+  (forall j, (j < N)%nat -> exec_op eta X y (g j) (y j)) ->
+  (forall j, (j < N)%nat -> iv_ok g X lo hi S j /\ err_ok g eta lo hi E S T j) ->
+  forall j, (j < N)%nat -> lo j <= x j <= hi j /\ Rabs (y j - x j) <= E j.
+Proof.
+  intros g N X eta x y lo hi E S T He Hwf Hx Hy Hc.
+  assert (Hall : forall n j, (j < n)%nat -> (j < N)%nat ->
+                 lo j <= x j <= hi j /\ Rabs (y j - x j) <= E j).
+  { induction n as [|n IHn]; intros j Hjn HjN; [lia|].
+    destruct (Hwf j HjN) as [Hw Hv]. destruct (Hc j HjN) as [Hi Her].
+    apply (node_sound g X eta x y lo hi E S T j He); auto.
+    intros a Ha. apply IHn; lia. }
+  intros j Hj. exact (Hall (Nat.succ j) j (Nat.lt_succ_diag_r j) Hj).
+Qed.
+
+(** ** FloatModelK's three-term sums are sums in any order *)
+
+Lemma sum3_rel_exec : forall ua eta q1 q2 q3 y,
+  sum3_rel ua eta q1 q2 q3 y -> sum_exec ua eta [q1; q2; q3] y.
+Proof.
+  intros ua eta q1 q2 q3 y [r [[H1 H2] | [[H1 H2] | [H1 H2]]]].
+  - apply (sum_split ua eta _ [q1; q2] [q3] r q3);
+      [apply Permutation_refl | discriminate | discriminate | | constructor | exact H2].
+    apply (sum_split ua eta _ [q1] [q2] q1 q2);
+      [apply Permutation_refl | discriminate | discriminate | constructor .. | exact H1].
+  - apply (sum_split ua eta _ [q1; q3] [q2] r q2);
+      [apply perm_skip, perm_swap | discriminate | discriminate | | constructor | exact H2].
+    apply (sum_split ua eta _ [q1] [q3] q1 q3);
+      [apply Permutation_refl | discriminate | discriminate | constructor .. | exact H1].
+  - apply (sum_split ua eta _ [q2; q3] [q1] r q1);
+      [apply (Permutation_cons_append [q2; q3] q1) | discriminate | discriminate | |
+       constructor | exact H2].
+    apply (sum_split ua eta _ [q2] [q3] q2 q3);
+      [apply Permutation_refl | discriminate | discriminate | constructor .. | exact H1].
+Qed.

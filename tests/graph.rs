@@ -330,11 +330,15 @@ const GRAPH_V_RULES: [&str; 12] = [
 fn graph_certificates_satisfy_the_theorems_rules() {
     use phong_approx::tolerance::graph::{evaluate, Op};
     use phong_approx::tolerance::graphs::method_graphs;
-    let v_file = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/proofs/Graph.v")).unwrap();
+    let v_file =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/proofs/Graph.v")).unwrap();
     let flat = |s: &str| s.split_whitespace().collect::<Vec<_>>().join(" ");
     let text = flat(&v_file);
     for rule in GRAPH_V_RULES {
-        assert!(text.contains(&flat(rule)), "proofs/Graph.v no longer states: {rule}");
+        assert!(
+            text.contains(&flat(rule)),
+            "proofs/Graph.v no longer states: {rule}"
+        );
     }
     let r = |x: f64| Q::from_float(x).unwrap();
     let mag = |l: &Q, h: &Q| l.abs().max(h.abs());
@@ -355,10 +359,21 @@ fn graph_certificates_satisfy_the_theorems_rules() {
             }
             v
         };
-        let profiles = [(Profile::Ieee, Format::Binary32), (Profile::Shader, Format::Binary32), (Profile::Ieee, Format::Binary64)];
+        let profiles = [
+            (Profile::Ieee, Format::Binary32),
+            (Profile::Shader, Format::Binary32),
+            (Profile::Ieee, Format::Binary64),
+        ];
         for &(profile, format) in &profiles[..tiered(2, 3)] {
             let m = model(profile, format).unwrap();
-            for method in [Method::Gouraud, Method::CorrectedEuler, Method::Euler, Method::Duff, Method::Phong, Method::SymmetricPhong] {
+            for method in [
+                Method::Gouraud,
+                Method::CorrectedEuler,
+                Method::Euler,
+                Method::Duff,
+                Method::Phong,
+                Method::SymmetricPhong,
+            ] {
                 for f in method_graphs(method, Form::Any, s.n, &m).unwrap() {
                     let Ok(b) = evaluate(&f.graph, &inputs(s), &m) else {
                         continue;
@@ -371,12 +386,18 @@ fn graph_certificates_satisfy_the_theorems_rules() {
                         b.t.iter().map(|&x| r(x)).collect(),
                     );
                     let eta = r(m.eta);
-                    let (zero, one, two) = (Q::zero(), Q::from_integer(1.into()), Q::from_integer(2.into()));
+                    let (zero, one, two) = (
+                        Q::zero(),
+                        Q::from_integer(1.into()),
+                        Q::from_integer(2.into()),
+                    );
                     for (j, node) in f.graph.nodes().iter().enumerate() {
                         let v = r(m.kappa(node.class)) * r(m.u);
                         let mj = mag(&lo[j], &hi[j]);
-                        let ok_iv = |lj: &Q, hj: &Q, ps: &[Q]| ps.iter().all(|p| lj <= p && p <= hj);
-                        let tail = |d: &Q| d.clone() + v.clone() * (mj.clone() + d.clone()) + eta.clone();
+                        let ok_iv =
+                            |lj: &Q, hj: &Q, ps: &[Q]| ps.iter().all(|p| lj <= p && p <= hj);
+                        let tail =
+                            |d: &Q| d.clone() + v.clone() * (mj.clone() + d.clone()) + eta.clone();
                         let what = format!("{method} {} node {j} {:?}: {s}", f.name, node.op);
                         assert!(lo[j] <= hi[j] && e[j] >= zero, "{what}");
                         let (iv, er) = match &node.op {
@@ -395,18 +416,31 @@ fn graph_certificates_satisfy_the_theorems_rules() {
                                 (iv, tail(&d) <= e[j])
                             }
                             Op::Mul(a, c) => {
-                                let ps = [&lo[*a] * &lo[*c], &lo[*a] * &hi[*c], &hi[*a] * &lo[*c], &hi[*a] * &hi[*c]];
-                                let d = mag(&lo[*a], &hi[*a]) * &e[*c] + mag(&lo[*c], &hi[*c]) * &e[*a] + &e[*a] * &e[*c];
+                                let ps = [
+                                    &lo[*a] * &lo[*c],
+                                    &lo[*a] * &hi[*c],
+                                    &hi[*a] * &lo[*c],
+                                    &hi[*a] * &hi[*c],
+                                ];
+                                let d = mag(&lo[*a], &hi[*a]) * &e[*c]
+                                    + mag(&lo[*c], &hi[*c]) * &e[*a]
+                                    + &e[*a] * &e[*c];
                                 (ok_iv(&lo[j], &hi[j], &ps), tail(&d) <= e[j])
                             }
                             Op::Div(a, c) | Op::DivE(a, c) => {
                                 let sign = lo[*c] > zero || hi[*c] < zero;
-                                let ps = [&lo[*a] / &lo[*c], &lo[*a] / &hi[*c], &hi[*a] / &lo[*c], &hi[*a] / &hi[*c]];
+                                let ps = [
+                                    &lo[*a] / &lo[*c],
+                                    &lo[*a] / &hi[*c],
+                                    &hi[*a] / &lo[*c],
+                                    &hi[*a] / &hi[*c],
+                                ];
                                 let lb = lo[*c].abs().min(hi[*c].abs());
                                 let d = (&e[*a] + &mj * &e[*c]) / (&lb - &e[*c]);
                                 let mut er = e[*c] < lb && tail(&d) <= e[j];
                                 if matches!(node.op, Op::DivE(..)) {
-                                    let second = &d + &v * (&two + &v) * (&mj + &d)
+                                    let second = &d
+                                        + &v * (&two + &v) * (&mj + &d)
                                         + (&one + &v) * (mag(&lo[*a], &hi[*a]) + &e[*a]) * &eta
                                         + &eta;
                                     er = er && second <= e[j];
@@ -414,16 +448,25 @@ fn graph_certificates_satisfy_the_theorems_rules() {
                                 (sign && ok_iv(&lo[j], &hi[j], &ps), er)
                             }
                             Op::Sqrt(a) => (
-                                sj[j] > zero && &sj[j] * &sj[j] <= lo[*a] && lo[j] <= sj[j] && hi[j] >= zero && hi[*a] <= &hi[j] * &hi[j],
+                                sj[j] > zero
+                                    && &sj[j] * &sj[j] <= lo[*a]
+                                    && lo[j] <= sj[j]
+                                    && hi[j] >= zero
+                                    && hi[*a] <= &hi[j] * &hi[j],
                                 e[*a] <= &sj[j] * &sj[j]
                                     && tj[j] >= zero
                                     && &tj[j] * &tj[j] <= &lo[*a] - &e[*a]
                                     && tail(&(&e[*a] / (&sj[j] + &tj[j]))) <= e[j],
                             ),
                             Op::Rsqrt(a) => (
-                                sj[j] > zero && &sj[j] * &sj[j] <= lo[*a] && lo[j] > zero && &lo[j] * &lo[j] * &hi[*a] <= one && &hi[j] * &sj[j] >= one,
+                                sj[j] > zero
+                                    && &sj[j] * &sj[j] <= lo[*a]
+                                    && lo[j] > zero
+                                    && &lo[j] * &lo[j] * &hi[*a] <= one
+                                    && &hi[j] * &sj[j] >= one,
                                 e[*a] <= &lo[*a] - &sj[j] * &sj[j]
-                                    && tail(&(&e[*a] / (&two * (&sj[j] * &sj[j] * &sj[j])))) <= e[j],
+                                    && tail(&(&e[*a] / (&two * (&sj[j] * &sj[j] * &sj[j]))))
+                                        <= e[j],
                             ),
                             Op::Sum(l) => {
                                 let k = l.len();
@@ -433,7 +476,9 @@ fn graph_certificates_satisfy_the_theorems_rules() {
                                 }
                                 let se: Q = l.iter().map(|&i| e[i].clone()).sum();
                                 let sm: Q = l.iter().map(|&i| mag(&lo[i], &hi[i]) + &e[i]).sum();
-                                let bound = se + (&w - &one) * sm + Q::from_integer((k as i64 - 1).into()) * &w * &eta;
+                                let bound = se
+                                    + (&w - &one) * sm
+                                    + Q::from_integer((k as i64 - 1).into()) * &w * &eta;
                                 let iv = lo[j] <= l.iter().map(|&i| lo[i].clone()).sum::<Q>()
                                     && l.iter().map(|&i| hi[i].clone()).sum::<Q>() <= hi[j];
                                 (iv, bound <= e[j])
@@ -449,4 +494,23 @@ fn graph_certificates_satisfy_the_theorems_rules() {
     }
     println!("{nodes} nodes' certificates checked exactly");
     assert!(nodes > tiered(10_000, 1_000_000), "{nodes}");
+}
+
+/// The catalogue's `graphs` fact is what `tolerance::graphs` writes: a method has
+/// operation graphs exactly where its row says so, so its label names `graph_sound`
+/// (`tolerance::profile::Status::PerPixel`) exactly where `check` applies them.
+#[test]
+fn the_catalogue_names_the_methods_with_graphs() {
+    use phong_approx::tolerance::graphs::method_graphs;
+    use phong_approx::tolerance::profile::{status, Status};
+    let m = model(Profile::Ieee, Format::Binary32).unwrap();
+    for method in Method::ALL {
+        let has = method_graphs(method, Form::Any, 4, &m).is_some();
+        assert_eq!(has, method.info().profiles.graphs, "{method}");
+        for profile in [Profile::Ieee, Profile::Shader] {
+            if let Some(st) = status(method, profile, Format::Binary32) {
+                assert_eq!(matches!(st, Status::PerPixel(_)), has, "{method} {profile}");
+            }
+        }
+    }
 }

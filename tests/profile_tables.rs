@@ -98,11 +98,11 @@ fn euler_is_proved_under_ieee() {
     assert!(proved_bound(Method::Euler, Profile::Ieee, (1 << 24) + 1, F64).is_none());
     assert_eq!(
         status(Method::Euler, Profile::Ieee, F32),
-        Some(Status::Proved("profile_ieee_euler_binary32"))
+        Some(Status::PerPixel("profile_ieee_euler_binary32"))
     );
     assert_eq!(
         status(Method::Euler, Profile::Ieee, F64),
-        Some(Status::Proved("profile_ieee_euler_binary64_large"))
+        Some(Status::PerPixel("profile_ieee_euler_binary64_large"))
     );
     // `check` applies exactly the theorems' bound.
     for (f, ns) in [
@@ -160,7 +160,7 @@ fn shader_bounds_are_the_largest_of_every_form() {
         assert_eq!(got, names, "{m}");
         assert_eq!(
             status(m, Profile::Shader, F32),
-            Some(Status::Proved(names[0])),
+            Some(Status::PerPixel(names[0])),
             "{m}"
         );
         // The bound applied is never below any form's theorem, and is one of them.

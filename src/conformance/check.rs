@@ -400,12 +400,18 @@ fn case_report(
                     )
                 })
                 .flatten()
-                .map(|b| b.into_iter().map(|b| raise(b, format)).collect::<Vec<f64>>())
+                .map(|b| {
+                    b.into_iter()
+                        .map(|b| raise(b, format))
+                        .collect::<Vec<f64>>()
+                })
         }
         _ => None,
     };
     let allowed_abs = match tol {
-        _ if per_pixel.is_some() => per_pixel.as_ref().map(|b| b.iter().copied().fold(0f64, f64::max)),
+        _ if per_pixel.is_some() => per_pixel
+            .as_ref()
+            .map(|b| b.iter().copied().fold(0f64, f64::max)),
         Tolerance::Abs(x) => Some(x),
         // The power is not in the shader profile's model (Vulkan's pow is exp2 of a
         // log2, with errors relative to neither), nor in fixed point's: diffuse only.

@@ -73,6 +73,7 @@ const fn composed(
             form,
         },
         fixed: NO_FIXED,
+        graphs: true,
     }
 }
 const COMPOSED_PER_PIXEL: ProfileBounds =
@@ -94,6 +95,7 @@ const ADAPTIVE_PROFILES: ProfileBounds = ProfileBounds {
     fixed: FixedBound::Picks {
         theorem: "fixed_point_adaptive_decision",
     },
+    graphs: false,
     ..composed(
         ADAPTIVE_THEOREMS,
         "docs/float.md §10",
@@ -109,6 +111,7 @@ const GOURAUD_PROFILES: ProfileBounds = ProfileBounds {
         value_max: 1.0,
         slope_times_n: 2.0,
     },
+    graphs: true,
 };
 const CORRECTED_EULER_PROFILES: ProfileBounds = ProfileBounds {
     reference: Some([
@@ -122,6 +125,7 @@ const CORRECTED_EULER_PROFILES: ProfileBounds = ProfileBounds {
         value_max: 2.5,
         slope_times_n: 28.0,
     },
+    graphs: true,
 };
 const EULER_PROFILES: ProfileBounds = ProfileBounds {
     reference: None,
@@ -135,6 +139,7 @@ const EULER_PROFILES: ProfileBounds = ProfileBounds {
         value_max: 5.0,
         slope_times_n: 12.0,
     },
+    graphs: true,
 };
 const ANGLE_PROFILES: ProfileBounds = ProfileBounds {
     reference: None,
@@ -142,11 +147,13 @@ const ANGLE_PROFILES: ProfileBounds = ProfileBounds {
         "no profile bounds acos and cos (docs/float.md §18.5, \"Not covered\")",
     ),
     fixed: NO_FIXED,
+    graphs: false,
 };
 const RELATED_PROFILES: ProfileBounds = ProfileBounds {
     reference: None,
     float: FloatBound::None("their bounds follow this crate's own evaluation (docs/float.md §16)"),
     fixed: NO_FIXED,
+    graphs: false,
 };
 
 methods! {

@@ -209,7 +209,9 @@ pub fn acceptance<T: Float>(
     // graphs' bound at each pixel (the adaptive scheme: its picks' formulas).
     let n1 = span.n as usize + 1;
     let b: Vec<f64> = match profile {
-        Profile::Reference => vec![crate::tolerance::span_bound(method, &shape, T::FORMAT.u())?; n1],
+        Profile::Reference => {
+            vec![crate::tolerance::span_bound(method, &shape, T::FORMAT.u())?; n1]
+        }
         p if method.picks().is_some() => vec![
             crate::tolerance::profile::profile_span_bound(
                 method,

@@ -446,8 +446,11 @@ pub fn profile_pixel_bounds(
     if let Some(h) = light {
         inputs[6..].copy_from_slice(&h);
     }
-    let graph = model(profile, format)
-        .and_then(|m| pixel_bounds(method, form, shape.n, &inputs, &m).ok().flatten());
+    let graph = model(profile, format).and_then(|m| {
+        pixel_bounds(method, form, shape.n, &inputs, &m)
+            .ok()
+            .flatten()
+    });
     match (formula, graph) {
         (Some(f), Some(g)) => Some(g.into_iter().map(|x| x.min(f)).collect()),
         (Some(f), None) => Some(vec![f; shape.n as usize + 1]),

@@ -186,6 +186,11 @@ pub enum Status {
     /// A Coq theorem (its name): every bound of the `ieee`, `shader` and fixed-point
     /// profiles is proved or composed from proved theorems.
     Proved(&'static str),
+    /// A Coq theorem (its name) and, at each pixel where it is smaller, the bound of
+    /// the method's operation graphs (`tolerance::graphs`, `proofs/Graph.v`'s
+    /// `graph_sound`): the `ieee` and `shader` bounds of the methods whose catalogue
+    /// row has graphs.
+    PerPixel(&'static str),
 }
 
 impl Status {
@@ -193,6 +198,18 @@ impl Status {
     pub fn label(&self) -> String {
         match self {
             Status::Proved(t) => format!("proved ({t})"),
+            Status::PerPixel(t) => {
+                format!(
+                    "proved ({t}; per pixel the smaller with graph_sound on its operation graphs)"
+                )
+            }
+        }
+    }
+
+    /// The theorem named first.
+    pub fn theorem(&self) -> &'static str {
+        match *self {
+            Status::Proved(t) | Status::PerPixel(t) => t,
         }
     }
 }
@@ -209,10 +226,18 @@ pub fn status(method: crate::Method, profile: Profile, format: Format) -> Option
     if let Profile::Fixed { .. } = profile {
         return row.fixed.theorem().map(Status::Proved);
     }
+    // The methods with operation graphs: per pixel, the smaller with theirs.
+    let per_pixel = |t: &'static str| {
+        if row.graphs && arith(profile, format).is_some() {
+            Status::PerPixel(t)
+        } else {
+            Status::Proved(t)
+        }
+    };
     match row.float {
         // A float profile's theorems ([`proved`]), the first form's name.
         FloatBound::Proved(_) => {
-            proved(method, profile, format).map(|forms| Status::Proved(forms[0].theorem))
+            proved(method, profile, format).map(|forms| per_pixel(forms[0].theorem))
         }
         // The larger of the picks' proved bounds, composed with the band's theorems:
         // both picks must be proved.
@@ -228,7 +253,7 @@ pub fn status(method: crate::Method, profile: Profile, format: Format) -> Option
             .flatten(),
         // Composed from theorems where the profile has a standard model: the counts'.
         FloatBound::Composed { theorems, .. } => {
-            arith(profile, format).map(|_| Status::Proved(theorems[0]))
+            arith(profile, format).map(|_| per_pixel(theorems[0]))
         }
         FloatBound::None(_) => None,
     }

@@ -45,6 +45,9 @@ pub fn status_table() -> String {
         for c in cells {
             let label = c.map_or("none".to_string(), |c| match c {
                 Status::Proved(t) => format!("proved (`{t}`)"),
+                Status::PerPixel(t) => {
+                    format!("proved (`{t}`; per pixel the smaller with `graph_sound`)")
+                }
             });
             s += &format!(" {label} |");
         }
@@ -69,7 +72,7 @@ pub fn formula(method: crate::Method, profile: Profile, format: Format) -> Optio
         });
     }
     match status(method, profile, format)? {
-        Status::Proved(_) => {
+        Status::Proved(_) | Status::PerPixel(_) => {
             let mut forms: Vec<String> = proved(method, profile, format)?
                 .iter()
                 .map(|f| {
@@ -116,6 +119,9 @@ pub fn ieee_table() -> String {
         };
         let label = status(m, Profile::Ieee, b32).map_or(String::new(), |st| match st {
             Status::Proved(t) => format!("proved (`{t}`)"),
+            Status::PerPixel(t) => {
+                format!("proved (`{t}`; per pixel the smaller with `graph_sound`)")
+            }
         });
         s += &format!(
             "| `{}` | {f} | {} | {} | {} | {label} |\n",

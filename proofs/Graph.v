@@ -14,9 +14,16 @@
     operands ([exact_op]).  An execution [y] is any assignment of values in
     which every node is within FloatModelK's bound [ap1 v eta] of its
     operation applied to the COMPUTED operands ([exec_op]), with its own unit
-    v = kappa u ([nv]); so each operation may round differently (direction,
-    mode, flushing), and an exact operation (the product inside a fused
-    multiply-add) is allowed too.
+    v = kappa u ([nv]) and its own absolute term eta ([neta]); so each
+    operation may round differently (direction, mode, flushing), and an
+    exact operation (the product inside a fused multiply-add) is allowed too.
+    The absolute term is per node because of the ulp model (the last
+    section): an operation specified in ulps of its exact result (IEEE round
+    to nearest 1/2 ulp, a faithful GPU rounding 1 ulp, a GPU division 2.5
+    ulp, inverseSqrt 2 ulp) whose exact result x has |x| <= M is within
+    k ulp(M), i.e. [ap1 0 (k * ulp M)]: such a node may take v = 0 and
+    eta = k ulp(M) where that is smaller than its relative bound
+    ([rn_half_ulp_model], [faithful_ulp_model]).
 
     A certificate gives per node an interval [lo j, hi j], an error bound
     [E j] and, for square roots, a positive lower bound [S j] of the root of
@@ -45,6 +52,7 @@
     order ([sum3_rel]) are instances of [sum_exec]. *)
 
 From Coq Require Import Reals Lra Lia List Permutation.
+From Flocq Require Import Core.
 From PhongApprox Require Import FloatModelK.
 Import ListNotations.
 Open Scope R_scope.
@@ -64,8 +72,9 @@ Inductive op : Type :=
 | Rsqrt (a : nat)       (* 1 / sqrt, e.g. GPU inverseSqrt *)
 | Sum (l : list nat).   (* a sum of several nodes in ANY order: any binary tree of additions over any permutation *)
 
-(** A node: its operation and the unit v = kappa * u of its rounding (for Sum, of each of its additions). *)
-Record node := Node { nop : op; nv : R }.
+(** A node: its operation, the unit v = kappa u of its rounding and its absolute term eta
+    (for Sum, of each of its additions). *)
+Record node := Node { nop : op; nv : R; neta : R }.
 
 (** Operands come before the node; a Sum has at least one term. *)
 Definition op_wf (o : op) (j : nat) : Prop :=
@@ -100,21 +109,21 @@ Inductive sum_exec (v eta : R) : list R -> R -> Prop :=
     sum_exec v eta l1 r1 -> sum_exec v eta l2 r2 ->
     ap1 v eta y (r1 + r2) -> sum_exec v eta l y.
 
-(** What an execution may compute at a node: within ap1 (nv node) eta of the exact operation on the COMPUTED operands y.
+(** What an execution may compute at a node: within ap1 (nv node) (neta node) of the exact operation on the COMPUTED operands y.
     A fused multiply-add is covered: its product is exact, which ap1 allows for any v >= 0. *)
-Definition exec_op (eta : R) (X y : nat -> R) (g : node) (yj : R) : Prop :=
+Definition exec_op (X y : nat -> R) (g : node) (yj : R) : Prop :=
   let v := nv g in
   match nop g with
-  | In i => ap1 v eta yj (X i)
+  | In i => ap1 v (neta g) yj (X i)
   | Cst c => yj = c
-  | Add a b => ap1 v eta yj (y a + y b)
-  | Sub a b => ap1 v eta yj (y a - y b)
-  | Mul a b => ap1 v eta yj (y a * y b)
-  | Div a b => ap1 v eta yj (y a / y b)
-  | DivE a b => ap1 v eta yj (y a / y b) \/ (exists r, ap1 v eta r (/ y b) /\ ap1 v eta yj (y a * r))
-  | Sqrt a => ap1 v eta yj (sqrt (y a))
-  | Rsqrt a => ap1 v eta yj (/ sqrt (y a))
-  | Sum l => sum_exec v eta (map y l) yj
+  | Add a b => ap1 v (neta g) yj (y a + y b)
+  | Sub a b => ap1 v (neta g) yj (y a - y b)
+  | Mul a b => ap1 v (neta g) yj (y a * y b)
+  | Div a b => ap1 v (neta g) yj (y a / y b)
+  | DivE a b => ap1 v (neta g) yj (y a / y b) \/ (exists r, ap1 v (neta g) r (/ y b) /\ ap1 v (neta g) yj (y a * r))
+  | Sqrt a => ap1 v (neta g) yj (sqrt (y a))
+  | Rsqrt a => ap1 v (neta g) yj (/ sqrt (y a))
+  | Sum l => sum_exec v (neta g) (map y l) yj
   end.
 
 (** ** The certificate *)
@@ -148,8 +157,9 @@ Definition iv_ok (g : nat -> node) (X lo hi S : nat -> R) (j : nat) : Prop :=
     For Rsqrt, [E a <= lo a - S j * S j] makes both the exact and the
     computed operand at least S j ^ 2 > 0.  For Sqrt,
     [T j * T j <= lo a - E a] makes the computed operand at least T j ^ 2. *)
-Definition err_ok (g : nat -> node) (eta : R) (lo hi E S T : nat -> R) (j : nat) : Prop :=
+Definition err_ok (g : nat -> node) (lo hi E S T : nat -> R) (j : nat) : Prop :=
   let v := nv (g j) in
+  let eta := neta (g j) in
   let m := mag (lo j) (hi j) in
   0 <= E j /\
   match nop (g j) with
@@ -559,18 +569,17 @@ Qed.
 (** ** Soundness *)
 
 (** One node, given the claims for all earlier nodes. *)
-Lemma node_sound : forall (g : nat -> node) (X : nat -> R) (eta : R) (x y lo hi E S T : nat -> R) j,
-  0 <= eta ->
+Lemma node_sound : forall (g : nat -> node) (X : nat -> R) (x y lo hi E S T : nat -> R) j,
   (forall a, (a < j)%nat -> lo a <= x a <= hi a /\ Rabs (y a - x a) <= E a) ->
-  op_wf (nop (g j)) j -> 0 <= nv (g j) ->
-  x j = exact_op X x (nop (g j)) -> exec_op eta X y (g j) (y j) ->
-  iv_ok g X lo hi S j -> err_ok g eta lo hi E S T j ->
+  op_wf (nop (g j)) j -> 0 <= nv (g j) -> 0 <= neta (g j) ->
+  x j = exact_op X x (nop (g j)) -> exec_op X y (g j) (y j) ->
+  iv_ok g X lo hi S j -> err_ok g lo hi E S T j ->
   lo j <= x j <= hi j /\ Rabs (y j - x j) <= E j.
 Proof.
-  intros g X eta x y lo hi E S T j He IH. unfold exec_op, iv_ok, err_ok.
-  destruct (g j) as [o v]. cbn [nop nv].
+  intros g X x y lo hi E S T j IH. unfold exec_op, iv_ok, err_ok.
+  destruct (g j) as [o v eta]. cbn [nop nv neta].
   destruct o as [i | c | a b | a b | a b | a b | a b | a | a | l];
-    cbn [op_wf exact_op]; intros Hwf Hv Hx Hy [Hlh Hiv] [HE0 Her]; rewrite Hx.
+    cbn [op_wf exact_op]; intros Hwf Hv He Hx Hy [Hlh Hiv] [HE0 Her]; rewrite Hx.
   - (* In *)
     split; [exact Hiv|].
     pose proof (ap1_step v eta (y j) (X i) (X i) 0 (mag (lo j) (hi j)) Hv Hy).
@@ -655,20 +664,19 @@ Proof.
 Qed.
 
 Theorem graph_sound :
-  forall (g : nat -> node) (N : nat) (X : nat -> R) (eta : R) (x y lo hi E S T : nat -> R),
-  0 <= eta ->
-  (forall j, (j < N)%nat -> op_wf (nop (g j)) j /\ 0 <= nv (g j)) ->
+  forall (g : nat -> node) (N : nat) (X : nat -> R) (x y lo hi E S T : nat -> R),
+  (forall j, (j < N)%nat -> op_wf (nop (g j)) j /\ 0 <= nv (g j) /\ 0 <= neta (g j)) ->
   (forall j, (j < N)%nat -> x j = exact_op X x (nop (g j))) ->
-  (forall j, (j < N)%nat -> exec_op eta X y (g j) (y j)) ->
-  (forall j, (j < N)%nat -> iv_ok g X lo hi S j /\ err_ok g eta lo hi E S T j) ->
+  (forall j, (j < N)%nat -> exec_op X y (g j) (y j)) ->
+  (forall j, (j < N)%nat -> iv_ok g X lo hi S j /\ err_ok g lo hi E S T j) ->
   forall j, (j < N)%nat -> lo j <= x j <= hi j /\ Rabs (y j - x j) <= E j.
 Proof.
-  intros g N X eta x y lo hi E S T He Hwf Hx Hy Hc.
+  intros g N X x y lo hi E S T Hwf Hx Hy Hc.
   assert (Hall : forall n j, (j < n)%nat -> (j < N)%nat ->
                  lo j <= x j <= hi j /\ Rabs (y j - x j) <= E j).
   { induction n as [|n IHn]; intros j Hjn HjN; [lia|].
-    destruct (Hwf j HjN) as [Hw Hv]. destruct (Hc j HjN) as [Hi Her].
-    apply (node_sound g X eta x y lo hi E S T j He); auto.
+    destruct (Hwf j HjN) as (Hw & Hv & He). destruct (Hc j HjN) as [Hi Her].
+    apply (node_sound g X x y lo hi E S T j); auto.
     intros a Ha. apply IHn; lia. }
   intros j Hj. exact (Hall (Nat.succ j) j (Nat.lt_succ_diag_r j) Hj).
 Qed.
@@ -692,4 +700,80 @@ Proof.
        constructor | exact H2].
     apply (sum_split ua eta _ [q2] [q3] q2 q3);
       [apply Permutation_refl | discriminate | discriminate | constructor .. | exact H1].
+Qed.
+
+(** ** The ulp model: why a node may take v = 0 and eta = k ulp(M)
+
+    An implementation specifies an operation in ulps of the exact result:
+    IEEE round to nearest within 1/2 ulp, a faithful (GPU) rounding within
+    1 ulp, a GPU division within 2.5 ulp, inverseSqrt within 2 ulp.  If the
+    exact result x satisfies |x| <= M, then ulp x <= ulp M (ulp is monotone
+    in |x| for FLT), so such an operation is within k ulp(M), that is
+    [ap1 0 (k * ulp M) y x]: the node may take [nv = 0] and
+    [neta = k * ulp M] where that is smaller than the relative form.
+    Below, in Flocq's terms for an FLT format (radix 2, minimal exponent
+    emin, precision prec). *)
+
+(** The shape: an error of at most k ulp(M) is ap1 with v = 0 and eta = k ulp(M). *)
+Lemma ulp_model_ap1 : forall (emin prec : Z) (y x k M : R),
+  Rabs x <= M -> Rabs (y - x) <= k * ulp radix2 (FLT_exp emin prec) M ->
+  ap1 0 (k * ulp radix2 (FLT_exp emin prec) M) y x.
+Proof.
+  intros emin prec y x k M _ H. unfold ap1. lra.
+Qed.
+
+(** ulp is monotone for FLT: |x| <= M gives ulp x <= ulp M. *)
+Lemma ulp_FLT_le_bound : forall (emin prec : Z), (0 < prec)%Z -> forall x M : R,
+  Rabs x <= M -> ulp radix2 (FLT_exp emin prec) x <= ulp radix2 (FLT_exp emin prec) M.
+Proof.
+  intros emin prec Hp x M Hx.
+  assert (Hpg : Prec_gt_0 prec) by exact Hp.
+  apply (ulp_le radix2 (FLT_exp emin prec)).
+  pose proof (Rle_abs M). rewrite (Rabs_pos_eq M); [lra |].
+  pose proof (Rabs_pos x). lra.
+Qed.
+
+(** Round to nearest (any tie-breaking choice): within 1/2 ulp(M). *)
+Lemma rn_half_ulp_model : forall (emin prec : Z), (0 < prec)%Z ->
+  forall (choice : Z -> bool) (x M : R), Rabs x <= M ->
+  Rabs (round radix2 (FLT_exp emin prec) (Znearest choice) x - x)
+    <= / 2 * ulp radix2 (FLT_exp emin prec) M.
+Proof.
+  intros emin prec Hp choice x M Hx.
+  assert (Hpg : Prec_gt_0 prec) by exact Hp.
+  pose proof (error_le_half_ulp radix2 (FLT_exp emin prec) choice x) as H.
+  pose proof (ulp_FLT_le_bound emin prec Hp x M Hx). lra.
+Qed.
+
+(** Any rounding (down, up, toward zero, nearest; a faithful rounding is one of
+    round-down and round-up): within 1 ulp(M). *)
+Lemma faithful_ulp_model : forall (emin prec : Z), (0 < prec)%Z ->
+  forall (rnd : R -> Z), Valid_rnd rnd -> forall (x M : R), Rabs x <= M ->
+  Rabs (round radix2 (FLT_exp emin prec) rnd x - x) <= ulp radix2 (FLT_exp emin prec) M.
+Proof.
+  intros emin prec Hp rnd Hrnd x M Hx.
+  assert (Hpg : Prec_gt_0 prec) by exact Hp.
+  pose proof (error_le_ulp radix2 (FLT_exp emin prec) rnd x) as H.
+  pose proof (ulp_FLT_le_bound emin prec Hp x M Hx). lra.
+Qed.
+
+(** Hence a node rounding to nearest may take v = 0 and eta = ulp(M) / 2, and any
+    rounding v = 0 and eta = ulp(M). *)
+Lemma rn_ap1_ulp : forall (emin prec : Z), (0 < prec)%Z ->
+  forall (choice : Z -> bool) (x M : R), Rabs x <= M ->
+  ap1 0 (/ 2 * ulp radix2 (FLT_exp emin prec) M)
+    (round radix2 (FLT_exp emin prec) (Znearest choice) x) x.
+Proof.
+  intros emin prec Hp choice x M Hx.
+  apply (ulp_model_ap1 emin prec _ x (/ 2) M Hx).
+  now apply rn_half_ulp_model.
+Qed.
+
+Lemma faithful_ap1_ulp : forall (emin prec : Z), (0 < prec)%Z ->
+  forall (rnd : R -> Z), Valid_rnd rnd -> forall (x M : R), Rabs x <= M ->
+  ap1 0 (1 * ulp radix2 (FLT_exp emin prec) M) (round radix2 (FLT_exp emin prec) rnd x) x.
+Proof.
+  intros emin prec Hp rnd Hrnd x M Hx.
+  apply (ulp_model_ap1 emin prec _ x 1 M Hx). rewrite Rmult_1_l.
+  now apply faithful_ulp_model.
 Qed.

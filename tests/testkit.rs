@@ -54,7 +54,7 @@ fn a_wrong_implementation_fails_with_a_message_that_helps() {
     println!("{text}");
     assert!(text.starts_with("corrected-euler in f32 judged by the ieee profile's bound: "));
     for needle in [
-        "  worst: edge/edge-003 pixel 2, 24 levels off, ",
+        "  worst: edge/edge-001 pixel 1, 17 levels off, ",
         "  per set: typical ",
         "N_a       = (",
         "(0x",
@@ -72,34 +72,36 @@ fn a_wrong_implementation_fails_with_a_message_that_helps() {
     }
     // At most five failures in full, then the ids of the rest.
     assert_eq!(text.matches("reproduce = ").count(), 5);
-    // Ranked by harm: the 24-level case first (its ratio ties edge-010's, 0 levels
-    // off), never a mild one before a worse one.
+    // Ranked by harm: the case most over its allowance first — edge-001 (n = 1),
+    // whose pixel's own bound is the smallest (per pixel, docs/float.md §19) —, never
+    // a mild one before a worse one.
     let f = r.failures();
-    assert_eq!(f[0].case, "edge-003", "{text}");
-    assert_eq!(f[0].levels, Some(24));
+    assert_eq!(f[0].case, "edge-001", "{text}");
+    assert_eq!(f[0].levels, Some(17));
     assert!(f[0].ratio > 1e4, "{}", f[0].ratio);
     assert!(f.windows(2).all(|w| w[0].ratio >= w[1].ratio), "{text}");
-    let first_full = text.find("\n  edge/edge-003 (n = 2)").unwrap();
+    let first_full = text.find("\n  edge/edge-001 (n = 1)").unwrap();
     assert!(text[..first_full].find("\n  typical/").is_none(), "{text}");
     // The worst pixel as values: exact expected, got, allowed, the command.
     let w = r.worst().unwrap();
-    assert_eq!(w.pixel, Some(2));
+    assert_eq!(w.pixel, Some(1));
     assert_eq!(
         w.expected.as_deref(),
-        Some("0.800000000000000000000000000000")
+        Some("0.933333333333333333333333333333")
     );
-    assert_eq!(w.expected_level, Some(204));
-    assert_eq!(w.got, Some(f64::from(0.89599997f32)));
+    assert_eq!(w.expected_level, Some(238));
+    assert_eq!(w.got, Some(1.0));
     let allowed = w.allowed.unwrap();
-    assert!((w.got.unwrap() - 0.8).abs() / allowed == w.ratio, "{w:?}");
+    let e: f64 = w.expected.as_deref().unwrap().parse().unwrap();
+    assert!((w.got.unwrap() - e).abs() / allowed == w.ratio, "{w:?}");
     let inputs = w.inputs.as_ref().unwrap();
-    assert_eq!(inputs.exact[0], ["3/5", "0", "4/5"].map(String::from));
-    assert_eq!(inputs.floats[0][0], f64::from(0.6f32));
+    assert_eq!(inputs.exact[1], ["3/5", "0", "4/5"].map(String::from));
+    assert_eq!(inputs.floats[1][0], f64::from(0.6f32));
     assert!(w
         .command
         .as_ref()
         .unwrap()
-        .starts_with("phong-approx span --method corrected-euler --na=3/5,0,4/5 "));
+        .starts_with("phong-approx span --method corrected-euler --na=0,0,1 --nb=3/5,0,4/5 "));
     assert_eq!(w.profile, "the ieee profile's bound");
     // assert_ok panics with the same text.
     let panic = std::panic::catch_unwind(|| r.assert_ok()).unwrap_err();

@@ -299,6 +299,12 @@ pub struct Bounds {
     /// `T j`: a lower bound (≥ 0) of the computed operand's root of an [`Op::Sqrt`]; 0
     /// elsewhere.
     pub t: Vec<f64>,
+    /// Each node's unit `v` (`nv`): `κ·u` in the relative model, 0 in the ulp model.
+    pub v: Vec<f64>,
+    /// Each node's absolute term `η` (`neta`): the format's `η` in the relative model,
+    /// `κ/2` ulps of the largest result the operation can have, plus it, in the ulp
+    /// model.
+    pub eta: Vec<f64>,
 }
 
 // Outward rounding: the operations of f64 round to nearest, so the neighbouring float
@@ -363,21 +369,45 @@ pub fn evaluate(graph: &Graph, inputs: &[(f64, f64)], model: &Model) -> Result<B
         Vec::<f64>::with_capacity(len),
     );
     let (mut sj, mut tj) = (vec![0.0; len], vec![0.0; len]);
+    let (mut vj, mut etaj) = (vec![0.0; len], vec![0.0; len]);
     let eta = model.eta;
     for (j, node) in graph.nodes.iter().enumerate() {
         let v = mul_up(model.kappa(node.class), model.u);
+        // The ulp model's η for a result of magnitude at most `mag`: κ/2 ulps of the
+        // format there, and the format's η (flushing).
+        let ulp_eta = |mag: f64| {
+            add_up(
+                mul_up(model.kappa(node.class) / 2.0, model.format.ulp(up(mag))),
+                eta,
+            )
+        };
+        // Of the two models, the one giving the smaller bound: `(E, v, η)`.
+        let best = |d: f64, m: f64| {
+            let rel = rounded(d, v, m, eta);
+            let ue = ulp_eta(add_up(m, d));
+            let abs = rounded(d, 0.0, m, ue);
+            if abs < rel {
+                (abs, 0.0, ue)
+            } else {
+                (rel, v, eta)
+            }
+        };
+        let mut node_v = (v, eta);
         let (l, h, e) = match &node.op {
             Op::In(i) => {
                 let &(l, h) = inputs
                     .get(*i)
                     .filter(|(l, h)| l.is_finite() && h.is_finite() && l <= h)
                     .ok_or(GraphError::Input { node: j, input: *i })?;
-                (l, h, add_up(mul_up(v, mag(l, h)), eta))
+                let (e, nv, ne) = best(0.0, mag(l, h));
+                node_v = (nv, ne);
+                (l, h, e)
             }
             Op::Cst(c) => {
                 if !model.format.holds(*c) {
                     return Err(GraphError::InexactConstant { node: j });
                 }
+                node_v = (0.0, 0.0);
                 (*c, *c, 0.0)
             }
             Op::Add(a, b) | Op::Sub(a, b) => {
@@ -387,7 +417,9 @@ pub fn evaluate(graph: &Graph, inputs: &[(f64, f64)], model: &Model) -> Result<B
                     (dn(lo[*a] - hi[*b]), up(hi[*a] - lo[*b]))
                 };
                 let d = add_up(err[*a], err[*b]);
-                (l, h, rounded(d, v, mag(l, h), eta))
+                let (e, nv, ne) = best(d, mag(l, h));
+                node_v = (nv, ne);
+                (l, h, e)
             }
             Op::Mul(a, b) => {
                 let (l, h) = corners(|x, y| x * y, (lo[*a], hi[*a]), (lo[*b], hi[*b]));
@@ -396,7 +428,9 @@ pub fn evaluate(graph: &Graph, inputs: &[(f64, f64)], model: &Model) -> Result<B
                     add_up(mul_up(ma, err[*b]), mul_up(mb, err[*a])),
                     mul_up(err[*a], err[*b]),
                 );
-                (l, h, rounded(d, v, mag(l, h), eta))
+                let (e, nv, ne) = best(d, mag(l, h));
+                node_v = (nv, ne);
+                (l, h, e)
             }
             Op::Div(a, b) | Op::DivE(a, b) => {
                 let (bl, bh) = (lo[*b], hi[*b]);
@@ -412,7 +446,11 @@ pub fn evaluate(graph: &Graph, inputs: &[(f64, f64)], model: &Model) -> Result<B
                 }
                 let d = div_up(add_up(err[*a], mul_up(m, err[*b])), gap);
                 let mut e = rounded(d, v, m, eta);
-                if matches!(node.op, Op::DivE(..)) {
+                if matches!(node.op, Op::Div(..)) {
+                    let (e2, nv, ne) = best(d, m);
+                    e = e2;
+                    node_v = (nv, ne);
+                } else {
                     // The reciprocal and the product (`DivE` in proofs/Graph.v):
                     // d + v(2 + v)(m + d) + (1 + v)(|a| + E_a)η + η.
                     let ya = add_up(mag(lo[*a], hi[*a]), err[*a]);
@@ -445,7 +483,9 @@ pub fn evaluate(graph: &Graph, inputs: &[(f64, f64)], model: &Model) -> Result<B
                 let s2 = root_below(dn(lo[*a] - err[*a])).unwrap_or(0.0);
                 (sj[j], tj[j]) = (s, s2);
                 let d = div_up(err[*a], dn(s + s2));
-                (s, h, rounded(d, v, mag(s, h), eta))
+                let (e, nv, ne) = best(d, mag(s, h));
+                node_v = (nv, ne);
+                (s, h, e)
             }
             Op::Rsqrt(a) => {
                 let s = root_below(dn(lo[*a] - err[*a]))
@@ -465,7 +505,9 @@ pub fn evaluate(graph: &Graph, inputs: &[(f64, f64)], model: &Model) -> Result<B
                 }
                 sj[j] = s;
                 let d = div_up(err[*a], dn(2.0 * dn(dn(s * s) * s)));
-                (l, h, rounded(d, v, h, eta))
+                let (e, nv, ne) = best(d, h);
+                node_v = (nv, ne);
+                (l, h, e)
             }
             Op::Sum(terms) => {
                 let (mut l, mut h, mut se, mut sm) = (0.0f64, 0.0f64, 0.0f64, 0.0f64);
@@ -480,10 +522,18 @@ pub fn evaluate(graph: &Graph, inputs: &[(f64, f64)], model: &Model) -> Result<B
                 for _ in 1..k {
                     w = mul_up(w, add_up(1.0, v));
                 }
-                let e = add_up(
+                let mut e = add_up(
                     add_up(se, mul_up(up(w - 1.0), sm)),
                     mul_up(mul_up((k - 1) as f64, w), eta),
                 );
+                // The ulp model: every partial sum is at most sm + (k − 2)·η' ≤ 2·sm.
+                let ue = ulp_eta(mul_up(2.0, sm));
+                let partial = add_up(sm, mul_up((k.max(2) - 2) as f64, ue));
+                let abs = add_up(se, mul_up((k - 1) as f64, ue));
+                if partial <= 2.0 * sm && abs < e {
+                    e = abs;
+                    node_v = (0.0, ue);
+                }
                 (l, h, e)
             }
         };
@@ -493,6 +543,7 @@ pub fn evaluate(graph: &Graph, inputs: &[(f64, f64)], model: &Model) -> Result<B
         lo.push(l);
         hi.push(h);
         err.push(e);
+        (vj[j], etaj[j]) = node_v;
     }
     Ok(Bounds {
         lo,
@@ -500,5 +551,7 @@ pub fn evaluate(graph: &Graph, inputs: &[(f64, f64)], model: &Model) -> Result<B
         err,
         s: sj,
         t: tj,
+        v: vj,
+        eta: etaj,
     })
 }

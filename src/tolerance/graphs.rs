@@ -191,6 +191,11 @@ fn values(g: &mut Graph, model: &Model, p: Id, q: Id) -> Vec<Id> {
     ways
 }
 
+/// The longest span the graphs bound, `n ≤ 4096` (the published sets' longest): one
+/// form's graph is about 45 nodes a pixel, built and evaluated one form at a time;
+/// longer spans keep the formulas' bounds (bounded memory and time).
+pub const MAX_GRAPH_STEPS: u32 = 4096;
+
 /// The forms of `method` in `form` on a span of `n` steps, each a graph and its
 /// pixels' nodes; `None` where the method has no operation graph here (angular
 /// interpolation, the related methods, the adaptive scheme, which is judged by its
@@ -202,15 +207,40 @@ pub fn method_graphs(
     model: &Model,
 ) -> Option<Vec<MethodGraph>> {
     let mut out = Vec::new();
+    for_each_graph(method, form, n, model, |g| {
+        out.push(g);
+        Ok::<(), GraphError>(())
+    })
+    .ok()??;
+    Some(out)
+}
+
+/// [`method_graphs`] one form at a time: `f` takes each form's graph, which is
+/// dropped before the next is built. `Ok(None)` where the method has no graph here;
+/// the first error `f` returns.
+///
+/// # Errors
+/// What `f` returns.
+pub fn for_each_graph<E>(
+    method: Method,
+    form: Form,
+    n: u32,
+    model: &Model,
+    mut f: impl FnMut(MethodGraph) -> Result<(), E>,
+) -> Result<Option<()>, E> {
     let mut add = |name: &str, build: &dyn Fn(&mut Graph, &Setup) -> Vec<Id>| {
         let mut g = Graph::new();
         let s = setup(&mut g, n);
         let pixels = build(&mut g, &s);
-        out.push(MethodGraph {
+        // A way the model does not have (`inverseSqrt` under `ieee`) is no graph.
+        if pixels.is_empty() {
+            return Ok(());
+        }
+        f(MethodGraph {
             name: name.to_string(),
             graph: g,
             pixels,
-        });
+        })
     };
     let recur = !matches!(form, Form::Closed);
     let closed_ok = !matches!(form, Form::Recurrence);
@@ -221,7 +251,7 @@ pub fn method_graphs(
     ];
     match method {
         Method::Gouraud if form == Form::Any => {
-            add("recurrence", &|g, s| recurrence(g, n, s.p_a, s.dp, None));
+            add("recurrence", &|g, s| recurrence(g, n, s.p_a, s.dp, None))?;
         }
         Method::CorrectedEuler | Method::Euler => {
             let euler = method == Method::Euler;
@@ -229,14 +259,14 @@ pub fn method_graphs(
                 add("recurrence", &|g, s| {
                     let s0 = if euler { s.di_a } else { s.t0 };
                     recurrence(g, n, s.p_a, s0, Some(s.ds))
-                });
+                })?;
             }
             if closed_ok {
                 for (name, how) in halvings {
                     add(name, &|g, s| {
                         let s0 = if euler { s.di_a } else { s.t0 };
                         closed(g, n, s.p_a, s0, s.ds, how)
-                    });
+                    })?;
                 }
             }
         }
@@ -245,7 +275,7 @@ pub fn method_graphs(
             for way in 0..3 {
                 add(&format!("forward-differences/{way}"), &|g, s| {
                     duff(g, model, s, n, symmetric, way)
-                });
+                })?;
             }
         }
         Method::Phong if form == Form::Any => {
@@ -256,15 +286,13 @@ pub fn method_graphs(
                     }
                     add(&format!("{pq}/{way}"), &|g, s| {
                         phong(g, model, s, n, pq, way)
-                    });
+                    })?;
                 }
             }
         }
-        _ => return None,
+        _ => return Ok(None),
     }
-    // A way the model does not have (`inverseSqrt` under `ieee`) is an empty graph.
-    out.retain(|m| !m.pixels.is_empty());
-    Some(out)
+    Ok(Some(()))
 }
 
 /// Duff's forward differences (eqs. 5–7): `p += A`, `q += dq`, `dq += 2C` from
@@ -377,7 +405,8 @@ fn phong(g: &mut Graph, model: &Model, s: &Setup, n: u32, pq: &str, way: usize) 
 
 /// The bound of `method` in `form` at every pixel of the case with exact inputs in the
 /// intervals `inputs` (`N_a`, `N_b`, `L`), `n` steps: the largest over its forms'
-/// graphs, pixel by pixel. `Ok(None)` where the method has no graph here.
+/// graphs, pixel by pixel. `Ok(None)` where the method has no graph here or `n` is
+/// above [`MAX_GRAPH_STEPS`].
 ///
 /// # Errors
 /// The first form's [`GraphError`] (the case then has no bound from the graphs).
@@ -388,17 +417,18 @@ pub fn pixel_bounds(
     inputs: &[(f64, f64); 9],
     model: &Model,
 ) -> Result<Option<Vec<f64>>, GraphError> {
-    let Some(forms) = method_graphs(method, form, n, model) else {
+    if n > MAX_GRAPH_STEPS {
         return Ok(None);
-    };
+    }
     let mut worst = vec![0f64; n as usize + 1];
-    for f in &forms {
+    let found = for_each_graph(method, form, n, model, |f| {
         let Bounds { err, .. } = evaluate(&f.graph, inputs, model)?;
         for (w, &p) in worst.iter_mut().zip(&f.pixels) {
             *w = w.max(err[p]);
         }
-    }
-    Ok(Some(worst))
+        Ok(())
+    })?;
+    Ok(found.map(|()| worst))
 }
 
 /// The graph model of an acceptance profile in `format` (`docs/float.md` §18.1, the

@@ -291,7 +291,7 @@ const METHODS: [Method; 6] = [
 /// Where the targets are not met, and why (docs/float.md §19.5): under `ieee` every
 /// operation rounds to nearest, so an implementation cannot choose its errors' signs —
 /// only the order of its sums, its fusions and its ways of dividing — and on the
-/// `paper` set's few short spans and `edge`'s near-zero values the rounding errors of
+/// `paper` set's three short spans (n = 2, 2, 10) and `edge`'s near-zero values the rounding errors of
 /// Duff's, symmetric Phong's and Phong's twenty-odd operations per pixel do not align;
 /// nor do the inputs' roundings, which the graphs propagate through each operation
 /// separately (the dependency of interval-style bounds). Each exception keeps a floor:

@@ -209,7 +209,7 @@ fn graph_exact_values_are_the_methods() {
                     let Ok(b) = evaluate(&f.graph, &inputs(s), &m) else {
                         continue;
                     };
-                    for (i, &p) in f.pixels.iter().enumerate() {
+                    for (i, &p) in f.pixels.iter().flat_map(|w| w.iter().enumerate()) {
                         // Phong's exact values are to 2^-256; the intervals are wider.
                         let (lo, hi) = (
                             Q::from_float(b.lo[p]).unwrap(),

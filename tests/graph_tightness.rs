@@ -231,26 +231,28 @@ fn ratio(method: Method, profile: Profile, s: &Span<Q>) -> Option<f64> {
             continue;
         };
         let mid: Vec<f64> = b.lo.iter().zip(&b.hi).map(|(l, h)| (l + h) / 2.0).collect();
-        // The targets: the last pixel, the middle one, and the one whose bound is
-        // largest relative to the applied bound's.
-        let widest = (0..=n)
-            .max_by(|&i, &k| b.err[f.pixels[i]].total_cmp(&b.err[f.pixels[k]]))
-            .unwrap_or(n);
-        // Every pixel of a short span; else the last, the middle, the quarters and
-        // the one with the largest bound.
-        let targets: Vec<usize> = if n <= 16 {
-            (0..=n).collect()
-        } else {
-            vec![n, n / 2, n / 4, 3 * n / 4, widest]
-        };
-        for target in targets {
-            let adj = sensitivities(&f.graph, &mid, f.pixels[target]);
-            for sign in [1.0, -1.0] {
-                let y = execute(&f.graph, &x_in, &adj, sign, profile == Profile::Shader);
-                for (i, &p) in f.pixels.iter().enumerate() {
-                    let e = (y[p] - mid[p]).abs();
-                    if e.is_finite() {
-                        worst = worst.max(e / bound[i]);
+        for pixels in &f.pixels {
+            // The targets: the last pixel, the middle one, and the one whose bound is
+            // largest relative to the applied bound's.
+            let widest = (0..=n)
+                .max_by(|&i, &k| b.err[pixels[i]].total_cmp(&b.err[pixels[k]]))
+                .unwrap_or(n);
+            // Every pixel of a short span; else the last, the middle, the quarters and
+            // the one with the largest bound.
+            let targets: Vec<usize> = if n <= 16 {
+                (0..=n).collect()
+            } else {
+                vec![n, n / 2, n / 4, 3 * n / 4, widest]
+            };
+            for target in targets {
+                let adj = sensitivities(&f.graph, &mid, pixels[target]);
+                for sign in [1.0, -1.0] {
+                    let y = execute(&f.graph, &x_in, &adj, sign, profile == Profile::Shader);
+                    for (i, &p) in pixels.iter().enumerate() {
+                        let e = (y[p] - mid[p]).abs();
+                        if e.is_finite() {
+                            worst = worst.max(e / bound[i]);
+                        }
                     }
                 }
             }

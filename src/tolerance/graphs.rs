@@ -18,8 +18,10 @@ pub struct MethodGraph {
     pub name: String,
     /// The graph.
     pub graph: Graph,
-    /// The node whose value is pixel `i`'s, for `i = 0..=n`.
-    pub pixels: Vec<Id>,
+    /// Per way of the last operations (`p/√q`, `p·(1/√q)`, …; one for the other
+    /// methods), the node whose value is pixel `i`'s, for `i = 0..=n`: the ways share
+    /// the graph's other nodes, and an implementation computes one of them.
+    pub pixels: Vec<Vec<Id>>,
 }
 
 /// The set-up's nodes, in the paper's names.
@@ -228,14 +230,10 @@ pub fn for_each_graph<E>(
     model: &Model,
     mut f: impl FnMut(MethodGraph) -> Result<(), E>,
 ) -> Result<Option<()>, E> {
-    let mut add = |name: &str, build: &dyn Fn(&mut Graph, &Setup) -> Vec<Id>| {
+    let mut add = |name: &str, build: &dyn Fn(&mut Graph, &Setup) -> Vec<Vec<Id>>| {
         let mut g = Graph::new();
         let s = setup(&mut g, n);
         let pixels = build(&mut g, &s);
-        // A way the model does not have (`inverseSqrt` under `ieee`) is no graph.
-        if pixels.is_empty() {
-            return Ok(());
-        }
         f(MethodGraph {
             name: name.to_string(),
             graph: g,
@@ -251,43 +249,36 @@ pub fn for_each_graph<E>(
     ];
     match method {
         Method::Gouraud if form == Form::Any => {
-            add("recurrence", &|g, s| recurrence(g, n, s.p_a, s.dp, None))?;
+            add("recurrence", &|g, s| {
+                vec![recurrence(g, n, s.p_a, s.dp, None)]
+            })?;
         }
         Method::CorrectedEuler | Method::Euler => {
             let euler = method == Method::Euler;
             if recur {
                 add("recurrence", &|g, s| {
                     let s0 = if euler { s.di_a } else { s.t0 };
-                    recurrence(g, n, s.p_a, s0, Some(s.ds))
+                    vec![recurrence(g, n, s.p_a, s0, Some(s.ds))]
                 })?;
             }
             if closed_ok {
                 for (name, how) in halvings {
                     add(name, &|g, s| {
                         let s0 = if euler { s.di_a } else { s.t0 };
-                        closed(g, n, s.p_a, s0, s.ds, how)
+                        vec![closed(g, n, s.p_a, s0, s.ds, how)]
                     })?;
                 }
             }
         }
         Method::Duff | Method::SymmetricPhong if form == Form::Any => {
             let symmetric = method == Method::SymmetricPhong;
-            for way in 0..3 {
-                add(&format!("forward-differences/{way}"), &|g, s| {
-                    duff(g, model, s, n, symmetric, way)
-                })?;
-            }
+            add("forward-differences", &|g, s| {
+                duff(g, model, s, n, symmetric)
+            })?;
         }
         Method::Phong if form == Form::Any => {
             for pq in ["horner", "pixel", "lerp"] {
-                for way in 0..4 {
-                    if way == 3 && pq == "horner" {
-                        continue;
-                    }
-                    add(&format!("{pq}/{way}"), &|g, s| {
-                        phong(g, model, s, n, pq, way)
-                    })?;
-                }
+                add(pq, &|g, s| phong(g, model, s, n, pq))?;
             }
         }
         _ => return Ok(None),
@@ -296,9 +287,10 @@ pub fn for_each_graph<E>(
 }
 
 /// Duff's forward differences (eqs. 5–7): `p += A`, `q += dq`, `dq += 2C` from
-/// `p_0 = B`, `q_0 = E`, `dq_0 = C + D`; the value by way `way` of [`values`]. Symmetric
-/// Phong (§4) takes the roots of the left half for the right: `√q_i = √q_{n−i}`.
-fn duff(g: &mut Graph, model: &Model, s: &Setup, n: u32, symmetric: bool, way: usize) -> Vec<Id> {
+/// `p_0 = B`, `q_0 = E`, `dq_0 = C + D`; the value by each way: `p/√q`, `p·(1/√q)`
+/// and, where the model has it, `p·inverseSqrt(q)`. Symmetric Phong (§4) takes the
+/// roots of the left half for the right: `√q_i = √q_{n−i}`.
+fn duff(g: &mut Graph, model: &Model, s: &Setup, n: u32, symmetric: bool) -> Vec<Vec<Id>> {
     let dq0 = g.add(s.c, s.d);
     let d2q = g.add(s.c, s.c);
     let (mut p, mut q, mut dq) = (s.b, s.e, dq0);
@@ -317,48 +309,44 @@ fn duff(g: &mut Graph, model: &Model, s: &Setup, n: u32, symmetric: bool, way: u
         }
     }
     let one = g.cst(1.0);
-    // Per pixel the value's way; the roots (or reciprocal roots) of the mirrored half
-    // are the same nodes.
-    let mut roots = Vec::new();
-    for &q in &qs {
-        let r = match way {
-            0 => Some(root(g, model, q)),
-            1 => {
-                let s = root(g, model, q);
-                Some(g.div(one, s))
-            }
-            _ if model.sqrt_is_recip_rsqrt => Some(g.rsqrt(q)),
-            _ => None,
-        };
-        match r {
-            Some(r) => roots.push(r),
-            None => return Vec::new(),
-        }
-    }
+    let ways = if model.sqrt_is_recip_rsqrt { 3 } else { 2 };
     let nu = n as usize;
-    (0..=nu)
-        .map(|i| {
-            let r = roots[if i < roots.len() { i } else { nu - i }];
-            if way == 0 {
-                g.div(ps[i], r)
-            } else {
-                g.mul(ps[i], r)
-            }
+    (0..ways)
+        .map(|way| {
+            // The roots (or reciprocal roots) of the mirrored half are the same nodes.
+            let roots: Vec<Id> = qs
+                .iter()
+                .map(|&q| match way {
+                    0 => root(g, model, q),
+                    1 => {
+                        let r = root(g, model, q);
+                        g.div(one, r)
+                    }
+                    _ => g.rsqrt(q),
+                })
+                .collect();
+            (0..=nu)
+                .map(|i| {
+                    let r = roots[if i < roots.len() { i } else { nu - i }];
+                    if way == 0 {
+                        g.div(ps[i], r)
+                    } else {
+                        g.mul(ps[i], r)
+                    }
+                })
+                .collect()
         })
         .collect()
 }
 
 /// Phong's forms (`docs/float.md` §18.4): `p` and `q` by Horner (`A·i + B`,
 /// `(C·i + D)·i + E`), by the per-pixel normal `N_a + i·k`, or by the lerp
-/// `(1 − t)·N_a + t·N_b` with `t = i/n` either way; then way `way`: `p/√q` (0),
-/// `p·(1/√q)` (1), `p·inverseSqrt(q)` (2, where the model has it), or, for a normal,
-/// normalize then dot: `(N·(1/√q))·L` (3).
-fn phong(g: &mut Graph, model: &Model, s: &Setup, n: u32, pq: &str, way: usize) -> Vec<Id> {
-    if way == 2 && !model.sqrt_is_recip_rsqrt {
-        return Vec::new();
-    }
+/// `(1 − t)·N_a + t·N_b` with `t = i/n` either way; then each way: `p/√q`,
+/// `p·(1/√q)`, `p·inverseSqrt(q)` (where the model has it), and, for a normal,
+/// normalize then dot: `(N·(1/√q))·L`.
+fn phong(g: &mut Graph, model: &Model, s: &Setup, n: u32, pq: &str) -> Vec<Vec<Id>> {
     let one = g.cst(1.0);
-    let mut out = Vec::new();
+    let mut ways: Vec<Vec<Id>> = Vec::new();
     for i in 0..=n {
         let ic = g.cst(f64::from(i));
         let normal = match pq {
@@ -388,19 +376,22 @@ fn phong(g: &mut Graph, model: &Model, s: &Setup, n: u32, pq: &str, way: usize) 
                 (p, g.add(cidi, s.e))
             }
         };
-        let v = match (way, normal) {
-            (3, Some(nv)) => {
-                let sq = root(g, model, q);
-                let r = g.div(one, sq);
-                let w = nv.map(|c| g.mul(c, r));
-                g.dot(w, s.l)
-            }
-            (3, None) => return Vec::new(),
-            (w, _) => values(g, model, p, q)[w],
-        };
-        out.push(v);
+        let mut v = values(g, model, p, q);
+        if let Some(nv) = normal {
+            // Normalize, then dot.
+            let sq = root(g, model, q);
+            let r = g.div(one, sq);
+            let w = nv.map(|c| g.mul(c, r));
+            v.push(g.dot(w, s.l));
+        }
+        if ways.is_empty() {
+            ways = vec![Vec::with_capacity(n as usize + 1); v.len()];
+        }
+        for (way, node) in ways.iter_mut().zip(v) {
+            way.push(node);
+        }
     }
-    out
+    ways
 }
 
 /// The bound of `method` in `form` at every pixel of the case with exact inputs in the
@@ -423,8 +414,10 @@ pub fn pixel_bounds(
     let mut worst = vec![0f64; n as usize + 1];
     let found = for_each_graph(method, form, n, model, |f| {
         let Bounds { err, .. } = evaluate(&f.graph, inputs, model)?;
-        for (w, &p) in worst.iter_mut().zip(&f.pixels) {
-            *w = w.max(err[p]);
+        for way in &f.pixels {
+            for (w, &p) in worst.iter_mut().zip(way) {
+                *w = w.max(err[p]);
+            }
         }
         Ok(())
     })?;

@@ -22,6 +22,9 @@ pub struct MethodGraph {
     /// methods), the node whose value is pixel `i`'s, for `i = 0..=n`: the ways share
     /// the graph's other nodes, and an implementation computes one of them.
     pub pixels: Vec<Vec<Id>>,
+    /// The set-up's nodes by the paper's names (`A`, `B`, `C`, `D`, `E`, `p_a`, `p_b`,
+    /// `dq_b`, `di_a`, `ds`, `t0`, `dp`): what a test plants a bug in.
+    pub setup: Vec<(&'static str, Id)>,
 }
 
 /// The set-up's nodes, in the paper's names.
@@ -37,6 +40,8 @@ struct Setup {
     d: Id,
     e: Id,
     p_a: Id,
+    p_b: Id,
+    dq_b: Id,
     di_a: Id,
     ds: Id,
     t0: Id,
@@ -97,6 +102,8 @@ fn setup(g: &mut Graph, n: u32) -> Setup {
         d,
         e,
         p_a,
+        p_b,
+        dq_b,
         di_a,
         ds,
         t0,
@@ -234,10 +241,25 @@ pub fn for_each_graph<E>(
         let mut g = Graph::new();
         let s = setup(&mut g, n);
         let pixels = build(&mut g, &s);
+        let setup = vec![
+            ("A", s.a),
+            ("B", s.b),
+            ("C", s.c),
+            ("D", s.d),
+            ("E", s.e),
+            ("p_a", s.p_a),
+            ("p_b", s.p_b),
+            ("dq_b", s.dq_b),
+            ("di_a", s.di_a),
+            ("ds", s.ds),
+            ("t0", s.t0),
+            ("dp", s.dp),
+        ];
         f(MethodGraph {
             name: name.to_string(),
             graph: g,
             pixels,
+            setup,
         })
     };
     let recur = !matches!(form, Form::Closed);

@@ -54,11 +54,46 @@ fn over(what: &str, got: &[Q], want: &[Q], bound: &[f64]) -> f64 {
     worst
 }
 
+/// The methods with operation graphs.
+pub(super) const METHODS: [Method; 6] = [
+    Method::Gouraud,
+    Method::CorrectedEuler,
+    Method::Euler,
+    Method::Duff,
+    Method::Phong,
+    Method::SymmetricPhong,
+];
+
+/// The profile spans (with their cases) and every published case's span.
+fn all_cases() -> Vec<(Option<Case>, Span<Q>)> {
+    let mut cases: Vec<(Option<Case>, Span<Q>)> =
+        spans().into_iter().map(|(c, s)| (Some(c), s)).collect();
+    for set in phong_approx::testkit::SETS {
+        cases.extend(published_spans(set).into_values().map(|s| (None, s)));
+    }
+    cases
+}
+
 /// The exact values of `method` on `s`: Phong's (and Duff's, symmetric Phong's) to
 /// 2^-256, the others exactly.
 fn exact(method: Method, c: Option<&Case>, s: &Span<Q>) -> Vec<Q> {
+    // Phong's exact values (Duff's and symmetric Phong's too) once per span.
+    thread_local! {
+        static PHONG: std::cell::RefCell<Option<(String, Vec<Q>)>> = const { std::cell::RefCell::new(None) };
+    }
     match (method, c) {
-        (Method::Phong | Method::Duff | Method::SymmetricPhong, _) => phong_exact(s),
+        (Method::Phong | Method::Duff | Method::SymmetricPhong, _) => PHONG.with(|cell| {
+            let key = s.to_string();
+            let mut cell = cell.borrow_mut();
+            match &*cell {
+                Some((k, v)) if *k == key => v.clone(),
+                _ => {
+                    let v = phong_exact(s);
+                    *cell = Some((key, v.clone()));
+                    v
+                }
+            }
+        }),
         (m, Some(c)) => exact_values(m, c, s).to_vec(),
         (m, None) => m.values(s).unwrap(),
     }
@@ -68,19 +103,15 @@ fn exact(method: Method, c: Option<&Case>, s: &Span<Q>) -> Vec<Q> {
 /// (Gouraud, corrected Euler and Euler as recurrences and closed forms, Duff, Phong's
 /// three forms; three orders of the dot products, fused or not, `/n` either way), in
 /// `f32` and `f64`, is within the graphs' bound at every pixel of the profile spans and
-/// of every published case up to n = 64 (4096 in the extensive tier); and the
+/// of every published case up to n = 64 (1024 in the extensive tier); and the
 /// software GPUs under `shader`.
 #[test]
 fn graph_sound() {
-    let mut cases: Vec<(Option<Case>, Span<Q>)> =
-        spans().into_iter().map(|(c, s)| (Some(c), s)).collect();
-    for set in phong_approx::testkit::SETS {
-        cases.extend(published_spans(set).into_values().map(|s| (None, s)));
-    }
+    let cases = all_cases();
     let mut worst: std::collections::BTreeMap<String, f64> = Default::default();
     let mut runs = 0;
     for (c, s) in &cases {
-        if s.n > tiered(64, 4096) {
+        if s.n > tiered(64, 1024) {
             continue;
         }
         macro_rules! native_runs {
@@ -103,7 +134,10 @@ fn graph_sound() {
             };
         }
         native_runs!(f32, Binary32);
-        native_runs!(f64, Binary64);
+        // binary64 in the extensive tier.
+        if extensive() {
+            native_runs!(f64, Binary64);
+        }
         for &g in &GPUS[..tiered(1, 4)] {
             let gpu_imps: [(Method, &GpuRun); 5] = [
                 (Method::Gouraud, &|g, s| {
@@ -146,14 +180,7 @@ fn graph_sound() {
 fn graph_bounds_against_the_formulas() {
     for set in phong_approx::testkit::SETS {
         let spans = published_spans(set);
-        for m in [
-            Method::Gouraud,
-            Method::CorrectedEuler,
-            Method::Euler,
-            Method::Duff,
-            Method::Phong,
-            Method::SymmetricPhong,
-        ] {
+        for m in METHODS {
             for (profile, format) in [
                 (Profile::Ieee, Format::Binary32),
                 (Profile::Shader, Format::Binary32),
@@ -187,23 +214,12 @@ fn graph_bounds_against_the_formulas() {
 fn graph_exact_values_are_the_methods() {
     use phong_approx::tolerance::graph::evaluate;
     use phong_approx::tolerance::graphs::method_graphs;
-    let mut cases: Vec<(Option<Case>, Span<Q>)> =
-        spans().into_iter().map(|(c, s)| (Some(c), s)).collect();
-    for set in phong_approx::testkit::SETS {
-        cases.extend(published_spans(set).into_values().map(|s| (None, s)));
-    }
+    let cases = all_cases();
     let mut checked = 0;
     for (c, s) in cases.iter().filter(|(_, s)| s.n <= tiered(64, 1024)) {
         for profile in [Profile::Ieee, Profile::Shader] {
             let m = model(profile, Format::Binary32).unwrap();
-            for method in [
-                Method::Gouraud,
-                Method::CorrectedEuler,
-                Method::Euler,
-                Method::Duff,
-                Method::Phong,
-                Method::SymmetricPhong,
-            ] {
+            for method in METHODS {
                 let want = exact(method, c.as_ref(), s);
                 for f in method_graphs(method, Form::Any, s.n, &m).unwrap() {
                     let Ok(b) = evaluate(&f.graph, &inputs(s), &m) else {
@@ -240,11 +256,7 @@ fn graph_exact_values_are_the_methods() {
 #[test]
 fn quake_rsqrt_duff_exceeds_the_graph_bound() {
     fn quake(x: f32) -> f32 {
-        let mut y = f32::from_bits(0x5f37_59df_u32.wrapping_sub(x.to_bits() >> 1));
-        for _ in 0..2 {
-            y = y * (1.5 - 0.5 * x * y * y);
-        }
-        y
+        super::graph_mutants::quake(x, 2)
     }
     fn exact_rsqrt(x: f32) -> f32 {
         1.0 / x.sqrt()
@@ -368,14 +380,7 @@ fn graph_certificates_satisfy_the_theorems_rules() {
         ];
         for &(profile, format) in &profiles[..tiered(2, 3)] {
             let m = model(profile, format).unwrap();
-            for method in [
-                Method::Gouraud,
-                Method::CorrectedEuler,
-                Method::Euler,
-                Method::Duff,
-                Method::Phong,
-                Method::SymmetricPhong,
-            ] {
+            for method in METHODS {
                 for f in method_graphs(method, Form::Any, s.n, &m).unwrap() {
                     let Ok(b) = evaluate(&f.graph, &inputs(s), &m) else {
                         continue;

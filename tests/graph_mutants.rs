@@ -8,7 +8,7 @@ use phong_approx::tolerance::graph::{Graph, Op};
 use phong_approx::tolerance::graphs::{method_graphs, model};
 
 /// Quake III's reciprocal square root: the magic constant and `steps` Newton steps.
-fn quake(x: f32, steps: u32) -> f32 {
+pub(super) fn quake(x: f32, steps: u32) -> f32 {
     let mut y = f32::from_bits(0x5f37_59df_u32.wrapping_sub(x.to_bits() >> 1));
     for _ in 0..steps {
         y = y * (1.5 - 0.5 * x * y * y);

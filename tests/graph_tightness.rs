@@ -11,7 +11,7 @@
 //! target pixels and both directions; the case's ratio is the worst
 //! `|result − exact| / bound` over its pixels.
 
-use super::graph::inputs;
+use super::graph::{inputs, METHODS};
 use super::*;
 use phong_approx::tolerance::graph::{evaluate, Graph, Model, Op};
 use phong_approx::tolerance::graphs::{method_graphs, model, profile_pixel_bounds};
@@ -280,15 +280,6 @@ fn stats(method: Method, profile: Profile, spans: &[Span<Q>]) -> (f64, f64, f64,
     let median = nz.get(nz.len() / 2).copied().unwrap_or(0.0);
     (short, worst, median, all.len())
 }
-
-const METHODS: [Method; 6] = [
-    Method::Gouraud,
-    Method::CorrectedEuler,
-    Method::Euler,
-    Method::Duff,
-    Method::Phong,
-    Method::SymmetricPhong,
-];
 
 /// Where the targets are not met, and why (docs/float.md §19.5): under `ieee` every
 /// operation rounds to nearest, so an implementation cannot choose its errors' signs —

@@ -171,7 +171,7 @@ const MODELS: [(Profile, Format, Counts, Value); 3] = [
         Profile::Shader,
         Format::Binary32,
         (2.0, 2.0, 5.0, 2.0),
-        (9.0, 5.0, 2.0),
+        (9.0 + 1.0 / 262_144.0, 5.0, 2.0),
     ),
 ];
 

@@ -34,10 +34,7 @@ pub(super) fn error_bounds(r: &Request, format: crate::Format) -> ErrorBounds {
             // the smaller of the formula and the operation graphs' at each pixel, the
             // largest over the pixels.
             p if m.picks().is_some() => profile_span_bound(m, p, Form::Any, shape, format),
-            p => {
-                crate::tolerance::graphs::profile_pixel_bounds(m, p, Form::Any, shape, None, format)
-                    .map(|b| b.into_iter().fold(0f64, f64::max))
-            }
+            p => crate::tolerance::graphs::profile_span_max(m, p, Form::Any, shape, format),
         }
     };
     // The adaptive scheme where its test is too close to call

@@ -446,6 +446,23 @@ pub fn pixel_bounds(
     Ok(found.map(|()| worst))
 }
 
+/// The largest over the pixels of [`profile_pixel_bounds`] without a vector of them
+/// where the graphs do not apply (a method without graphs, or `n` above
+/// [`MAX_GRAPH_STEPS`]: the formula alone): `span`'s `error_bound`.
+pub fn profile_span_max(
+    method: Method,
+    profile: super::profile::Profile,
+    form: Form,
+    shape: &super::Shape,
+    format: crate::Format,
+) -> Option<f64> {
+    if shape.n > MAX_GRAPH_STEPS || !method.info().profiles.graphs {
+        return super::profile::profile_span_bound(method, profile, form, shape, format);
+    }
+    profile_pixel_bounds(method, profile, form, shape, None, format)
+        .map(|b| b.into_iter().fold(0f64, f64::max))
+}
+
 /// The graph model of an acceptance profile in `format` (`docs/float.md` §18.1, the
 /// constants of [`super::profile::arith`]); under `shader` a square root is
 /// `1/inverseSqrt` (2 ulps, `κ = 4`, then a 2.5-ulp division) and `inverseSqrt` is an
@@ -499,6 +516,7 @@ pub fn profile_pixel_bounds(
     match (formula, graph) {
         (Some(f), Some(g)) => Some(g.into_iter().map(|x| x.min(f)).collect()),
         (Some(f), None) => Some(vec![f; shape.n as usize + 1]),
+        // (Callers that want one number for a long span: [`profile_span_max`].)
         (None, g) => g,
     }
 }

@@ -65,8 +65,9 @@ pub fn arith(profile: Profile, format: Format) -> Option<Arith> {
             eta: format.eta(),
         }),
         // Vulkan/WGSL: add, sub, mul faithful (2 units of u), division 2.5 ulp (5),
-        // sqrt inherited from 1/inversesqrt (2 ulp = 4, then the division, 5),
-        // denormals flushed (2^-126).
+        // sqrt inherited from 1/inversesqrt (2 ulp = 4, then the division, 5:
+        // (1 + δ2)/(1 + δ1) − 1 is within 9u/(1 − 4u) ≤ (9 + 2^-18)u at u = 2^-24,
+        // not 9u), denormals flushed (2^-126).
         (Profile::Shader, Format::Binary32) => Some(Arith {
             u,
             input: 2.0,
@@ -74,7 +75,7 @@ pub fn arith(profile: Profile, format: Format) -> Option<Arith> {
             mul: 2.0,
             div: 5.0,
             half: 7.0,
-            sqrt: 9.0,
+            sqrt: 9.0 + 1.0 / 262_144.0,
             eta: format.min_normal(),
         }),
         _ => None,

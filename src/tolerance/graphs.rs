@@ -1,7 +1,7 @@
 //! Each method's operation graphs (`docs/float.md` §19): the paper's set-up (eqs. 2–3,
 //! 10–11, 14–17, in [`crate::span::Span`]'s order) and every form an implementation
 //! of the class may compute, written once as [`Graph`]s whose per-pixel nodes
-//! [`evaluate`](super::graph::evaluate) bounds for the case's own inputs.
+//! [`evaluate`] bounds for the case's own inputs.
 //!
 //! A method's bound on a case is, at each pixel, the largest over its forms' graphs
 //! (an implementation computes one of them); each graph's bound is `graph_sound`'s

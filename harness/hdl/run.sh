@@ -226,7 +226,7 @@ cp "$kit/phong_kit.c" "$kit/phong_kit.h" "$tmp/kit/"
 kit_flags=(-std=c99 -O2)
 kit_cache=
 if [ -n "${PHONG_HDL_CACHE:-}" ]; then
-  key=$( { "$cc" --version 2> /dev/null | head -n 1; echo "${kit_flags[*]}"; cat "$tmp/kit/phong_kit.c" "$tmp/kit/phong_kit.h"; } | cksum | cut -d' ' -f1)
+  key=$( { "$cc" --version 2> /dev/null | sed -n 1p; echo "${kit_flags[*]}"; cat "$tmp/kit/phong_kit.c" "$tmp/kit/phong_kit.h"; } | cksum | cut -d' ' -f1)
   kit_cache=$PHONG_HDL_CACHE/phong_kit-$key.o
 fi
 if [ -n "$kit_cache" ] && [ -f "$kit_cache" ]; then
@@ -257,7 +257,7 @@ fi
 runtime=(verilated.o verilated_threads.o)
 cache=
 if [ -n "${PHONG_HDL_CACHE:-}" ]; then
-  key=$( { verilator --version; "$cxx" --version | head -n 1; echo "${make_flags[*]}"; } | cksum | cut -d' ' -f1)
+  key=$( { verilator --version; "$cxx" --version | sed -n 1p; echo "${make_flags[*]}"; } | cksum | cut -d' ' -f1)
   cache=$PHONG_HDL_CACHE/runtime-$key
   if [ -d "$cache" ]; then
     for o in "${runtime[@]}"; do
@@ -290,7 +290,7 @@ fi
 what="$unit (module $top) as $method at $int_bits.$frac_bits"
 if [ -n "$mutant" ]; then what="$what, with the planted set-up bug $mutant"; fi
 echo "phong hdl: $what, checked by $checker ($("$checker" --version 2>/dev/null || echo "version unknown"))"
-echo "  $(verilator --version), $(iverilog -V 2>&1 | head -n 1 | sed 's/ version / /; s/ *(.*//'); out_ready random (seed 1); X/Z: two runs with different initial values, and four-state simulation of each set's first 1024 pixels"
+echo "  $(verilator --version), $(iverilog -V 2>&1 | sed -n 1p | sed 's/ version / /; s/ *(.*//'); out_ready random (seed 1); X/Z: two runs with different initial values, and four-state simulation of each set's first 1024 pixels"
 failed=0 passed=0
 
 # setup SET METHOD FRAC_BITS OUT: the set-up CSV from the checker.
@@ -387,9 +387,12 @@ for set in "${sets[@]}"; do
   fi
   if ! cmp -s "$tmp/t1.csv" "$tmp/t2.csv"; then
     # The first case and signal that differ.
-    diff_at=$(paste -d, "$tmp/t1.csv" "$tmp/t2.csv" | awk -F, 'NR == 1 { next }
+    # (paste writes a file, not a pipe: awk stops at the first difference, and
+    # a writer still writing would die of SIGPIPE under pipefail.)
+    paste -d, "$tmp/t1.csv" "$tmp/t2.csv" > "$tmp/t12.csv"
+    diff_at=$(awk -F, 'NR == 1 { next }
       { for (i = 2; i <= 5; i++) if ($i != $(i + 5)) { split("- in_ready out_valid out_value out_last", s, " ");
-        print $1 " (" s[i] ")"; exit } }')
+        print $1 " (" s[i] ")"; exit } }' "$tmp/t12.csv")
     echo "run.sh: $set: X or Z reaches the outputs: case $diff_at differs between two runs with different random initial values (an unreset register or an X/Z value that reaches the output)" >&2
     exit 2
   fi

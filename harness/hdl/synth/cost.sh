@@ -67,7 +67,7 @@ freq=12
   echo "sha256=$(cd "$units_dir" && cat -- "${files[@]}" | sha256sum | cut -d' ' -f1)"
   echo "yosys=$(yosys -V | sed 's/ (git sha1 [^)]*)//; s/ (.*//')"
   echo "nextpnr=$(nextpnr-ice40 --version 2>&1 | sed -n 's/^nextpnr-ice40 -- .*(Version \(.*\))$/nextpnr-ice40 \1/p')"
-  echo "iverilog=$(iverilog -V 2>&1 | head -n 1 | sed 's/ version / /; s/ *(.*//')"
+  echo "iverilog=$(iverilog -V 2>&1 | sed -n 1p | sed 's/ version / /; s/ *(.*//')"
   echo "device=$device_flags"
   echo "device_name=HX8K (ct256)"
   echo "seed=$seed"
@@ -83,8 +83,8 @@ measure() {
   : > "$row"
   fail() { echo "error=$1" >> "$row"; }
   local m f
-  m=$(sed -n 's/.*parameter[[:space:]]\{1,\}int[[:space:]]\{1,\}M[[:space:]]*=[[:space:]]*\([0-9]\{1,\}\).*/\1/p' "$src" | head -n 1)
-  f=$(sed -n 's/.*parameter[[:space:]]\{1,\}int[[:space:]]\{1,\}F[[:space:]]*=[[:space:]]*\([0-9]\{1,\}\).*/\1/p' "$src" | head -n 1)
+  m=$(sed -n 's/.*parameter[[:space:]]\{1,\}int[[:space:]]\{1,\}M[[:space:]]*=[[:space:]]*\([0-9]\{1,\}\).*/\1/p' "$src" | sed -n 1p)
+  f=$(sed -n 's/.*parameter[[:space:]]\{1,\}int[[:space:]]\{1,\}F[[:space:]]*=[[:space:]]*\([0-9]\{1,\}\).*/\1/p' "$src" | sed -n 1p)
   if [ -z "$m" ] || [ -z "$f" ]; then
     fail "no default \`parameter int M\` and \`F\` in $name.sv"; echo "cycles_error=-" >> "$row"; return
   fi
@@ -97,7 +97,7 @@ measure() {
   local n out cycles_ok=1
   if ! iverilog -g2012 -DCOST_UNIT="$name" -Pcost_cycles.M="$m" -Pcost_cycles.F="$f" \
       -o "$d/cycles" "$here/cycles.sv" "$src" > "$d/iverilog.log" 2>&1; then
-    echo "cycles_error=iverilog failed ($(grep -v 'sorry' "$d/iverilog.log" | head -n 1 | sed "s|$root/||"))" >> "$row"
+    echo "cycles_error=iverilog failed ($(grep -v 'sorry' "$d/iverilog.log" | sed -n 1p | sed "s|$root/||"))" >> "$row"
     cycles_ok=0
   fi
   for n in 8 64; do

@@ -5,8 +5,8 @@
     on the standard library axioms of the real numbers. *)
 
 From PhongApprox Require Import Span Duff Euler Derivative Symmetry Adaptive Angular.
-From PhongApprox Require Import ClosedForms Angle FastSetup Related Float Graph PhongValue.
-From PhongApprox Require Import PhongCountD PhongCount PhongNormalize Profiles.
+From PhongApprox Require Import ClosedForms Angle FastSetup Related Float Graph ShaderSqrt.
+From PhongApprox Require Import PhongValue PhongCountD PhongCount PhongNormalize Profiles.
 From PhongApprox Require Import AdaptiveDelta DuffCount Fixed.
 
 (** Span.v *)
@@ -192,6 +192,12 @@ Print Assumptions float_corrected_euler_binary64.
 (** Graph.v *)
 Check graph_sound.
 Print Assumptions graph_sound.
+
+(** ShaderSqrt.v *)
+Check shader_sqrt_recip_rsqrt.
+Print Assumptions shader_sqrt_recip_rsqrt.
+Check shader_sqrt_recip_rsqrt_ap1.
+Print Assumptions shader_sqrt_recip_rsqrt_ap1.
 
 (** PhongValue.v *)
 Check phong_value_real.

@@ -565,54 +565,12 @@ Proof.
   split; [apply pow2_ge_0 | nra].
 Qed.
 
-(** The table rows: sup over k in [0, 1 - cos θ], w in [0, 1/4] of R_CE, as
-    B/255 with B the supremum in 8-bit levels rounded up at the third digit. *)
-Lemma ce_row_5 : forall k w, 0 <= k <= 1 - cos (5 * PI / 180) -> 0 <= w <= 1 / 4 ->
-  Fce k w <= (0.00408 / 255) ^ 2.
-Proof. intros k w Hk Hw. unfold Fce. iv2 k w. Qed.
-Lemma ce_row_10 : forall k w, 0 <= k <= 1 - cos (10 * PI / 180) -> 0 <= w <= 1 / 4 ->
-  Fce k w <= (0.0328 / 255) ^ 2.
-Proof. intros k w Hk Hw. unfold Fce. iv2 k w. Qed.
-Lemma ce_row_15 : forall k w, 0 <= k <= 1 - cos (15 * PI / 180) -> 0 <= w <= 1 / 4 ->
-  Fce k w <= (0.111 / 255) ^ 2.
-Proof. intros k w Hk Hw. unfold Fce. iv2 k w. Qed.
-Lemma ce_row_20 : forall k w, 0 <= k <= 1 - cos (20 * PI / 180) -> 0 <= w <= 1 / 4 ->
-  Fce k w <= (0.264 / 255) ^ 2.
-Proof. intros k w Hk Hw. unfold Fce. iv2 k w. Qed.
-Lemma ce_row_25 : forall k w, 0 <= k <= 1 - cos (25 * PI / 180) -> 0 <= w <= 1 / 4 ->
-  Fce k w <= (0.519 / 255) ^ 2.
-Proof. intros k w Hk Hw. unfold Fce. iv2 k w. Qed.
-Lemma ce_row_30 : forall k w, 0 <= k <= 1 - cos (30 * PI / 180) -> 0 <= w <= 1 / 4 ->
-  Fce k w <= (0.904 / 255) ^ 2.
-Proof. intros k w Hk Hw. unfold Fce. iv2 k w. Qed.
-Lemma ce_row_35 : forall k w, 0 <= k <= 1 - cos (35 * PI / 180) -> 0 <= w <= 1 / 4 ->
-  Fce k w <= (1.45 / 255) ^ 2.
-Proof. intros k w Hk Hw. unfold Fce. iv2 k w. Qed.
-Lemma ce_row_40 : forall k w, 0 <= k <= 1 - cos (40 * PI / 180) -> 0 <= w <= 1 / 4 ->
-  Fce k w <= (2.19 / 255) ^ 2.
-Proof. intros k w Hk Hw. unfold Fce. iv2 k w. Qed.
-Lemma ce_row_45 : forall k w, 0 <= k <= 1 - cos (45 * PI / 180) -> 0 <= w <= 1 / 4 ->
-  Fce k w <= (3.16 / 255) ^ 2.
-Proof. intros k w Hk Hw. unfold Fce. iv2 k w. Qed.
-Lemma ce_row_50 : forall k w, 0 <= k <= 1 - cos (50 * PI / 180) -> 0 <= w <= 1 / 4 ->
-  Fce k w <= (4.39 / 255) ^ 2.
-Proof. intros k w Hk Hw. unfold Fce. iv2 k w. Qed.
-Lemma ce_row_60 : forall k w, 0 <= k <= 1 - cos (60 * PI / 180) -> 0 <= w <= 1 / 4 ->
-  Fce k w <= (7.83 / 255) ^ 2.
-Proof. intros k w Hk Hw. unfold Fce. iv2 k w. Qed.
-Lemma ce_row_70 : forall k w, 0 <= k <= 1 - cos (70 * PI / 180) -> 0 <= w <= 1 / 4 ->
-  Fce k w <= (12.9 / 255) ^ 2.
-Proof. intros k w Hk Hw. unfold Fce. iv2 k w. Qed.
-Lemma ce_row_80 : forall k w, 0 <= k <= 1 - cos (80 * PI / 180) -> 0 <= w <= 1 / 4 ->
-  Fce k w <= (20.1 / 255) ^ 2.
-Proof. intros k w Hk Hw. unfold Fce. iv2 k w. Qed.
-Lemma ce_row_90 : forall k w, 0 <= k <= 1 - cos (90 * PI / 180) -> 0 <= w <= 1 / 4 ->
-  Fce k w <= (30.0 / 255) ^ 2.
-Proof. intros k w Hk Hw. unfold Fce. iv2 k w. Qed.
-
-Ltac ce_row th Hrow :=
+(** A table row: sup over k in [0, 1 - cos θ], w in [0, 1/4] of R_CE, as B/255
+    with B the supremum in 8-bit levels rounded up at the third digit ([Fce k w <=
+    (B/255)^2] by interval bisection). *)
+Ltac ce_row th :=
   intros ?; apply (ce_pixel_bound _ _ (1 - cos (th * PI / 180))); try assumption;
-  [lra | iv | lra | exact Hrow].
+  [lra | iv | lra | intros k w Hk Hw; unfold Fce; iv2 k w].
 
 (* Note: Every n >= 1, every pixel 0 <= i <= n, every unit light; θ is the angle between
    the edge normals (cos θ <= c).  The bounds are sup over t in [0,1] and over unit
@@ -645,28 +603,22 @@ Theorem sec_7_corrected_euler_angle_table : forall (s : span) (i : nat),
 Proof.
   intros s i Ha Hb Hl Hn Hi. cbv zeta.
   repeat split.
-  - ce_row 5 ce_row_5.
-  - ce_row 10 ce_row_10.
-  - ce_row 15 ce_row_15.
-  - ce_row 20 ce_row_20.
-  - ce_row 25 ce_row_25.
-  - ce_row 30 ce_row_30.
-  - ce_row 35 ce_row_35.
-  - ce_row 40 ce_row_40.
-  - ce_row 45 ce_row_45.
-  - ce_row 50 ce_row_50.
-  - ce_row 60 ce_row_60.
-  - ce_row 70 ce_row_70.
-  - ce_row 80 ce_row_80.
-  - ce_row 90 ce_row_90.
+  - ce_row 5.
+  - ce_row 10.
+  - ce_row 15.
+  - ce_row 20.
+  - ce_row 25.
+  - ce_row 30.
+  - ce_row 35.
+  - ce_row 40.
+  - ce_row 45.
+  - ce_row 50.
+  - ce_row 60.
+  - ce_row 70.
+  - ce_row 80.
+  - ce_row 90.
 Qed.
 
-Lemma ce_row_31 : forall k w, 0 <= k <= 1 - cos (31 * PI / 180) -> 0 <= w <= 1 / 4 ->
-  Fce k w <= (1 / 255) ^ 2.
-Proof. intros k w Hk Hw. unfold Fce. iv2 k w. Qed.
-Lemma ce_row_24_6 : forall k w, 0 <= k <= 1 - cos (24.6 * PI / 180) -> 0 <= w <= 1 / 4 ->
-  Fce k w <= (1 / 510) ^ 2.
-Proof. intros k w Hk Hw. unfold Fce. iv2 k w. Qed.
 
 Lemma INR_const : forall m : nat, INR m = IZR (Z.of_nat m).
 Proof. exact INR_IZR_INZ. Qed.
@@ -730,8 +682,8 @@ Theorem sec_7_corrected_euler_one_level :
 Proof.
   split; [| split].
   - intros s i Ha Hb Hl Hn Hi. split.
-    + ce_row 31 ce_row_31.
-    + ce_row 24.6 ce_row_24_6.
+    + ce_row 31.
+    + ce_row 24.6.
   - apply ce_sharp; [lia | lia | lra | iv |].
     rewrite !INR_const. cbn [Z.of_nat Pos.of_succ_nat Pos.succ]. unfold Fce. iv.
   - apply ce_sharp; [lia | lia | lra | iv |].

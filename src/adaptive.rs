@@ -5,7 +5,7 @@
 //! `eq_24_gouraud_minus_corrected_euler`, `eq_24_delta_is_max_difference`,
 //! `eq_24_delta_test_does_not_imply_same_levels`,
 //! `eq_24_large_delta_implies_different_levels`).
-//! Tested: `tests/claims.rs` under the same names.
+//! Tested: `tests/claims/` under the same names.
 //!
 //! What is true (exactly, for any inputs): Gouraud minus corrected Euler at pixel `i`
 //! is `ds/2 · i·(n − i)`; eq. 23's `m = (d_p − t_0)/ds` is always `(n − 1)/2`; the
@@ -58,7 +58,7 @@ pub struct Decision<T> {
 /// rounding can move it, so the step is clamped to `0..=n` (and a non-finite `m`, from
 /// a tiny `ds`, is clamped too).
 ///
-/// Claims: `eq_23_24_paper_step_gives_delta`, `eq_24_large_delta_implies_different_clamped_levels` (proofs/ClosedForms.v); `eq_23_m_is_half_n_minus_1`, `eq_23_truncated_step_is_ceil_half`, `eq_24_delta_is_max_difference`, `eq_24_delta_test_fails_on_concrete_span`, `eq_24_large_delta_implies_different_levels` (proofs/Adaptive.v; tests/claims.rs).
+/// Claims: `eq_23_24_paper_step_gives_delta`, `eq_24_large_delta_implies_different_clamped_levels` (proofs/ClosedForms.v); `eq_23_m_is_half_n_minus_1`, `eq_23_truncated_step_is_ceil_half`, `eq_24_delta_is_max_difference`, `eq_24_delta_test_fails_on_concrete_span`, `eq_24_large_delta_implies_different_levels` (proofs/Adaptive.v; tests/claims/).
 pub fn decide<T: Scalar>(span: &Span<T>, kd: &T) -> Decision<T> {
     let ds = &span.ds;
     if ds.is_zero() {
@@ -99,12 +99,12 @@ pub fn decide<T: Scalar>(span: &Span<T>, kd: &T) -> Decision<T> {
 /// Gouraud and corrected Euler after `j` steps.
 ///
 /// Proved: `eq_24_delta_closed_form` (`δ = ds/2 · j(n − j)` at `j = ⌈n/2⌉`),
-/// `eq_24_delta_is_max_difference`. Tested: `tests/claims.rs`, same names.
+/// `eq_24_delta_is_max_difference`. Tested: `tests/claims/`, same names.
 ///
 /// With unit edge normals, at the step `⌈n/2⌉` this is `−(1 − N_a·N_b)(p_a + p_b)/8`
 /// for even `n` and that times `1 − 1/n²` for odd `n`.
 ///
-/// Claims: `eq_24_delta_closed_form` (proofs/Adaptive.v), `eq_24_delta_unit_closed_form` (proofs/ClosedForms.v); tests/claims.rs.
+/// Claims: `eq_24_delta_closed_form` (proofs/Adaptive.v), `eq_24_delta_unit_closed_form` (proofs/ClosedForms.v); tests/claims/.
 pub fn delta_at<T: Scalar>(span: &Span<T>, j: u32) -> T {
     let js = T::from_i64(i64::from(j));
     // (j² − j)/2 in 128 bits: exact for every u32 j.

@@ -5,7 +5,7 @@
 //! Proved: `proofs/Angular.v`, `mortensen_equal_angles_counterexample`,
 //! `mortensen_angle_not_linear`, `mortensen_unequal_angles_counterexample` (the angle
 //! does *not* change linearly along the span, so this is an approximation).
-//! Tested: `tests/claims.rs::mortensen_equal_angles_counterexample`,
+//! Tested: `tests/claims/general.rs::mortensen_equal_angles_counterexample`,
 //! `tests/methods.rs`.
 
 use crate::error::SpanError;
@@ -45,7 +45,7 @@ fn angles<T: Real>(span: &Span<T>) -> (T, T) {
 /// # Errors
 /// [`SpanError::OutputLength`] if `out.len() ≠ n + 1`.
 ///
-/// Claims: `mortensen_equal_angles_counterexample`, `mortensen_angle_not_linear`, `mortensen_unequal_angles_counterexample` (proofs/Angular.v; tests/claims.rs).
+/// Claims: `mortensen_equal_angles_counterexample`, `mortensen_angle_not_linear`, `mortensen_unequal_angles_counterexample` (proofs/Angular.v; tests/claims/).
 pub fn shade<T: Real>(span: &Span<T>, out: &mut [T]) -> Result<(), SpanError> {
     span.check_output(out)?;
     let (mut alpha, d_alpha) = angles(span);

@@ -3,7 +3,7 @@
 //!
 //! Proved: `proofs/Euler.v`, `eq_17_corrected_euler_starts_at_pa`,
 //! `eq_17_corrected_euler_ends_at_pb`.
-//! Tested: `tests/claims.rs::eq_17_corrected_euler_ends_at_pb` and
+//! Tested: `tests/claims/equations.rs::eq_17_corrected_euler_ends_at_pb` and
 //! `tests/float_bounds.rs::corrected_euler_error_bound_*`.
 
 use crate::error::SpanError;
@@ -24,7 +24,7 @@ use crate::span::Span;
 /// light while the edge normals are at most 31.0° apart, half a level up to 24.6°, and
 /// at most 7.83 levels at 60° (docs/derivations.md §11 has the table by angle).
 ///
-/// Claims: `eq_16_17_corrected_is_euler_minus_linear_error`, `eq_17_corrected_euler_starts_at_pa`, `eq_17_corrected_euler_ends_at_pb` (proofs/Euler.v), `sec_7_corrected_euler_in_t`, `sec_7_error_sup_over_lights`, `sec_7_corrected_euler_angle_table`, `sec_7_corrected_euler_one_level` (proofs/Angle.v); tests/claims.rs.
+/// Claims: `eq_16_17_corrected_is_euler_minus_linear_error`, `eq_17_corrected_euler_starts_at_pa`, `eq_17_corrected_euler_ends_at_pb` (proofs/Euler.v), `sec_7_corrected_euler_in_t`, `sec_7_error_sup_over_lights`, `sec_7_corrected_euler_angle_table`, `sec_7_corrected_euler_one_level` (proofs/Angle.v); tests/claims/.
 pub fn shade<T: Scalar>(span: &Span<T>, out: &mut [T]) -> Result<(), SpanError> {
     span.check_output(out)?;
     crate::euler::recurrence(span.p_a.clone(), span.t0.clone(), &span.ds, out);

@@ -1,7 +1,7 @@
 //! Duff's forward differences for `p/√q` along the scan line (eqs. 5–7).
 //!
 //! Proved: `proofs/Duff.v`, `eq_5_7_duff_recurrence_exact`.
-//! Tested: `tests/claims.rs::eq_5_7_duff_recurrence_exact`.
+//! Tested: `tests/claims/equations.rs::eq_5_7_duff_recurrence_exact`.
 
 use crate::error::SpanError;
 use crate::scalar::{Real, Scalar};
@@ -21,7 +21,7 @@ use crate::span::Span;
 /// where a float `q` rounds to zero (edge normals nearly opposite);
 /// [`SpanError::ZeroNormal`] at the middle pixel of a span with `N_b = −N_a`, even `n`.
 ///
-/// Claims: `eq_5_7_duff_computes_phong` (proofs/Duff.v; tests/claims.rs).
+/// Claims: `eq_5_7_duff_computes_phong` (proofs/Duff.v; tests/claims/).
 pub fn shade<T: Real>(span: &Span<T>, out: &mut [T]) -> Result<(), SpanError> {
     span.check_output(out)?;
     span.check_nonzero_normal()?;
@@ -36,7 +36,7 @@ pub fn shade<T: Real>(span: &Span<T>, out: &mut [T]) -> Result<(), SpanError> {
 /// The state of Duff's recurrence (eqs. 5–7): `p_i`, `q_i`, `dq_i`.
 #[derive(Clone, Debug)]
 ///
-/// Claims: `eq_5_7_duff_recurrence_exact`, `sec_4_dq_zero_at_middle` (proofs/Duff.v, proofs/Symmetry.v; tests/claims.rs).
+/// Claims: `eq_5_7_duff_recurrence_exact`, `sec_4_dq_zero_at_middle` (proofs/Duff.v, proofs/Symmetry.v; tests/claims/).
 pub struct Recurrence<T> {
     /// `p_i`.
     pub p: T,
@@ -53,7 +53,7 @@ pub struct Recurrence<T> {
 impl<T: Scalar> Recurrence<T> {
     /// The initial state `p_0 = B`, `q_0 = E`, `dq_0 = C + D`, `d²q = 2C` (§2.1).
     ///
-    /// Claims: `eq_7_duff_dq0_and_d2q` (proofs/Duff.v; tests/claims.rs).
+    /// Claims: `eq_7_duff_dq0_and_d2q` (proofs/Duff.v; tests/claims/).
     pub fn new(span: &Span<T>) -> Self {
         Recurrence {
             p: span.b.clone(),

@@ -2,7 +2,7 @@
 //! between its edge values and integrated one pixel at a time.
 //!
 //! Proved: `proofs/Euler.v`, `eq_14_euler_closed_form`.
-//! Tested: `tests/claims.rs::eq_14_euler_closed_form`.
+//! Tested: `tests/claims/equations.rs::eq_14_euler_closed_form`.
 //!
 //! Float error, for every implementation of the `ieee` profile (any order, fused
 //! multiply-adds, `/n` or `·(1/n)`; this code is one) against the exact run:
@@ -37,7 +37,7 @@ use crate::span::Span;
 /// Against Phong, at most `1 − N_a·N_b` off, reached on one-step spans (one 8-bit level
 /// up to θ = 5.07°).
 ///
-/// Claims: `eq_13_slope_closed_form`, `eq_14_euler_closed_form` (proofs/Euler.v), `eq_14_euler_sum_of_slopes` (proofs/ClosedForms.v), `sec_7_euler_in_t`, `sec_7_euler_angle_bound` (proofs/Angle.v); tests/claims.rs.
+/// Claims: `eq_13_slope_closed_form`, `eq_14_euler_closed_form` (proofs/Euler.v), `eq_14_euler_sum_of_slopes` (proofs/ClosedForms.v), `sec_7_euler_in_t`, `sec_7_euler_angle_bound` (proofs/Angle.v); tests/claims/.
 pub fn shade<T: Scalar>(span: &Span<T>, out: &mut [T]) -> Result<(), SpanError> {
     span.check_output(out)?;
     recurrence(span.p_a.clone(), span.di_a.clone(), &span.ds, out);

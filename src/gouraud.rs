@@ -1,6 +1,6 @@
 //! Gouraud (fence) shading along the span: linear between the exact edge values.
 //!
-//! Tested: `tests/claims.rs::eq_24_gouraud_minus_corrected_euler`.
+//! Tested: `tests/claims/equations.rs::eq_24_gouraud_minus_corrected_euler`.
 
 use crate::error::SpanError;
 use crate::scalar::Scalar;
@@ -21,7 +21,7 @@ use crate::span::Span;
 /// up to θ = 10.15°).
 ///
 /// Claims: `eq_24_gouraud_minus_corrected_euler` (proofs/Adaptive.v), `sec_7_gouraud_in_t`,
-/// `sec_7_gouraud_angle_bound`, `sec_7_error_sup_over_lights` (proofs/Angle.v); tests/claims.rs.
+/// `sec_7_gouraud_angle_bound`, `sec_7_error_sup_over_lights` (proofs/Angle.v); tests/claims/.
 pub fn shade<T: Scalar>(span: &Span<T>, out: &mut [T]) -> Result<(), SpanError> {
     span.check_output(out)?;
     let mut g = span.p_a.clone();

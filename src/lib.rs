@@ -35,7 +35,7 @@
 //! p_n, ε, dε, t_0, d_p) lives in [`Span`].
 //!
 //! The derivation of every claim, with links to its Coq proof (`proofs/`) and its
-//! property test (`tests/claims.rs`), is in [`derivations`] (the crate's
+//! property test (`tests/claims/`), is in [`derivations`] (the crate's
 //! `docs/derivations.md`); the places where the sources are wrong or ambiguous are in
 //! [`errata`] (`docs/errata.md`).
 //!

@@ -1,6 +1,6 @@
 //! Phong shading: the exact intensity at every pixel (eq. 4).
 //!
-//! Tested: `tests/claims.rs` (`eq_2_p_is_linear`, `eq_3_q_is_quadratic`,
+//! Tested: `tests/claims/` (`eq_2_p_is_linear`, `eq_3_q_is_quadratic`,
 //! `eq_5_7_duff_recurrence_exact`) and `tests/methods.rs`.
 
 use crate::error::SpanError;
@@ -19,7 +19,7 @@ use crate::span::Span;
 /// [`SpanError::ZeroNormal`] at the middle pixel of a span with `N_b = −N_a`, even `n`.
 ///
 /// Claims: `eq_4_phong_exact_on_edges` (proofs/Span.v); in closed form in `t = i/n`,
-/// `sec_7_phong_in_t` (proofs/Angle.v); tests/claims.rs.
+/// `sec_7_phong_in_t` (proofs/Angle.v); tests/claims/.
 pub fn shade<T: Real>(span: &Span<T>, out: &mut [T]) -> Result<(), SpanError> {
     span.check_output(out)?;
     span.check_nonzero_normal()?;

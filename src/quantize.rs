@@ -10,7 +10,7 @@ use crate::scalar::Scalar;
 /// Claims: `eq_24_delta_test_does_not_imply_same_levels` (proofs/Adaptive.v), and for this
 /// clamped quantiser `eq_24_delta_test_does_not_imply_same_clamped_levels`,
 /// `eq_24_delta_test_fails_on_concrete_span_clamped`,
-/// `eq_24_large_delta_implies_different_clamped_levels` (proofs/ClosedForms.v); tests/claims.rs.
+/// `eq_24_large_delta_implies_different_clamped_levels` (proofs/ClosedForms.v); tests/claims/.
 pub fn level<T: Scalar>(v: &T) -> u8 {
     if *v <= T::zero() {
         return 0;

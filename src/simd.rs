@@ -9,7 +9,7 @@
 //! table, for one `match` here). Every path evaluates every pixel with the same
 //! operations in the same order: no path contracts a product and a sum into a fused
 //! multiply-add (Rust never does so unasked), so their values are the same bits, and
-//! each path is judged under the `ieee` profile by `tests/profiles.rs` all the same.
+//! each path is judged under the `ieee` profile by `tests/profiles/` all the same.
 //!
 //! The choice: the best path the CPU has, or the one the environment variable
 //! `PHONG_APPROX_SIMD` names (`baseline`, `avx2`, `avx512`; [`from_env`]: the command

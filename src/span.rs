@@ -6,7 +6,7 @@
 //! from a [`Span`]; none recomputes it.
 //!
 //! Derivations: `docs/derivations.md`. Proofs: `proofs/Span.v`, `proofs/Euler.v`.
-//! Tests: `tests/claims.rs`.
+//! Tests: `tests/claims/`.
 
 use crate::error::{Input, SpanError};
 use crate::scalar::{Real, Scalar};
@@ -40,7 +40,7 @@ pub struct Span<T> {
     pub n_s: T,
     /// `k = (N_b − N_a)/n`, the normal's step per pixel (§2.1).
     ///
-    /// Claims: `eq_18_na_k_is_minus_nb_k` (proofs/Span.v; tests/claims.rs).
+    /// Claims: `eq_18_na_k_is_minus_nb_k` (proofs/Span.v; tests/claims/).
     pub k: Vec3<T>,
     /// `A = k·L` (eq. 2), the slope of `p`.
     pub a: T,
@@ -48,13 +48,13 @@ pub struct Span<T> {
     pub b: T,
     /// `C = k·k` (eq. 3).
     ///
-    /// Claims: `eq_20_n_k2_is_2k_nb` (proofs/Span.v; tests/claims.rs).
+    /// Claims: `eq_20_n_k2_is_2k_nb` (proofs/Span.v; tests/claims/).
     pub c: T,
     /// `D = 2 k·N_a` (eq. 3).
     pub d: T,
     /// `E = N_a·N_a` (eq. 3); 1 for a unit `N_a`.
     ///
-    /// Claims: `eq_3_e_is_one` (proofs/Span.v; tests/claims.rs).
+    /// Claims: `eq_3_e_is_one` (proofs/Span.v; tests/claims/).
     pub e: T,
     /// `p_a = N_a·L`, the exact intensity at the left edge (eq. 10).
     pub p_a: T,
@@ -62,30 +62,30 @@ pub struct Span<T> {
     pub p_b: T,
     /// `dq_a = D`, the slope of `q` at the left edge (eq. 10).
     ///
-    /// Claims: `eq_10_11_dp_dq_at_edges` (proofs/Derivative.v; tests/claims.rs).
+    /// Claims: `eq_10_11_dp_dq_at_edges` (proofs/Derivative.v; tests/claims/).
     pub dq_a: T,
     /// `dq_b = 2nC + D`, the slope of `q` at the right edge (eq. 11); equals `−dq_a`
     /// for unit edge normals (eq. 22), but is computed from its definition.
     ///
-    /// Claims: `eq_19_dqb_via_nb`, `eq_21_dqb_is_2k_nb`, `eq_22_dqb_is_minus_dqa` (proofs/Span.v; tests/claims.rs).
+    /// Claims: `eq_19_dqb_via_nb`, `eq_21_dqb_is_2k_nb`, `eq_22_dqb_is_minus_dqa` (proofs/Span.v; tests/claims/).
     pub dq_b: T,
     /// `di_a = A − p_a/2 · dq_a`, the derivative of `p/√q` at the left edge (eq. 10).
     ///
-    /// Claims: `eq_9_derivative` (proofs/Derivative.v; tests/claims.rs).
+    /// Claims: `eq_9_derivative` (proofs/Derivative.v; tests/claims/).
     pub di_a: T,
     /// `di_b = A − p_b/2 · dq_b`, the derivative of `p/√q` at the right edge (eq. 11).
     ///
-    /// Claims: `eq_10_11_edge_derivatives` (proofs/Derivative.v; tests/claims.rs).
+    /// Claims: `eq_10_11_edge_derivatives` (proofs/Derivative.v; tests/claims/).
     pub di_b: T,
     /// `ds = (di_b − di_a)/n`, the step of the interpolated derivative (§3).
     ///
     /// With unit edge normals `ds = −(1 − N_a·N_b)(p_a + p_b)/n²`.
     ///
-    /// Claims: `eq_11_ds_closed_form` (proofs/Span.v), `eq_11_ds_unit_closed_form` (proofs/ClosedForms.v); tests/claims.rs.
+    /// Claims: `eq_11_ds_closed_form` (proofs/Span.v), `eq_11_ds_unit_closed_form` (proofs/ClosedForms.v); tests/claims/.
     pub ds: T,
     /// `p_n = p_a + n·di_a + (n² − n)/2 · ds`, where plain Euler ends (eq. 14).
     ///
-    /// Claims: `eq_14_arithmetic_series`, `eq_14_euler_end_value` (proofs/Euler.v; tests/claims.rs).
+    /// Claims: `eq_14_arithmetic_series`, `eq_14_euler_end_value` (proofs/Euler.v; tests/claims/).
     pub p_n: T,
     /// `ε = p_n − p_b`, plain Euler's error at the right edge (eq. 15).
     ///
@@ -93,7 +93,7 @@ pub struct Span<T> {
     /// tends to `(1 − N_a·N_b)(p_a − p_b)/2` as `n` grows, and is zero only when
     /// `N_a = N_b` or `n(p_a − p_b) + p_a + p_b = 0`.
     ///
-    /// Claims: `eq_15_euler_misses_pb` (proofs/Euler.v), `eq_15_eps_closed_form`, `eq_15_eps_limit`, `eq_15_euler_misses_pb_general` (proofs/ClosedForms.v); tests/claims.rs.
+    /// Claims: `eq_15_euler_misses_pb` (proofs/Euler.v), `eq_15_eps_closed_form`, `eq_15_eps_limit`, `eq_15_euler_misses_pb_general` (proofs/ClosedForms.v); tests/claims/.
     pub eps: T,
     /// `dε = ε/n`, the correction per step (eq. 17; the text prints `ε/N`).
     pub d_eps: T,
@@ -273,14 +273,14 @@ impl<T: Scalar> Span<T> {
 
     /// `p(i) = A·i + B = N(i)·L` (eq. 2), the unnormalized dot product at pixel `i`.
     ///
-    /// Claims: `eq_2_p_is_linear` (proofs/Span.v; tests/claims.rs).
+    /// Claims: `eq_2_p_is_linear` (proofs/Span.v; tests/claims/).
     pub fn p_at(&self, i: u32) -> T {
         self.a.clone() * T::from_i64(i64::from(i)) + self.b.clone()
     }
 
     /// `q(i) = C·i² + D·i + E = N(i)·N(i)` (eq. 3).
     ///
-    /// Claims: `eq_3_q_is_quadratic`, `eq_10_q_is_one_on_edges`, `sec_4_q_minimum_at_middle` (proofs/Span.v, proofs/Symmetry.v; tests/claims.rs).
+    /// Claims: `eq_3_q_is_quadratic`, `eq_10_q_is_one_on_edges`, `sec_4_q_minimum_at_middle` (proofs/Span.v, proofs/Symmetry.v; tests/claims/).
     pub fn q_at(&self, i: u32) -> T {
         let x = T::from_i64(i64::from(i));
         (self.c.clone() * x.clone() + self.d.clone()) * x + self.e.clone()

@@ -2,7 +2,7 @@
 //!
 //! Proved: `proofs/Symmetry.v`, `sec_4_q_is_symmetric`,
 //! `sec_4_symmetric_phong_equals_phong`.
-//! Tested: `tests/claims.rs::sec_4_symmetric_phong_equals_phong`.
+//! Tested: `tests/claims/equations.rs::sec_4_symmetric_phong_equals_phong`.
 
 use crate::duff::Recurrence;
 use crate::error::SpanError;
@@ -22,7 +22,7 @@ use crate::span::Span;
 /// where a float `q` rounds to zero (edge normals nearly opposite);
 /// [`SpanError::ZeroNormal`] at the middle pixel of a span with `N_b = −N_a`, even `n`.
 ///
-/// Claims: `sec_4_q_is_symmetric`, `sec_4_symmetric_phong_equals_phong`, `sec_4_duff_q_is_symmetric` (proofs/Symmetry.v); this function, step by step, is `sec_4_symmetric_phong_algorithm` (proofs/ClosedForms.v); tests/claims.rs.
+/// Claims: `sec_4_q_is_symmetric`, `sec_4_symmetric_phong_equals_phong`, `sec_4_duff_q_is_symmetric` (proofs/Symmetry.v); this function, step by step, is `sec_4_symmetric_phong_algorithm` (proofs/ClosedForms.v); tests/claims/.
 pub fn shade<T: Real>(span: &Span<T>, out: &mut [T]) -> Result<(), SpanError> {
     span.check_output(out)?;
     span.check_nonzero_normal()?;

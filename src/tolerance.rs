@@ -200,7 +200,7 @@ pub fn reference_bound(
 /// `δ` and `4u` the rounding of its product `255·K_d·δ̂` (docs/float.md §10).
 ///
 /// Proved (`adaptive_acceptance_contains_every_run`, proofs/Profiles.v; test of the
-/// same name in tests/profiles.rs) for an implementation whose `δ̂` is the rounded
+/// same name in tests/profiles/) for an implementation whose `δ̂` is the rounded
 /// difference of the two methods' values at the middle pixel, each within its bound
 /// `b_G`, `b_CE`: outside this band it decides as the exact run does, so the set
 /// `check` accepts — either method's values within the band, the exact run's pick
@@ -310,7 +310,7 @@ fn edges(shape: Option<&Shape>) -> Option<(f64, f64)> {
 /// relative `γ_s` (`s − 1` products in any order, or a `pow` within an ulp) of at
 /// most `(v_max + b)^s`. The values may exceed 1 (corrected Euler reaches about
 /// 1.19), so the factor is taken at `v_max`, not at 1. Attacked by
-/// `tests/profiles.rs::specular_bound_holds`.
+/// `tests/profiles/published.rs::specular_bound_holds`.
 ///
 /// Each of the `s − 1` products may also underflow, off by half the smallest subnormal
 /// `η` ([`crate::Format::eta`]: `2^-150` in binary32, `2^-1075` in binary64) instead of relatively, which the

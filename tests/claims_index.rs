@@ -1,5 +1,5 @@
 //! One name per claim: every Coq `Theorem` of the paper and the second source in
-//! `proofs/` has a `#[test]` of the same name in `tests/claims.rs` and vice versa,
+//! `proofs/` has a `#[test]` of the same name in `tests/claims/` and vice versa,
 //! and is explained in `docs/derivations.md`; every `Theorem` of
 //! `proofs/Related.v` (the related-work methods) has a test of the same name in
 //! `tests/related.rs` and is explained in `docs/comparison.md`; every name is cited
@@ -18,20 +18,25 @@ fn read(p: &str) -> String {
 }
 
 /// Proof files whose theorems are tested and explained somewhere else than
-/// `tests/claims.rs` and `docs/derivations.md`: (file, test file, document).
-const GROUPS: [(&str, &str, &str); 12] = [
+/// `tests/claims/` and `docs/derivations.md`: (file, test file, document).
+const GROUPS: [(&str, &str, &str); 13] = [
     ("Related.v", "tests/related.rs", "docs/comparison.md"),
     ("Float.v", "tests/float_bounds.rs", "docs/float.md"),
     ("Fixed.v", "tests/lowp.rs", "docs/float.md"),
     ("Graph.v", "tests/graph.rs", "docs/float.md"),
-    ("FastSetup.v", "tests/fast.rs", "docs/float.md"),
-    ("Profiles.v", "tests/profiles.rs", "docs/float.md"),
+    ("FastSetup.v", "tests/fast_rows.rs", "docs/float.md"),
+    ("ShaderSqrt.v", "tests/profiles/shader.rs", "docs/float.md"),
+    ("Profiles.v", "tests/profiles/", "docs/float.md"),
     ("PhongValue.v", "tests/phong_value.rs", "docs/float.md"),
     ("PhongCount.v", "tests/phong_value.rs", "docs/float.md"),
     ("DuffCount.v", "tests/duff_count.rs", "docs/float.md"),
     ("PhongCountD.v", "tests/phong_value.rs", "docs/float.md"),
     ("PhongNormalize.v", "tests/phong_value.rs", "docs/float.md"),
-    ("AdaptiveDelta.v", "tests/profiles.rs", "docs/float.md"),
+    (
+        "AdaptiveDelta.v",
+        "tests/profiles/adaptive.rs",
+        "docs/float.md",
+    ),
 ];
 
 /// Every `Theorem` in `proofs/*.v` (except `Assumptions.v`) with its proof file.
@@ -62,22 +67,36 @@ fn home(file: &str) -> (&'static str, &'static str) {
     GROUPS
         .iter()
         .find(|(f, _, _)| *f == file)
-        .map_or(("tests/claims.rs", "docs/derivations.md"), |(_, t, d)| {
+        .map_or(("tests/claims/", "docs/derivations.md"), |(_, t, d)| {
             (*t, *d)
         })
 }
 
-/// The theorems of the paper and the second source (tested in `tests/claims.rs`).
+/// The theorems of the paper and the second source (tested in `tests/claims/`).
 fn paper_theorems() -> BTreeSet<String> {
     theorems_with_files()
         .into_iter()
-        .filter(|(_, f)| home(f).0 == "tests/claims.rs")
+        .filter(|(_, f)| home(f).0 == "tests/claims/")
         .map(|(t, _)| t)
         .collect()
 }
 
-/// The names of the `#[test]` functions in `file` (inside `proptest!` blocks too).
+/// The names of the `#[test]` functions in `file` (inside `proptest!` blocks too), or
+/// in every `.rs` file of the folder `file` when it ends in `/`.
 fn test_names(file: &str) -> BTreeSet<String> {
+    if file.ends_with('/') {
+        let mut files: Vec<_> = std::fs::read_dir(root().join(file))
+            .unwrap_or_else(|e| panic!("{file}: {e}"))
+            .map(|e| e.unwrap().file_name().into_string().unwrap())
+            .filter(|f| f.ends_with(".rs"))
+            .collect();
+        files.sort();
+        assert!(!files.is_empty(), "no test file in {file}");
+        return files
+            .iter()
+            .flat_map(|f| test_names(&format!("{file}{f}")))
+            .collect();
+    }
     let src = read(file);
     let lines: Vec<&str> = src.lines().collect();
     let mut names = BTreeSet::new();
@@ -113,11 +132,11 @@ fn every_theorem_has_a_test_and_every_test_a_theorem() {
             "theorem {name} of proofs/{file} has no test of that name in {tests}"
         );
     }
-    let c = test_names("tests/claims.rs");
+    let c = test_names("tests/claims/");
     let missing_proofs: Vec<_> = c.difference(&t).collect();
     assert!(
         missing_proofs.is_empty(),
-        "tests of tests/claims.rs without a theorem: {missing_proofs:?}"
+        "tests of tests/claims/ without a theorem: {missing_proofs:?}"
     );
 }
 
@@ -425,7 +444,7 @@ fn statement_of(file: &str, name: &str) -> String {
 /// every fraction of each of the twelve count theorems (the zero coefficients are not
 /// written as fractions) and normalize-then-dot's factor with its terms — and the
 /// constants of the adaptive band's error (`tolerance::profile::delta_error`, checked
-/// against the same formula in `tests/profiles.rs`) are `proofs/AdaptiveDelta.v`'s
+/// against the same formula in `tests/profiles/adaptive.rs`) are `proofs/AdaptiveDelta.v`'s
 /// definitions.
 #[test]
 fn the_checkers_phong_and_adaptive_constants_are_the_theorems() {

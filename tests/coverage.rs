@@ -74,13 +74,21 @@ fn every_method_has_a_bound() {
 
 #[test]
 fn every_method_cites_a_tested_claim() {
-    let mut tests = String::new();
-    for e in fs::read_dir(Path::new(env!("CARGO_MANIFEST_DIR")).join("tests")).unwrap() {
-        let p = e.unwrap().path();
-        if p.extension().is_some_and(|x| x == "rs") {
-            tests += &code_only(&fs::read_to_string(p).unwrap());
+    fn walk(dir: &Path, tests: &mut String) {
+        for e in fs::read_dir(dir).unwrap() {
+            let p = e.unwrap().path();
+            if p.is_dir() {
+                walk(&p, tests);
+            } else if p.extension().is_some_and(|x| x == "rs") {
+                *tests += &code_only(&fs::read_to_string(p).unwrap());
+            }
         }
     }
+    let mut tests = String::new();
+    walk(
+        &Path::new(env!("CARGO_MANIFEST_DIR")).join("tests"),
+        &mut tests,
+    );
     for m in Method::ALL {
         let file = format!("src/{}.rs", m.info().module.replace("::", "/"));
         let text = read(&file);

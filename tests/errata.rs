@@ -1,5 +1,5 @@
 //! Tests behind the entries of `docs/errata.md` that are not already claims of
-//! `tests/claims.rs`. Each either checks an exact counterexample or measures what a
+//! `tests/claims/`. Each either checks an exact counterexample or measures what a
 //! source states as a fact, and prints what it found.
 
 use crate::common;

@@ -9,7 +9,7 @@
 //! failure prints the method, type, pixel, the exact inputs, both values and the bound.
 //! The tests named `float_*_binary32/64` check the theorems of `proofs/Float.v` of the
 //! same names. The exact run of each (method, case) is computed once and shared by the
-//! `f32` and `f64` tests (`exact_values`). `bound_ratio_report` is in the extensive tier.
+//! `f32` and `f64` tests (`exact_values`). Its ratio table is `cargo xtask bound-ratios` (`tests/suites/xtask.rs`).
 
 use crate::common;
 
@@ -22,7 +22,7 @@ use proptest::strategy::{Strategy, ValueTree};
 use proptest::test_runner::{TestCaseError, TestRunner};
 
 /// Edge cases plus random spans at several lengths, from a fixed seed.
-fn cases() -> Vec<Case> {
+pub(crate) fn cases() -> Vec<Case> {
     let mut runner = TestRunner::deterministic();
     let mut v = edge_cases();
     let lens = [1u32, 2, 3, 7, 16, 64, 255, 1000];
@@ -52,7 +52,7 @@ fn abs_err<T: Scalar>(a: &T, b: &Q) -> f64 {
 /// Runs `method` in `T` and exactly on `c`, checks every pixel against the derived
 /// bound, and returns the largest error and the bound (`None` where no bound is
 /// derived for this span, e.g. `q` that may round to zero).
-fn check_case<T: Real>(method: Method, c: &Case) -> Result<Option<(f64, f64)>, String> {
+pub(crate) fn check_case<T: Real>(method: Method, c: &Case) -> Result<Option<(f64, f64)>, String> {
     let Some(exact_span) = c.span() else {
         return Ok(None);
     };
@@ -198,50 +198,7 @@ fn bound_search_f64() {
     search::<f64>();
 }
 
-/// The ratio (derived bound) / (worst error found) per method and format, over the
-/// edge, random and targeted cases and a longer search: the table of
-/// `docs/float.md`. Extensive tier: run with `PHONG_APPROX_TIER=extensive cargo test
-/// --release --test bounds float_bounds:: -- --ignored --nocapture`.
-#[test]
-#[ignore = "extensive tier"]
-fn bound_ratio_report() {
-    let mut all = cases();
-    all.extend(targeted_cases());
-    let mut runner = TestRunner::deterministic();
-    for _ in 0..200 {
-        all.push(arb_targeted().new_tree(&mut runner).unwrap().current());
-    }
-    println!("| method | format | worst error found (u) | at n | bound there (u) | ratio |");
-    println!("|---|---|---:|---:|---:|---:|");
-    for m in Method::ALL {
-        report::<f32>(m, &all);
-        report::<f64>(m, &all);
-    }
-}
-
-fn report<T: Real>(m: Method, all: &[Case]) {
-    let u = T::unit_roundoff();
-    // The case whose error comes closest to its bound.
-    let mut best: Option<(f64, f64, u32)> = None;
-    for c in all {
-        if let Some((e, b)) = check_case::<T>(m, c).unwrap() {
-            if e > 0.0 && best.is_none_or(|(be, bb, _)| e / b > be / bb) {
-                best = Some((e, b, c.n));
-            }
-        }
-    }
-    if let Some((e, b, n)) = best {
-        println!(
-            "| {m} | {} | {:.1} | {n} | {:.1} | {:.2} |",
-            T::NAME,
-            e / u,
-            b / u,
-            b / e
-        );
-    }
-}
-
-/// Claim-by-claim float checks: the exact identities of `tests/claims.rs` hold in
+/// Claim-by-claim float checks: the exact identities of `tests/claims/` hold in
 /// `T` to within a stated multiple of `u` on the span's scale.
 fn check_claims<T: Real>() {
     let u = T::unit_roundoff();

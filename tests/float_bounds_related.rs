@@ -58,7 +58,7 @@ impl Rel for Method {
 }
 
 /// The related methods, from the catalogue.
-fn related_methods() -> impl Iterator<Item = Method> {
+pub(crate) fn related_methods() -> impl Iterator<Item = Method> {
     Method::ALL.into_iter().filter(Method::is_related)
 }
 
@@ -137,7 +137,7 @@ fn abs_err<T: Scalar>(a: &T, b: &Q) -> f64 {
 }
 
 /// The largest error and the bound of one format, `None` where there is no bound.
-type Outcome = Option<(f64, f64)>;
+pub(crate) type Outcome = Option<(f64, f64)>;
 
 /// The float run of `m` in `T` against `want` (the exact run), pixel by pixel.
 fn compare<T: Real>(
@@ -173,7 +173,7 @@ fn compare<T: Real>(
 
 /// Runs `m` in `f32` and `f64` and exactly on `c` (once for both), and checks every
 /// pixel against the bound; `[f32, f64]`.
-fn check_case(m: Method, c: &Case) -> Result<[Outcome; 2], String> {
+pub(crate) fn check_case(m: Method, c: &Case) -> Result<[Outcome; 2], String> {
     let Some(exact_span) = c.span() else {
         return Ok([None, None]);
     };
@@ -197,7 +197,7 @@ fn check_case(m: Method, c: &Case) -> Result<[Outcome; 2], String> {
 }
 
 /// Edge cases, random spans from a fixed seed and the targeted cases.
-fn cases() -> Vec<Case> {
+pub(crate) fn cases() -> Vec<Case> {
     let mut runner = TestRunner::deterministic();
     let mut v = edge_cases();
     let lens = [1u32, 2, 3, 7, 16, 64, 255];
@@ -240,7 +240,7 @@ fn every_related_method_error_bound() {
 /// at a scale of up to 2^11, angles down to about 10^-4), nearly opposite normals
 /// (`arb_targeted`'s), light along `N_a`, along the span, grazing or anywhere, `n`
 /// next to a power of two up to 4096.
-fn arb_hard() -> impl Strategy<Value = Case> {
+pub(crate) fn arb_hard() -> impl Strategy<Value = Case> {
     let close = (
         -3i64..=3,
         -3i64..=3,
@@ -331,49 +331,6 @@ fn binary_truncated_run_is_the_exact_run() {
             let d = a.clone() - b.clone();
             let d = if d < q(0, 1) { -d } else { d };
             assert!(d <= tol, "{} pixel {i}: {}", c.why, d.to_f64());
-        }
-    }
-}
-
-/// The ratio (derived bound) / (worst error found) per method and format, at the case
-/// where the error comes closest to its bound, over the edge, random and targeted
-/// cases and 200 more spans of `arb_hard`: the rows of `docs/float.md` §13. Run with
-/// `cargo test --release --test bounds float_bounds_related:: -- --ignored --nocapture`.
-#[test]
-#[ignore = "extensive tier"]
-fn related_bound_ratio_report() {
-    let mut all = cases();
-    let mut runner = TestRunner::deterministic();
-    for _ in 0..200 {
-        all.push(arb_hard().new_tree(&mut runner).unwrap().current());
-    }
-    println!("| method | format | worst error found (u) | at n | bound there (u) | ratio |");
-    println!("|---|---|---:|---:|---:|---:|");
-    for m in related_methods() {
-        let mut best: [Option<(f64, f64, u32)>; 2] = [None, None];
-        for c in &all {
-            let r = check_case(m, c).unwrap_or_else(|e| panic!("{e}"));
-            for k in 0..2 {
-                if let Some((e, b)) = r[k] {
-                    if e > 0.0 && best[k].is_none_or(|(be, bb, _)| e / b > be / bb) {
-                        best[k] = Some((e, b, c.n));
-                    }
-                }
-            }
-        }
-        for (k, (name, u)) in [("f32", f32::unit_roundoff()), ("f64", f64::unit_roundoff())]
-            .into_iter()
-            .enumerate()
-        {
-            if let Some((e, b, n)) = best[k] {
-                println!(
-                    "| {} | {name} | {:.1} | {n} | {:.1} | {:.2} |",
-                    m.name(),
-                    e / u,
-                    b / u,
-                    b / e
-                );
-            }
         }
     }
 }

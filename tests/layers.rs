@@ -371,3 +371,67 @@ fn every_file_of_src_is_under_600_lines() {
         .collect();
     assert!(long.is_empty(), "split these by job: {long:?}");
 }
+
+/// The test tree reads like a table of contents (docs/testing.md, "Test binaries"):
+/// every test binary's root is in `tests/suites/` and is a list of modules; no file of
+/// `tests/` is over 1,000 lines; no test is `#[ignore]`d but for the extensive tier;
+/// and CI runs every test target (`gpu` in a stage of its own) without skipping a test
+/// by name — the report generators are the `xtask` program, not ignored tests.
+#[test]
+fn the_tests_are_a_table_of_contents() {
+    let root = src().parent().unwrap().to_path_buf();
+    let manifest = fs::read_to_string(root.join("Cargo.toml")).unwrap();
+    let mut roots = 0;
+    for block in manifest.split("\n[[test]]\n").skip(1) {
+        let path = block
+            .lines()
+            .take_while(|l| !l.starts_with('['))
+            .find_map(|l| l.strip_prefix("path = \""))
+            .and_then(|l| l.strip_suffix('"'))
+            .expect("every [[test]] names its path");
+        assert!(
+            path.starts_with("tests/suites/"),
+            "{path}: a test binary's root outside tests/suites/"
+        );
+        roots += 1;
+    }
+    assert!(roots >= 7, "{roots} test binaries");
+    fn walk(dir: &Path, out: &mut Vec<PathBuf>) {
+        for e in fs::read_dir(dir).unwrap() {
+            let p = e.unwrap().path();
+            if p.is_dir() {
+                walk(&p, out);
+            } else if p.extension().is_some_and(|x| x == "rs") {
+                out.push(p);
+            }
+        }
+    }
+    let mut all = Vec::new();
+    walk(&root.join("tests"), &mut all);
+    assert!(all.len() > 40, "{}", all.len());
+    for p in &all {
+        let text = fs::read_to_string(p).unwrap();
+        let n = text.lines().count();
+        assert!(
+            n <= 1000,
+            "{}: {n} lines (at most 1,000: split it by subject)",
+            p.display()
+        );
+        for (i, line) in text.lines().enumerate() {
+            if line.trim_start().starts_with("#[ignore") {
+                assert!(
+                    line.contains("extensive tier"),
+                    "{}:{}: an ignored test that is not of the extensive tier: {line}",
+                    p.display(),
+                    i + 1
+                );
+            }
+        }
+    }
+    let ci = fs::read_to_string(root.join(".ci/run")).unwrap();
+    let skips: Vec<&str> = ci
+        .lines()
+        .filter(|l| !l.trim_start().starts_with('#') && l.contains("--skip"))
+        .collect();
+    assert!(skips.is_empty(), "CI skips tests by name: {skips:?}");
+}

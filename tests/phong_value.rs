@@ -3,7 +3,7 @@
 //!   per-pixel normal and the lerp, dividing by `n` or through `1/n`, within the
 //!   theorems' constants of the exact `p_i` and `q_i`; attacked by native `ieee` code
 //!   in `f32` and `f64`, every dot-product order of [`super::Dot`], fused or not, on
-//!   the Phong spans of `tests/profiles.rs` (nearly opposite normals included), the
+//!   the Phong spans of `tests/profiles/` (nearly opposite normals included), the
 //!   errors exact (rationals);
 //! - the value step (`proofs/PhongValue.v`): from `p̂` and `q̂`
 //! within `e_p` and `e_q` of `p` and `q`, the computed `p̂/√q̂` or `p̂·(1/√q̂)` is within
@@ -284,7 +284,7 @@ fn distance(s: &Span<Q>) -> f64 {
     ((d2.to_f64() * (1.0 + 1e-15)).sqrt() * (1.0 + 1e-15)).min(2.0)
 }
 
-/// `p̂_i` and `q̂_i` of `form` in `T` (also `phong`'s in `tests/profiles.rs`), the dot products summed as `how`, the products
+/// `p̂_i` and `q̂_i` of `form` in `T` (also `phong`'s in `tests/profiles/`), the dot products summed as `how`, the products
 /// that feed an addition fused or not, `/n` as a division or `·(1/n)`.
 pub(super) fn pq<T: Native>(
     form: Form,

@@ -16,7 +16,7 @@ use crate::BigRational;
 
 /// `vectors/SHA256SUMS`: the SHA-256 of the published vector files, in `sha256sum`'s
 /// format (`DIGEST  SET.json` per line), as `phong-approx vectors` of this version
-/// writes them beside the sets; embedded at build (tested: `tests/conformance.rs`).
+/// writes them beside the sets; embedded at build (tested: `tests/conformance/`).
 pub const SHA256SUMS: &str = include_str!("../../vectors/SHA256SUMS");
 
 /// The published sets and their digests, `(set, SHA-256)`, read from [`SHA256SUMS`].

@@ -30,7 +30,7 @@
 //!
 //! Tested, with other implementations written from the definitions (other orders,
 //! `mul_add`, reciprocals, the closed form, a software GPU that truncates, divides
-//! within 2.5 ulp and flushes denormals), in `tests/profiles.rs`.
+//! within 2.5 ulp and flushes denormals), in `tests/profiles/`.
 
 use crate::Format;
 

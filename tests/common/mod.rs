@@ -21,7 +21,7 @@ pub type Q = BigRational;
 /// a representative sample; the extensive tier, run by CI as
 /// `PHONG_APPROX_TIER=extensive cargo test --release --all-features -- --include-ignored`,
 /// runs the same tests on the larger samples (the `n = 4096` exact spans, more random
-/// cases) plus the `#[ignore]`d long searches and reports.
+/// cases) plus the `#[ignore]`d long searches (the reports are `cargo xtask`).
 pub fn extensive() -> bool {
     std::env::var("PHONG_APPROX_TIER").is_ok_and(|t| t == "extensive")
 }

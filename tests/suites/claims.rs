@@ -6,7 +6,7 @@
 #[path = "../common/mod.rs"]
 mod common;
 
-#[path = "../claims.rs"]
+#[path = "../claims/mod.rs"]
 mod claims;
 #[path = "../claims_index.rs"]
 mod claims_index;

@@ -10,6 +10,8 @@ mod common;
 mod fast;
 #[path = "../fast_paths.rs"]
 mod fast_paths;
+#[path = "../fast_rows.rs"]
+mod fast_rows;
 #[cfg(feature = "lowp")]
 #[path = "../lowp.rs"]
 mod lowp;

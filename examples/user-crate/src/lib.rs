@@ -1,6 +1,6 @@
 //! Scan-line shading written from the paper, as a renderer would have it: Phong per
 //! pixel with glam, and corrected Euler (eqs. 15–17) in `f32`. Its conformance tests
-//! (`tests/conformance.rs`) use phong-approx's test kit.
+//! (`tests/conformance/`) use phong-approx's test kit.
 
 use glam::Vec3;
 

@@ -23,7 +23,8 @@ pub struct Arith {
     /// A division by 2 (or a product by `0.5`): exact under `ieee`, a division (or a
     /// computed `1/2` and a product) under `shader`.
     pub half: f64,
-    /// A square root (under `shader`, `1/inversesqrt`: 2 ulps and a 2.5-ulp division).
+    /// A square root (under `shader`, `1/inversesqrt`: 2 ulps and a 2.5-ulp division,
+    /// `shader_sqrt_recip_rsqrt` and `shader_sqrt_recip_rsqrt_ap1`, proofs/ShaderSqrt.v).
     pub sqrt: f64,
     /// The absolute error of one operation near zero (subnormals, or flushed results).
     pub eta: f64,
@@ -67,7 +68,8 @@ pub fn arith(profile: Profile, format: Format) -> Option<Arith> {
         // Vulkan/WGSL: add, sub, mul faithful (2 units of u), division 2.5 ulp (5),
         // sqrt inherited from 1/inversesqrt (2 ulp = 4, then the division, 5:
         // (1 + δ2)/(1 + δ1) − 1 is within 9u/(1 − 4u) ≤ (9 + 2^-18)u at u = 2^-24,
-        // not 9u), denormals flushed (2^-126).
+        // not 9u: `shader_sqrt_recip_rsqrt`, proofs/ShaderSqrt.v), denormals flushed
+        // (2^-126).
         (Profile::Shader, Format::Binary32) => Some(Arith {
             u,
             input: 2.0,

@@ -1,241 +1,15 @@
-//! The conformance kit: the committed vectors are what the code generates, the
-//! checker passes this crate's own float results and fails wrong ones (naming the
-//! case), and every kind of malformed input gets one line naming file, line and
-//! problem.
+//! `check` on this crate's own results and on wrong ones: every method and set, the specular cases, the command line, the profiles' proved bounds, the reports for other CI systems, fixed point, declared forms.
 
-mod runner;
-use runner::bin;
+use super::*;
 
-use phong_approx::conformance::check::{check, parse_results, Criteria, Tolerance};
-use phong_approx::conformance::vectors::{
-    self as vectors, inputs_csv, to_csv, Case, VectorFile, SETS,
-};
-use phong_approx::parse::parse_rational;
-use phong_approx::{Method, Real, Scalar, Span, Vec3};
-use std::path::{Path, PathBuf};
-use std::sync::OnceLock;
-
-fn root() -> &'static Path {
-    Path::new(env!("CARGO_MANIFEST_DIR"))
-}
-
-/// The committed files, read once.
-fn committed(set: &str) -> &'static VectorFile {
-    static FILES: OnceLock<Vec<VectorFile>> = OnceLock::new();
-    let files = FILES.get_or_init(|| {
-        SETS.iter()
-            .map(|s| {
-                let text =
-                    std::fs::read_to_string(root().join(format!("vectors/{s}.json"))).unwrap();
-                serde_json::from_str(&text).unwrap()
-            })
-            .collect()
-    });
-    &files[SETS.iter().position(|s| *s == set).unwrap()]
-}
-
-/// Runs `f` on every item of `work` on all cores, each core taking the next item in
-/// order (put the largest first).
-fn on_all_cores<T: Sync>(work: &[T], f: impl Fn(&T) + Sync) {
-    let threads = std::thread::available_parallelism().map_or(2, |n| n.get());
-    let next = std::sync::atomic::AtomicUsize::new(0);
-    std::thread::scope(|scope| {
-        for _ in 0..threads {
-            scope.spawn(|| {
-                while let Some(item) =
-                    work.get(next.fetch_add(1, std::sync::atomic::Ordering::Relaxed))
-                {
-                    f(item);
-                }
-            });
-        }
-    });
-}
-
-/// Default tier: the committed files' headers; a sample of the cases regenerated and
-/// compared value by value (every ninth `typical` case — n = 2, 3, 5, 8, 13, with and
-/// without specular —, every `edge` and `paper` case of at most 64 steps), on all
-/// cores; the CSV twins are what the committed JSON gives. Every case, and the files
-/// byte for byte, are the extensive tier's
-/// (`committed_vectors_are_what_the_code_generates_byte_for_byte`).
-#[test]
-fn committed_vectors_are_what_the_code_generates() {
-    let read = |set: &str, ext: &str| {
-        std::fs::read_to_string(root().join(format!("vectors/{set}{ext}"))).unwrap()
-    };
-    let mut sample = Vec::new();
-    let mut raws = Vec::new();
-    for set in SETS {
-        let text = read(set, ".json");
-        let raw: serde_json::Value = serde_json::from_str(&text).unwrap();
-        let stale = format!(
-            "vectors/{set}.json is stale: run `cargo run --release -- vectors --out vectors --force`"
-        );
-        // The header (every field but the cases).
-        let file = committed(set);
-        let specs = vectors::specs(set).unwrap();
-        let header = serde_json::to_value(vectors::file_of(set, Vec::new())).unwrap();
-        for (key, want) in header.as_object().unwrap() {
-            if key != "cases" && key != "number_of_cases" {
-                assert!(raw[key] == *want, "{stale}: {key}");
-            }
-        }
-        assert_eq!(raw["number_of_cases"], specs.len(), "{stale}");
-        for (k, spec) in specs.into_iter().enumerate() {
-            assert_eq!(spec.id, file.cases[k].id, "{stale}");
-            let keep = if set == "typical" {
-                k % 9 == 0
-            } else {
-                spec.n <= 64
-            };
-            if keep {
-                sample.push((raws.len(), k, spec, stale.clone()));
-            }
-        }
-        assert!(
-            read(set, ".csv") == to_csv(file),
-            "vectors/{set}.csv is stale"
-        );
-        assert!(
-            read(set, "-inputs.csv") == inputs_csv(file),
-            "vectors/{set}-inputs.csv is stale"
-        );
-        raws.push(raw);
-    }
-    assert!(sample.len() >= 15, "only {} cases sampled", sample.len());
-    // Largest first, spread over the cores.
-    sample.sort_by_key(|(_, _, spec, _)| std::cmp::Reverse(spec.n));
-    on_all_cores(&sample, |(set, k, spec, stale)| {
-        let id = spec.id.clone();
-        let case = spec.clone().compute().unwrap();
-        let got: serde_json::Value =
-            serde_json::from_str(&serde_json::to_string(&case).unwrap()).unwrap();
-        assert!(got == raws[*set]["cases"][*k], "{stale}: case {id}");
-    });
-}
-
-/// Extensive tier: every file regenerated in full and compared byte for byte. The
-/// cases of the three sets are computed on all cores, largest first (`generate` is
-/// the same specs computed in order), then each file is assembled and compared.
-#[test]
-#[ignore = "extensive tier"]
-fn committed_vectors_are_what_the_code_generates_byte_for_byte() {
-    let mut work = Vec::new();
-    for (s, set) in SETS.iter().enumerate() {
-        for (k, spec) in vectors::specs(set).unwrap().into_iter().enumerate() {
-            work.push((s, k, spec));
-        }
-    }
-    work.sort_by_key(|(_, _, spec)| std::cmp::Reverse(spec.n));
-    let computed = std::sync::Mutex::new(Vec::with_capacity(work.len()));
-    on_all_cores(&work, |(s, k, spec)| {
-        let case = spec.clone().compute().unwrap();
-        computed.lock().unwrap().push((*s, *k, case));
-    });
-    let mut computed = computed.into_inner().unwrap();
-    computed.sort_by_key(|(s, k, _)| (*s, *k));
-    for (s, set) in SETS.iter().enumerate() {
-        let cases = computed
-            .iter()
-            .filter(|(t, _, _)| *t == s)
-            .map(|(_, _, case)| case.clone())
-            .collect();
-        let file = vectors::file_of(set, cases);
-        let json = serde_json::to_string_pretty(&file).unwrap() + "\n";
-        let read = |ext: &str| {
-            std::fs::read_to_string(root().join(format!("vectors/{set}{ext}"))).unwrap()
-        };
-        assert!(
-            read(".json") == json,
-            "vectors/{set}.json is stale: run `cargo run --release -- vectors --out vectors`"
-        );
-        assert!(read(".csv") == to_csv(&file), "vectors/{set}.csv is stale");
-        assert!(
-            read("-inputs.csv") == inputs_csv(&file),
-            "vectors/{set}-inputs.csv is stale"
-        );
-    }
-}
-
-/// The schema is derived from the types (`vectors::schema`, with the catalogue's
-/// method names); the committed files are read by those types strictly (an unknown
-/// field is refused) and pass `integrity::validate`, which enforces what the schema's
-/// enumerations and ranges say and more.
-#[test]
-fn files_follow_the_schema() {
-    let committed_schema = std::fs::read_to_string(root().join("vectors/schema.json")).unwrap();
-    assert!(
-        committed_schema == phong_approx::conformance::vectors::schema(),
-        "vectors/schema.json is stale: regenerate with `phong-approx vectors --out vectors --force`"
-    );
-    for set in SETS {
-        let text = std::fs::read_to_string(root().join(format!("vectors/{set}.json"))).unwrap();
-        let f: VectorFile = serde_json::from_str(&text).unwrap();
-        phong_approx::conformance::integrity::validate(&f).unwrap();
-        assert_eq!(f.set, set);
-        assert_eq!(
-            f.version,
-            phong_approx::conformance::vectors::FORMAT_VERSION
-        );
-        assert_eq!(f.number_of_cases, f.cases.len());
-        let mut ids: Vec<&str> = f.cases.iter().map(|c| c.id.as_str()).collect();
-        ids.sort_unstable();
-        ids.dedup();
-        assert_eq!(ids.len(), f.cases.len(), "{set}: duplicate ids");
-        for c in &f.cases {
-            assert!(!c.comment.is_empty());
-            for e in c.expected.values() {
-                assert_eq!(e.values.len(), c.n as usize + 1, "{}", c.id);
-                for s in &e.values {
-                    let digits = s
-                        .trim_start_matches('-')
-                        .chars()
-                        .take_while(|ch| *ch != 'e')
-                        .filter(char::is_ascii_digit)
-                        .count();
-                    assert!(
-                        s == "0" || digits >= 25,
-                        "{}: '{s}' has {digits} digits",
-                        c.id
-                    );
-                }
-            }
-        }
-        // What the schema forbids is refused: a field it does not name, a method
-        // outside its enumeration, a step count below its minimum.
-        let mut v: serde_json::Value = serde_json::from_str(&text).unwrap();
-        v["cases"][0]["extra"] = 1.into();
-        assert!(
-            serde_json::from_value::<VectorFile>(v).is_err(),
-            "{set}: extra field"
-        );
-        for (field, value) in [
-            ("methods", serde_json::json!(["gouraud", "nope"])),
-            ("n", 0.into()),
-        ] {
-            let mut v: serde_json::Value = serde_json::from_str(&text).unwrap();
-            if field == "n" {
-                v["cases"][0]["n"] = value;
-            } else {
-                v[field] = value;
-            }
-            let f: VectorFile = serde_json::from_value(v).unwrap();
-            assert!(
-                phong_approx::conformance::integrity::validate(&f).is_err(),
-                "{set}: {field}"
-            );
-        }
-    }
-}
-
-fn vec_of<T: Scalar>(v: &[String; 3]) -> Vec3<T> {
+pub(crate) fn vec_of<T: Scalar>(v: &[String; 3]) -> Vec3<T> {
     let c = |s: &String| T::from_rational(&parse_rational(s).unwrap());
     Vec3::new(c(&v[0]), c(&v[1]), c(&v[2]))
 }
 
 /// This crate's own results for `method` in `T`, from the nearest-`T` inputs of each
 /// case (as another implementation would read them).
-fn own_results<T: Real>(file: &VectorFile, method: Method, specular: bool) -> String {
+pub(crate) fn own_results<T: Real>(file: &VectorFile, method: Method, specular: bool) -> String {
     let mut s = String::from("case,pixel,value\n");
     for c in &file.cases {
         let l = match (&c.specular, specular) {
@@ -264,7 +38,7 @@ fn own_results<T: Real>(file: &VectorFile, method: Method, specular: bool) -> St
     s
 }
 
-fn passes(
+pub(crate) fn passes(
     file: &VectorFile,
     method: Method,
     text: &str,
@@ -290,7 +64,7 @@ fn passes(
 /// interpolation has none for normals within about 5√u of equal (its `sin Δ` is
 /// ill-conditioned there, float.md §16.1) or where `n²u` is too large, and `check`
 /// then fails the case rather than pass it on a made-up tolerance.
-fn real_failures(m: Method, fails: Vec<String>) -> Vec<String> {
+pub(crate) fn real_failures(m: Method, fails: Vec<String>) -> Vec<String> {
     let related = m.is_related();
     fails
         .into_iter()
@@ -349,13 +123,13 @@ fn own_specular_results_pass() {
     }
 }
 
-fn tmp(name: &str, text: &str) -> PathBuf {
+pub(crate) fn tmp(name: &str, text: &str) -> PathBuf {
     let p = std::env::temp_dir().join(format!("phong-approx-conf-{}-{name}", std::process::id()));
     std::fs::write(&p, text).unwrap();
     p
 }
 
-fn run_check(vectors: &str, results: &Path, extra: &[&str]) -> (i32, String, String) {
+pub(crate) fn run_check(vectors: &str, results: &Path, extra: &[&str]) -> (i32, String, String) {
     let out = bin()
         .args(["check", "--vectors", vectors, "--results"])
         .arg(results)
@@ -370,7 +144,7 @@ fn run_check(vectors: &str, results: &Path, extra: &[&str]) -> (i32, String, Str
 }
 
 /// Results CSV `good` with the value of typical-007's pixel 3 moved by two levels.
-fn two_levels_off_at_typical_007_pixel_3(good: &str) -> String {
+pub(crate) fn two_levels_off_at_typical_007_pixel_3(good: &str) -> String {
     good.lines()
         .map(|l| {
             if l.starts_with("typical-007,3,") {
@@ -383,7 +157,7 @@ fn two_levels_off_at_typical_007_pixel_3(good: &str) -> String {
         .collect()
 }
 
-fn typical_path() -> String {
+pub(crate) fn typical_path() -> String {
     root().join("vectors/typical.json").display().to_string()
 }
 
@@ -441,53 +215,6 @@ fn check_cli_passes_own_results_and_fails_a_perturbed_one() {
     let json = serde_json::json!({ "cases": cases.into_iter().map(|(id, v)| serde_json::json!({"id": id, "values": v})).collect::<Vec<_>>() });
     let p = tmp("good.json", &json.to_string());
     assert_eq!(run_check(&typical_path(), &p, &[]).0, 0);
-}
-
-#[test]
-fn every_case_states_why_it_is_there() {
-    let edge = committed("edge");
-    let has = |pred: &dyn Fn(&Case) -> bool| edge.cases.iter().any(pred);
-    assert!(has(&|c| c.n == 1) && has(&|c| c.n == 2) && has(&|c| c.n == 4096));
-    assert!(has(&|c| c.na == c.nb));
-    assert!(has(&|c| c.q_min < 0.01), "normals 170° apart");
-    assert!(has(&|c| c.expected["phong"].levels.contains(&0)
-        && c.expected["phong"].levels.iter().any(|&l| l > 0)));
-    assert!(committed("paper")
-        .cases
-        .iter()
-        .all(|c| c.comment.contains("60°")
-            || c.comment.contains("Figures 1–3")
-            || c.comment.starts_with("adaptive threshold")));
-    // The adaptive test on both sides of its threshold, in every set (issue 31).
-    for set in phong_approx::testkit::SETS {
-        let f = committed(set);
-        for d in ["gouraud", "corrected-euler"] {
-            assert!(
-                f.cases
-                    .iter()
-                    .any(|c| c.decision == d && c.comment.starts_with("adaptive threshold")),
-                "{set} has no threshold case deciding {d}"
-            );
-        }
-    }
-}
-
-#[test]
-fn published_digests_are_those_of_the_committed_files() {
-    use phong_approx::conformance::integrity::{published, published_set, sha256_hex};
-    let sets: Vec<&str> = published().map(|(s, _)| s).collect();
-    assert_eq!(sets, SETS, "vectors/SHA256SUMS lists every set, in order");
-    for (set, digest) in published() {
-        let bytes = std::fs::read(root().join(format!("vectors/{set}.json"))).unwrap();
-        assert_eq!(sha256_hex(&bytes), digest, "{set}");
-        assert_eq!(published_set(digest), Some(set));
-        // And the committed file is valid by every invariant.
-        phong_approx::conformance::integrity::validate(committed(set)).unwrap();
-    }
-    assert_eq!(
-        sha256_hex(b"abc"),
-        "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad"
-    );
 }
 
 /// `check --profile`: the crate's own Gouraud and corrected-Euler results pass under
@@ -777,7 +504,7 @@ fn check_reports_for_other_ci_systems() {
 /// exact inputs) and rounded once to `f` fractional bits, then the loop in integer
 /// additions; the values as `f64` (exact for `f ≤ 52`). `eps_over` is `n` (right) or
 /// `n + 1` (the ε/(n+1) mutant).
-fn fixed_point_unit(
+pub(crate) fn fixed_point_unit(
     c: &phong_approx::conformance::vectors::Case,
     frac_bits: u32,
     mutant: bool,
@@ -934,7 +661,7 @@ fn check_profile_fixed_is_exact_up_to_51_fractional_bits() {
 /// Corrected Euler's closed form in `f32`, `p_a + i·(t_0 + (i − 1)/2·ds)`, with the
 /// set-up of eqs. 15–22 (the graph of `profile_ieee_corrected_euler_closed_binary32`),
 /// and `extra` added to the middle pixel.
-fn ce_closed_f32(s: &phong_approx::testkit::Inputs<f32>, extra: f32) -> Vec<f32> {
+pub(crate) fn ce_closed_f32(s: &phong_approx::testkit::Inputs<f32>, extra: f32) -> Vec<f32> {
     let d = |a: [f32; 3], b: [f32; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
     let n = s.n as f32;
     let k = [0, 1, 2].map(|j| (s.nb[j] - s.na[j]) / n);

@@ -218,32 +218,23 @@ Proof.
   rewrite <- bpow_plus. apply bpow_le. exact H.
 Qed.
 
+(** A profile's size conditions from Flocq's [flt_fmt_ok] for (emin, prec):
+    u = 2^p (p = -prec), eta = 2^e (e = emin - 1). *)
+Ltac model_ok_by M emin prec e p urw :=
+  destruct (flt_fmt_ok emin prec ltac:(lia) ltac:(lia)) as (H1 & H2 & H3 & H4);
+  change (Z.opp prec) with p in *; change (emin - 1)%Z with e in *;
+  pose proof (eta84 e p ltac:(lia)) as H5;
+  unfold M, model_ok; cbn [m_u m_eta k_in k_add k_mul k_div];
+  rewrite urw in *; repeat split; lra.
+
 Lemma ieee32_ok : model_ok ieee32 (2 + / 1048576).
-Proof.
-  destruct (flt_fmt_ok (-149) 24 ltac:(lia) ltac:(lia)) as (H1 & _ & H3 & H4).
-  change (Z.opp 24) with (-24)%Z in *. change (-149 - 1)%Z with (-150)%Z in *.
-  pose proof (eta84 (-150) (-24) ltac:(lia)) as H5.
-  unfold ieee32, model_ok; cbn [m_u m_eta k_in k_add k_mul k_div].
-  rewrite u24 in *. repeat split; lra.
-Qed.
+Proof. model_ok_by ieee32 (-149)%Z 24%Z (-150)%Z (-24)%Z u24. Qed.
 
 Lemma ieee64_ok : model_ok ieee64 (2 + / 1048576).
-Proof.
-  destruct (flt_fmt_ok (-1074) 53 ltac:(lia) ltac:(lia)) as (H1 & H2 & H3 & H4).
-  change (Z.opp 53) with (-53)%Z in *. change (-1074 - 1)%Z with (-1075)%Z in *.
-  pose proof (eta84 (-1075) (-53) ltac:(lia)) as H5.
-  unfold ieee64, model_ok; cbn [m_u m_eta k_in k_add k_mul k_div].
-  rewrite u53 in *. repeat split; lra.
-Qed.
+Proof. model_ok_by ieee64 (-1074)%Z 53%Z (-1075)%Z (-53)%Z u53. Qed.
 
 Lemma shader32_ok : model_ok shader32 5.
-Proof.
-  destruct (flt_fmt_ok (-125) 24 ltac:(lia) ltac:(lia)) as (H1 & H2 & H3 & H4).
-  change (Z.opp 24) with (-24)%Z in *. change (-125 - 1)%Z with (-126)%Z in *.
-  pose proof (eta84 (-126) (-24) ltac:(lia)) as H5.
-  unfold shader32, model_ok; cbn [m_u m_eta k_in k_add k_mul k_div].
-  rewrite u24 in *. repeat split; lra.
-Qed.
+Proof. model_ok_by shader32 (-125)%Z 24%Z (-126)%Z (-24)%Z u24. Qed.
 
 (** The shader profile with every division (by n, by 2) allowed to be a
     reciprocal within 2.5 ulp followed by a product rounded as the profile's
@@ -254,13 +245,7 @@ Definition shader32_recip : fmodel :=
   mkModel (bpow radix2 (-24)) (bpow radix2 (-126)) 2 2 2 (7 + / 1048576).
 
 Lemma shader32_recip_ok : model_ok shader32_recip (7 + / 1048576).
-Proof.
-  destruct (flt_fmt_ok (-125) 24 ltac:(lia) ltac:(lia)) as (H1 & H2 & H3 & H4).
-  change (Z.opp 24) with (-24)%Z in *. change (-125 - 1)%Z with (-126)%Z in *.
-  pose proof (eta84 (-126) (-24) ltac:(lia)) as H5.
-  unfold shader32_recip, model_ok; cbn [m_u m_eta k_in k_add k_mul k_div].
-  rewrite u24 in *. repeat split; lra.
-Qed.
+Proof. model_ok_by shader32_recip (-125)%Z 24%Z (-126)%Z (-24)%Z u24. Qed.
 
 (** ** Inputs and dot products of unit vectors, factor by factor *)
 
@@ -707,6 +692,7 @@ Ltac basics :=
   pose proof K_nr as Hnr; pose proof (v_pos v eta Hv) as Hu0;
   pose proof (v_small v eta Hv) as Hu1; pose proof (v_pos d eta Hdv) as Hd0;
   pose proof (v_small d eta Hdv) as Hd1.
+Ltac ebasics := basics; pose proof (e_pos v eta Hv) as He0; pose proof (e_small v eta Hv) as He1.
 
 (** Weights v w1 + d w2 of the componentwise errors (w1, w2 unit-free). *)
 Definition vlin (x y : R) (w1 w2 : vec) : vec :=
@@ -960,83 +946,64 @@ Proof.
     rewrite Rabs_mult, (Rabs_pos_eq (/ 2)) by lra. lra.
 Qed.
 
-Lemma K_xa : Rabs (nr * x1 - pa s * dot Dl (Na s)) <= 2603 / 100 * v + 402 / 100 * d.
+(** x = h F with h the halving of fP (within [K_h]) and n F within E of 2 X. *)
+Lemma K_x : forall (P fP h F X x E : R), Rabs P <= 1 ->
+  Rabs (fP - P) <= 5002 / 1000 * v + 1 / 1000 * d -> ap1 d eta h (fP / 2) ->
+  Rabs (nr * F - 2 * X) <= E -> E <= / 1000 -> Rabs X <= 2 -> ap1 v eta x (h * F) ->
+  Rabs (nr * x - P * X)
+  <= (2501 / 1000 * v + 502 / 1000 * d) * (4001 / 1000) + 1 / 2 * E
+     + (2001 / 1000 + / 68719476736) * v.
 Proof.
-  basics. pose proof K_d as H0. pose proof (dl_dot_le s Hua Hub (Na s) Hua) as H1.
-  pose proof (pa_le s Hua Hul) as H2.
-  pose proof (K_h (pa s) fpa h1 Hh1 H2 K_pa) as H3.
-  assert (H4 : Rabs (nr * fd) <= 4001 / 1000).
+  intros P fP h F X x E HP HfP Hh H0 HE H1 Hx. basics.
+  pose proof (K_h P fP h Hh HP HfP) as H3.
+  assert (H4 : Rabs (nr * F) <= 4001 / 1000).
   { pose proof (abs_near _ _ _ H0).
-    assert (Rabs (2 * dot Dl (Na s)) <= 4) by (rewrite Rabs_mult, (Rabs_pos_eq 2) by lra; lra).
-    lra. }
-  assert (H5 : Rabs (pa s / 2) <= 1 / 2).
-  { replace (pa s / 2) with (pa s * / 2) by field.
+    assert (Rabs (2 * X) <= 4) by (rewrite Rabs_mult, (Rabs_pos_eq 2) by lra; lra). lra. }
+  assert (H5 : Rabs (P / 2) <= 1 / 2).
+  { replace (P / 2) with (P * / 2) by field.
     rewrite Rabs_mult, (Rabs_pos_eq (/ 2)) by lra. lra. }
-  pose proof (prod_err h1 (pa s / 2) (nr * fd) (2 * dot Dl (Na s)) _ _ _ _ H3 H0 H4 H5) as H6.
-  replace (pa s / 2 * (2 * dot Dl (Na s))) with (pa s * dot Dl (Na s)) in H6 by field.
-  assert (H7 : Rabs (pa s * dot Dl (Na s)) <= 2).
+  pose proof (prod_err h (P / 2) (nr * F) (2 * X) _ _ _ _ H3 H0 H4 H5) as H6.
+  replace (P / 2 * (2 * X)) with (P * X) in H6 by field.
+  assert (H7 : Rabs (P * X) <= 2).
   { rewrite Rabs_mult. replace 2 with (1 * 2) by ring.
     apply Rmult_le_compat; try apply Rabs_pos; assumption. }
-  eapply Rle_trans.
-  { apply (ap_step v eta Hv nr x1 (h1 * fd) (h1 * (nr * fd)) _
-             ((2501 / 1000 * v + 502 / 1000 * d) * (4001 / 1000)
-              + 1 / 2 * (2803 / 100 * v + 402 / 100 * d)) (2001 / 1000) Hx1);
-      [lra | ring | exact H6 | lra]. }
-  lra.
+  apply (ap_step v eta Hv nr x (h * F) (h * (nr * F)) _ _ (2001 / 1000) Hx);
+    [lra | ring | exact H6 | lra].
+Qed.
+
+Lemma K_xa : Rabs (nr * x1 - pa s * dot Dl (Na s)) <= 2603 / 100 * v + 402 / 100 * d.
+Proof.
+  basics. pose proof (K_x _ _ _ _ _ _ _ (pa_le s Hua Hul) K_pa Hh1 K_d ltac:(lra)
+    (dl_dot_le s Hua Hub (Na s) Hua) Hx1). lra.
 Qed.
 
 Lemma K_xb : Rabs (nr * x2 - pb s * dot Dl (Nb s)) <= 6006 / 100 * v + 1203 / 100 * d.
 Proof.
-  basics. pose proof K_qb as H0. pose proof (dl_dot_le s Hua Hub (Nb s) Hub) as H1.
-  pose proof (pb_le s Hub Hul) as H2.
-  pose proof (K_h (pb s) fpb h2 Hh2 H2 K_pb) as H3.
-  assert (H4 : Rabs (nr * fdqb) <= 4001 / 1000).
-  { pose proof (abs_near _ _ _ H0).
-    assert (Rabs (2 * dot Dl (Nb s)) <= 4) by (rewrite Rabs_mult, (Rabs_pos_eq 2) by lra; lra).
-    lra. }
-  assert (H5 : Rabs (pb s / 2) <= 1 / 2).
-  { replace (pb s / 2) with (pb s * / 2) by field.
-    rewrite Rabs_mult, (Rabs_pos_eq (/ 2)) by lra. lra. }
-  pose proof (prod_err h2 (pb s / 2) (nr * fdqb) (2 * dot Dl (Nb s)) _ _ _ _ H3 H0 H4 H5) as H6.
-  replace (pb s / 2 * (2 * dot Dl (Nb s))) with (pb s * dot Dl (Nb s)) in H6 by field.
-  assert (H7 : Rabs (pb s * dot Dl (Nb s)) <= 2).
-  { rewrite Rabs_mult. replace 2 with (1 * 2) by ring.
-    apply Rmult_le_compat; try apply Rabs_pos; assumption. }
-  eapply Rle_trans.
-  { apply (ap_step v eta Hv nr x2 (h2 * fdqb) (h2 * (nr * fdqb)) _
-             ((2501 / 1000 * v + 502 / 1000 * d) * (4001 / 1000)
-              + 1 / 2 * (9609 / 100 * v + 2004 / 100 * d)) (2001 / 1000) Hx2);
-      [lra | ring | exact H6 | lra]. }
-  lra.
+  basics. pose proof (K_x _ _ _ _ _ _ _ (pb_le s Hub Hul) K_pb Hh2 K_qb ltac:(lra)
+    (dl_dot_le s Hua Hub (Nb s) Hub) Hx2). lra.
+Qed.
+
+(** di = a - x with n x within E of Y, |a.L - Y| <= 2. *)
+Lemma K_di_r : forall (x fdi Y E : R), ap1 v eta fdi (fa - x) -> Rabs (nr * x - Y) <= E ->
+  E <= / 1024 -> Rabs (dot Dl (L s) - Y) <= 2 ->
+  Rabs (nr * fdi - (nr * fa - nr * x)) <= 2002 / 1000 * v.
+Proof.
+  intros x fdi Y E Hdi HY HE H2. basics. pose proof K_a as H0.
+  rewrite <- Rmult_minus_distr_l.
+  eapply Rle_trans; [apply (ap_sc v eta Hv _ _ _ (2001 / 1000) Hdi); [lra|] | lra].
+  rewrite Rmult_minus_distr_l.
+  apply (Rle_trans _ (Rabs (dot Dl (L s) - Y) + ((1201 / 100 * v + 201 / 100 * d) + E))); [|lra].
+  apply abs_near.
+  replace (nr * fa - nr * x - (dot Dl (L s) - Y))
+    with ((nr * fa - dot Dl (L s)) - (nr * x - Y)) by ring.
+  eapply Rle_trans; [apply absdiff|]. lra.
 Qed.
 
 Lemma K_dia_r : Rabs (nr * fdia - (nr * fa - nr * x1)) <= 2002 / 1000 * v.
-Proof.
-  basics. pose proof K_a as H0. pose proof K_xa as H1. pose proof (ndia_le s Hua Hub Hul) as H2.
-  rewrite <- Rmult_minus_distr_l.
-  eapply Rle_trans; [apply (ap_sc v eta Hv _ _ _ (2001 / 1000) Hdia); [lra|] | lra].
-  rewrite Rmult_minus_distr_l.
-  apply (Rle_trans _ (Rabs (e_ndia s) + ((1201 / 100 * v + 201 / 100 * d)
-                                         + (2603 / 100 * v + 402 / 100 * d)))); [|lra].
-  apply abs_near. unfold e_ndia.
-  replace (nr * fa - nr * x1 - (dot Dl (L s) - pa s * dot Dl (Na s)))
-    with ((nr * fa - dot Dl (L s)) - (nr * x1 - pa s * dot Dl (Na s))) by ring.
-  eapply Rle_trans; [apply absdiff|]. lra.
-Qed.
+Proof. basics. exact (K_di_r _ _ _ _ Hdia K_xa ltac:(lra) (ndia_le s Hua Hub Hul)). Qed.
 
 Lemma K_dib_r : Rabs (nr * fdib - (nr * fa - nr * x2)) <= 2002 / 1000 * v.
-Proof.
-  basics. pose proof K_a as H0. pose proof K_xb as H1. pose proof (ndib_le s Hua Hub Hul) as H2.
-  rewrite <- Rmult_minus_distr_l.
-  eapply Rle_trans; [apply (ap_sc v eta Hv _ _ _ (2001 / 1000) Hdib); [lra|] | lra].
-  rewrite Rmult_minus_distr_l.
-  apply (Rle_trans _ (Rabs (e_ndib s) + ((1201 / 100 * v + 201 / 100 * d)
-                                         + (6006 / 100 * v + 1203 / 100 * d)))); [|lra].
-  apply abs_near. unfold e_ndib.
-  replace (nr * fa - nr * x2 - (dot Dl (L s) - pb s * dot Dl (Nb s)))
-    with ((nr * fa - dot Dl (L s)) - (nr * x2 - pb s * dot Dl (Nb s))) by ring.
-  eapply Rle_trans; [apply absdiff|]. lra.
-Qed.
+Proof. basics. exact (K_di_r _ _ _ _ Hdib K_xb ltac:(lra) (ndib_le s Hua Hub Hul)). Qed.
 
 Lemma K_dia : Rabs (nr * fdia - e_ndia s) <= 4005 / 100 * v + 603 / 100 * d.
 Proof.
@@ -1229,8 +1196,7 @@ Lemma K_final_gen : forall (t Cs Msn Mp E0 B : R) (ex : nat -> R) (ua : R) (P Q 
   forall i, (i <= n s)%nat ->
   Rabs (P i - ex i) <= (Msn / 2 + Mp) * (nr * ua) + E0 + 281474976710656 * eta.
 Proof.
-  intros t Cs Msn Mp E0 B ex ua P Q Hua0 Hnua HMsn HMp HC1 HC2 Hsl Hid HP0 HQ0 Hstep i Hi. basics.
-  pose proof (e_pos v eta Hv) as He0. pose proof (e_small v eta Hv) as He1.
+  intros t Cs Msn Mp E0 B ex ua P Q Hua0 Hnua HMsn HMp HC1 HC2 Hsl Hid HP0 HQ0 Hstep i Hi. ebasics.
   set (Ms := Msn / nr).
   assert (HMs : 0 <= Ms)
     by (unfold Ms, Rdiv; apply Rmult_le_pos; [lra | apply Rlt_le, Rinv_0_lt_compat; lra]).
@@ -1286,8 +1252,7 @@ Lemma K_ce_final : forall (ua : R) (P Q : nat -> R), 0 <= ua <= v -> nr * ua <= 
   forall i, (i <= n s)%nat ->
   Rabs (P i - ceuler s i) <= 22 / 10 * (nr * ua) + 366 / 10 * v + 73 / 10 * d.
 Proof.
-  intros ua P Q Hua0 Hnua HP0 HQ0 Hstep i Hi. basics.
-  pose proof (e_pos v eta Hv) as He0. pose proof (e_small v eta Hv) as He1.
+  intros ua P Q Hua0 Hnua HP0 HQ0 Hstep i Hi. ebasics.
   pose proof (K_final_gen ft0 2 (2002 / 1000) (1194 / 1000) (3656 / 100 * v + 727 / 100 * d)
     (11925 / 10000) (ceuler s) ua P Q Hua0 Hnua ltac:(lra) ltac:(lra) ltac:(lra) ltac:(lra)
     K_slope (fun j Hj => conj (K_ce_ideal j Hj) (ceuler_le s Hua Hub Hul Hn1 j Hj))
@@ -1303,8 +1268,7 @@ Lemma K_closed : forall i, (i <= n s)%nat -> forall hh g m p : R,
   ap1 v eta m (INR i * g) -> ap1 v eta p (fpa + m) ->
   Rabs (p - ceuler s i) <= 45 * v + 73 / 10 * d.
 Proof.
-  intros i Hi hh g m p Hh Hg Hm Hp. basics.
-  pose proof (e_pos v eta Hv) as He0. pose proof (e_small v eta Hv) as He1.
+  intros i Hi hh g m p Hh Hg Hm Hp. ebasics.
   assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
   pose proof (K_slope 0 ltac:(lia)) as S0. cbn [INR] in S0. rewrite Rmult_0_l, Rplus_0_r in S0.
   pose proof K_ds as D0. pose proof (n2ds_le s Hua Hub Hul) as D1. pose proof (abs_near _ _ _ D0).
@@ -1425,8 +1389,7 @@ Lemma K_eu_final : forall (ua : R) (P Q : nat -> R), 0 <= ua <= v -> nr * ua <= 
   forall i, (i <= n s)%nat ->
   Rabs (P i - euler_span s i) <= 555 / 100 * (nr * ua) + 912 / 10 * v + 151 / 10 * d.
 Proof.
-  intros ua P Q Hua0 Hnua HP0 HQ0 Hstep i Hi. basics.
-  pose proof (e_pos v eta Hv) as He0. pose proof (e_small v eta Hv) as He1.
+  intros ua P Q Hua0 Hnua HP0 HQ0 Hstep i Hi. ebasics.
   pose proof (K_final_gen fdia (354 / 100) (3545 / 1000) (3775 / 1000)
     (9111 / 100 * v + 1507 / 100 * d) (377 / 100) (euler_span s) ua P Q Hua0 Hnua
     ltac:(lra) ltac:(lra) ltac:(lra) ltac:(lra) (fun J HJ => K_eu_slope J ltac:(lia))
@@ -1443,8 +1406,7 @@ Lemma K_eu_closed : forall i, (i <= n s)%nat -> forall hh g m p : R,
   ap1 v eta m (INR i * g) -> ap1 v eta p (fpa + m) ->
   Rabs (p - euler_span s i) <= 1012 / 10 * v + 151 / 10 * d.
 Proof.
-  intros i Hi hh g m p Hh Hg Hm Hp. basics.
-  pose proof (e_pos v eta Hv) as He0. pose proof (e_small v eta Hv) as He1.
+  intros i Hi hh g m p Hh Hg Hm Hp. ebasics.
   assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
   pose proof K_dia as A0. pose proof (ndia_le s Hua Hub Hul) as A1. pose proof (abs_near _ _ _ A0).
   pose proof K_ds as D0. pose proof (n2ds_le' s Hua Hub Hul) as D1. pose proof (abs_near _ _ _ D0).
@@ -1464,8 +1426,7 @@ Lemma K_half : forall i hh, half_rel v d eta i fds hh ->
   Rabs (hh - (INR i - 1) / 2 * fds)
   <= (v + d) * (1 + / 2097152) * Rabs ((INR i - 1) / 2 * fds) + 4 * eta.
 Proof.
-  intros i hh H. basics.
-  pose proof (e_pos v eta Hv) as He0. pose proof (e_small v eta Hv) as He1.
+  intros i hh H. ebasics.
   pose proof K_ds as D0. pose proof (n2ds_le s Hua Hub Hul) as D1.
   assert (D2 : Rabs (nr * nr * fds) <= 2001 / 1000) by (pose proof (abs_near _ _ _ D0); lra).
   assert (Bds : Rabs fds <= 2001 / 1000).

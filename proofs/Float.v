@@ -709,93 +709,70 @@ Proof.
     rewrite Rabs_mult, (Rabs_pos_eq (/ 2)) by lra. lra.
 Qed.
 
+(** rnd (rnd (fP / 2) * F) with fP within 5.002 u of P and n F within E of 2 X. *)
+Lemma L_x : forall (P fP F X E : R), Rabs P <= 1 -> Rabs (fP - P) <= 5002 / 1000 * u ->
+  Rabs (nr * F - 2 * X) <= E -> E <= / 1000 -> Rabs X <= 2 ->
+  Rabs (nr * rnd (rnd (fP / 2) * F) - P * X)
+  <= 301 / 100 * u * (4001 / 1000) + 1 / 2 * E + (2001 / 1000 + / 68719476736) * u.
+Proof.
+  intros P fP F X E HP HfP H0 HE H1. basics.
+  pose proof (L_h P fP HP HfP) as H3.
+  set (HA := rnd (fP / 2)) in *.
+  assert (H4 : Rabs (nr * F) <= 4001 / 1000).
+  { pose proof (abs_near _ _ _ H0).
+    assert (Rabs (2 * X) <= 4) by (rewrite Rabs_mult, (Rabs_pos_eq 2) by lra; lra). lra. }
+  assert (H5 : Rabs (P / 2) <= 1 / 2).
+  { replace (P / 2) with (P * / 2) by field.
+    rewrite Rabs_mult, (Rabs_pos_eq (/ 2)) by lra. lra. }
+  pose proof (prod_err HA (P / 2) (nr * F) (2 * X) _ _ _ _ H3 H0 H4 H5) as H6.
+  replace (P / 2 * (2 * X)) with (P * X) in H6 by field.
+  assert (H7 : Rabs (P * X) <= 2).
+  { rewrite Rabs_mult. replace 2 with (1 * 2) by ring.
+    apply Rmult_le_compat; try apply Rabs_pos; assumption. }
+  apply (rnd_step rnd u eta Hstd Hok nr _ (HA * (nr * F)) _ _ (2001 / 1000));
+    [lra | ring | exact H6 | lra].
+Qed.
+
 Lemma L_xa : Rabs (nr * rnd (rnd (f_pa rnd s / 2) * f_d rnd s) - pa s * dot Dl (Na s))
              <= 302 / 10 * u.
 Proof.
-  basics. pose proof L_d as H0. pose proof (dl_dot_le s Hua Hub (Na s) Hua) as H1.
-  pose proof (pa_le s Hua Hul) as H2.
-  pose proof (L_h (pa s) (f_pa rnd s) H2 L_pa) as H3.
-  set (HA := rnd (f_pa rnd s / 2)) in *.
-  assert (H4 : Rabs (nr * f_d rnd s) <= 4001 / 1000).
-  { pose proof (abs_near _ _ _ H0).
-    assert (Rabs (2 * dot Dl (Na s)) <= 4) by (rewrite Rabs_mult, (Rabs_pos_eq 2) by lra; lra).
-    lra. }
-  assert (H5 : Rabs (pa s / 2) <= 1 / 2).
-  { replace (pa s / 2) with (pa s * / 2) by field.
-    rewrite Rabs_mult, (Rabs_pos_eq (/ 2)) by lra. lra. }
-  pose proof (prod_err HA (pa s / 2) (nr * f_d rnd s) (2 * dot Dl (Na s)) _ _ _ _ H3 H0 H4 H5) as H6.
-  replace (pa s / 2 * (2 * dot Dl (Na s))) with (pa s * dot Dl (Na s)) in H6 by field.
-  assert (H7 : Rabs (pa s * dot Dl (Na s)) <= 2).
-  { rewrite Rabs_mult. replace 2 with (1 * 2) by ring.
-    apply Rmult_le_compat; try apply Rabs_pos; assumption. }
-  eapply Rle_trans.
-  { apply (rnd_step rnd u eta Hstd Hok nr _ (HA * (nr * f_d rnd s)) _
-             (301 / 100 * u * (4001 / 1000) + 1 / 2 * (321 / 10 * u)) (2001 / 1000));
-      [lra | ring | exact H6 | lra]. }
-  lra.
+  basics. pose proof (L_x _ _ _ _ _ (pa_le s Hua Hul) L_pa L_d ltac:(lra)
+    (dl_dot_le s Hua Hub (Na s) Hua)). lra.
 Qed.
 
 Lemma L_xb : Rabs (nr * rnd (rnd (f_pb rnd s / 2) * f_dqb rnd s) - pb s * dot Dl (Nb s))
              <= 723 / 10 * u.
 Proof.
-  basics. pose proof L_qb as H0. pose proof (dl_dot_le s Hua Hub (Nb s) Hub) as H1.
-  pose proof (pb_le s Hub Hul) as H2.
-  pose proof (L_h (pb s) (f_pb rnd s) H2 L_pb) as H3.
-  set (HB := rnd (f_pb rnd s / 2)) in *.
-  assert (H4 : Rabs (nr * f_dqb rnd s) <= 4001 / 1000).
-  { pose proof (abs_near _ _ _ H0).
-    assert (Rabs (2 * dot Dl (Nb s)) <= 4) by (rewrite Rabs_mult, (Rabs_pos_eq 2) by lra; lra).
-    lra. }
-  assert (H5 : Rabs (pb s / 2) <= 1 / 2).
-  { replace (pb s / 2) with (pb s * / 2) by field.
-    rewrite Rabs_mult, (Rabs_pos_eq (/ 2)) by lra. lra. }
-  pose proof (prod_err HB (pb s / 2) (nr * f_dqb rnd s) (2 * dot Dl (Nb s)) _ _ _ _ H3 H0 H4 H5) as H6.
-  replace (pb s / 2 * (2 * dot Dl (Nb s))) with (pb s * dot Dl (Nb s)) in H6 by field.
-  assert (H7 : Rabs (pb s * dot Dl (Nb s)) <= 2).
-  { rewrite Rabs_mult. replace 2 with (1 * 2) by ring.
-    apply Rmult_le_compat; try apply Rabs_pos; assumption. }
-  eapply Rle_trans.
-  { apply (rnd_step rnd u eta Hstd Hok nr _ (HB * (nr * f_dqb rnd s)) _
-             (301 / 100 * u * (4001 / 1000) + 1 / 2 * (1163 / 10 * u)) (2001 / 1000));
-      [lra | ring | exact H6 | lra]. }
-  lra.
+  basics. pose proof (L_x _ _ _ _ _ (pb_le s Hub Hul) L_pb L_qb ltac:(lra)
+    (dl_dot_le s Hua Hub (Nb s) Hub)). lra.
 Qed.
 
-(** di_a and di_b: the rounding of [a - X] relative to the computed operands
-    (the error of [a] cancels in di_b - di_a). *)
+(** di_a and di_b: the rounding of [a - x] relative to the computed operands
+    (the error of [a] cancels in di_b - di_a); n x within E of Y. *)
+Lemma L_di_r : forall (x Y E : R), Rabs (nr * x - Y) <= E -> E <= / 1024 ->
+  Rabs (dot Dl (L s) - Y) <= 2 ->
+  Rabs (nr * rnd (f_a rnd s - x) - (nr * f_a rnd s - nr * x)) <= 2002 / 1000 * u.
+Proof.
+  intros x Y E HY HE H2. basics. pose proof L_a as H0.
+  rewrite <- Rmult_minus_distr_l.
+  eapply Rle_trans; [apply (rnd_sc rnd u eta Hstd Hok _ _ (2001 / 1000)); [lra|] | lra].
+  rewrite Rmult_minus_distr_l.
+  apply (Rle_trans _ (Rabs (dot Dl (L s) - Y) + (1401 / 100 * u + E))); [|lra].
+  apply abs_near.
+  replace (nr * f_a rnd s - nr * x - (dot Dl (L s) - Y))
+    with ((nr * f_a rnd s - dot Dl (L s)) - (nr * x - Y)) by ring.
+  eapply Rle_trans; [apply absdiff|]. lra.
+Qed.
+
 Lemma L_dia_r : Rabs (nr * f_dia rnd s
                       - (nr * f_a rnd s - nr * rnd (rnd (f_pa rnd s / 2) * f_d rnd s)))
                 <= 2002 / 1000 * u.
-Proof.
-  basics. pose proof L_a as H0. pose proof L_xa as H1. pose proof (ndia_le s Hua Hub Hul) as H2.
-  unfold f_dia. rewrite <- Rmult_minus_distr_l.
-  eapply Rle_trans; [apply (rnd_sc rnd u eta Hstd Hok _ _ (2001 / 1000)); [lra|] | lra].
-  rewrite Rmult_minus_distr_l.
-  apply (Rle_trans _ (Rabs (e_ndia s) + (1401 / 100 * u + 302 / 10 * u))); [|lra].
-  apply abs_near. unfold e_ndia.
-  replace (nr * f_a rnd s - nr * rnd (rnd (f_pa rnd s / 2) * f_d rnd s)
-           - (dot Dl (L s) - pa s * dot Dl (Na s)))
-    with ((nr * f_a rnd s - dot Dl (L s))
-          - (nr * rnd (rnd (f_pa rnd s / 2) * f_d rnd s) - pa s * dot Dl (Na s))) by ring.
-  eapply Rle_trans; [apply absdiff|]. lra.
-Qed.
+Proof. basics. exact (L_di_r _ _ _ L_xa ltac:(lra) (ndia_le s Hua Hub Hul)). Qed.
 
 Lemma L_dib_r : Rabs (nr * f_dib rnd s
                       - (nr * f_a rnd s - nr * rnd (rnd (f_pb rnd s / 2) * f_dqb rnd s)))
                 <= 2002 / 1000 * u.
-Proof.
-  basics. pose proof L_a as H0. pose proof L_xb as H1. pose proof (ndib_le s Hua Hub Hul) as H2.
-  unfold f_dib. rewrite <- Rmult_minus_distr_l.
-  eapply Rle_trans; [apply (rnd_sc rnd u eta Hstd Hok _ _ (2001 / 1000)); [lra|] | lra].
-  rewrite Rmult_minus_distr_l.
-  apply (Rle_trans _ (Rabs (e_ndib s) + (1401 / 100 * u + 723 / 10 * u))); [|lra].
-  apply abs_near. unfold e_ndib.
-  replace (nr * f_a rnd s - nr * rnd (rnd (f_pb rnd s / 2) * f_dqb rnd s)
-           - (dot Dl (L s) - pb s * dot Dl (Nb s)))
-    with ((nr * f_a rnd s - dot Dl (L s))
-          - (nr * rnd (rnd (f_pb rnd s / 2) * f_dqb rnd s) - pb s * dot Dl (Nb s))) by ring.
-  eapply Rle_trans; [apply absdiff|]. lra.
-Qed.
+Proof. basics. exact (L_di_r _ _ _ L_xb ltac:(lra) (ndib_le s Hua Hub Hul)). Qed.
 
 Lemma L_dia : Rabs (nr * f_dia rnd s - e_ndia s) <= 464 / 10 * u.
 Proof.

@@ -495,12 +495,7 @@ Theorem duff_div_generic : forall (M : fmodel) (K K1 : R), model_ok M K ->
                                + 1001 / 1000 * INR i * k_add M) * m_u M /\
   Rabs (Q i - q s (INR i)) <= (6505 / 100 * K1 + 1204 / 100 * k_div M
                                + 3004 / 1000 * INR i * k_add M) * m_u M.
-Proof.
-  intros M K K1 HM HK1 Hin Hadd Hmul Hdiv s na nb l kk P Q G Ha Hb Hl Hn1 Hn2 Hnw
-    Ina Inb Inl (tx & Htx & Hkx) (ty & Hty & Hky) (tz & Htz & Hkz) H.
-  exact (duff_model M K K1 (k_div M) HM HK1 Hin Hadd Hmul Hdiv (div_setup M K HM)
-           s na nb l kk P Q G tx ty tz Ha Hb Hl Hn1 Hn2 Hnw Ina Inb Inl Htx Hkx Hty Hky Htz Hkz H).
-Qed.
+Proof. kd_inst duff_model. Qed.
 
 (** The same with k_j = (Nb_j - Na_j) * r, r = 1/n a rounded division:
     k_div is replaced by kd = (1 + 2^-20) k_mul + k_div + 2^-36, kd u <= 2^-21. *)
@@ -522,18 +517,23 @@ Theorem duff_recip_generic : forall (M : fmodel) (K K1 : R), model_ok M K ->
   Rabs (Q i - q s (INR i)) <= (6505 / 100 * K1
       + 1204 / 100 * ((1 + / 1048576) * k_mul M + k_div M + / 68719476736)
       + 3004 / 1000 * INR i * k_add M) * m_u M.
-Proof.
-  intros M K K1 HM HK1 Hin Hadd Hmul Hdiv Hkd s na nb l kk P Q G Ha Hb Hl Hn1 Hn2 Hnw
-    Ina Inb Inl (tx & rx & Htx & Hrx & Hkx) (ty & ry & Hty & Hry & Hky)
-    (tz & rz & Htz & Hrz & Hkz) H.
-  destruct (recip_setup M K HM Hkd Hdiv) as [R Hk1].
-  assert (Hm : 1 <= INR (n s) <= 16777216) by (split; [apply (le_INR 1); exact Hn1 | exact Hn2]).
-  exact (duff_model M K K1 _ HM HK1 Hin Hadd Hmul Hk1 Hkd s na nb l kk P Q G tx ty tz
-           Ha Hb Hl Hn1 Hn2 Hnw Ina Inb Inl Htx (R _ _ _ _ Hm Hrx Hkx)
-           Hty (R _ _ _ _ Hm Hry Hky) Htz (R _ _ _ _ Hm Hrz Hkz) H).
-Qed.
+Proof. kd_inst duff_model. Qed.
 
 (** ** Symmetric Phong: q walked to h = floor(n/2), reused as q(n - i) = q(i) *)
+
+(** Symmetric Phong from Duff's theorem [lem]: p at i, q at j = min(i, n - i),
+    q(n - i) = q(i) for |Na| = |Nb| ([Symmetry.sec_4_q_is_symmetric]). *)
+Ltac sym_inst lem :=
+  intros;
+  match goal with Ha : is_unit (Na ?s), Hb : is_unit (Nb ?s), Hi : (?i <= n ?s)%nat |- _ =>
+    assert (Hj : (Nat.min i (n s - i) <= n s)%nat) by lia;
+    assert (Eq : q s (INR (Nat.min i (n s - i))) = q s (INR i));
+    [ destruct (Nat.min_spec i (n s - i)) as [[_ E] | [_ E]]; rewrite E; [reflexivity|];
+      rewrite minus_INR by exact Hi; symmetry; apply Symmetry.sec_4_q_is_symmetric;
+      unfold is_unit in Ha, Hb; rewrite Ha, Hb; reflexivity
+    | split; [eapply proj1 | rewrite <- Eq; eapply proj2]; eapply lem; eassumption ]
+  end.
+
 
 (** Symmetric Phong (src/symmetric_phong.rs), k_j = (Nb_j - Na_j) / n with one
     division: p is walked as in Duff; q is walked by Duff's recurrence only to
@@ -559,21 +559,7 @@ Theorem symmetric_phong_div_generic : forall (M : fmodel) (K K1 : R), model_ok M
   Rabs (Q (Nat.min i (n s - i)) - q s (INR i))
     <= (6505 / 100 * K1 + 1204 / 100 * k_div M
         + 3004 / 1000 * INR (Nat.min i (n s - i)) * k_add M) * m_u M.
-Proof.
-  intros M K K1 HM HK1 Hin Hadd Hmul Hdiv s na nb l kk P Q G Ha Hb Hl Hn1 Hn2 Hnw
-    Ina Inb Inl Hx Hy Hz H i Hi.
-  assert (Hj : (Nat.min i (n s - i) <= n s)%nat) by lia.
-  destruct (duff_div_generic M K K1 HM HK1 Hin Hadd Hmul Hdiv s na nb l kk P Q G
-              Ha Hb Hl Hn1 Hn2 Hnw Ina Inb Inl Hx Hy Hz H i Hi) as [R1 _].
-  destruct (duff_div_generic M K K1 HM HK1 Hin Hadd Hmul Hdiv s na nb l kk P Q G
-              Ha Hb Hl Hn1 Hn2 Hnw Ina Inb Inl Hx Hy Hz H _ Hj) as [_ R2].
-  split; [exact R1|].
-  assert (Eq : q s (INR (Nat.min i (n s - i))) = q s (INR i)).
-  { destruct (Nat.min_spec i (n s - i)) as [[_ E] | [_ E]]; rewrite E; [reflexivity|].
-    rewrite minus_INR by exact Hi. symmetry. apply Symmetry.sec_4_q_is_symmetric.
-    unfold is_unit in Ha, Hb. rewrite Ha, Hb. reflexivity. }
-  rewrite <- Eq. exact R2.
-Qed.
+Proof. sym_inst duff_div_generic. Qed.
 
 (** The same with k_j = (Nb_j - Na_j) * r, r = 1/n a rounded division:
     k_div is replaced by kd = (1 + 2^-20) k_mul + k_div + 2^-36, kd u <= 2^-21. *)
@@ -595,18 +581,4 @@ Theorem symmetric_phong_recip_generic : forall (M : fmodel) (K K1 : R), model_ok
   Rabs (Q (Nat.min i (n s - i)) - q s (INR i)) <= (6505 / 100 * K1
       + 1204 / 100 * ((1 + / 1048576) * k_mul M + k_div M + / 68719476736)
       + 3004 / 1000 * INR (Nat.min i (n s - i)) * k_add M) * m_u M.
-Proof.
-  intros M K K1 HM HK1 Hin Hadd Hmul Hdiv Hkd s na nb l kk P Q G Ha Hb Hl Hn1 Hn2 Hnw
-    Ina Inb Inl Hx Hy Hz H i Hi.
-  assert (Hj : (Nat.min i (n s - i) <= n s)%nat) by lia.
-  destruct (duff_recip_generic M K K1 HM HK1 Hin Hadd Hmul Hdiv Hkd s na nb l kk P Q G
-              Ha Hb Hl Hn1 Hn2 Hnw Ina Inb Inl Hx Hy Hz H i Hi) as [R1 _].
-  destruct (duff_recip_generic M K K1 HM HK1 Hin Hadd Hmul Hdiv Hkd s na nb l kk P Q G
-              Ha Hb Hl Hn1 Hn2 Hnw Ina Inb Inl Hx Hy Hz H _ Hj) as [_ R2].
-  split; [exact R1|].
-  assert (Eq : q s (INR (Nat.min i (n s - i))) = q s (INR i)).
-  { destruct (Nat.min_spec i (n s - i)) as [[_ E] | [_ E]]; rewrite E; [reflexivity|].
-    rewrite minus_INR by exact Hi. symmetry. apply Symmetry.sec_4_q_is_symmetric.
-    unfold is_unit in Ha, Hb. rewrite Ha, Hb. reflexivity. }
-  rewrite <- Eq. exact R2.
-Qed.
+Proof. sym_inst duff_recip_generic. Qed.

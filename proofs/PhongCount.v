@@ -140,12 +140,7 @@ Theorem phong_horner_div_generic : forall (M : fmodel) (K K1 : R), model_ok M K 
   horner_ok M i na l kk ph qh ->
   Rabs (ph - p s (INR i)) <= (2003 / 100 * K1 + 202 / 100 * k_div M) * m_u M /\
   Rabs (qh - q s (INR i)) <= (7811 / 100 * K1 + 1204 / 100 * k_div M) * m_u M.
-Proof.
-  intros M K K1 HM HK1 Hin Hadd Hmul Hdiv s na nb l kk i ph qh Ha Hb Hl Hn1 Hn2 Hi
-    Ina Inb Inl (tx & Htx & Hkx) (ty & Hty & Hky) (tz & Htz & Hkz) H.
-  exact (horner_model M K K1 (k_div M) HM HK1 Hin Hadd Hmul Hdiv (div_setup M K HM)
-           s na nb l kk i ph qh tx ty tz Ha Hb Hl Hn1 Hn2 Hi Ina Inb Inl Htx Hkx Hty Hky Htz Hkz H).
-Qed.
+Proof. kd_inst horner_model. Qed.
 
 (** The same with k_j = (Nb_j - Na_j) * r, r = 1/n a rounded division:
     k_div is replaced by kd = (1 + 2^-20) k_mul + k_div + 2^-36, kd u <= 2^-21. *)
@@ -164,16 +159,7 @@ Theorem phong_horner_recip_generic : forall (M : fmodel) (K K1 : R), model_ok M 
       + 202 / 100 * ((1 + / 1048576) * k_mul M + k_div M + / 68719476736)) * m_u M /\
   Rabs (qh - q s (INR i)) <= (7811 / 100 * K1
       + 1204 / 100 * ((1 + / 1048576) * k_mul M + k_div M + / 68719476736)) * m_u M.
-Proof.
-  intros M K K1 HM HK1 Hin Hadd Hmul Hdiv Hkd s na nb l kk i ph qh Ha Hb Hl Hn1 Hn2 Hi
-    Ina Inb Inl (tx & rx & Htx & Hrx & Hkx) (ty & ry & Hty & Hry & Hky)
-    (tz & rz & Htz & Hrz & Hkz) H.
-  destruct (recip_setup M K HM Hkd Hdiv) as [R Hk1].
-  assert (Hm : 1 <= INR (n s) <= 16777216) by (split; [apply (le_INR 1); exact Hn1 | exact Hn2]).
-  exact (horner_model M K K1 _ HM HK1 Hin Hadd Hmul Hk1 Hkd s na nb l kk i ph qh tx ty tz
-           Ha Hb Hl Hn1 Hn2 Hi Ina Inb Inl Htx (R _ _ _ _ Hm Hrx Hkx)
-           Hty (R _ _ _ _ Hm Hry Hky) Htz (R _ _ _ _ Hm Hrz Hkz) H).
-Qed.
+Proof. kd_inst horner_model. Qed.
 
 (** ** The per-pixel normal and the lerp: PhongCountD.v at dd = 2 *)
 

@@ -940,6 +940,26 @@ Proof.
     by (apply Rmult_le_compat_r; [left; apply (model_u M K HM) | exact Hdk]). lra.
 Qed.
 
+(** One instantiation of a model lemma [lem] (pixel_model_d, horner_model, ...)
+    for a theorem whose k_j are [kcomp_ok] (one division, kd = k_div) or
+    [krecip_ok] (reciprocal then product, kd from [recip_setup]). *)
+Ltac kd_inst lem :=
+  intros;
+  match goal with HM : model_ok ?M ?K |- _ =>
+    pose proof (div_setup M K HM); pose proof (model_u M K HM) end;
+  repeat match goal with
+  | H : kcomp_ok _ _ _ _ _ |- _ => destruct H as (? & ? & ?)
+  | H : krecip_ok _ _ _ _ _ |- _ => destruct H as (? & ? & ? & ? & ?)
+  end;
+  try match goal with
+  | HM : model_ok ?M ?K, Hdiv : 1 <= k_div ?M,
+    Hkd : ((1 + / 1048576) * k_mul ?M + k_div ?M + / 68719476736) * m_u ?M <= / 2097152 |- _ =>
+      destruct (recip_setup M K HM Hkd Hdiv) as [? ?]
+  end;
+  eapply lem; try eassumption; try (split; assumption);
+  match goal with H : _ |- ap1 _ _ _ _ =>
+    eapply H; [split; [apply (le_INR 1) |]; assumption | | eassumption]; eassumption end.
+
 (** Phong, per-pixel normal, one division, with the span's distance dd >= |Nb - Na|. *)
 Theorem phong_pixel_div_dist : forall (M : fmodel) (K K1 : R), model_ok M K ->
   1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 -> 1 <= k_div M ->
@@ -956,13 +976,7 @@ Theorem phong_pixel_div_dist : forall (M : fmodel) (K K1 : R), model_ok M K ->
                               + (2 / 100 + 101 / 100 * dd) * k_div M) * m_u M /\
   Rabs (qh - q s (INR i)) <= ((702 / 100 + 401 / 100 * dd + 0 * dd * dd) * K1
                               + (2 / 100 + 201 / 100 * dd + 0 * dd * dd) * k_div M) * m_u M.
-Proof.
-  intros M K K1 HM HK1 Hin Hadd Hmul Hdiv s na nb l kk i ph qh dd Ha Hb Hl Hd1 Hd2 Hn1 Hn2 Hi
-    Ina Inb Inl (tx & Htx & Hkx) (ty & Hty & Hky) (tz & Htz & Hkz) H.
-  exact (pixel_model_d M K K1 (k_div M) dd HM HK1 Hin Hadd Hmul Hdiv (div_setup M K HM)
-           s na nb l kk i ph qh tx ty tz (conj Hd1 Hd2) Ha Hb Hl Hn1 Hn2 Hi Ina Inb Inl
-           Htx Hkx Hty Hky Htz Hkz H).
-Qed.
+Proof. kd_inst pixel_model_d. Qed.
 
 (** The same with k_j = (Nb_j - Na_j) * r, r = 1/n a rounded division. *)
 Theorem phong_pixel_recip_dist : forall (M : fmodel) (K K1 : R), model_ok M K ->
@@ -983,16 +997,7 @@ Theorem phong_pixel_recip_dist : forall (M : fmodel) (K K1 : R), model_ok M K ->
   Rabs (qh - q s (INR i)) <= ((702 / 100 + 401 / 100 * dd + 0 * dd * dd) * K1
       + (2 / 100 + 201 / 100 * dd + 0 * dd * dd)
         * ((1 + / 1048576) * k_mul M + k_div M + / 68719476736)) * m_u M.
-Proof.
-  intros M K K1 HM HK1 Hin Hadd Hmul Hdiv Hkd s na nb l kk i ph qh dd Ha Hb Hl Hd1 Hd2
-    Hn1 Hn2 Hi Ina Inb Inl (tx & rx & Htx & Hrx & Hkx) (ty & ry & Hty & Hry & Hky)
-    (tz & rz & Htz & Hrz & Hkz) H.
-  destruct (recip_setup M K HM Hkd Hdiv) as [R Hk1].
-  assert (Hm : 1 <= INR (n s) <= 16777216) by (split; [apply (le_INR 1); exact Hn1 | exact Hn2]).
-  exact (pixel_model_d M K K1 _ dd HM HK1 Hin Hadd Hmul Hk1 Hkd s na nb l kk i ph qh tx ty tz
-           (conj Hd1 Hd2) Ha Hb Hl Hn1 Hn2 Hi Ina Inb Inl Htx (R _ _ _ _ Hm Hrx Hkx)
-           Hty (R _ _ _ _ Hm Hry Hky) Htz (R _ _ _ _ Hm Hrz Hkz) H).
-Qed.
+Proof. kd_inst pixel_model_d. Qed.
 
 (** Phong, lerp, t = i/n one rounded division, with the span's distance. *)
 Theorem phong_lerp_div_dist : forall (M : fmodel) (K K1 : R), model_ok M K ->
@@ -1008,12 +1013,7 @@ Theorem phong_lerp_div_dist : forall (M : fmodel) (K K1 : R), model_ok M K ->
                               + (2 / 100 + 101 / 100 * dd) * k_div M) * m_u M /\
   Rabs (qh - q s (INR i)) <= ((1102 / 100 + 0 * dd + 0 * dd * dd) * K1
                               + (2 / 100 + 201 / 100 * dd + 0 * dd * dd) * k_div M) * m_u M.
-Proof.
-  intros M K K1 HM HK1 Hin Hadd Hmul Hdiv s na nb l i th ph qh dd Ha Hb Hl Hd1 Hd2 Hn1 Hn2 Hi
-    Ina Inb Inl Hth H.
-  exact (lerp_model_d M K K1 (k_div M) dd HM HK1 Hin Hadd Hmul Hdiv (div_setup M K HM)
-           s na nb l i th ph qh (conj Hd1 Hd2) Ha Hb Hl Hn1 Hn2 Hi Ina Inb Inl Hth H).
-Qed.
+Proof. kd_inst lerp_model_d. Qed.
 
 (** The same with t = i * r, r = 1/n a rounded division. *)
 Theorem phong_lerp_recip_dist : forall (M : fmodel) (K K1 : R), model_ok M K ->
@@ -1032,14 +1032,7 @@ Theorem phong_lerp_recip_dist : forall (M : fmodel) (K K1 : R), model_ok M K ->
   Rabs (qh - q s (INR i)) <= ((1102 / 100 + 0 * dd + 0 * dd * dd) * K1
       + (2 / 100 + 201 / 100 * dd + 0 * dd * dd)
         * ((1 + / 1048576) * k_mul M + k_div M + / 68719476736)) * m_u M.
-Proof.
-  intros M K K1 HM HK1 Hin Hadd Hmul Hdiv Hkd s na nb l i r th ph qh dd Ha Hb Hl Hd1 Hd2
-    Hn1 Hn2 Hi Ina Inb Inl Hr Hth H.
-  destruct (recip_setup M K HM Hkd Hdiv) as [R Hk1].
-  assert (Hm : 1 <= INR (n s) <= 16777216) by (split; [apply (le_INR 1); exact Hn1 | exact Hn2]).
-  exact (lerp_model_d M K K1 _ dd HM HK1 Hin Hadd Hmul Hk1 Hkd s na nb l i th ph qh
-           (conj Hd1 Hd2) Ha Hb Hl Hn1 Hn2 Hi Ina Inb Inl (R _ _ _ _ Hm Hr Hth) H).
-Qed.
+Proof. kd_inst lerp_model_d. Qed.
 
 (** ** Horner's closed form *)
 
@@ -1457,13 +1450,7 @@ Theorem phong_horner_div_dist : forall (M : fmodel) (K K1 : R), model_ok M K ->
   Rabs (qh - q s (INR i)) <= ((1013 / 100 + 1803 / 100 * dd + 801 / 100 * dd * dd) * K1
                               + (7 / 100 + 202 / 100 * dd + 201 / 100 * dd * dd) * k_div M)
                              * m_u M.
-Proof.
-  intros M K K1 HM HK1 Hin Hadd Hmul Hdiv s na nb l kk i ph qh dd Ha Hb Hl Hd1 Hd2 Hn1 Hn2 Hi
-    Ina Inb Inl (tx & Htx & Hkx) (ty & Hty & Hky) (tz & Htz & Hkz) H.
-  exact (horner_model_d M K K1 (k_div M) dd HM HK1 Hin Hadd Hmul Hdiv (div_setup M K HM)
-           s na nb l kk i ph qh tx ty tz (conj Hd1 Hd2) Ha Hb Hl Hn1 Hn2 Hi Ina Inb Inl
-           Htx Hkx Hty Hky Htz Hkz H).
-Qed.
+Proof. kd_inst horner_model_d. Qed.
 
 (** The same with k_j = (Nb_j - Na_j) * r, r = 1/n a rounded division. *)
 Theorem phong_horner_recip_dist : forall (M : fmodel) (K K1 : R), model_ok M K ->
@@ -1484,13 +1471,4 @@ Theorem phong_horner_recip_dist : forall (M : fmodel) (K K1 : R), model_ok M K -
   Rabs (qh - q s (INR i)) <= ((1013 / 100 + 1803 / 100 * dd + 801 / 100 * dd * dd) * K1
       + (7 / 100 + 202 / 100 * dd + 201 / 100 * dd * dd)
         * ((1 + / 1048576) * k_mul M + k_div M + / 68719476736)) * m_u M.
-Proof.
-  intros M K K1 HM HK1 Hin Hadd Hmul Hdiv Hkd s na nb l kk i ph qh dd Ha Hb Hl Hd1 Hd2
-    Hn1 Hn2 Hi Ina Inb Inl (tx & rx & Htx & Hrx & Hkx) (ty & ry & Hty & Hry & Hky)
-    (tz & rz & Htz & Hrz & Hkz) H.
-  destruct (recip_setup M K HM Hkd Hdiv) as [R Hk1].
-  assert (Hm : 1 <= INR (n s) <= 16777216) by (split; [apply (le_INR 1); exact Hn1 | exact Hn2]).
-  exact (horner_model_d M K K1 _ dd HM HK1 Hin Hadd Hmul Hk1 Hkd s na nb l kk i ph qh tx ty tz
-           (conj Hd1 Hd2) Ha Hb Hl Hn1 Hn2 Hi Ina Inb Inl Htx (R _ _ _ _ Hm Hrx Hkx)
-           Hty (R _ _ _ _ Hm Hry Hky) Htz (R _ _ _ _ Hm Hrz Hkz) H).
-Qed.
+Proof. kd_inst horner_model_d. Qed.

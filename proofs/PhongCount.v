@@ -100,30 +100,7 @@ Lemma horner_model : forall (M : fmodel) (K K1 kd : R), model_ok M K ->
   horner_ok M i na l kk ph qh ->
   Rabs (ph - p s (INR i)) <= (2003 / 100 * K1 + 202 / 100 * kd) * m_u M /\
   Rabs (qh - q s (INR i)) <= (7811 / 100 * K1 + 1204 / 100 * kd) * m_u M.
-Proof.
-  intros M K K1 kd HM HK1 Hin Hadd Hmul Hkd1 Hkd2 s na nb l kk i ph qh tx ty tz
-    Ha Hb Hl Hn1 Hn2 Hi Ina Inb Inl Htx Hkx Hty Hky Htz Hkz
-    (fa & fb & fc & e & fe & Hfa & Hfb & Hfc & Hfe0 & Hfe & (x & Hx & Hph)
-     & (y1 & y2 & y3 & Hy1 & Hy2 & Hy3 & Hqh)).
-  pose proof (model_u M K HM) as Hu.
-  pose proof (hm_small M K K1 HM HK1) as Hv.
-  pose proof (hm_small_d M K kd HM Hkd1 Hkd2) as Hd.
-  destruct (horner_core (K1 * m_u M) (kd * m_u M) (m_eta M) s na nb l kk tx ty tz fa fb fc e fe
-              i x ph y1 y2 y3 qh Hv Hd Ha Hb Hl Hn1 Hn2 Hi
-              (hm_vap M K1 _ _ Hu Hin Ina) (hm_vap M K1 _ _ Hu Hin Inb)
-              (hm_vap M K1 _ _ Hu Hin Inl)
-              (hm_ap M _ K1 _ _ Hu Hadd Htx) Hkx (hm_ap M _ K1 _ _ Hu Hadd Hty) Hky
-              (hm_ap M _ K1 _ _ Hu Hadd Htz) Hkz
-              (hm_fdot M K1 _ _ _ Hu Hadd Hmul Hfa) (hm_fdot M K1 _ _ _ Hu Hadd Hmul Hfb)
-              (hm_fdot M K1 _ _ _ Hu Hadd Hmul Hfc) (hm_fdot M K1 _ _ _ Hu Hadd Hmul Hfe0)
-              (hm_fdot M K1 _ _ _ Hu Hadd Hmul Hfe)
-              (hm_ap M _ K1 _ _ Hu Hmul Hx) (hm_ap M _ K1 _ _ Hu Hadd Hph)
-              (hm_ap M _ K1 _ _ Hu Hmul Hy1) (hm_ap M _ K1 _ _ Hu Hadd Hy2)
-              (hm_ap M _ K1 _ _ Hu Hmul Hy3) (hm_ap M _ K1 _ _ Hu Hadd Hqh)) as [P Q].
-  split.
-  - eapply Rle_trans; [exact P|]. right. ring.
-  - eapply Rle_trans; [exact Q|]. right. ring.
-Qed.
+Proof. hm_model horner_core; right; ring. Qed.
 
 (** Phong, Horner's closed form, k_j = (Nb_j - Na_j) / n with one division:
     |p^ - p_i| <= (20.03 K1 + 2.02 k_div) u, |q^ - q_i| <= (78.11 K1 + 12.04 k_div) u,

@@ -753,19 +753,19 @@ Lemma ld_core : forall (v d eta dd : R) (s : span) (na nb l nh : vec) (i : nat)
   (1 <= n s)%nat -> INR (n s) <= 16777216 -> (i <= n s)%nat ->
   vap1 v eta na (Na s) -> vap1 v eta nb (Nb s) -> vap1 v eta l (L s) ->
   ap1 d eta th (INR i / INR (n s)) ->
-  ap1 v eta wx (1 - th) -> ap1 v eta ax (wx * vx na) -> ap1 v eta bx (th * vx nb) ->
-  ap1 v eta (vx nh) (ax + bx) ->
-  ap1 v eta wy (1 - th) -> ap1 v eta ay (wy * vy na) -> ap1 v eta by_ (th * vy nb) ->
-  ap1 v eta (vy nh) (ay + by_) ->
-  ap1 v eta wz (1 - th) -> ap1 v eta az (wz * vz na) -> ap1 v eta bz (th * vz nb) ->
-  ap1 v eta (vz nh) (az + bz) ->
   fdot_rel v v eta nh l ph -> fdot_rel v v eta nh nh qh ->
+  ap1 v eta (vx nh) (ax + bx) -> ap1 v eta bx (th * vx nb) -> ap1 v eta ax (wx * vx na) ->
+  ap1 v eta wx (1 - th) ->
+  ap1 v eta (vy nh) (ay + by_) -> ap1 v eta by_ (th * vy nb) -> ap1 v eta ay (wy * vy na) ->
+  ap1 v eta wy (1 - th) ->
+  ap1 v eta (vz nh) (az + bz) -> ap1 v eta bz (th * vz nb) -> ap1 v eta az (wz * vz na) ->
+  ap1 v eta wz (1 - th) ->
   Rabs (ph - p s (INR i)) <= (4 + 0 * dd + 402 / 100) * v + (1001 / 1000 * dd + 2 / 100) * d /\
   Rabs (qh - q s (INR i)) <= (2 * 4 + 2 * 0 * dd + 302 / 100) * v
                              + (2 * (1001 / 1000) * dd + 2 / 100) * d.
 Proof.
   intros v d eta dd s na nb l nh i th wx wy wz ax ay az bx by_ bz ph qh Hv Hd [Hdd HD]
-    Ha Hb Hl Hn1 Hn2 Hi Ina Inb Inl Hth Hwx Hax Hbx Hnx Hwy Hay Hby Hny Hwz Haz Hbz Hnz Hp Hq.
+    Ha Hb Hl Hn1 Hn2 Hi Ina Inb Inl Hth Hp Hq Hnx Hbx Hax Hwx Hny Hby Hay Hwy Hnz Hbz Haz Hwz.
   assert (Hn0 : (n s <> 0)%nat) by lia.
   assert (Hm : 1 <= INR (n s) <= 16777216) by (split; [apply (le_INR 1); exact Hn1 | exact Hn2]).
   assert (Hii : 0 <= INR i <= INR (n s)) by (split; [apply pos_INR | apply le_INR; exact Hi]).
@@ -833,6 +833,41 @@ Proof.
   lra.
 Qed.
 
+(** Every input, addition, product and dot product of the model within unit
+    K1 u ([hm_vap], [hm_ap], [hm_fdot]). *)
+Ltac hm_lift M K1 :=
+  let Hu := fresh "Hu" in
+  assert (Hu : 0 < m_u M) by (eapply model_u; eassumption);
+  repeat match goal with
+  | Hk : k_in M <= K1, H : vap M _ _ |- _ => apply (hm_vap M K1 _ _ Hu Hk) in H
+  | Hk : k_add M <= K1, H : ap_add M _ _ |- _ => apply (hm_ap M _ K1 _ _ Hu Hk) in H
+  | Hk : k_mul M <= K1, H : ap_mul M _ _ |- _ => apply (hm_ap M _ K1 _ _ Hu Hk) in H
+  | Ha : k_add M <= K1, Hm : k_mul M <= K1, H : fdot_ok M _ _ _ |- _ =>
+      apply (hm_fdot M K1 _ _ _ Hu Ha Hm) in H
+  end.
+
+Lemma conj_le : forall a b x y x' y' : R,
+  a <= x' /\ b <= y' -> x' <= x -> y' <= y -> a <= x /\ b <= y.
+Proof. intros a b x y x' y' [H1 H2] H3 H4. split; lra. Qed.
+
+(** A model lemma from its [core] on units v = K1 u, d = kd u: the relations
+    taken apart, the operations lifted to unit K1 u; left: the two bounds of
+    [core] against the lemma's. *)
+Ltac hm_model core :=
+  intros; unfold horner_ok, pixel_ok, ncomp_ok, lerp_ok, lcomp_ok in *;
+  repeat match goal with
+  | H : exists _, _ |- _ => destruct H
+  | H : _ /\ _ |- _ => destruct H
+  end;
+  try match goal with H : Ddist _ ?dd |- _ => assert (0 <= dd <= 2) by apply (proj1 H) end;
+  match goal with
+  | HM : model_ok ?M ?K, Hin : k_in ?M <= ?K1, Hk : ?kd * m_u ?M <= / 2097152 |- _ =>
+      pose proof (hm_small M K K1 HM ltac:(split; assumption));
+      pose proof (hm_small_d M K kd HM ltac:(assumption) Hk);
+      hm_lift M K1;
+      eapply conj_le; [eapply (core (K1 * m_u M) (kd * m_u M) (m_eta M)); try eassumption | |]
+  end.
+
 Lemma pixel_model_d : forall (M : fmodel) (K K1 kd dd : R), model_ok M K ->
   1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 ->
   1 <= kd -> kd * m_u M <= / 2097152 ->
@@ -849,28 +884,11 @@ Lemma pixel_model_d : forall (M : fmodel) (K K1 kd dd : R), model_ok M K ->
   Rabs (qh - q s (INR i)) <= ((702 / 100 + 401 / 100 * dd + 0 * dd * dd) * K1
                               + (2 / 100 + 201 / 100 * dd + 0 * dd * dd) * kd) * m_u M.
 Proof.
-  intros M K K1 kd dd HM HK1 Hin Hadd Hmul Hkd1 Hkd2 s na nb l kk i ph qh tx ty tz
-    HDd Ha Hb Hl Hn1 Hn2 Hi Ina Inb Inl Htx Hkx Hty Hky Htz Hkz
-    (nh & (zx & Hzx & Hnx) & (zy & Hzy & Hny) & (zz & Hzz & Hnz) & Hp & Hq).
-  pose proof (model_u M K HM) as Hu.
-  pose proof (hm_small M K K1 HM HK1) as Hv.
-  pose proof (hm_small_d M K kd HM Hkd1 Hkd2) as Hd.
-  destruct (pd_core (K1 * m_u M) (kd * m_u M) (m_eta M) dd s na nb l kk nh i tx ty tz zx zy zz
-              ph qh Hv Hd HDd Ha Hb Hl Hn1 Hn2 Hi
-              (hm_vap M K1 _ _ Hu Hin Ina) (hm_vap M K1 _ _ Hu Hin Inb)
-              (hm_vap M K1 _ _ Hu Hin Inl)
-              (hm_ap M _ K1 _ _ Hu Hadd Htx) Hkx (hm_ap M _ K1 _ _ Hu Hadd Hty) Hky
-              (hm_ap M _ K1 _ _ Hu Hadd Htz) Hkz
-              (hm_ap M _ K1 _ _ Hu Hmul Hzx) (hm_ap M _ K1 _ _ Hu Hadd Hnx)
-              (hm_ap M _ K1 _ _ Hu Hmul Hzy) (hm_ap M _ K1 _ _ Hu Hadd Hny)
-              (hm_ap M _ K1 _ _ Hu Hmul Hzz) (hm_ap M _ K1 _ _ Hu Hadd Hnz)
-              (hm_fdot M K1 _ _ _ Hu Hadd Hmul Hp) (hm_fdot M K1 _ _ _ Hu Hadd Hmul Hq)) as [P Q].
-  destruct HDd as [Hdd _].
-  split.
+  hm_model pd_core.
   - eapply (dd_fin _ K1 kd dd (2 + 402 / 100) (2001 / 1000) (2 / 100) (1001 / 1000));
-      try lra; (eapply Rle_trans; [exact P|]; right; ring).
+      try lra; right; ring.
   - eapply (dd_fin2 _ K1 kd dd (2 * 2 + 302 / 100) (2 * (2001 / 1000)) 0 (2 / 100)
-      (2 * (1001 / 1000)) 0); try lra; (eapply Rle_trans; [exact Q|]; right; ring).
+      (2 * (1001 / 1000)) 0); try lra; right; ring.
 Qed.
 
 Lemma lerp_model_d : forall (M : fmodel) (K K1 kd dd : R), model_ok M K ->
@@ -887,30 +905,10 @@ Lemma lerp_model_d : forall (M : fmodel) (K K1 kd dd : R), model_ok M K ->
   Rabs (qh - q s (INR i)) <= ((1102 / 100 + 0 * dd + 0 * dd * dd) * K1
                               + (2 / 100 + 201 / 100 * dd + 0 * dd * dd) * kd) * m_u M.
 Proof.
-  intros M K K1 kd dd HM HK1 Hin Hadd Hmul Hkd1 Hkd2 s na nb l i th ph qh
-    HDd Ha Hb Hl Hn1 Hn2 Hi Ina Inb Inl Hth
-    (nh & (wx & ax & bx & Hwx & Hax & Hbx & Hnx) & (wy & ay & by_ & Hwy & Hay & Hby & Hny)
-     & (wz & az & bz & Hwz & Haz & Hbz & Hnz) & Hp & Hq).
-  pose proof (model_u M K HM) as Hu.
-  pose proof (hm_small M K K1 HM HK1) as Hv.
-  pose proof (hm_small_d M K kd HM Hkd1 Hkd2) as Hd.
-  destruct (ld_core (K1 * m_u M) (kd * m_u M) (m_eta M) dd s na nb l nh i
-              th wx wy wz ax ay az bx by_ bz ph qh Hv Hd HDd Ha Hb Hl Hn1 Hn2 Hi
-              (hm_vap M K1 _ _ Hu Hin Ina) (hm_vap M K1 _ _ Hu Hin Inb)
-              (hm_vap M K1 _ _ Hu Hin Inl) Hth
-              (hm_ap M _ K1 _ _ Hu Hadd Hwx) (hm_ap M _ K1 _ _ Hu Hmul Hax)
-              (hm_ap M _ K1 _ _ Hu Hmul Hbx) (hm_ap M _ K1 _ _ Hu Hadd Hnx)
-              (hm_ap M _ K1 _ _ Hu Hadd Hwy) (hm_ap M _ K1 _ _ Hu Hmul Hay)
-              (hm_ap M _ K1 _ _ Hu Hmul Hby) (hm_ap M _ K1 _ _ Hu Hadd Hny)
-              (hm_ap M _ K1 _ _ Hu Hadd Hwz) (hm_ap M _ K1 _ _ Hu Hmul Haz)
-              (hm_ap M _ K1 _ _ Hu Hmul Hbz) (hm_ap M _ K1 _ _ Hu Hadd Hnz)
-              (hm_fdot M K1 _ _ _ Hu Hadd Hmul Hp) (hm_fdot M K1 _ _ _ Hu Hadd Hmul Hq)) as [P Q].
-  destruct HDd as [Hdd _].
-  split.
-  - eapply (dd_fin _ K1 kd dd (4 + 402 / 100) 0 (2 / 100) (1001 / 1000));
-      try lra; (eapply Rle_trans; [exact P|]; right; ring).
+  hm_model ld_core.
+  - eapply (dd_fin _ K1 kd dd (4 + 402 / 100) 0 (2 / 100) (1001 / 1000)); try lra; right; ring.
   - eapply (dd_fin2 _ K1 kd dd (2 * 4 + 302 / 100) 0 0 (2 / 100)
-      (2 * (1001 / 1000)) 0); try lra; (eapply Rle_trans; [exact Q|]; right; ring).
+      (2 * (1001 / 1000)) 0); try lra; right; ring.
 Qed.
 
 (** The reciprocal's unit kd = (1 + 2^-20) k_mul + k_div + 2^-36 as in PhongCount.v. *)
@@ -1408,30 +1406,7 @@ Lemma horner_model_d : forall (M : fmodel) (K K1 kd dd : R), model_ok M K ->
                               + (3 / 100 + 101 / 100 * dd) * kd) * m_u M /\
   Rabs (qh - q s (INR i)) <= ((1013 / 100 + 1803 / 100 * dd + 801 / 100 * dd * dd) * K1
                               + (7 / 100 + 202 / 100 * dd + 201 / 100 * dd * dd) * kd) * m_u M.
-Proof.
-  intros M K K1 kd dd HM HK1 Hin Hadd Hmul Hkd1 Hkd2 s na nb l kk i ph qh tx ty tz
-    HDd Ha Hb Hl Hn1 Hn2 Hi Ina Inb Inl Htx Hkx Hty Hky Htz Hkz
-    (fa & fb & fc & e & fe & Hfa & Hfb & Hfc & Hfe0 & Hfe & (x & Hx & Hph)
-     & (y1 & y2 & y3 & Hy1 & Hy2 & Hy3 & Hqh)).
-  pose proof (model_u M K HM) as Hu.
-  pose proof (hm_small M K K1 HM HK1) as Hv.
-  pose proof (hm_small_d M K kd HM Hkd1 Hkd2) as Hd.
-  destruct (horner_core_d (K1 * m_u M) (kd * m_u M) (m_eta M) dd s na nb l kk tx ty tz
-              fa fb fc e fe i x ph y1 y2 y3 qh Hv Hd HDd Ha Hb Hl Hn1 Hn2 Hi
-              (hm_vap M K1 _ _ Hu Hin Ina) (hm_vap M K1 _ _ Hu Hin Inb)
-              (hm_vap M K1 _ _ Hu Hin Inl)
-              (hm_ap M _ K1 _ _ Hu Hadd Htx) Hkx (hm_ap M _ K1 _ _ Hu Hadd Hty) Hky
-              (hm_ap M _ K1 _ _ Hu Hadd Htz) Hkz
-              (hm_fdot M K1 _ _ _ Hu Hadd Hmul Hfa) (hm_fdot M K1 _ _ _ Hu Hadd Hmul Hfb)
-              (hm_fdot M K1 _ _ _ Hu Hadd Hmul Hfc) (hm_fdot M K1 _ _ _ Hu Hadd Hmul Hfe0)
-              (hm_fdot M K1 _ _ _ Hu Hadd Hmul Hfe)
-              (hm_ap M _ K1 _ _ Hu Hmul Hx) (hm_ap M _ K1 _ _ Hu Hadd Hph)
-              (hm_ap M _ K1 _ _ Hu Hmul Hy1) (hm_ap M _ K1 _ _ Hu Hadd Hy2)
-              (hm_ap M _ K1 _ _ Hu Hmul Hy3) (hm_ap M _ K1 _ _ Hu Hadd Hqh)) as [P Q].
-  split.
-  - eapply Rle_trans; [exact P|]. right. ring.
-  - eapply Rle_trans; [exact Q|]. right. ring.
-Qed.
+Proof. hm_model horner_core_d; right; ring. Qed.
 
 (** Phong, Horner's closed form, one division, with the span's distance dd >= |Nb - Na|. *)
 Theorem phong_horner_div_dist : forall (M : fmodel) (K K1 : R), model_ok M K ->

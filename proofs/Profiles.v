@@ -660,7 +660,7 @@ Section CE.
 Context (v d eta : R) (Hv : small_ok v eta) (Hdv : small_ok d eta).
 Context (s : span) (Hua : is_unit (Na s)) (Hub : is_unit (Nb s)) (Hul : is_unit (L s))
         (Hn1 : (1 <= n s)%nat) (Hn2 : INR (n s) <= 16777216).
-Context (na nb l kk : vec) (fa fpa fc fd fpb fdqb fdia fdib fds fpn feps fdeps ft0 : R).
+Context (na nb l kk : vec) (fa fpa fc fd fpb fdqb fdia fdib fds : R).
 Context (Ina : vap1 v eta na (Na s)) (Inb : vap1 v eta nb (Nb s)) (Inl : vap1 v eta l (L s)).
 Context (tx ty tz : R)
         (Htx : ap1 v eta tx (vx nb - vx na)) (Hkx : ap1 d eta (vx kk) (tx / INR (n s)))
@@ -675,11 +675,11 @@ Context (h1 x1 : R) (Hh1 : ap1 d eta h1 (fpa / 2)) (Hx1 : ap1 v eta x1 (h1 * fd)
 Context (h2 x2 : R) (Hh2 : ap1 d eta h2 (fpb / 2)) (Hx2 : ap1 v eta x2 (h2 * fdqb))
         (Hdib : ap1 v eta fdib (fa - x2)).
 Context (w : R) (Hw : ap1 v eta w (fdib - fdia)) (Hds : ap1 d eta fds (w / INR (n s))).
-Context (q2 q3 : R) (Hq2 : ap1 v eta q2 (INR (n s) * fdia))
+Context (q2 q3 fpn : R) (Hq2 : ap1 v eta q2 (INR (n s) * fdia))
         (Hq3 : ap1 v eta q3 (INR (n s) * (INR (n s) - 1) / 2 * fds))
         (Hpn : sum3_rel v eta fpa q2 q3 fpn).
-Context (Heps : ap1 v eta feps (fpn - fpb)) (Hdeps : ap1 d eta fdeps (feps / INR (n s)))
-        (Ht0 : ap1 v eta ft0 (fdia - fdeps)).
+Context (feps fdeps ft0 : R) (Heps : ap1 v eta feps (fpn - fpb))
+        (Hdeps : ap1 d eta fdeps (feps / INR (n s))) (Ht0 : ap1 v eta ft0 (fdia - fdeps)).
 
 Local Notation nr := (INR (n s)).
 Local Notation Dl := (vsub (Nb s) (Na s)).
@@ -1560,31 +1560,24 @@ Ltac eu_core lem :=
     _ (AK _ _ _ Hm1 Hq) (AK _ _ _ Ha1 Hdqb)
     _ _ Hh1 (AK _ _ _ Hm1 Hx1) (AK _ _ _ Ha1 Hdia)
     _ _ Hh2 (AK _ _ _ Hm1 Hx2) (AK _ _ _ Ha1 Hdib)
-    _ (AK _ _ _ Ha1 Hw) Hds) as R0
+    _ (AK _ _ _ Ha1 Hw) Hds) as R0;
+  (* a lemma of corrected Euler: p_n, eps, d_eps, t0 too (see [ce_core]) *)
+  try match goal with
+  | Hq2 : ap_mul _ _ (INR (n _) * fs_dia _),
+    Hq3 : ap_mul _ _ (INR (n _) * (INR (n _) - 1) / 2 * fs_ds _), Hpn : sum3 _ _ _ _ _,
+    Heps : ap_add _ (fs_eps _) _, Hdeps : ap_div _ (fs_deps _) _, Ht0 : ap_add _ (fs_t0 _) _ |- _ =>
+    specialize (R0 _ _ _ (AK _ _ _ Hm1 Hq2) (AK _ _ _ Hm1 Hq3) (sum3_mono _ _ _ _ _ _ _ Wa Hpn)
+      _ _ _ (AK _ _ _ Ha1 Heps) Hdeps (AK _ _ _ Ha1 Ht0))
+  end
   end.
+(** The same for a lemma of section CE that uses p_n, eps, d_eps and t0 too. *)
 Ltac ce_core lem :=
-  match goal with
-  | HM : model_ok ?M ?K, HK1 : 1 <= ?K1 <= ?K, Hi1 : k_in ?M <= ?K1, Ha1 : k_add ?M <= ?K1,
-    Hm1 : k_mul ?M <= ?K1, Hd1 : 1 <= k_div ?M, HF : ce_setup_ok ?M ?s _,
-    Ha : is_unit (Na ?s), Hb : is_unit (Nb ?s), Hl : is_unit (L ?s),
-    Hn1 : (1 <= n ?s)%nat, Hn2 : INR (n ?s) <= 16777216 |- _ =>
-  destruct (model_units M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1) as (Hv & Hdv & Wa & Wa0 & AK & FK & VK);
-  destruct HF as ((Ina & Inb & Inl) & (tx & Htx & Hkx) & (ty & Hty & Hky) & (tz & Htz & Hkz)
-    & Ha' & Hpa & Hc & (e & He & Hd) & Hpb & (q & Hq & Hdqb) & (h1 & x1 & Hh1 & Hx1 & Hdia)
-    & (h2 & x2 & Hh2 & Hx2 & Hdib) & (w & Hw & Hds) & (q2 & q3 & Hq2 & Hq3 & Hpn)
-    & Heps & Hdeps & Ht0);
-  pose proof (lem _ _ _ Hv Hdv s Ha Hb Hl Hn1 Hn2
-    _ _ _ _ _ _ _ _ _ _ _ _ _ _ _ _ _
-    (VK _ _ Ina) (VK _ _ Inb) (VK _ _ Inl) _ _ _
-    (AK _ _ _ Ha1 Htx) Hkx (AK _ _ _ Ha1 Hty) Hky (AK _ _ _ Ha1 Htz) Hkz
-    (FK _ _ _ Ha') (FK _ _ _ Hpa) (FK _ _ _ Hc) _ (FK _ _ _ He) (AK _ _ _ Hm1 Hd) (FK _ _ _ Hpb)
-    _ (AK _ _ _ Hm1 Hq) (AK _ _ _ Ha1 Hdqb)
-    _ _ Hh1 (AK _ _ _ Hm1 Hx1) (AK _ _ _ Ha1 Hdia)
-    _ _ Hh2 (AK _ _ _ Hm1 Hx2) (AK _ _ _ Ha1 Hdib)
-    _ (AK _ _ _ Ha1 Hw) Hds
-    _ _ (AK _ _ _ Hm1 Hq2) (AK _ _ _ Hm1 Hq3) (sum3_mono _ _ _ _ _ _ _ Wa Hpn)
-    (AK _ _ _ Ha1 Heps) Hdeps (AK _ _ _ Ha1 Ht0)) as R0
-  end.
+  match goal with HF : ce_setup_ok ?M ?s ?F |- _ =>
+    pose proof (ce_setup_eu M s F HF) as HE;
+    destruct HF as (_ & _ & _ & _ & _ & _ & _ & _ & _ & _ & _ & _ & _
+                    & (q2 & q3 & Hq2 & Hq3 & Hpn) & Heps & Hdeps & Ht0)
+  end;
+  eu_core lem.
 
 (** ** The generic bounds of corrected Euler and Euler
 

@@ -139,40 +139,9 @@ Definition gouraud_setup_ok (M : fmodel) (s : span) (F : fsetup) : Prop :=
   fdot_ok M (fs_na F) (fs_l F) (fs_pa F) /\ fdot_ok M (fs_nb F) (fs_l F) (fs_pb F) /\
   exists w, ap_add M w (fs_pb F - fs_pa F) /\ ap_div M (fs_dp F) (w / INR (n s)).
 
-Definition ce_setup_ok (M : fmodel) (s : span) (F : fsetup) : Prop :=
-  inputs_ok M s F /\
-  kcomp_ok M (INR (n s)) (vx (fs_k F)) (vx (fs_na F)) (vx (fs_nb F)) /\
-  kcomp_ok M (INR (n s)) (vy (fs_k F)) (vy (fs_na F)) (vy (fs_nb F)) /\
-  kcomp_ok M (INR (n s)) (vz (fs_k F)) (vz (fs_na F)) (vz (fs_nb F)) /\
-  fdot_ok M (fs_k F) (fs_l F) (fs_a F) /\
-  fdot_ok M (fs_na F) (fs_l F) (fs_pa F) /\
-  fdot_ok M (fs_k F) (fs_k F) (fs_c F) /\
-  (exists e, fdot_ok M (fs_k F) (fs_na F) e /\ ap_mul M (fs_d F) (2 * e)) /\
-  fdot_ok M (fs_nb F) (fs_l F) (fs_pb F) /\
-  (exists q, ap_mul M q (2 * INR (n s) * fs_c F) /\ ap_add M (fs_dqb F) (q + fs_d F)) /\
-  (exists h x, ap_div M h (fs_pa F / 2) /\ ap_mul M x (h * fs_d F)
-               /\ ap_add M (fs_dia F) (fs_a F - x)) /\
-  (exists h x, ap_div M h (fs_pb F / 2) /\ ap_mul M x (h * fs_dqb F)
-               /\ ap_add M (fs_dib F) (fs_a F - x)) /\
-  (exists w, ap_add M w (fs_dib F - fs_dia F) /\ ap_div M (fs_ds F) (w / INR (n s))) /\
-  (exists q2 q3, ap_mul M q2 (INR (n s) * fs_dia F)
-                 /\ ap_mul M q3 (INR (n s) * (INR (n s) - 1) / 2 * fs_ds F)
-                 /\ sum3 M (fs_pa F) q2 q3 (fs_pn F)) /\
-  ap_add M (fs_eps F) (fs_pn F - fs_pb F) /\
-  ap_div M (fs_deps F) (fs_eps F / INR (n s)) /\
-  ap_add M (fs_t0 F) (fs_dia F - fs_deps F).
-
-(** The loops: any sequence each of whose steps is within the addition bound. *)
-Definition gouraud_run (M : fmodel) (F : fsetup) (m : nat) (G : nat -> R) : Prop :=
-  G O = fs_pa F /\ forall j, (j < m)%nat -> ap_add M (G (S j)) (G j + fs_dp F).
-
-Definition ceuler_run (M : fmodel) (F : fsetup) (m : nat) (P Q : nat -> R) : Prop :=
-  P O = fs_pa F /\ Q O = fs_t0 F /\
-  forall j, (j < m)%nat -> ap_add M (P (S j)) (P j + Q j) /\ ap_add M (Q (S j)) (Q j + fs_ds F).
-
 (** Plain Euler (eqs. 12-14): its set-up is the part of [ce_setup_ok] up to
     ds ([ce_setup_eu]): inputs, k, a, p_a, c, d, p_b, dq_b, di_a, di_b, ds;
-    the loop starts from s_0 = di_a. *)
+    the loop starts from s_0 = di_a ([euler_run]). *)
 Definition eu_setup_ok (M : fmodel) (s : span) (F : fsetup) : Prop :=
   inputs_ok M s F /\
   kcomp_ok M (INR (n s)) (vx (fs_k F)) (vx (fs_na F)) (vx (fs_nb F)) /\
@@ -190,11 +159,27 @@ Definition eu_setup_ok (M : fmodel) (s : span) (F : fsetup) : Prop :=
                /\ ap_add M (fs_dib F) (fs_a F - x)) /\
   (exists w, ap_add M w (fs_dib F - fs_dia F) /\ ap_div M (fs_ds F) (w / INR (n s))).
 
+(** Corrected Euler's set-up: Euler's ([eu_setup_ok], up to ds), then
+    p_n = p_a + n di_a + n(n-1)/2 ds (any order), eps, d_eps and t0. *)
+Definition ce_setup_ok (M : fmodel) (s : span) (F : fsetup) : Prop :=
+  eu_setup_ok M s F /\
+  (exists q2 q3, ap_mul M q2 (INR (n s) * fs_dia F)
+                 /\ ap_mul M q3 (INR (n s) * (INR (n s) - 1) / 2 * fs_ds F)
+                 /\ sum3 M (fs_pa F) q2 q3 (fs_pn F)) /\
+  ap_add M (fs_eps F) (fs_pn F - fs_pb F) /\
+  ap_div M (fs_deps F) (fs_eps F / INR (n s)) /\
+  ap_add M (fs_t0 F) (fs_dia F - fs_deps F).
+
 Lemma ce_setup_eu : forall M s F, ce_setup_ok M s F -> eu_setup_ok M s F.
-Proof.
-  intros M s F (H1 & H2 & H3 & H4 & H5 & H6 & H7 & H8 & H9 & H10 & H11 & H12 & H13 & _).
-  repeat (split; [assumption|]). assumption.
-Qed.
+Proof. intros M s F H. exact (proj1 H). Qed.
+
+(** The loops: any sequence each of whose steps is within the addition bound. *)
+Definition gouraud_run (M : fmodel) (F : fsetup) (m : nat) (G : nat -> R) : Prop :=
+  G O = fs_pa F /\ forall j, (j < m)%nat -> ap_add M (G (S j)) (G j + fs_dp F).
+
+Definition ceuler_run (M : fmodel) (F : fsetup) (m : nat) (P Q : nat -> R) : Prop :=
+  P O = fs_pa F /\ Q O = fs_t0 F /\
+  forall j, (j < m)%nat -> ap_add M (P (S j)) (P j + Q j) /\ ap_add M (Q (S j)) (Q j + fs_ds F).
 
 Definition euler_run (M : fmodel) (F : fsetup) (m : nat) (P Q : nat -> R) : Prop :=
   P O = fs_pa F /\ Q O = fs_dia F /\
@@ -1572,10 +1557,8 @@ Ltac eu_core lem :=
   end.
 (** The same for a lemma of section CE that uses p_n, eps, d_eps and t0 too. *)
 Ltac ce_core lem :=
-  match goal with HF : ce_setup_ok ?M ?s ?F |- _ =>
-    pose proof (ce_setup_eu M s F HF) as HE;
-    destruct HF as (_ & _ & _ & _ & _ & _ & _ & _ & _ & _ & _ & _ & _
-                    & (q2 & q3 & Hq2 & Hq3 & Hpn) & Heps & Hdeps & Ht0)
+  match goal with HF : ce_setup_ok _ _ _ |- _ =>
+    destruct HF as (HE & (q2 & q3 & Hq2 & Hq3 & Hpn) & Heps & Hdeps & Ht0)
   end;
   eu_core lem.
 

@@ -255,21 +255,14 @@ fn graph_exact_values_are_the_methods() {
 /// every published set (docs/float.md §19).
 #[test]
 fn quake_rsqrt_duff_exceeds_the_graph_bound() {
+    use super::graph_mutants::{exact_rsqrt, Setup32};
     fn quake(x: f32) -> f32 {
         super::graph_mutants::quake(x, 2)
     }
-    fn exact_rsqrt(x: f32) -> f32 {
-        1.0 / x.sqrt()
-    }
     // Duff's forward differences in f32 (eqs. 5–7), value p·rsqrt(q).
     fn duff32(s: &Span<Q>, rsqrt: fn(f32) -> f32) -> Vec<Q> {
-        let v = |x: &phong_approx::Vec3<Q>| {
-            [x.x.clone(), x.y.clone(), x.z.clone()].map(|c| f32::of(&c))
-        };
-        let (na, nb, l) = (v(&s.na), v(&s.nb), v(&s.l));
-        let dot = |a: [f32; 3], b: [f32; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-        let nf = s.n as f32;
-        let k = [0, 1, 2].map(|j| (nb[j] - na[j]) / nf);
+        let Setup32 { na, l, k } = Setup32::of(s);
+        let dot = Setup32::dot;
         let (a, c, d) = (dot(k, l), dot(k, k), 2.0 * dot(k, na));
         let (mut p, mut q, mut dq, d2q) = (dot(na, l), dot(na, na), c + d, c + c);
         (0..=s.n)

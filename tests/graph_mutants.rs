@@ -16,6 +16,40 @@ pub(super) fn quake(x: f32, steps: u32) -> f32 {
     y
 }
 
+/// `1/√x` correctly rounded twice (a square root, then a division): the kernels'
+/// legal reciprocal square root beside [`quake`].
+pub(super) fn exact_rsqrt(x: f32) -> f32 {
+    1.0 / x.sqrt()
+}
+
+/// The binary32 set-up the planted-`rsqrt` kernels share: `N_a`, `L` and
+/// `k = (N_b − N_a)/n` rounded to `f32`, and a dot product in the written order.
+pub(super) struct Setup32 {
+    /// `N_a` in `f32`.
+    pub(super) na: [f32; 3],
+    /// `L` in `f32`.
+    pub(super) l: [f32; 3],
+    /// `k = (N_b − N_a)/n` in `f32`.
+    pub(super) k: [f32; 3],
+}
+
+impl Setup32 {
+    pub(super) fn of(s: &phong_approx::Span<Q>) -> Self {
+        let v = |x: &phong_approx::Vec3<Q>| {
+            [x.x.clone(), x.y.clone(), x.z.clone()].map(|c| f32::of(&c))
+        };
+        let (na, nb, l) = (v(&s.na), v(&s.nb), v(&s.l));
+        let nf = s.n as f32;
+        let k = [0, 1, 2].map(|j| (nb[j] - na[j]) / nf);
+        Setup32 { na, l, k }
+    }
+
+    /// `a·b` summed left to right.
+    pub(super) fn dot(a: [f32; 3], b: [f32; 3]) -> f32 {
+        a[0] * b[0] + a[1] * b[1] + a[2] * b[2]
+    }
+}
+
 /// `x` rounded to binary16 (11 significant bits, to nearest even; the exponent range
 /// of the values here is within binary16's normal range or flushed to its subnormal
 /// spacing).

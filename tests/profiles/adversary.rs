@@ -10,21 +10,14 @@ use super::*;
 /// are close. The same kernel with `1/√q` passes every set.
 #[test]
 fn quake_rsqrt_phong_fails_ieee() {
+    use graph_mutants::{exact_rsqrt, Setup32};
     fn quake(x: f32) -> f32 {
         graph_mutants::quake(x, 2)
     }
-    fn exact_rsqrt(x: f32) -> f32 {
-        1.0 / x.sqrt()
-    }
     // Horner's closed form in f32: (A·i + B)·rsqrt((C·i + D)·i + E).
     fn horner(s: &Span<Q>, rsqrt: fn(f32) -> f32) -> Vec<Q> {
-        let v = |x: &phong_approx::Vec3<Q>| {
-            [x.x.clone(), x.y.clone(), x.z.clone()].map(|c| f32::of(&c))
-        };
-        let (na, nb, l) = (v(&s.na), v(&s.nb), v(&s.l));
-        let dot = |a: [f32; 3], b: [f32; 3]| a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-        let nf = s.n as f32;
-        let k = [0, 1, 2].map(|j| (nb[j] - na[j]) / nf);
+        let Setup32 { na, l, k } = Setup32::of(s);
+        let dot = Setup32::dot;
         let (a, b, c, d, e) = (
             dot(k, l),
             dot(na, l),

@@ -2053,6 +2053,48 @@ Proof.
     lra.
 Qed.
 
+(** Division by m (1 <= m <= 2^24, e.g. n or 2) as a reciprocal within kr u
+    (relative) followed by a product within km u: k = kr + km + 2^-20
+    (kr <= 5, km <= 2). *)
+Lemma recip_mul_gen : forall (kr km u eta m x r y : R), 0 <= kr <= 5 -> 0 <= km <= 2 ->
+  0 < u <= / 16777216 -> 0 <= eta -> eta * 1152921504606846976 <= u -> 1 <= m <= 16777216 ->
+  approx kr u eta r (/ m) -> approx km u eta y (x * r) ->
+  approx (kr + km + / 1048576) u eta y (x / m).
+Proof.
+  intros kr km u eta m x r y Hkr Hkm Hu He He2 Hm Hr Hy. unfold approx, ap1 in *.
+  assert (Im : 0 < / m) by (apply Rinv_0_lt_compat; lra).
+  assert (Im2 : / 16777216 <= / m) by (apply Rinv_le_contravar; lra).
+  rewrite (Rabs_pos_eq (/ m)) in Hr by lra.
+  set (d := (kr + / 68719476736) * u).
+  assert (Hd : 0 <= d <= / 3000000) by (unfold d; split; nra).
+  assert (X1 : Rabs (x * r - x / m) <= d * Rabs (x / m)).
+  { replace (x * r - x / m) with (x * (r - / m)) by (field; lra).
+    replace (x / m) with (x * / m) by (field; lra).
+    rewrite !Rabs_mult, (Rabs_pos_eq (/ m)) by lra.
+    replace (d * (Rabs x * / m)) with (Rabs x * (d * / m)) by ring.
+    apply Rmult_le_compat_l; [apply Rabs_pos|].
+    assert (eta <= / 68719476736 * u * / m).
+    { assert (/ 68719476736 * u * / 16777216 <= / 68719476736 * u * / m)
+        by (apply Rmult_le_compat_l; nra). lra. }
+    unfold d. nra. }
+  assert (X2 : Rabs (x * r) <= (1 + d) * Rabs (x / m)) by (pose proof (abs_near _ _ _ X1); lra).
+  pose proof (Rabs_pos (x / m)) as X0. set (X := Rabs (x / m)) in *.
+  assert (X3 : km * u * Rabs (x * r) <= km * u * ((1 + d) * X))
+    by (apply Rmult_le_compat_l; nra).
+  assert (X4 : km * d <= 2 * / 3000000) by (apply Rmult_le_compat; lra).
+  assert (X5 : (km * d) * (u * X) <= (2 * / 3000000) * (u * X))
+    by (apply Rmult_le_compat_r; nra).
+  replace (y - x / m) with ((y - x * r) + (x * r - x / m)) by ring.
+  eapply Rle_trans; [apply Rabs_triang|].
+  assert (E : km * u * ((1 + d) * X) + d * X
+              = km * (u * X) + kr * (u * X) + / 68719476736 * (u * X) + (km * d) * (u * X))
+    by (unfold d; ring).
+  assert (0 <= u * X) by nra.
+  assert (E2 : (kr + km + / 1048576) * u * X
+               = km * (u * X) + kr * (u * X) + / 1048576 * (u * X)) by ring.
+  rewrite E2. lra.
+Qed.
+
 (** Division by m (1 <= m <= 2^24, e.g. n or 2) as a reciprocal rounded to
     nearest followed by a product rounded to nearest: k = 2 + 2^-20. *)
 Lemma recip_mul_covered : forall (u eta m x r y : R),
@@ -2060,36 +2102,20 @@ Lemma recip_mul_covered : forall (u eta m x r y : R),
   approx 1 u eta r (/ m) -> approx 1 u eta y (x * r) ->
   approx (2 + / 1048576) u eta y (x / m).
 Proof.
-  intros u eta m x r y Hu He He2 Hm Hr Hy. unfold approx, ap1 in *. rewrite Rmult_1_l in Hr, Hy.
-  assert (Im : 0 < / m) by (apply Rinv_0_lt_compat; lra).
-  assert (Im2 : / 16777216 <= / m) by (apply Rinv_le_contravar; lra).
-  rewrite (Rabs_pos_eq (/ m)) in Hr by lra.
-  assert (R1 : Rabs (r - / m) <= (1 + / 68719476736) * u * / m).
-  { assert (eta <= / 68719476736 * u * / m).
-    { assert (/ 68719476736 * u * / 16777216 <= / 68719476736 * u * / m)
-        by (apply Rmult_le_compat_l; nra). lra. }
-    lra. }
-  set (d := (1 + / 68719476736) * u).
-  assert (Hd : 0 <= d <= / 8388608) by (unfold d; lra).
-  assert (X1 : Rabs (x * r - x / m) <= d * Rabs (x / m)).
-  { replace (x * r - x / m) with (x * (r - / m)) by (field; lra).
-    replace (x / m) with (x * / m) by (field; lra).
-    rewrite !Rabs_mult, (Rabs_pos_eq (/ m)) by lra.
-    replace (d * (Rabs x * / m)) with (Rabs x * (d * / m)) by ring.
-    apply Rmult_le_compat_l; [apply Rabs_pos|]. unfold d. lra. }
-  assert (X2 : Rabs (x * r) <= (1 + d) * Rabs (x / m)).
-  { pose proof (abs_near _ _ _ X1). lra. }
-  assert (X3 : u * Rabs (x * r) <= u * ((1 + d) * Rabs (x / m)))
-    by (apply Rmult_le_compat_l; lra).
-  assert (X4 : u * (d * Rabs (x / m)) <= u * (/ 8388608 * Rabs (x / m)))
-    by (apply Rmult_le_compat_l; [lra | apply Rmult_le_compat_r; [apply Rabs_pos | lra]]).
-  replace (y - x / m) with ((y - x * r) + (x * r - x / m)) by ring.
-  eapply Rle_trans; [apply Rabs_triang|].
-  pose proof (Rabs_pos (x / m)).
-  assert (X5 : u * Rabs (x / m) * / 68719476736 <= u * Rabs (x / m) * / 1048576)
-    by (apply Rmult_le_compat_l; [nra | lra]).
-  unfold d in *. nra.
+  intros. replace (2 + / 1048576) with (1 + 1 + / 1048576) by ring.
+  apply recip_mul_gen with (r := r); assumption || lra.
 Qed.
+
+(** Round to nearest in (emin, prec) covers every operation of [M] (k = 1, the
+    division's k_div >= 1). *)
+Ltac rn_model_covered M emin prec p e :=
+  intros choice x y;
+  pose proof (rn_covered emin prec choice ltac:(lia) x) as H;
+  change (Z.opp prec) with p in H; change (emin - 1)%Z with e in H;
+  unfold ap_in, ap_add, ap_mul, ap_div, M; cbn [m_u m_eta k_in k_add k_mul k_div];
+  repeat split; try exact H;
+  unfold approx in *; eapply ap1_mono; [|exact H];
+  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
 
 (** So every operation of the ieee profile is covered: add, sub, mul, inputs
     and division rounded to nearest (k = 1 <= 2 + 2^-20), and division as
@@ -2098,28 +2124,12 @@ Qed.
 Lemma ieee32_covered : forall (choice : Z -> bool) (x : R),
   let y := round radix2 (FLT_exp (-149) 24) (Znearest choice) x in
   ap_in ieee32 y x /\ ap_add ieee32 y x /\ ap_mul ieee32 y x /\ ap_div ieee32 y x.
-Proof.
-  intros choice x y.
-  pose proof (rn_covered (-149) 24 choice ltac:(lia) x) as H.
-  change (Z.opp 24) with (-24)%Z in H. change (-149 - 1)%Z with (-150)%Z in H.
-  unfold ap_in, ap_add, ap_mul, ap_div, ieee32; cbn [m_u m_eta k_in k_add k_mul k_div].
-  repeat split; try exact H.
-  unfold approx in *. eapply ap1_mono; [|exact H].
-  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
-Qed.
+Proof. rn_model_covered ieee32 (-149)%Z 24%Z (-24)%Z (-150)%Z. Qed.
 
 Lemma ieee64_covered : forall (choice : Z -> bool) (x : R),
   let y := round radix2 (FLT_exp (-1074) 53) (Znearest choice) x in
   ap_in ieee64 y x /\ ap_add ieee64 y x /\ ap_mul ieee64 y x /\ ap_div ieee64 y x.
-Proof.
-  intros choice x y.
-  pose proof (rn_covered (-1074) 53 choice ltac:(lia) x) as H.
-  change (Z.opp 53) with (-53)%Z in H. change (-1074 - 1)%Z with (-1075)%Z in H.
-  unfold ap_in, ap_add, ap_mul, ap_div, ieee64; cbn [m_u m_eta k_in k_add k_mul k_div].
-  repeat split; try exact H.
-  unfold approx in *. eapply ap1_mono; [|exact H].
-  apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
-Qed.
+Proof. rn_model_covered ieee64 (-1074)%Z 53%Z (-53)%Z (-1075)%Z. Qed.
 
 (** The shader profile: any rounding of binary32 (nearest or toward zero,
     ...), with or without flushing to zero, for inputs and for add, sub and
@@ -2171,35 +2181,8 @@ Lemma recip_mul_covered_5_2 : forall (u eta m x r y : R),
   approx 5 u eta r (/ m) -> approx 2 u eta y (x * r) ->
   approx (7 + / 1048576) u eta y (x / m).
 Proof.
-  intros u eta m x r y Hu He He2 Hm Hr Hy. unfold approx, ap1 in *.
-  assert (Im : 0 < / m) by (apply Rinv_0_lt_compat; lra).
-  assert (Im2 : / 16777216 <= / m) by (apply Rinv_le_contravar; lra).
-  rewrite (Rabs_pos_eq (/ m)) in Hr by lra.
-  assert (R1 : Rabs (r - / m) <= (5 + / 68719476736) * u * / m).
-  { assert (eta <= / 68719476736 * u * / m).
-    { assert (/ 68719476736 * u * / 16777216 <= / 68719476736 * u * / m)
-        by (apply Rmult_le_compat_l; nra). lra. }
-    lra. }
-  set (d := (5 + / 68719476736) * u).
-  assert (Hd : 0 <= d <= / 3000000) by (unfold d; lra).
-  assert (X1 : Rabs (x * r - x / m) <= d * Rabs (x / m)).
-  { replace (x * r - x / m) with (x * (r - / m)) by (field; lra).
-    replace (x / m) with (x * / m) by (field; lra).
-    rewrite !Rabs_mult, (Rabs_pos_eq (/ m)) by lra.
-    replace (d * (Rabs x * / m)) with (Rabs x * (d * / m)) by ring.
-    apply Rmult_le_compat_l; [apply Rabs_pos|]. unfold d. lra. }
-  assert (X2 : Rabs (x * r) <= (1 + d) * Rabs (x / m)).
-  { pose proof (abs_near _ _ _ X1). lra. }
-  assert (X3 : 2 * u * Rabs (x * r) <= 2 * u * ((1 + d) * Rabs (x / m)))
-    by (apply Rmult_le_compat_l; lra).
-  pose proof (Rabs_pos (x / m)) as X0.
-  assert (X4 : u * (d * Rabs (x / m)) <= u * (/ 3000000 * Rabs (x / m)))
-    by (apply Rmult_le_compat_l; [lra | apply Rmult_le_compat_r; lra]).
-  assert (X5 : d * Rabs (x / m) = (5 + / 68719476736) * (u * Rabs (x / m))) by (unfold d; ring).
-  assert (X6 : 0 <= u * Rabs (x / m)) by (apply Rmult_le_pos; lra).
-  replace (y - x / m) with ((y - x * r) + (x * r - x / m)) by ring.
-  eapply Rle_trans; [apply Rabs_triang|].
-  lra.
+  intros. replace (7 + / 1048576) with (5 + 2 + / 1048576) by ring.
+  apply recip_mul_gen with (r := r); assumption || lra.
 Qed.
 
 (** So [shader32_recip] covers every operation of [shader32] (the same

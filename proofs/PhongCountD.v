@@ -215,7 +215,7 @@ Qed.
 Definition wb16 (w : vec) : Prop :=
   0 <= vx w <= 16 /\ 0 <= vy w <= 16 /\ 0 <= vz w <= 16.
 
-(** [Profiles.K_dot] with weights up to 16. *)
+(** [Profiles.K_dot] with weights up to 16 ([dot_w] at W = 16). *)
 Lemma pp_dot : forall (v d eta lam mu y Sb Cv Cd : R) (ah bh a0 b0 wa1 wa2 wb1 wb2 : vec),
   small_ok v eta -> small_ok d eta ->
   fdot_rel v v eta ah bh y -> 0 < lam -> 0 < mu -> lam * mu <= 281474976710656 ->
@@ -225,40 +225,7 @@ Lemma pp_dot : forall (v d eta lam mu y Sb Cv Cd : R) (ah bh a0 b0 wa1 wa2 wb1 w
   Sb <= 12 ->
   wsum0 a0 b0 wa1 wb1 + 3 * Sb + / 100 <= Cv -> wsum0 a0 b0 wa2 wb2 + / 100 <= Cd ->
   Rabs (lam * mu * y - dot a0 b0) <= Cv * v + Cd * d.
-Proof.
-  intros v d eta lam mu y Sb Cv Cd ah bh a0 b0 wa1 wa2 wb1 wb2 Hv Hdv Hy Hl Hm Hlm HA HB Ba Bb
-    W1 W2 W3 W4 HS HS12 C1 C2.
-  pose proof (v_pos v eta Hv). pose proof (v_small v eta Hv).
-  pose proof (v_pos d eta Hdv). pose proof (v_small d eta Hdv).
-  pose proof (e_pos v eta Hv). pose proof (e_small v eta Hv).
-  assert (WL : forall w1 w2, wb16 w1 -> wb16 w2 -> wle (vlin v d w1 w2) (16 * (v + d))).
-  { intros w1 w2 [X1 [X2 X3]] [Y1 [Y2 Y3]]. unfold wle, vlin; cbn [vx vy vz].
-    repeat split; nra. }
-  pose proof (fdot_abs v eta Hv lam mu y (16 * (v + d)) ah bh a0 b0 _ _ Hy Hl Hm Hlm HA HB Ba Bb
-                (WL _ _ W1 W2) (WL _ _ W3 W4)) as F.
-  assert (E : wsum0 a0 b0 (vlin v d wa1 wa2) (vlin v d wb1 wb2)
-              = v * wsum0 a0 b0 wa1 wb1 + d * wsum0 a0 b0 wa2 wb2)
-    by (unfold wsum0, vlin; cbn [vx vy vz]; ring).
-  rewrite E in F.
-  set (S := Rabs (vx a0) * Rabs (vx b0) + Rabs (vy a0) * Rabs (vy b0) + Rabs (vz a0) * Rabs (vz b0))
-    in *.
-  assert (S0 : 0 <= S).
-  { unfold S. pose proof (Rabs_pos (vx a0)). pose proof (Rabs_pos (vy a0)).
-    pose proof (Rabs_pos (vz a0)). pose proof (Rabs_pos (vx b0)).
-    pose proof (Rabs_pos (vy b0)). pose proof (Rabs_pos (vz b0)). nra. }
-  assert (V1 : v * (wsum0 a0 b0 wa1 wb1 + 3 * Sb + / 100) <= v * Cv)
-    by (apply Rmult_le_compat_l; lra).
-  assert (V2 : d * (wsum0 a0 b0 wa2 wb2 + / 100) <= d * Cd) by (apply Rmult_le_compat_l; lra).
-  assert (F1 : v * S <= v * Sb) by (apply Rmult_le_compat_l; lra).
-  assert (F2 : v * Sb <= v * 12) by (apply Rmult_le_compat_l; lra).
-  assert (F3 : (v + d) * (v + d) <= / 1048576 * (v + d)) by (apply Rmult_le_compat_r; lra).
-  assert (F4 : v * (v + d) <= / 2097152 * (v + d)) by (apply Rmult_le_compat_r; lra).
-  assert (F5 : v * ((v + d) * (v + d)) <= / 2097152 * (v + d)).
-  { assert ((v + d) * (v + d) <= v + d) by lra.
-    apply Rmult_le_compat; try lra. apply Rmult_le_pos; lra. }
-  assert (F6 : 0 <= v * S) by (apply Rmult_le_pos; lra).
-  eapply Rle_trans; [exact F|]. lra.
-Qed.
+Proof. intros. eapply (dot_w v d eta Sb 16 (/ 100)); eassumption || lra. Qed.
 
 (** The exact normal N_i = Na + t (Nb - Na), 0 <= t <= 1. *)
 Definition nrm (s : span) (t : R) : vec := vadd (Na s) (vscale t (vsub (Nb s) (Na s))).

@@ -641,6 +641,66 @@ Qed.
 (** ** Corrected Euler: the set-up, with unit v for inputs, additions and
     products and unit d for divisions *)
 
+(** Weights v w1 + d w2 of the componentwise errors (w1, w2 unit-free). *)
+Definition vlin (x y : R) (w1 w2 : vec) : vec :=
+  mkV (x * vx w1 + y * vx w2) (x * vy w1 + y * vy w2) (x * vz w1 + y * vz w2).
+
+(** The dot-product lemma with weights v w1 + d w2, each weight in [0, W]
+    (W <= 16), the second-order terms within the margin m. *)
+Lemma dot_w : forall (v d eta Sb W m lam mu y Cv Cd : R) (ah bh a0 b0 wa1 wa2 wb1 wb2 : vec),
+  small_ok v eta -> small_ok d eta -> 0 <= W -> W * W / 262144 + W / 32768 + / 10000 <= m ->
+  fdot_rel v v eta ah bh y -> 0 < lam -> 0 < mu -> lam * mu <= 281474976710656 ->
+  vapprox 1 lam ah a0 (vlin v d wa1 wa2) -> vapprox 1 mu bh b0 (vlin v d wb1 wb2) ->
+  vbounded a0 2 -> vbounded b0 2 -> wle wa1 W -> wle wa2 W -> wle wb1 W -> wle wb2 W ->
+  Rabs (vx a0) * Rabs (vx b0) + Rabs (vy a0) * Rabs (vy b0) + Rabs (vz a0) * Rabs (vz b0) <= Sb ->
+  Sb <= 12 ->
+  wsum0 a0 b0 wa1 wb1 + 3 * Sb + m <= Cv -> wsum0 a0 b0 wa2 wb2 + m <= Cd ->
+  Rabs (lam * mu * y - dot a0 b0) <= Cv * v + Cd * d.
+Proof.
+  intros v d eta Sb W m lam mu y Cv Cd ah bh a0 b0 wa1 wa2 wb1 wb2 Hv Hdv HW Hm Hy Hl Hmu Hlm
+    HA HB Ba Bb W1 W2 W3 W4 HS HS12 C1 C2.
+  pose proof (v_pos v eta Hv). pose proof (v_small v eta Hv).
+  pose proof (v_pos d eta Hdv). pose proof (v_small d eta Hdv).
+  pose proof (e_pos v eta Hv). pose proof (e_small v eta Hv).
+  assert (WL : forall w1 w2, wle w1 W -> wle w2 W -> wle (vlin v d w1 w2) (W * (v + d))).
+  { intros w1 w2 [X1 [X2 X3]] [Y1 [Y2 Y3]]. unfold wle, vlin; cbn [vx vy vz].
+    repeat split; nra. }
+  pose proof (fdot_abs v eta Hv lam mu y (W * (v + d)) ah bh a0 b0 _ _ Hy Hl Hmu Hlm HA HB Ba Bb
+                (WL _ _ W1 W2) (WL _ _ W3 W4)) as F.
+  assert (E : wsum0 a0 b0 (vlin v d wa1 wa2) (vlin v d wb1 wb2)
+              = v * wsum0 a0 b0 wa1 wb1 + d * wsum0 a0 b0 wa2 wb2)
+    by (unfold wsum0, vlin; cbn [vx vy vz]; ring).
+  rewrite E in F.
+  set (S := Rabs (vx a0) * Rabs (vx b0) + Rabs (vy a0) * Rabs (vy b0) + Rabs (vz a0) * Rabs (vz b0))
+    in *.
+  assert (S0 : 0 <= S).
+  { unfold S. pose proof (Rabs_pos (vx a0)). pose proof (Rabs_pos (vy a0)).
+    pose proof (Rabs_pos (vz a0)). pose proof (Rabs_pos (vx b0)).
+    pose proof (Rabs_pos (vy b0)). pose proof (Rabs_pos (vz b0)). nra. }
+  assert (V1 : v * (wsum0 a0 b0 wa1 wb1 + 3 * Sb + m) <= v * Cv)
+    by (apply Rmult_le_compat_l; lra).
+  assert (V2 : d * (wsum0 a0 b0 wa2 wb2 + m) <= d * Cd) by (apply Rmult_le_compat_l; lra).
+  assert (F1 : v * S <= v * Sb) by (apply Rmult_le_compat_l; lra).
+  assert (F2 : v * Sb <= v * 12) by (apply Rmult_le_compat_l; lra).
+  set (e := v + d) in *.
+  assert (G1 : e * e <= / 1048576 * e) by (apply Rmult_le_compat_r; unfold e; lra).
+  assert (G2 : W * e * (W * e) <= W * W / 1048576 * e).
+  { replace (W * e * (W * e)) with (W * W * (e * e)) by ring.
+    replace (W * W / 1048576 * e) with (W * W * (/ 1048576 * e)) by field.
+    apply Rmult_le_compat_l; [nra | exact G1]. }
+  assert (G3 : v * (W * e) <= W / 2097152 * e).
+  { replace (v * (W * e)) with (W * e * v) by ring.
+    replace (W / 2097152 * e) with (W * e * / 2097152) by field.
+    apply Rmult_le_compat_l; [unfold e; nra | lra]. }
+  assert (G4 : v * (W * e * (W * e)) <= / 2097152 * (W * W / 1048576 * e)).
+  { apply Rmult_le_compat; try lra. unfold e; nra. }
+  assert (G5 : m * e >= (W * W / 262144 + W / 32768 + / 10000) * e)
+    by (apply Rle_ge, Rmult_le_compat_r; unfold e; lra).
+  assert (0 <= W * W / 1048576 * e) by (unfold e; apply Rmult_le_pos; [nra | lra]).
+  assert (0 <= W / 2097152 * e) by (unfold e; apply Rmult_le_pos; lra).
+  eapply Rle_trans; [exact F|]. unfold e in *. lra.
+Qed.
+
 Section CE.
 Context (v d eta : R) (Hv : small_ok v eta) (Hdv : small_ok d eta).
 Context (s : span) (Hua : is_unit (Na s)) (Hub : is_unit (Nb s)) (Hul : is_unit (L s))
@@ -679,9 +739,6 @@ Ltac basics :=
   pose proof (v_small d eta Hdv) as Hd1.
 Ltac ebasics := basics; pose proof (e_pos v eta Hv) as He0; pose proof (e_small v eta Hv) as He1.
 
-(** Weights v w1 + d w2 of the componentwise errors (w1, w2 unit-free). *)
-Definition vlin (x y : R) (w1 w2 : vec) : vec :=
-  mkV (x * vx w1 + y * vx w2) (x * vy w1 + y * vy w2) (x * vz w1 + y * vz w2).
 Definition vzero : vec := mkV 0 0 0.
 Definition wKv (a0 b0 : vec) : vec :=
   mkV (2001 / 1000 * (Rabs (vx a0) + Rabs (vx b0)) + / 268435456)
@@ -782,38 +839,9 @@ Lemma K_dot : forall (lam mu y Sb Cv Cd : R) (ah bh a0 b0 wa1 wa2 wb1 wb2 : vec)
   wsum0 a0 b0 wa1 wb1 + 3 * Sb + / 1000 <= Cv -> wsum0 a0 b0 wa2 wb2 + / 1000 <= Cd ->
   Rabs (lam * mu * y - dot a0 b0) <= Cv * v + Cd * d.
 Proof.
-  intros lam mu y Sb Cv Cd ah bh a0 b0 wa1 wa2 wb1 wb2 Hy Hl Hm Hlm HA HB Ba Bb
-    W1 W2 W3 W4 HS HS12 C1 C2.
-  pose proof (v_pos v eta Hv). pose proof (v_small v eta Hv).
-  pose proof (v_pos d eta Hdv). pose proof (v_small d eta Hdv).
-  pose proof (e_pos v eta Hv). pose proof (e_small v eta Hv).
-  assert (WL : forall w1 w2, wbounded w1 -> wbounded w2 -> wle (vlin v d w1 w2) (8 * (v + d))).
-  { intros w1 w2 [X1 [X2 X3]] [Y1 [Y2 Y3]]. unfold wle, vlin; cbn [vx vy vz].
-    repeat split; nra. }
-  pose proof (fdot_abs v eta Hv lam mu y (8 * (v + d)) ah bh a0 b0 _ _ Hy Hl Hm Hlm HA HB Ba Bb
-                (WL _ _ W1 W2) (WL _ _ W3 W4)) as F.
-  assert (E : wsum0 a0 b0 (vlin v d wa1 wa2) (vlin v d wb1 wb2)
-              = v * wsum0 a0 b0 wa1 wb1 + d * wsum0 a0 b0 wa2 wb2)
-    by (unfold wsum0, vlin; cbn [vx vy vz]; ring).
-  rewrite E in F.
-  set (S := Rabs (vx a0) * Rabs (vx b0) + Rabs (vy a0) * Rabs (vy b0) + Rabs (vz a0) * Rabs (vz b0))
-    in *.
-  assert (S0 : 0 <= S).
-  { unfold S. pose proof (Rabs_pos (vx a0)). pose proof (Rabs_pos (vy a0)).
-    pose proof (Rabs_pos (vz a0)). pose proof (Rabs_pos (vx b0)).
-    pose proof (Rabs_pos (vy b0)). pose proof (Rabs_pos (vz b0)). nra. }
-  assert (V1 : v * (wsum0 a0 b0 wa1 wb1 + 3 * Sb + / 1000) <= v * Cv)
-    by (apply Rmult_le_compat_l; lra).
-  assert (V2 : d * (wsum0 a0 b0 wa2 wb2 + / 1000) <= d * Cd) by (apply Rmult_le_compat_l; lra).
-  assert (F1 : v * S <= v * Sb) by (apply Rmult_le_compat_l; lra).
-  assert (F2 : v * Sb <= v * 12) by (apply Rmult_le_compat_l; lra).
-  assert (F3 : (v + d) * (v + d) <= / 1048576 * (v + d)) by (apply Rmult_le_compat_r; lra).
-  assert (F4 : v * (v + d) <= / 2097152 * (v + d)) by (apply Rmult_le_compat_r; lra).
-  assert (F5 : v * ((v + d) * (v + d)) <= / 2097152 * (v + d)).
-  { assert ((v + d) * (v + d) <= v + d) by lra.
-    apply Rmult_le_compat; try lra. apply Rmult_le_pos; lra. }
-  assert (F6 : 0 <= v * S) by (apply Rmult_le_pos; lra).
-  eapply Rle_trans; [exact F|]. lra.
+  intros. assert (B : forall z, wbounded z -> wle z 8)
+    by (intros z (? & ? & ?); repeat split; lra).
+  eapply (dot_w v d eta Sb 8 (/ 1000)); (apply B; assumption) || eassumption || lra.
 Qed.
 
 Ltac unit_facts := unit_facts_of s Hua Hub Hul.

@@ -215,18 +215,6 @@ Qed.
 Definition wb16 (w : vec) : Prop :=
   0 <= vx w <= 16 /\ 0 <= vy w <= 16 /\ 0 <= vz w <= 16.
 
-(** [Profiles.K_dot] with weights up to 16 ([dot_w] at W = 16). *)
-Lemma pp_dot : forall (v d eta lam mu y Sb Cv Cd : R) (ah bh a0 b0 wa1 wa2 wb1 wb2 : vec),
-  small_ok v eta -> small_ok d eta ->
-  fdot_rel v v eta ah bh y -> 0 < lam -> 0 < mu -> lam * mu <= 281474976710656 ->
-  vapprox 1 lam ah a0 (vlin v d wa1 wa2) -> vapprox 1 mu bh b0 (vlin v d wb1 wb2) ->
-  vbounded a0 2 -> vbounded b0 2 -> wb16 wa1 -> wb16 wa2 -> wb16 wb1 -> wb16 wb2 ->
-  Rabs (vx a0) * Rabs (vx b0) + Rabs (vy a0) * Rabs (vy b0) + Rabs (vz a0) * Rabs (vz b0) <= Sb ->
-  Sb <= 12 ->
-  wsum0 a0 b0 wa1 wb1 + 3 * Sb + / 100 <= Cv -> wsum0 a0 b0 wa2 wb2 + / 100 <= Cd ->
-  Rabs (lam * mu * y - dot a0 b0) <= Cv * v + Cd * d.
-Proof. intros. eapply (dot_w v d eta Sb 16 (/ 100)); eassumption || lra. Qed.
-
 (** The exact normal N_i = Na + t (Nb - Na), 0 <= t <= 1. *)
 Definition nrm (s : span) (t : R) : vec := vadd (Na s) (vscale t (vsub (Nb s) (Na s))).
 
@@ -657,14 +645,14 @@ Proof.
   pose proof (wM_sum _ _ _ t c1 c2 dd Ht ltac:(lra) ltac:(lra) NA' NB' DN NB1) as SN1.
   pose proof (wM_sum _ _ _ t 0 c3 dd Ht ltac:(lra) ltac:(lra) NA' NB' DN NB1) as SN2.
   split.
-  - pose proof (pp_dot v d eta 1 1 ph 1 (c1 + c2 * dd + 402 / 100) (c3 * dd + 2 / 100)
-      nh l (nrm s t) (L s) _ _ _ _ Hv Hd Hp ltac:(lra) ltac:(lra) ltac:(lra) VN
+  - pose proof (dot_w v d eta 1 16 (/ 100) 1 1 ph (c1 + c2 * dd + 402 / 100) (c3 * dd + 2 / 100)
+      nh l (nrm s t) (L s) _ _ _ _ Hv Hd ltac:(lra) ltac:(lra) Hp ltac:(lra) ltac:(lra) ltac:(lra) VN
       (K_in_vec v d eta Hv _ _ Inl) (vb12 _ NB1) (vb12 _ (unit_bounded _ Hl)) Wv Wd WL W0) as HD2.
     rewrite !Rmult_1_l in HD2. apply HD2; [lra | lra | |].
     + unfold wsum0, Float.wIn; cbn [vx vy vz]. lra.
     + unfold wsum0, vzero; cbn [vx vy vz]. lra.
-  - pose proof (pp_dot v d eta 1 1 qh 1 (2 * c1 + 2 * c2 * dd + 302 / 100) (2 * c3 * dd + 2 / 100)
-      nh nh (nrm s t) (nrm s t) _ _ _ _ Hv Hd Hq ltac:(lra) ltac:(lra) ltac:(lra) VN VN
+  - pose proof (dot_w v d eta 1 16 (/ 100) 1 1 qh (2 * c1 + 2 * c2 * dd + 302 / 100) (2 * c3 * dd + 2 / 100)
+      nh nh (nrm s t) (nrm s t) _ _ _ _ Hv Hd ltac:(lra) ltac:(lra) Hq ltac:(lra) ltac:(lra) ltac:(lra) VN VN
       (vb12 _ NB1) (vb12 _ NB1) Wv Wd Wv Wd) as HD2.
     rewrite !Rmult_1_l in HD2. apply HD2; [lra | lra | |].
     + unfold wsum0; cbn [vx vy vz]. lra.
@@ -1251,8 +1239,8 @@ Proof.
   destruct (unit_bounded _ HX) as [X1 [X2 X3]].
   pose proof (Rabs_pos (vx X)). pose proof (Rabs_pos (vy X)). pose proof (Rabs_pos (vz X)).
   pose proof (Rabs_pos (vx Dl)). pose proof (Rabs_pos (vy Dl)). pose proof (Rabs_pos (vz Dl)).
-  pose proof (pp_dot v d eta (INR (n s)) 1 y dd (202 / 100 + 501 / 100 * dd)
-    (2 / 100 + 101 / 100 * dd) kk xh Dl X _ _ _ _ Hv Hdv Hy ltac:(lra) ltac:(lra) ltac:(lra)
+  pose proof (dot_w v d eta dd 16 (/ 100) (INR (n s)) 1 y (202 / 100 + 501 / 100 * dd)
+    (2 / 100 + 101 / 100 * dd) kk xh Dl X _ _ _ _ Hv Hdv ltac:(lra) ltac:(lra) Hy ltac:(lra) ltac:(lra) ltac:(lra)
     hk_vec (K_in_vec v d eta Hv _ _ IX) (diff_bounded _ _ Ha Hb) (vb12 _ (unit_bounded _ HX))
     W1 W2 WX W0 DX ltac:(lra)) as HD2.
   rewrite Rmult_1_r in HD2. apply HD2.
@@ -1278,9 +1266,9 @@ Proof.
   pose proof (Rabs_pos (vx Dl)). pose proof (Rabs_pos (vy Dl)). pose proof (Rabs_pos (vz Dl)).
   assert (dd * dd <= 4) by nra.
   assert (0 <= dd * dd) by nra.
-  pose proof (pp_dot v d eta (INR (n s)) (INR (n s)) y (dd * dd)
+  pose proof (dot_w v d eta (dd * dd) 16 (/ 100) (INR (n s)) (INR (n s)) y
     (2 / 100 + 401 / 100 * dd + 501 / 100 * dd * dd) (2 / 100 + 0 * dd + 201 / 100 * dd * dd)
-    kk kk Dl Dl _ _ _ _ Hv Hdv Hy ltac:(lra) ltac:(lra) ltac:(nra)
+    kk kk Dl Dl _ _ _ _ Hv Hdv ltac:(lra) ltac:(lra) Hy ltac:(lra) ltac:(lra) ltac:(nra)
     hk_vec hk_vec (diff_bounded _ _ Ha Hb) (diff_bounded _ _ Ha Hb)
     W1 W2 W1 W2 DD ltac:(lra)) as HD2.
   apply HD2.

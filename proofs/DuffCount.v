@@ -397,7 +397,7 @@ Proof.
   pose proof (K_pa v d eta Hv Hd (mkSpan (Na s) (Nb s) (Na s) (n s)) Ha Hb Ha na na fe
                 Ina Ina Hfe) as CE.
   unfold pa in CE; cbn [Na Nb L] in CE.
-  pose proof (K_dl_dd s Ha Hb) as Cc.
+  pose proof (dl_dd s Ha Hb) as Cc.
   split.
   - rewrite hc_p_form by exact Hn0.
     assert (Hst1 : forall j, (j < n s)%nat -> ap1 w eta (P (S j)) (P j + fa))

@@ -209,70 +209,31 @@ Proof.
 Qed.
 
 (** |n di_a| <= 2: n di_a = Dl . (L - p_a Na) and |L - p_a Na|^2 = 1 - p_a^2. *)
-Lemma ndia_le : Rabs (e_ndia s) <= 2.
+(** n di at an edge X (Na or Nb), scaled: |Dl.L - (X.L)(Dl.X)| <= 2. *)
+Lemma nd_le : forall X, is_unit X ->
+  Rabs (dot (vsub (Nb s) (Na s)) (L s) - dot X (L s) * dot (vsub (Nb s) (Na s)) X) <= 2.
 Proof.
-  set (w := mkV (vx (L s) - pa s * vx (Na s)) (vy (L s) - pa s * vy (Na s))
-                (vz (L s) - pa s * vz (Na s))).
-  assert (E : e_ndia s = dot (vsub (Nb s) (Na s)) w).
-  { unfold e_ndia, w, dot, vsub; cbn [vx vy vz]. ring. }
-  assert (Ew : dot w w = dot (L s) (L s) - 2 * pa s * dot (Na s) (L s)
-                         + pa s * pa s * dot (Na s) (Na s)).
+  intros X HX.
+  set (w := mkV (vx (L s) - dot X (L s) * vx X) (vy (L s) - dot X (L s) * vy X)
+                (vz (L s) - dot X (L s) * vz X)).
+  assert (E : dot (vsub (Nb s) (Na s)) (L s) - dot X (L s) * dot (vsub (Nb s) (Na s)) X
+              = dot (vsub (Nb s) (Na s)) w) by (unfold w, dot, vsub; cbn [vx vy vz]; ring).
+  assert (Ew : dot w w = dot (L s) (L s) - 2 * dot X (L s) * dot X (L s)
+                         + dot X (L s) * dot X (L s) * dot X X).
   { unfold w, dot; cbn [vx vy vz]. ring. }
-  unfold is_unit in *. rewrite Hul, Hua in Ew. fold (pa s) in Ew.
+  unfold is_unit in *. rewrite Hul, HX in Ew.
   pose proof (diff_sq (Na s) (Nb s) Hua Hub).
   rewrite E. eapply Rle_trans; [apply diff_dot_le|]. nra.
 Qed.
 
+Lemma ndia_le : Rabs (e_ndia s) <= 2.
+Proof. exact (nd_le (Na s) Hua). Qed.
 Lemma ndib_le : Rabs (e_ndib s) <= 2.
-Proof.
-  set (w := mkV (vx (L s) - pb s * vx (Nb s)) (vy (L s) - pb s * vy (Nb s))
-                (vz (L s) - pb s * vz (Nb s))).
-  assert (E : e_ndib s = dot (vsub (Nb s) (Na s)) w).
-  { unfold e_ndib, w, dot, vsub; cbn [vx vy vz]. ring. }
-  assert (Ew : dot w w = dot (L s) (L s) - 2 * pb s * dot (Nb s) (L s)
-                         + pb s * pb s * dot (Nb s) (Nb s)).
-  { unfold w, dot; cbn [vx vy vz]. ring. }
-  unfold is_unit in *. rewrite Hul, Hub in Ew. fold (pb s) in Ew.
-  pose proof (diff_sq (Na s) (Nb s) Hua Hub).
-  rewrite E. eapply Rle_trans; [apply diff_dot_le|]. nra.
-Qed.
+Proof. exact (nd_le (Nb s) Hub). Qed.
 
 (** n^2 ds = -(1 - Na.Nb)(p_a + p_b), and |n^2 ds| <= 2 (Cauchy-Schwarz). *)
 Lemma n2ds_form : e_n2ds s = - (1 - dot (Na s) (Nb s)) * (pa s + pb s).
 Proof. unfold e_n2ds, e_ndib, e_ndia. rewrite dl_na, dl_nb. ring. Qed.
-
-Lemma n2ds_le : Rabs (e_n2ds s) <= 2.
-Proof.
-  rewrite n2ds_form. set (c := dot (Na s) (Nb s)).
-  pose proof cos_range as Hc. fold c in Hc.
-  set (S := vadd (Na s) (Nb s)).
-  assert (ES : dot S S = 2 + 2 * c).
-  { unfold is_unit in *. unfold c. rewrite <- (Rmult_1_l 2) at 1.
-    replace 2 with (dot (Na s) (Na s) + dot (Nb s) (Nb s)) at 1 by lra.
-    unfold S, vadd, dot; cbn [vx vy vz]. ring. }
-  assert (EL : pa s + pb s = dot S (L s)).
-  { unfold S, pa, pb, vadd, dot; cbn [vx vy vz]. ring. }
-  assert (LG : dot S S * dot (L s) (L s) - dot S (L s) * dot S (L s) =
-     (vx S * vy (L s) - vy S * vx (L s)) * (vx S * vy (L s) - vy S * vx (L s))
-   + (vx S * vz (L s) - vz S * vx (L s)) * (vx S * vz (L s) - vz S * vx (L s))
-   + (vy S * vz (L s) - vz S * vy (L s)) * (vy S * vz (L s) - vz S * vy (L s))).
-  { unfold dot. ring. }
-  unfold is_unit in Hul. rewrite Hul in LG.
-  assert (CS : (pa s + pb s) * (pa s + pb s) <= 2 + 2 * c).
-  { rewrite EL, <- ES.
-    pose proof (Rle_0_sqr (vx S * vy (L s) - vy S * vx (L s))).
-    pose proof (Rle_0_sqr (vx S * vz (L s) - vz S * vx (L s))).
-    pose proof (Rle_0_sqr (vy S * vz (L s) - vz S * vy (L s))). unfold Rsqr in *. lra. }
-  apply abs_le_of_sq; [lra|].
-  set (x := 1 - c). assert (0 <= x <= 2) by (unfold x; lra).
-  replace (- x * (pa s + pb s) * (- x * (pa s + pb s)))
-    with ((x * x) * ((pa s + pb s) * (pa s + pb s))) by ring.
-  assert ((x * x) * ((pa s + pb s) * (pa s + pb s)) <= (x * x) * (2 + 2 * c))
-    by (apply Rmult_le_compat_l; nra).
-  replace c with (1 - x) in * by (unfold x; ring).
-  assert (x * x * (4 - 2 * x) <= 2 * x * (4 - 2 * x)) by (apply Rmult_le_compat_r; nra).
-  pose proof (Rle_0_sqr (x - 1)). unfold Rsqr in *. nra.
-Qed.
 
 Lemma cs3 : forall a b : vec, dot a b * dot a b <= dot a a * dot b b.
 Proof.
@@ -310,6 +271,9 @@ Proof.
   { apply Rmult_le_pos; [|lra]. pose proof (Rle_0_sqr (x - 4 / 3)). unfold Rsqr in *. lra. }
   nra.
 Qed.
+
+Lemma n2ds_le : Rabs (e_n2ds s) <= 2.
+Proof. pose proof n2ds_le'. lra. Qed.
 
 (** Exact magnitudes along the span. *)
 Lemma gouraud_le : forall i, (i <= n s)%nat -> Rabs (gouraud s i) <= 1.

@@ -898,16 +898,6 @@ Proof.
   rewrite Rmult_1_r in HD. apply HD; unfold wsum0, wIn, wKv, wKd, vzero; cbn [vx vy vz]; lra.
 Qed.
 
-Lemma K_dl_dd : 0 <= dot Dl Dl <= 4.
-Proof.
-  split; [|apply diff_sq; assumption].
-  unfold dot. pose proof (Rle_0_sqr (vx Dl)). pose proof (Rle_0_sqr (vy Dl)).
-  pose proof (Rle_0_sqr (vz Dl)). unfold Rsqr in *. lra.
-Qed.
-
-Lemma K_dl_sum : dot Dl Dl + dot Dl (Na s) = dot Dl (Nb s).
-Proof. unfold dot, vsub; cbn [vx vy vz]. ring. Qed.
-
 Lemma K_d : Rabs (nr * fd - 2 * dot Dl (Na s)) <= 2803 / 100 * v + 402 / 100 * d.
 Proof.
   basics. pose proof K_d0 as H0. pose proof (dl_dot_le s Hua Hub (Na s) Hua) as H1.
@@ -921,7 +911,7 @@ Qed.
 
 Lemma K_c2 : Rabs (nr * q - 2 * dot Dl Dl) <= 6405 / 100 * v + 1602 / 100 * d.
 Proof.
-  basics. pose proof K_c as H0. pose proof K_dl_dd as H1.
+  basics. pose proof K_c as H0. pose proof (dl_dd s Hua Hub) as H1.
   eapply Rle_trans.
   { apply (ap_step v eta Hv nr q (2 * nr * fc) (2 * (nr * nr * fc)) _
              (5604 / 100 * v + 1602 / 100 * d) (8001 / 1000) Hq); [lra | ring | | ].
@@ -937,7 +927,7 @@ Proof.
   eapply Rle_trans.
   { apply (ap_step v eta Hv nr fdqb (q + fd) (nr * q + nr * fd) _
              (9208 / 100 * v + 2004 / 100 * d) (4001 / 1000) Hdqb); [lra | ring | | ].
-    - rewrite <- K_dl_sum.
+    - rewrite <- (dl_sum s).
       replace (nr * q + nr * fd - 2 * (dot Dl Dl + dot Dl (Na s)))
         with ((nr * q - 2 * dot Dl Dl) + (nr * fd - 2 * dot Dl (Na s))) by ring.
       eapply Rle_trans; [apply Rabs_triang|]. lra.

@@ -201,12 +201,6 @@ Proof.
   assert (v * Rabs x <= v * M) by (apply Rmult_le_compat_l; lra). lra.
 Qed.
 
-Lemma ad_near : forall X Y e, Rabs (Y - X) <= e -> Rabs Y <= Rabs X + e.
-Proof.
-  intros X Y e H. replace Y with (X + (Y - X)) by ring.
-  eapply Rle_trans; [apply Rabs_triang|]. lra.
-Qed.
-
 Lemma ad_tri5 : forall a b c d e,
   Rabs (a + b + c + d + e) <= Rabs a + Rabs b + Rabs c + Rabs d + Rabs e.
 Proof.
@@ -293,7 +287,7 @@ Proof.
   { rewrite Rabs_mult, (Rabs_pos_eq th) by lra.
     assert (Rabs (pb - pa) <= 2) by (unfold Rminus; eapply Rle_trans; [apply Rabs_triang|]; rewrite Rabs_Ropp; lra).
     assert (th * Rabs (pb - pa) <= 1 * 2) by (apply Rmult_le_compat; try lra; apply Rabs_pos). lra. }
-  assert (MAb : Rabs (j * dph) <= MA) by (pose proof (ad_near _ _ _ GA); unfold MA; lra).
+  assert (MAb : Rabs (j * dph) <= MA) by (pose proof (abs_near _ _ _ GA); unfold MA; lra).
   (* corrected Euler part *)
   set (Rr := nr * t0h - (pbc - pac - nr * (nr - 1) / 2 * dsh)) in HR.
   assert (CA : Rabs (j * t0h + (j * j - j) / 2 * dsh - (th * (pb - pa) - dsx / 2 * j * lo)) <= EC).
@@ -310,7 +304,7 @@ Proof.
     assert (kk * Rabs (nr * nr * dsh - nr * nr * dsx) <= 1 / 8 * Eds)
       by (apply Rmult_le_compat; try lra; apply Rabs_pos).
     unfold EC. lra. }
-  assert (Hdsh : Rabs (nr * nr * dsh) <= 2 + Eds) by (pose proof (ad_near _ _ _ Hds); lra).
+  assert (Hdsh : Rabs (nr * nr * dsh) <= 2 + Eds) by (pose proof (abs_near _ _ _ Hds); lra).
   assert (MBb : Rabs (j * t0h) <= MB).
   { assert (E1 : j * t0h = th * (nr * t0h)) by (unfold th; field; lra).
     assert (E2 : nr * (nr - 1) / 2 * dsh = (nr - 1) / (2 * nr) * (nr * nr * dsh)) by (field; lra).
@@ -342,7 +336,7 @@ Proof.
   pose proof (ad_ap1_abs _ _ _ _ _ Hv Ab MBb) as Rb.
   pose proof (ad_ap1_abs _ _ _ _ _ Hv Ac MCb) as Rc.
   assert (Sbc : Rabs (b + c) <= MB + MC + (v * MB + eta) + (v * MC + eta)).
-  { pose proof (ad_near _ _ _ Rb). pose proof (ad_near _ _ _ Rc).
+  { pose proof (abs_near _ _ _ Rb). pose proof (abs_near _ _ _ Rc).
     eapply Rle_trans; [apply Rabs_triang|]. lra. }
   pose proof (ad_ap1_abs _ _ _ _ _ Hv Ae Sbc) as Re.
   assert (Hdl : Rabs (dsx / 2 * j * lo) <= 1 / 4).
@@ -358,7 +352,7 @@ Proof.
               + - (j * t0h + (j * j - j) / 2 * dsh - (th * (pb - pa) - dsx / 2 * j * lo))) by ring.
       eapply Rle_trans; [apply ad_tri6|]. rewrite !Rabs_Ropp.
       unfold E4. lra. }
-    pose proof (ad_near _ _ _ F4) as Hae.
+    pose proof (abs_near _ _ _ F4) as Hae.
     assert (Hae' : Rabs (a - e) <= 1 / 4 + E4) by lra.
     pose proof (ad_ap1_abs _ _ _ _ _ Hv Adh Hae') as Rdh.
     replace (dh - dsx / 2 * j * lo) with ((dh - (a - e)) + ((a - e) - dsx / 2 * j * lo)) by ring.
@@ -382,7 +376,7 @@ Proof.
               + - (e - (b + c)) + - (b - j * t0h) + - (c - (j * j - j) / 2 * dsh)) by ring.
       eapply Rle_trans; [apply ad_tri5|]. rewrite !Rabs_Ropp.
       unfold E4s. lra. }
-    pose proof (ad_near _ _ _ F4) as Hae.
+    pose proof (abs_near _ _ _ F4) as Hae.
     assert (Hae' : Rabs (a - e) <= 1 / 4 + E4s) by lra.
     pose proof (ad_ap1_abs _ _ _ _ _ Hv Adh Hae') as Rdh.
     replace (dh - dsx / 2 * j * lo) with ((dh - (a - e)) + ((a - e) - dsx / 2 * j * lo)) by ring.

@@ -70,7 +70,7 @@ Proof.
   { intros J HJ.
     assert (HJr : 0 <= INR J <= mr)
       by (rewrite Hmr; split; [apply pos_INR | apply le_INR; exact HJ]).
-    pose proof (hc_t mr (INR J) ltac:(lra) HJr) as Ht.
+    pose proof (theta_rng mr (INR J) ltac:(lra) HJr) as Ht.
     replace (fb + INR J * fa - (b + INR J / mr * a))
       with ((fb - b) + INR J / mr * (mr * fa - a)) by (field; lra).
     eapply Rle_trans; [apply Rabs_triang|].
@@ -82,7 +82,7 @@ Proof.
     pose proof (Gen (S j) ltac:(lia)) as G1.
     assert (HJr : 0 <= INR (S j) <= mr)
       by (rewrite Hmr; split; [apply pos_INR | apply le_INR; lia]).
-    pose proof (hc_t mr (INR (S j)) ltac:(lra) HJr) as Ht.
+    pose proof (theta_rng mr (INR (S j)) ltac:(lra) HJr) as Ht.
     pose proof (Hab _ Ht) as G2.
     pose proof (abs_near _ _ _ G1) as G3.
     assert (mr * (w * (1001 / 1000) + eta) = 1001 / 1000 * (mr * w) + mr * eta) by ring.
@@ -121,7 +121,7 @@ Proof.
   assert (J1 : 0 <= Jr * (Jr - 1)).
   { unfold Jr. destruct J as [| J']; [cbn [INR]; lra|].
     rewrite S_INR. pose proof (pos_INR J'). nra. }
-  pose proof (hc_t mr Jr ltac:(lra) ltac:(lra)) as Ht.
+  pose proof (theta_rng mr Jr ltac:(lra) ltac:(lra)) as Ht.
   set (t := Jr / mr) in *.
   assert (Hinv : 0 <= / mr <= 1).
   { split; [left; apply Rinv_0_lt_compat; lra|].
@@ -142,7 +142,7 @@ Proof.
   { pose proof (abs_near _ _ _ HC). rewrite (Rabs_pos_eq c) in * by lra. lra. }
   assert (Hmm : 1 <= mr * mr) by nra.
   assert (F3 : Rabs (Jr * (Jr - 1) * fc) <= 4 + cC).
-  { pose proof (hc_t (mr * mr) (Jr * (Jr - 1)) Hmm ltac:(split; nra)) as Ht2.
+  { pose proof (theta_rng (mr * mr) (Jr * (Jr - 1)) Hmm ltac:(split; nra)) as Ht2.
     replace (Jr * (Jr - 1) * fc) with (Jr * (Jr - 1) / (mr * mr) * (mr * mr * fc))
       by (field; lra).
     eapply Rle_trans; [apply hc_scale; exact Ht2 | exact F2]. }
@@ -258,7 +258,7 @@ Proof.
     { rewrite Rabs_mult, (Rabs_pos_eq (mr * Jr)) by nra.
       assert (mr * Jr * Rabs (h - (fc + fc)) <= mr * Jr * (w * Rabs (fc + fc) + eta))
         by (apply Rmult_le_compat_l; [nra | exact Hh]).
-      assert (Ht : 0 <= Jr / mr <= 1) by (apply hc_t; [lra | split; lra]).
+      assert (Ht : 0 <= Jr / mr <= 1) by (apply theta_rng; [lra | split; lra]).
       assert (mr * Jr * (w * Rabs (fc + fc) + eta)
               = 2 * w * (Jr / mr * Rabs (mr * mr * fc)) + mr * Jr * eta).
       { replace (fc + fc) with (2 * fc) by ring.
@@ -297,7 +297,7 @@ Proof.
     assert (HJ : INR (S j) <= mr) by (rewrite Hmr; apply le_INR; lia).
     pose proof (dq_ideal v w eta mr fc e fe c dd ee cC cD cE g0 h (S j) Hv Hw Hm HJ HC HD HE
                   HcC HcD ltac:(lra) Hc Hz Hg0 Hh) as G1.
-    assert (Ht : 0 <= INR (S j) / mr <= 1) by (apply hc_t; [lra | split; [apply pos_INR | lra]]).
+    assert (Ht : 0 <= INR (S j) / mr <= 1) by (apply theta_rng; [lra | split; [apply pos_INR | lra]]).
     pose proof (Hq _ Ht) as G2.
     pose proof (abs_near _ _ _ G1) as G3.
     assert (mr * mr / 2 * (w * Ms + eta) = 40025 / 20000 * (mr * w) + mr * mr * eta / 2)
@@ -343,7 +343,7 @@ Lemma dc_slope : forall s, is_unit (Na s) -> is_unit (Nb s) -> forall z, 0 <= z 
 Proof.
   intros s Ha Hb z Hz.
   assert (X : Rabs (dot (Na s) (Nb s)) <= 1)
-    by (eapply Rle_trans; [apply hc_dot_abs | apply unit_pair; assumption]).
+    by (eapply Rle_trans; [apply dot_abs | apply unit_pair; assumption]).
   assert (E1 : dot (vsub (Nb s) (Na s)) (vsub (Nb s) (Na s))
                = dot (Nb s) (Nb s) - 2 * dot (Na s) (Nb s) + dot (Na s) (Na s))
     by (unfold dot, vsub; cbn [vx vy vz]; ring).

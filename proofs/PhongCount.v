@@ -60,7 +60,7 @@ Proof.
   assert (Hn0 : (n s <> 0)%nat) by lia.
   assert (Hm : 1 <= INR (n s) <= 16777216) by (split; [apply (le_INR 1); exact Hn1 | exact Hn2]).
   assert (Hii : 0 <= INR i <= INR (n s)) by (split; [apply pos_INR | apply le_INR; exact Hi]).
-  pose proof (hc_t (INR (n s)) (INR i) ltac:(lra) Hii) as Ht.
+  pose proof (theta_rng (INR (n s)) (INR i) ltac:(lra) Hii) as Ht.
   destruct (hc_sizes s Ha Hb Hl) as [Sa [Sd Sc]].
   pose proof (K_a v d eta Hv Hd s Ha Hb Hl Hn1 Hn2 na nb l kk fa Ina Inb Inl
                 tx ty tz Htx Hkx Hty Hky Htz Hkz Hfa) as CA.

@@ -27,13 +27,6 @@ Open Scope R_scope.
 
 (** ** Real-arithmetic steps *)
 
-Lemma hc_t : forall m i, 1 <= m -> 0 <= i <= m -> 0 <= i / m <= 1.
-Proof.
-  intros m i Hm Hi. split.
-  - apply Rmult_le_pos; [lra | left; apply Rinv_0_lt_compat; lra].
-  - apply (Rmult_le_reg_r m); [lra|]. unfold Rdiv. rewrite Rmult_assoc, Rinv_l by lra. lra.
-Qed.
-
 Lemma hc_scale : forall t X, 0 <= t <= 1 -> Rabs (t * X) <= Rabs X.
 Proof.
   intros t X Ht. rewrite Rabs_mult, Rabs_pos_eq by lra.
@@ -41,10 +34,6 @@ Proof.
 Qed.
 
 (** ** The exact p_i, q_i and their sizes *)
-
-Lemma hc_dot_abs : forall a b : vec,
-  Rabs (dot a b) <= Rabs (vx a) * Rabs (vx b) + Rabs (vy a) * Rabs (vy b) + Rabs (vz a) * Rabs (vz b).
-Proof. intros a b. unfold dot. rewrite <- !Rabs_mult. apply tri3. Qed.
 
 Lemma hc_p_form : forall s x, (n s <> 0)%nat ->
   p s x = pa s + x / INR (n s) * dot (vsub (Nb s) (Na s)) (L s).
@@ -66,9 +55,9 @@ Lemma hc_p_le1 : forall s t, is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) -
 Proof.
   intros s t Ha Hb Hl Ht.
   assert (X : Rabs (dot (Na s) (L s)) <= 1)
-    by (eapply Rle_trans; [apply hc_dot_abs | apply unit_pair; assumption]).
+    by (eapply Rle_trans; [apply dot_abs | apply unit_pair; assumption]).
   assert (Y : Rabs (dot (Nb s) (L s)) <= 1)
-    by (eapply Rle_trans; [apply hc_dot_abs | apply unit_pair; assumption]).
+    by (eapply Rle_trans; [apply dot_abs | apply unit_pair; assumption]).
   replace (pa s + t * dot (vsub (Nb s) (Na s)) (L s))
     with ((1 - t) * dot (Na s) (L s) + t * dot (Nb s) (L s))
     by (unfold pa, dot, vsub; cbn [vx vy vz]; ring).
@@ -82,7 +71,7 @@ Lemma hc_q_le1 : forall s t, is_unit (Na s) -> is_unit (Nb s) -> 0 <= t <= 1 ->
 Proof.
   intros s t Ha Hb Ht.
   assert (X : Rabs (dot (Na s) (Nb s)) <= 1)
-    by (eapply Rle_trans; [apply hc_dot_abs | apply unit_pair; assumption]).
+    by (eapply Rle_trans; [apply dot_abs | apply unit_pair; assumption]).
   assert (E : dot (Na s) (Na s) + 2 * t * dot (vsub (Nb s) (Na s)) (Na s)
         + t * t * dot (vsub (Nb s) (Na s)) (vsub (Nb s) (Na s))
         = (1 - t) * (1 - t) * dot (Na s) (Na s) + t * t * dot (Nb s) (Nb s)
@@ -101,8 +90,8 @@ Lemma hc_sizes : forall s, is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
   Rabs (dot (vsub (Nb s) (Na s)) (vsub (Nb s) (Na s))) <= 4.
 Proof.
   intros s Ha Hb Hl. split; [|split].
-  - eapply Rle_trans; [apply hc_dot_abs | apply diff_pair; assumption].
-  - eapply Rle_trans; [apply hc_dot_abs | apply diff_pair; assumption].
+  - eapply Rle_trans; [apply dot_abs | apply diff_pair; assumption].
+  - eapply Rle_trans; [apply dot_abs | apply diff_pair; assumption].
   - pose proof (diff_sq _ _ Ha Hb).
     assert (0 <= dot (vsub (Nb s) (Na s)) (vsub (Nb s) (Na s))).
     { unfold dot. pose proof (Rle_0_sqr (vx (vsub (Nb s) (Na s)))).
@@ -336,7 +325,7 @@ Proof.
   pose proof (v_pos d eta Hd). pose proof (v_small d eta Hd).
   pose proof (e_pos v eta Hv). pose proof (e_small v eta Hv).
   pose proof (Rabs_pos a0). pose proof (Rabs_pos b0).
-  pose proof (hc_t m i ltac:(lra) Hi) as Ht.
+  pose proof (theta_rng m i ltac:(lra) Hi) as Ht.
   set (t := i / m) in *.
   set (D := b0 - a0) in *.
   pose proof (Rabs_pos D).
@@ -448,7 +437,7 @@ Proof.
   pose proof (v_pos d eta Hd). pose proof (v_small d eta Hd).
   pose proof (e_pos v eta Hv). pose proof (e_small v eta Hv).
   pose proof (Rabs_pos a0). pose proof (Rabs_pos b0).
-  pose proof (hc_t m i ltac:(lra) Hi) as Ht.
+  pose proof (theta_rng m i ltac:(lra) Hi) as Ht.
   set (t := i / m) in *.
   set (D := b0 - a0) in *.
   pose proof (Rabs_pos D).
@@ -687,7 +676,7 @@ Proof.
   assert (Hn0 : (n s <> 0)%nat) by lia.
   assert (Hm : 1 <= INR (n s) <= 16777216) by (split; [apply (le_INR 1); exact Hn1 | exact Hn2]).
   assert (Hii : 0 <= INR i <= INR (n s)) by (split; [apply pos_INR | apply le_INR; exact Hi]).
-  pose proof (hc_t (INR (n s)) (INR i) ltac:(lra) Hii) as Ht.
+  pose proof (theta_rng (INR (n s)) (INR i) ltac:(lra) Hii) as Ht.
   destruct (unit_bounded _ Ha) as [A1 [A2 A3]].
   destruct (unit_bounded _ Hb) as [B1 [B2 B3]].
   destruct Ina as [Ia1 [Ia2 Ia3]]. destruct Inb as [Ib1 [Ib2 Ib3]].
@@ -724,7 +713,7 @@ Proof.
   assert (Hn0 : (n s <> 0)%nat) by lia.
   assert (Hm : 1 <= INR (n s) <= 16777216) by (split; [apply (le_INR 1); exact Hn1 | exact Hn2]).
   assert (Hii : 0 <= INR i <= INR (n s)) by (split; [apply pos_INR | apply le_INR; exact Hi]).
-  pose proof (hc_t (INR (n s)) (INR i) ltac:(lra) Hii) as Ht.
+  pose proof (theta_rng (INR (n s)) (INR i) ltac:(lra) Hii) as Ht.
   destruct (unit_bounded _ Ha) as [A1 [A2 A3]].
   destruct (unit_bounded _ Hb) as [B1 [B2 B3]].
   destruct Ina as [Ia1 [Ia2 Ia3]]. destruct Inb as [Ib1 [Ib2 Ib3]].
@@ -1001,7 +990,7 @@ Proof.
   unfold ap1 in Hx, Hph.
   pose proof (v_pos v eta Hv). pose proof (v_small v eta Hv).
   pose proof (e_pos v eta Hv). pose proof (e_small v eta Hv).
-  pose proof (hc_t m i ltac:(lra) Hi) as Ht.
+  pose proof (theta_rng m i ltac:(lra) Hi) as Ht.
   assert (EA : fA * i = i / m * (m * fA)) by (field; lra).
   assert (B1 : Rabs (fA * i) <= Da + cA).
   { rewrite EA. eapply Rle_trans; [apply hc_scale; exact Ht|].
@@ -1042,7 +1031,7 @@ Proof.
   unfold ap1 in H1, H2, H3, H4.
   pose proof (v_pos v eta Hv). pose proof (v_small v eta Hv).
   pose proof (e_pos v eta Hv). pose proof (e_small v eta Hv).
-  pose proof (hc_t m i ltac:(lra) Hi) as Ht.
+  pose proof (theta_rng m i ltac:(lra) Hi) as Ht.
   set (t := i / m) in *.
   assert (Ei : i = t * m) by (unfold t; field; lra).
   assert (Me : m * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra).
@@ -1324,9 +1313,9 @@ Proof.
   assert (V1 : 0 <= v * (dd * dd)) by (apply Rmult_le_pos; lra).
   assert (D1 : 0 <= d * (dd * dd)) by (apply Rmult_le_pos; lra).
   assert (SL : Rabs (dot (vsub (Nb s) (Na s)) (L s)) <= dd)
-    by (eapply Rle_trans; [apply hc_dot_abs | apply cs_abs; [lra | exact HD | right; exact Hl]]).
+    by (eapply Rle_trans; [apply dot_abs | apply cs_abs; [lra | exact HD | right; exact Hl]]).
   assert (SA : Rabs (dot (vsub (Nb s) (Na s)) (Na s)) <= dd)
-    by (eapply Rle_trans; [apply hc_dot_abs | apply cs_abs; [lra | exact HD | right; exact Ha]]).
+    by (eapply Rle_trans; [apply dot_abs | apply cs_abs; [lra | exact HD | right; exact Ha]]).
   assert (SC : Rabs (dot (vsub (Nb s) (Na s)) (vsub (Nb s) (Na s))) <= dd * dd).
   { rewrite Rabs_pos_eq; [exact HD|]. unfold dot.
     pose proof (Rle_0_sqr (vx (vsub (Nb s) (Na s)))).
@@ -1336,13 +1325,13 @@ Proof.
   - rewrite hc_p_form by exact Hn0.
     eapply Rle_trans.
     + eapply (hp_abs_d v eta (INR (n s)) (INR i) fa fb _ _ _ _ _ _ dd); try eassumption; try lra.
-      apply hc_p_le1; try assumption. apply hc_t; lra.
+      apply hc_p_le1; try assumption. apply theta_rng; lra.
     + lra.
   - rewrite hc_q_form by exact Hn0.
     eapply Rle_trans.
     + eapply (hq_abs_d v eta (INR (n s)) (INR i) fc e fe _ _ _ _ _ _ _ _ _ _ (dd * dd) dd);
         try eassumption; try lra.
-      apply hc_q_le1; try assumption. apply hc_t; lra.
+      apply hc_q_le1; try assumption. apply theta_rng; lra.
     + lra.
 Qed.
 

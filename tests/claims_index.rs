@@ -507,3 +507,104 @@ fn the_checkers_phong_and_adaptive_constants_are_the_theorems() {
         assert!(e.contains(term), "eq24_delta_err: {term}");
     }
 }
+
+/// The standard models the checker applies (`tolerance::profile::arith`, and through it
+/// the operation graphs' `graphs::model`) are `proofs/Profiles.v`'s `fmodel`s: the unit
+/// `u`, `η`, and `κ` of an input, an addition and a product equal to the `mkModel`
+/// arguments, and its `k_div` covering what the checker lets a division by `n` (or by
+/// 2 under `shader`) be — one division, or a reciprocal then a product,
+/// `(1 + κ_div·u)(1 + κ_mul·u) − 1` — so an edit of either side fails here.
+#[test]
+fn the_checkers_models_are_the_theorems() {
+    use phong_approx::tolerance::graphs::model;
+    use phong_approx::tolerance::profile::{arith, Profile};
+    use phong_approx::Format;
+    let text = read("proofs/Profiles.v");
+    // `Definition NAME : fmodel := mkModel (bpow radix2 (-24)) (bpow radix2 (-150)) 1 1 1 (2 + / 1048576).`
+    let stated = |name: &str| -> [f64; 6] {
+        let at = text
+            .find(&format!("Definition {name} : fmodel :="))
+            .unwrap_or_else(|| panic!("no fmodel {name} in Profiles.v"));
+        let rest = &text[at..];
+        let def = &rest[..rest.find('.').unwrap()];
+        let args = def.split_once("mkModel").unwrap().1.trim();
+        fn pow(s: &str) -> (f64, &str) {
+            let s = s.trim_start().strip_prefix("(bpow radix2 (").unwrap();
+            let (e, rest) = s.split_once("))").unwrap();
+            // 2^e rounded up to an f64 (2^-1075, binary64's η, is below every f64 but 0).
+            let e: i32 = e.parse().unwrap();
+            (
+                if e < -1074 {
+                    f64::from_bits(1)
+                } else {
+                    2f64.powi(e)
+                },
+                rest,
+            )
+        }
+        let (u, rest) = pow(args);
+        let (eta, rest) = pow(rest);
+        let mut ks = Vec::new();
+        let mut rest = rest.trim();
+        while !rest.is_empty() {
+            if let Some(r) = rest.strip_prefix('(') {
+                let (inner, after) = r.split_once(')').unwrap();
+                let (a, b) = inner.split_once("+ /").unwrap();
+                ks.push(a.trim().parse::<f64>().unwrap() + 1.0 / b.trim().parse::<f64>().unwrap());
+                rest = after.trim();
+            } else {
+                let (k, after) = rest.split_once(' ').unwrap_or((rest, ""));
+                ks.push(k.parse().unwrap());
+                rest = after.trim();
+            }
+        }
+        assert_eq!(ks.len(), 4, "{name}: four κ");
+        [u, eta, ks[0], ks[1], ks[2], ks[3]]
+    };
+    let cases = [
+        ("ieee32", Profile::Ieee, Format::Binary32, "ieee32"),
+        ("ieee64", Profile::Ieee, Format::Binary64, "ieee64"),
+        (
+            "shader32",
+            Profile::Shader,
+            Format::Binary32,
+            "shader32_recip",
+        ),
+    ];
+    for (one, profile, format, either) in cases {
+        let a = arith(profile, format).unwrap();
+        let [u, eta, k_in, k_add, k_mul, _] = stated(one);
+        assert_eq!((a.u, a.eta), (u, eta), "{one}: u and η");
+        assert_eq!(
+            (a.input, a.add, a.mul),
+            (k_in, k_add, k_mul),
+            "{one}: κ of inputs, sums, products"
+        );
+        // A division by n either way, in the model whose theorems the checker applies.
+        let k_div = stated(either)[5];
+        let two_ways = a.div + a.mul + a.div * a.mul * a.u;
+        assert!(
+            k_div >= a.div && k_div >= two_ways,
+            "{either}: k_div {k_div} < {two_ways}"
+        );
+        assert!(
+            k_div - two_ways < 1e-5,
+            "{either}: k_div {k_div} is not the two ways' {two_ways}"
+        );
+        if profile == Profile::Shader {
+            // One 2.5-ulp division (shader32's k_div) and the halving as a division or a
+            // computed 1/2 and a product (shader32_recip's).
+            assert_eq!(stated("shader32")[5], a.div, "shader32: one division");
+            assert_eq!(a.half, a.div + a.mul, "shader: the halving either way");
+            assert!(k_div >= a.half + a.div * a.mul * a.u);
+        } else {
+            assert_eq!(a.half, 0.0, "ieee: halving is exact");
+        }
+        let g = model(profile, format).unwrap();
+        assert_eq!(
+            (g.u, g.eta, g.input, g.add, g.mul, g.div),
+            (a.u, a.eta, a.input, a.add, a.mul, a.div),
+            "{one}: the graph model is the standard model"
+        );
+    }
+}

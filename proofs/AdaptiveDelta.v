@@ -201,19 +201,6 @@ Proof.
   assert (v * Rabs x <= v * M) by (apply Rmult_le_compat_l; lra). lra.
 Qed.
 
-Lemma ad_tri5 : forall a b c d e,
-  Rabs (a + b + c + d + e) <= Rabs a + Rabs b + Rabs c + Rabs d + Rabs e.
-Proof.
-  intros. pose proof (Rabs_triang (a + b + c + d) e). pose proof (Rabs_triang (a + b + c) d).
-  pose proof (Rabs_triang (a + b) c). pose proof (Rabs_triang a b). lra.
-Qed.
-
-Lemma ad_tri6 : forall a b c d e f,
-  Rabs (a + b + c + d + e + f) <= Rabs a + Rabs b + Rabs c + Rabs d + Rabs e + Rabs f.
-Proof.
-  intros. pose proof (Rabs_triang (a + b + c + d + e) f). pose proof (ad_tri5 a b c d e). lra.
-Qed.
-
 (** The error of eq. 24's δ̂; the second bound when Gouraud's and corrected
     Euler's set-ups share p_a, p_b: their errors cancel in δ̂. *)
 Lemma ad_eq24_err :
@@ -322,7 +309,7 @@ Proof.
         by (unfold Rr; ring).
       replace (Rr + (pbc - pb) + - (pac - pa) + (pb - pa) - nr * (nr - 1) / 2 * dsh)
         with (Rr + (pbc - pb) + - (pac - pa) + (pb - pa) + - (nr * (nr - 1) / 2 * dsh)) by ring.
-      eapply Rle_trans; [apply ad_tri5|]. rewrite !Rabs_Ropp.
+      eapply Rle_trans; [apply tri5|]. rewrite !Rabs_Ropp.
       assert (Rabs (pb - pa) <= 2) by (unfold Rminus; eapply Rle_trans; [apply Rabs_triang|]; rewrite Rabs_Ropp; lra).
       unfold MB. lra. }
     rewrite E1, Rabs_mult, (Rabs_pos_eq th) by lra.
@@ -350,7 +337,7 @@ Proof.
         with ((a - j * dph) + (j * dph - th * (pb - pa))
               + - (e - (b + c)) + - (b - j * t0h) + - (c - (j * j - j) / 2 * dsh)
               + - (j * t0h + (j * j - j) / 2 * dsh - (th * (pb - pa) - dsx / 2 * j * lo))) by ring.
-      eapply Rle_trans; [apply ad_tri6|]. rewrite !Rabs_Ropp.
+      eapply Rle_trans; [apply tri6|]. rewrite !Rabs_Ropp.
       unfold E4. lra. }
     pose proof (abs_near _ _ _ F4) as Hae.
     assert (Hae' : Rabs (a - e) <= 1 / 4 + E4) by lra.
@@ -374,7 +361,7 @@ Proof.
     { replace ((a - e) - dsx / 2 * j * lo)
         with ((a - j * dph) + (j * dph - (j * t0h + (j * j - j) / 2 * dsh) - dsx / 2 * j * lo)
               + - (e - (b + c)) + - (b - j * t0h) + - (c - (j * j - j) / 2 * dsh)) by ring.
-      eapply Rle_trans; [apply ad_tri5|]. rewrite !Rabs_Ropp.
+      eapply Rle_trans; [apply tri5|]. rewrite !Rabs_Ropp.
       unfold E4s. lra. }
     pose proof (abs_near _ _ _ F4) as Hae.
     assert (Hae' : Rabs (a - e) <= 1 / 4 + E4s) by lra.

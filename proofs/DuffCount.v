@@ -179,10 +179,7 @@ Proof.
   replace (fe + Jr * g0 + Jr * (Jr - 1) / 2 * h - (ee + 2 * t * dd + t * t * c))
     with ((fe - ee) + Jr * (g0 - (fc + 2 * e)) + Jr * (Jr - 1) / 2 * (h - (fc + fc))
           + t * t * (mr * mr * fc - c) + 2 * t * (mr * e - dd)) by (unfold t; field; lra).
-  assert (T5 : forall a1 a2 a3 a4 a5 : R,
-    Rabs (a1 + a2 + a3 + a4 + a5) <= Rabs a1 + Rabs a2 + Rabs a3 + Rabs a4 + Rabs a5).
-  { intros. repeat (eapply Rle_trans; [apply Rabs_triang | apply Rplus_le_compat_r]); lra. }
-  eapply Rle_trans; [apply T5|].
+  eapply Rle_trans; [apply tri5|].
   assert (Je : Jr * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra).
   assert (Jq : Jr * (Jr - 1) / 2 <= 281474976710656) by nra.
   assert (Je2 : Jr * (Jr - 1) / 2 * eta <= 281474976710656 * eta)
@@ -279,12 +276,9 @@ Proof.
     assert (Eq : mr * (g0 + Jr * h)
                  = mr * (g0 - (fc + 2 * e)) + mr * Jr * (h - (fc + fc)) + (c * z + 2 * dd)
                    + z * (mr * mr * fc - c) + 2 * (mr * e - dd)) by (unfold z; field; lra).
-    assert (T : forall a1 a2 a3 a4 a5 : R,
-      Rabs (a1 + a2 + a3 + a4 + a5) <= Rabs a1 + Rabs a2 + Rabs a3 + Rabs a4 + Rabs a5).
-    { intros. repeat (eapply Rle_trans; [apply Rabs_triang | apply Rplus_le_compat_r]); lra. }
     assert (X : Rabs (mr * (g0 + Jr * h))
                 <= 4 + w * (12 + 3 * cC + 2 * cD) + 2 * cC + 2 * cD + mr * eta + mr * mr * eta).
-    { rewrite Eq. eapply Rle_trans; [apply T|]. lra. }
+    { rewrite Eq. eapply Rle_trans; [apply tri5|]. lra. }
     assert (EA : Rabs (g0 + Jr * h) = Rabs (mr * (g0 + Jr * h)) / mr).
     { rewrite Rabs_mult, (Rabs_pos_eq mr) by lra. field; lra. }
     rewrite EA. unfold Ms. apply div_helper; [lra|].

@@ -126,6 +126,12 @@ Lemma tri4 : forall w x y z, Rabs (w + x + y + z) <= Rabs w + Rabs x + Rabs y + 
 Proof.
   intros. eapply Rle_trans; [apply Rabs_triang|]. pose proof (tri3 w x y). lra.
 Qed.
+Lemma tri5 : forall a b c d e,
+  Rabs (a + b + c + d + e) <= Rabs a + Rabs b + Rabs c + Rabs d + Rabs e.
+Proof. intros. eapply Rle_trans; [apply Rabs_triang|]. pose proof (tri4 a b c d). lra. Qed.
+Lemma tri6 : forall a b c d e f,
+  Rabs (a + b + c + d + e + f) <= Rabs a + Rabs b + Rabs c + Rabs d + Rabs e + Rabs f.
+Proof. intros. eapply Rle_trans; [apply Rabs_triang|]. pose proof (tri5 a b c d e). lra. Qed.
 
 Lemma prod_err : forall X x Y y ex ey MY Mx,
   Rabs (X - x) <= ex -> Rabs (Y - y) <= ey -> Rabs Y <= MY -> Rabs x <= Mx ->
@@ -234,10 +240,7 @@ Proof.
     by (assert (v * v <= / 2097152 * v) by (apply Rmult_le_compat_r; lra); lra).
   assert (G5 : 0 <= v * S) by (apply Rmult_le_pos; lra).
   unfold wsum. fold S.
-  assert (Tr : forall a1 a2 a3 a4 : R,
-    Rabs (a1 + a2 + a3 + a4) <= Rabs a1 + Rabs a2 + Rabs a3 + Rabs a4).
-  { intros. repeat (eapply Rle_trans; [apply Rabs_triang | apply Rplus_le_compat_r]); lra. }
-  eapply Rle_trans; [apply Tr|]. unfold S in *. lra.
+  eapply Rle_trans; [apply tri4|]. unfold S in *. lra.
 Qed.
 
 Section Model.
@@ -315,10 +318,7 @@ Proof.
      (rnd (s + rnd x3) - (s + rnd x3)) + (s - (rnd x1 + rnd x2))
      + (rnd x1 - x1) + (rnd x2 - x2) + (rnd x3 - x3)) by ring.
   rewrite E.
-  assert (Tr : forall a1 a2 a3 a4 a5 : R,
-    Rabs (a1 + a2 + a3 + a4 + a5) <= Rabs a1 + Rabs a2 + Rabs a3 + Rabs a4 + Rabs a5).
-  { intros. repeat (eapply Rle_trans; [apply Rabs_triang | apply Rplus_le_compat_r]); lra. }
-  eapply Rle_trans; [apply Tr|].
+  eapply Rle_trans; [apply tri5|].
   assert (Hx1 : 0 <= Rabs x1) by apply Rabs_pos.
   assert (Hx2 : 0 <= Rabs x2) by apply Rabs_pos.
   assert (Hx3 : 0 <= Rabs x3) by apply Rabs_pos.

@@ -174,10 +174,7 @@ Proof.
     by nra.
   replace (y - (x1 + x2 + x3)) with
     ((y - (r + q3)) + (r - (q1 + q2)) + (q1 - x1) + (q2 - x2) + (q3 - x3)) by ring.
-  assert (T : forall a1 a2 a3 a4 a5 : R,
-    Rabs (a1 + a2 + a3 + a4 + a5) <= Rabs a1 + Rabs a2 + Rabs a3 + Rabs a4 + Rabs a5).
-  { intros. repeat (eapply Rle_trans; [apply Rabs_triang | apply Rplus_le_compat_r]); lra. }
-  eapply Rle_trans; [apply T|].
+  eapply Rle_trans; [apply tri5|].
   assert (Q1 : 0 <= ua * Rabs x3) by (apply Rmult_le_pos; lra).
   assert (Q2 : 0 <= ua * (Rabs x1 + Rabs x2)) by (apply Rmult_le_pos; lra).
   assert (Q3 : 0 <= um * (Rabs x1 + Rabs x2 + Rabs x3)) by (apply Rmult_le_pos; lra).
@@ -399,10 +396,7 @@ Proof.
                             + Rabs (vz a) * Rabs (vz b) + 12 * W + 3 * (W * W))).
   { apply Rmult_le_compat_l; [lra|]. lra. }
   unfold wsum0.
-  assert (Tr : forall a1 a2 a3 a4 : R,
-    Rabs (a1 + a2 + a3 + a4) <= Rabs a1 + Rabs a2 + Rabs a3 + Rabs a4).
-  { intros. repeat (eapply Rle_trans; [apply Rabs_triang | apply Rplus_le_compat_r]); lra. }
-  eapply Rle_trans; [apply Tr|]. lra.
+  eapply Rle_trans; [apply tri4|]. lra.
 Qed.
 
 End VA.

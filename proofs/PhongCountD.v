@@ -513,14 +513,11 @@ Proof.
   assert (EN : y1 + y2 - (a0 + t * D)
                = (y1 - w * ra) + (y2 - th * rb) + ((1 - t) * (ra - a0) + t * (rb - b0))
                  + (w - (1 - th)) * ra + (th - t) * (rb - ra)) by (unfold D; ring).
-  assert (T5 : forall a1 a2 a3 a4 a5 : R,
-    Rabs (a1 + a2 + a3 + a4 + a5) <= Rabs a1 + Rabs a2 + Rabs a3 + Rabs a4 + Rabs a5).
-  { intros. repeat (eapply Rle_trans; [apply Rabs_triang | apply Rplus_le_compat_r]); lra. }
   assert (HMa : v * Mj = v * ((1 - t) * Rabs a0) + v * (t * Rabs b0)) by (unfold Mj; ring).
   assert (F1 : Rabs (y1 + y2 - (a0 + t * D))
                <= 2 * (v * ((1 - t) * Rabs a0)) + v * (t * Rabs b0) + v * Mj + d * Rabs D
                   + / 65536 * v + / 262144 * d + 8 * eta).
-  { rewrite EN. eapply Rle_trans; [apply T5|]. lra. }
+  { rewrite EN. eapply Rle_trans; [apply tri5|]. lra. }
   assert (Nn : Rabs (a0 + t * D) <= Mj).
   { replace (a0 + t * D) with ((1 - t) * a0 + t * b0) by (unfold D; ring).
     eapply Rle_trans; [apply Rabs_triang|].
@@ -1059,13 +1056,10 @@ Proof.
   { replace (m * y1 + 2 * (m * e))
       with (t * c + 2 * dd + (m * y1 - t * (m * m * fC)) + (t * (m * m * fC) - t * c)
             + 2 * (m * e - dd)) by ring.
-    assert (T : forall a1 a2 a3 a4 a5 : R,
-      Rabs (a1 + a2 + a3 + a4 + a5) <= Rabs a1 + Rabs a2 + Rabs a3 + Rabs a4 + Rabs a5).
-    { intros. repeat (eapply Rle_trans; [apply Rabs_triang | apply Rplus_le_compat_r]); lra. }
     assert (Rabs (2 * dd) <= 2 * D1) by (rewrite Rabs_mult, (Rabs_pos_eq 2) by lra; lra).
     assert (Rabs (2 * (m * e - dd)) <= 2 * cD)
       by (rewrite Rabs_mult, (Rabs_pos_eq 2) by lra; lra).
-    eapply Rle_trans; [apply T|]. unfold S2b. lra. }
+    eapply Rle_trans; [apply tri5|]. unfold S2b. lra. }
   assert (F2 : Rabs (m * y2 - m * (y1 + 2 * e)) <= v * S2b + m * eta).
   { rewrite <- Rmult_minus_distr_l, Rabs_mult, (Rabs_pos_eq m) by lra.
     assert (m * Rabs (y2 - (y1 + 2 * e)) <= m * (v * Rabs (y1 + 2 * e) + eta))
@@ -1089,10 +1083,6 @@ Proof.
                  + t * (m * y1 - t * (m * m * fC)) + t * (t * (m * m * fC) - t * c)
                  + 2 * t * (m * e - dd) + (fE - ee)).
   { unfold Q. rewrite Ei. ring. }
-  assert (T6 : forall a1 a2 a3 a4 a5 a6 : R,
-    Rabs (a1 + a2 + a3 + a4 + a5 + a6)
-      <= Rabs a1 + Rabs a2 + Rabs a3 + Rabs a4 + Rabs a5 + Rabs a6).
-  { intros. repeat (eapply Rle_trans; [apply Rabs_triang | apply Rplus_le_compat_r]); lra. }
   assert (Rt1 : Rabs (t * (m * y2 - m * (y1 + 2 * e))) <= v * S2b + m * eta)
     by (eapply Rle_trans; [apply hc_scale; exact Ht | exact F2]).
   assert (Rt2 : Rabs (t * (m * y1 - t * (m * m * fC))) <= v * (C2 + cC) + m * eta)
@@ -1105,7 +1095,7 @@ Proof.
     rewrite Rabs_mult, (Rabs_pos_eq 2) by lra. lra. }
   assert (G : Rabs (y3 + fE - Q) <= cE + cC + 2 * cD
                 + (v * S2b + v * (S2b + / 100) + v * (C2 + cC) + 3 * 16777216 * eta)).
-  { rewrite Eq. eapply Rle_trans; [apply T6|]. lra. }
+  { rewrite Eq. eapply Rle_trans; [apply tri6|]. lra. }
   assert (S4 : Rabs (y3 + fE) <= 1005 / 1000).
   { replace (y3 + fE) with (Q + (y3 + fE - Q)) by ring.
     eapply Rle_trans; [apply Rabs_triang|]. lra. }

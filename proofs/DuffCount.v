@@ -62,8 +62,7 @@ Lemma dp_loop : forall (v w eta mr fa fb a b cA cB : R) (m i : nat) (P : nat -> 
   Rabs (P i - (b + INR i / mr * a)) <= cA + cB + 1001 / 1000 * INR i * w + / 1000000000 * v.
 Proof.
   intros v w eta mr fa fb a b cA cB m i P Hv Hw Hmr Hm Hmw HA HB HcA HcB Hc Hab HP0 Hst Hi.
-  pose proof (v_pos v eta Hv). pose proof (v_small v eta Hv).
-  pose proof (e_pos v eta Hv). pose proof (e_small v eta Hv).
+  small_facts Hv.
   assert (Me : mr * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra).
   assert (Gen : forall J : nat, (J <= m)%nat ->
             Rabs (fb + INR J * fa - (b + INR J / mr * a)) <= cA + cB).
@@ -114,8 +113,7 @@ Proof.
   intros v w eta mr fc e fe c dd ee cC cD cE g0 h J Hv Hw Hm HJ HC HD HE HcC HcD HcE Hc Hz
     Hg0 Hh.
   unfold ap1 in Hg0, Hh.
-  pose proof (v_pos v eta Hv). pose proof (v_small v eta Hv).
-  pose proof (e_pos v eta Hv). pose proof (e_small v eta Hv).
+  small_facts Hv.
   set (Jr := INR J) in *.
   assert (J0 : 0 <= Jr) by apply pos_INR.
   assert (J1 : 0 <= Jr * (Jr - 1)).
@@ -203,8 +201,7 @@ Lemma dq_loop : forall (v w eta mr fc e fe c dd ee cC cD cE h : R) (m i : nat)
 Proof.
   intros v w eta mr fc e fe c dd ee cC cD cE h m i Q G Hv Hw Hmr Hm Hmw HC HD HE HcC HcD HcE
     Hc Hz Hq Hg0 Hh HQ0 Hst Hi.
-  pose proof (v_pos v eta Hv). pose proof (v_small v eta Hv).
-  pose proof (e_pos v eta Hv). pose proof (e_small v eta Hv).
+  small_facts Hv.
   set (g0 := G O) in *.
   set (Ms := 40025 / 10000 / mr).
   set (Mp := 1002 / 1000).
@@ -374,8 +371,7 @@ Proof.
   intros v d w eta s na nb l kk tx ty tz fa fb fc e fe h P Q G Hv Hd Hw Ha Hb Hl
     Hn1 Hn2 Hnw Ina Inb Inl Htx Hkx Hty Hky Htz Hkz Hfa Hfb Hfc Hfe0 Hfe HP0 HQ0 Hg0 Hh Hst
     i Hi.
-  pose proof (v_pos v eta Hv). pose proof (v_small v eta Hv).
-  pose proof (v_pos d eta Hd). pose proof (v_small d eta Hd).
+  v_facts Hv. v_facts Hd.
   assert (Hn0 : (n s <> 0)%nat) by lia.
   assert (Hm : 1 <= INR (n s) <= 16777216) by (split; [apply (le_INR 1); exact Hn1 | exact Hn2]).
   assert (Hii : 0 <= INR i <= INR (n s)) by (split; [apply pos_INR | apply le_INR; exact Hi]).

@@ -314,6 +314,12 @@ Qed.
 
 End V.
 
+(** The size facts of a unit: 0 < v <= 2^-21 ([v_facts]), and of eta ([small_facts]). *)
+Ltac v_facts Hv := match type of Hv with small_ok ?v ?eta =>
+  pose proof (v_pos v eta Hv); pose proof (v_small v eta Hv) end.
+Ltac small_facts Hv := v_facts Hv; match type of Hv with small_ok ?v ?eta =>
+  pose proof (e_pos v eta Hv); pose proof (e_small v eta Hv) end.
+
 (** Weighted error of a computed dot product of two approximated vectors,
     with absolute weights: |lam ah_j - a_j| <= wa_j, |mu bh_j - b_j| <= wb_j,
     every weight at most W. *)
@@ -363,8 +369,7 @@ Proof.
   intros lam mu y W ah bh a b wa wb Hy Hl Hm Hlm [Ha1 [Ha2 Ha3]] [Hb1 [Hb2 Hb3]]
     [Ma1 [Ma2 Ma3]] [Mb1 [Mb2 Mb3]] [Wa1 [Wa2 Wa3]] [Wb1 [Wb2 Wb3]].
   rewrite Rmult_1_l in Ha1, Ha2, Ha3, Hb1, Hb2, Hb3.
-  pose proof (v_pos v eta Hv). pose proof (v_small v eta Hv).
-  pose proof (e_pos v eta Hv). pose proof (e_small v eta Hv).
+  small_facts Hv.
   destruct (comp_prod_abs _ _ _ _ _ _ W Ha1 Hb1 Ma1 Mb1 Wa1 Wb1) as [Px Qx].
   destruct (comp_prod_abs _ _ _ _ _ _ W Ha2 Hb2 Ma2 Mb2 Wa2 Wb2) as [Py Qy].
   destruct (comp_prod_abs _ _ _ _ _ _ W Ha3 Hb3 Ma3 Mb3 Wa3 Wb3) as [Pz Qz].

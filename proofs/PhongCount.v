@@ -55,8 +55,7 @@ Lemma horner_core : forall (v d eta : R) (s : span) (na nb l kk : vec)
 Proof.
   intros v d eta s na nb l kk tx ty tz fa fb fc e fe i x ph y1 y2 y3 qh Hv Hd Ha Hb Hl
     Hn1 Hn2 Hi Ina Inb Inl Htx Hkx Hty Hky Htz Hkz Hfa Hfb Hfc Hfe0 Hfe Hx Hph Hy1 Hy2 Hy3 Hqh.
-  pose proof (v_pos v eta Hv). pose proof (v_small v eta Hv).
-  pose proof (v_pos d eta Hd). pose proof (v_small d eta Hd).
+  v_facts Hv. v_facts Hd.
   assert (Hn0 : (n s <> 0)%nat) by lia.
   assert (Hm : 1 <= INR (n s) <= 16777216) by (split; [apply (le_INR 1); exact Hn1 | exact Hn2]).
   assert (Hii : 0 <= INR i <= INR (n s)) by (split; [apply pos_INR | apply le_INR; exact Hi]).

@@ -321,9 +321,7 @@ Lemma pd_comp : forall v d eta m i a0 b0 ra rb tt kj z nj,
            + / 32768).
 Proof.
   intros v d eta m i a0 b0 ra rb tt kj z nj Hv Hd Hm Hi Ha0 Hb0 Hra Hrb Htt Hkj Hz Hnj.
-  pose proof (v_pos v eta Hv). pose proof (v_small v eta Hv).
-  pose proof (v_pos d eta Hd). pose proof (v_small d eta Hd).
-  pose proof (e_pos v eta Hv). pose proof (e_small v eta Hv).
+  small_facts Hv. v_facts Hd.
   pose proof (Rabs_pos a0). pose proof (Rabs_pos b0).
   pose proof (theta_rng m i ltac:(lra) Hi) as Ht.
   set (t := i / m) in *.
@@ -433,9 +431,7 @@ Lemma ld_comp : forall v d eta m i a0 b0 ra rb th w y1 y2 nj,
            + / 32768).
 Proof.
   intros v d eta m i a0 b0 ra rb th w y1 y2 nj Hv Hd Hm Hi Ha0 Hb0 Hra Hrb Hth Hw Hy1 Hy2 Hnj.
-  pose proof (v_pos v eta Hv). pose proof (v_small v eta Hv).
-  pose proof (v_pos d eta Hd). pose proof (v_small d eta Hd).
-  pose proof (e_pos v eta Hv). pose proof (e_small v eta Hv).
+  small_facts Hv. v_facts Hd.
   pose proof (Rabs_pos a0). pose proof (Rabs_pos b0).
   pose proof (theta_rng m i ltac:(lra) Hi) as Ht.
   set (t := i / m) in *.
@@ -985,8 +981,7 @@ Lemma hp_abs_d : forall v eta m i fA fB a b cA cB x ph Da,
 Proof.
   intros v eta m i fA fB a b cA cB x ph Da Hv Hm Hi HA HB HcA HcB HDa Ha Hp Hx Hph.
   unfold ap1 in Hx, Hph.
-  pose proof (v_pos v eta Hv). pose proof (v_small v eta Hv).
-  pose proof (e_pos v eta Hv). pose proof (e_small v eta Hv).
+  small_facts Hv.
   pose proof (theta_rng m i ltac:(lra) Hi) as Ht.
   assert (EA : fA * i = i / m * (m * fA)) by (field; lra).
   assert (B1 : Rabs (fA * i) <= Da + cA).
@@ -1026,8 +1021,7 @@ Proof.
   intros v eta m i fC e fE c dd ee cC cD cE y1 y2 y3 qh C2 D1 Hv Hm Hi HC HD HE HcC HcD HcE
     HC2 HD1 Hc Hd Hq H1 H2 H3 H4.
   unfold ap1 in H1, H2, H3, H4.
-  pose proof (v_pos v eta Hv). pose proof (v_small v eta Hv).
-  pose proof (e_pos v eta Hv). pose proof (e_small v eta Hv).
+  small_facts Hv.
   pose proof (theta_rng m i ltac:(lra) Hi) as Ht.
   set (t := i / m) in *.
   assert (Ei : i = t * m) by (unfold t; field; lra).
@@ -1117,9 +1111,7 @@ Lemma hk_comp : forall v d eta m a0 b0 ra rb tt kj,
     + d * (1001 / 1000 * Rabs (b0 - a0) + / 32768).
 Proof.
   intros v d eta m a0 b0 ra rb tt kj Hv Hd Hm Ha0 Hb0 Hra Hrb Htt Hkj.
-  pose proof (v_pos v eta Hv). pose proof (v_small v eta Hv).
-  pose proof (v_pos d eta Hd). pose proof (v_small d eta Hd).
-  pose proof (e_pos v eta Hv). pose proof (e_small v eta Hv).
+  small_facts Hv. v_facts Hd.
   pose proof (Rabs_pos a0). pose proof (Rabs_pos b0).
   set (D := b0 - a0) in *.
   pose proof (Rabs_pos D).
@@ -1277,8 +1269,7 @@ Lemma horner_core_d : forall (v d eta dd : R) (s : span) (na nb l kk : vec)
 Proof.
   intros v d eta dd s na nb l kk tx ty tz fa fb fc e fe i x ph y1 y2 y3 qh Hv Hd HDd Ha Hb Hl
     Hn1 Hn2 Hi Ina Inb Inl Htx Hkx Hty Hky Htz Hkz Hfa Hfb Hfc Hfe0 Hfe Hx Hph Hy1 Hy2 Hy3 Hqh.
-  pose proof (v_pos v eta Hv). pose proof (v_small v eta Hv).
-  pose proof (v_pos d eta Hd). pose proof (v_small d eta Hd).
+  v_facts Hv. v_facts Hd.
   pose proof HDd as [Hdd HD].
   assert (Hn0 : (n s <> 0)%nat) by lia.
   assert (Hm : 1 <= INR (n s) <= 16777216) by (split; [apply (le_INR 1); exact Hn1 | exact Hn2]).

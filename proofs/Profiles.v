@@ -659,9 +659,7 @@ Lemma dot_w : forall (v d eta Sb W m lam mu y Cv Cd : R) (ah bh a0 b0 wa1 wa2 wb
 Proof.
   intros v d eta Sb W m lam mu y Cv Cd ah bh a0 b0 wa1 wa2 wb1 wb2 Hv Hdv HW Hm Hy Hl Hmu Hlm
     HA HB Ba Bb W1 W2 W3 W4 HS HS12 C1 C2.
-  pose proof (v_pos v eta Hv). pose proof (v_small v eta Hv).
-  pose proof (v_pos d eta Hdv). pose proof (v_small d eta Hdv).
-  pose proof (e_pos v eta Hv). pose proof (e_small v eta Hv).
+  small_facts Hv. v_facts Hdv.
   assert (WL : forall w1 w2, wle w1 W -> wle w2 W -> wle (vlin v d w1 w2) (W * (v + d))).
   { intros w1 w2 [X1 [X2 X3]] [Y1 [Y2 Y3]]. unfold wle, vlin; cbn [vx vy vz].
     repeat split; nra. }
@@ -783,8 +781,7 @@ Lemma K_comp : forall (m a0 b0 ra rb t kj : R), 1 <= m <= 16777216 -> Rabs a0 <=
   + d * (1001 / 1000 * (Rabs a0 + Rabs b0) + / 268435456).
 Proof.
   intros m a0 b0 ra rb t kj Hm Ha0 Hb0 Hra Hrb Ht Hkj.
-  pose proof (v_pos v eta Hv). pose proof (v_small v eta Hv).
-  pose proof (v_pos d eta Hdv). pose proof (v_small d eta Hdv).
+  v_facts Hv. v_facts Hdv.
   pose proof (Rabs_pos a0). pose proof (Rabs_pos b0).
   pose proof (FloatModelK.in_comp v eta Hv _ _ Hra) as F1.
   pose proof (FloatModelK.in_comp v eta Hv _ _ Hrb) as F2.

@@ -430,3 +430,93 @@ fn the_tests_are_a_table_of_contents() {
         .collect();
     assert!(skips.is_empty(), "CI skips tests by name: {skips:?}");
 }
+
+/// ARCHITECTURE.md is skimmed, and its checklists are true: every section is one screen
+/// (at most 60 lines), and in the "Adding …" sections every file or folder named in
+/// backticks exists (`NAME` stands for the new item's name) and every test named as
+/// `module::test` (or a bare test name in parentheses after a place) is a `#[test]`
+/// of `tests/`.
+#[test]
+fn the_architecture_checklists_name_real_places() {
+    let root = src().parent().unwrap().to_path_buf();
+    let text = fs::read_to_string(root.join("ARCHITECTURE.md")).unwrap();
+    let mut tests = BTreeSet::new();
+    let mut modules = BTreeSet::new();
+    for p in rs_files(&root.join("tests")) {
+        modules.insert(p.file_stem().unwrap().to_string_lossy().into_owned());
+        let src = fs::read_to_string(&p).unwrap();
+        let lines: Vec<&str> = src.lines().collect();
+        for (i, l) in lines.iter().enumerate() {
+            if l.trim() == "#[test]" {
+                if let Some(f) = lines[i + 1..]
+                    .iter()
+                    .map(|l| l.trim())
+                    .find(|l| !l.starts_with("#["))
+                {
+                    if let Some(name) = f.strip_prefix("fn ") {
+                        tests.insert(name.split('(').next().unwrap().to_string());
+                    }
+                }
+            }
+        }
+    }
+    assert!(tests.len() > 300, "{} tests found", tests.len());
+    let sections: Vec<&str> = text.split("\n## ").collect();
+    let mut checked = (0, 0);
+    for s in &sections {
+        let title = s.lines().next().unwrap_or("");
+        let n = s.lines().count();
+        assert!(
+            n <= 60,
+            "ARCHITECTURE.md, section {title:?}: {n} lines (one screen: 60)"
+        );
+        if !title.starts_with("Adding") {
+            continue;
+        }
+        for word in s.split('`').skip(1).step_by(2) {
+            let w = word.trim();
+            let is_path = (w.starts_with("src/")
+                || w.starts_with("tests/")
+                || w.starts_with("proofs/")
+                || w.starts_with("docs/")
+                || w.starts_with("benches/")
+                || w == "README.md")
+                && !w.contains(' ');
+            if is_path {
+                if w.contains("NAME") {
+                    let dir = &w[..w.rfind('/').unwrap()];
+                    assert!(
+                        root.join(dir).is_dir(),
+                        "ARCHITECTURE.md, {title:?}: no folder {dir}"
+                    );
+                } else {
+                    assert!(
+                        root.join(w).exists(),
+                        "ARCHITECTURE.md, {title:?}: no file {w}"
+                    );
+                }
+                checked.0 += 1;
+            } else if let Some((module, name)) = w.rsplit_once("::") {
+                let is_test_name = modules.contains(module)
+                    && name.len() > 12
+                    && name
+                        .chars()
+                        .all(|c| c.is_ascii_lowercase() || c.is_ascii_digit() || c == '_');
+                if is_test_name && !name.ends_with('_') {
+                    let name = name.trim_end_matches("_f32");
+                    assert!(
+                        tests.contains(name) || tests.contains(&format!("{name}_f32")),
+                        "ARCHITECTURE.md, {title:?}: no test {w}"
+                    );
+                    checked.1 += 1;
+                }
+            } else if w.starts_with("the_") && tests.contains(w) {
+                checked.1 += 1;
+            }
+        }
+    }
+    assert!(
+        checked.0 >= 30 && checked.1 >= 8,
+        "{checked:?} places and tests checked"
+    );
+}

@@ -641,335 +641,11 @@ Proof.
     + unfold wsum0; cbn [vx vy vz]. lra.
 Qed.
 
-(** ** The per-pixel normal and the lerp *)
-
+(** The span's distance: dd >= |Nb - Na|. *)
 Definition Ddist (s : span) (dd : R) : Prop :=
   0 <= dd <= 2 /\ dot (vsub (Nb s) (Na s)) (vsub (Nb s) (Na s)) <= dd * dd.
 
-Lemma pd_core : forall (v d eta dd : R) (s : span) (na nb l kk nh : vec) (i : nat)
-  (tx ty tz zx zy zz ph qh : R),
-  small_ok v eta -> small_ok d eta -> Ddist s dd ->
-  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
-  (1 <= n s)%nat -> INR (n s) <= 16777216 -> (i <= n s)%nat ->
-  vap1 v eta na (Na s) -> vap1 v eta nb (Nb s) -> vap1 v eta l (L s) ->
-  ap1 v eta tx (vx nb - vx na) -> ap1 d eta (vx kk) (tx / INR (n s)) ->
-  ap1 v eta ty (vy nb - vy na) -> ap1 d eta (vy kk) (ty / INR (n s)) ->
-  ap1 v eta tz (vz nb - vz na) -> ap1 d eta (vz kk) (tz / INR (n s)) ->
-  ap1 v eta zx (INR i * vx kk) -> ap1 v eta (vx nh) (vx na + zx) ->
-  ap1 v eta zy (INR i * vy kk) -> ap1 v eta (vy nh) (vy na + zy) ->
-  ap1 v eta zz (INR i * vz kk) -> ap1 v eta (vz nh) (vz na + zz) ->
-  fdot_rel v v eta nh l ph -> fdot_rel v v eta nh nh qh ->
-  Rabs (ph - p s (INR i)) <= (2 + 2001 / 1000 * dd + 402 / 100) * v
-                             + (1001 / 1000 * dd + 2 / 100) * d /\
-  Rabs (qh - q s (INR i)) <= (2 * 2 + 2 * (2001 / 1000) * dd + 302 / 100) * v
-                             + (2 * (1001 / 1000) * dd + 2 / 100) * d.
-Proof.
-  intros v d eta dd s na nb l kk nh i tx ty tz zx zy zz ph qh Hv Hd [Hdd HD] Ha Hb Hl Hn1 Hn2 Hi
-    Ina Inb Inl Htx Hkx Hty Hky Htz Hkz Hzx Hnx Hzy Hny Hzz Hnz Hp Hq.
-  assert (Hn0 : (n s <> 0)%nat) by lia.
-  assert (Hm : 1 <= INR (n s) <= 16777216) by (split; [apply (le_INR 1); exact Hn1 | exact Hn2]).
-  assert (Hii : 0 <= INR i <= INR (n s)) by (split; [apply pos_INR | apply le_INR; exact Hi]).
-  pose proof (theta_rng (INR (n s)) (INR i) ltac:(lra) Hii) as Ht.
-  destruct (unit_bounded _ Ha) as [A1 [A2 A3]].
-  destruct (unit_bounded _ Hb) as [B1 [B2 B3]].
-  destruct Ina as [Ia1 [Ia2 Ia3]]. destruct Inb as [Ib1 [Ib2 Ib3]].
-  assert (VN : vapprox 1 1 nh (nrm s (INR i / INR (n s)))
-                 (vlin v d (wM (Na s) (Nb s) (INR i / INR (n s)) 2 (2001 / 1000))
-                           (wM (Na s) (Nb s) (INR i / INR (n s)) 0 (1001 / 1000)))).
-  { unfold vapprox, vlin, wM, nrm, vadd, vscale, vsub; cbn [vx vy vz]. rewrite !Rmult_1_l.
-    repeat split; eapply pd_comp; eassumption. }
-  rewrite pp_p_form, pp_q_form by exact Hn0.
-  exact (pd_tail v d eta s nh l _ ph qh dd 2 (2001 / 1000) (1001 / 1000) Hv Hd Ha Hb Hl Ht (proj1 Hdd) HD
-           ltac:(lra) ltac:(lra) ltac:(lra) Inl VN Hp Hq).
-Qed.
-
-Lemma ld_core : forall (v d eta dd : R) (s : span) (na nb l nh : vec) (i : nat)
-  (th wx wy wz ax ay az bx by_ bz ph qh : R),
-  small_ok v eta -> small_ok d eta -> Ddist s dd ->
-  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
-  (1 <= n s)%nat -> INR (n s) <= 16777216 -> (i <= n s)%nat ->
-  vap1 v eta na (Na s) -> vap1 v eta nb (Nb s) -> vap1 v eta l (L s) ->
-  ap1 d eta th (INR i / INR (n s)) ->
-  fdot_rel v v eta nh l ph -> fdot_rel v v eta nh nh qh ->
-  ap1 v eta (vx nh) (ax + bx) -> ap1 v eta bx (th * vx nb) -> ap1 v eta ax (wx * vx na) ->
-  ap1 v eta wx (1 - th) ->
-  ap1 v eta (vy nh) (ay + by_) -> ap1 v eta by_ (th * vy nb) -> ap1 v eta ay (wy * vy na) ->
-  ap1 v eta wy (1 - th) ->
-  ap1 v eta (vz nh) (az + bz) -> ap1 v eta bz (th * vz nb) -> ap1 v eta az (wz * vz na) ->
-  ap1 v eta wz (1 - th) ->
-  Rabs (ph - p s (INR i)) <= (4 + 0 * dd + 402 / 100) * v + (1001 / 1000 * dd + 2 / 100) * d /\
-  Rabs (qh - q s (INR i)) <= (2 * 4 + 2 * 0 * dd + 302 / 100) * v
-                             + (2 * (1001 / 1000) * dd + 2 / 100) * d.
-Proof.
-  intros v d eta dd s na nb l nh i th wx wy wz ax ay az bx by_ bz ph qh Hv Hd [Hdd HD]
-    Ha Hb Hl Hn1 Hn2 Hi Ina Inb Inl Hth Hp Hq Hnx Hbx Hax Hwx Hny Hby Hay Hwy Hnz Hbz Haz Hwz.
-  assert (Hn0 : (n s <> 0)%nat) by lia.
-  assert (Hm : 1 <= INR (n s) <= 16777216) by (split; [apply (le_INR 1); exact Hn1 | exact Hn2]).
-  assert (Hii : 0 <= INR i <= INR (n s)) by (split; [apply pos_INR | apply le_INR; exact Hi]).
-  pose proof (theta_rng (INR (n s)) (INR i) ltac:(lra) Hii) as Ht.
-  destruct (unit_bounded _ Ha) as [A1 [A2 A3]].
-  destruct (unit_bounded _ Hb) as [B1 [B2 B3]].
-  destruct Ina as [Ia1 [Ia2 Ia3]]. destruct Inb as [Ib1 [Ib2 Ib3]].
-  assert (VN : vapprox 1 1 nh (nrm s (INR i / INR (n s)))
-                 (vlin v d (wM (Na s) (Nb s) (INR i / INR (n s)) 4 0)
-                           (wM (Na s) (Nb s) (INR i / INR (n s)) 0 (1001 / 1000)))).
-  { unfold vapprox, vlin, wM, nrm, vadd, vscale, vsub; cbn [vx vy vz]. rewrite !Rmult_1_l.
-    repeat split.
-    - exact (ld_comp v d eta _ _ _ _ _ _ _ _ _ _ _ Hv Hd Hm Hii A1 B1 Ia1 Ib1 Hth Hwx Hax Hbx Hnx).
-    - exact (ld_comp v d eta _ _ _ _ _ _ _ _ _ _ _ Hv Hd Hm Hii A2 B2 Ia2 Ib2 Hth Hwy Hay Hby Hny).
-    - exact (ld_comp v d eta _ _ _ _ _ _ _ _ _ _ _ Hv Hd Hm Hii A3 B3 Ia3 Ib3 Hth Hwz Haz Hbz Hnz). }
-  rewrite pp_p_form, pp_q_form by exact Hn0.
-  exact (pd_tail v d eta s nh l _ ph qh dd 4 0 (1001 / 1000) Hv Hd Ha Hb Hl Ht (proj1 Hdd) HD
-           ltac:(lra) ltac:(lra) ltac:(lra) Inl VN Hp Hq).
-Qed.
-
-(** ** With the model's operations *)
-
-Lemma dd_fin : forall (u K1 kd dd A0 A1 B0 B1 a0 a1 b0 b1 E : R),
-  0 < u -> 1 <= K1 -> 1 <= kd -> 0 <= dd -> A0 <= a0 -> A1 <= a1 -> B0 <= b0 -> B1 <= b1 ->
-  0 <= A1 -> 0 <= B1 ->
-  E <= (A0 + A1 * dd) * (K1 * u) + (B1 * dd + B0) * (kd * u) ->
-  E <= ((a0 + a1 * dd) * K1 + (b0 + b1 * dd) * kd) * u.
-Proof.
-  intros u K1 kd dd A0 A1 B0 B1 a0 a1 b0 b1 E Hu HK Hk Hd H1 H2 H3 H4 H5 H6 HE.
-  eapply Rle_trans; [exact HE|].
-  assert (P1 : 0 <= K1 * u) by (apply Rmult_le_pos; lra).
-  assert (P2 : 0 <= kd * u) by (apply Rmult_le_pos; lra).
-  assert (Q1 : (A0 + A1 * dd) <= (a0 + a1 * dd)).
-  { assert (A1 * dd <= a1 * dd) by (apply Rmult_le_compat_r; lra). lra. }
-  assert (Q2 : (B1 * dd + B0) <= (b0 + b1 * dd)).
-  { assert (B1 * dd <= b1 * dd) by (apply Rmult_le_compat_r; lra). lra. }
-  assert ((A0 + A1 * dd) * (K1 * u) <= (a0 + a1 * dd) * (K1 * u))
-    by (apply Rmult_le_compat_r; lra).
-  assert ((B1 * dd + B0) * (kd * u) <= (b0 + b1 * dd) * (kd * u))
-    by (apply Rmult_le_compat_r; lra).
-  lra.
-Qed.
-
-Lemma dd_fin2 : forall (u K1 kd dd A0 A1 A2 B0 B1 B2 a0 a1 a2 b0 b1 b2 E : R),
-  0 < u -> 1 <= K1 -> 1 <= kd -> 0 <= dd -> A0 <= a0 -> A1 <= a1 -> A2 <= a2 ->
-  B0 <= b0 -> B1 <= b1 -> B2 <= b2 ->
-  E <= (A0 + A1 * dd + A2 * dd * dd) * (K1 * u) + (B0 + B1 * dd + B2 * dd * dd) * (kd * u) ->
-  E <= ((a0 + a1 * dd + a2 * dd * dd) * K1 + (b0 + b1 * dd + b2 * dd * dd) * kd) * u.
-Proof.
-  intros u K1 kd dd A0 A1 A2 B0 B1 B2 a0 a1 a2 b0 b1 b2 E Hu HK Hk Hd H1 H2 H3 H4 H5 H6 HE.
-  eapply Rle_trans; [exact HE|].
-  assert (P1 : 0 <= K1 * u) by (apply Rmult_le_pos; lra).
-  assert (P2 : 0 <= kd * u) by (apply Rmult_le_pos; lra).
-  assert (D2 : 0 <= dd * dd) by (apply Rmult_le_pos; lra).
-  assert (Q1 : A0 + A1 * dd + A2 * dd * dd <= a0 + a1 * dd + a2 * dd * dd).
-  { assert (A1 * dd <= a1 * dd) by (apply Rmult_le_compat_r; lra).
-    assert (A2 * (dd * dd) <= a2 * (dd * dd)) by (apply Rmult_le_compat_r; lra). nra. }
-  assert (Q2 : B0 + B1 * dd + B2 * dd * dd <= b0 + b1 * dd + b2 * dd * dd).
-  { assert (B1 * dd <= b1 * dd) by (apply Rmult_le_compat_r; lra).
-    assert (B2 * (dd * dd) <= b2 * (dd * dd)) by (apply Rmult_le_compat_r; lra). nra. }
-  assert ((A0 + A1 * dd + A2 * dd * dd) * (K1 * u) <= (a0 + a1 * dd + a2 * dd * dd) * (K1 * u))
-    by (apply Rmult_le_compat_r; lra).
-  assert ((B0 + B1 * dd + B2 * dd * dd) * (kd * u) <= (b0 + b1 * dd + b2 * dd * dd) * (kd * u))
-    by (apply Rmult_le_compat_r; lra).
-  lra.
-Qed.
-
-(** Every input, addition, product and dot product of the model within unit
-    K1 u ([hm_vap], [hm_ap], [hm_fdot]). *)
-Ltac hm_lift M K1 :=
-  let Hu := fresh "Hu" in
-  assert (Hu : 0 < m_u M) by (eapply model_u; eassumption);
-  repeat match goal with
-  | Hk : k_in M <= K1, H : vap M _ _ |- _ => apply (hm_vap M K1 _ _ Hu Hk) in H
-  | Hk : k_add M <= K1, H : ap_add M _ _ |- _ => apply (hm_ap M _ K1 _ _ Hu Hk) in H
-  | Hk : k_mul M <= K1, H : ap_mul M _ _ |- _ => apply (hm_ap M _ K1 _ _ Hu Hk) in H
-  | Ha : k_add M <= K1, Hm : k_mul M <= K1, H : fdot_ok M _ _ _ |- _ =>
-      apply (hm_fdot M K1 _ _ _ Hu Ha Hm) in H
-  end.
-
-Lemma conj_le : forall a b x y x' y' : R,
-  a <= x' /\ b <= y' -> x' <= x -> y' <= y -> a <= x /\ b <= y.
-Proof. intros a b x y x' y' [H1 H2] H3 H4. split; lra. Qed.
-
-(** A model lemma from its [core] on units v = K1 u, d = kd u: the relations
-    taken apart, the operations lifted to unit K1 u; left: the two bounds of
-    [core] against the lemma's. *)
-Ltac hm_model core :=
-  intros; unfold horner_ok, pixel_ok, ncomp_ok, lerp_ok, lcomp_ok in *;
-  repeat match goal with
-  | H : exists _, _ |- _ => destruct H
-  | H : _ /\ _ |- _ => destruct H
-  end;
-  try match goal with H : Ddist _ ?dd |- _ => assert (0 <= dd <= 2) by apply (proj1 H) end;
-  match goal with
-  | HM : model_ok ?M ?K, Hin : k_in ?M <= ?K1, Hk : ?kd * m_u ?M <= / 2097152 |- _ =>
-      pose proof (hm_small M K K1 HM ltac:(split; assumption));
-      pose proof (hm_small_d M K kd HM ltac:(assumption) Hk);
-      hm_lift M K1;
-      eapply conj_le; [eapply (core (K1 * m_u M) (kd * m_u M) (m_eta M)); try eassumption | |]
-  end.
-
-Lemma pixel_model_d : forall (M : fmodel) (K K1 kd dd : R), model_ok M K ->
-  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 ->
-  1 <= kd -> kd * m_u M <= / 2097152 ->
-  forall (s : span) (na nb l kk : vec) (i : nat) (ph qh : R) (tx ty tz : R),
-  Ddist s dd -> is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
-  (1 <= n s)%nat -> INR (n s) <= 16777216 -> (i <= n s)%nat ->
-  vap M na (Na s) -> vap M nb (Nb s) -> vap M l (L s) ->
-  ap_add M tx (vx nb - vx na) -> ap1 (kd * m_u M) (m_eta M) (vx kk) (tx / INR (n s)) ->
-  ap_add M ty (vy nb - vy na) -> ap1 (kd * m_u M) (m_eta M) (vy kk) (ty / INR (n s)) ->
-  ap_add M tz (vz nb - vz na) -> ap1 (kd * m_u M) (m_eta M) (vz kk) (tz / INR (n s)) ->
-  pixel_ok M i na l kk ph qh ->
-  Rabs (ph - p s (INR i)) <= ((602 / 100 + 201 / 100 * dd) * K1
-                              + (2 / 100 + 101 / 100 * dd) * kd) * m_u M /\
-  Rabs (qh - q s (INR i)) <= ((702 / 100 + 401 / 100 * dd + 0 * dd * dd) * K1
-                              + (2 / 100 + 201 / 100 * dd + 0 * dd * dd) * kd) * m_u M.
-Proof.
-  hm_model pd_core.
-  - eapply (dd_fin _ K1 kd dd (2 + 402 / 100) (2001 / 1000) (2 / 100) (1001 / 1000));
-      try lra; right; ring.
-  - eapply (dd_fin2 _ K1 kd dd (2 * 2 + 302 / 100) (2 * (2001 / 1000)) 0 (2 / 100)
-      (2 * (1001 / 1000)) 0); try lra; right; ring.
-Qed.
-
-Lemma lerp_model_d : forall (M : fmodel) (K K1 kd dd : R), model_ok M K ->
-  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 ->
-  1 <= kd -> kd * m_u M <= / 2097152 ->
-  forall (s : span) (na nb l : vec) (i : nat) (th ph qh : R),
-  Ddist s dd -> is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
-  (1 <= n s)%nat -> INR (n s) <= 16777216 -> (i <= n s)%nat ->
-  vap M na (Na s) -> vap M nb (Nb s) -> vap M l (L s) ->
-  ap1 (kd * m_u M) (m_eta M) th (INR i / INR (n s)) ->
-  lerp_ok M th na nb l ph qh ->
-  Rabs (ph - p s (INR i)) <= ((802 / 100 + 0 * dd) * K1
-                              + (2 / 100 + 101 / 100 * dd) * kd) * m_u M /\
-  Rabs (qh - q s (INR i)) <= ((1102 / 100 + 0 * dd + 0 * dd * dd) * K1
-                              + (2 / 100 + 201 / 100 * dd + 0 * dd * dd) * kd) * m_u M.
-Proof.
-  hm_model ld_core.
-  - eapply (dd_fin _ K1 kd dd (4 + 402 / 100) 0 (2 / 100) (1001 / 1000)); try lra; right; ring.
-  - eapply (dd_fin2 _ K1 kd dd (2 * 4 + 302 / 100) 0 0 (2 / 100)
-      (2 * (1001 / 1000)) 0); try lra; right; ring.
-Qed.
-
-(** The reciprocal's unit kd = (1 + 2^-20) k_mul + k_div + 2^-36 as in PhongCount.v. *)
-Lemma recip_setup : forall (M : fmodel) (K : R), model_ok M K ->
-  ((1 + / 1048576) * k_mul M + k_div M + / 68719476736) * m_u M <= / 2097152 ->
-  1 <= k_div M ->
-  (forall (m x r y : R), 1 <= m <= 16777216 -> ap_div M r (1 / m) -> ap_mul M y (x * r) ->
-     ap1 (((1 + / 1048576) * k_mul M + k_div M + / 68719476736) * m_u M) (m_eta M) y (x / m)) /\
-  1 <= (1 + / 1048576) * k_mul M + k_div M + / 68719476736.
-Proof.
-  intros M K HM Hkd Hdiv.
-  pose proof HM as (U1 & U2 & U3 & _ & _ & [Km0 _] & [Kd0 Kd1] & K8 & K9).
-  assert (Hu : 0 < m_u M <= / 2097152).
-  { split; [exact U1|]. assert (m_u M <= K * m_u M) by (rewrite <- (Rmult_1_l (m_u M)) at 1;
-      apply Rmult_le_compat_r; lra). lra. }
-  assert (Hdu : k_div M * m_u M <= / 2097152).
-  { assert (k_div M * m_u M <= K * m_u M) by (apply Rmult_le_compat_r; lra). lra. }
-  split.
-  - intros m x r y Hm Hr Hy. apply (recip_ap1 _ _ (k_div M) (k_mul M) _ _ r); assumption.
-  - pose proof (Rmult_le_pos (1 + / 1048576) (k_mul M)); lra.
-Qed.
-
-Lemma div_setup : forall (M : fmodel) (K : R), model_ok M K -> k_div M * m_u M <= / 2097152.
-Proof.
-  intros M K HM. pose proof HM as (_ & _ & _ & _ & _ & _ & [_ Hdk] & _ & H9).
-  assert (k_div M * m_u M <= K * m_u M)
-    by (apply Rmult_le_compat_r; [left; apply (model_u M K HM) | exact Hdk]). lra.
-Qed.
-
-(** One instantiation of a model lemma [lem] (pixel_model_d, horner_model, ...)
-    for a theorem whose k_j are [kcomp_ok] (one division, kd = k_div) or
-    [krecip_ok] (reciprocal then product, kd from [recip_setup]). *)
-Ltac kd_inst lem :=
-  intros;
-  match goal with HM : model_ok ?M ?K |- _ =>
-    pose proof (div_setup M K HM); pose proof (model_u M K HM) end;
-  repeat match goal with
-  | H : kcomp_ok _ _ _ _ _ |- _ => destruct H as (? & ? & ?)
-  | H : krecip_ok _ _ _ _ _ |- _ => destruct H as (? & ? & ? & ? & ?)
-  end;
-  try match goal with
-  | HM : model_ok ?M ?K, Hdiv : 1 <= k_div ?M,
-    Hkd : ((1 + / 1048576) * k_mul ?M + k_div ?M + / 68719476736) * m_u ?M <= / 2097152 |- _ =>
-      destruct (recip_setup M K HM Hkd Hdiv) as [? ?]
-  end;
-  eapply lem; try eassumption; try (split; assumption);
-  match goal with H : _ |- ap1 _ _ _ _ =>
-    eapply H; [split; [apply (le_INR 1) |]; assumption | | eassumption]; eassumption end.
-
-(** Phong, per-pixel normal, one division, with the span's distance dd >= |Nb - Na|. *)
-Theorem phong_pixel_div_dist : forall (M : fmodel) (K K1 : R), model_ok M K ->
-  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 -> 1 <= k_div M ->
-  forall (s : span) (na nb l kk : vec) (i : nat) (ph qh dd : R),
-  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
-  0 <= dd <= 2 -> dot (vsub (Nb s) (Na s)) (vsub (Nb s) (Na s)) <= dd * dd ->
-  (1 <= n s)%nat -> INR (n s) <= 16777216 -> (i <= n s)%nat ->
-  vap M na (Na s) -> vap M nb (Nb s) -> vap M l (L s) ->
-  kcomp_ok M (INR (n s)) (vx kk) (vx na) (vx nb) ->
-  kcomp_ok M (INR (n s)) (vy kk) (vy na) (vy nb) ->
-  kcomp_ok M (INR (n s)) (vz kk) (vz na) (vz nb) ->
-  pixel_ok M i na l kk ph qh ->
-  Rabs (ph - p s (INR i)) <= ((602 / 100 + 201 / 100 * dd) * K1
-                              + (2 / 100 + 101 / 100 * dd) * k_div M) * m_u M /\
-  Rabs (qh - q s (INR i)) <= ((702 / 100 + 401 / 100 * dd + 0 * dd * dd) * K1
-                              + (2 / 100 + 201 / 100 * dd + 0 * dd * dd) * k_div M) * m_u M.
-Proof. kd_inst pixel_model_d. Qed.
-
-(** The same with k_j = (Nb_j - Na_j) * r, r = 1/n a rounded division. *)
-Theorem phong_pixel_recip_dist : forall (M : fmodel) (K K1 : R), model_ok M K ->
-  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 -> 1 <= k_div M ->
-  ((1 + / 1048576) * k_mul M + k_div M + / 68719476736) * m_u M <= / 2097152 ->
-  forall (s : span) (na nb l kk : vec) (i : nat) (ph qh dd : R),
-  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
-  0 <= dd <= 2 -> dot (vsub (Nb s) (Na s)) (vsub (Nb s) (Na s)) <= dd * dd ->
-  (1 <= n s)%nat -> INR (n s) <= 16777216 -> (i <= n s)%nat ->
-  vap M na (Na s) -> vap M nb (Nb s) -> vap M l (L s) ->
-  krecip_ok M (INR (n s)) (vx kk) (vx na) (vx nb) ->
-  krecip_ok M (INR (n s)) (vy kk) (vy na) (vy nb) ->
-  krecip_ok M (INR (n s)) (vz kk) (vz na) (vz nb) ->
-  pixel_ok M i na l kk ph qh ->
-  Rabs (ph - p s (INR i)) <= ((602 / 100 + 201 / 100 * dd) * K1
-      + (2 / 100 + 101 / 100 * dd) * ((1 + / 1048576) * k_mul M + k_div M + / 68719476736))
-      * m_u M /\
-  Rabs (qh - q s (INR i)) <= ((702 / 100 + 401 / 100 * dd + 0 * dd * dd) * K1
-      + (2 / 100 + 201 / 100 * dd + 0 * dd * dd)
-        * ((1 + / 1048576) * k_mul M + k_div M + / 68719476736)) * m_u M.
-Proof. kd_inst pixel_model_d. Qed.
-
-(** Phong, lerp, t = i/n one rounded division, with the span's distance. *)
-Theorem phong_lerp_div_dist : forall (M : fmodel) (K K1 : R), model_ok M K ->
-  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 -> 1 <= k_div M ->
-  forall (s : span) (na nb l : vec) (i : nat) (th ph qh dd : R),
-  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
-  0 <= dd <= 2 -> dot (vsub (Nb s) (Na s)) (vsub (Nb s) (Na s)) <= dd * dd ->
-  (1 <= n s)%nat -> INR (n s) <= 16777216 -> (i <= n s)%nat ->
-  vap M na (Na s) -> vap M nb (Nb s) -> vap M l (L s) ->
-  ap_div M th (INR i / INR (n s)) ->
-  lerp_ok M th na nb l ph qh ->
-  Rabs (ph - p s (INR i)) <= ((802 / 100 + 0 * dd) * K1
-                              + (2 / 100 + 101 / 100 * dd) * k_div M) * m_u M /\
-  Rabs (qh - q s (INR i)) <= ((1102 / 100 + 0 * dd + 0 * dd * dd) * K1
-                              + (2 / 100 + 201 / 100 * dd + 0 * dd * dd) * k_div M) * m_u M.
-Proof. kd_inst lerp_model_d. Qed.
-
-(** The same with t = i * r, r = 1/n a rounded division. *)
-Theorem phong_lerp_recip_dist : forall (M : fmodel) (K K1 : R), model_ok M K ->
-  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 -> 1 <= k_div M ->
-  ((1 + / 1048576) * k_mul M + k_div M + / 68719476736) * m_u M <= / 2097152 ->
-  forall (s : span) (na nb l : vec) (i : nat) (r th ph qh dd : R),
-  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
-  0 <= dd <= 2 -> dot (vsub (Nb s) (Na s)) (vsub (Nb s) (Na s)) <= dd * dd ->
-  (1 <= n s)%nat -> INR (n s) <= 16777216 -> (i <= n s)%nat ->
-  vap M na (Na s) -> vap M nb (Nb s) -> vap M l (L s) ->
-  ap_div M r (1 / INR (n s)) -> ap_mul M th (INR i * r) ->
-  lerp_ok M th na nb l ph qh ->
-  Rabs (ph - p s (INR i)) <= ((802 / 100 + 0 * dd) * K1
-      + (2 / 100 + 101 / 100 * dd) * ((1 + / 1048576) * k_mul M + k_div M + / 68719476736))
-      * m_u M /\
-  Rabs (qh - q s (INR i)) <= ((1102 / 100 + 0 * dd + 0 * dd * dd) * K1
-      + (2 / 100 + 201 / 100 * dd + 0 * dd * dd)
-        * ((1 + / 1048576) * k_mul M + k_div M + / 68719476736)) * m_u M.
-Proof. kd_inst lerp_model_d. Qed.
-
-(** ** Horner's closed form *)
+(** ** Horner's closed form, and every form on the set-up of k (section HK) *)
 
 (** p^ = (A i) + B, with |a| <= Da (Da = dd, a = D.L). *)
 Lemma hp_abs_d : forall v eta m i fA fB a b cA cB x ph Da,
@@ -1247,17 +923,79 @@ Proof.
   - unfold wsum0, wM; unfold vsub in *; cbn [vx vy vz] in *. lra.
 Qed.
 
-End HK.
+(** The per-pixel normal, the lerp and Horner's closed form on the section's
+    set-up. *)
+Lemma pd_core : forall (l nh : vec) (i : nat) (zx zy zz ph qh : R),
+  is_unit (L s) -> (i <= n s)%nat -> vap1 v eta l (L s) ->
+  ap1 v eta zx (INR i * vx kk) -> ap1 v eta (vx nh) (vx na + zx) ->
+  ap1 v eta zy (INR i * vy kk) -> ap1 v eta (vy nh) (vy na + zy) ->
+  ap1 v eta zz (INR i * vz kk) -> ap1 v eta (vz nh) (vz na + zz) ->
+  fdot_rel v v eta nh l ph -> fdot_rel v v eta nh nh qh ->
+  Rabs (ph - p s (INR i)) <= (2 + 2001 / 1000 * dd + 402 / 100) * v
+                             + (1001 / 1000 * dd + 2 / 100) * d /\
+  Rabs (qh - q s (INR i)) <= (2 * 2 + 2 * (2001 / 1000) * dd + 302 / 100) * v
+                             + (2 * (1001 / 1000) * dd + 2 / 100) * d.
+Proof.
+  intros l nh i zx zy zz ph qh Hl Hi Inl Hzx Hnx Hzy Hny Hzz Hnz Hp Hq.
+  pose proof HDd as [Hdd HD].
+  assert (Hn0 : (n s <> 0)%nat) by lia.
+  assert (Hm : 1 <= INR (n s) <= 16777216) by (split; [apply (le_INR 1); exact Hn1 | exact Hn2]).
+  assert (Hii : 0 <= INR i <= INR (n s)) by (split; [apply pos_INR | apply le_INR; exact Hi]).
+  pose proof (theta_rng (INR (n s)) (INR i) ltac:(lra) Hii) as Ht.
+  destruct (unit_bounded _ Ha) as [A1 [A2 A3]].
+  destruct (unit_bounded _ Hb) as [B1 [B2 B3]].
+  pose proof Ina as [Ia1 [Ia2 Ia3]]. pose proof Inb as [Ib1 [Ib2 Ib3]].
+  assert (VN : vapprox 1 1 nh (nrm s (INR i / INR (n s)))
+                 (vlin v d (wM (Na s) (Nb s) (INR i / INR (n s)) 2 (2001 / 1000))
+                           (wM (Na s) (Nb s) (INR i / INR (n s)) 0 (1001 / 1000)))).
+  { unfold vapprox, vlin, wM, nrm, vadd, vscale, vsub; cbn [vx vy vz]. rewrite !Rmult_1_l.
+    repeat split; eapply pd_comp; eassumption. }
+  rewrite pp_p_form, pp_q_form by exact Hn0.
+  exact (pd_tail v d eta s nh l _ ph qh dd 2 (2001 / 1000) (1001 / 1000) Hv Hdv Ha Hb Hl Ht (proj1 Hdd) HD
+           ltac:(lra) ltac:(lra) ltac:(lra) Inl VN Hp Hq).
+Qed.
 
-Lemma horner_core_d : forall (v d eta dd : R) (s : span) (na nb l kk : vec)
-  (tx ty tz fa fb fc e fe : R) (i : nat) (x ph y1 y2 y3 qh : R),
-  small_ok v eta -> small_ok d eta -> Ddist s dd ->
-  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
-  (1 <= n s)%nat -> INR (n s) <= 16777216 -> (i <= n s)%nat ->
-  vap1 v eta na (Na s) -> vap1 v eta nb (Nb s) -> vap1 v eta l (L s) ->
-  ap1 v eta tx (vx nb - vx na) -> ap1 d eta (vx kk) (tx / INR (n s)) ->
-  ap1 v eta ty (vy nb - vy na) -> ap1 d eta (vy kk) (ty / INR (n s)) ->
-  ap1 v eta tz (vz nb - vz na) -> ap1 d eta (vz kk) (tz / INR (n s)) ->
+
+Lemma ld_core : forall (l nh : vec) (i : nat) (th wx wy wz ax ay az bx by_ bz ph qh : R),
+  is_unit (L s) -> (i <= n s)%nat -> vap1 v eta l (L s) ->
+  ap1 d eta th (INR i / INR (n s)) ->
+  fdot_rel v v eta nh l ph -> fdot_rel v v eta nh nh qh ->
+  ap1 v eta (vx nh) (ax + bx) -> ap1 v eta bx (th * vx nb) -> ap1 v eta ax (wx * vx na) ->
+  ap1 v eta wx (1 - th) ->
+  ap1 v eta (vy nh) (ay + by_) -> ap1 v eta by_ (th * vy nb) -> ap1 v eta ay (wy * vy na) ->
+  ap1 v eta wy (1 - th) ->
+  ap1 v eta (vz nh) (az + bz) -> ap1 v eta bz (th * vz nb) -> ap1 v eta az (wz * vz na) ->
+  ap1 v eta wz (1 - th) ->
+  Rabs (ph - p s (INR i)) <= (4 + 0 * dd + 402 / 100) * v + (1001 / 1000 * dd + 2 / 100) * d /\
+  Rabs (qh - q s (INR i)) <= (2 * 4 + 2 * 0 * dd + 302 / 100) * v
+                             + (2 * (1001 / 1000) * dd + 2 / 100) * d.
+Proof.
+  intros l nh i th wx wy wz ax ay az bx by_ bz ph qh Hl Hi Inl Hth Hp Hq
+    Hnx Hbx Hax Hwx Hny Hby Hay Hwy Hnz Hbz Haz Hwz.
+  pose proof HDd as [Hdd HD].
+  assert (Hn0 : (n s <> 0)%nat) by lia.
+  assert (Hm : 1 <= INR (n s) <= 16777216) by (split; [apply (le_INR 1); exact Hn1 | exact Hn2]).
+  assert (Hii : 0 <= INR i <= INR (n s)) by (split; [apply pos_INR | apply le_INR; exact Hi]).
+  pose proof (theta_rng (INR (n s)) (INR i) ltac:(lra) Hii) as Ht.
+  destruct (unit_bounded _ Ha) as [A1 [A2 A3]].
+  destruct (unit_bounded _ Hb) as [B1 [B2 B3]].
+  pose proof Ina as [Ia1 [Ia2 Ia3]]. pose proof Inb as [Ib1 [Ib2 Ib3]].
+  assert (VN : vapprox 1 1 nh (nrm s (INR i / INR (n s)))
+                 (vlin v d (wM (Na s) (Nb s) (INR i / INR (n s)) 4 0)
+                           (wM (Na s) (Nb s) (INR i / INR (n s)) 0 (1001 / 1000)))).
+  { unfold vapprox, vlin, wM, nrm, vadd, vscale, vsub; cbn [vx vy vz]. rewrite !Rmult_1_l.
+    repeat split.
+    - exact (ld_comp v d eta _ _ _ _ _ _ _ _ _ _ _ Hv Hdv Hm Hii A1 B1 Ia1 Ib1 Hth Hwx Hax Hbx Hnx).
+    - exact (ld_comp v d eta _ _ _ _ _ _ _ _ _ _ _ Hv Hdv Hm Hii A2 B2 Ia2 Ib2 Hth Hwy Hay Hby Hny).
+    - exact (ld_comp v d eta _ _ _ _ _ _ _ _ _ _ _ Hv Hdv Hm Hii A3 B3 Ia3 Ib3 Hth Hwz Haz Hbz Hnz). }
+  rewrite pp_p_form, pp_q_form by exact Hn0.
+  exact (pd_tail v d eta s nh l _ ph qh dd 4 0 (1001 / 1000) Hv Hdv Ha Hb Hl Ht (proj1 Hdd) HD
+           ltac:(lra) ltac:(lra) ltac:(lra) Inl VN Hp Hq).
+Qed.
+
+
+Lemma horner_core_d : forall (l : vec) (fa fb fc e fe : R) (i : nat) (x ph y1 y2 y3 qh : R),
+  is_unit (L s) -> (i <= n s)%nat -> vap1 v eta l (L s) ->
   fdot_rel v v eta kk l fa -> fdot_rel v v eta na l fb -> fdot_rel v v eta kk kk fc ->
   fdot_rel v v eta kk na e -> fdot_rel v v eta na na fe ->
   ap1 v eta x (fa * INR i) -> ap1 v eta ph (x + fb) ->
@@ -1267,21 +1005,17 @@ Lemma horner_core_d : forall (v d eta dd : R) (s : span) (na nb l kk : vec)
   Rabs (qh - q s (INR i)) <= (1013 / 100 + 1803 / 100 * dd + 801 / 100 * dd * dd) * v
                              + (7 / 100 + 202 / 100 * dd + 201 / 100 * dd * dd) * d.
 Proof.
-  intros v d eta dd s na nb l kk tx ty tz fa fb fc e fe i x ph y1 y2 y3 qh Hv Hd HDd Ha Hb Hl
-    Hn1 Hn2 Hi Ina Inb Inl Htx Hkx Hty Hky Htz Hkz Hfa Hfb Hfc Hfe0 Hfe Hx Hph Hy1 Hy2 Hy3 Hqh.
-  v_facts Hv. v_facts Hd.
+  intros l fa fb fc e fe i x ph y1 y2 y3 qh Hl Hi Inl Hfa Hfb Hfc Hfe0 Hfe Hx Hph Hy1 Hy2 Hy3 Hqh.
+  v_facts Hv. v_facts Hdv.
   pose proof HDd as [Hdd HD].
   assert (Hn0 : (n s <> 0)%nat) by lia.
   assert (Hm : 1 <= INR (n s) <= 16777216) by (split; [apply (le_INR 1); exact Hn1 | exact Hn2]).
   assert (Hii : 0 <= INR i <= INR (n s)) by (split; [apply pos_INR | apply le_INR; exact Hi]).
-  pose proof (kx_dot v d eta dd Hv Hd s HDd Ha Hb Hn1 Hn2 na nb kk Ina Inb tx ty tz
-                Htx Hkx Hty Hky Htz Hkz l (L s) fa Hl Inl Hfa) as CA.
-  pose proof (K_pa v d eta Hv Hd s Ha Hb Hl na l fb Ina Inl Hfb) as CB.
-  pose proof (kk_dot v d eta dd Hv Hd s HDd Ha Hb Hn1 Hn2 na nb kk Ina Inb tx ty tz
-                Htx Hkx Hty Hky Htz Hkz fc Hfc) as CC.
-  pose proof (kx_dot v d eta dd Hv Hd s HDd Ha Hb Hn1 Hn2 na nb kk Ina Inb tx ty tz
-                Htx Hkx Hty Hky Htz Hkz na (Na s) e Ha Ina Hfe0) as CD.
-  pose proof (K_pa v d eta Hv Hd (mkSpan (Na s) (Nb s) (Na s) (n s)) Ha Hb Ha na na fe
+  pose proof (kx_dot l (L s) fa Hl Inl Hfa) as CA.
+  pose proof (K_pa v d eta Hv Hdv s Ha Hb Hl na l fb Ina Inl Hfb) as CB.
+  pose proof (kk_dot fc Hfc) as CC.
+  pose proof (kx_dot na (Na s) e Ha Ina Hfe0) as CD.
+  pose proof (K_pa v d eta Hv Hdv (mkSpan (Na s) (Nb s) (Na s) (n s)) Ha Hb Ha na na fe
                 Ina Ina Hfe) as CE.
   unfold pa in CE; cbn [Na Nb L] in CE.
   assert (VD : v * dd <= v * 2) by (apply Rmult_le_compat_l; lra).
@@ -1315,6 +1049,256 @@ Proof.
       apply hc_q_le1; try assumption. apply theta_rng; lra.
     + lra.
 Qed.
+
+
+End HK.
+
+(** ** With the model's operations *)
+
+Lemma dd_fin : forall (u K1 kd dd A0 A1 B0 B1 a0 a1 b0 b1 E : R),
+  0 < u -> 1 <= K1 -> 1 <= kd -> 0 <= dd -> A0 <= a0 -> A1 <= a1 -> B0 <= b0 -> B1 <= b1 ->
+  0 <= A1 -> 0 <= B1 ->
+  E <= (A0 + A1 * dd) * (K1 * u) + (B1 * dd + B0) * (kd * u) ->
+  E <= ((a0 + a1 * dd) * K1 + (b0 + b1 * dd) * kd) * u.
+Proof.
+  intros u K1 kd dd A0 A1 B0 B1 a0 a1 b0 b1 E Hu HK Hk Hd H1 H2 H3 H4 H5 H6 HE.
+  eapply Rle_trans; [exact HE|].
+  assert (P1 : 0 <= K1 * u) by (apply Rmult_le_pos; lra).
+  assert (P2 : 0 <= kd * u) by (apply Rmult_le_pos; lra).
+  assert (Q1 : (A0 + A1 * dd) <= (a0 + a1 * dd)).
+  { assert (A1 * dd <= a1 * dd) by (apply Rmult_le_compat_r; lra). lra. }
+  assert (Q2 : (B1 * dd + B0) <= (b0 + b1 * dd)).
+  { assert (B1 * dd <= b1 * dd) by (apply Rmult_le_compat_r; lra). lra. }
+  assert ((A0 + A1 * dd) * (K1 * u) <= (a0 + a1 * dd) * (K1 * u))
+    by (apply Rmult_le_compat_r; lra).
+  assert ((B1 * dd + B0) * (kd * u) <= (b0 + b1 * dd) * (kd * u))
+    by (apply Rmult_le_compat_r; lra).
+  lra.
+Qed.
+
+Lemma dd_fin2 : forall (u K1 kd dd A0 A1 A2 B0 B1 B2 a0 a1 a2 b0 b1 b2 E : R),
+  0 < u -> 1 <= K1 -> 1 <= kd -> 0 <= dd -> A0 <= a0 -> A1 <= a1 -> A2 <= a2 ->
+  B0 <= b0 -> B1 <= b1 -> B2 <= b2 ->
+  E <= (A0 + A1 * dd + A2 * dd * dd) * (K1 * u) + (B0 + B1 * dd + B2 * dd * dd) * (kd * u) ->
+  E <= ((a0 + a1 * dd + a2 * dd * dd) * K1 + (b0 + b1 * dd + b2 * dd * dd) * kd) * u.
+Proof.
+  intros u K1 kd dd A0 A1 A2 B0 B1 B2 a0 a1 a2 b0 b1 b2 E Hu HK Hk Hd H1 H2 H3 H4 H5 H6 HE.
+  eapply Rle_trans; [exact HE|].
+  assert (P1 : 0 <= K1 * u) by (apply Rmult_le_pos; lra).
+  assert (P2 : 0 <= kd * u) by (apply Rmult_le_pos; lra).
+  assert (D2 : 0 <= dd * dd) by (apply Rmult_le_pos; lra).
+  assert (Q1 : A0 + A1 * dd + A2 * dd * dd <= a0 + a1 * dd + a2 * dd * dd).
+  { assert (A1 * dd <= a1 * dd) by (apply Rmult_le_compat_r; lra).
+    assert (A2 * (dd * dd) <= a2 * (dd * dd)) by (apply Rmult_le_compat_r; lra). nra. }
+  assert (Q2 : B0 + B1 * dd + B2 * dd * dd <= b0 + b1 * dd + b2 * dd * dd).
+  { assert (B1 * dd <= b1 * dd) by (apply Rmult_le_compat_r; lra).
+    assert (B2 * (dd * dd) <= b2 * (dd * dd)) by (apply Rmult_le_compat_r; lra). nra. }
+  assert ((A0 + A1 * dd + A2 * dd * dd) * (K1 * u) <= (a0 + a1 * dd + a2 * dd * dd) * (K1 * u))
+    by (apply Rmult_le_compat_r; lra).
+  assert ((B0 + B1 * dd + B2 * dd * dd) * (kd * u) <= (b0 + b1 * dd + b2 * dd * dd) * (kd * u))
+    by (apply Rmult_le_compat_r; lra).
+  lra.
+Qed.
+
+(** Every input, addition, product and dot product of the model within unit
+    K1 u ([hm_vap], [hm_ap], [hm_fdot]). *)
+Ltac hm_lift M K1 :=
+  let Hu := fresh "Hu" in
+  assert (Hu : 0 < m_u M) by (eapply model_u; eassumption);
+  repeat match goal with
+  | Hk : k_in M <= K1, H : vap M _ _ |- _ => apply (hm_vap M K1 _ _ Hu Hk) in H
+  | Hk : k_add M <= K1, H : ap_add M _ _ |- _ => apply (hm_ap M _ K1 _ _ Hu Hk) in H
+  | Hk : k_mul M <= K1, H : ap_mul M _ _ |- _ => apply (hm_ap M _ K1 _ _ Hu Hk) in H
+  | Ha : k_add M <= K1, Hm : k_mul M <= K1, H : fdot_ok M _ _ _ |- _ =>
+      apply (hm_fdot M K1 _ _ _ Hu Ha Hm) in H
+  end.
+
+Lemma conj_le : forall a b x y x' y' : R,
+  a <= x' /\ b <= y' -> x' <= x -> y' <= y -> a <= x /\ b <= y.
+Proof. intros a b x y x' y' [H1 H2] H3 H4. split; lra. Qed.
+
+(** A model lemma from its [core] on units v = K1 u, d = kd u: the relations
+    taken apart, the operations lifted to unit K1 u; left: the two bounds of
+    [core] against the lemma's. *)
+Ltac hm_model core :=
+  intros; unfold horner_ok, pixel_ok, ncomp_ok, lerp_ok, lcomp_ok in *;
+  repeat match goal with
+  | H : exists _, _ |- _ => destruct H
+  | H : _ /\ _ |- _ => destruct H
+  end;
+  try match goal with H : Ddist _ ?dd |- _ => assert (0 <= dd <= 2) by apply (proj1 H) end;
+  match goal with
+  | HM : model_ok ?M ?K, Hin : k_in ?M <= ?K1, Hk : ?kd * m_u ?M <= / 2097152 |- _ =>
+      pose proof (hm_small M K K1 HM ltac:(split; assumption));
+      pose proof (hm_small_d M K kd HM ltac:(assumption) Hk);
+      hm_lift M K1;
+      eapply conj_le; [eapply (core (K1 * m_u M) (kd * m_u M) (m_eta M)); try eassumption | |]
+  end.
+
+Lemma pixel_model_d : forall (M : fmodel) (K K1 kd dd : R), model_ok M K ->
+  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 ->
+  1 <= kd -> kd * m_u M <= / 2097152 ->
+  forall (s : span) (na nb l kk : vec) (i : nat) (ph qh : R) (tx ty tz : R),
+  Ddist s dd -> is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  (1 <= n s)%nat -> INR (n s) <= 16777216 -> (i <= n s)%nat ->
+  vap M na (Na s) -> vap M nb (Nb s) -> vap M l (L s) ->
+  ap_add M tx (vx nb - vx na) -> ap1 (kd * m_u M) (m_eta M) (vx kk) (tx / INR (n s)) ->
+  ap_add M ty (vy nb - vy na) -> ap1 (kd * m_u M) (m_eta M) (vy kk) (ty / INR (n s)) ->
+  ap_add M tz (vz nb - vz na) -> ap1 (kd * m_u M) (m_eta M) (vz kk) (tz / INR (n s)) ->
+  pixel_ok M i na l kk ph qh ->
+  Rabs (ph - p s (INR i)) <= ((602 / 100 + 201 / 100 * dd) * K1
+                              + (2 / 100 + 101 / 100 * dd) * kd) * m_u M /\
+  Rabs (qh - q s (INR i)) <= ((702 / 100 + 401 / 100 * dd + 0 * dd * dd) * K1
+                              + (2 / 100 + 201 / 100 * dd + 0 * dd * dd) * kd) * m_u M.
+Proof.
+  hm_model pd_core.
+  - eapply (dd_fin _ K1 kd dd (2 + 402 / 100) (2001 / 1000) (2 / 100) (1001 / 1000));
+      try lra; right; ring.
+  - eapply (dd_fin2 _ K1 kd dd (2 * 2 + 302 / 100) (2 * (2001 / 1000)) 0 (2 / 100)
+      (2 * (1001 / 1000)) 0); try lra; right; ring.
+Qed.
+
+Lemma lerp_model_d : forall (M : fmodel) (K K1 kd dd : R), model_ok M K ->
+  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 ->
+  1 <= kd -> kd * m_u M <= / 2097152 ->
+  forall (s : span) (na nb l : vec) (i : nat) (th ph qh : R),
+  Ddist s dd -> is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  (1 <= n s)%nat -> INR (n s) <= 16777216 -> (i <= n s)%nat ->
+  vap M na (Na s) -> vap M nb (Nb s) -> vap M l (L s) ->
+  ap1 (kd * m_u M) (m_eta M) th (INR i / INR (n s)) ->
+  lerp_ok M th na nb l ph qh ->
+  Rabs (ph - p s (INR i)) <= ((802 / 100 + 0 * dd) * K1
+                              + (2 / 100 + 101 / 100 * dd) * kd) * m_u M /\
+  Rabs (qh - q s (INR i)) <= ((1102 / 100 + 0 * dd + 0 * dd * dd) * K1
+                              + (2 / 100 + 201 / 100 * dd + 0 * dd * dd) * kd) * m_u M.
+Proof.
+  hm_model ld_core.
+  - eapply (dd_fin _ K1 kd dd (4 + 402 / 100) 0 (2 / 100) (1001 / 1000)); try lra; right; ring.
+  - eapply (dd_fin2 _ K1 kd dd (2 * 4 + 302 / 100) 0 0 (2 / 100)
+      (2 * (1001 / 1000)) 0); try lra; right; ring.
+Qed.
+
+(** The reciprocal's unit kd = (1 + 2^-20) k_mul + k_div + 2^-36 as in PhongCount.v. *)
+Lemma recip_setup : forall (M : fmodel) (K : R), model_ok M K ->
+  ((1 + / 1048576) * k_mul M + k_div M + / 68719476736) * m_u M <= / 2097152 ->
+  1 <= k_div M ->
+  (forall (m x r y : R), 1 <= m <= 16777216 -> ap_div M r (1 / m) -> ap_mul M y (x * r) ->
+     ap1 (((1 + / 1048576) * k_mul M + k_div M + / 68719476736) * m_u M) (m_eta M) y (x / m)) /\
+  1 <= (1 + / 1048576) * k_mul M + k_div M + / 68719476736.
+Proof.
+  intros M K HM Hkd Hdiv.
+  pose proof HM as (U1 & U2 & U3 & _ & _ & [Km0 _] & [Kd0 Kd1] & K8 & K9).
+  assert (Hu : 0 < m_u M <= / 2097152).
+  { split; [exact U1|]. assert (m_u M <= K * m_u M) by (rewrite <- (Rmult_1_l (m_u M)) at 1;
+      apply Rmult_le_compat_r; lra). lra. }
+  assert (Hdu : k_div M * m_u M <= / 2097152).
+  { assert (k_div M * m_u M <= K * m_u M) by (apply Rmult_le_compat_r; lra). lra. }
+  split.
+  - intros m x r y Hm Hr Hy. apply (recip_ap1 _ _ (k_div M) (k_mul M) _ _ r); assumption.
+  - pose proof (Rmult_le_pos (1 + / 1048576) (k_mul M)); lra.
+Qed.
+
+Lemma div_setup : forall (M : fmodel) (K : R), model_ok M K -> k_div M * m_u M <= / 2097152.
+Proof.
+  intros M K HM. pose proof HM as (_ & _ & _ & _ & _ & _ & [_ Hdk] & _ & H9).
+  assert (k_div M * m_u M <= K * m_u M)
+    by (apply Rmult_le_compat_r; [left; apply (model_u M K HM) | exact Hdk]). lra.
+Qed.
+
+(** One instantiation of a model lemma [lem] (pixel_model_d, horner_model, ...)
+    for a theorem whose k_j are [kcomp_ok] (one division, kd = k_div) or
+    [krecip_ok] (reciprocal then product, kd from [recip_setup]). *)
+Ltac kd_inst lem :=
+  intros;
+  match goal with HM : model_ok ?M ?K |- _ =>
+    pose proof (div_setup M K HM); pose proof (model_u M K HM) end;
+  repeat match goal with
+  | H : kcomp_ok _ _ _ _ _ |- _ => destruct H as (? & ? & ?)
+  | H : krecip_ok _ _ _ _ _ |- _ => destruct H as (? & ? & ? & ? & ?)
+  end;
+  try match goal with
+  | HM : model_ok ?M ?K, Hdiv : 1 <= k_div ?M,
+    Hkd : ((1 + / 1048576) * k_mul ?M + k_div ?M + / 68719476736) * m_u ?M <= / 2097152 |- _ =>
+      destruct (recip_setup M K HM Hkd Hdiv) as [? ?]
+  end;
+  eapply lem; try eassumption; try (split; assumption);
+  match goal with H : _ |- ap1 _ _ _ _ =>
+    eapply H; [split; [apply (le_INR 1) |]; assumption | | eassumption]; eassumption end.
+
+(** Phong, per-pixel normal, one division, with the span's distance dd >= |Nb - Na|. *)
+Theorem phong_pixel_div_dist : forall (M : fmodel) (K K1 : R), model_ok M K ->
+  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 -> 1 <= k_div M ->
+  forall (s : span) (na nb l kk : vec) (i : nat) (ph qh dd : R),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  0 <= dd <= 2 -> dot (vsub (Nb s) (Na s)) (vsub (Nb s) (Na s)) <= dd * dd ->
+  (1 <= n s)%nat -> INR (n s) <= 16777216 -> (i <= n s)%nat ->
+  vap M na (Na s) -> vap M nb (Nb s) -> vap M l (L s) ->
+  kcomp_ok M (INR (n s)) (vx kk) (vx na) (vx nb) ->
+  kcomp_ok M (INR (n s)) (vy kk) (vy na) (vy nb) ->
+  kcomp_ok M (INR (n s)) (vz kk) (vz na) (vz nb) ->
+  pixel_ok M i na l kk ph qh ->
+  Rabs (ph - p s (INR i)) <= ((602 / 100 + 201 / 100 * dd) * K1
+                              + (2 / 100 + 101 / 100 * dd) * k_div M) * m_u M /\
+  Rabs (qh - q s (INR i)) <= ((702 / 100 + 401 / 100 * dd + 0 * dd * dd) * K1
+                              + (2 / 100 + 201 / 100 * dd + 0 * dd * dd) * k_div M) * m_u M.
+Proof. kd_inst pixel_model_d. Qed.
+
+(** The same with k_j = (Nb_j - Na_j) * r, r = 1/n a rounded division. *)
+Theorem phong_pixel_recip_dist : forall (M : fmodel) (K K1 : R), model_ok M K ->
+  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 -> 1 <= k_div M ->
+  ((1 + / 1048576) * k_mul M + k_div M + / 68719476736) * m_u M <= / 2097152 ->
+  forall (s : span) (na nb l kk : vec) (i : nat) (ph qh dd : R),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  0 <= dd <= 2 -> dot (vsub (Nb s) (Na s)) (vsub (Nb s) (Na s)) <= dd * dd ->
+  (1 <= n s)%nat -> INR (n s) <= 16777216 -> (i <= n s)%nat ->
+  vap M na (Na s) -> vap M nb (Nb s) -> vap M l (L s) ->
+  krecip_ok M (INR (n s)) (vx kk) (vx na) (vx nb) ->
+  krecip_ok M (INR (n s)) (vy kk) (vy na) (vy nb) ->
+  krecip_ok M (INR (n s)) (vz kk) (vz na) (vz nb) ->
+  pixel_ok M i na l kk ph qh ->
+  Rabs (ph - p s (INR i)) <= ((602 / 100 + 201 / 100 * dd) * K1
+      + (2 / 100 + 101 / 100 * dd) * ((1 + / 1048576) * k_mul M + k_div M + / 68719476736))
+      * m_u M /\
+  Rabs (qh - q s (INR i)) <= ((702 / 100 + 401 / 100 * dd + 0 * dd * dd) * K1
+      + (2 / 100 + 201 / 100 * dd + 0 * dd * dd)
+        * ((1 + / 1048576) * k_mul M + k_div M + / 68719476736)) * m_u M.
+Proof. kd_inst pixel_model_d. Qed.
+
+(** Phong, lerp, t = i/n one rounded division, with the span's distance. *)
+Theorem phong_lerp_div_dist : forall (M : fmodel) (K K1 : R), model_ok M K ->
+  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 -> 1 <= k_div M ->
+  forall (s : span) (na nb l : vec) (i : nat) (th ph qh dd : R),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  0 <= dd <= 2 -> dot (vsub (Nb s) (Na s)) (vsub (Nb s) (Na s)) <= dd * dd ->
+  (1 <= n s)%nat -> INR (n s) <= 16777216 -> (i <= n s)%nat ->
+  vap M na (Na s) -> vap M nb (Nb s) -> vap M l (L s) ->
+  ap_div M th (INR i / INR (n s)) ->
+  lerp_ok M th na nb l ph qh ->
+  Rabs (ph - p s (INR i)) <= ((802 / 100 + 0 * dd) * K1
+                              + (2 / 100 + 101 / 100 * dd) * k_div M) * m_u M /\
+  Rabs (qh - q s (INR i)) <= ((1102 / 100 + 0 * dd + 0 * dd * dd) * K1
+                              + (2 / 100 + 201 / 100 * dd + 0 * dd * dd) * k_div M) * m_u M.
+Proof. kd_inst lerp_model_d. Qed.
+
+(** The same with t = i * r, r = 1/n a rounded division. *)
+Theorem phong_lerp_recip_dist : forall (M : fmodel) (K K1 : R), model_ok M K ->
+  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 -> 1 <= k_div M ->
+  ((1 + / 1048576) * k_mul M + k_div M + / 68719476736) * m_u M <= / 2097152 ->
+  forall (s : span) (na nb l : vec) (i : nat) (r th ph qh dd : R),
+  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
+  0 <= dd <= 2 -> dot (vsub (Nb s) (Na s)) (vsub (Nb s) (Na s)) <= dd * dd ->
+  (1 <= n s)%nat -> INR (n s) <= 16777216 -> (i <= n s)%nat ->
+  vap M na (Na s) -> vap M nb (Nb s) -> vap M l (L s) ->
+  ap_div M r (1 / INR (n s)) -> ap_mul M th (INR i * r) ->
+  lerp_ok M th na nb l ph qh ->
+  Rabs (ph - p s (INR i)) <= ((802 / 100 + 0 * dd) * K1
+      + (2 / 100 + 101 / 100 * dd) * ((1 + / 1048576) * k_mul M + k_div M + / 68719476736))
+      * m_u M /\
+  Rabs (qh - q s (INR i)) <= ((1102 / 100 + 0 * dd + 0 * dd * dd) * K1
+      + (2 / 100 + 201 / 100 * dd + 0 * dd * dd)
+        * ((1 + / 1048576) * k_mul M + k_div M + / 68719476736)) * m_u M.
+Proof. kd_inst lerp_model_d. Qed.
+
 
 Lemma horner_model_d : forall (M : fmodel) (K K1 kd dd : R), model_ok M K ->
   1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 ->

@@ -1260,6 +1260,22 @@ Proof.
   assert (0 <= nr * ua) by (apply Rmult_le_pos; lra). lra.
 Qed.
 
+(** A closed form by [closed_form_err]: the step h within w |X| + e of
+    X = (i-1)/2 ds, against corrected Euler ([ce_closed]) or Euler ([eu_closed]). *)
+Ltac closed_by w e t ex T D Sg Spm :=
+  match goal with Hi : (?i <= n s)%nat |- _ =>
+    assert (0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]);
+    eapply Rle_trans;
+      [eapply (closed_form_err v eta w e nr (INR i) t fds _ _ _ _ fpa (ex i) T D _ _ Sg Spm);
+       try eassumption; try lra | lra]
+  end.
+Ltac ce_closed w e :=
+  ebasics; pose proof (K_slope 0 ltac:(lia)) as S0; cbn [INR] in S0;
+  rewrite Rmult_0_l, Rplus_0_r in S0;
+  pose proof K_ds as D0; pose proof (n2ds_le s Hua Hub Hul); pose proof (abs_near _ _ _ D0);
+  match goal with Hi : (?i <= n s)%nat |- _ =>
+    pose proof (K_ce_ideal i Hi); pose proof (ceuler_le s Hua Hub Hul Hn1 i Hi) end;
+  closed_by w e ft0 (ceuler s) (20002 / 10000) (2001 / 1000) (30009 / 10000) (11926 / 10000).
 (** The closed form p_i = p_a + i (t0 + (i-1)/2 ds), evaluated as
     h = (i-1)/2 * ds, g = t0 + h, m = i * g, p = p_a + m (each within its
     bound, h and m possibly exact: fused multiply-adds). *)
@@ -1267,18 +1283,7 @@ Lemma K_closed : forall i, (i <= n s)%nat -> forall hh g m p : R,
   ap1 v eta hh ((INR i - 1) / 2 * fds) -> ap1 v eta g (ft0 + hh) ->
   ap1 v eta m (INR i * g) -> ap1 v eta p (fpa + m) ->
   Rabs (p - ceuler s i) <= 45 * v + 73 / 10 * d.
-Proof.
-  intros i Hi hh g m p Hh Hg Hm Hp. ebasics.
-  assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
-  pose proof (K_slope 0 ltac:(lia)) as S0. cbn [INR] in S0. rewrite Rmult_0_l, Rplus_0_r in S0.
-  pose proof K_ds as D0. pose proof (n2ds_le s Hua Hub Hul) as D1. pose proof (abs_near _ _ _ D0).
-  pose proof (K_ce_ideal i Hi) as G0. pose proof (ceuler_le s Hua Hub Hul Hn1 i Hi) as G1.
-  eapply Rle_trans;
-    [eapply (closed_form_err v eta v eta nr (INR i) ft0 fds
-              hh g m p fpa (ceuler s i)
-              (20002 / 10000) (2001 / 1000) _ _ (30009 / 10000) (11926 / 10000));
-     try eassumption; try lra | lra].
-Qed.
+Proof. intros i Hi hh g m p Hh Hg Hm Hp. ce_closed v eta. Qed.
 
 
 (** *** Plain Euler (eqs. 12-14) on the same set-up
@@ -1398,6 +1403,14 @@ Proof.
 Qed.
 
 
+Ltac eu_closed w e :=
+  ebasics; pose proof K_dia as A0; pose proof (ndia_le s Hua Hub Hul);
+  pose proof (abs_near _ _ _ A0);
+  pose proof K_ds as D0; pose proof (n2ds_le' s Hua Hub Hul); pose proof (abs_near _ _ _ D0);
+  match goal with Hi : (?i <= n s)%nat |- _ =>
+    pose proof (K_eu_ideal i Hi); pose proof (K_eu_le i Hi) end;
+  closed_by w e fdia (euler_span s) (20001 / 10000) (15401 / 10000) (27703 / 10000) (37702 / 10000).
+
 (** Euler's closed form p_i = p_a + i (di_a + (i-1)/2 ds), evaluated as
     h = (i-1)/2 * ds, g = di_a + h, m = i * g, p = p_a + m (each within its
     bound, h and m possibly exact: fused multiply-adds). *)
@@ -1405,18 +1418,7 @@ Lemma K_eu_closed : forall i, (i <= n s)%nat -> forall hh g m p : R,
   ap1 v eta hh ((INR i - 1) / 2 * fds) -> ap1 v eta g (fdia + hh) ->
   ap1 v eta m (INR i * g) -> ap1 v eta p (fpa + m) ->
   Rabs (p - euler_span s i) <= 1012 / 10 * v + 151 / 10 * d.
-Proof.
-  intros i Hi hh g m p Hh Hg Hm Hp. ebasics.
-  assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
-  pose proof K_dia as A0. pose proof (ndia_le s Hua Hub Hul) as A1. pose proof (abs_near _ _ _ A0).
-  pose proof K_ds as D0. pose proof (n2ds_le' s Hua Hub Hul) as D1. pose proof (abs_near _ _ _ D0).
-  pose proof (K_eu_ideal i Hi) as G0. pose proof (K_eu_le i Hi) as G1.
-  eapply Rle_trans;
-    [eapply (closed_form_err v eta v eta nr (INR i) fdia fds
-              hh g m p fpa (euler_span s i)
-              (20001 / 10000) (15401 / 10000) _ _ (27703 / 10000) (37702 / 10000));
-     try eassumption; try lra | lra].
-Qed.
+Proof. intros i Hi hh g m p Hh Hg Hm Hp. eu_closed v eta. Qed.
 
 
 (** *** The closed forms with the halving computed in floats ([half_rel]) *)
@@ -1478,18 +1480,8 @@ Lemma K_closed_h : forall i, (i <= n s)%nat -> forall hh g m p : R,
   ap1 v eta m (INR i * g) -> ap1 v eta p (fpa + m) ->
   Rabs (p - ceuler s i) <= 45 * v + 83 / 10 * d.
 Proof.
-  intros i Hi hh g m p Hh0 Hg Hm Hp. basics.
-  pose proof (K_half i hh Hh0) as Hh.
-  pose proof (e_pos v eta Hv) as He0. pose proof (e_small v eta Hv) as He1.
-  assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
-  pose proof (K_slope 0 ltac:(lia)) as S0. cbn [INR] in S0. rewrite Rmult_0_l, Rplus_0_r in S0.
-  pose proof K_ds as D0. pose proof (n2ds_le s Hua Hub Hul) as D1. pose proof (abs_near _ _ _ D0).
-  pose proof (K_ce_ideal i Hi) as G0. pose proof (ceuler_le s Hua Hub Hul Hn1 i Hi) as G1.
-  eapply Rle_trans;
-    [eapply (closed_form_err v eta ((v + d) * (1 + / 2097152)) (4 * eta) nr (INR i) ft0 fds
-              hh g m p fpa (ceuler s i)
-              (20002 / 10000) (2001 / 1000) _ _ (30009 / 10000) (11926 / 10000));
-     try eassumption; try lra | lra].
+  intros i Hi hh g m p Hh0 Hg Hm Hp. pose proof (K_half i hh Hh0) as Hh.
+  ce_closed ((v + d) * (1 + / 2097152)) (4 * eta).
 Qed.
 
 (** Euler's closed form with h from [half_rel]: 101.2 v + 15.85 d. *)
@@ -1498,18 +1490,8 @@ Lemma K_eu_closed_h : forall i, (i <= n s)%nat -> forall hh g m p : R,
   ap1 v eta m (INR i * g) -> ap1 v eta p (fpa + m) ->
   Rabs (p - euler_span s i) <= 1012 / 10 * v + 1585 / 100 * d.
 Proof.
-  intros i Hi hh g m p Hh0 Hg Hm Hp. basics.
-  pose proof (K_half i hh Hh0) as Hh.
-  pose proof (e_pos v eta Hv) as He0. pose proof (e_small v eta Hv) as He1.
-  assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
-  pose proof K_dia as A0. pose proof (ndia_le s Hua Hub Hul) as A1. pose proof (abs_near _ _ _ A0).
-  pose proof K_ds as D0. pose proof (n2ds_le' s Hua Hub Hul) as D1. pose proof (abs_near _ _ _ D0).
-  pose proof (K_eu_ideal i Hi) as G0. pose proof (K_eu_le i Hi) as G1.
-  eapply Rle_trans;
-    [eapply (closed_form_err v eta ((v + d) * (1 + / 2097152)) (4 * eta) nr (INR i) fdia fds
-              hh g m p fpa (euler_span s i)
-              (20001 / 10000) (15401 / 10000) _ _ (27703 / 10000) (37702 / 10000));
-     try eassumption; try lra | lra].
+  intros i Hi hh g m p Hh0 Hg Hm Hp. pose proof (K_half i hh Hh0) as Hh.
+  eu_closed ((v + d) * (1 + / 2097152)) (4 * eta).
 Qed.
 
 End CE.

@@ -849,51 +849,30 @@ Ltac wKb := first [ apply vzero_bounded
   | apply (wKv_bounded _ _ (unit_bounded _ Hua) (unit_bounded _ Hub))
   | apply (wKd_bounded _ _ (unit_bounded _ Hua) (unit_bounded _ Hub)) ].
 
+(** A set-up dot product H by [K_dot] with scales lam, mu and |a0| |b0| <= Sb. *)
+Ltac kdot lam mu Sb H :=
+  unit_facts; pose proof K_nr; assert (nr * nr <= 281474976710656) by nra;
+  match goal with |- _ <= ?Cv * v + ?Cd * d => epose proof (K_dot lam mu _ Sb Cv Cd
+    _ _ _ _ _ _ _ _ H ltac:(lra) ltac:(lra) ltac:(lra)) as HD;
+    rewrite ?Rmult_1_l, ?Rmult_1_r in HD; eapply HD end;
+  first [ apply K_k_vec | apply K_in_vec; assumption | apply diff_bounded; assumption
+        | apply vb12, unit_bounded; assumption | wKb
+        | unfold wsum0, wIn, wKv, wKd, vzero; cbn [vx vy vz]; lra ].
+
 Lemma K_pa : Rabs (fpa - pa s) <= 5002 / 1000 * v + 1 / 1000 * d.
-Proof.
-  unit_facts.
-  pose proof (K_dot 1 1 fpa 1 (5002 / 1000) (1 / 1000) _ _ _ _ _ _ _ _ Hpa ltac:(lra) ltac:(lra)
-    ltac:(lra) (K_in_vec _ _ Ina) (K_in_vec _ _ Inl) (vb12 _ (unit_bounded _ Hua))
-    (vb12 _ (unit_bounded _ Hul)) ltac:(wKb) ltac:(wKb) ltac:(wKb) ltac:(wKb)) as HD.
-  rewrite !Rmult_1_l in HD. apply HD; unfold wsum0, wIn, vzero; cbn [vx vy vz]; lra.
-Qed.
+Proof. kdot 1 1 1 Hpa. Qed.
 
 Lemma K_pb : Rabs (fpb - pb s) <= 5002 / 1000 * v + 1 / 1000 * d.
-Proof.
-  unit_facts.
-  pose proof (K_dot 1 1 fpb 1 (5002 / 1000) (1 / 1000) _ _ _ _ _ _ _ _ Hpb ltac:(lra) ltac:(lra)
-    ltac:(lra) (K_in_vec _ _ Inb) (K_in_vec _ _ Inl) (vb12 _ (unit_bounded _ Hub))
-    (vb12 _ (unit_bounded _ Hul)) ltac:(wKb) ltac:(wKb) ltac:(wKb) ltac:(wKb)) as HD.
-  rewrite !Rmult_1_l in HD. apply HD; unfold wsum0, wIn, vzero; cbn [vx vy vz]; lra.
-Qed.
+Proof. kdot 1 1 1 Hpb. Qed.
 
 Lemma K_a : Rabs (nr * fa - dot Dl (L s)) <= 1201 / 100 * v + 201 / 100 * d.
-Proof.
-  unit_facts. pose proof K_nr.
-  pose proof (K_dot nr 1 fa 2 (1201 / 100) (201 / 100) _ _ _ _ _ _ _ _ Ha ltac:(lra)
-    ltac:(lra) ltac:(lra) K_k_vec (K_in_vec _ _ Inl) (diff_bounded _ _ Hua Hub)
-    (vb12 _ (unit_bounded _ Hul)) ltac:(wKb) ltac:(wKb) ltac:(wKb) ltac:(wKb)) as HD.
-  rewrite Rmult_1_r in HD. apply HD; unfold wsum0, wIn, wKv, wKd, vzero; cbn [vx vy vz]; lra.
-Qed.
+Proof. kdot (INR (n s)) 1 2 Ha. Qed.
 
 Lemma K_c : Rabs (nr * nr * fc - dot Dl Dl) <= 2802 / 100 * v + 801 / 100 * d.
-Proof.
-  unit_facts. pose proof K_nr.
-  assert (nr * nr <= 281474976710656) by nra.
-  pose proof (K_dot nr nr fc 4 (2802 / 100) (801 / 100) _ _ _ _ _ _ _ _ Hc
-    ltac:(lra) ltac:(lra) ltac:(lra) K_k_vec K_k_vec (diff_bounded _ _ Hua Hub)
-    (diff_bounded _ _ Hua Hub) ltac:(wKb) ltac:(wKb) ltac:(wKb) ltac:(wKb)) as HD.
-  apply HD; unfold wsum0, wKv, wKd; cbn [vx vy vz]; lra.
-Qed.
+Proof. kdot (INR (n s)) (INR (n s)) 4 Hc. Qed.
 
 Lemma K_d0 : Rabs (nr * e - dot Dl (Na s)) <= 1201 / 100 * v + 201 / 100 * d.
-Proof.
-  unit_facts. pose proof K_nr.
-  pose proof (K_dot nr 1 e 2 (1201 / 100) (201 / 100) _ _ _ _ _ _ _ _ He ltac:(lra)
-    ltac:(lra) ltac:(lra) K_k_vec (K_in_vec _ _ Ina) (diff_bounded _ _ Hua Hub)
-    (vb12 _ (unit_bounded _ Hua)) ltac:(wKb) ltac:(wKb) ltac:(wKb) ltac:(wKb)) as HD.
-  rewrite Rmult_1_r in HD. apply HD; unfold wsum0, wIn, wKv, wKd, vzero; cbn [vx vy vz]; lra.
-Qed.
+Proof. kdot (INR (n s)) 1 2 He. Qed.
 
 Lemma K_d : Rabs (nr * fd - 2 * dot Dl (Na s)) <= 2803 / 100 * v + 402 / 100 * d.
 Proof.

@@ -851,7 +851,8 @@ Ltac wKb := first [ apply vzero_bounded
 
 (** A set-up dot product H by [K_dot] with scales lam, mu and |a0| |b0| <= Sb. *)
 Ltac kdot lam mu Sb H :=
-  unit_facts; pose proof K_nr; assert (nr * nr <= 281474976710656) by nra;
+  unit_facts;
+  lazymatch lam with 1 => idtac | _ => pose proof K_nr; assert (nr * nr <= 281474976710656) by nra end;
   match goal with |- _ <= ?Cv * v + ?Cd * d => epose proof (K_dot lam mu _ Sb Cv Cd
     _ _ _ _ _ _ _ _ H ltac:(lra) ltac:(lra) ltac:(lra)) as HD;
     rewrite ?Rmult_1_l, ?Rmult_1_r in HD; eapply HD end;

@@ -544,63 +544,38 @@ Qed.
 
 Ltac unit_facts := unit_facts_of s Hua Hub Hul.
 
+(** A set-up dot product by [dot_inst] with scales lam, mu (the vectors read
+    from the goal: an input [in_vec] or k [k_vec]). *)
+Ltac ldot lam mu :=
+  unit_facts;
+  lazymatch lam with 1 => idtac | _ => pose proof nr_range;
+    assert (INR (n s) * INR (n s) <= 16777216) by nra end;
+  match goal with |- _ <= ?K * u =>
+    epose proof (dot_inst rnd u eta Hstd Hok lam mu _ _ _ _ _ _ K
+      ltac:(lra) ltac:(lra) ltac:(lra)) as HD;
+    rewrite ?Rmult_1_l, ?Rmult_1_r in HD; eapply HD end;
+  first [ apply k_vec | apply in_vec | apply diff_bounded; assumption
+        | apply vb12, unit_bounded; assumption
+        | apply wK_bounded; apply unit_bounded; assumption
+        | apply wIn_bounded, unit_bounded; assumption
+        | unfold wsum, wIn, wK; cbn [vx vy vz]; lra ].
+
 Lemma L_pa : Rabs (f_pa rnd s - pa s) <= 5002 / 1000 * u.
-Proof.
-  unit_facts.
-  pose proof (dot_inst rnd u eta Hstd Hok 1 1 _ _ _ _ _ _ (5002 / 1000) ltac:(lra) ltac:(lra)
-    ltac:(lra) (in_vec (Na s)) (in_vec (L s)) (vb12 _ (unit_bounded _ Hua))
-    (vb12 _ (unit_bounded _ Hul)) (wIn_bounded _ (unit_bounded _ Hua))
-    (wIn_bounded _ (unit_bounded _ Hul))) as HD.
-  rewrite !Rmult_1_l in HD. apply HD.
-  unfold wsum, wIn; cbn [vx vy vz]. lra.
-Qed.
+Proof. ldot 1 1. Qed.
 
 Lemma L_pb : Rabs (f_pb rnd s - pb s) <= 5002 / 1000 * u.
-Proof.
-  unit_facts.
-  pose proof (dot_inst rnd u eta Hstd Hok 1 1 _ _ _ _ _ _ (5002 / 1000) ltac:(lra) ltac:(lra)
-    ltac:(lra) (in_vec (Nb s)) (in_vec (L s)) (vb12 _ (unit_bounded _ Hub))
-    (vb12 _ (unit_bounded _ Hul)) (wIn_bounded _ (unit_bounded _ Hub))
-    (wIn_bounded _ (unit_bounded _ Hul))) as HD.
-  rewrite !Rmult_1_l in HD. apply HD.
-  unfold wsum, wIn; cbn [vx vy vz]. lra.
-Qed.
+Proof. ldot 1 1. Qed.
 
 Lemma L_a : Rabs (INR (n s) * f_a rnd s - dot (vsub (Nb s) (Na s)) (L s)) <= 1401 / 100 * u.
-Proof.
-  unit_facts. pose proof nr_range.
-  pose proof (dot_inst rnd u eta Hstd Hok (INR (n s)) 1 _ _ _ _ _ _ (1401 / 100) ltac:(lra)
-    ltac:(lra) ltac:(lra) k_vec (in_vec (L s)) (diff_bounded _ _ Hua Hub)
-    (vb12 _ (unit_bounded _ Hul)) (wK_bounded _ _ (unit_bounded _ Hua) (unit_bounded _ Hub))
-    (wIn_bounded _ (unit_bounded _ Hul))) as HD.
-  rewrite Rmult_1_r in HD. apply HD.
-  unfold wsum, wIn, wK; cbn [vx vy vz]. lra.
-Qed.
+Proof. ldot (INR (n s)) 1. Qed.
 
 Lemma L_c : Rabs (INR (n s) * INR (n s) * f_c rnd s - dot (vsub (Nb s) (Na s)) (vsub (Nb s) (Na s)))
             <= 3602 / 100 * u.
-Proof.
-  unit_facts. pose proof nr_range.
-  assert (INR (n s) * INR (n s) <= 16777216) by nra.
-  pose proof (dot_inst rnd u eta Hstd Hok (INR (n s)) (INR (n s)) _ _ _ _ _ _ (3602 / 100)
-    ltac:(lra) ltac:(lra) ltac:(lra) k_vec k_vec (diff_bounded _ _ Hua Hub)
-    (diff_bounded _ _ Hua Hub) (wK_bounded _ _ (unit_bounded _ Hua) (unit_bounded _ Hub))
-    (wK_bounded _ _ (unit_bounded _ Hua) (unit_bounded _ Hub))) as HD.
-  apply HD.
-  unfold wsum, wK; cbn [vx vy vz]. lra.
-Qed.
+Proof. ldot (INR (n s)) (INR (n s)). Qed.
 
 Lemma L_d0 : Rabs (INR (n s) * fdot rnd (f_k rnd s) (rvec rnd (Na s))
                    - dot (vsub (Nb s) (Na s)) (Na s)) <= 1401 / 100 * u.
-Proof.
-  unit_facts. pose proof nr_range.
-  pose proof (dot_inst rnd u eta Hstd Hok (INR (n s)) 1 _ _ _ _ _ _ (1401 / 100) ltac:(lra)
-    ltac:(lra) ltac:(lra) k_vec (in_vec (Na s)) (diff_bounded _ _ Hua Hub)
-    (vb12 _ (unit_bounded _ Hua)) (wK_bounded _ _ (unit_bounded _ Hua) (unit_bounded _ Hub))
-    (wIn_bounded _ (unit_bounded _ Hua))) as HD.
-  rewrite Rmult_1_r in HD. apply HD.
-  unfold wsum, wIn, wK; cbn [vx vy vz]. lra.
-Qed.
+Proof. ldot (INR (n s)) 1. Qed.
 
 
 Local Notation nr := (INR (n s)).

@@ -385,23 +385,16 @@ Lemma ad_ce_facts : forall (M : fmodel) (K K1 : R), model_ok M K ->
      <= 2004 / 100 * v + 501 / 100 * d
   /\ Rabs (INR (n s) * INR (n s) * fs_ds F - e_n2ds s) <= 9211 / 100 * v + 1806 / 100 * d.
 Proof.
-  intros M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1 s F Ha Hb Hl Hn1 Hn2 HF v0 d0.
-  ce_core K_R. unfold v0, d0.
-  split; [|split; [|split]].
+  intros M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1 s F Ha Hb Hl Hn1 Hn2 HF v0 d0. unfold v0, d0.
+  assert (Cds : Rabs (INR (n s) * INR (n s) * fs_ds F - e_n2ds s)
+                <= 9211 / 100 * (K1 * m_u M) + 1806 / 100 * (k_div M * m_u M))
+    by (apply ce_setup_eu in HF; eu_core K_ds; exact R0).
+  ce_core K_R.
+  split; [|split; [|split]]; [| | exact R0 | exact Cds].
   - exact (K_pa _ _ _ Hv Hdv s Ha Hb Hl _ _ _
              (VK _ _ Ina) (VK _ _ Inl) (FK _ _ _ Hpa)).
   - exact (K_pb _ _ _ Hv Hdv s Ha Hb Hl _ _ _
              (VK _ _ Inb) (VK _ _ Inl) (FK _ _ _ Hpb)).
-  - exact R0.
-  - exact (K_ds _ _ _ Hv Hdv s Ha Hb Hl Hn1 Hn2
-      _ _ _ _ _ _ _ _ _ _ _ _ _
-      (VK _ _ Ina) (VK _ _ Inb) (VK _ _ Inl) _ _ _
-      (AK _ _ _ Ha1 Htx) Hkx (AK _ _ _ Ha1 Hty) Hky (AK _ _ _ Ha1 Htz) Hkz
-      (FK _ _ _ Ha') (FK _ _ _ Hpa) (FK _ _ _ Hc) _ (FK _ _ _ He) (AK _ _ _ Hm1 Hd) (FK _ _ _ Hpb)
-      _ (AK _ _ _ Hm1 Hq) (AK _ _ _ Ha1 Hdqb)
-      _ _ Hh1 (AK _ _ _ Hm1 Hx1) (AK _ _ _ Ha1 Hdia)
-      _ _ Hh2 (AK _ _ _ Hm1 Hx2) (AK _ _ _ Ha1 Hdib)
-      _ (AK _ _ _ Ha1 Hw) Hds).
 Qed.
 
 (** j = ⌈n/2⌉ (m_step), lo = ⌊n/2⌋: j + lo = n, and the exact δ. *)
@@ -713,25 +706,15 @@ Qed.
 
 (** ** The ieee binary32 profile *)
 
-Lemma fast_delta_err_ieee32 : fast_delta_err ieee32 1 <= 17 * bpow radix2 (-24).
+(** The three error bounds at the ieee binary32 model: 17u, 83u, 63u. *)
+Lemma delta_errs_ieee32 : fast_delta_err ieee32 1 <= 17 * bpow radix2 (-24)
+  /\ eq24_delta_err ieee32 1 <= 83 * bpow radix2 (-24)
+  /\ eq24_shared_delta_err ieee32 1 <= 63 * bpow radix2 (-24).
 Proof.
   pose proof ieee32_ok as (Hu & He0 & He2 & _).
-  unfold fast_delta_err, ieee32 in *; cbn [m_u m_eta k_in k_add k_mul k_div] in *.
-  cbv zeta. rewrite u24 in *. lra.
-Qed.
-
-Lemma eq24_delta_err_ieee32 : eq24_delta_err ieee32 1 <= 83 * bpow radix2 (-24).
-Proof.
-  pose proof ieee32_ok as (Hu & He0 & He2 & _).
-  unfold eq24_delta_err, ieee32 in *; cbn [m_u m_eta k_in k_add k_mul k_div] in *.
-  cbv zeta. rewrite u24 in *. lra.
-Qed.
-
-Lemma eq24_shared_delta_err_ieee32 : eq24_shared_delta_err ieee32 1 <= 63 * bpow radix2 (-24).
-Proof.
-  pose proof ieee32_ok as (Hu & He0 & He2 & _).
-  unfold eq24_shared_delta_err, ieee32 in *; cbn [m_u m_eta k_in k_add k_mul k_div] in *.
-  cbv zeta. rewrite u24 in *. lra.
+  unfold fast_delta_err, eq24_delta_err, eq24_shared_delta_err, ieee32 in *;
+    cbn [m_u m_eta k_in k_add k_mul k_div] in *.
+  cbv zeta. rewrite u24 in *. repeat split; lra.
 Qed.
 
 (* Note: as [adaptive_acceptance_covers_computed_delta], eq. 24 (ii) evaluated
@@ -761,8 +744,7 @@ Theorem adaptive_acceptance_covers_computed_delta_step :
 Proof.
   intros s FG FC j dh x bG bCE th2 G C out Ha Hb Hl Hn HFG HFC Himpl Hx H2 Hgo Hce.
   pose proof (ce_profile_nr s Hn) as Hn'.
-  pose proof fast_delta_err_ieee32 as E1. pose proof eq24_delta_err_ieee32 as E2.
-  pose proof eq24_shared_delta_err_ieee32 as E3.
+  pose proof delta_errs_ieee32 as (E1 & E2 & E3).
   change (bpow radix2 (-24)) with (m_u ieee32) in *.
   apply (adaptive_acceptance_covers_computed_delta_generic_step ieee32 _ 1 ieee32_ok)
     with (FG := FG) (FC := FC) (j := j) (dh := dh) (th2 := th2);

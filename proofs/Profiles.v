@@ -738,32 +738,24 @@ Ltac basics :=
 Ltac ebasics := basics; pose proof (e_pos v eta Hv) as He0; pose proof (e_small v eta Hv) as He1.
 
 Definition vzero : vec := mkV 0 0 0.
-Definition wKv (a0 b0 : vec) : vec :=
-  mkV (2001 / 1000 * (Rabs (vx a0) + Rabs (vx b0)) + / 268435456)
-      (2001 / 1000 * (Rabs (vy a0) + Rabs (vy b0)) + / 268435456)
-      (2001 / 1000 * (Rabs (vz a0) + Rabs (vz b0)) + / 268435456).
-Definition wKd (a0 b0 : vec) : vec :=
-  mkV (1001 / 1000 * (Rabs (vx a0) + Rabs (vx b0)) + / 268435456)
-      (1001 / 1000 * (Rabs (vy a0) + Rabs (vy b0)) + / 268435456)
-      (1001 / 1000 * (Rabs (vz a0) + Rabs (vz b0)) + / 268435456).
+(** The weights of n k_j: c (|a0_j| + |b0_j|) + 2^-28, c = 2.001 (v), 1.001 (d). *)
+Definition wKc (c : R) (a0 b0 : vec) : vec :=
+  mkV (c * (Rabs (vx a0) + Rabs (vx b0)) + / 268435456)
+      (c * (Rabs (vy a0) + Rabs (vy b0)) + / 268435456)
+      (c * (Rabs (vz a0) + Rabs (vz b0)) + / 268435456).
+Definition wKv := wKc (2001 / 1000).
+Definition wKd := wKc (1001 / 1000).
 
 Lemma vzero_bounded : wbounded vzero.
 Proof. unfold wbounded, vzero; cbn [vx vy vz]. repeat split; lra. Qed.
 
-Lemma wKv_bounded : forall a0 b0, vbounded a0 1 -> vbounded b0 1 -> wbounded (wKv a0 b0).
+Lemma wKc_bounded : forall c a0 b0, 0 <= c <= 3 -> vbounded a0 1 -> vbounded b0 1 ->
+  wbounded (wKc c a0 b0).
 Proof.
-  intros a0 b0 [A1 [A2 A3]] [B1 [B2 B3]]. unfold wbounded, wKv; cbn [vx vy vz].
+  intros c a0 b0 Hc0 [A1 [A2 A3]] [B1 [B2 B3]]. unfold wbounded, wKc; cbn [vx vy vz].
   pose proof (Rabs_pos (vx a0)). pose proof (Rabs_pos (vy a0)). pose proof (Rabs_pos (vz a0)).
   pose proof (Rabs_pos (vx b0)). pose proof (Rabs_pos (vy b0)). pose proof (Rabs_pos (vz b0)).
-  repeat split; lra.
-Qed.
-
-Lemma wKd_bounded : forall a0 b0, vbounded a0 1 -> vbounded b0 1 -> wbounded (wKd a0 b0).
-Proof.
-  intros a0 b0 [A1 [A2 A3]] [B1 [B2 B3]]. unfold wbounded, wKd; cbn [vx vy vz].
-  pose proof (Rabs_pos (vx a0)). pose proof (Rabs_pos (vy a0)). pose proof (Rabs_pos (vz a0)).
-  pose proof (Rabs_pos (vx b0)). pose proof (Rabs_pos (vy b0)). pose proof (Rabs_pos (vz b0)).
-  repeat split; lra.
+  repeat split; nra.
 Qed.
 
 Lemma K_in_vec : forall vh w0, vap1 v eta vh w0 -> vapprox 1 1 vh w0 (vlin v d (wIn w0) vzero).
@@ -822,7 +814,7 @@ Proof.
   destruct (unit_bounded _ Hua) as [A1 [A2 A3]].
   destruct (unit_bounded _ Hub) as [B1 [B2 B3]].
   destruct Ina as [I1 [I2 I3]]. destruct Inb as [J1 [J2 J3]].
-  unfold vapprox, vlin, wKv, wKd, vsub; cbn [vx vy vz]. rewrite !Rmult_1_l.
+  unfold vapprox, vlin, wKv, wKd, wKc, vsub; cbn [vx vy vz]. rewrite !Rmult_1_l.
   repeat split; eapply K_comp; eassumption.
 Qed.
 
@@ -846,8 +838,7 @@ Ltac unit_facts := unit_facts_of s Hua Hub Hul.
 Ltac wKb := first [ apply vzero_bounded
   | apply (wIn_bounded _ (unit_bounded _ Hua)) | apply (wIn_bounded _ (unit_bounded _ Hub))
   | apply (wIn_bounded _ (unit_bounded _ Hul))
-  | apply (wKv_bounded _ _ (unit_bounded _ Hua) (unit_bounded _ Hub))
-  | apply (wKd_bounded _ _ (unit_bounded _ Hua) (unit_bounded _ Hub)) ].
+  | (eapply wKc_bounded; [lra | apply (unit_bounded _ Hua) | apply (unit_bounded _ Hub)]) ].
 
 (** A set-up dot product H by [K_dot] with scales lam, mu and |a0| |b0| <= Sb. *)
 Ltac kdot lam mu Sb H :=
@@ -858,7 +849,7 @@ Ltac kdot lam mu Sb H :=
     rewrite ?Rmult_1_l, ?Rmult_1_r in HD; eapply HD end;
   first [ apply K_k_vec | apply K_in_vec; assumption | apply diff_bounded; assumption
         | apply vb12, unit_bounded; assumption | wKb
-        | unfold wsum0, wIn, wKv, wKd, vzero; cbn [vx vy vz]; lra ].
+        | unfold wsum0, wIn, wKv, wKd, wKc, vzero; cbn [vx vy vz]; lra ].
 
 Lemma K_pa : Rabs (fpa - pa s) <= 5002 / 1000 * v + 1 / 1000 * d.
 Proof. kdot 1 1 1 Hpa. Qed.

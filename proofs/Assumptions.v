@@ -7,7 +7,7 @@
 From PhongApprox Require Import Span Duff Euler Derivative Symmetry Adaptive Angular.
 From PhongApprox Require Import ClosedForms Angle FastSetup Related Float Graph ShaderSqrt.
 From PhongApprox Require Import PhongValue PhongCountD PhongCount PhongNormalize Profiles.
-From PhongApprox Require Import AdaptiveDelta DuffCount Fixed.
+From PhongApprox Require Import AdaptiveDelta DuffCount Fixed Composed.
 
 (** Span.v *)
 Check eq_2_p_is_linear.
@@ -348,3 +348,13 @@ Check fixed_point_duff_error.
 Print Assumptions fixed_point_duff_error.
 Check fixed_point_duff_unit_error.
 Print Assumptions fixed_point_duff_unit_error.
+
+(** Composed.v *)
+Check phong_composed.
+Print Assumptions phong_composed.
+Check phong_composed_normalize.
+Print Assumptions phong_composed_normalize.
+Check duff_composed.
+Print Assumptions duff_composed.
+Check symmetric_phong_composed.
+Print Assumptions symmetric_phong_composed.

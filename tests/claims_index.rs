@@ -19,13 +19,14 @@ fn read(p: &str) -> String {
 
 /// Proof files whose theorems are tested and explained somewhere else than
 /// `tests/claims/` and `docs/derivations.md`: (file, test file, document).
-const GROUPS: [(&str, &str, &str); 13] = [
+const GROUPS: [(&str, &str, &str); 14] = [
     ("Related.v", "tests/related.rs", "docs/comparison.md"),
     ("Float.v", "tests/float_bounds.rs", "docs/float.md"),
     ("Fixed.v", "tests/lowp.rs", "docs/float.md"),
     ("Graph.v", "tests/graph.rs", "docs/float.md"),
     ("FastSetup.v", "tests/fast_rows.rs", "docs/float.md"),
     ("ShaderSqrt.v", "tests/profiles/shader.rs", "docs/float.md"),
+    ("Composed.v", "tests/composed.rs", "docs/float.md"),
     ("Profiles.v", "tests/profiles/", "docs/float.md"),
     ("PhongValue.v", "tests/phong_value.rs", "docs/float.md"),
     ("PhongCount.v", "tests/phong_value.rs", "docs/float.md"),

@@ -26,6 +26,9 @@
 
 #[path = "../common/mod.rs"]
 mod common;
+/// The composed bounds against `proofs/Composed.v` (`composed::*`).
+#[path = "../composed.rs"]
+mod composed;
 /// Duff's and symmetric Phong's counts against `proofs/DuffCount.v` (`duff_count::*`).
 #[path = "../duff_count.rs"]
 mod duff_count;

@@ -64,7 +64,7 @@ fn errors(a: &Arith, (k1, kd): (f64, f64), p_steps: u32, q_steps: u32) -> (f64, 
 /// of `/n`), then `phong_value_either`; the largest is at `i = n`. `None` outside the
 /// theorems' conditions — `n·κ_add·u ≤ 2^-11` (binary32: `n ≤ 8192` under `ieee`,
 /// `4096` under `shader`), `2e_q ≤ q_min` (normals that nearly cancel) — where no
-/// bound is claimed.
+/// bound is claimed. The composition is `duff_composed` (`proofs/Composed.v`).
 pub fn duff_bound(a: &Arith, n: u32, q_min: f64) -> Option<f64> {
     let m = model(a, n)?;
     let (e_p, e_q) = errors(a, m, n, n);
@@ -78,7 +78,8 @@ pub fn duff_bound(a: &Arith, n: u32, q_min: f64) -> Option<f64> {
 /// `i_{k−1} ≤ i ≤ i_k` of the right half (`i_k = h + ⌈k(n − h)/8⌉`, `h = ⌊n/2⌋`, eight
 /// pieces) it is at most the value step's with `p` walked `i_k` steps and `q` walked
 /// `min(h, n − i_{k−1})`; the left half is within the first piece. The largest of the
-/// eight. `None` as for [`duff_bound`].
+/// eight. `None` as for [`duff_bound`]. The composition is `symmetric_phong_composed`
+/// (`proofs/Composed.v`).
 pub fn symmetric_phong_bound(a: &Arith, n: u32, q_min: f64) -> Option<f64> {
     let m = model(a, n)?;
     let h = n / 2;

@@ -90,7 +90,8 @@ impl PhongCounts {
 /// (`phong_normalize_dot_unit`: the value step's bound with the same `e_p`, `e_q` and
 /// that term; `pixel_ok_exact_dot`, `lerp_ok_exact_dot` give its `e_p`). `None`
 /// outside the theorems' conditions (`model_ok`, `n ≤ 2^24`; `2e_q ≤ q_min`: normals
-/// that nearly cancel; `1024·η ≤ q_min − e_q`).
+/// that nearly cancel; `1024·η ≤ q_min − e_q`). The composition is itself a theorem:
+/// `phong_composed` and `phong_composed_normalize` (`proofs/Composed.v`).
 pub fn phong_bound(a: &Arith, n: u32, q_min: f64, dn: f64) -> Option<f64> {
     if dn.is_nan() {
         return None;

@@ -182,9 +182,11 @@ fn the_docs_default_bounds_table_is_the_datas() {
 }
 
 /// No dead bound kind: every variant of the catalogue's profile columns
-/// (`FloatBound`, `FixedBound`, `DerivedForm`) is the kind of some method's row, and
-/// every method with a bound under a profile has a proved status there. The matches
-/// are exhaustive, so a new variant does not compile until it is listed here.
+/// (`FloatBound`, `FixedBound`, `DerivedForm`) is the kind of some method's row, every
+/// method with a bound under a profile has a proved status there, and every variant
+/// of `tolerance::profile::Status` is some method's status under `ieee`, `shader` or
+/// fixed point. The matches are exhaustive, so a new variant does not compile until it
+/// is listed here.
 #[test]
 fn every_bound_kind_is_used_by_a_row() {
     use phong_approx::method::{DerivedForm, FixedBound, FloatBound};
@@ -219,6 +221,9 @@ fn every_bound_kind_is_used_by_a_row() {
         "fixed Ratio",
         "fixed Picks",
         "fixed None",
+        // Every variant of `tolerance::profile::Status` is some method's label.
+        "status Proved",
+        "status PerPixel",
     ];
     let mut used = BTreeSet::new();
     for m in Method::ALL {
@@ -228,10 +233,22 @@ fn every_bound_kind_is_used_by_a_row() {
             used.insert(form(f));
         }
         used.insert(fixed(&row.fixed));
-        for p in [Profile::Ieee, Profile::Shader] {
+        for p in [
+            Profile::Ieee,
+            Profile::Shader,
+            Profile::Fixed {
+                int_bits: 16,
+                frac_bits: 16,
+            },
+        ] {
             match status(m, p, phong_approx::Format::Binary32) {
-                Some(Status::Proved(t) | Status::PerPixel(t)) => {
-                    assert!(!t.is_empty(), "{m} under {p}")
+                Some(Status::Proved(t)) => {
+                    assert!(!t.is_empty(), "{m} under {p}");
+                    used.insert("status Proved");
+                }
+                Some(Status::PerPixel(t)) => {
+                    assert!(!t.is_empty(), "{m} under {p}");
+                    used.insert("status PerPixel");
                 }
                 None => {}
             }

@@ -186,8 +186,8 @@ pub(crate) fn shader(theorem: &str, method: Method) {
 pub(crate) fn shader_by(theorem: &str, method: Method, ways: &[Division]) {
     let (alpha, beta) = common::coq::constants(theorem);
     let u = f32::U;
-    // The software GPU is slow: the spans up to n = 1024 in the default tier.
-    let most = tiered(1024, 4096);
+    // The software GPU is slow: the spans up to n = 256 in the default tier.
+    let most = tiered(256, 4096);
     let (mut checked, mut worst) = (0, 0f64);
     for (c, s) in spans().into_iter().filter(|(c, _)| c.n <= most) {
         let b = bound(alpha, beta, s.n, u);
@@ -295,7 +295,7 @@ pub(crate) fn gpu_closed(
 /// on two cores, more than CI's budget allows).
 pub(crate) fn shader_closed(theorem: &str, method: Method, ways: &[(Division, Halving)]) {
     let (_, beta) = common::coq::constants(theorem);
-    let most = tiered(1024, 4096);
+    let most = tiered(256, 4096);
     let (mut checked, mut worst) = (0, 0f64);
     let spans = spans().into_iter().filter(|(c, _)| c.n <= most);
     for (j, (c, s)) in spans.enumerate() {

@@ -106,6 +106,41 @@ fn at_least(what: &str, got: f64, want: f64) {
     );
 }
 
+/// Phong's grid: for each model, `n`, `q_min` and `dd` where `phong_bound` gives a
+/// bound `b`, the smallest `EP`, `EQ` the theorem's `*_errors_ok` allows over the
+/// forms `forms` keeps (the smaller of the two count theorems, either way of `/n`),
+/// handed to `check(what, profile, a, q_min, b, EP, EQ)`. Returns the points checked.
+fn phong_grid(
+    forms: impl Fn(&str) -> bool,
+    check: impl Fn(&str, &Arith, f64, f64, f64, f64),
+) -> usize {
+    let mut checked = 0;
+    for (profile, a) in models() {
+        let (k1, kds) = k1_kds(&a);
+        for n in [1u32, 2, 7, 64, 1000, 4096] {
+            for qmin in [1.0, 0.5, 0.1, 1e-2, 1e-3] {
+                for dd in [0.0, 0.1, 1.0, 2.0] {
+                    let Some(b) = phong_bound(&a, n, qmin, dd) else {
+                        continue;
+                    };
+                    let (mut ep, mut eq) = (0f64, 0f64);
+                    for c in PHONG_COUNTS.iter().filter(|c| forms(c.form)) {
+                        for kd in kds {
+                            let (p, q) = c.errors((k1, kd), dd);
+                            ep = ep.max(p * a.u);
+                            eq = eq.max(q * a.u);
+                        }
+                    }
+                    let what = format!("{profile} n = {n} q_min = {qmin} dd = {dd}");
+                    check(&what, &a, qmin, b, ep, eq);
+                    checked += 1;
+                }
+            }
+        }
+    }
+    checked
+}
+
 /// `proofs/Composed.v`, `phong_composed`: the count constants are `PHONG_COUNTS`, and
 /// `phong_bound` is at least the theorem's bound with `EP`, `EQ` the largest over the
 /// three forms of the smaller of the two count theorems, for either way of `/n`.
@@ -142,38 +177,17 @@ fn phong_composed() {
             .collect();
         assert_eq!(f("qd"), want, "{}_qd", c.form);
     }
-    let mut checked = 0;
-    for (profile, a) in models() {
-        let (k1, kds) = k1_kds(&a);
-        for n in [1u32, 2, 7, 64, 1000, 4096] {
-            for qmin in [1.0, 0.5, 0.1, 1e-2, 1e-3] {
-                for dd in [0.0, 0.1, 1.0, 2.0] {
-                    let Some(b) = phong_bound(&a, n, qmin, dd) else {
-                        continue;
-                    };
-                    let (mut ep, mut eq) = (0f64, 0f64);
-                    for c in PHONG_COUNTS {
-                        for kd in kds {
-                            let (p, q) = c.errors((k1, kd), dd);
-                            ep = ep.max(p * a.u);
-                            eq = eq.max(q * a.u);
-                        }
-                    }
-                    assert!(
-                        2.0 * eq <= qmin && 1024.0 * a.eta <= (qmin - eq).sqrt(),
-                        "{profile} n = {n}"
-                    );
-                    assert!((a.sqrt + a.div + a.mul) * a.u <= 1.0 / 1024.0);
-                    at_least(
-                        &format!("{profile} n = {n} q_min = {qmin} dd = {dd}"),
-                        b,
-                        rhs(&a, ep, eq, qmin, (a.sqrt, a.div, a.mul)),
-                    );
-                    checked += 1;
-                }
-            }
-        }
-    }
+    let checked = phong_grid(
+        |_| true,
+        |what, a, qmin, b, ep, eq| {
+            assert!(
+                2.0 * eq <= qmin && 1024.0 * a.eta <= (qmin - eq).sqrt(),
+                "{what}"
+            );
+            assert!((a.sqrt + a.div + a.mul) * a.u <= 1.0 / 1024.0);
+            at_least(what, b, rhs(a, ep, eq, qmin, (a.sqrt, a.div, a.mul)));
+        },
+    );
     assert!(checked >= 150, "{checked} points");
 }
 
@@ -192,39 +206,18 @@ fn phong_composed_normalize() {
     ]) {
         assert!(st.contains(part), "phong_composed_normalize's statement changed: no {part:?}");
     }
-    let mut checked = 0;
-    for (profile, a) in models() {
-        let (k1, kds) = k1_kds(&a);
-        let (u, eta) = (a.u, a.eta);
-        let lam = 1.0 + a.input * u + 2.0 * eta;
-        let term =
-            1.03 * lam * (a.mul * u + a.mul * u + 2.0 * (a.add * u)) + 2.0 * lam * eta + 8.0 * eta;
-        for n in [1u32, 2, 7, 64, 1000, 4096] {
-            for qmin in [1.0, 0.5, 0.1, 1e-2, 1e-3] {
-                for dd in [0.0, 0.1, 1.0, 2.0] {
-                    let Some(b) = phong_bound(&a, n, qmin, dd) else {
-                        continue;
-                    };
-                    let (mut ep, mut eq) = (0f64, 0f64);
-                    for c in PHONG_COUNTS.iter().filter(|c| c.form != "horner") {
-                        for kd in kds {
-                            let (p, q) = c.errors((k1, kd), dd);
-                            ep = ep.max(p * u);
-                            eq = eq.max(q * u);
-                        }
-                    }
-                    assert!(1024.0 * eta <= qmin - eq, "{profile} n = {n}");
-                    let want = rhs(&a, ep, eq, qmin, (a.sqrt, a.div, a.mul)) + term;
-                    at_least(
-                        &format!("{profile} n = {n} q_min = {qmin} dd = {dd}"),
-                        b,
-                        want,
-                    );
-                    checked += 1;
-                }
-            }
-        }
-    }
+    let checked = phong_grid(
+        |form| form != "horner",
+        |what, a, qmin, b, ep, eq| {
+            let (u, eta) = (a.u, a.eta);
+            let lam = 1.0 + a.input * u + 2.0 * eta;
+            let term = 1.03 * lam * (a.mul * u + a.mul * u + 2.0 * (a.add * u))
+                + 2.0 * lam * eta
+                + 8.0 * eta;
+            assert!(1024.0 * eta <= qmin - eq, "{what}");
+            at_least(what, b, rhs(a, ep, eq, qmin, (a.sqrt, a.div, a.mul)) + term);
+        },
+    );
     assert!(checked >= 150, "{checked} points");
 }
 

@@ -31,18 +31,6 @@ fn definition(text: &str, name: &str) -> String {
         .join(" ")
 }
 
-/// The statement of `Theorem name`, whitespace collapsed.
-fn statement(text: &str, name: &str) -> String {
-    let at = text
-        .find(&format!("Theorem {name} :"))
-        .unwrap_or_else(|| panic!("no Theorem {name} in Composed.v"));
-    let rest = &text[at..];
-    rest[..rest.find(".\nProof.").unwrap()]
-        .split_whitespace()
-        .collect::<Vec<_>>()
-        .join(" ")
-}
-
 /// The fractions `a / 100` (or `/ 1000`) of a definition, in order, as `f64`.
 fn fractions(def: &str) -> Vec<f64> {
     let t: Vec<&str> = def.split_whitespace().collect();
@@ -147,7 +135,7 @@ fn phong_grid(
 #[test]
 fn phong_composed() {
     let text = composed();
-    let st = statement(&text, "phong_composed");
+    let st = common::coq::statement("proofs/Composed.v", "phong_composed");
     for part in RHS_TEXT.iter().chain(&[
         "phong_form_ok M s na nb l i ph qh",
         "phong_errors_ok M K1 dd EP EQ",
@@ -196,8 +184,7 @@ fn phong_composed() {
 /// `EP`, `EQ` over those two forms; `phong_bound` is at least that.
 #[test]
 fn phong_composed_normalize() {
-    let text = composed();
-    let st = statement(&text, "phong_composed_normalize");
+    let st = common::coq::statement("proofs/Composed.v", "phong_composed_normalize");
     for part in RHS_TEXT.iter().chain(&[
         "normal_form_ok M s na nb i nh",
         "pl_errors_ok M K1 dd EP EQ",
@@ -243,7 +230,7 @@ fn duff_counts(text: &str, a: &Arith, sp: f64, sq: f64) -> (f64, f64) {
 #[test]
 fn duff_composed() {
     let text = composed();
-    let st = statement(&text, "duff_composed");
+    let st = common::coq::statement("proofs/Composed.v", "duff_composed");
     for part in RHS_TEXT.iter().chain(&[
         "duff_form_ok M s na nb l P Q G",
         "INR i <= SP -> INR i <= SQ",
@@ -286,7 +273,7 @@ fn duff_composed() {
 #[test]
 fn symmetric_phong_composed() {
     let text = composed();
-    let st = statement(&text, "symmetric_phong_composed");
+    let st = common::coq::statement("proofs/Composed.v", "symmetric_phong_composed");
     for part in RHS_TEXT.iter().chain(&[
         "INR (Nat.min i (n s - i)) <= SQ",
         "duff_errors_ok M K1 SP SQ EP EQ",

@@ -9,6 +9,21 @@ fn read(p: &str) -> String {
     std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{p}: {e}"))
 }
 
+/// The statement of `Theorem name` in `file` (a path from the crate's root), from
+/// `Theorem name :` to the `.` that ends it before `Proof.`, its whitespace collapsed
+/// to single spaces, so that a test can look for a formula as it is written.
+pub fn statement(file: &str, name: &str) -> String {
+    let text = read(file);
+    let at = text
+        .find(&format!("Theorem {name} :"))
+        .unwrap_or_else(|| panic!("no Theorem {name} in {file}"));
+    let rest = &text[at..];
+    let end = rest
+        .find(".\nProof.")
+        .unwrap_or_else(|| panic!("{file}: {name} ends before Proof."));
+    rest[..end].split_whitespace().collect::<Vec<_>>().join(" ")
+}
+
 /// One bound theorem of `proofs/Profiles.v` as its statement gives it: `α` and `β` as
 /// fractions (`α = 0` for the closed forms), the largest `n`, and `u = 2^-e`.
 #[derive(Debug, PartialEq)]

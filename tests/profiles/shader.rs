@@ -508,21 +508,6 @@ fn the_gpu_model_rounds_as_the_shader_profile_allows() {
 
 // ------------------------------------------- Phong under ieee (derived, §18.4)
 
-/// The statement of `name` in `proofs/ShaderSqrt.v`, from `Theorem name` to the `.` that
-/// ends it, with its whitespace collapsed.
-fn shader_sqrt_statement(name: &str) -> String {
-    let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/proofs/ShaderSqrt.v"))
-        .expect("proofs/ShaderSqrt.v");
-    let start = text
-        .find(&format!("Theorem {name} :"))
-        .unwrap_or_else(|| panic!("no Theorem {name} in ShaderSqrt.v"));
-    let rest = &text[start..];
-    let end = rest
-        .find(".\nProof.")
-        .expect("a statement ends before Proof.");
-    rest[..end].split_whitespace().collect::<Vec<_>>().join(" ")
-}
-
 /// `proofs/ShaderSqrt.v`, `shader_sqrt_recip_rsqrt`: a square root taken as
 /// `1/inverseSqrt(x)` — `inverseSqrt` within `4u` relative, the reciprocal within `5u` —
 /// is within `(9 + 2^-18)u·√x` for `u ≤ 2^-24`. Checked exactly in rationals on
@@ -534,7 +519,7 @@ fn shader_sqrt_statement(name: &str) -> String {
 /// division under `shader`.
 #[test]
 fn shader_sqrt_recip_rsqrt() {
-    let st = shader_sqrt_statement("shader_sqrt_recip_rsqrt");
+    let st = common::coq::statement("proofs/ShaderSqrt.v", "shader_sqrt_recip_rsqrt");
     for part in [
         "0 <= u <= / 16777216",
         "Rabs (r - / sqrt x) <= 4 * u * Rabs (/ sqrt x)",
@@ -591,7 +576,7 @@ fn shader_sqrt_recip_rsqrt() {
 /// binary32 range are within it.
 #[test]
 fn shader_sqrt_recip_rsqrt_ap1() {
-    let st = shader_sqrt_statement("shader_sqrt_recip_rsqrt_ap1");
+    let st = common::coq::statement("proofs/ShaderSqrt.v", "shader_sqrt_recip_rsqrt_ap1");
     for part in [
         "ap1 (4 * u) 0 r (/ sqrt x)",
         "ap1 (5 * u) 0 y (/ r)",

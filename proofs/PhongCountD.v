@@ -923,6 +923,36 @@ Proof.
   - unfold wsum0, wM; unfold vsub in *; cbn [vx vy vz] in *. lra.
 Qed.
 
+(** The pixel's ranges: n <> 0, 1 <= n <= 2^24, 0 <= i <= n, 0 <= i/n <= 1. *)
+Lemma hk_pix : forall i : nat, (i <= n s)%nat ->
+  (n s <> 0)%nat /\ 1 <= INR (n s) <= 16777216 /\ 0 <= INR i <= INR (n s)
+  /\ 0 <= INR i / INR (n s) <= 1.
+Proof.
+  intros i Hi.
+  assert (Hm : 1 <= INR (n s) <= 16777216) by (split; [apply (le_INR 1); exact Hn1 | exact Hn2]).
+  assert (Hii : 0 <= INR i <= INR (n s)) by (split; [apply pos_INR | apply le_INR; exact Hi]).
+  repeat split; try lia; try lra; apply theta_rng; lra.
+Qed.
+
+(** The two dot products of a computed normal nh within the mixture weights
+    (c1, c2 for v; 1.001 for d) of N(i/n): [pd_tail] at p(i), q(i). *)
+Lemma nrm_core : forall (l nh : vec) (i : nat) (ph qh c1 c2 : R),
+  is_unit (L s) -> (i <= n s)%nat -> vap1 v eta l (L s) -> 0 <= c1 <= 4 -> 0 <= c2 <= 3 ->
+  vapprox 1 1 nh (nrm s (INR i / INR (n s)))
+    (vlin v d (wM (Na s) (Nb s) (INR i / INR (n s)) c1 c2)
+              (wM (Na s) (Nb s) (INR i / INR (n s)) 0 (1001 / 1000))) ->
+  fdot_rel v v eta nh l ph -> fdot_rel v v eta nh nh qh ->
+  Rabs (ph - p s (INR i)) <= (c1 + c2 * dd + 402 / 100) * v + (1001 / 1000 * dd + 2 / 100) * d /\
+  Rabs (qh - q s (INR i)) <= (2 * c1 + 2 * c2 * dd + 302 / 100) * v
+                             + (2 * (1001 / 1000) * dd + 2 / 100) * d.
+Proof.
+  intros l nh i ph qh c1 c2 Hl Hi Inl Hc1 Hc2 VN Hp Hq.
+  destruct HDd as [Hdd HD]. destruct (hk_pix i Hi) as (Hn0 & _ & _ & Ht).
+  rewrite pp_p_form, pp_q_form by exact Hn0.
+  exact (pd_tail v d eta s nh l _ ph qh dd c1 c2 (1001 / 1000) Hv Hdv Ha Hb Hl Ht (proj1 Hdd) HD
+           Hc1 Hc2 ltac:(lra) Inl VN Hp Hq).
+Qed.
+
 (** The per-pixel normal, the lerp and Horner's closed form on the section's
     set-up. *)
 Lemma pd_core : forall (l nh : vec) (i : nat) (zx zy zz ph qh : R),
@@ -937,24 +967,14 @@ Lemma pd_core : forall (l nh : vec) (i : nat) (zx zy zz ph qh : R),
                              + (2 * (1001 / 1000) * dd + 2 / 100) * d.
 Proof.
   intros l nh i zx zy zz ph qh Hl Hi Inl Hzx Hnx Hzy Hny Hzz Hnz Hp Hq.
-  pose proof HDd as [Hdd HD].
-  assert (Hn0 : (n s <> 0)%nat) by lia.
-  assert (Hm : 1 <= INR (n s) <= 16777216) by (split; [apply (le_INR 1); exact Hn1 | exact Hn2]).
-  assert (Hii : 0 <= INR i <= INR (n s)) by (split; [apply pos_INR | apply le_INR; exact Hi]).
-  pose proof (theta_rng (INR (n s)) (INR i) ltac:(lra) Hii) as Ht.
+  destruct (hk_pix i Hi) as (_ & Hm & Hii & _).
   destruct (unit_bounded _ Ha) as [A1 [A2 A3]].
   destruct (unit_bounded _ Hb) as [B1 [B2 B3]].
   pose proof Ina as [Ia1 [Ia2 Ia3]]. pose proof Inb as [Ib1 [Ib2 Ib3]].
-  assert (VN : vapprox 1 1 nh (nrm s (INR i / INR (n s)))
-                 (vlin v d (wM (Na s) (Nb s) (INR i / INR (n s)) 2 (2001 / 1000))
-                           (wM (Na s) (Nb s) (INR i / INR (n s)) 0 (1001 / 1000)))).
-  { unfold vapprox, vlin, wM, nrm, vadd, vscale, vsub; cbn [vx vy vz]. rewrite !Rmult_1_l.
-    repeat split; eapply pd_comp; eassumption. }
-  rewrite pp_p_form, pp_q_form by exact Hn0.
-  exact (pd_tail v d eta s nh l _ ph qh dd 2 (2001 / 1000) (1001 / 1000) Hv Hdv Ha Hb Hl Ht (proj1 Hdd) HD
-           ltac:(lra) ltac:(lra) ltac:(lra) Inl VN Hp Hq).
+  apply (nrm_core l nh); try assumption; try lra.
+  unfold vapprox, vlin, wM, nrm, vadd, vscale, vsub; cbn [vx vy vz]. rewrite !Rmult_1_l.
+  repeat split; eapply pd_comp; eassumption.
 Qed.
-
 
 Lemma ld_core : forall (l nh : vec) (i : nat) (th wx wy wz ax ay az bx by_ bz ph qh : R),
   is_unit (L s) -> (i <= n s)%nat -> vap1 v eta l (L s) ->
@@ -972,25 +992,16 @@ Lemma ld_core : forall (l nh : vec) (i : nat) (th wx wy wz ax ay az bx by_ bz ph
 Proof.
   intros l nh i th wx wy wz ax ay az bx by_ bz ph qh Hl Hi Inl Hth Hp Hq
     Hnx Hbx Hax Hwx Hny Hby Hay Hwy Hnz Hbz Haz Hwz.
-  pose proof HDd as [Hdd HD].
-  assert (Hn0 : (n s <> 0)%nat) by lia.
-  assert (Hm : 1 <= INR (n s) <= 16777216) by (split; [apply (le_INR 1); exact Hn1 | exact Hn2]).
-  assert (Hii : 0 <= INR i <= INR (n s)) by (split; [apply pos_INR | apply le_INR; exact Hi]).
-  pose proof (theta_rng (INR (n s)) (INR i) ltac:(lra) Hii) as Ht.
+  destruct (hk_pix i Hi) as (_ & Hm & Hii & _).
   destruct (unit_bounded _ Ha) as [A1 [A2 A3]].
   destruct (unit_bounded _ Hb) as [B1 [B2 B3]].
   pose proof Ina as [Ia1 [Ia2 Ia3]]. pose proof Inb as [Ib1 [Ib2 Ib3]].
-  assert (VN : vapprox 1 1 nh (nrm s (INR i / INR (n s)))
-                 (vlin v d (wM (Na s) (Nb s) (INR i / INR (n s)) 4 0)
-                           (wM (Na s) (Nb s) (INR i / INR (n s)) 0 (1001 / 1000)))).
-  { unfold vapprox, vlin, wM, nrm, vadd, vscale, vsub; cbn [vx vy vz]. rewrite !Rmult_1_l.
-    repeat split.
-    - exact (ld_comp v d eta _ _ _ _ _ _ _ _ _ _ _ Hv Hdv Hm Hii A1 B1 Ia1 Ib1 Hth Hwx Hax Hbx Hnx).
-    - exact (ld_comp v d eta _ _ _ _ _ _ _ _ _ _ _ Hv Hdv Hm Hii A2 B2 Ia2 Ib2 Hth Hwy Hay Hby Hny).
-    - exact (ld_comp v d eta _ _ _ _ _ _ _ _ _ _ _ Hv Hdv Hm Hii A3 B3 Ia3 Ib3 Hth Hwz Haz Hbz Hnz). }
-  rewrite pp_p_form, pp_q_form by exact Hn0.
-  exact (pd_tail v d eta s nh l _ ph qh dd 4 0 (1001 / 1000) Hv Hdv Ha Hb Hl Ht (proj1 Hdd) HD
-           ltac:(lra) ltac:(lra) ltac:(lra) Inl VN Hp Hq).
+  apply (nrm_core l nh); try assumption; try lra.
+  unfold vapprox, vlin, wM, nrm, vadd, vscale, vsub; cbn [vx vy vz]. rewrite !Rmult_1_l.
+  repeat split.
+  - exact (ld_comp v d eta _ _ _ _ _ _ _ _ _ _ _ Hv Hdv Hm Hii A1 B1 Ia1 Ib1 Hth Hwx Hax Hbx Hnx).
+  - exact (ld_comp v d eta _ _ _ _ _ _ _ _ _ _ _ Hv Hdv Hm Hii A2 B2 Ia2 Ib2 Hth Hwy Hay Hby Hny).
+  - exact (ld_comp v d eta _ _ _ _ _ _ _ _ _ _ _ Hv Hdv Hm Hii A3 B3 Ia3 Ib3 Hth Hwz Haz Hbz Hnz).
 Qed.
 
 
@@ -1007,10 +1018,7 @@ Lemma horner_core_d : forall (l : vec) (fa fb fc e fe : R) (i : nat) (x ph y1 y2
 Proof.
   intros l fa fb fc e fe i x ph y1 y2 y3 qh Hl Hi Inl Hfa Hfb Hfc Hfe0 Hfe Hx Hph Hy1 Hy2 Hy3 Hqh.
   v_facts Hv. v_facts Hdv.
-  pose proof HDd as [Hdd HD].
-  assert (Hn0 : (n s <> 0)%nat) by lia.
-  assert (Hm : 1 <= INR (n s) <= 16777216) by (split; [apply (le_INR 1); exact Hn1 | exact Hn2]).
-  assert (Hii : 0 <= INR i <= INR (n s)) by (split; [apply pos_INR | apply le_INR; exact Hi]).
+  pose proof HDd as [Hdd HD]. destruct (hk_pix i Hi) as (Hn0 & Hm & Hii & Ht).
   pose proof (kx_dot l (L s) fa Hl Inl Hfa) as CA.
   pose proof (K_pa v d eta Hv Hdv s Ha Hb Hl na l fb Ina Inl Hfb) as CB.
   pose proof (kk_dot fc Hfc) as CC.
@@ -1040,13 +1048,13 @@ Proof.
   - rewrite hc_p_form by exact Hn0.
     eapply Rle_trans.
     + eapply (hp_abs_d v eta (INR (n s)) (INR i) fa fb _ _ _ _ _ _ dd); try eassumption; try lra.
-      apply hc_p_le1; try assumption. apply theta_rng; lra.
+      apply hc_p_le1; assumption.
     + lra.
   - rewrite hc_q_form by exact Hn0.
     eapply Rle_trans.
     + eapply (hq_abs_d v eta (INR (n s)) (INR i) fc e fe _ _ _ _ _ _ _ _ _ _ (dd * dd) dd);
         try eassumption; try lra.
-      apply hc_q_le1; try assumption. apply theta_rng; lra.
+      apply hc_q_le1; assumption.
     + lra.
 Qed.
 
@@ -1054,27 +1062,6 @@ Qed.
 End HK.
 
 (** ** With the model's operations *)
-
-Lemma dd_fin : forall (u K1 kd dd A0 A1 B0 B1 a0 a1 b0 b1 E : R),
-  0 < u -> 1 <= K1 -> 1 <= kd -> 0 <= dd -> A0 <= a0 -> A1 <= a1 -> B0 <= b0 -> B1 <= b1 ->
-  0 <= A1 -> 0 <= B1 ->
-  E <= (A0 + A1 * dd) * (K1 * u) + (B1 * dd + B0) * (kd * u) ->
-  E <= ((a0 + a1 * dd) * K1 + (b0 + b1 * dd) * kd) * u.
-Proof.
-  intros u K1 kd dd A0 A1 B0 B1 a0 a1 b0 b1 E Hu HK Hk Hd H1 H2 H3 H4 H5 H6 HE.
-  eapply Rle_trans; [exact HE|].
-  assert (P1 : 0 <= K1 * u) by (apply Rmult_le_pos; lra).
-  assert (P2 : 0 <= kd * u) by (apply Rmult_le_pos; lra).
-  assert (Q1 : (A0 + A1 * dd) <= (a0 + a1 * dd)).
-  { assert (A1 * dd <= a1 * dd) by (apply Rmult_le_compat_r; lra). lra. }
-  assert (Q2 : (B1 * dd + B0) <= (b0 + b1 * dd)).
-  { assert (B1 * dd <= b1 * dd) by (apply Rmult_le_compat_r; lra). lra. }
-  assert ((A0 + A1 * dd) * (K1 * u) <= (a0 + a1 * dd) * (K1 * u))
-    by (apply Rmult_le_compat_r; lra).
-  assert ((B1 * dd + B0) * (kd * u) <= (b0 + b1 * dd) * (kd * u))
-    by (apply Rmult_le_compat_r; lra).
-  lra.
-Qed.
 
 Lemma dd_fin2 : forall (u K1 kd dd A0 A1 A2 B0 B1 B2 a0 a1 a2 b0 b1 b2 E : R),
   0 < u -> 1 <= K1 -> 1 <= kd -> 0 <= dd -> A0 <= a0 -> A1 <= a1 -> A2 <= a2 ->
@@ -1099,6 +1086,18 @@ Proof.
     by (apply Rmult_le_compat_r; lra).
   lra.
 Qed.
+
+Lemma dd_fin : forall (u K1 kd dd A0 A1 B0 B1 a0 a1 b0 b1 E : R),
+  0 < u -> 1 <= K1 -> 1 <= kd -> 0 <= dd -> A0 <= a0 -> A1 <= a1 -> B0 <= b0 -> B1 <= b1 ->
+  0 <= A1 -> 0 <= B1 ->
+  E <= (A0 + A1 * dd) * (K1 * u) + (B1 * dd + B0) * (kd * u) ->
+  E <= ((a0 + a1 * dd) * K1 + (b0 + b1 * dd) * kd) * u.
+Proof.
+  intros u K1 kd dd A0 A1 B0 B1 a0 a1 b0 b1 E Hu HK Hk Hd H1 H2 H3 H4 _ _ HE.
+  pose proof (dd_fin2 u K1 kd dd A0 A1 0 B0 B1 0 a0 a1 0 b0 b1 0 E Hu HK Hk Hd H1 H2
+                (Rle_refl 0) H3 H4 (Rle_refl 0) ltac:(lra)). lra.
+Qed.
+
 
 (** Every input, addition, product and dot product of the model within unit
     K1 u ([hm_vap], [hm_ap], [hm_fdot]). *)

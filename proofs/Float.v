@@ -433,6 +433,78 @@ Proof.
   unfold Rdiv. apply Rmult_le_compat_r; [apply Rlt_le, Rinv_0_lt_compat|]; lra.
 Qed.
 
+(** n(n-1)/2 x for n^2 x within E <= 0.002 of Y, |Y| <= 2 (the set-up's
+    n(n-1)/2 ds, here and in Profiles.v). *)
+Lemma Yb_near : forall m x Y E : R, 1 <= m -> Rabs (m * m * x - Y) <= E -> Rabs Y <= 2 ->
+  E <= 2 / 1000 -> Rabs (m * (m - 1) / 2 * x) <= 1001 / 1000.
+Proof.
+  intros m x Y E Hm H HY HE.
+  replace (m * (m - 1) / 2 * x) with ((m - 1) / (2 * m) * (m * m * x)) by (field; lra).
+  rewrite Rabs_mult.
+  assert (Rabs ((m - 1) / (2 * m)) <= 1 / 2).
+  { rewrite Rabs_pos_eq.
+    - apply (Rmult_le_reg_r (2 * m)); [lra|]. unfold Rdiv.
+      rewrite Rmult_assoc, Rinv_l by lra. lra.
+    - unfold Rdiv. apply Rmult_le_pos; [lra | apply Rlt_le, Rinv_0_lt_compat; lra]. }
+  pose proof (abs_near _ _ _ H).
+  replace (1001 / 1000) with (1 / 2 * (2002 / 1000)) by field.
+  apply Rmult_le_compat; try apply Rabs_pos; lra.
+Qed.
+
+(** The corrected Euler values and slopes on computed p_a, p_b (within Ea),
+    t0 (n t0 within ER of p_b - p_a - n(n-1)/2 ds) and ds (n^2 ds within Eds),
+    here and in Profiles.v. *)
+Section Near.
+Context (s : span) (Hua : is_unit (Na s)) (Hub : is_unit (Nb s)) (Hul : is_unit (L s))
+        (Hn1 : (1 <= n s)%nat).
+Context (fpa fpb ft0 fds Ea ER Eds : R) (Hpa : Rabs (fpa - pa s) <= Ea)
+        (Hpb : Rabs (fpb - pb s) <= Ea)
+        (HR : Rabs (INR (n s) * ft0 - (fpb - fpa - INR (n s) * (INR (n s) - 1) / 2 * fds)) <= ER)
+        (Hds : Rabs (INR (n s) * INR (n s) * fds - e_n2ds s) <= Eds).
+Local Notation nr := (INR (n s)).
+
+Lemma ce_near : forall i, (i <= n s)%nat ->
+  Rabs (fpa + INR i * ft0 + INR i * (INR i - 1) / 2 * fds - ceuler s i) <= Ea + ER + Eds / 8.
+Proof.
+  intros i Hi. pose proof (nr_ge1 s Hn1).
+  assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
+  rewrite ceuler_closed_form, (t0_closed_form s ltac:(lia)), (ds_scaled s ltac:(lia)).
+  rewrite (ce_identity nr (INR i) fpa fpb) by lra.
+  replace (nr * (nr - 1) / 2 * fds) with ((nr - 1) / (2 * nr) * (nr * nr * fds)) in HR
+    by (field; lra).
+  apply comb_bound; [apply theta_rng; lra | apply kappa_rng; lra | assumption..].
+Qed.
+
+(** Computed slopes (ideal, on the computed t0 and ds) for 1 <= J <= n-1. *)
+Lemma slope_near : forall J, (J < n s)%nat ->
+  Rabs (nr * (ft0 + INR J * fds)) <= 2 + (ER + 2 * Ea + Eds).
+Proof.
+  intros J HJ. pose proof (nr_ge1 s Hn1).
+  assert (HJ' : 0 <= INR J <= nr) by (split; [apply pos_INR | apply le_INR; lia]).
+  pose proof (slope_le s Hua Hub Hul Hn1 J HJ) as G0.
+  rewrite (t0_closed_form s ltac:(lia)), (ds_scaled s ltac:(lia)) in G0.
+  set (X := nr * ((pb s - pa s) / nr - (nr - 1) / 2 * (e_n2ds s / (nr * nr))
+                  + INR J * (e_n2ds s / (nr * nr)))) in *.
+  assert (E : nr * (ft0 + INR J * fds) - X =
+     (nr * ft0 - (fpb - fpa - nr * (nr - 1) / 2 * fds))
+     + ((fpb - pb s) - (fpa - pa s))
+     + (INR J / nr - (nr - 1) / (2 * nr)) * (nr * nr * fds - e_n2ds s))
+    by (unfold X; field; lra).
+  assert (Hg : Rabs (INR J / nr - (nr - 1) / (2 * nr)) <= 1).
+  { pose proof (theta_rng nr (INR J) ltac:(lra) HJ').
+    pose proof (theta_rng nr ((nr - 1) / 2) ltac:(lra) ltac:(lra)).
+    replace ((nr - 1) / (2 * nr)) with ((nr - 1) / 2 / nr) by (field; lra).
+    apply Rabs_le. lra. }
+  assert (B : Rabs (nr * (ft0 + INR J * fds) - X) <= ER + 2 * Ea + Eds).
+  { rewrite E. eapply Rle_trans; [apply tri3|]. rewrite Rabs_mult.
+    assert (Rabs (INR J / nr - (nr - 1) / (2 * nr)) * Rabs (nr * nr * fds - e_n2ds s)
+            <= 1 * Eds) by (apply Rmult_le_compat; try apply Rabs_pos; lra).
+    pose proof (absdiff (fpb - pb s) (fpa - pa s)). lra. }
+  pose proof (abs_near _ _ _ B). lra.
+Qed.
+
+End Near.
+
 (** The facts on the unit inputs of a span used by the set-up bounds (here
     and in Profiles.v): component bounds, products, squares. *)
 Ltac unit_facts_of s Hua Hub Hul :=
@@ -753,22 +825,8 @@ Proof.
 Qed.
 
 (** The correction t0 = di_a - (p_n - p_b)/n. *)
-Lemma L_Y : f_tri s * f_ds rnd s = (nr - 1) / (2 * nr) * (nr * nr * f_ds rnd s).
-Proof. basics. unfold f_tri. field. lra. Qed.
-
 Lemma L_Yb : Rabs (f_tri s * f_ds rnd s) <= 1001 / 1000.
-Proof.
-  basics. pose proof L_ds as G0. pose proof (n2ds_le s Hua Hub Hul) as G1.
-  rewrite L_Y, Rabs_mult.
-  assert (Rabs ((nr - 1) / (2 * nr)) <= 1 / 2).
-  { rewrite Rabs_pos_eq.
-    - apply (Rmult_le_reg_r (2 * nr)); [lra|]. unfold Rdiv.
-      rewrite Rmult_assoc, Rinv_l by lra. lra.
-    - unfold Rdiv. apply Rmult_le_pos; [lra | apply Rlt_le, Rinv_0_lt_compat; lra]. }
-  pose proof (abs_near _ _ _ G0).
-  replace (1001 / 1000) with (1 / 2 * (2002 / 1000)) by field.
-  apply Rmult_le_compat; try apply Rabs_pos; lra.
-Qed.
+Proof. basics. exact (Yb_near nr _ _ _ ltac:(lra) L_ds (n2ds_le s Hua Hub Hul) ltac:(lra)). Qed.
 
 Lemma L_rhon : Rabs (f_pn rnd s - (f_pa rnd s + nr * f_dia rnd s + f_tri s * f_ds rnd s))
                <= 1002 / 100 * u.
@@ -880,14 +938,7 @@ Lemma ce_ideal : forall i, (i <= n s)%nat ->
   <= 4197 / 100 * u.
 Proof.
   intros i Hi. basics.
-  assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
-  rewrite ceuler_closed_form, (t0_closed_form s ltac:(lia)), (ds_scaled s ltac:(lia)).
-  rewrite (ce_identity nr (INR i) (f_pa rnd s) (f_pb rnd s)) by lra.
-  pose proof L_R as G0. rewrite L_Y in G0.
-  eapply Rle_trans.
-  { apply comb_bound; [apply theta_rng; lra | apply kappa_rng; lra | apply L_pa | apply L_pb
-                      | exact G0 | apply L_ds]. }
-  lra.
+  pose proof (ce_near s Hn1 _ _ _ _ _ _ _ L_pa L_pb L_R L_ds i Hi). lra.
 Qed.
 
 Lemma g_ideal : forall i, (i <= n s)%nat ->
@@ -906,35 +957,11 @@ Proof.
   lra.
 Qed.
 
-(** Computed slopes (ideal, on the computed t0 and ds) for 1 <= J <= n-1. *)
 Lemma slope_f : forall J, (J < n s)%nat ->
   Rabs (nr * (f_t0 rnd s + INR J * f_ds rnd s)) <= 2 + 200 * u.
 Proof.
   intros J HJ. basics.
-  assert (HJ' : 0 <= INR J <= nr) by (split; [apply pos_INR | apply le_INR; lia]).
-  pose proof (slope_le s Hua Hub Hul Hn1 J HJ) as G0.
-  rewrite (t0_closed_form s ltac:(lia)), (ds_scaled s ltac:(lia)) in G0.
-  pose proof L_R as G1. rewrite L_Y in G1. pose proof L_ds as G2.
-  pose proof L_pa as G3. pose proof L_pb as G4.
-  apply (Rle_trans _ _ _ (abs_near _ _ _ (Rle_refl _))) || idtac.
-  set (X := nr * ((pb s - pa s) / nr - (nr - 1) / 2 * (e_n2ds s / (nr * nr))
-                  + INR J * (e_n2ds s / (nr * nr)))) in *.
-  assert (E : nr * (f_t0 rnd s + INR J * f_ds rnd s) - X =
-     (nr * f_t0 rnd s - (f_pb rnd s - f_pa rnd s - (nr - 1) / (2 * nr) * (nr * nr * f_ds rnd s)))
-     + ((f_pb rnd s - pb s) - (f_pa rnd s - pa s))
-     + (INR J / nr - (nr - 1) / (2 * nr)) * (nr * nr * f_ds rnd s - e_n2ds s))
-    by (unfold X; field; lra).
-  assert (Hg : Rabs (INR J / nr - (nr - 1) / (2 * nr)) <= 1).
-  { pose proof (theta_rng nr (INR J) ltac:(lra) HJ').
-    pose proof (theta_rng nr ((nr - 1) / 2) ltac:(lra) ltac:(lra)).
-    replace ((nr - 1) / (2 * nr)) with ((nr - 1) / 2 / nr) by (field; lra).
-    apply Rabs_le. lra. }
-  assert (B : Rabs (nr * (f_t0 rnd s + INR J * f_ds rnd s) - X) <= 200 * u).
-  { rewrite E. eapply Rle_trans; [apply tri3|]. rewrite Rabs_mult.
-    assert (Rabs (INR J / nr - (nr - 1) / (2 * nr)) * Rabs (nr * nr * f_ds rnd s - e_n2ds s)
-            <= 1 * (1109 / 10 * u)) by (apply Rmult_le_compat; try apply Rabs_pos; lra).
-    pose proof (absdiff (f_pb rnd s - pb s) (f_pa rnd s - pa s)). lra. }
-  pose proof (abs_near _ _ _ B). lra.
+  pose proof (slope_near s Hua Hub Hul Hn1 _ _ _ _ _ _ _ L_pa L_pb L_R L_ds J HJ). lra.
 Qed.
 
 Lemma ce_final : forall i, (i <= n s)%nat ->

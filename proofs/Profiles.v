@@ -1013,22 +1013,8 @@ Proof.
   lra.
 Qed.
 
-Lemma K_Y : nr * (nr - 1) / 2 * fds = (nr - 1) / (2 * nr) * (nr * nr * fds).
-Proof. basics. field. lra. Qed.
-
 Lemma K_Yb : Rabs (nr * (nr - 1) / 2 * fds) <= 1001 / 1000.
-Proof.
-  basics. pose proof K_ds as G0. pose proof (n2ds_le s Hua Hub Hul) as G1.
-  rewrite K_Y, Rabs_mult.
-  assert (Rabs ((nr - 1) / (2 * nr)) <= 1 / 2).
-  { rewrite Rabs_pos_eq.
-    - apply (Rmult_le_reg_r (2 * nr)); [lra|]. unfold Rdiv.
-      rewrite Rmult_assoc, Rinv_l by lra. lra.
-    - unfold Rdiv. apply Rmult_le_pos; [lra | apply Rlt_le, Rinv_0_lt_compat; lra]. }
-  pose proof (abs_near _ _ _ G0).
-  replace (1001 / 1000) with (1 / 2 * (2002 / 1000)) by field.
-  apply Rmult_le_compat; try apply Rabs_pos; lra.
-Qed.
+Proof. basics. exact (Yb_near nr _ _ _ ltac:(lra) K_ds (n2ds_le s Hua Hub Hul) ltac:(lra)). Qed.
 
 (** p_n = p_a + n di_a + n(n-1)/2 ds, the three terms summed in any order. *)
 Lemma K_rhon : Rabs (fpn - (fpa + nr * fdia + nr * (nr - 1) / 2 * fds)) <= 1202 / 100 * v.
@@ -1110,14 +1096,7 @@ Lemma K_ce_ideal : forall i, (i <= n s)%nat ->
   <= 3656 / 100 * v + 727 / 100 * d.
 Proof.
   intros i Hi. basics.
-  assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
-  rewrite ceuler_closed_form, (t0_closed_form s ltac:(lia)), (ds_scaled s ltac:(lia)).
-  rewrite (ce_identity nr (INR i) fpa fpb) by lra.
-  pose proof K_R as G0. rewrite K_Y in G0.
-  eapply Rle_trans.
-  { apply comb_bound; [apply theta_rng; lra | apply kappa_rng; lra | apply K_pa | apply K_pb
-                      | exact G0 | apply K_ds]. }
-  lra.
+  pose proof (ce_near s Hn1 _ _ _ _ _ _ _ K_pa K_pb K_R K_ds i Hi). lra.
 Qed.
 
 (** Computed slopes (ideal, on the computed t0 and ds) for 1 <= J <= n-1. *)
@@ -1125,30 +1104,7 @@ Lemma K_slope : forall J, (J < n s)%nat ->
   Rabs (nr * (ft0 + INR J * fds)) <= 2 + 200 * (v + d).
 Proof.
   intros J HJ. basics.
-  assert (HJ' : 0 <= INR J <= nr) by (split; [apply pos_INR | apply le_INR; lia]).
-  pose proof (slope_le s Hua Hub Hul Hn1 J HJ) as G0.
-  rewrite (t0_closed_form s ltac:(lia)), (ds_scaled s ltac:(lia)) in G0.
-  pose proof K_R as G1. rewrite K_Y in G1. pose proof K_ds as G2.
-  pose proof K_pa as G3. pose proof K_pb as G4.
-  set (X := nr * ((pb s - pa s) / nr - (nr - 1) / 2 * (e_n2ds s / (nr * nr))
-                  + INR J * (e_n2ds s / (nr * nr)))) in *.
-  assert (E : nr * (ft0 + INR J * fds) - X =
-     (nr * ft0 - (fpb - fpa - (nr - 1) / (2 * nr) * (nr * nr * fds)))
-     + ((fpb - pb s) - (fpa - pa s))
-     + (INR J / nr - (nr - 1) / (2 * nr)) * (nr * nr * fds - e_n2ds s))
-    by (unfold X; field; lra).
-  assert (Hg : Rabs (INR J / nr - (nr - 1) / (2 * nr)) <= 1).
-  { pose proof (theta_rng nr (INR J) ltac:(lra) HJ').
-    pose proof (theta_rng nr ((nr - 1) / 2) ltac:(lra) ltac:(lra)).
-    replace ((nr - 1) / (2 * nr)) with ((nr - 1) / 2 / nr) by (field; lra).
-    apply Rabs_le. lra. }
-  assert (B : Rabs (nr * (ft0 + INR J * fds) - X) <= 200 * (v + d)).
-  { rewrite E. eapply Rle_trans; [apply tri3|]. rewrite Rabs_mult.
-    assert (Rabs (INR J / nr - (nr - 1) / (2 * nr)) * Rabs (nr * nr * fds - e_n2ds s)
-            <= 1 * (9211 / 100 * v + 1806 / 100 * d))
-      by (apply Rmult_le_compat; try apply Rabs_pos; lra).
-    pose proof (absdiff (fpb - pb s) (fpa - pa s)). lra. }
-  pose proof (abs_near _ _ _ B). lra.
+  pose proof (slope_near s Hua Hub Hul Hn1 _ _ _ _ _ _ _ K_pa K_pb K_R K_ds J HJ). lra.
 Qed.
 
 (** The loops p += s, s += ds from (p_a, t), t = t0 (corrected Euler) or

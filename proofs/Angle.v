@@ -38,7 +38,7 @@ Module StdZFloat := SpecificFloat StdZRadix2.
 Module StdZIntervalTactic := Tactic.IntervalTactic StdZFloat.
 Import StdZIntervalTactic.
 
-From PhongApprox Require Import Span Euler Adaptive.
+From PhongApprox Require Import Span Euler Adaptive ClosedForms.
 Open Scope R_scope.
 
 (** Interval calls (precision 30 bits: never 53, see the header). *)
@@ -203,28 +203,11 @@ Qed.
 Lemma INR_n_neq_0 : forall s, (0 < n s)%nat -> INR (n s) <> 0.
 Proof. intros s H. apply not_0_INR. lia. Qed.
 
-Lemma D_unit : forall s, is_unit (Na s) -> (0 < n s)%nat ->
-  D s = - 2 * (1 - dot (Na s) (Nb s)) / INR (n s).
-Proof.
-  intros s Ha Hn. pose proof (INR_n_neq_0 s Hn). unfold is_unit in Ha.
-  transitivity (2 * (dot (Na s) (Nb s) - dot (Na s) (Na s)) / INR (n s)).
-  - unfold D, k, dot, vscale, vsub; cbn [vx vy vz]. field. assumption.
-  - rewrite Ha. field. assumption.
-Qed.
-
-Lemma ds_unit : forall s, is_unit (Na s) -> is_unit (Nb s) -> (0 < n s)%nat ->
-  ds s = - (1 - dot (Na s) (Nb s)) * (pa s + pb s) / INR (n s) ^ 2.
-Proof.
-  intros s Ha Hb Hn. pose proof (INR_n_neq_0 s Hn).
-  rewrite eq_11_ds_closed_form by (unfold is_unit in *; congruence).
-  rewrite (D_unit s Ha Hn). field. assumption.
-Qed.
-
 Lemma dia_unit : forall s, is_unit (Na s) -> (0 < n s)%nat ->
   dia s = (pb s - pa s + (1 - dot (Na s) (Nb s)) * pa s) / INR (n s).
 Proof.
   intros s Ha Hn. pose proof (INR_n_neq_0 s Hn). unfold dia, dqa.
-  rewrite (D_unit s Ha Hn). unfold A, pa, pb, k, dot, vscale, vsub; cbn [vx vy vz].
+  rewrite (D_unit s Ha). unfold A, pa, pb, k, dot, vscale, vsub; cbn [vx vy vz].
   field. assumption.
 Qed.
 
@@ -265,7 +248,7 @@ Theorem sec_7_corrected_euler_in_t : forall (s : span) (i : nat),
   ceuler s i = ce_t (dot (Na s) (Nb s)) (pa s) (pb s) (INR i / INR (n s)).
 Proof.
   intros s i Ha Hb Hn. pose proof (INR_n_neq_0 s Hn).
-  rewrite ceuler_closed_form, (t0_closed_form s Hn), (ds_unit s Ha Hb Hn).
+  rewrite ceuler_closed_form, (t0_closed_form s Hn), (ds_unit s Ha Hb).
   unfold ce_t, g_t. field. assumption.
 Qed.
 
@@ -278,7 +261,7 @@ Theorem sec_7_euler_in_t : forall (s : span) (i : nat),
   euler_span s i = eu_t (dot (Na s) (Nb s)) (pa s) (pb s) (n s) (INR i / INR (n s)).
 Proof.
   intros s i Ha Hb Hn. pose proof (INR_n_neq_0 s Hn).
-  unfold euler_span. rewrite eq_14_euler_closed_form, (dia_unit s Ha Hn), (ds_unit s Ha Hb Hn).
+  unfold euler_span. rewrite eq_14_euler_closed_form, (dia_unit s Ha Hn), (ds_unit s Ha Hb).
   unfold eu_t, ce_t, g_t. field. assumption.
 Qed.
 

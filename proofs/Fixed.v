@@ -21,7 +21,7 @@
     docs/conformance.md, Hardware. *)
 
 Require Import Reals Lra Lia.
-From PhongApprox Require Import Span Euler.
+From PhongApprox Require Import Span Euler PhongValue.
 Open Scope R_scope.
 
 (** Gouraud (fence) shading as its loop: g_0 = p_a, g_(i+1) = g_i + dp. *)
@@ -173,19 +173,6 @@ Qed.
 
 (** ** Duff's value *)
 
-Lemma fx_div_abs : forall x y, 0 < y -> Rabs (x / y) = Rabs x / y.
-Proof.
-  intros x y Hy. unfold Rdiv. rewrite Rabs_mult, Rabs_inv, (Rabs_pos_eq y) by lra.
-  reflexivity.
-Qed.
-
-Lemma fx_div_le : forall x y a b, 0 <= x <= a -> 0 < b <= y -> x / y <= a / b.
-Proof.
-  intros x y a b Hx Hb. unfold Rdiv. apply Rmult_le_compat; try lra.
-  - left. apply Rinv_0_lt_compat. lra.
-  - apply Rinv_le_contravar; lra.
-Qed.
-
 (** Duff's value p/sqrt q (eqs. 5-7) as the unit computes it: from [ph], [qh]
     within [Ep], [Eq] of p, q, with q >= qmin > Eq and r = sqrt (qmin - Eq)
     > 2h, a square root [sh] truncated below within one unit 2h = 2^-f of
@@ -216,19 +203,19 @@ Proof.
   (* |s - t| <= Eq / (2 r) *)
   assert (Hst : Rabs (s - t) <= Eq / (2 * r)).
   { replace (s - t) with ((q - qh) / (s + t)) by (rewrite <- Hs2, <- Ht2; field; lra).
-    rewrite fx_div_abs by lra. apply fx_div_le; [| lra].
+    rewrite pv_div_abs by lra. apply pv_div_le; [| lra].
     rewrite Rabs_minus_sym. split; [apply Rabs_pos | exact Hqh]. }
   assert (Hssh : Rabs (s - sh) <= Eq / (2 * r) + 2 * h).
   { replace (s - sh) with ((s - t) + (t - sh)) by ring.
     eapply Rle_trans; [apply Rabs_triang |].
     rewrite (Rabs_pos_eq (t - sh)) by lra. lra. }
   assert (Hps : Rabs (p / s) <= 1).
-  { rewrite fx_div_abs by lra. unfold Rdiv. apply (Rmult_le_reg_r s); [lra |].
+  { rewrite pv_div_abs by lra. unfold Rdiv. apply (Rmult_le_reg_r s); [lra |].
     rewrite Rmult_assoc, Rinv_l, Rmult_1_r by lra. lra. }
   (* the exact quotient of the computed operands *)
   assert (Hv : Rabs (ph / sh - p / s) <= (Ep + Eq / (2 * r) + 2 * h) / (r - 2 * h)).
   { replace (ph / sh - p / s) with ((ph - p + p / s * (s - sh)) / sh) by (field; lra).
-    rewrite fx_div_abs by lra. apply fx_div_le; [| lra].
+    rewrite pv_div_abs by lra. apply pv_div_le; [| lra].
     split; [apply Rabs_pos |].
     eapply Rle_trans; [apply Rabs_triang |].
     rewrite Rabs_mult.

@@ -146,13 +146,6 @@ Proof.
   unfold qform. ring.
 Qed.
 
-Lemma qform_nonneg : forall a b u v, is_unit u -> is_unit v -> 0 <= qform (dot u v) a b.
-Proof.
-  intros. rewrite <- comb_norm by assumption. unfold dot.
-  pose proof (pow2_ge_0 (vx (comb a b u v))). pose proof (pow2_ge_0 (vy (comb a b u v))).
-  pose proof (pow2_ge_0 (vz (comb a b u v))). nra.
-Qed.
-
 (** |a pa + b pb| <= sqrt (a^2 + b^2 + 2abc) for every unit light. *)
 Lemma err_le : forall a b Na Nb L, is_unit Na -> is_unit Nb -> is_unit L ->
   Rabs (a * dot Na L + b * dot Nb L) <= sqrt (qform (dot Na Nb) a b).

@@ -390,17 +390,6 @@ Proof.
   reflexivity.
 Qed.
 
-Lemma clamped_level_range : forall v : R, (0 <= clamped_level v <= 255)%Z.
-Proof.
-  intros v. rewrite clamped_level_clamp. pose proof (clamp01_in v) as [H0 H1].
-  unfold level. destruct (Int_part_bounds (255 * clamp01 v)) as [B1 B2].
-  assert (Hlo : IZR (-1) < IZR (Int_part (255 * clamp01 v))) by lra.
-  apply lt_IZR in Hlo.
-  assert (Hhi : IZR (Int_part (255 * clamp01 v)) < IZR 256) by lra.
-  apply lt_IZR in Hhi.
-  lia.
-Qed.
-
 Lemma level_diff_ge_1 : forall g c : R, Rabs (g - c) * 255 >= 1 -> level g <> level c.
 Proof. exact (proj1 eq_24_large_delta_implies_different_levels). Qed.
 

@@ -103,12 +103,6 @@ Proof.
 Qed.
 
 (** Span corollaries. *)
-Lemma ceuler_starts_at_pa : forall s, ceuler s 0 = pa s.
-Proof. intros. reflexivity. Qed.
-
-Lemma ceuler_ends_at_pb : forall s, (0 < n s)%nat -> ceuler s (n s) = pb s.
-Proof. intros s Hn. apply eq_17_corrected_euler_ends_at_pb. exact Hn. Qed.
-
 Lemma ceuler_closed_form : forall s i,
   ceuler s i = pa s + INR i * t0 s + (INR i ^ 2 - INR i) / 2 * ds s.
 Proof. intros. apply eq_14_euler_closed_form. Qed.

@@ -228,12 +228,6 @@ Proof. apply Hv. Qed.
 Lemma e_small : eta * 19342813113834066795298816 <= v.
 Proof. apply Hv. Qed.
 
-Lemma v_v : forall z, 0 <= z -> v * (v * z) <= / 2097152 * (v * z).
-Proof.
-  intros z Hz. pose proof v_pos. pose proof v_small.
-  apply Rmult_le_compat_r; [apply Rmult_le_pos|]; lra.
-Qed.
-
 (** One operation on a value scaled by lam <= 2^48 (the scale is n or n^2, n <= 2^24). *)
 Lemma ap_sc : forall lam y x M, ap1 v eta y x -> 0 <= lam <= 281474976710656 -> Rabs (lam * x) <= M ->
   Rabs (lam * y - lam * x) <= (M + / 68719476736) * v.

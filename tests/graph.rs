@@ -508,19 +508,44 @@ fn graph_certificates_satisfy_the_theorems_rules() {
 }
 
 /// The catalogue's `graphs` fact is what `tolerance::graphs` writes: a method has
-/// operation graphs exactly where its row says so, so its label names `graph_sound`
-/// (`tolerance::profile::Status::PerPixel`) exactly where `check` applies them.
+/// operation graphs exactly where its row names them, under those names, so its label
+/// names `graph_sound` and its graphs (`tolerance::profile::Status::PerPixel`) exactly
+/// where `check` applies them.
 #[test]
 fn the_catalogue_names_the_methods_with_graphs() {
     use phong_approx::tolerance::graphs::method_graphs;
     use phong_approx::tolerance::profile::{status, Status};
     let m = model(Profile::Ieee, Format::Binary32).unwrap();
     for method in Method::ALL {
-        let has = method_graphs(method, Form::Any, 4, &m).is_some();
-        assert_eq!(has, method.info().profiles.graphs, "{method}");
+        let graphs = method_graphs(method, Form::Any, 4, &m);
+        let has = graphs.is_some();
+        let names: Vec<String> = graphs.iter().flatten().map(|g| g.name.clone()).collect();
+        assert_eq!(names, method.info().profiles.graphs, "{method}");
+        // Distinct names, and distinct graphs under them (a name the builder does
+        // not tell apart would build another form's graph twice).
+        for (i, a) in graphs.iter().flatten().enumerate() {
+            for b in graphs.iter().flatten().skip(i + 1) {
+                assert_ne!(a.name, b.name, "{method}");
+                assert!(
+                    a.graph.nodes() != b.graph.nodes(),
+                    "{method}: {} and {}",
+                    a.name,
+                    b.name
+                );
+            }
+        }
         for profile in [Profile::Ieee, Profile::Shader] {
             if let Some(st) = status(method, profile, Format::Binary32) {
-                assert_eq!(matches!(st, Status::PerPixel(_)), has, "{method} {profile}");
+                assert_eq!(
+                    matches!(st, Status::PerPixel(_, g) if g == names),
+                    has,
+                    "{method} {profile}"
+                );
+                if has {
+                    for name in &names {
+                        assert!(st.label().contains(name.as_str()), "{method} {profile}");
+                    }
+                }
             }
         }
     }
@@ -583,4 +608,69 @@ fn near_opposite_shader_spans_have_bounds() {
     assert_eq!(bounded, 6);
     // Where the formulas refused (Phong at both n, among others), the graphs bound.
     assert!(unbounded >= 2, "{unbounded}");
+}
+
+/// The report `cargo xtask counts-vs-graphs` (docs/float.md §19.3): per method, profile
+/// and format, on the published sets and the searched spans (the edge and targeted
+/// spans and 48 seeded `arb_targeted` ones, n ≤ 4096), the pixels where §18's formula
+/// (the count theorems) is below the graphs' bound — where `check`'s per-pixel minimum
+/// takes the formula —, the largest ratio there, and the cases where only one of
+/// them gives a bound.
+// Called by the `xtask` program only (the test binary has no caller).
+#[cfg_attr(test, allow(dead_code))]
+pub(crate) fn counts_vs_graphs() {
+    use phong_approx::tolerance::profile::profile_span_bound;
+    use proptest::strategy::{Strategy, ValueTree};
+    let mut spans: Vec<Span<Q>> = Vec::new();
+    for set in phong_approx::testkit::SETS {
+        let mut v: Vec<(String, Span<Q>)> = published_spans(set).into_iter().collect();
+        v.sort_by(|a, b| a.0.cmp(&b.0));
+        spans.extend(v.into_iter().map(|(_, s)| s));
+    }
+    let mut cases = edge_cases();
+    cases.extend(targeted_cases());
+    let mut runner = proptest::test_runner::TestRunner::deterministic();
+    for _ in 0..48 {
+        cases.push(arb_targeted().new_tree(&mut runner).unwrap().current());
+    }
+    spans.extend(cases.iter().filter_map(|c| c.span()));
+    spans.retain(|s| s.n <= phong_approx::tolerance::graphs::MAX_GRAPH_STEPS);
+    println!(
+        "| method | profile | format | cases | pixels | formula smaller at (pixels, cases) | largest graphs ÷ formula there | graphs only | formula only |"
+    );
+    println!("|---|---|---|---:|---:|---:|---:|---:|---:|");
+    for format in [Format::Binary32, Format::Binary64] {
+        for method in METHODS {
+            for profile in [Profile::Ieee, Profile::Shader] {
+                let Some(m) = model(profile, format) else {
+                    continue;
+                };
+                let (mut cases, mut px, mut wins, mut won) = (0, 0, 0, 0);
+                let (mut worst, mut g_only, mut f_only) = (1f64, 0, 0);
+                for s in &spans {
+                    let shape = phong_approx::tolerance::Shape::of(s);
+                    let f = profile_span_bound(method, profile, Form::Any, &shape, format);
+                    let g = pixel_bounds(method, Form::Any, s.n, &inputs(s), &m)
+                        .ok()
+                        .flatten();
+                    match (f, g) {
+                        (Some(f), Some(g)) => {
+                            cases += 1;
+                            px += g.len();
+                            let here = g.iter().filter(|&&x| f < x).count();
+                            wins += here;
+                            won += usize::from(here > 0);
+                            worst = g.iter().fold(worst, |w, &x| w.max(x / f));
+                        }
+                        (None, Some(_)) => g_only += 1,
+                        (Some(_), None) => f_only += 1,
+                        (None, None) => {}
+                    }
+                }
+                println!(
+                    "| {method} | {profile} | {format:?} | {cases} | {px} | {wins}, {won} | {worst:.2} | {g_only} | {f_only} |"
+                );
+            }
+        }
+    }
 }

@@ -60,10 +60,22 @@ const ANGLE: Bound = Bound::Angle {
 const NO_FIXED: FixedBound = FixedBound::None(
     "proofs/Fixed.v proves the loops of Gouraud, Euler, corrected Euler, the adaptive choice and Duff's unit only",
 );
+// The operation graphs' names (`tolerance::graphs`, docs/float.md §19.2): the forms an
+// implementation may compute, in the order the graphs are written.
+const GOURAUD_GRAPHS: &[&str] = &["recurrence"];
+const SECOND_ORDER_GRAPHS: &[&str] = &[
+    "recurrence",
+    "closed",
+    "closed/half-coefficient",
+    "closed/half-product",
+];
+const DUFF_GRAPHS: &[&str] = &["forward-differences"];
+const PHONG_GRAPHS: &[&str] = &["horner", "pixel", "lerp"];
 const fn composed(
     theorems: &'static [&'static str],
     section: &'static str,
     form: DerivedForm,
+    graphs: &'static [&'static str],
 ) -> ProfileBounds {
     ProfileBounds {
         reference: None,
@@ -73,21 +85,31 @@ const fn composed(
             form,
         },
         fixed: NO_FIXED,
-        graphs: true,
+        graphs,
     }
 }
-const COMPOSED_PER_PIXEL: ProfileBounds =
-    composed(PHONG_THEOREMS, "docs/float.md §18.4", DerivedForm::PerPixel);
+const COMPOSED_PER_PIXEL: ProfileBounds = composed(
+    PHONG_THEOREMS,
+    "docs/float.md §18.4",
+    DerivedForm::PerPixel,
+    PHONG_GRAPHS,
+);
 const COMPOSED_RATIO: ProfileBounds = ProfileBounds {
     fixed: FixedBound::Ratio {
         theorem: "fixed_point_duff_unit_error",
     },
-    ..composed(DUFF_THEOREMS, "docs/float.md §18.5", DerivedForm::Ratio)
+    ..composed(
+        DUFF_THEOREMS,
+        "docs/float.md §18.5",
+        DerivedForm::Ratio,
+        DUFF_GRAPHS,
+    )
 };
 const COMPOSED_HALF_RATIO: ProfileBounds = composed(
     SYMMETRIC_PHONG_THEOREMS,
     "docs/float.md §18.5",
     DerivedForm::HalfRatio,
+    DUFF_GRAPHS,
 );
 // The larger of the two proved bounds, against the exact run of the method the
 // implementation chose (docs/float.md §10, §18.5).
@@ -95,11 +117,12 @@ const ADAPTIVE_PROFILES: ProfileBounds = ProfileBounds {
     fixed: FixedBound::Picks {
         theorem: "fixed_point_adaptive_decision",
     },
-    graphs: false,
+    graphs: &[],
     ..composed(
         ADAPTIVE_THEOREMS,
         "docs/float.md §10",
         DerivedForm::LargerOfPicks,
+        &[],
     )
 };
 const GOURAUD_PROFILES: ProfileBounds = ProfileBounds {
@@ -111,7 +134,7 @@ const GOURAUD_PROFILES: ProfileBounds = ProfileBounds {
         value_max: 1.0,
         slope_times_n: 2.0,
     },
-    graphs: true,
+    graphs: GOURAUD_GRAPHS,
 };
 const CORRECTED_EULER_PROFILES: ProfileBounds = ProfileBounds {
     reference: Some([
@@ -125,7 +148,7 @@ const CORRECTED_EULER_PROFILES: ProfileBounds = ProfileBounds {
         value_max: 2.5,
         slope_times_n: 28.0,
     },
-    graphs: true,
+    graphs: SECOND_ORDER_GRAPHS,
 };
 const EULER_PROFILES: ProfileBounds = ProfileBounds {
     reference: None,
@@ -139,7 +162,7 @@ const EULER_PROFILES: ProfileBounds = ProfileBounds {
         value_max: 5.0,
         slope_times_n: 12.0,
     },
-    graphs: true,
+    graphs: SECOND_ORDER_GRAPHS,
 };
 const ANGLE_PROFILES: ProfileBounds = ProfileBounds {
     reference: None,
@@ -147,13 +170,13 @@ const ANGLE_PROFILES: ProfileBounds = ProfileBounds {
         "no profile bounds acos and cos (docs/float.md §18.5, \"Not covered\")",
     ),
     fixed: NO_FIXED,
-    graphs: false,
+    graphs: &[],
 };
 const RELATED_PROFILES: ProfileBounds = ProfileBounds {
     reference: None,
     float: FloatBound::None("their bounds follow this crate's own evaluation (docs/float.md §16)"),
     fixed: NO_FIXED,
-    graphs: false,
+    graphs: &[],
 };
 
 methods! {

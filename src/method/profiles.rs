@@ -15,11 +15,13 @@ pub struct ProfileBounds {
     pub float: FloatBound,
     /// Under fixed point (`fixed:M.F`).
     pub fixed: FixedBound,
-    /// Whether `tolerance::graphs` writes the method's operation graphs, whose
-    /// per-pixel bound (`proofs/Graph.v`, `graph_sound`) `check` applies under `ieee`
-    /// and `shader` where it is below the theorems' (the adaptive scheme is judged by
-    /// its picks; angular interpolation and the related methods have none).
-    pub graphs: bool,
+    /// The names of the method's operation graphs — the forms `tolerance::graphs`
+    /// writes, in its order —, whose per-pixel bound (`proofs/Graph.v`,
+    /// `graph_sound`) `check` applies under `ieee` and `shader` where it is below the
+    /// theorems' and whose labels name them; empty where it has none (the adaptive
+    /// scheme is judged by its picks; angular interpolation and the related methods
+    /// have none).
+    pub graphs: &'static [&'static str],
 }
 
 /// A method's bound under `ieee` and `shader`.

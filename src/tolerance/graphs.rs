@@ -262,29 +262,25 @@ pub fn for_each_graph<E>(
             setup,
         })
     };
+    // The forms' names are the catalogue's (`Info::profiles.graphs`), in its order.
+    let names = method.info().profiles.graphs;
     let recur = !matches!(form, Form::Closed);
     let closed_ok = !matches!(form, Form::Recurrence);
-    let halvings = [
-        ("closed", Halving::Exact),
-        ("closed/half-coefficient", Halving::Coefficient),
-        ("closed/half-product", Halving::Product),
-    ];
     match method {
         Method::Gouraud if form == Form::Any => {
-            add("recurrence", &|g, s| {
-                vec![recurrence(g, n, s.p_a, s.dp, None)]
-            })?;
+            add(names[0], &|g, s| vec![recurrence(g, n, s.p_a, s.dp, None)])?;
         }
         Method::CorrectedEuler | Method::Euler => {
             let euler = method == Method::Euler;
             if recur {
-                add("recurrence", &|g, s| {
+                add(names[0], &|g, s| {
                     let s0 = if euler { s.di_a } else { s.t0 };
                     vec![recurrence(g, n, s.p_a, s0, Some(s.ds))]
                 })?;
             }
             if closed_ok {
-                for (name, how) in halvings {
+                let halvings = [Halving::Exact, Halving::Coefficient, Halving::Product];
+                for (name, how) in names[1..].iter().zip(halvings) {
                     add(name, &|g, s| {
                         let s0 = if euler { s.di_a } else { s.t0 };
                         vec![closed(g, n, s.p_a, s0, s.ds, how)]
@@ -294,12 +290,10 @@ pub fn for_each_graph<E>(
         }
         Method::Duff | Method::SymmetricPhong if form == Form::Any => {
             let symmetric = method == Method::SymmetricPhong;
-            add("forward-differences", &|g, s| {
-                duff(g, model, s, n, symmetric)
-            })?;
+            add(names[0], &|g, s| duff(g, model, s, n, symmetric))?;
         }
         Method::Phong if form == Form::Any => {
-            for pq in ["horner", "pixel", "lerp"] {
+            for &pq in names {
                 add(pq, &|g, s| phong(g, model, s, n, pq))?;
             }
         }
@@ -456,7 +450,7 @@ pub fn profile_span_max(
     shape: &super::Shape,
     format: crate::Format,
 ) -> Option<f64> {
-    if shape.n > MAX_GRAPH_STEPS || !method.info().profiles.graphs {
+    if shape.n > MAX_GRAPH_STEPS || method.info().profiles.graphs.is_empty() {
         return super::profile::profile_span_bound(method, profile, form, shape, format);
     }
     profile_pixel_bounds(method, profile, form, shape, None, format)

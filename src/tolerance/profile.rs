@@ -187,10 +187,10 @@ pub enum Status {
     /// profiles is proved or composed from proved theorems.
     Proved(&'static str),
     /// A Coq theorem (its name) and, at each pixel where it is smaller, the bound of
-    /// the method's operation graphs (`tolerance::graphs`, `proofs/Graph.v`'s
-    /// `graph_sound`): the `ieee` and `shader` bounds of the methods whose catalogue
-    /// row has graphs.
-    PerPixel(&'static str),
+    /// the method's operation graphs (their names: the catalogue row's `graphs`;
+    /// `tolerance::graphs`, `proofs/Graph.v`'s `graph_sound`): the `ieee` and `shader`
+    /// bounds of the methods whose catalogue row has graphs.
+    PerPixel(&'static str, &'static [&'static str]),
 }
 
 impl Status {
@@ -198,18 +198,18 @@ impl Status {
     pub fn label(&self) -> String {
         match self {
             Status::Proved(t) => format!("proved ({t})"),
-            Status::PerPixel(t) => {
-                format!(
-                    "proved ({t}; per pixel the smaller with graph_sound on its operation graphs)"
-                )
-            }
+            Status::PerPixel(t, graphs) => format!(
+                "proved ({t}; per pixel the smaller with graph_sound on the {} {})",
+                if graphs.len() == 1 { "graph" } else { "graphs" },
+                graphs.join(", ")
+            ),
         }
     }
 
     /// The theorem named first.
     pub fn theorem(&self) -> &'static str {
         match *self {
-            Status::Proved(t) | Status::PerPixel(t) => t,
+            Status::Proved(t) | Status::PerPixel(t, _) => t,
         }
     }
 }
@@ -228,8 +228,8 @@ pub fn status(method: crate::Method, profile: Profile, format: Format) -> Option
     }
     // The methods with operation graphs: per pixel, the smaller with theirs.
     let per_pixel = |t: &'static str| {
-        if row.graphs && arith(profile, format).is_some() {
-            Status::PerPixel(t)
+        if !row.graphs.is_empty() && arith(profile, format).is_some() {
+            Status::PerPixel(t, row.graphs)
         } else {
             Status::Proved(t)
         }

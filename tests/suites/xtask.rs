@@ -10,6 +10,7 @@
 //! cargo xtask related-bound-ratios    docs/float.md §13, the related methods' rows
 //! cargo xtask fast-bound-ratios       docs/float.md §13, the fast kernels' table
 //! cargo xtask tightness               docs/float.md §18.6
+//! cargo xtask counts-vs-graphs        docs/float.md §19.3
 //! ```
 //!
 //! The test tier (`PHONG_APPROX_TIER`, docs/testing.md) sets the spans' sizes, as for
@@ -38,7 +39,7 @@ use proptest::strategy::{Strategy, ValueTree};
 use proptest::test_runner::TestRunner;
 
 /// The reports: name, what it regenerates, the function.
-const REPORTS: [(&str, &str, fn()); 4] = [
+const REPORTS: [(&str, &str, fn()); 5] = [
     (
         "bound-ratios",
         "docs/float.md §13: (derived bound) / (worst error found) per method and format",
@@ -58,6 +59,11 @@ const REPORTS: [(&str, &str, fn()); 4] = [
         "tightness",
         "docs/float.md §18.6: the model's adversary's worst fraction of each profile bound",
         tightness,
+    ),
+    (
+        "counts-vs-graphs",
+        "docs/float.md §19.3: where the count theorems' formula is below the graphs' bound",
+        profiles::graph::counts_vs_graphs,
     ),
 ];
 

@@ -43,17 +43,28 @@ pub fn status_table() -> String {
         }
         s += &format!("| `{}` |", m.name());
         for c in cells {
-            let label = c.map_or("none".to_string(), |c| match c {
-                Status::Proved(t) => format!("proved (`{t}`)"),
-                Status::PerPixel(t) => {
-                    format!("proved (`{t}`; per pixel the smaller with `graph_sound`)")
-                }
-            });
+            let label = c.map_or("none".to_string(), |c| markdown(&c));
             s += &format!(" {label} |");
         }
         s += "\n";
     }
     s
+}
+
+/// A status's label in Markdown: [`Status::label`] with the theorem's and the graphs'
+/// names as code.
+fn markdown(st: &Status) -> String {
+    match st {
+        Status::Proved(t) => format!("proved (`{t}`)"),
+        Status::PerPixel(t, graphs) => {
+            let graphs: Vec<String> = graphs.iter().map(|g| format!("`{g}`")).collect();
+            format!(
+                "proved (`{t}`; per pixel the smaller with `graph_sound` on the {} {})",
+                if graphs.len() == 1 { "graph" } else { "graphs" },
+                graphs.join(", ")
+            )
+        }
+    }
 }
 
 /// A profile's bound for `method` in `format`, in words: the
@@ -72,7 +83,7 @@ pub fn formula(method: crate::Method, profile: Profile, format: Format) -> Optio
         });
     }
     match status(method, profile, format)? {
-        Status::Proved(_) | Status::PerPixel(_) => {
+        Status::Proved(_) | Status::PerPixel(..) => {
             let mut forms: Vec<String> = proved(method, profile, format)?
                 .iter()
                 .map(|f| {
@@ -117,12 +128,7 @@ pub fn ieee_table() -> String {
                 format!("{:.d$}·u", (x / e).ceil() * e)
             })
         };
-        let label = status(m, Profile::Ieee, b32).map_or(String::new(), |st| match st {
-            Status::Proved(t) => format!("proved (`{t}`)"),
-            Status::PerPixel(t) => {
-                format!("proved (`{t}`; per pixel the smaller with `graph_sound`)")
-            }
-        });
+        let label = status(m, Profile::Ieee, b32).map_or(String::new(), |st| markdown(&st));
         s += &format!(
             "| `{}` | {f} | {} | {} | {} | {label} |\n",
             m.name(),

@@ -451,6 +451,34 @@ Proof.
   apply Rmult_le_compat; try apply Rabs_pos; lra.
 Qed.
 
+(** The correction t0 = di_a - d_eps on computed p_n, eps, d_eps (within E1, E2,
+    E3 of their operands), p_a, p_b (within Ea of pa0, pb0) and |Y| <= 1.001,
+    Y = n(n-1)/2 ds; [Hstep] is the rounding of di_a - d_eps scaled by n
+    (here and in Profiles.v). *)
+Lemma R_near : forall nr w t0 dia deps fpa fpb fpn feps Y pa0 pb0 Ea E1 E2 E3 : R,
+  Rabs (fpn - (fpa + nr * dia + Y)) <= E1 -> Rabs (feps - (fpn - fpb)) <= E2 ->
+  Rabs (nr * deps - feps) <= E3 -> Rabs (fpa - pa0) <= Ea -> Rabs (fpb - pb0) <= Ea ->
+  Rabs pa0 <= 1 -> Rabs pb0 <= 1 -> Rabs Y <= 1001 / 1000 -> 2 * Ea + E1 + E2 + E3 <= / 1000 ->
+  (Rabs (nr * (dia - deps)) <= 3002 / 1000 -> Rabs (nr * t0 - nr * (dia - deps)) <= w) ->
+  Rabs (nr * t0 - (fpb - fpa - Y)) <= w + E1 + E2 + E3.
+Proof.
+  intros nr w t0 dia deps fpa fpb fpn feps Y pa0 pb0 Ea E1 E2 E3 G0 G1 G2 G3 G4 P0 P1 HY HE Hstep.
+  assert (B : Rabs (nr * (dia - deps)) <= 3002 / 1000).
+  { replace (nr * (dia - deps))
+      with ((fpb - fpa - Y) + - (fpn - (fpa + nr * dia + Y)) + - (feps - (fpn - fpb))
+            + - (nr * deps - feps)) by ring.
+    eapply Rle_trans; [apply tri4|]. rewrite !Rabs_Ropp.
+    assert (Rabs (fpb - fpa - Y) <= 2 + 2 * Ea + 1001 / 1000).
+    { unfold Rminus. eapply Rle_trans; [apply tri3|]. rewrite !Rabs_Ropp.
+      pose proof (abs_near _ _ _ G3). pose proof (abs_near _ _ _ G4). lra. }
+    lra. }
+  pose proof (Hstep B) as RT.
+  replace (nr * t0 - (fpb - fpa - Y))
+    with ((nr * t0 - nr * (dia - deps)) + - (fpn - (fpa + nr * dia + Y))
+          + - (feps - (fpn - fpb)) + - (nr * deps - feps)) by ring.
+  eapply Rle_trans; [apply tri4|]. rewrite !Rabs_Ropp. lra.
+Qed.
+
 (** The corrected Euler values and slopes on computed p_a, p_b (within Ea),
     t0 (n t0 within ER of p_b - p_a - n(n-1)/2 ds) and ds (n^2 ds within Eds),
     here and in Profiles.v. *)
@@ -889,31 +917,9 @@ Qed.
 Lemma L_R : Rabs (nr * f_t0 rnd s - (f_pb rnd s - f_pa rnd s - f_tri s * f_ds rnd s))
             <= 231 / 10 * u.
 Proof.
-  basics. pose proof L_rhon as G0. pose proof L_rhoe as G1. pose proof L_rhod as G2.
-  pose proof L_pa as G3. pose proof L_pb as G4. pose proof (pa_le s Hua Hul).
-  pose proof (pb_le s Hub Hul). pose proof L_Yb.
-  set (Y := f_tri s * f_ds rnd s) in *.
-  assert (E : nr * f_dia rnd s - nr * f_deps rnd s =
-              (f_pb rnd s - f_pa rnd s - Y)
-              - (f_pn rnd s - (f_pa rnd s + nr * f_dia rnd s + Y))
-              - (f_eps rnd s - (f_pn rnd s - f_pb rnd s))
-              - (nr * f_deps rnd s - f_eps rnd s)) by ring.
-  assert (B : Rabs (nr * f_dia rnd s - nr * f_deps rnd s) <= 3002 / 1000).
-  { rewrite E. unfold Rminus at 1 2 3.
-    eapply Rle_trans; [apply tri4|]. rewrite !Rabs_Ropp.
-    assert (Rabs (f_pb rnd s - f_pa rnd s - Y) <= 2 + 10005 / 1000 * u + 1001 / 1000).
-    { unfold Rminus. eapply Rle_trans; [apply tri3|]. rewrite !Rabs_Ropp.
-      pose proof (abs_near _ _ _ G3). pose proof (abs_near _ _ _ G4). lra. }
-    lra. }
-  unfold f_t0. rewrite <- (Rmult_minus_distr_l nr (f_dia rnd s)) in B.
-  pose proof (rnd_sc rnd u eta Hstd Hok nr (f_dia rnd s - f_deps rnd s) _ ltac:(lra) B) as RT.
-  rewrite Rmult_minus_distr_l in RT, B.
-  replace (nr * rnd (f_dia rnd s - f_deps rnd s) - (f_pb rnd s - f_pa rnd s - Y))
-    with ((nr * rnd (f_dia rnd s - f_deps rnd s) - (nr * f_dia rnd s - nr * f_deps rnd s))
-          + - (f_pn rnd s - (f_pa rnd s + nr * f_dia rnd s + Y))
-          + - (f_eps rnd s - (f_pn rnd s - f_pb rnd s))
-          + - (nr * f_deps rnd s - f_eps rnd s)) by ring.
-  eapply Rle_trans; [apply tri4|]. rewrite !Rabs_Ropp. lra.
+  basics. pose proof (R_near nr _ (f_t0 rnd s) _ _ _ _ _ _ _ _ _ _ _ _ _ L_rhon L_rhoe L_rhod L_pa
+    L_pb (pa_le s Hua Hul) (pb_le s Hub Hul) L_Yb ltac:(lra)
+    (rnd_sc rnd u eta Hstd Hok nr (f_dia rnd s - f_deps rnd s) _ ltac:(lra))). lra.
 Qed.
 
 Lemma L_dp : Rabs (nr * f_dp rnd s - (f_pb rnd s - f_pa rnd s)) <= 401 / 100 * u.

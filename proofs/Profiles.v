@@ -1064,31 +1064,9 @@ Qed.
 
 Lemma K_R : Rabs (nr * ft0 - (fpb - fpa - nr * (nr - 1) / 2 * fds)) <= 2004 / 100 * v + 501 / 100 * d.
 Proof.
-  basics. pose proof K_rhon as G0. pose proof K_rhoe as G1. pose proof K_rhod as G2.
-  pose proof K_pa as G3. pose proof K_pb as G4. pose proof (pa_le s Hua Hul).
-  pose proof (pb_le s Hub Hul). pose proof K_Yb.
-  set (Y := nr * (nr - 1) / 2 * fds) in *.
-  assert (E : nr * fdia - nr * fdeps =
-              (fpb - fpa - Y)
-              - (fpn - (fpa + nr * fdia + Y))
-              - (feps - (fpn - fpb))
-              - (nr * fdeps - feps)) by ring.
-  assert (B : Rabs (nr * fdia - nr * fdeps) <= 3002 / 1000).
-  { rewrite E. unfold Rminus at 1 2 3.
-    eapply Rle_trans; [apply tri4|]. rewrite !Rabs_Ropp.
-    assert (Rabs (fpb - fpa - Y) <= 2 + 10005 / 1000 * v + 2 / 1000 * d + 1001 / 1000).
-    { unfold Rminus. eapply Rle_trans; [apply tri3|]. rewrite !Rabs_Ropp.
-      pose proof (abs_near _ _ _ G3). pose proof (abs_near _ _ _ G4). lra. }
-    lra. }
-  rewrite <- (Rmult_minus_distr_l nr fdia) in B.
-  pose proof (ap_sc v eta Hv nr ft0 (fdia - fdeps) _ Ht0 ltac:(lra) B) as RT.
-  rewrite Rmult_minus_distr_l in RT, B.
-  replace (nr * ft0 - (fpb - fpa - Y))
-    with ((nr * ft0 - (nr * fdia - nr * fdeps))
-          + - (fpn - (fpa + nr * fdia + Y))
-          + - (feps - (fpn - fpb))
-          + - (nr * fdeps - feps)) by ring.
-  eapply Rle_trans; [apply tri4|]. rewrite !Rabs_Ropp. lra.
+  basics. pose proof (R_near nr _ ft0 _ _ _ _ _ _ _ _ _ _ _ _ _ K_rhon K_rhoe K_rhod K_pa K_pb
+    (pa_le s Hua Hul) (pb_le s Hub Hul) K_Yb ltac:(lra)
+    (ap_sc v eta Hv nr ft0 (fdia - fdeps) _ Ht0 ltac:(lra))). lra.
 Qed.
 
 Lemma K_ce_ideal : forall i, (i <= n s)%nat ->

@@ -533,6 +533,118 @@ Qed.
 
 End Near.
 
+(** Gouraud's values p_a + i dp on computed p_a, p_b (within Ea) and dp
+    (n dp within Edp of p_b - p_a), here and in Profiles.v. *)
+Lemma g_near : forall (s : span) (fpa fpb fdp Ea Edp : R), (1 <= n s)%nat ->
+  Rabs (fpa - pa s) <= Ea -> Rabs (fpb - pb s) <= Ea ->
+  Rabs (INR (n s) * fdp - (fpb - fpa)) <= Edp ->
+  forall i, (i <= n s)%nat -> Rabs (fpa + INR i * fdp - gouraud s i) <= Ea + Edp.
+Proof.
+  intros s fpa fpb fdp Ea Edp Hn1 P1 P2 P3 i Hi. pose proof (nr_ge1 s Hn1).
+  assert (Hi' : 0 <= INR i <= INR (n s)) by (split; [apply pos_INR | apply le_INR; exact Hi]).
+  unfold gouraud, dp.
+  replace (fpa + INR i * fdp - (pa s + INR i * ((pb s - pa s) / INR (n s))))
+    with ((1 - INR i / INR (n s)) * (fpa - pa s) + INR i / INR (n s) * (fpb - pb s)
+          + INR i / INR (n s) * (INR (n s) * fdp - (fpb - fpa)) - 0 * 0)
+    by (field; lra).
+  eapply Rle_trans.
+  { apply comb_bound; [apply theta_rng; lra | lra | apply P1 | apply P2 | apply P3
+                      | rewrite Rabs_R0; apply Rle_refl]. }
+  lra.
+Qed.
+
+(** The loops p += s, s += ds from (p_a, t) (t = t0: corrected Euler; t = di_a:
+    Euler) with their own addition unit ua, m ua <= 2^-11: |m (t + J ds)| <= Cs,
+    the closed form on the computed values within E0 of ex and |ex| <= B;
+    Msn / m and Mp bound the loop's s and p (here and in Profiles.v). *)
+Lemma loop_near : forall (m : nat) (fpa fds t Cs Msn Mp E0 B eta ua : R) (ex P Q : nat -> R),
+  1 <= INR m <= 16777216 -> 0 <= eta -> 0 <= ua -> INR m * ua <= / 2048 -> 0 <= Msn -> 0 <= Mp ->
+  Cs + Msn / 2048 + 281474976710656 * eta <= Msn ->
+  B + E0 + (Msn / 2 + Mp) / 2048 + 281474976710656 * eta <= Mp ->
+  (forall J, (J < m)%nat -> Rabs (INR m * (t + INR J * fds)) <= Cs) ->
+  (forall j, (j <= m)%nat ->
+     Rabs (fpa + INR j * t + INR j * (INR j - 1) / 2 * fds - ex j) <= E0 /\ Rabs (ex j) <= B) ->
+  P O = fpa -> Q O = t ->
+  (forall j, (j < m)%nat -> FloatModelK.ap1 ua eta (P (S j)) (P j + Q j)
+                            /\ FloatModelK.ap1 ua eta (Q (S j)) (Q j + fds)) ->
+  forall i, (i <= m)%nat ->
+  Rabs (P i - ex i) <= (Msn / 2 + Mp) * (INR m * ua) + E0 + 281474976710656 * eta.
+Proof.
+  intros m fpa fds t Cs Msn Mp E0 B eta ua ex P Q Hnr He0 Hua0 Hnua HMsn HMp HC1 HC2 Hsl Hid HP0
+    HQ0 Hstep i Hi.
+  set (Ms := Msn / INR m).
+  assert (HMs : 0 <= Ms)
+    by (unfold Ms, Rdiv; apply Rmult_le_pos; [lra | apply Rlt_le, Rinv_0_lt_compat; lra]).
+  assert (Hnn : INR m * INR m <= 281474976710656) by nra.
+  assert (Hne : INR m * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra).
+  assert (Hnne : INR m * INR m * eta <= 281474976710656 * eta) by (apply Rmult_le_compat_r; lra).
+  assert (Hnu0 : 0 <= INR m * ua) by (apply Rmult_le_pos; lra).
+  assert (Hs1 : Msn * (INR m * ua) <= Msn / 2048) by (apply Rmult_le_compat_l; lra).
+  assert (Hp1 : Mp * (INR m * ua) <= Mp / 2048) by (apply Rmult_le_compat_l; lra).
+  assert (Ems2 : INR m * INR m / 2 * (ua * Ms + eta) = Msn / 2 * (INR m * ua) + INR m * INR m * eta / 2)
+    by (unfold Ms; field; lra).
+  assert (Emp : INR m * (ua * Mp + eta) = Mp * (INR m * ua) + INR m * eta) by ring.
+  destruct (FloatModelK.cseq_err ua eta P Q fds (m) Ms Mp ltac:(lra) He0 HMs HMp Hstep)
+    with (i := i) as [_ HPi]; [| | exact Hi |].
+  - intros j Hj. rewrite HQ0. pose proof (Hsl (S j) Hj) as G0.
+    assert (G1 : Rabs (t + INR (S j) * fds) <= (Cs) / INR m).
+    { replace (t + INR (S j) * fds) with (INR m * (t + INR (S j) * fds) / INR m) by (field; lra).
+      unfold Rdiv. rewrite Rabs_mult, (Rabs_pos_eq (/ INR m))
+        by (apply Rlt_le, Rinv_0_lt_compat; lra).
+      apply Rmult_le_compat_r; [apply Rlt_le, Rinv_0_lt_compat; lra | exact G0]. }
+    assert (G2 : (Cs) / INR m + INR m * (ua * Ms + eta) <= Ms).
+    { unfold Ms. apply div_helper; [lra|].
+      replace (INR m * (ua * (Msn / INR m) + eta) * INR m) with (Msn * (INR m * ua) + INR m * INR m * eta)
+        by (field; lra).
+      lra. }
+    lra.
+  - intros j Hj. rewrite HP0, HQ0. destruct (Hid (S j) Hj) as [G0 G1].
+    pose proof (abs_near _ _ _ G0) as G2. rewrite Ems2, Emp. lra.
+  - rewrite HP0, HQ0 in HPi. destruct (Hid i Hi) as [G0 _].
+    assert (Hi' : 0 <= INR i <= INR m) by (split; [apply pos_INR | apply le_INR; exact Hi]).
+    replace (P i - ex i)
+      with ((P i - (fpa + INR i * t + INR i * (INR i - 1) / 2 * fds))
+            + (fpa + INR i * t + INR i * (INR i - 1) / 2 * fds - ex i)) by ring.
+    eapply Rle_trans; [apply Rabs_triang|].
+    assert (Es0 : 0 <= ua * Ms + eta) by (pose proof (Rmult_le_pos ua Ms); lra).
+    assert (K1 : INR i * (INR i - 1) / 2 <= INR m * (INR m - 1) / 2) by nra.
+    assert (K2 : INR i * (INR i - 1) / 2 * (ua * Ms + eta) <= INR m * (INR m - 1) / 2 * (ua * Ms + eta))
+      by (apply Rmult_le_compat_r; lra).
+    assert (K3 : INR m * (INR m - 1) / 2 * (ua * Ms + eta)
+                 = Msn / 2 * (INR m * ua) - Msn / 2 * ua + INR m * INR m * eta / 2 - INR m * eta / 2)
+      by (unfold Ms; field; lra).
+    assert (K4 : INR i * (ua * Mp + eta) <= INR m * (ua * Mp + eta))
+      by (apply Rmult_le_compat_r; [nra | lra]).
+    assert (K5 : 0 <= Msn / 2 * ua) by (apply Rmult_le_pos; lra).
+    assert (K6 : 0 <= INR m * eta) by (apply Rmult_le_pos; lra).
+    lra.
+Qed.
+
+(** The Gouraud loop g += dp from p_a with its own addition unit ua, m ua <= 2^-11,
+    the values p_a + j dp within Eid of ex and |ex| <= 1 (here and in Profiles.v). *)
+Lemma gloop_near : forall (m : nat) (fpa fdp Eid eta ua : R) (ex G : nat -> R),
+  1 <= INR m <= 16777216 -> 0 <= eta -> 0 <= ua -> INR m * ua <= / 2048 ->
+  (forall j, (j <= m)%nat -> Rabs (fpa + INR j * fdp - ex j) <= Eid /\ Rabs (ex j) <= 1) ->
+  Eid + 16777216 * eta <= / 10000 ->
+  G O = fpa -> (forall j, (j < m)%nat -> FloatModelK.ap1 ua eta (G (S j)) (G j + fdp)) ->
+  forall i, (i <= m)%nat ->
+  Rabs (G i - ex i) <= 10006 / 10000 * (INR m * ua) + Eid + 16777216 * eta.
+Proof.
+  intros m fpa fdp Eid eta ua ex G Hm He0 Hua Hnua Hid HE HG0 HG i Hi.
+  pose proof (FloatModelK.gseq_err ua eta G fdp m (10006 / 10000) Hua He0 ltac:(lra) HG) as L.
+  rewrite HG0 in L.
+  assert (Hne : INR m * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra).
+  assert (Hi' : 0 <= INR i <= INR m) by (split; [apply pos_INR | apply le_INR; exact Hi]).
+  specialize (L ltac:(intros j Hj; destruct (Hid (S j) Hj) as [G0 G1];
+    pose proof (abs_near _ _ _ G0); lra) i Hi).
+  destruct (Hid i Hi) as [G0 _].
+  replace (G i - ex i) with ((G i - (fpa + INR i * fdp)) + (fpa + INR i * fdp - ex i)) by ring.
+  eapply Rle_trans; [apply Rabs_triang|].
+  assert (INR i * (ua * (10006 / 10000) + eta) <= INR m * (ua * (10006 / 10000) + eta))
+    by (apply Rmult_le_compat_r; nra).
+  lra.
+Qed.
+
 (** The facts on the unit inputs of a span used by the set-up bounds (here
     and in Profiles.v): component bounds, products, squares. *)
 Ltac unit_facts_of s Hua Hub Hul :=
@@ -949,19 +1061,7 @@ Qed.
 
 Lemma g_ideal : forall i, (i <= n s)%nat ->
   Rabs (f_pa rnd s + INR i * f_dp rnd s - gouraud s i) <= 9012 / 1000 * u.
-Proof.
-  intros i Hi. basics.
-  assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
-  unfold gouraud, dp.
-  replace (f_pa rnd s + INR i * f_dp rnd s - (pa s + INR i * ((pb s - pa s) / nr)))
-    with ((1 - INR i / nr) * (f_pa rnd s - pa s) + INR i / nr * (f_pb rnd s - pb s)
-          + INR i / nr * (nr * f_dp rnd s - (f_pb rnd s - f_pa rnd s)) - 0 * 0)
-    by (field; lra).
-  eapply Rle_trans.
-  { apply comb_bound; [apply theta_rng; lra | lra | apply L_pa | apply L_pb | apply L_dp
-                      | rewrite Rabs_R0; apply Rle_refl]. }
-  lra.
-Qed.
+Proof. intros i Hi. pose proof (g_near s _ _ _ _ _ Hn1 L_pa L_pb L_dp i Hi). lra. Qed.
 
 Lemma slope_f : forall J, (J < n s)%nat ->
   Rabs (nr * (f_t0 rnd s + INR J * f_ds rnd s)) <= 2 + 200 * u.
@@ -973,81 +1073,28 @@ Qed.
 Lemma ce_final : forall i, (i <= n s)%nat ->
   Rabs (f_ceuler rnd s i - ceuler s i) <= (22 / 10 * INR (n s) + 42) * u.
 Proof.
-  intros i Hi. basics. pose proof (eta_pos u eta Hok) as He0. pose proof (eta_small u eta Hok) as He1.
-  set (Ms := 2001 / 1000 / nr). set (Mp := 1194 / 1000).
-  assert (HMs : 0 <= Ms) by (unfold Ms, Rdiv; apply Rmult_le_pos; [lra | apply Rlt_le, Rinv_0_lt_compat; lra]).
-  assert (Hnn : nr * nr <= 16777216) by nra.
-  assert (Hnu : nr * u <= 4096 * u) by (apply Rmult_le_compat_r; lra).
-  assert (Hne : nr * eta <= 4096 * eta) by (apply Rmult_le_compat_r; lra).
-  assert (Hnne : nr * nr * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra).
-  assert (Ems : nr * (u * Ms + eta) = 2001 / 1000 * u + nr * eta) by (unfold Ms; field; lra).
-  assert (Ems2 : nr * nr / 2 * (u * Ms + eta) = 10005 / 10000 * (nr * u) + nr * nr * eta / 2)
-    by (unfold Ms; field; lra).
-  destruct (FloatModelK.floop_err rnd u eta Hstd Hok (f_pa rnd s) (f_t0 rnd s) (f_ds rnd s)
-              (n s) Ms Mp
-              HMs ltac:(unfold Mp; lra)) with (i := i) as [_ HP]; [| | exact Hi |].
-  - intros j Hj. pose proof (slope_f (S j) Hj) as G0.
-    assert (G1 : Rabs (f_t0 rnd s + INR (S j) * f_ds rnd s) <= (2 + 200 * u) / nr).
-    { replace (f_t0 rnd s + INR (S j) * f_ds rnd s)
-        with (nr * (f_t0 rnd s + INR (S j) * f_ds rnd s) / nr) by (field; lra).
-      unfold Rdiv. rewrite Rabs_mult, (Rabs_pos_eq (/ nr))
-        by (apply Rlt_le, Rinv_0_lt_compat; lra).
-      apply Rmult_le_compat_r; [apply Rlt_le, Rinv_0_lt_compat; lra | exact G0]. }
-    assert (G2 : (2 + 200 * u) / nr + nr * (u * Ms + eta) <= Ms).
-    { unfold Ms. apply div_helper; [lra|].
-      replace (nr * (u * (2001 / 1000 / nr) + eta) * nr)
-        with (2001 / 1000 * (nr * u) + nr * nr * eta) by (field; lra).
-      lra. }
-    lra.
-  - intros j Hj.
-    pose proof (ce_ideal (S j) Hj) as G0. pose proof (ceuler_le s Hua Hub Hul Hn1 (S j) Hj) as G1.
-    pose proof (abs_near _ _ _ G0) as G2.
-    rewrite Ems2. unfold Mp. lra.
-  - pose proof (ce_ideal i Hi) as G0.
-    assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
-    unfold f_ceuler.
-    replace (fst (floop rnd (f_pa rnd s) (f_t0 rnd s) (f_ds rnd s) i) - ceuler s i)
-      with ((fst (floop rnd (f_pa rnd s) (f_t0 rnd s) (f_ds rnd s) i)
-             - (f_pa rnd s + INR i * f_t0 rnd s + INR i * (INR i - 1) / 2 * f_ds rnd s))
-            + (f_pa rnd s + INR i * f_t0 rnd s + INR i * (INR i - 1) / 2 * f_ds rnd s
-               - ceuler s i)) by ring.
-    eapply Rle_trans; [apply Rabs_triang|].
-    assert (Es0 : 0 <= u * Ms + eta) by (pose proof (Rmult_le_pos u Ms); lra).
-    assert (K1 : INR i * (INR i - 1) / 2 <= nr * (nr - 1) / 2) by nra.
-    assert (K2 : INR i * (INR i - 1) / 2 * (u * Ms + eta) <= nr * (nr - 1) / 2 * (u * Ms + eta))
-      by (apply Rmult_le_compat_r; lra).
-    assert (K3 : nr * (nr - 1) / 2 * (u * Ms + eta)
-                 = 10005 / 10000 * (nr * u) - 10005 / 10000 * u + nr * nr * eta / 2 - nr * eta / 2)
-      by (unfold Ms; field; lra).
-    assert (K4 : INR i * (u * Mp + eta) <= nr * (u * Mp + eta))
-      by (apply Rmult_le_compat_r; [unfold Mp; nra | lra]).
-    assert (K5 : 0 <= nr * u) by (apply Rmult_le_pos; lra).
-    assert (K6 : 0 <= nr * eta) by (apply Rmult_le_pos; lra).
-    unfold Mp in *. lra.
+  intros i Hi. basics. pose proof (eta_pos u eta Hok) as He0. pose proof (eta_small u eta Hok).
+  assert (nr * u <= 4096 * u) by (apply Rmult_le_compat_r; lra).
+  pose proof (loop_near (n s) (f_pa rnd s) (f_ds rnd s) (f_t0 rnd s) (2 + 200 * u) (2002 / 1000)
+    (1194 / 1000) (4197 / 100 * u) (11925 / 10000) eta u (ceuler s)
+    (fun j => fst (floop rnd (f_pa rnd s) (f_t0 rnd s) (f_ds rnd s) j))
+    (fun j => snd (floop rnd (f_pa rnd s) (f_t0 rnd s) (f_ds rnd s) j)) ltac:(lra) He0
+    ltac:(lra) ltac:(lra) ltac:(lra) ltac:(lra) ltac:(lra) ltac:(lra) slope_f
+    (fun j Hj => conj (ce_ideal j Hj) (ceuler_le s Hua Hub Hul Hn1 j Hj)) eq_refl eq_refl
+    ltac:(intros j _; cbv beta; rewrite floop_S; cbn [fst snd]; split; apply Hstd) i Hi).
+  unfold f_ceuler. assert (0 <= nr * u) by (apply Rmult_le_pos; lra). lra.
 Qed.
 
 Lemma g_final : forall i, (i <= n s)%nat ->
   Rabs (f_gouraud rnd s i - gouraud s i) <= (1001 / 1000 * INR (n s) + 10) * u.
 Proof.
-  intros i Hi. basics. pose proof (eta_pos u eta Hok) as He0. pose proof (eta_small u eta Hok) as He1.
-  assert (Hnu : nr * u <= 4096 * u) by (apply Rmult_le_compat_r; lra).
-  assert (Hne : nr * eta <= 4096 * eta) by (apply Rmult_le_compat_r; lra).
-  pose proof (FloatModelK.gloop_err rnd u eta Hstd Hok (f_pa rnd s) (f_dp rnd s) (n s) (1001 / 1000)
-                ltac:(lra)) as HG.
-  assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
-  specialize (HG ltac:(intros j Hj;
-     pose proof (g_ideal (S j) Hj) as G0; pose proof (gouraud_le s Hua Hub Hul Hn1 (S j) Hj) as G1;
-     pose proof (abs_near _ _ _ G0) as G2; lra) i Hi).
-  pose proof (g_ideal i Hi) as G0.
-  unfold f_gouraud.
-  replace (gloop rnd (f_pa rnd s) (f_dp rnd s) i - gouraud s i)
-    with ((gloop rnd (f_pa rnd s) (f_dp rnd s) i - (f_pa rnd s + INR i * f_dp rnd s))
-          + (f_pa rnd s + INR i * f_dp rnd s - gouraud s i)) by ring.
-  eapply Rle_trans; [apply Rabs_triang|].
-  assert (K4 : INR i * (u * (1001 / 1000) + eta) <= nr * (u * (1001 / 1000) + eta))
-    by (apply Rmult_le_compat_r; nra).
-  assert (K5 : 0 <= nr * u) by (apply Rmult_le_pos; lra).
-  lra.
+  intros i Hi. basics. pose proof (eta_pos u eta Hok) as He0. pose proof (eta_small u eta Hok).
+  assert (nr * u <= 4096 * u) by (apply Rmult_le_compat_r; lra).
+  pose proof (gloop_near (n s) (f_pa rnd s) (f_dp rnd s) (9012 / 1000 * u) eta u (gouraud s)
+    (gloop rnd (f_pa rnd s) (f_dp rnd s)) ltac:(lra) He0 ltac:(lra) ltac:(lra)
+    (fun j Hj => conj (g_ideal j Hj) (gouraud_le s Hua Hub Hul Hn1 j Hj)) ltac:(lra) eq_refl
+    ltac:(intros j _; cbn [gloop]; apply Hstd) i Hi).
+  unfold f_gouraud. assert (0 <= nr * u) by (apply Rmult_le_pos; lra). lra.
 Qed.
 
 End Span_.

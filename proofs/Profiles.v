@@ -413,18 +413,8 @@ Lemma g_ideal : forall i, (i <= n s)%nat ->
   (2 * (k_in M * u) + k_mul M * u + 2 * (k_add M * u)) * (1 + / 131072)
   + (k_add M * u + k_div M * u) * (2 + / 65536) + 16777236 * eta.
 Proof.
-  intros i Hi. pose proof g_nr as Hn.
-  assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
-  destruct g_pa_pb as [P1 P2]. pose proof g_dp as P3.
-  unfold gouraud, dp.
-  replace (fs_pa F + INR i * fs_dp F - (pa s + INR i * ((pb s - pa s) / nr)))
-    with ((1 - INR i / nr) * (fs_pa F - pa s) + INR i / nr * (fs_pb F - pb s)
-          + INR i / nr * (nr * fs_dp F - (fs_pb F - fs_pa F)) - 0 * 0)
-    by (field; lra).
-  eapply Rle_trans.
-  { apply comb_bound; [apply theta_rng; lra | lra | apply P1 | apply P2 | apply P3
-                      | rewrite Rabs_R0; apply Rle_refl]. }
-  lra.
+  intros i Hi. destruct g_pa_pb as [P1 P2].
+  pose proof (g_near s _ _ _ _ _ Hn1 P1 P2 g_dp i Hi). lra.
 Qed.
 
 Lemma g_final : forall G, gouraud_run M F (n s) G ->
@@ -437,29 +427,10 @@ Proof.
   intros G [HG0 HG] Hnu i Hi.
   pose proof HM as (_ & _ & _ & Ki & Ka & Km & Kd & _ & _).
   pose proof (g_units _ Ki). pose proof (g_units _ Ka). pose proof (g_units _ Km).
-  pose proof (g_units _ Kd).
-  destruct g_eta as (E1 & E2 & E3). pose proof g_nr as Hn.
-  assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
-  assert (Hne : nr * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra).
-  pose proof (gseq_err (k_add M * u) eta G (fs_dp F) (n s) (10006 / 10000) ltac:(lra) E1
-                ltac:(lra) HG) as L.
-  assert (Hid : forall j, (j <= n s)%nat -> Rabs (fs_pa F + INR j * fs_dp F) <= 1 + / 65536).
-  { intros j Hj. pose proof (g_ideal j Hj) as G0. pose proof (gouraud_le s Hua Hub Hul Hn1 j Hj).
-    pose proof (abs_near _ _ _ G0). lra. }
-  rewrite HG0 in L.
-  specialize (L ltac:(intros j Hj; pose proof (Hid (S j) Hj);
-     assert (nr * (k_add M * u * (10006 / 10000) + eta) <= / 2048 * (10006 / 10000) + 16777216 * eta)
-       by lra;
-     lra) i Hi).
-  pose proof (g_ideal i Hi) as G0.
-  replace (G i - gouraud s i)
-    with ((G i - (fs_pa F + INR i * fs_dp F)) + (fs_pa F + INR i * fs_dp F - gouraud s i)) by ring.
-  eapply Rle_trans; [apply Rabs_triang|].
-  assert (K4 : INR i * (k_add M * u * (10006 / 10000) + eta)
-               <= nr * (k_add M * u * (10006 / 10000) + eta))
-    by (apply Rmult_le_compat_r; nra).
-  assert (K5 : nr * eta * 1152921504606846976 <= 16777216 * u) by nra.
-  lra.
+  pose proof (g_units _ Kd). destruct g_eta as (E1 & E2 & E3).
+  pose proof (gloop_near (n s) _ _ _ eta (k_add M * u) (gouraud s) G g_nr E1 ltac:(lra) Hnu
+    (fun j Hj => conj (g_ideal j Hj) (gouraud_le s Hua Hub Hul Hn1 j Hj))) as L.
+  specialize (L ltac:(lra) HG0 HG i Hi). lra.
 Qed.
 
 End Gouraud.
@@ -1085,71 +1056,6 @@ Proof.
   pose proof (slope_near s Hua Hub Hul Hn1 _ _ _ _ _ _ _ K_pa K_pb K_R K_ds J HJ). lra.
 Qed.
 
-(** The loops p += s, s += ds from (p_a, t), t = t0 (corrected Euler) or
-    di_a (Euler), with their own addition unit ua <= v, n ua <= 2^-11:
-    |n (t + J ds)| <= Cs + 200 (v + d), the closed form on the computed values
-    within E0 of ex and |ex| <= B; Msn / n and Mp bound the loop's s and p. *)
-Lemma K_final_gen : forall (t Cs Msn Mp E0 B : R) (ex : nat -> R) (ua : R) (P Q : nat -> R),
-  0 <= ua <= v -> nr * ua <= / 2048 -> 0 <= Msn -> 0 <= Mp ->
-  Cs + 200 * (v + d) + Msn / 2048 + 281474976710656 * eta <= Msn ->
-  B + E0 + (Msn / 2 + Mp) / 2048 + 281474976710656 * eta <= Mp ->
-  (forall J, (J < n s)%nat -> Rabs (nr * (t + INR J * fds)) <= Cs + 200 * (v + d)) ->
-  (forall j, (j <= n s)%nat ->
-     Rabs (fpa + INR j * t + INR j * (INR j - 1) / 2 * fds - ex j) <= E0 /\ Rabs (ex j) <= B) ->
-  P O = fpa -> Q O = t ->
-  (forall j, (j < n s)%nat -> ap1 ua eta (P (S j)) (P j + Q j) /\ ap1 ua eta (Q (S j)) (Q j + fds)) ->
-  forall i, (i <= n s)%nat ->
-  Rabs (P i - ex i) <= (Msn / 2 + Mp) * (nr * ua) + E0 + 281474976710656 * eta.
-Proof.
-  intros t Cs Msn Mp E0 B ex ua P Q Hua0 Hnua HMsn HMp HC1 HC2 Hsl Hid HP0 HQ0 Hstep i Hi. ebasics.
-  set (Ms := Msn / nr).
-  assert (HMs : 0 <= Ms)
-    by (unfold Ms, Rdiv; apply Rmult_le_pos; [lra | apply Rlt_le, Rinv_0_lt_compat; lra]).
-  assert (Hnn : nr * nr <= 281474976710656) by nra.
-  assert (Hne : nr * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra).
-  assert (Hnne : nr * nr * eta <= 281474976710656 * eta) by (apply Rmult_le_compat_r; lra).
-  assert (Hnu0 : 0 <= nr * ua) by (apply Rmult_le_pos; lra).
-  assert (Hs1 : Msn * (nr * ua) <= Msn / 2048) by (apply Rmult_le_compat_l; lra).
-  assert (Hp1 : Mp * (nr * ua) <= Mp / 2048) by (apply Rmult_le_compat_l; lra).
-  assert (Ems2 : nr * nr / 2 * (ua * Ms + eta) = Msn / 2 * (nr * ua) + nr * nr * eta / 2)
-    by (unfold Ms; field; lra).
-  assert (Emp : nr * (ua * Mp + eta) = Mp * (nr * ua) + nr * eta) by ring.
-  destruct (cseq_err ua eta P Q fds (n s) Ms Mp ltac:(lra) He0 HMs HMp Hstep)
-    with (i := i) as [_ HPi]; [| | exact Hi |].
-  - intros j Hj. rewrite HQ0. pose proof (Hsl (S j) Hj) as G0.
-    assert (G1 : Rabs (t + INR (S j) * fds) <= (Cs + 200 * (v + d)) / nr).
-    { replace (t + INR (S j) * fds) with (nr * (t + INR (S j) * fds) / nr) by (field; lra).
-      unfold Rdiv. rewrite Rabs_mult, (Rabs_pos_eq (/ nr))
-        by (apply Rlt_le, Rinv_0_lt_compat; lra).
-      apply Rmult_le_compat_r; [apply Rlt_le, Rinv_0_lt_compat; lra | exact G0]. }
-    assert (G2 : (Cs + 200 * (v + d)) / nr + nr * (ua * Ms + eta) <= Ms).
-    { unfold Ms. apply div_helper; [lra|].
-      replace (nr * (ua * (Msn / nr) + eta) * nr) with (Msn * (nr * ua) + nr * nr * eta)
-        by (field; lra).
-      lra. }
-    lra.
-  - intros j Hj. rewrite HP0, HQ0. destruct (Hid (S j) Hj) as [G0 G1].
-    pose proof (abs_near _ _ _ G0) as G2. rewrite Ems2, Emp. lra.
-  - rewrite HP0, HQ0 in HPi. destruct (Hid i Hi) as [G0 _].
-    assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
-    replace (P i - ex i)
-      with ((P i - (fpa + INR i * t + INR i * (INR i - 1) / 2 * fds))
-            + (fpa + INR i * t + INR i * (INR i - 1) / 2 * fds - ex i)) by ring.
-    eapply Rle_trans; [apply Rabs_triang|].
-    assert (Es0 : 0 <= ua * Ms + eta) by (pose proof (Rmult_le_pos ua Ms); lra).
-    assert (K1 : INR i * (INR i - 1) / 2 <= nr * (nr - 1) / 2) by nra.
-    assert (K2 : INR i * (INR i - 1) / 2 * (ua * Ms + eta) <= nr * (nr - 1) / 2 * (ua * Ms + eta))
-      by (apply Rmult_le_compat_r; lra).
-    assert (K3 : nr * (nr - 1) / 2 * (ua * Ms + eta)
-                 = Msn / 2 * (nr * ua) - Msn / 2 * ua + nr * nr * eta / 2 - nr * eta / 2)
-      by (unfold Ms; field; lra).
-    assert (K4 : INR i * (ua * Mp + eta) <= nr * (ua * Mp + eta))
-      by (apply Rmult_le_compat_r; [nra | lra]).
-    assert (K5 : 0 <= Msn / 2 * ua) by (apply Rmult_le_pos; lra).
-    assert (K6 : 0 <= nr * eta) by (apply Rmult_le_pos; lra).
-    lra.
-Qed.
-
 (** The loop, with its own addition unit ua <= v and n ua <= 2^-11. *)
 Lemma K_ce_final : forall (ua : R) (P Q : nat -> R), 0 <= ua <= v -> nr * ua <= / 2048 ->
   P O = fpa -> Q O = ft0 ->
@@ -1158,9 +1064,9 @@ Lemma K_ce_final : forall (ua : R) (P Q : nat -> R), 0 <= ua <= v -> nr * ua <= 
   Rabs (P i - ceuler s i) <= 22 / 10 * (nr * ua) + 366 / 10 * v + 73 / 10 * d.
 Proof.
   intros ua P Q Hua0 Hnua HP0 HQ0 Hstep i Hi. ebasics.
-  pose proof (K_final_gen ft0 2 (2002 / 1000) (1194 / 1000) (3656 / 100 * v + 727 / 100 * d)
-    (11925 / 10000) (ceuler s) ua P Q Hua0 Hnua ltac:(lra) ltac:(lra) ltac:(lra) ltac:(lra)
-    K_slope (fun j Hj => conj (K_ce_ideal j Hj) (ceuler_le s Hua Hub Hul Hn1 j Hj))
+  pose proof (loop_near (n s) fpa fds ft0 (2 + 200 * (v + d)) (2002 / 1000) (1194 / 1000)
+    (3656 / 100 * v + 727 / 100 * d) (11925 / 10000) eta ua (ceuler s) P Q K_nr He0 (proj1 Hua0)
+    Hnua ltac:(lra) ltac:(lra) ltac:(lra) ltac:(lra) K_slope (fun j Hj => conj (K_ce_ideal j Hj) (ceuler_le s Hua Hub Hul Hn1 j Hj))
     HP0 HQ0 Hstep i Hi).
   assert (0 <= nr * ua) by (apply Rmult_le_pos; lra). lra.
 Qed.
@@ -1300,9 +1206,9 @@ Lemma K_eu_final : forall (ua : R) (P Q : nat -> R), 0 <= ua <= v -> nr * ua <= 
   Rabs (P i - euler_span s i) <= 555 / 100 * (nr * ua) + 912 / 10 * v + 151 / 10 * d.
 Proof.
   intros ua P Q Hua0 Hnua HP0 HQ0 Hstep i Hi. ebasics.
-  pose proof (K_final_gen fdia (354 / 100) (3545 / 1000) (3775 / 1000)
-    (9111 / 100 * v + 1507 / 100 * d) (377 / 100) (euler_span s) ua P Q Hua0 Hnua
-    ltac:(lra) ltac:(lra) ltac:(lra) ltac:(lra) (fun J HJ => K_eu_slope J ltac:(lia))
+  pose proof (loop_near (n s) fpa fds fdia (354 / 100 + 200 * (v + d)) (3545 / 1000)
+    (3775 / 1000) (9111 / 100 * v + 1507 / 100 * d) (377 / 100) eta ua (euler_span s) P Q K_nr
+    He0 (proj1 Hua0) Hnua ltac:(lra) ltac:(lra) ltac:(lra) ltac:(lra) (fun J HJ => K_eu_slope J ltac:(lia))
     (fun j Hj => conj (K_eu_ideal j Hj) (K_eu_le j Hj)) HP0 HQ0 Hstep i Hi).
   assert (0 <= nr * ua) by (apply Rmult_le_pos; lra). lra.
 Qed.

@@ -2048,79 +2048,70 @@ Definition adaptive_accepts (x delta bG bCE u : R) (G C out : nat -> R) (n : nat
   \/ (adaptive_band x bG bCE u < Rabs (Rabs (x * delta) - 1)
       /\ ((Rabs (x * delta) < 1 /\ within_of bG out G n)
           \/ (1 <= Rabs (x * delta) /\ within_of bCE out C n))).
-Lemma acc_decision_far_below :
-  forall x u B D Dh th1 th2,
-    0 < x -> 0 <= u <= 1/1024 -> 0 <= B ->
-    Rabs (Dh - D) <= B -> Rabs th1 <= u -> Rabs th2 <= 3 * u ->
-    x * Rabs D < 1 - (x * (101 / 100 * B + 2 * u) + 4 * u) ->
-    Rabs (x * (Dh * (1 + th1)) * (1 + th2)) < 1.
+(** Outside the band the test on δ̂ (within E of δ) decides as the exact δ
+    would; inside it either method's set is accepted (here and in AdaptiveDelta.v). *)
+Lemma acc_decision_far_below : forall x u E D Dh th2,
+  0 < x -> 0 <= u <= 1/1024 -> Rabs (Dh - D) <= E -> Rabs th2 <= 3 * u ->
+  x * Rabs D < 1 - (x * E + 4 * u) -> Rabs (x * Dh * (1 + th2)) < 1.
 Proof.
-  intros x u B D Dh th1 th2 Hx Hu HB HD H1 H2 Hlt.
-  assert (HDh : Rabs Dh <= Rabs D + B).
-  { replace Dh with (D + (Dh - D)) by ring.
-    eapply Rle_trans; [apply Rabs_triang|]. lra. }
-  assert (Ha1 : Rabs (1 + th1) <= 1 + u).
-  { eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_R1. lra. }
+  intros x u E D Dh th2 Hx Hu HD H2 Hlt.
+  assert (HDh : Rabs Dh <= Rabs D + E).
+  { replace Dh with (D + (Dh - D)) by ring. eapply Rle_trans; [apply Rabs_triang|]. lra. }
   assert (Ha2 : Rabs (1 + th2) <= 1 + 3 * u).
   { eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_R1. lra. }
   rewrite !Rabs_mult, (Rabs_pos_eq x) by lra.
-  assert (Hk : 0 <= Rabs Dh) by apply Rabs_pos.
-  assert (Hp1 : 0 <= Rabs (1 + th1)) by apply Rabs_pos.
-  assert (Hp2 : 0 <= Rabs (1 + th2)) by apply Rabs_pos.
-  assert (Hs : x * Rabs Dh <= x * Rabs D + x * B) by nra.
-  assert (Hprod : Rabs (1 + th1) * Rabs (1 + th2) <= (1 + u) * (1 + 3 * u)) by nra.
-  assert (Hxb : 0 <= x * B) by nra.
-  assert (Hxu : 0 <= x * u) by nra.
-  apply Rle_lt_trans with ((x * Rabs D + x * B) * ((1 + u) * (1 + 3 * u))).
-  { replace (x * (Rabs Dh * Rabs (1 + th1)) * Rabs (1 + th2))
-      with ((x * Rabs Dh) * (Rabs (1 + th1) * Rabs (1 + th2))) by ring.
-    apply Rmult_le_compat; nra. }
-  assert (Hc : x * Rabs D + x * B < 1 - 4 * u) by nra.
-  assert (Hpos : 0 < (1 + u) * (1 + 3 * u)) by nra.
-  apply Rlt_le_trans with ((1 - 4 * u) * ((1 + u) * (1 + 3 * u))).
-  { apply Rmult_lt_compat_r; assumption. }
+  assert (Hs : x * Rabs Dh <= x * Rabs D + x * E) by (apply Rmult_le_compat_l with (r := x) in HDh; lra).
+  assert (Hk : 0 <= x * Rabs Dh) by (apply Rmult_le_pos; [lra | apply Rabs_pos]).
+  assert (Hp : 0 <= Rabs (1 + th2)) by apply Rabs_pos.
+  apply Rle_lt_trans with (x * Rabs Dh * (1 + 3 * u)).
+  { apply Rmult_le_compat_l; lra. }
+  apply Rlt_le_trans with ((1 - 4 * u) * (1 + 3 * u)).
+  { apply Rmult_lt_compat_r; lra. }
   nra.
 Qed.
 
-Lemma acc_decision_far_above :
-  forall x u B D Dh th1 th2,
-    0 < x -> 0 <= u <= 1/1024 -> 0 <= B -> Rabs D <= 2 ->
-    Rabs (Dh - D) <= B -> Rabs th1 <= u -> Rabs th2 <= 3 * u ->
-    1 + (x * (101 / 100 * B + 2 * u) + 4 * u) < x * Rabs D ->
-    1 <= Rabs (x * (Dh * (1 + th1)) * (1 + th2)).
+Lemma acc_decision_far_above : forall x u E D Dh th2,
+  0 < x -> 0 <= u <= 1/1024 -> Rabs (Dh - D) <= E -> Rabs th2 <= 3 * u ->
+  1 + (x * E + 4 * u) < x * Rabs D -> 1 <= Rabs (x * Dh * (1 + th2)).
 Proof.
-  intros x u B D Dh th1 th2 Hx Hu HB HD2 HD H1 H2 Hgt.
-  assert (HDh : Rabs D - B <= Rabs Dh).
+  intros x u E D Dh th2 Hx Hu HD H2 Hgt.
+  assert (HDh : Rabs D - E <= Rabs Dh).
   { pose proof (Rabs_triang_inv D Dh) as T. rewrite Rabs_minus_sym in T. lra. }
-  assert (Ha1 : 1 - u <= Rabs (1 + th1)).
-  { pose proof (Rabs_triang_inv 1 (- th1)) as T.
-    replace (1 - - th1) with (1 + th1) in T by ring.
-    rewrite Rabs_R1, Rabs_Ropp in T. lra. }
   assert (Ha2 : 1 - 3 * u <= Rabs (1 + th2)).
   { pose proof (Rabs_triang_inv 1 (- th2)) as T.
     replace (1 - - th2) with (1 + th2) in T by ring.
     rewrite Rabs_R1, Rabs_Ropp in T. lra. }
   rewrite !Rabs_mult, (Rabs_pos_eq x) by lra.
-  assert (Hxhalf : 1 / 2 < x).
-  { assert (x * Rabs D <= x * 2) by (apply Rmult_le_compat_l; lra).
-    assert (Hxb : 0 <= x * B) by nra. nra. }
-  assert (Hxb : 0 <= x * B) by nra.
-  assert (Hl : 1 + 2 * x * u + 4 * u < x * Rabs D - x * B) by nra.
-  assert (Hm : x * Rabs D - x * B <= x * Rabs Dh) by nra.
-  assert (Hprod : (1 - u) * (1 - 3 * u) <= Rabs (1 + th1) * Rabs (1 + th2)) by nra.
-  apply Rle_trans with ((1 + 2 * x * u + 4 * u) * ((1 - u) * (1 - 3 * u))).
-  { assert (Hxu : x * u <= x * (1 / 1024)) by (apply Rmult_le_compat_l; lra).
-    assert (Hw : 0 <= 2 * x - 8 * x * u - 13 * u) by lra.
-    assert (Hw2 : 0 <= u * (2 * x - 8 * x * u - 13 * u)) by nra.
-    assert (Hw3 : 0 <= 3 * u * u * (2 * x * u + 4 * u)).
-    { apply Rmult_le_pos; [nra|]. assert (0 <= x * u) by nra. lra. }
-    replace ((1 + 2 * x * u + 4 * u) * ((1 - u) * (1 - 3 * u)))
-      with (1 + u * (2 * x - 8 * x * u - 13 * u) + 3 * u * u * (2 * x * u + 4 * u))
-      by ring.
-    lra. }
-  replace (x * (Rabs Dh * Rabs (1 + th1)) * Rabs (1 + th2))
-    with ((x * Rabs Dh) * (Rabs (1 + th1) * Rabs (1 + th2))) by ring.
-  apply Rmult_le_compat; nra.
+  assert (Hm : x * Rabs D - x * E <= x * Rabs Dh) by (apply Rmult_le_compat_l with (r := x) in HDh; lra).
+  apply Rle_trans with ((1 + 4 * u) * (1 - 3 * u)); [nra|].
+  apply Rmult_le_compat; lra.
+Qed.
+
+Lemma adaptive_accepts_of_delta_error :
+  forall (x u bG bCE D Dh E th2 : R) (G C out : nat -> R) (n : nat),
+    0 < x -> 0 <= u <= 1/1024 ->
+    Rabs (Dh - D) <= E -> E <= 101 / 100 * (bG + bCE) + 2 * u -> Rabs th2 <= 3 * u ->
+    (Rabs (x * Dh * (1 + th2)) < 1 -> within_of bG out G n) ->
+    (1 <= Rabs (x * Dh * (1 + th2)) -> within_of bCE out C n) ->
+    adaptive_accepts x D bG bCE u G C out n.
+Proof.
+  intros x u bG bCE D Dh E th2 G C out n Hx Hu HD HE H2 Hgo Hce.
+  assert (HxE : x * E <= x * (101 / 100 * (bG + bCE) + 2 * u)) by (apply Rmult_le_compat_l; lra).
+  unfold adaptive_accepts, adaptive_band.
+  rewrite Rabs_mult, (Rabs_pos_eq x) by lra.
+  destruct (Rle_or_lt (Rabs (x * Rabs D - 1))
+                      (x * (101 / 100 * (bG + bCE) + 2 * u) + 4 * u)) as [Hnear|Hfar].
+  - left. split; [exact Hnear|].
+    destruct (Rlt_or_le (Rabs (x * Dh * (1 + th2))) 1) as [Ht|Ht];
+      [left; apply Hgo | right; apply Hce]; exact Ht.
+  - right. split; [exact Hfar|].
+    destruct (Rlt_or_le (x * Rabs D) 1) as [Hb|Ha].
+    + left. split; [exact Hb|]. apply Hgo.
+      rewrite Rabs_left in Hfar by lra.
+      apply (acc_decision_far_below x u E D Dh th2); try assumption; lra.
+    + right. split; [exact Ha|]. apply Hce.
+      rewrite Rabs_pos_eq in Hfar by lra.
+      apply (acc_decision_far_above x u E D Dh th2); try assumption; lra.
 Qed.
 
 Theorem adaptive_acceptance_contains_every_run :
@@ -2133,24 +2124,16 @@ Theorem adaptive_acceptance_contains_every_run :
     (1 <= Rabs (x * ((Gh - Ch) * (1 + th1)) * (1 + th2)) -> within_of bCE out C n) ->
     adaptive_accepts x (Gj - Cj) bG bCE u G C out n.
 Proof.
-  intros x u bG bCE Gj Cj Gh Ch th1 th2 G C out n
-         Hx Hu HbG HbCE HD2 HG HC H1 H2 Hgo Hce.
-  set (t := Rabs (x * ((Gh - Ch) * (1 + th1)) * (1 + th2))).
+  intros x u bG bCE Gj Cj Gh Ch th1 th2 G C out n Hx Hu HbG HbCE HD2 HG HC H1 H2 Hgo Hce.
   assert (HD : Rabs ((Gh - Ch) - (Gj - Cj)) <= bG + bCE).
   { replace ((Gh - Ch) - (Gj - Cj)) with ((Gh - Gj) + - (Ch - Cj)) by ring.
     eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_Ropp. lra. }
-  unfold adaptive_accepts, adaptive_band.
-  rewrite Rabs_mult, (Rabs_pos_eq x) by lra.
-  destruct (Rle_or_lt (Rabs (x * Rabs (Gj - Cj) - 1))
-                      (x * (101 / 100 * (bG + bCE) + 2 * u) + 4 * u)) as [Hnear|Hfar].
-  - left. split; [exact Hnear|].
-    destruct (Rlt_or_le t 1) as [Ht|Ht]; [left; apply Hgo | right; apply Hce]; exact Ht.
-  - right. split; [exact Hfar|].
-    destruct (Rlt_or_le (x * Rabs (Gj - Cj)) 1) as [Hb|Ha].
-    + left. split; [exact Hb|]. apply Hgo.
-      rewrite Rabs_left in Hfar by lra.
-      apply (acc_decision_far_below x u (bG + bCE) (Gj - Cj)); try assumption; lra.
-    + right. split; [exact Ha|]. apply Hce.
-      rewrite Rabs_pos_eq in Hfar by lra.
-      apply (acc_decision_far_above x u (bG + bCE) (Gj - Cj)); try assumption; lra.
+  assert (Ht : Rabs ((Gh - Ch) * th1) <= (2 + (bG + bCE)) * u).
+  { rewrite Rabs_mult. pose proof (abs_near _ _ _ HD).
+    apply Rmult_le_compat; try apply Rabs_pos; lra. }
+  apply (adaptive_accepts_of_delta_error x u bG bCE _ ((Gh - Ch) * (1 + th1))
+           ((bG + bCE) + (2 + (bG + bCE)) * u) th2); try assumption; [|nra].
+  replace ((Gh - Ch) * (1 + th1) - (Gj - Cj)) with (((Gh - Ch) - (Gj - Cj)) + (Gh - Ch) * th1)
+    by ring.
+  eapply Rle_trans; [apply Rabs_triang|]. lra.
 Qed.

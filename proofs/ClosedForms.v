@@ -495,12 +495,8 @@ Proof.
   assert (A2 : Rabs (-1 - 0) * 255 >= 1) by (rewrite Rabs_left; lra).
   assert (A3 : Rabs (-1 - 1 / 1000) * 255 >= 1) by (rewrite Rabs_left; lra).
   split; [exact Hunit |]. split; [exact Hclamp |]. split.
-  - intros s Kd HG HC H. apply Hunit; [exact HG | exact HC |].
-    rewrite (proj1 (eq_24_delta_closed_form s)) in H.
-    replace (Kd * gouraud s (m_step (n s)) - Kd * ceuler s (m_step (n s)))
-      with ((gouraud s (m_step (n s)) - ceuler s (m_step (n s))) * Kd) by ring.
-    rewrite Rabs_mult. rewrite Rabs_mult, Rabs_mult in H.
-    rewrite (Rabs_pos_eq 255) in H by lra. lra.
+  - intros s Kd HG HC H. rewrite !clamped_level_is_level by assumption.
+    exact (proj2 eq_24_large_delta_implies_different_levels s Kd H).
   - split.
     + intros H. apply (H 2 1 A1). rewrite L2, L1. reflexivity.
     + repeat split; assumption.

@@ -80,6 +80,19 @@ Proof.
   lra.
 Qed.
 
+(** j lo / (2 n^2) <= 1/8 for j + lo = n. *)
+Lemma ad_kk : forall nr j lo, 1 <= nr -> 0 <= j -> 0 <= lo -> j + lo = nr ->
+  0 <= j * lo / (2 * (nr * nr)) <= 1 / 8.
+Proof.
+  intros nr j lo Hn Hj Hlo Hs. split.
+  - unfold Rdiv. apply Rmult_le_pos; [apply Rmult_le_pos; lra | apply Rlt_le, Rinv_0_lt_compat; nra].
+  - assert (Hjl : j * lo <= nr * nr / 4)
+      by (rewrite <- Hs; pose proof (Rle_0_sqr (j - lo)) as Sq; unfold Rsqr in Sq; lra).
+    apply (Rmult_le_reg_r (2 * (nr * nr))); [nra|].
+    replace (j * lo / (2 * (nr * nr)) * (2 * (nr * nr))) with (j * lo) by (field; nra).
+    lra.
+Qed.
+
 (** the kernel's delta = ds/2 * j * lo with j + lo = n, c1 c2 c3 = j lo / 2 *)
 Lemma ad_fast_err : forall v eta nr j lo dsx dsh Eds c1 c2 c3 y1 y2 dh,
   0 <= v <= 1/1024 -> 0 <= eta -> 1 <= nr -> 0 <= j -> 0 <= lo -> j + lo = nr ->
@@ -94,13 +107,7 @@ Proof.
          Hds Hdx A1 A2 A3.
   pose proof (ad_chain3 v eta c1 c2 c3 dsh y1 y2 dh Hv He H1 H2 H3 A1 A2 A3) as C.
   set (kk := j * lo / (2 * (nr * nr))).
-  assert (Hk : 0 <= kk <= 1 / 8).
-  { unfold kk. split.
-    - unfold Rdiv. apply Rmult_le_pos; [apply Rmult_le_pos; lra | apply Rlt_le, Rinv_0_lt_compat; nra].
-    - assert (Hjl : j * lo <= nr * nr / 4) by (rewrite <- Hs; pose proof (Rle_0_sqr (j - lo)) as Sq; unfold Rsqr in Sq; lra).
-      apply (Rmult_le_reg_r (2 * (nr * nr))); [nra|].
-      replace (j * lo / (2 * (nr * nr)) * (2 * (nr * nr))) with (j * lo) by (field; nra).
-      lra. }
+  assert (Hk : 0 <= kk <= 1 / 8) by (apply ad_kk; lra).
   assert (HX : c3 * (c2 * (c1 * dsh)) = kk * (nr * nr * dsh)).
   { unfold kk. replace (c3 * (c2 * (c1 * dsh))) with (c1 * c2 * c3 * dsh) by ring.
     rewrite Hc. field. nra. }
@@ -173,14 +180,7 @@ Proof.
     - apply (Rmult_le_reg_r nr); [lra|].
       replace (j / nr * nr) with j by (field; lra). lra. }
   set (kk := j * lo / (2 * (nr * nr))).
-  assert (Hk : 0 <= kk <= 1 / 8).
-  { unfold kk. split.
-    - unfold Rdiv. apply Rmult_le_pos; [apply Rmult_le_pos; lra | apply Rlt_le, Rinv_0_lt_compat; nra].
-    - assert (Hjl : j * lo <= nr * nr / 4)
-        by (rewrite <- Hs; pose proof (Rle_0_sqr (j - lo)) as Sq; unfold Rsqr in Sq; lra).
-      apply (Rmult_le_reg_r (2 * (nr * nr))); [nra|].
-      replace (j * lo / (2 * (nr * nr)) * (2 * (nr * nr))) with (j * lo) by (field; nra).
-      lra. }
+  assert (Hk : 0 <= kk <= 1 / 8) by (apply ad_kk; lra).
   set (kc := (j * j - j) / (2 * (nr * nr))).
   assert (Hkc : 0 <= kc <= 1 / 2).
   { unfold kc. split.
@@ -266,6 +266,13 @@ Proof.
     rewrite Rabs_mult, (Rabs_pos_eq kk) by lra.
     assert (kk * Rabs (nr * nr * dsx) <= 1 / 8 * 2) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
     lra. }
+  assert (Fin : forall E, Rabs ((a - e) - dsx / 2 * j * lo) <= E ->
+                Rabs (dh - dsx / 2 * j * lo) <= E + v * (1 / 4 + E) + eta).
+  { intros E F4. pose proof (abs_near _ _ _ F4) as Hae.
+    assert (Hae' : Rabs (a - e) <= 1 / 4 + E) by lra.
+    pose proof (ad_ap1_abs _ _ _ _ _ Hv Adh Hae').
+    replace (dh - dsx / 2 * j * lo) with ((dh - (a - e)) + ((a - e) - dsx / 2 * j * lo)) by ring.
+    eapply Rle_trans; [apply Rabs_triang|]. lra. }
   split.
   - assert (F4 : Rabs ((a - e) - dsx / 2 * j * lo) <= E4).
     { replace ((a - e) - dsx / 2 * j * lo)
@@ -274,11 +281,7 @@ Proof.
               + - (j * t0h + (j * j - j) / 2 * dsh - (th * (pb - pa) - dsx / 2 * j * lo))) by ring.
       eapply Rle_trans; [apply tri6|]. rewrite !Rabs_Ropp.
       unfold E4. lra. }
-    pose proof (abs_near _ _ _ F4) as Hae.
-    assert (Hae' : Rabs (a - e) <= 1 / 4 + E4) by lra.
-    pose proof (ad_ap1_abs _ _ _ _ _ Hv Adh Hae') as Rdh.
-    replace (dh - dsx / 2 * j * lo) with ((dh - (a - e)) + ((a - e) - dsx / 2 * j * lo)) by ring.
-    eapply Rle_trans; [apply Rabs_triang|]. lra.
+    exact (Fin E4 F4).
   - intros Sa Sb.
     assert (GC : Rabs (j * dph - (j * t0h + (j * j - j) / 2 * dsh) - dsx / 2 * j * lo) <= EGC).
     { replace (j * dph - (j * t0h + (j * j - j) / 2 * dsh) - dsx / 2 * j * lo)
@@ -298,11 +301,7 @@ Proof.
               + - (e - (b + c)) + - (b - j * t0h) + - (c - (j * j - j) / 2 * dsh)) by ring.
       eapply Rle_trans; [apply tri5|]. rewrite !Rabs_Ropp.
       unfold E4s. lra. }
-    pose proof (abs_near _ _ _ F4) as Hae.
-    assert (Hae' : Rabs (a - e) <= 1 / 4 + E4s) by lra.
-    pose proof (ad_ap1_abs _ _ _ _ _ Hv Adh Hae') as Rdh.
-    replace (dh - dsx / 2 * j * lo) with ((dh - (a - e)) + ((a - e) - dsx / 2 * j * lo)) by ring.
-    eapply Rle_trans; [apply Rabs_triang|]. lra.
+    exact (Fin E4s F4).
 Qed.
 
 (** ** The set-up facts used (Profiles.v, sections Gouraud and CE) *)

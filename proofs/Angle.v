@@ -114,25 +114,6 @@ Lemma dot_sym : forall u v, dot u v = dot v u.
 Proof. intros. unfold dot. ring. Qed.
 
 (** Lagrange's identity. *)
-Lemma cauchy_schwarz_sq : forall u v, (dot u v) ^ 2 <= dot u u * dot v v.
-Proof.
-  intros [x1 y1 z1] [x2 y2 z2]. unfold dot; cbn [vx vy vz].
-  assert (H : (x1 * x1 + y1 * y1 + z1 * z1) * (x2 * x2 + y2 * y2 + z2 * z2)
-              - (x1 * x2 + y1 * y2 + z1 * z2) ^ 2
-              = (x1 * y2 - y1 * x2) ^ 2 + (x1 * z2 - z1 * x2) ^ 2
-                + (y1 * z2 - z1 * y2) ^ 2) by ring.
-  assert (0 <= (x1 * y2 - y1 * x2) ^ 2) by apply pow2_ge_0.
-  assert (0 <= (x1 * z2 - z1 * x2) ^ 2) by apply pow2_ge_0.
-  assert (0 <= (y1 * z2 - z1 * y2) ^ 2) by apply pow2_ge_0.
-  lra.
-Qed.
-
-Lemma unit_dot_bounds : forall u v, is_unit u -> is_unit v -> -1 <= dot u v <= 1.
-Proof.
-  intros u v Hu Hv. pose proof (cauchy_schwarz_sq u v) as H.
-  unfold is_unit in Hu, Hv. rewrite Hu, Hv in H. split; nra.
-Qed.
-
 Definition comb (a b : R) (u v : vec) : vec := vadd (vscale a u) (vscale b v).
 
 Lemma comb_dot : forall a b u v w, dot (comb a b u v) w = a * dot u w + b * dot v w.

@@ -199,15 +199,6 @@ Proof. unfold is_unit in Hua. rewrite <- Hua. unfold dot, vsub; cbn [vx vy vz]. 
 Lemma dl_nb : dot (vsub (Nb s) (Na s)) (Nb s) = 1 - dot (Na s) (Nb s).
 Proof. unfold is_unit in Hub. rewrite <- Hub. unfold dot, vsub; cbn [vx vy vz]. ring. Qed.
 
-Lemma cos_range : -1 <= dot (Na s) (Nb s) <= 1.
-Proof.
-  unfold is_unit, dot in *.
-  pose proof (Rle_0_sqr (vx (Na s) + vx (Nb s))). pose proof (Rle_0_sqr (vy (Na s) + vy (Nb s))).
-  pose proof (Rle_0_sqr (vz (Na s) + vz (Nb s))).
-  pose proof (Rle_0_sqr (vx (Na s) - vx (Nb s))). pose proof (Rle_0_sqr (vy (Na s) - vy (Nb s))).
-  pose proof (Rle_0_sqr (vz (Na s) - vz (Nb s))). unfold Rsqr in *. split; nra.
-Qed.
-
 (** |n di_a| <= 2: n di_a = Dl . (L - p_a Na) and |L - p_a Na|^2 = 1 - p_a^2. *)
 (** n di at an edge X (Na or Nb), scaled: |Dl.L - (X.L)(Dl.X)| <= 2. *)
 Lemma nd_le : forall X, is_unit X ->
@@ -235,23 +226,11 @@ Proof. exact (nd_le (Nb s) Hub). Qed.
 Lemma n2ds_form : e_n2ds s = - (1 - dot (Na s) (Nb s)) * (pa s + pb s).
 Proof. unfold e_n2ds, e_ndib, e_ndia. rewrite dl_na, dl_nb. ring. Qed.
 
-Lemma cs3 : forall a b : vec, dot a b * dot a b <= dot a a * dot b b.
-Proof.
-  intros a b.
-  assert (LG : dot a a * dot b b - dot a b * dot a b =
-     (vx a * vy b - vy a * vx b) * (vx a * vy b - vy a * vx b)
-   + (vx a * vz b - vz a * vx b) * (vx a * vz b - vz a * vx b)
-   + (vy a * vz b - vz a * vy b) * (vy a * vz b - vz a * vy b)) by (unfold dot; ring).
-  pose proof (Rle_0_sqr (vx a * vy b - vy a * vx b)).
-  pose proof (Rle_0_sqr (vx a * vz b - vz a * vx b)).
-  pose proof (Rle_0_sqr (vy a * vz b - vz a * vy b)). unfold Rsqr in *. lra.
-Qed.
-
 (** The sharp form: |n^2 ds| <= 1.54 (max of (1-c) sqrt(2(1+c)) is (4/3)^(3/2) = 1.5396). *)
 Lemma n2ds_le' : Rabs (e_n2ds s) <= 154 / 100.
 Proof.
   rewrite n2ds_form. set (c := dot (Na s) (Nb s)).
-  pose proof cos_range as Hc. fold c in Hc.
+  pose proof (unit_dot_bounds _ _ Hua Hub) as Hc. fold c in Hc.
   set (S := vadd (Na s) (Nb s)).
   assert (ES : dot S S = 2 + 2 * c).
   { unfold is_unit in *. unfold c.
@@ -341,7 +320,8 @@ Proof.
              - (INR (n s) - 1) / 2 * (e_n2ds s / (INR (n s) * INR (n s)))
              + INR j * (e_n2ds s / (INR (n s) * INR (n s)))))
     with ((pb s - pa s) + g * e_n2ds s) by (unfold g; field; lra).
-  rewrite n2ds_form. set (c := dot (Na s) (Nb s)). pose proof cos_range as Hc. fold c in Hc.
+  rewrite n2ds_form. set (c := dot (Na s) (Nb s)).
+  pose proof (unit_dot_bounds _ _ Hua Hub) as Hc. fold c in Hc.
   set (x := 1 - c). assert (Hx : 0 <= x <= 2) by (unfold x; lra).
   set (w := mkV ((1 - g * x) * vx (Nb s) - (1 + g * x) * vx (Na s))
                 ((1 - g * x) * vy (Nb s) - (1 + g * x) * vy (Na s))

@@ -69,6 +69,31 @@ Proof. simpl. ring. Qed.
 Lemma INR_3 : INR 3 = 3.
 Proof. simpl. ring. Qed.
 
+(** Cauchy-Schwarz (Lagrange's identity) and its unit case (Angle.v, Float.v). *)
+Lemma cauchy_schwarz_sq : forall u v, (dot u v) ^ 2 <= dot u u * dot v v.
+Proof.
+  intros [x1 y1 z1] [x2 y2 z2]. unfold dot; cbn [vx vy vz].
+  assert (H : (x1 * x1 + y1 * y1 + z1 * z1) * (x2 * x2 + y2 * y2 + z2 * z2)
+              - (x1 * x2 + y1 * y2 + z1 * z2) ^ 2
+              = (x1 * y2 - y1 * x2) ^ 2 + (x1 * z2 - z1 * x2) ^ 2
+                + (y1 * z2 - z1 * y2) ^ 2) by ring.
+  assert (0 <= (x1 * y2 - y1 * x2) ^ 2) by apply pow2_ge_0.
+  assert (0 <= (x1 * z2 - z1 * x2) ^ 2) by apply pow2_ge_0.
+  assert (0 <= (y1 * z2 - z1 * y2) ^ 2) by apply pow2_ge_0.
+  lra.
+Qed.
+
+Lemma unit_dot_bounds : forall u v, is_unit u -> is_unit v -> -1 <= dot u v <= 1.
+Proof.
+  intros u v Hu Hv. pose proof (cauchy_schwarz_sq u v) as H.
+  unfold is_unit in Hu, Hv. rewrite Hu, Hv in H. split; nra.
+Qed.
+
+Lemma cs3 : forall a b : vec, dot a b * dot a b <= dot a a * dot b b.
+Proof.
+  intros a b. replace (dot a b * dot a b) with (dot a b ^ 2) by ring. apply cauchy_schwarz_sq.
+Qed.
+
 (** ** Example spans *)
 
 (** The span of the Mortensen counterexample (Angular.v), also used to show

@@ -28,13 +28,13 @@ Open Scope R_scope.
 Definition std_model (rnd : R -> R) (u eta : R) : Prop :=
   forall x : R, Rabs (rnd x - x) <= u * Rabs x + eta.
 
-Lemma flt_std_model : forall emin prec : Z, (0 < prec)%Z ->
-  std_model (fun x => round radix2 (FLT_exp emin prec) ZnearestE x)
+(** Round to nearest with any tie rule [choice] (Profiles.v [rn_covered]). *)
+Lemma rn_std_model : forall (emin prec : Z) (choice : Z -> bool), (0 < prec)%Z ->
+  std_model (fun x => round radix2 (FLT_exp emin prec) (Znearest choice) x)
             (bpow radix2 (- prec)) (bpow radix2 (emin - 1)).
 Proof.
-  intros emin prec Hp x.
-  destruct (error_N_FLT radix2 emin prec Hp (fun z => negb (Z.even z)) x)
-    as (e & d & He & Hd & _ & Hr).
+  intros emin prec choice Hp x.
+  destruct (error_N_FLT radix2 emin prec Hp choice x) as (e & d & He & Hd & _ & Hr).
   rewrite Hr.
   replace (x * (1 + e) + d - x) with (x * e + d) by ring.
   assert (H1 : / 2 * bpow radix2 (- prec + 1) = bpow radix2 (- prec)).
@@ -48,6 +48,11 @@ Proof.
   apply Rplus_le_compat; [| exact Hd].
   rewrite Rmult_comm. apply Rmult_le_compat_r; [apply Rabs_pos | exact He].
 Qed.
+
+Lemma flt_std_model : forall emin prec : Z, (0 < prec)%Z ->
+  std_model (fun x => round radix2 (FLT_exp emin prec) ZnearestE x)
+            (bpow radix2 (- prec)) (bpow radix2 (emin - 1)).
+Proof. intros emin prec Hp. exact (rn_std_model emin prec (fun z => negb (Z.even z)) Hp). Qed.
 
 (** Size conditions: u <= 2^-24 and eta <= 2^-60 u. *)
 Definition fmt_ok (u eta : R) : Prop :=

@@ -1066,7 +1066,8 @@ Proof.
   intros ua P Q Hua0 Hnua HP0 HQ0 Hstep i Hi. ebasics.
   pose proof (loop_near (n s) fpa fds ft0 (2 + 200 * (v + d)) (2002 / 1000) (1194 / 1000)
     (3656 / 100 * v + 727 / 100 * d) (11925 / 10000) eta ua (ceuler s) P Q K_nr He0 (proj1 Hua0)
-    Hnua ltac:(lra) ltac:(lra) ltac:(lra) ltac:(lra) K_slope (fun j Hj => conj (K_ce_ideal j Hj) (ceuler_le s Hua Hub Hul Hn1 j Hj))
+    Hnua ltac:(lra) ltac:(lra) ltac:(lra) ltac:(lra) K_slope
+    (fun j Hj => conj (K_ce_ideal j Hj) (ceuler_le s Hua Hub Hul Hn1 j Hj))
     HP0 HQ0 Hstep i Hi).
   assert (0 <= nr * ua) by (apply Rmult_le_pos; lra). lra.
 Qed.
@@ -1793,19 +1794,7 @@ Lemma rn_covered : forall (emin prec : Z) (choice : Z -> bool), (0 < prec)%Z -> 
     (round radix2 (FLT_exp emin prec) (Znearest choice) x) x.
 Proof.
   intros emin prec choice Hp x. unfold approx, ap1. rewrite Rmult_1_l.
-  destruct (error_N_FLT radix2 emin prec Hp choice x) as (e & d & He & Hd & _ & Hr).
-  rewrite Hr.
-  replace (x * (1 + e) + d - x) with (x * e + d) by ring.
-  assert (H1 : / 2 * bpow radix2 (- prec + 1) = bpow radix2 (- prec)).
-  { rewrite bpow_plus, bpow_1. simpl (IZR radix2). field. }
-  assert (H2 : / 2 * bpow radix2 emin = bpow radix2 (emin - 1)).
-  { replace emin with (emin - 1 + 1)%Z at 1 by ring. rewrite bpow_plus, bpow_1.
-    simpl (IZR radix2). field. }
-  rewrite H1 in He. rewrite H2 in Hd.
-  eapply Rle_trans; [apply Rabs_triang|].
-  rewrite Rabs_mult.
-  apply Rplus_le_compat; [| exact Hd].
-  rewrite Rmult_comm. apply Rmult_le_compat_r; [apply Rabs_pos | exact He].
+  exact (rn_std_model emin prec choice Hp x).
 Qed.
 
 (** Any rounding of the format (toward zero, up, down, to nearest, ...):

@@ -280,32 +280,6 @@ Proof.
   pose proof (Rabs_pos (vz a * vz b)). lra.
 Qed.
 
-(** Weighted error of a computed dot product of two approximated vectors
-    (as FloatModel.fdot_weighted, for any evaluation order). *)
-Lemma fdot_weighted : forall (lam mu y : R) (ah bh a b wa wb : vec),
-  fdot_rel v v eta ah bh y ->
-  0 < lam -> 0 < mu -> lam * mu <= 16777216 ->
-  vapprox v lam ah a wa -> vapprox v mu bh b wb ->
-  vbounded a 2 -> vbounded b 2 -> wbounded wa -> wbounded wb ->
-  Rabs (lam * mu * y - dot a b) <= v * (wsum a b wa wb + / 1000).
-Proof.
-  intros lam mu y ah bh a b wa wb Hy. pose proof v_pos. pose proof v_small.
-  pose proof e_pos. pose proof e_small. pose proof (fdot_v ah bh y Hy).
-  apply (fdot_weighted_gen v eta); lra.
-Qed.
-
-Lemma dot_inst : forall (lam mu y : R) (ah bh a b wa wb : vec) (K : R),
-  fdot_rel v v eta ah bh y ->
-  0 < lam -> 0 < mu -> lam * mu <= 16777216 ->
-  vapprox v lam ah a wa -> vapprox v mu bh b wb ->
-  vbounded a 2 -> vbounded b 2 -> wbounded wa -> wbounded wb ->
-  wsum a b wa wb + / 1000 <= K ->
-  Rabs (lam * mu * y - dot a b) <= K * v.
-Proof.
-  intros. eapply Rle_trans; [eapply fdot_weighted; eassumption|].
-  rewrite (Rmult_comm K). apply Rmult_le_compat_l; [pose proof v_pos; lra | assumption].
-Qed.
-
 End V.
 
 (** The size facts of a unit: 0 < v <= 2^-21 ([v_facts]), and of eta ([small_facts]). *)

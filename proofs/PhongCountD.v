@@ -308,6 +308,47 @@ Definition wM (a b : vec) (t c1 c2 : R) : vec :=
       (c1 * ((1 - t) * Rabs (vy a) + t * Rabs (vy b)) + c2 * Rabs (vy b - vy a) + / 32768)
       (c1 * ((1 - t) * Rabs (vz a) + t * Rabs (vz b)) + c2 * Rabs (vz b - vz a) + / 32768).
 
+(** The inputs of a component mixed with weights 1 - t, t: the mixture
+    Mj = (1 - t)|a0| + t|b0| <= 1, the inputs' errors within v Mj + eta, the
+    exact value within Mj, the computed difference within |b0 - a0| + 2^-19. *)
+Lemma mix_in : forall v eta t a0 b0 ra rb, small_ok v eta -> 0 <= t <= 1 ->
+  Rabs a0 <= 1 -> Rabs b0 <= 1 -> ap1 v eta ra a0 -> ap1 v eta rb b0 ->
+  0 <= (1 - t) * Rabs a0 + t * Rabs b0 <= 1 /\
+  Rabs ((1 - t) * (ra - a0) + t * (rb - b0)) <= v * ((1 - t) * Rabs a0 + t * Rabs b0) + eta /\
+  Rabs (a0 + t * (b0 - a0)) <= (1 - t) * Rabs a0 + t * Rabs b0 /\
+  Rabs (rb - ra) <= Rabs (b0 - a0) + / 524288.
+Proof.
+  intros v eta t a0 b0 ra rb Hv Ht Ha0 Hb0 Hra Hrb. small_facts Hv. unfold ap1 in Hra, Hrb.
+  pose proof (Rabs_pos a0). pose proof (Rabs_pos b0).
+  assert (v * Rabs a0 <= v) by (pose proof (Rmult_le_compat_l v _ _ ltac:(lra) Ha0); lra).
+  assert (v * Rabs b0 <= v) by (pose proof (Rmult_le_compat_l v _ _ ltac:(lra) Hb0); lra).
+  split; [split; [apply Rplus_le_le_0_compat; apply Rmult_le_pos; lra | apply mix_le; lra]|].
+  split; [|split].
+  - eapply Rle_trans; [apply Rabs_triang|].
+    rewrite !Rabs_mult, (Rabs_pos_eq (1 - t)), (Rabs_pos_eq t) by lra.
+    assert ((1 - t) * Rabs (ra - a0) <= (1 - t) * (v * Rabs a0 + eta))
+      by (apply Rmult_le_compat_l; lra).
+    assert (t * Rabs (rb - b0) <= t * (v * Rabs b0 + eta)) by (apply Rmult_le_compat_l; lra).
+    lra.
+  - replace (a0 + t * (b0 - a0)) with ((1 - t) * a0 + t * b0) by ring.
+    eapply Rle_trans; [apply Rabs_triang|].
+    rewrite !Rabs_mult, (Rabs_pos_eq (1 - t)), (Rabs_pos_eq t) by lra. lra.
+  - replace (rb - ra) with ((b0 - a0) + (rb - b0) - (ra - a0)) by ring.
+    eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_Ropp.
+    eapply Rle_trans; [apply Rplus_le_compat_r, Rabs_triang|]. lra.
+Qed.
+
+(** The last rounding y of x, x within E <= c of X, |X| <= Mj. *)
+Lemma mix_out : forall v eta X x y Mj E c, 0 <= v -> ap1 v eta y x -> Rabs X <= Mj ->
+  Rabs (x - X) <= E -> E <= c -> Rabs (y - X) <= E + v * Mj + c * v + eta.
+Proof.
+  intros v eta X x y Mj E c Hv Hy HX Hx Hc. unfold ap1 in Hy.
+  pose proof (abs_near _ _ _ Hx).
+  assert (v * Rabs x <= v * (Mj + c)) by (apply Rmult_le_compat_l; lra).
+  replace (y - X) with ((y - x) + (x - X)) by ring.
+  eapply Rle_trans; [apply Rabs_triang|]. lra.
+Qed.
+
 (** ** One component of the per-pixel normal, with the mixture weights *)
 
 Lemma pd_comp : forall v d eta m i a0 b0 ra rb tt kj z nj,
@@ -325,30 +366,14 @@ Proof.
   pose proof (Rabs_pos a0). pose proof (Rabs_pos b0).
   pose proof (theta_rng m i ltac:(lra) Hi) as Ht.
   set (t := i / m) in *.
+  destruct (mix_in v eta t a0 b0 ra rb Hv Ht Ha0 Hb0 Hra Hrb) as (HM & AB & Nn & R1).
   set (D := b0 - a0) in *.
   pose proof (Rabs_pos D).
   assert (HD2 : Rabs D <= 2) by (unfold D; pose proof (absdiff b0 a0); lra).
-  set (Mj := (1 - t) * Rabs a0 + t * Rabs b0).
-  assert (HM : 0 <= Mj <= 1).
-  { split; [unfold Mj; apply Rplus_le_le_0_compat; apply Rmult_le_pos; lra
-           | apply mix_le; lra]. }
+  set (Mj := (1 - t) * Rabs a0 + t * Rabs b0) in *.
   assert (Me : m * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra).
   assert (HI : i = t * m) by (unfold t; field; lra).
   unfold ap1 in Hra, Hrb, Htt, Hkj, Hz, Hnj.
-  (* the inputs *)
-  assert (A1 : v * Rabs a0 <= v) by (pose proof (Rmult_le_compat_l v _ _ ltac:(lra) Ha0); lra).
-  assert (B1 : v * Rabs b0 <= v) by (pose proof (Rmult_le_compat_l v _ _ ltac:(lra) Hb0); lra).
-  assert (AB : Rabs ((1 - t) * (ra - a0) + t * (rb - b0)) <= v * Mj + eta).
-  { eapply Rle_trans; [apply Rabs_triang|].
-    rewrite !Rabs_mult, (Rabs_pos_eq (1 - t)), (Rabs_pos_eq t) by lra.
-    assert ((1 - t) * Rabs (ra - a0) <= (1 - t) * (v * Rabs a0 + eta))
-      by (apply Rmult_le_compat_l; lra).
-    assert (t * Rabs (rb - b0) <= t * (v * Rabs b0 + eta)) by (apply Rmult_le_compat_l; lra).
-    unfold Mj. lra. }
-  assert (R1 : Rabs (rb - ra) <= Rabs D + / 524288).
-  { replace (rb - ra) with (D + (rb - b0) - (ra - a0)) by (unfold D; ring).
-    eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_Ropp.
-    eapply Rle_trans; [apply Rplus_le_compat_r, Rabs_triang|]. lra. }
   (* the subtraction *)
   assert (G : Rabs (tt - (rb - ra)) <= v * Rabs D + / 524288 * v + eta).
   { assert (v * Rabs (rb - ra) <= v * (Rabs D + / 524288)) by (apply Rmult_le_compat_l; lra).
@@ -387,10 +412,6 @@ Proof.
                  + (i * kj - t * tt) + (z - i * kj)) by (unfold D; ring).
   assert (TG : Rabs (t * (tt - (rb - ra))) <= v * Rabs D + / 524288 * v + eta)
     by (eapply Rle_trans; [apply hc_scale; exact Ht | exact G]).
-  assert (Nn : Rabs (a0 + t * D) <= Mj).
-  { replace (a0 + t * D) with ((1 - t) * a0 + t * b0) by (unfold D; ring).
-    eapply Rle_trans; [apply Rabs_triang|].
-    rewrite !Rabs_mult, (Rabs_pos_eq (1 - t)), (Rabs_pos_eq t) by lra. unfold Mj. lra. }
   assert (E1 : Rabs (ra + z - (a0 + t * D))
                <= v * Mj + 2 * (v * Rabs D) + d * Rabs D + / 98304 * v + / 131072 * d
                   + 16777220 * eta).
@@ -399,13 +420,7 @@ Proof.
   { assert (v * Mj <= / 2097152 * 1) by (apply Rmult_le_compat; lra).
     assert (v * Rabs D <= / 2097152 * 2) by (apply Rmult_le_compat; lra).
     assert (d * Rabs D <= / 2097152 * 2) by (apply Rmult_le_compat; lra). lra. }
-  assert (S1 : Rabs (ra + z) <= Mj + / 65536).
-  { replace (ra + z) with ((a0 + t * D) + (ra + z - (a0 + t * D))) by ring.
-    eapply Rle_trans; [apply Rabs_triang|]. lra. }
-  assert (F : Rabs (nj - (ra + z)) <= v * Mj + / 65536 * v + eta).
-  { assert (v * Rabs (ra + z) <= v * (Mj + / 65536)) by (apply Rmult_le_compat_l; lra). lra. }
-  replace (nj - (a0 + t * D)) with ((nj - (ra + z)) + (ra + z - (a0 + t * D))) by ring.
-  eapply Rle_trans; [apply Rabs_triang|].
+  eapply Rle_trans; [apply (mix_out v eta _ _ _ _ _ (/ 65536) ltac:(lra) Hnj Nn E1); lra|].
   assert (0 <= v * Rabs D) by (apply Rmult_le_pos; lra).
   assert (0 <= d * Rabs D) by (apply Rmult_le_pos; lra).
   assert (0 <= v * Mj) by (apply Rmult_le_pos; lra).
@@ -435,10 +450,11 @@ Proof.
   pose proof (Rabs_pos a0). pose proof (Rabs_pos b0).
   pose proof (theta_rng m i ltac:(lra) Hi) as Ht.
   set (t := i / m) in *.
+  destruct (mix_in v eta t a0 b0 ra rb Hv Ht Ha0 Hb0 Hra Hrb) as (HM & AB & Nn & Rd).
   set (D := b0 - a0) in *.
   pose proof (Rabs_pos D).
   assert (HD2 : Rabs D <= 2) by (unfold D; pose proof (absdiff b0 a0); lra).
-  set (Mj := (1 - t) * Rabs a0 + t * Rabs b0).
+  set (Mj := (1 - t) * Rabs a0 + t * Rabs b0) in *.
   unfold ap1 in Hra, Hrb, Hth, Hw, Hy1, Hy2, Hnj.
   rewrite (Rabs_pos_eq t) in Hth by lra.
   assert (A1 : v * Rabs a0 <= v) by (pose proof (Rmult_le_compat_l v _ _ ltac:(lra) Ha0); lra).
@@ -474,10 +490,6 @@ Proof.
   { pose proof (abs_near _ _ _ Hra). lra. }
   assert (Rb : Rabs rb <= Rabs b0 + / 1048576).
   { pose proof (abs_near _ _ _ Hrb). lra. }
-  assert (Rd : Rabs (rb - ra) <= Rabs D + / 524288).
-  { replace (rb - ra) with (D + (rb - b0) - (ra - a0)) by (unfold D; ring).
-    eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_Ropp.
-    eapply Rle_trans; [apply Rplus_le_compat_r, Rabs_triang|]. lra. }
   (* the pieces *)
   assert (X1 : Rabs ((w - (1 - th)) * ra) <= v * ((1 - t) * Rabs a0) + / 131072 * v + 2 * eta).
   { eapply Rle_trans; [apply (prod_le _ _ _ _ Om Ra)|]. lra. }
@@ -499,13 +511,6 @@ Proof.
   { pose proof (prod_le _ _ _ _ Thb Rb) as Q.
     assert (v * Rabs (th * rb) <= v * ((t + / 524288) * (Rabs b0 + / 1048576)))
       by (apply Rmult_le_compat_l; lra). lra. }
-  assert (AB : Rabs ((1 - t) * (ra - a0) + t * (rb - b0)) <= v * Mj + eta).
-  { eapply Rle_trans; [apply Rabs_triang|].
-    rewrite !Rabs_mult, (Rabs_pos_eq (1 - t)), (Rabs_pos_eq t) by lra.
-    assert ((1 - t) * Rabs (ra - a0) <= (1 - t) * (v * Rabs a0 + eta))
-      by (apply Rmult_le_compat_l; lra).
-    assert (t * Rabs (rb - b0) <= t * (v * Rabs b0 + eta)) by (apply Rmult_le_compat_l; lra).
-    unfold Mj. lra. }
   assert (EN : y1 + y2 - (a0 + t * D)
                = (y1 - w * ra) + (y2 - th * rb) + ((1 - t) * (ra - a0) + t * (rb - b0))
                  + (w - (1 - th)) * ra + (th - t) * (rb - ra)) by (unfold D; ring).
@@ -514,13 +519,6 @@ Proof.
                <= 2 * (v * ((1 - t) * Rabs a0)) + v * (t * Rabs b0) + v * Mj + d * Rabs D
                   + / 65536 * v + / 262144 * d + 8 * eta).
   { rewrite EN. eapply Rle_trans; [apply tri5|]. lra. }
-  assert (Nn : Rabs (a0 + t * D) <= Mj).
-  { replace (a0 + t * D) with ((1 - t) * a0 + t * b0) by (unfold D; ring).
-    eapply Rle_trans; [apply Rabs_triang|].
-    rewrite !Rabs_mult, (Rabs_pos_eq (1 - t)), (Rabs_pos_eq t) by lra. unfold Mj. lra. }
-  assert (HM : 0 <= Mj <= 1).
-  { split; [unfold Mj; apply Rplus_le_le_0_compat; apply Rmult_le_pos; lra
-           | apply mix_le; lra]. }
   assert (VM : v * Mj <= v) by (pose proof (Rmult_le_compat_l v _ _ ltac:(lra) (proj2 HM)); lra).
   assert (0 <= v * Mj) by (apply Rmult_le_pos; lra).
   assert (V1 : v * ((1 - t) * Rabs a0) <= v * Mj).
@@ -529,13 +527,7 @@ Proof.
   assert (V2 : v * (t * Rabs b0) <= v * Mj).
   { apply Rmult_le_compat_l; [lra|]. unfold Mj.
     pose proof (Rmult_le_pos (1 - t) (Rabs a0) ltac:(lra) ltac:(lra)). lra. }
-  assert (S1 : Rabs (y1 + y2) <= Mj + / 262144).
-  { replace (y1 + y2) with ((a0 + t * D) + (y1 + y2 - (a0 + t * D))) by ring.
-    eapply Rle_trans; [apply Rabs_triang|]. lra. }
-  assert (F : Rabs (nj - (y1 + y2)) <= v * Mj + / 262144 * v + eta).
-  { assert (v * Rabs (y1 + y2) <= v * (Mj + / 262144)) by (apply Rmult_le_compat_l; lra). lra. }
-  replace (nj - (a0 + t * D)) with ((nj - (y1 + y2)) + (y1 + y2 - (a0 + t * D))) by ring.
-  eapply Rle_trans; [apply Rabs_triang|].
+  eapply Rle_trans; [apply (mix_out v eta _ _ _ _ _ (/ 262144) ltac:(lra) Hnj Nn F1); lra|].
   fold Mj. lra.
 Qed.
 

@@ -7,7 +7,7 @@
 From PhongApprox Require Import Span Duff Euler Derivative Symmetry Adaptive Angular.
 From PhongApprox Require Import ClosedForms Angle FastSetup Related Float Graph ShaderSqrt.
 From PhongApprox Require Import PhongValue PhongCountD PhongCount PhongNormalize Profiles.
-From PhongApprox Require Import AdaptiveDelta DuffCount Fixed Composed.
+From PhongApprox Require Import AdaptiveDelta DuffCount Fixed Composed Skip.
 
 (** Span.v *)
 Check eq_2_p_is_linear.
@@ -358,3 +358,13 @@ Check duff_composed.
 Print Assumptions duff_composed.
 Check symmetric_phong_composed.
 Print Assumptions symmetric_phong_composed.
+
+(** Skip.v *)
+Check phong_skip_sound.
+Print Assumptions phong_skip_sound.
+Check phong_skip_levels.
+Print Assumptions phong_skip_levels.
+Check quadratic_skip_sound.
+Print Assumptions quadratic_skip_sound.
+Check quadratic_skip_levels.
+Print Assumptions quadratic_skip_levels.

@@ -174,9 +174,6 @@ Qed.
 
 (** ** Step 1: the span methods in t *)
 
-Lemma INR_n_neq_0 : forall s, (0 < n s)%nat -> INR (n s) <> 0.
-Proof. intros s H. apply not_0_INR. lia. Qed.
-
 Lemma dia_unit : forall s, is_unit (Na s) -> (0 < n s)%nat ->
   dia s = (pb s - pa s + (1 - dot (Na s) (Nb s)) * pa s) / INR (n s).
 Proof.
@@ -412,12 +409,6 @@ Proof.
       by (apply sqrt_le_1_alt; lra).
     lra.
 Qed.
-
-Lemma dot_vscale_r : forall a u v, dot u (vscale a v) = a * dot u v.
-Proof. intros. unfold dot, vscale; cbn [vx vy vz]. ring. Qed.
-
-Lemma dot_vadd_r : forall u v w, dot u (vadd v w) = dot u v + dot u w.
-Proof. intros. unfold dot, vadd; cbn [vx vy vz]. ring. Qed.
 
 (** 1 - sqrt((1+c)/2) <= B as soon as c >= 2 (1-B)^2 - 1 (0 <= B <= 1). *)
 Lemma half_angle_threshold : forall c B, 0 <= B <= 1 -> 2 * (1 - B) ^ 2 - 1 <= c ->

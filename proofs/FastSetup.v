@@ -27,24 +27,15 @@ Open Scope R_scope.
 
 (** ** Helpers *)
 
-Lemma INR_n_nonzero : forall s : span, (1 <= n s)%nat -> INR (n s) <> 0.
-Proof. intros s H. apply not_0_INR. lia. Qed.
-
 Lemma C_unit : forall s : span, is_unit (Na s) -> is_unit (Nb s) ->
   (1 <= n s)%nat ->
   C s = 2 * (1 - dot (Na s) (Nb s)) / INR (n s) ^ 2.
 Proof.
-  intros s Ha Hb Hn. pose proof (INR_n_nonzero s Hn) as Hn'.
+  intros s Ha Hb Hn. pose proof (INR_n_neq_0 s Hn) as Hn'.
   apply (Rmult_eq_reg_l (INR (n s))); [| exact Hn'].
   rewrite nC_expand. unfold is_unit in Ha, Hb. rewrite Ha, Hb.
   field. exact Hn'.
 Qed.
-
-Lemma dot_vscale_l : forall (a : R) (u v : vec), dot (vscale a u) v = a * dot u v.
-Proof. intros a [x1 y1 z1] [x2 y2 z2]. unfold dot, vscale; cbn [vx vy vz]. ring. Qed.
-
-Lemma dot_vscale_r : forall (a : R) (u v : vec), dot u (vscale a v) = a * dot u v.
-Proof. intros a [x1 y1 z1] [x2 y2 z2]. unfold dot, vscale; cbn [vx vy vz]. ring. Qed.
 
 Lemma inv_sqrt_sq : forall x : R, 0 < x -> / sqrt x * (/ sqrt x * x) = 1.
 Proof.
@@ -65,7 +56,7 @@ Theorem fast_rows_ce_from_span_invariants : forall (s : span) (i : nat),
     + (1 - dot (Na s) (Nb s)) * (pa s + pb s) * INR i * (INR (n s) - INR i)
       / (2 * INR (n s) ^ 2).
 Proof.
-  intros s i Ha Hb Hn. pose proof (INR_n_nonzero s Hn) as Hn'.
+  intros s i Ha Hb Hn. pose proof (INR_n_neq_0 s Hn) as Hn'.
   rewrite ceuler_closed_form, (t0_closed_form s ltac:(lia)), (ds_unit s Ha Hb).
   field. exact Hn'.
 Qed.

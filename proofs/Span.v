@@ -69,6 +69,16 @@ Proof. simpl. ring. Qed.
 Lemma INR_3 : INR 3 = 3.
 Proof. simpl. ring. Qed.
 
+(** Shared by Angle.v and FastSetup.v. *)
+Lemma INR_n_neq_0 : forall s, (0 < n s)%nat -> INR (n s) <> 0.
+Proof. intros s H. apply not_0_INR. lia. Qed.
+Lemma dot_vscale_l : forall (a : R) (u v : vec), dot (vscale a u) v = a * dot u v.
+Proof. intros. unfold dot, vscale; cbn [vx vy vz]. ring. Qed.
+Lemma dot_vscale_r : forall (a : R) (u v : vec), dot u (vscale a v) = a * dot u v.
+Proof. intros. unfold dot, vscale; cbn [vx vy vz]. ring. Qed.
+Lemma dot_vadd_r : forall u v w, dot u (vadd v w) = dot u v + dot u w.
+Proof. intros. unfold dot, vadd; cbn [vx vy vz]. ring. Qed.
+
 (** Cauchy-Schwarz (Lagrange's identity) and its unit case (Angle.v, Float.v). *)
 Lemma cauchy_schwarz_sq : forall u v, (dot u v) ^ 2 <= dot u u * dot v v.
 Proof.

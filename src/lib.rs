@@ -20,6 +20,7 @@
 //! | angular interpolation | [`angular`] | second source |
 //! | specular `(N·H)^s` | [`specular`] | eq. 1, §6.1 |
 //! | 8-bit levels | [`quantize`] | §6 |
+//! | skipping the specular pass | [`skip`] | §7.1, question a |
 //!
 //! The methods of the paper's related work — Bishop & Weimer, Seiler, Kuijk & Blake,
 //! Mortensen's vertex angles, Ouyang & Maynard — are in [`related`]; low-precision
@@ -94,6 +95,7 @@ pub mod reference;
 pub mod related;
 pub mod scalar;
 pub mod simd;
+pub mod skip;
 pub mod span;
 pub mod span_report;
 pub mod specular;

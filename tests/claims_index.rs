@@ -19,8 +19,9 @@ fn read(p: &str) -> String {
 
 /// Proof files whose theorems are tested and explained somewhere else than
 /// `tests/claims/` and `docs/derivations.md`: (file, test file, document).
-const GROUPS: [(&str, &str, &str); 14] = [
+const GROUPS: [(&str, &str, &str); 15] = [
     ("Related.v", "tests/related.rs", "docs/comparison.md"),
+    ("Skip.v", "tests/skip.rs", "docs/derivations.md"),
     ("Float.v", "tests/float_bounds.rs", "docs/float.md"),
     ("Fixed.v", "tests/lowp.rs", "docs/float.md"),
     ("Graph.v", "tests/graph.rs", "docs/float.md"),

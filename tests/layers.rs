@@ -48,6 +48,8 @@ const LAYERS: &[(&str, u32)] = &[
     ("fixed_span.rs", 7),
     // The budgets of exact work.
     ("budget.rs", 7),
+    // The specular skip test (the paper's §7.1, question a), from the catalogue.
+    ("skip.rs", 7),
     // The float bounds.
     ("tolerance.rs", 8),
     ("tolerance/", 8),

@@ -21,5 +21,8 @@ mod methods;
 mod mutants;
 #[path = "../related.rs"]
 mod related;
+/// The specular skip test (`skip::*`).
+#[path = "../skip.rs"]
+mod skip;
 #[path = "../testkit.rs"]
 mod testkit;

@@ -85,7 +85,8 @@ Lemma ad_kk : forall nr j lo, 1 <= nr -> 0 <= j -> 0 <= lo -> j + lo = nr ->
   0 <= j * lo / (2 * (nr * nr)) <= 1 / 8.
 Proof.
   intros nr j lo Hn Hj Hlo Hs. split.
-  - unfold Rdiv. apply Rmult_le_pos; [apply Rmult_le_pos; lra | apply Rlt_le, Rinv_0_lt_compat; nra].
+  - unfold Rdiv.
+    apply Rmult_le_pos; [apply Rmult_le_pos; lra | apply Rlt_le, Rinv_0_lt_compat; nra].
   - assert (Hjl : j * lo <= nr * nr / 4)
       by (rewrite <- Hs; pose proof (Rle_0_sqr (j - lo)) as Sq; unfold Rsqr in Sq; lra).
     apply (Rmult_le_reg_r (2 * (nr * nr))); [nra|].

@@ -561,20 +561,22 @@ Proof.
   assert (Hnu0 : 0 <= INR m * ua) by (apply Rmult_le_pos; lra).
   assert (Hs1 : Msn * (INR m * ua) <= Msn / 2048) by (apply Rmult_le_compat_l; lra).
   assert (Hp1 : Mp * (INR m * ua) <= Mp / 2048) by (apply Rmult_le_compat_l; lra).
-  assert (Ems2 : INR m * INR m / 2 * (ua * Ms + eta) = Msn / 2 * (INR m * ua) + INR m * INR m * eta / 2)
+  assert (Ems2 : INR m * INR m / 2 * (ua * Ms + eta)
+                 = Msn / 2 * (INR m * ua) + INR m * INR m * eta / 2)
     by (unfold Ms; field; lra).
   assert (Emp : INR m * (ua * Mp + eta) = Mp * (INR m * ua) + INR m * eta) by ring.
-  destruct (FloatModelK.cseq_err ua eta P Q fds (m) Ms Mp ltac:(lra) He0 HMs HMp Hstep)
+  destruct (FloatModelK.cseq_err ua eta P Q fds m Ms Mp ltac:(lra) He0 HMs HMp Hstep)
     with (i := i) as [_ HPi]; [| | exact Hi |].
   - intros j Hj. rewrite HQ0. pose proof (Hsl (S j) Hj) as G0.
-    assert (G1 : Rabs (t + INR (S j) * fds) <= (Cs) / INR m).
+    assert (G1 : Rabs (t + INR (S j) * fds) <= Cs / INR m).
     { replace (t + INR (S j) * fds) with (INR m * (t + INR (S j) * fds) / INR m) by (field; lra).
       unfold Rdiv. rewrite Rabs_mult, (Rabs_pos_eq (/ INR m))
         by (apply Rlt_le, Rinv_0_lt_compat; lra).
       apply Rmult_le_compat_r; [apply Rlt_le, Rinv_0_lt_compat; lra | exact G0]. }
-    assert (G2 : (Cs) / INR m + INR m * (ua * Ms + eta) <= Ms).
+    assert (G2 : Cs / INR m + INR m * (ua * Ms + eta) <= Ms).
     { unfold Ms. apply div_helper; [lra|].
-      replace (INR m * (ua * (Msn / INR m) + eta) * INR m) with (Msn * (INR m * ua) + INR m * INR m * eta)
+      replace (INR m * (ua * (Msn / INR m) + eta) * INR m)
+        with (Msn * (INR m * ua) + INR m * INR m * eta)
         by (field; lra).
       lra. }
     lra.
@@ -588,10 +590,12 @@ Proof.
     eapply Rle_trans; [apply Rabs_triang|].
     assert (Es0 : 0 <= ua * Ms + eta) by (pose proof (Rmult_le_pos ua Ms); lra).
     assert (K1 : INR i * (INR i - 1) / 2 <= INR m * (INR m - 1) / 2) by nra.
-    assert (K2 : INR i * (INR i - 1) / 2 * (ua * Ms + eta) <= INR m * (INR m - 1) / 2 * (ua * Ms + eta))
+    assert (K2 : INR i * (INR i - 1) / 2 * (ua * Ms + eta)
+                 <= INR m * (INR m - 1) / 2 * (ua * Ms + eta))
       by (apply Rmult_le_compat_r; lra).
     assert (K3 : INR m * (INR m - 1) / 2 * (ua * Ms + eta)
-                 = Msn / 2 * (INR m * ua) - Msn / 2 * ua + INR m * INR m * eta / 2 - INR m * eta / 2)
+                 = Msn / 2 * (INR m * ua) - Msn / 2 * ua + INR m * INR m * eta / 2
+                   - INR m * eta / 2)
       by (unfold Ms; field; lra).
     assert (K4 : INR i * (ua * Mp + eta) <= INR m * (ua * Mp + eta))
       by (apply Rmult_le_compat_r; [nra | lra]).

@@ -1209,7 +1209,8 @@ Proof.
   intros ua P Q Hua0 Hnua HP0 HQ0 Hstep i Hi. ebasics.
   pose proof (loop_near (n s) fpa fds fdia (354 / 100 + 200 * (v + d)) (3545 / 1000)
     (3775 / 1000) (9111 / 100 * v + 1507 / 100 * d) (377 / 100) eta ua (euler_span s) P Q K_nr
-    He0 (proj1 Hua0) Hnua ltac:(lra) ltac:(lra) ltac:(lra) ltac:(lra) (fun J HJ => K_eu_slope J ltac:(lia))
+    He0 (proj1 Hua0) Hnua ltac:(lra) ltac:(lra) ltac:(lra) ltac:(lra)
+    (fun J HJ => K_eu_slope J ltac:(lia))
     (fun j Hj => conj (K_eu_ideal j Hj) (K_eu_le j Hj)) HP0 HQ0 Hstep i Hi).
   assert (0 <= nr * ua) by (apply Rmult_le_pos; lra). lra.
 Qed.
@@ -2049,7 +2050,8 @@ Proof.
   assert (Ha2 : Rabs (1 + th2) <= 1 + 3 * u).
   { eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_R1. lra. }
   rewrite !Rabs_mult, (Rabs_pos_eq x) by lra.
-  assert (Hs : x * Rabs Dh <= x * Rabs D + x * E) by (apply Rmult_le_compat_l with (r := x) in HDh; lra).
+  assert (Hs : x * Rabs Dh <= x * Rabs D + x * E)
+    by (apply Rmult_le_compat_l with (r := x) in HDh; lra).
   assert (Hk : 0 <= x * Rabs Dh) by (apply Rmult_le_pos; [lra | apply Rabs_pos]).
   assert (Hp : 0 <= Rabs (1 + th2)) by apply Rabs_pos.
   apply Rle_lt_trans with (x * Rabs Dh * (1 + 3 * u)).
@@ -2071,7 +2073,8 @@ Proof.
     replace (1 - - th2) with (1 + th2) in T by ring.
     rewrite Rabs_R1, Rabs_Ropp in T. lra. }
   rewrite !Rabs_mult, (Rabs_pos_eq x) by lra.
-  assert (Hm : x * Rabs D - x * E <= x * Rabs Dh) by (apply Rmult_le_compat_l with (r := x) in HDh; lra).
+  assert (Hm : x * Rabs D - x * E <= x * Rabs Dh)
+    by (apply Rmult_le_compat_l with (r := x) in HDh; lra).
   apply Rle_trans with ((1 + 4 * u) * (1 - 3 * u)); [nra|].
   apply Rmult_le_compat; lra.
 Qed.

@@ -57,7 +57,8 @@ fn q(x: i64) -> BigRational {
     BigRational::from_integer(x.into())
 }
 
-/// Whether `k·x^e < 1`, for `k, x ≥ 0` and `1 ≤ e ≤ 2·MAX_SHININESS`, exactly.
+/// Whether `k·x^e < 1`, for `k, x ≥ 0` and `1 ≤ e ≤ 2·MAX_SHININESS`, exactly; `xf` is
+/// `x` rounded to the nearest `f64`.
 ///
 /// A filter first: `k` and `x` rounded to the nearest `f64` (`to_f64` is correctly
 /// rounded, relative error at most `2^-53` each in the normal range) and `k·x^e` by
@@ -66,11 +67,11 @@ fn q(x: i64) -> BigRational {
 /// `(1 ± 2^-53)^(e + 25)` of `k·x^e`, inside `1 ± 2^-40` for `e ≤ 2048`. Where it is
 /// below `1 − 2^-40` or above `1 + 2^-40` that decides; elsewhere, or where a result
 /// leaves the normal range, the comparison is made in rationals.
-fn below_one(k: &BigRational, x: &BigRational, e: u32) -> bool {
+fn below_one(k: &BigRational, x: &BigRational, xf: f64, e: u32) -> bool {
     use num_traits::ToPrimitive;
     const MARGIN: f64 = 1.0 / (1u64 << 40) as f64;
     let normal = |v: f64| v == 0.0 || (v.is_normal() && v.abs() < 1e300);
-    let (Some(kf), Some(xf)) = (k.to_f64(), x.to_f64()) else {
+    let Some(kf) = k.to_f64() else {
         return exact_below_one(k, x, e);
     };
     if kf == 0.0 && *k == q(0) || xf == 0.0 && *x == q(0) {
@@ -130,9 +131,128 @@ pub fn phong_candidates(span: &Span<BigRational>) -> Vec<BigRational> {
     out
 }
 
+/// A span's candidates, set up once and decided for any `K_s` and shininess: the
+/// values at the candidate points where they are positive — Phong's `p²/q` (compared
+/// at exponent `s`, against `1/(255·K_s)²`) or the quadratic's `v` (at exponent `s`,
+/// against `1/(255·K_s)`); a candidate whose value is not positive contributes level 0
+/// at any shininess and is dropped.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Candidates {
+    /// The positive candidate values, each with its nearest `f64` (for the filter).
+    values: Vec<(BigRational, f64)>,
+    /// Whether the values are Phong's squares `p²/q`.
+    squared: bool,
+}
+
+impl Candidates {
+    fn new(values: Vec<BigRational>, squared: bool) -> Self {
+        use num_traits::ToPrimitive;
+        let values = values
+            .into_iter()
+            .filter(|v| *v > q(0))
+            .map(|v| {
+                let f = v.to_f64().unwrap_or(f64::NAN);
+                (v, f)
+            })
+            .collect();
+        Candidates { values, squared }
+    }
+
+    /// Phong's candidates on `span` (whose `l` is `H`): `p²/q` at `0`, `n` and `t*`
+    /// ([`phong_candidates`]) where `p > 0`.
+    ///
+    /// # Errors
+    /// [`SkipError::NormalVanishes`] where `q` reaches 0 on `[0, n]` (`phong_skip_sound`
+    /// assumes `q > 0` there).
+    pub fn phong(span: &Span<BigRational>) -> Result<Self, SkipError> {
+        let (p, qq) = (
+            |t: &BigRational| &span.b + &span.a * t,
+            |t: &BigRational| &span.e + &span.d * t + &span.c * t * t,
+        );
+        // q > 0 on [0, n]: at the ends and, where C > 0, at its lowest point inside.
+        let mut lowest = vec![q(0), span.n_s.clone()];
+        if span.c > q(0) {
+            let t = -(&span.d / (q(2) * &span.c));
+            if t > q(0) && t < span.n_s {
+                lowest.push(t);
+            }
+        }
+        if lowest.iter().any(|t| qq(t) <= q(0)) {
+            return Err(SkipError::NormalVanishes);
+        }
+        let values = phong_candidates(span)
+            .iter()
+            .map(|t| {
+                let pt = p(t);
+                if pt > q(0) {
+                    &pt * &pt / qq(t)
+                } else {
+                    q(0)
+                }
+            })
+            .collect();
+        Ok(Candidates::new(values, true))
+    }
+
+    /// The quadratic `v(t) = p_a + t·s_0 + t(t − 1)/2·ds`'s candidates: `v` at `0`, `n`
+    /// and, where `ds < 0`, the vertex `1/2 − s_0/ds` strictly inside.
+    pub fn quadratic(p_a: &BigRational, s0: &BigRational, ds: &BigRational, n: u32) -> Self {
+        let half = BigRational::new(1.into(), 2.into());
+        let n = q(n.into());
+        let v = |t: &BigRational| p_a + t * s0 + t * (t - q(1)) * &half * ds;
+        let mut points = vec![q(0), n.clone()];
+        if *ds < q(0) {
+            let t = &half - s0 / ds;
+            if t > q(0) && t < n {
+                points.push(t);
+            }
+        }
+        Candidates::new(points.iter().map(v).collect(), false)
+    }
+
+    /// The candidates of `method` on `span`: Phong's for the methods whose exact values
+    /// are Phong's at every pixel ([`Method::is_phong_valued`]), the quadratic's for
+    /// those whose closed form is one (the catalogue's `closed_form`: Gouraud's line,
+    /// Euler's and corrected Euler's quadratics).
+    ///
+    /// # Errors
+    /// [`SkipError::NormalVanishes`] (Phong's), [`SkipError::Unsupported`] for the
+    /// other methods.
+    pub fn of(method: Method, span: &Span<BigRational>) -> Result<Self, SkipError> {
+        let quadratic = |s0: &BigRational, ds: &BigRational| {
+            Ok(Candidates::quadratic(&span.p_a, s0, ds, span.n))
+        };
+        match method.info().closed_form {
+            Some(Valued::Gouraud) => quadratic(&((&span.p_b - &span.p_a) / &span.n_s), &q(0)),
+            Some(Valued::Euler) => quadratic(&span.di_a, &span.ds),
+            Some(Valued::CorrectedEuler) => quadratic(&span.t0, &span.ds),
+            Some(Valued::Phong) => Candidates::phong(span),
+            None if method.is_phong_valued() => Candidates::phong(span),
+            None => Err(SkipError::Unsupported(method)),
+        }
+    }
+
+    /// Whether `K_s·max(0, v)^s` is below one level at every real `t ∈ [0, n]`:
+    /// `(255·K_s)²·(p²/q)^s < 1` at each of Phong's positive candidates
+    /// (`phong_skip_sound`, whose `ok` is `(255·K_s)²·p^{2s} < q^s`), `255·K_s·v^s < 1` at
+    /// each of the quadratic's (`quadratic_skip_sound`).
+    ///
+    /// # Errors
+    /// [`SkipError`]: a shininess outside `1..=MAX_SHININESS` or a negative `K_s`.
+    pub fn skips(&self, ks: &BigRational, shininess: u32) -> Result<bool, SkipError> {
+        check(ks, shininess)?;
+        let k = q(255) * ks;
+        let k = if self.squared { &k * &k } else { k };
+        Ok(self
+            .values
+            .iter()
+            .all(|(x, xf)| below_one(&k, x, *xf, shininess)))
+    }
+}
+
 /// Whether Phong's specular term `K_s·max(0, p/√q)^s` is below one level at every real
-/// `t ∈ [0, n]` of `span` (whose `l` is the half vector `H`): the exact test of the
-/// module docs. `proofs/Skip.v`: `phong_skip_sound`.
+/// `t ∈ [0, n]` of `span` (whose `l` is the half vector `H`): [`Candidates::phong`],
+/// then [`Candidates::skips`]. `proofs/Skip.v`: `phong_skip_sound`.
 ///
 /// # Errors
 /// [`SkipError`]: a shininess outside `1..=MAX_SHININESS`, a negative `K_s`, or `q`
@@ -143,34 +263,12 @@ pub fn phong_skips(
     shininess: u32,
 ) -> Result<bool, SkipError> {
     check(ks, shininess)?;
-    let (p, qq) = (
-        |t: &BigRational| &span.b + &span.a * t,
-        |t: &BigRational| &span.e + &span.d * t + &span.c * t * t,
-    );
-    // q > 0 on [0, n]: at the ends and, where C > 0, at its lowest point inside.
-    let mut lowest = vec![q(0), span.n_s.clone()];
-    if span.c > q(0) {
-        let t = -(&span.d / (q(2) * &span.c));
-        if t > q(0) && t < span.n_s {
-            lowest.push(t);
-        }
-    }
-    if lowest.iter().any(|t| qq(t) <= q(0)) {
-        return Err(SkipError::NormalVanishes);
-    }
-    // (255·K_s)²·p^{2s} < q^s, as (255·K_s)²·(p²/q)^s < 1 (q > 0).
-    let k = q(255) * ks;
-    let k2 = &k * &k;
-    Ok(phong_candidates(span).iter().all(|t| {
-        let pt = p(t);
-        pt <= q(0) || below_one(&k2, &(&pt * &pt / qq(t)), shininess)
-    }))
+    Candidates::phong(span)?.skips(ks, shininess)
 }
 
 /// Whether `K_s·max(0, v)^s` is below one level at every real `t ∈ [0, n]` for the
-/// quadratic `v(t) = p_a + t·s_0 + t(t − 1)/2·ds`: the candidates `0`, `n` and, where
-/// `ds < 0`, the vertex `1/2 − s_0/ds` strictly inside. `proofs/Skip.v`:
-/// `quadratic_skip_sound`.
+/// quadratic `v(t) = p_a + t·s_0 + t(t − 1)/2·ds` ([`Candidates::quadratic`]).
+/// `proofs/Skip.v`: `quadratic_skip_sound`.
 ///
 /// # Errors
 /// [`SkipError`]: a shininess outside `1..=MAX_SHININESS` or a negative `K_s`.
@@ -182,50 +280,22 @@ pub fn quadratic_skips(
     ks: &BigRational,
     shininess: u32,
 ) -> Result<bool, SkipError> {
-    check(ks, shininess)?;
-    let half = BigRational::new(1.into(), 2.into());
-    let n = q(n.into());
-    let v = |t: &BigRational| p_a + t * s0 + t * (t - q(1)) * &half * ds;
-    let mut candidates = vec![q(0), n.clone()];
-    if *ds < q(0) {
-        let t = &half - s0 / ds;
-        if t > q(0) && t < n {
-            candidates.push(t);
-        }
-    }
-    let k = q(255) * ks;
-    Ok(candidates.iter().all(|t| {
-        let vt = v(t);
-        vt <= q(0) || below_one(&k, &vt, shininess)
-    }))
+    Candidates::quadratic(p_a, s0, ds, n).skips(ks, shininess)
 }
 
-/// The skip test of `method` on `span` (its `l` the half vector): Phong's for the
-/// methods whose exact values are Phong's at every pixel (the catalogue's
-/// `phong_pixels`), the quadratic's for those whose closed form is one (the
-/// catalogue's `closed_form`: Gouraud's line, Euler's and corrected Euler's
-/// quadratics).
+/// The skip test of `method` on `span` (its `l` the half vector):
+/// [`Candidates::of`], then [`Candidates::skips`].
 ///
 /// # Errors
-/// [`SkipError`]; [`SkipError::Unsupported`] for the other methods.
+/// [`SkipError`]; [`SkipError::Unsupported`] for a method with no test.
 pub fn specular_skips(
     method: Method,
     span: &Span<BigRational>,
     ks: &BigRational,
     shininess: u32,
 ) -> Result<bool, SkipError> {
-    let info = method.info();
-    let quadratic = |s0: &BigRational, ds: &BigRational| {
-        quadratic_skips(&span.p_a, s0, ds, span.n, ks, shininess)
-    };
-    match info.closed_form {
-        Some(Valued::Gouraud) => quadratic(&((&span.p_b - &span.p_a) / &span.n_s), &q(0)),
-        Some(Valued::Euler) => quadratic(&span.di_a, &span.ds),
-        Some(Valued::CorrectedEuler) => quadratic(&span.t0, &span.ds),
-        Some(Valued::Phong) => phong_skips(span, ks, shininess),
-        None if method.is_phong_valued() => phong_skips(span, ks, shininess),
-        None => Err(SkipError::Unsupported(method)),
-    }
+    check(ks, shininess)?;
+    Candidates::of(method, span)?.skips(ks, shininess)
 }
 
 #[cfg(test)]
@@ -250,16 +320,17 @@ mod tests {
                 (r(1, 3), r(3, 1)),
                 (r(3, 1), r(1, 3)),
             ] {
+                let xf = num_traits::ToPrimitive::to_f64(&x).unwrap();
                 assert_eq!(
-                    below_one(&k, &x, e),
+                    below_one(&k, &x, xf, e),
                     exact_below_one(&k, &x, e),
                     "{k} {x} {e}"
                 );
             }
             // Exactly at the threshold: 2^e · (1/2)^e = 1 is not below.
             let two_e = crate::specular::power(&r(2, 1), e);
-            assert!(!below_one(&two_e, &r(1, 2), e));
-            assert!(below_one(&(two_e - r(1, 1 << 20)), &r(1, 2), e));
+            assert!(!below_one(&two_e, &r(1, 2), 0.5, e));
+            assert!(below_one(&(two_e - r(1, 1 << 20)), &r(1, 2), 0.5, e));
         }
     }
 

@@ -84,6 +84,38 @@ fn one_frame_relations() {
     for dc in &st.specular_delta {
         assert!(dc.gouraud_but_differ <= dc.gouraud && dc.gouraud <= st.spans);
     }
+    // Without the skip study nothing is counted.
+    assert!(st.skip.iter().all(|c| c.spans == 0));
+}
+
+/// The skip study on one frame (`studies::compare`'s skip counts, §7.1 question a):
+/// every span decided exactly at each shininess, more skipped as the shininess grows,
+/// and in the spans Phong's test skips no `f32` run of Phong, Duff or symmetric Phong
+/// has a specular level above 0 — nor corrected Euler's run in those its cheap test
+/// skips — on this frame (the exact values' levels are 0 by `phong_skip_levels`; this
+/// checks the `f32` runs against the exact decision).
+#[test]
+fn one_frame_skip_study() {
+    use phong_approx::studies::compare::SKIP_SHININESS;
+    let (mesh, scene) = small();
+    let opts = CompareOptions {
+        skip_study: true,
+        ..CompareOptions::default()
+    };
+    let st = render_compare(&mesh, &scene, 5, opts).stats;
+    assert_eq!(st.skip.len(), SKIP_SHININESS.len());
+    let mut last = 0;
+    for c in &st.skip {
+        assert_eq!(c.spans, st.spans);
+        assert_eq!(c.undecided, 0);
+        assert!(c.skipped >= last && c.skipped <= c.spans, "{c:?}");
+        last = c.skipped;
+        assert_eq!(c.changed, 0, "{c:?}");
+        assert_eq!(c.changed_cheap, 0, "{c:?}");
+        assert!(c.combined_changed <= c.combined_pixels);
+    }
+    // At s = 128 most spans of a torus have no highlight.
+    assert!(2 * st.skip[3].skipped > st.spans, "{:?}", st.skip[3]);
 }
 
 /// The longest span is the last length before the first error above one level.

@@ -45,8 +45,10 @@ pub const SHININESS: [u32; 3] = [10, 50, 200];
 pub use crate::raster::shader::Shader;
 
 mod rows;
+mod skip;
 pub use rows::{runs_in, Direction, RowKernels};
 pub(crate) use rows::{shade_row, RowAt, RowInfo, TriangleSetup};
+pub use skip::{table as skip_table, SkipCount, SKIP_SHININESS};
 
 /// Every column of the comparison, the reference first: every span method of the
 /// catalogue ([`Method::ALL`], in its order), each followed by the polygon methods it
@@ -89,6 +91,8 @@ pub struct CompareStats {
     pub adaptive_gouraud: u64,
     /// Per shininess: the δ test applied to `N·H` (K = 1).
     pub specular_delta: Vec<DeltaCount>,
+    /// Per shininess of [`SKIP_SHININESS`]: the specular skip test (§7.1, question a).
+    pub skip: Vec<SkipCount>,
     /// Rows dropped because some method could not shade them in this precision.
     pub dropped_rows: u64,
     /// Visible pixels.
@@ -115,6 +119,7 @@ impl CompareStats {
             diffuse: vec![Deviation::default(); cols],
             specular: vec![vec![Deviation::default(); cols]; SHININESS.len()],
             specular_delta: vec![DeltaCount::default(); SHININESS.len()],
+            skip: vec![SkipCount::default(); SKIP_SHININESS.len()],
             ..Default::default()
         }
     }
@@ -136,6 +141,9 @@ impl CompareStats {
             a.gouraud += b.gouraud;
             a.gouraud_but_differ += b.gouraud_but_differ;
             a.corrected_but_same += b.corrected_but_same;
+        }
+        for (a, b) in self.skip.iter_mut().zip(&o.skip) {
+            a.merge(b);
         }
         self.spans += o.spans;
         self.adaptive_gouraud += o.adaptive_gouraud;
@@ -161,7 +169,16 @@ pub struct CompareOptions {
     pub pictures: bool,
     /// The shininess of the pictures, as an index into [`SHININESS`].
     pub shininess: usize,
+    /// Decide every span's specular skip test exactly and count what it skips
+    /// ([`SkipCount`]; the exact set-up costs about 65 µs a span, so [`run`] does it
+    /// on every [`SKIP_EVERY`]-th frame).
+    pub skip_study: bool,
 }
+
+/// [`run`] runs the skip study ([`CompareOptions::skip_study`]) on the frames `f` with
+/// `f % SKIP_EVERY == 0`: exact set-ups of every span are the comparison's costliest
+/// step otherwise (every frame: +70 % of its time; every fourth: about +18 %).
+pub const SKIP_EVERY: u32 = 4;
 
 /// The lighting of the pictures: `K_a + K_d·diffuse + K_s·specular`, clamped to 1.
 pub const PICTURE_LOOK: (f64, f64, f64) = (0.08, 0.75, 0.5);
@@ -398,6 +415,9 @@ impl Shading for Comparison {
                     dc.corrected_but_same += u64::from(same);
                 }
             }
+            if let (true, Some(span)) = (self.opts.skip_study, &h32.span) {
+                skip::count_row(span, out32, spec32, &mut stats.skip);
+            }
         }
         let mut picture = Vec::new();
         if self.opts.pictures {
@@ -494,7 +514,11 @@ pub fn run(exp: &super::experiment::Experiment, tick: &(dyn Fn() + Sync)) -> Vec
             let stats = (0..exp.frames)
                 .into_par_iter()
                 .map(|f| {
-                    let s = render_compare(&mesh, &scene, f, CompareOptions::default()).stats;
+                    let opts = CompareOptions {
+                        skip_study: f % SKIP_EVERY == 0,
+                        ..CompareOptions::default()
+                    };
+                    let s = render_compare(&mesh, &scene, f, opts).stats;
                     tick();
                     s
                 })

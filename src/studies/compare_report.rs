@@ -223,6 +223,7 @@ pub fn report_md(exp: &Experiment, pframes: u32, r: &Measured, secs: f64) -> Str
         })
         .collect();
     s.push_str(&markdown(&head, &vec![Right; head.len()], &rows));
+    let _ = writeln!(s, "\n{}", crate::studies::compare::skip_table(&r.tori));
     let _ = writeln!(
         s,
         "\n## Precision: the 800-polygon torus, {pframes} frames, every drawn pixel, mean / max deviation from \
@@ -365,6 +366,7 @@ mod tests {
                         };
                         SHININESS.len()
                     ],
+                    skip: vec![Default::default(); 4],
                     dropped_rows: 0,
                     pixels: 400,
                     frames: 1,

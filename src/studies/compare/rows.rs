@@ -225,6 +225,8 @@ pub(crate) struct RowInfo<T> {
     pub(super) choice: Choice,
     /// The exact values at the row's first and last pixel (the fence's samples).
     pub(super) edges: (T, T),
+    /// The row's span in `T` (rows of two or more pixels).
+    pub(super) span: Option<Span<T>>,
 }
 
 /// Where a row is: `n + 1` pixels starting at centroid-relative `(x0, y)`, shaded for
@@ -316,5 +318,6 @@ pub(crate) fn shade_row<T: RowKernels>(
     Some(RowInfo {
         choice,
         edges: (p_a, p_b),
+        span,
     })
 }

@@ -98,6 +98,7 @@ pub fn pictures(exp: &Experiment, f: u32) -> Vec<(String, RgbImage)> {
             CompareOptions {
                 pictures: true,
                 shininess: k,
+                skip_study: false,
             },
         );
         if *sv == 50 {

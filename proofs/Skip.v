@@ -68,22 +68,34 @@ Proof.
     field. lra.
 Qed.
 
-(** f is nondecreasing where L ≥ 0 and nonincreasing where L ≤ 0 (mean value
-    theorem; the sign of f' is the sign of L since q > 0). *)
-Lemma f_up A B C D E a b :
-  a <= b -> (forall x, a <= x <= b -> 0 < q C D E x) ->
-  (forall x, a <= x <= b -> 0 <= L A B C D E x) -> f A B C D E a <= f A B C D E b.
+(** The mean value theorem for f on [a, b]: f b − f a = (b − a)·f'(c), with f'(c)'s
+    denominator q(c)·√q(c) positive. *)
+Lemma f_mvt A B C D E a b :
+  a < b -> (forall x, a <= x <= b -> 0 < q C D E x) ->
+  exists c, a <= c <= b /\ 0 < q C D E c * sqrt (q C D E c) /\
+    f A B C D E b - f A B C D E a =
+      L A B C D E c / (q C D E c * sqrt (q C D E c)) * (b - a).
 Proof.
-  intros Hab Hq HL. destruct (Req_dec a b) as [<- | Hne]; [lra |].
+  intros Hab Hq.
   destruct (MVT_cor2 (f A B C D E)
               (fun x => L A B C D E x / (q C D E x * sqrt (q C D E x))) a b)
     as [c [Hc Hc']]; [lra | intros c Hc; apply f_derive, Hq; lra |].
   assert (Hqc : 0 < q C D E c) by (apply Hq; lra).
   assert (Hs : 0 < sqrt (q C D E c)) by (apply sqrt_lt_R0; lra).
-  assert (Hd : 0 < / (q C D E c * sqrt (q C D E c)))
-    by (apply Rinv_0_lt_compat, Rmult_lt_0_compat; lra).
-  assert (HLc : 0 <= L A B C D E c) by (apply HL; lra).
-  assert (0 <= L A B C D E c / (q C D E c * sqrt (q C D E c))) by (unfold Rdiv; nra).
+  exists c; repeat split; try lra; nra.
+Qed.
+
+(** f is nondecreasing where L ≥ 0 and nonincreasing where L ≤ 0 (the sign of f' is
+    the sign of L since q > 0). *)
+Lemma f_up A B C D E a b :
+  a <= b -> (forall x, a <= x <= b -> 0 < q C D E x) ->
+  (forall x, a <= x <= b -> 0 <= L A B C D E x) -> f A B C D E a <= f A B C D E b.
+Proof.
+  intros Hab Hq HL. destruct (Req_dec a b) as [<- | Hne]; [lra |].
+  destruct (f_mvt A B C D E a b) as [c [Hc [Hd Heq]]]; [lra | exact Hq |].
+  assert (0 <= L A B C D E c) by (apply HL; lra).
+  assert (0 <= L A B C D E c / (q C D E c * sqrt (q C D E c)))
+    by (apply Rdiv_le_0_compat; lra).
   nra.
 Qed.
 
@@ -92,16 +104,11 @@ Lemma f_down A B C D E a b :
   (forall x, a <= x <= b -> L A B C D E x <= 0) -> f A B C D E b <= f A B C D E a.
 Proof.
   intros Hab Hq HL. destruct (Req_dec a b) as [<- | Hne]; [lra |].
-  destruct (MVT_cor2 (f A B C D E)
-              (fun x => L A B C D E x / (q C D E x * sqrt (q C D E x))) a b)
-    as [c [Hc Hc']]; [lra | intros c Hc; apply f_derive, Hq; lra |].
-  assert (Hqc : 0 < q C D E c) by (apply Hq; lra).
-  assert (Hs : 0 < sqrt (q C D E c)) by (apply sqrt_lt_R0; lra).
-  assert (Hd : 0 < / (q C D E c * sqrt (q C D E c)))
-    by (apply Rinv_0_lt_compat, Rmult_lt_0_compat; lra).
-  assert (HLc : L A B C D E c <= 0) by (apply HL; lra).
-  assert (L A B C D E c / (q C D E c * sqrt (q C D E c)) <= 0) by (unfold Rdiv; nra).
-  nra.
+  destruct (f_mvt A B C D E a b) as [c [Hc [Hd Heq]]]; [lra | exact Hq |].
+  assert (0 <= - L A B C D E c) by (enough (L A B C D E c <= 0) by lra; apply HL; lra).
+  assert (0 <= - L A B C D E c / (q C D E c * sqrt (q C D E c)))
+    by (apply Rdiv_le_0_compat; lra).
+  unfold Rdiv in *. nra.
 Qed.
 
 (** With A·D/2 − B·C ≠ 0, L(x) = (A·D/2 − B·C)·(x − tstar). *)

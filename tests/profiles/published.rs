@@ -3,7 +3,7 @@
 use super::*;
 
 /// `FastSpan`'s kernels and `fast_rows::RowSpan`'s (set up from the span's own
-/// floats) pass under `ieee` at every `n` from 1 to 64 (128 in the extensive tier)
+/// floats) pass under `ieee` at every `n` from 1 to 40 (128 in the extensive tier)
 /// and at `2^k − 1`, `2^k` up to 1024 (4096): their set-ups (the closed form of `ds`, Gouraud plus a parabola) are not the
 /// graph of the theorems, so this is evidence, not proof (docs/float.md §18.3).
 #[test]
@@ -12,7 +12,7 @@ fn fast_kernels_pass_under_ieee_at_every_n() {
     use phong_approx::fast_rows::RowSpan;
     use phong_approx::simd;
     let z = Stereo(0, 0, 1);
-    let mut ns: Vec<u32> = (1..=tiered(64, 128)).collect();
+    let mut ns: Vec<u32> = (1..=tiered(40, 128)).collect();
     for k in tiered(7, 8)..=tiered(10, 12) {
         ns.extend([(1 << k) - 1, 1 << k]);
     }

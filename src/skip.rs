@@ -250,39 +250,6 @@ impl Candidates {
     }
 }
 
-/// Whether Phong's specular term `K_s·max(0, p/√q)^s` is below one level at every real
-/// `t ∈ [0, n]` of `span` (whose `l` is the half vector `H`): [`Candidates::phong`],
-/// then [`Candidates::skips`]. `proofs/Skip.v`: `phong_skip_sound`.
-///
-/// # Errors
-/// [`SkipError`]: a shininess outside `1..=MAX_SHININESS`, a negative `K_s`, or `q`
-/// reaching 0 on the span.
-pub fn phong_skips(
-    span: &Span<BigRational>,
-    ks: &BigRational,
-    shininess: u32,
-) -> Result<bool, SkipError> {
-    check(ks, shininess)?;
-    Candidates::phong(span)?.skips(ks, shininess)
-}
-
-/// Whether `K_s·max(0, v)^s` is below one level at every real `t ∈ [0, n]` for the
-/// quadratic `v(t) = p_a + t·s_0 + t(t − 1)/2·ds` ([`Candidates::quadratic`]).
-/// `proofs/Skip.v`: `quadratic_skip_sound`.
-///
-/// # Errors
-/// [`SkipError`]: a shininess outside `1..=MAX_SHININESS` or a negative `K_s`.
-pub fn quadratic_skips(
-    p_a: &BigRational,
-    s0: &BigRational,
-    ds: &BigRational,
-    n: u32,
-    ks: &BigRational,
-    shininess: u32,
-) -> Result<bool, SkipError> {
-    Candidates::quadratic(p_a, s0, ds, n).skips(ks, shininess)
-}
-
 /// The skip test of `method` on `span` (its `l` the half vector):
 /// [`Candidates::of`], then [`Candidates::skips`].
 ///

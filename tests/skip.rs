@@ -318,7 +318,7 @@ fn skip_errors_are_typed() {
 /// The decision `skip` makes is the one `proofs/Skip.v` proves sound: its candidates
 /// (`L`'s root `tstar`, the quadratic's vertex `tv`) and its inequalities (`ok`,
 /// `okv`) as the file defines them, and the theorems' hypotheses (`q > 0` on
-/// `[0, n]`, which `phong_skips` checks, `K_s ≥ 0`, `s ≥ 1`, which it refuses
+/// `[0, n]`, which `Candidates::phong` checks, `K_s ≥ 0`, `s ≥ 1`, which it refuses
 /// otherwise). An edit of the proof's decision fails here.
 #[test]
 fn the_decision_is_the_proved_one() {

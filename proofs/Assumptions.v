@@ -7,7 +7,7 @@
 From PhongApprox Require Import Span Duff Euler Derivative Symmetry Adaptive Angular.
 From PhongApprox Require Import ClosedForms Angle FastSetup Related Float Graph ShaderSqrt.
 From PhongApprox Require Import PhongValue PhongCountD PhongCount PhongNormalize Profiles.
-From PhongApprox Require Import AdaptiveDelta DuffCount Fixed Composed Skip.
+From PhongApprox Require Import AdaptiveDelta DuffCount Fixed Composed Skip Squared.
 
 (** Span.v *)
 Check eq_2_p_is_linear.
@@ -368,3 +368,21 @@ Check quadratic_skip_sound.
 Print Assumptions quadratic_skip_sound.
 Check quadratic_skip_levels.
 Print Assumptions quadratic_skip_levels.
+
+(** Squared.v *)
+Check sq_derivative.
+Print Assumptions sq_derivative.
+Check sq_starts_at_ga.
+Print Assumptions sq_starts_at_ga.
+Check sq_ends_at_gb.
+Print Assumptions sq_ends_at_gb.
+Check sq_closed_form.
+Print Assumptions sq_closed_form.
+Check sq_unit_setup.
+Print Assumptions sq_unit_setup.
+Check sq_specular_even.
+Print Assumptions sq_specular_even.
+Check sq_specular_odd.
+Print Assumptions sq_specular_odd.
+Check sq_nonneg_value.
+Print Assumptions sq_nonneg_value.

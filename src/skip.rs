@@ -27,6 +27,8 @@
 //! `quadratic_skip_sound`; at the pixels, `phong_skip_levels`,
 //! `quadratic_skip_levels`); tests: `tests/skip.rs`.
 
+pub mod float;
+
 use crate::reference::radical::Valued;
 use crate::{BigRational, Method, Span};
 
@@ -51,6 +53,9 @@ pub enum SkipError {
     /// interpolation, the related methods, the adaptive scheme).
     #[error("no skip test for {0}: its values are neither Phong's nor a quadratic along the span")]
     Unsupported(Method),
+    /// An input of the float form ([`float::float_skips`]) outside its domain.
+    #[error("{0}")]
+    FloatInput(&'static str),
 }
 
 fn q(x: i64) -> BigRational {

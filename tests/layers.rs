@@ -50,6 +50,7 @@ const LAYERS: &[(&str, u32)] = &[
     ("budget.rs", 7),
     // The specular skip test (the paper's §7.1, question a), from the catalogue.
     ("skip.rs", 7),
+    ("skip/", 7),
     // The float bounds.
     ("tolerance.rs", 8),
     ("tolerance/", 8),

@@ -9,8 +9,10 @@
 use super::common::coq::statement;
 use super::common::*;
 use num_traits::{One, Zero};
+use phong_approx::skip::float::{float_skips, FloatSpan, Margins};
 use phong_approx::skip::{phong_candidates, specular_skips, SkipError};
 use phong_approx::specular::power;
+use phong_approx::Format;
 use phong_approx::Vec3;
 use phong_approx::{Method, Span};
 use proptest::strategy::{Strategy, ValueTree};
@@ -344,4 +346,266 @@ fn the_decision_is_the_proved_one() {
         sound.contains("0 <= Ks -> (1 <= s)%nat -> (forall t, 0 <= t <= n -> 0 < q C D E t)"),
         "{sound}"
     );
+}
+
+/// The span `s` with its inputs rounded to `f32` (as a renderer holds them): the float
+/// form's inputs, and the same values as an exact span (unit within `f32` rounding).
+fn rounded(s: &Span<Q>) -> Option<(FloatSpan, Span<Q>)> {
+    use num_traits::ToPrimitive;
+    let f = |v: &Vec3<Q>| [&v.x, &v.y, &v.z].map(|c| f64::from(c.to_f64().unwrap() as f32));
+    let (na, nb, h) = (f(&s.na), f(&s.nb), f(&s.l));
+    let q = |v: [f64; 3]| -> Option<Vec3<Q>> {
+        Some(Vec3::new(
+            Q::from_float(v[0])?,
+            Q::from_float(v[1])?,
+            Q::from_float(v[2])?,
+        ))
+    };
+    let exact = Span::with_tolerance(q(na)?, q(nb)?, q(h)?, s.n, &r(1, 1 << 18)).ok()?;
+    Some((FloatSpan { na, nb, h, n: s.n }, exact))
+}
+
+/// `K_s` values of the float form (`[0, 1]`).
+fn ks_floats() -> Vec<f64> {
+    tiered(vec![1.0, 0.003], vec![1.0, 0.5, 0.003])
+}
+
+/// Whether `255·K_s·(x + e)^s·(1 + u)^{2s+2} < 1`, exactly in rationals, for `x` Phong's
+/// value `p/√q` given by `x² = p²/q` (`squared`) or the value itself: the square root
+/// replaced by a rational above it (`√` of the nearest `f64`, times `1 + 2^-50`).
+fn float_margin_holds(x: &Q, squared: bool, e: f64, u: f64, ks: f64, sh: u32) -> bool {
+    use num_traits::ToPrimitive;
+    let x = if !squared || x.is_zero() {
+        x.clone()
+    } else {
+        let xf = x.to_f64().unwrap().sqrt().max(1e-300);
+        Q::from_float(xf).unwrap() * (Q::one() + r(1, 1 << 50))
+    };
+    let q = |v: f64| Q::from_float(v).unwrap();
+    let m = power(&(Q::one() + q(u)), 2 * sh + 2);
+    Q::from_integer(255.into()) * q(ks) * power(&(x + q(e)), sh) * m < Q::one()
+}
+
+/// `float_skip_sound` (proofs/SkipFloat.v): where the float form skips a span, every
+/// pixel's exact value `x` of the method on the float inputs satisfies
+/// `255·K_s·(max(0, x) + e)^s·(1 + u)^{2s+2} < 1` for the `ieee` allowance `e` in
+/// `binary32` ([`Margins::ieee`]) — checked in rationals, pixel by pixel: no `ieee`
+/// implementation reaches level 1 there. And with zero margins the float form skips
+/// only what the exact test skips.
+#[test]
+fn float_skip_sound() {
+    let (mut skips, mut exact_skips, mut missed) = (0u32, 0u32, 0u32);
+    for s in spans() {
+        let Some((fs, exact)) = rounded(&s) else {
+            continue;
+        };
+        for m in [
+            Method::Phong,
+            Method::Duff,
+            Method::CorrectedEuler,
+            Method::Euler,
+            Method::Gouraud,
+        ] {
+            let Some(margins) = Margins::ieee(m, &exact, Format::Binary32) else {
+                continue;
+            };
+            let squared = m.is_phong_valued();
+            let values: Vec<Q> = if squared {
+                (0..=s.n)
+                    .map(|i| {
+                        let p = exact.p_at(i);
+                        if p > Q::zero() {
+                            &p * &p / exact.q_at(i)
+                        } else {
+                            Q::zero()
+                        }
+                    })
+                    .collect()
+            } else {
+                m.values(&exact).unwrap()
+            };
+            let top = values
+                .iter()
+                .fold(Q::zero(), |a, x| if *x > a { x.clone() } else { a });
+            for sh in shininess() {
+                for ks in ks_floats() {
+                    let zero = Margins {
+                        allowance: 0.0,
+                        u: 0.0,
+                    };
+                    let ks_q = Q::from_float(ks).unwrap();
+                    let bare = float_skips(m, &fs, ks, sh, zero).unwrap();
+                    let exact_skip = specular_skips(m, &exact, &ks_q, sh);
+                    if let Ok(x) = exact_skip {
+                        exact_skips += u32::from(x);
+                        missed += u32::from(x && !bare);
+                        assert!(!bare || x, "{m}: the float form skips, the exact test not: s = {sh}, K_s = {ks}, {fs:?}");
+                    }
+                    if float_skips(m, &fs, ks, sh, margins).unwrap() {
+                        skips += 1;
+                        // The condition grows with x: the largest pixel decides.
+                        assert!(
+                            float_margin_holds(&top, squared, margins.allowance, margins.u, ks, sh),
+                            "{m} at its largest pixel {top}: s = {sh}, K_s = {ks}, e = {:e}, {fs:?}",
+                            margins.allowance
+                        );
+                    }
+                }
+            }
+        }
+    }
+    println!("float form: {skips} skips with the ieee margins; with none, {missed} of the exact test's {exact_skips} skips not made");
+    assert!(skips > tiered(40, 800), "{skips} skips");
+    // The float form's own rounding costs little: it makes 99 % of the exact skips.
+    assert!(missed * 100 <= exact_skips, "{missed} of {exact_skips}");
+}
+
+/// Spans next to the threshold, where a float decision is most likely to be wrong:
+/// `K_s` set so that the largest pixel sits just below or just above level 1 (by
+/// `10⁻⁶` and `10⁻⁹` relative and by a few ulps) — of the exact value with no margin,
+/// and of the value plus the `ieee` allowance with the margins —, on the edge and
+/// random spans. The float form must never skip where the exact test or the margin's
+/// condition (checked in rationals at every pixel's largest) says no.
+#[test]
+fn the_float_form_is_sound_at_the_threshold() {
+    use num_traits::ToPrimitive;
+    let zero = Margins {
+        allowance: 0.0,
+        u: 0.0,
+    };
+    let (mut decided, mut skips) = (0, 0);
+    for s in spans() {
+        let Some((fs, exact)) = rounded(&s) else {
+            continue;
+        };
+        for m in [Method::Phong, Method::CorrectedEuler, Method::Gouraud] {
+            let squared = m == Method::Phong;
+            let values: Vec<Q> = if squared {
+                (0..=s.n)
+                    .map(|i| {
+                        let p = exact.p_at(i).max(Q::zero());
+                        &p * &p / exact.q_at(i)
+                    })
+                    .collect()
+            } else {
+                m.values(&exact).unwrap()
+            };
+            let top = values
+                .iter()
+                .fold(Q::zero(), |a, x| if *x > a { x.clone() } else { a });
+            let top_f = top.to_f64().unwrap();
+            let top_f = if squared { top_f.sqrt() } else { top_f };
+            let Some(ieee) = Margins::ieee(m, &exact, Format::Binary32) else {
+                continue;
+            };
+            if top_f <= 1e-3 {
+                continue;
+            }
+            for margins in [zero, ieee] {
+                for sh in [1u32, 8] {
+                    let base = 255.0
+                        * (top_f + margins.allowance).powi(sh as i32)
+                        * (1.0 + margins.u).powi(2 * sh as i32 + 2);
+                    for f in [
+                        1.0 - 1e-6,
+                        1.0 - 1e-9,
+                        1.0 - 4e-16,
+                        1.0,
+                        1.0 + 4e-16,
+                        1.0 + 1e-9,
+                        1.0 + 1e-6,
+                    ] {
+                        let ks = f / base;
+                        if !(0.0..=1.0).contains(&ks) {
+                            continue;
+                        }
+                        decided += 1;
+                        if !float_skips(m, &fs, ks, sh, margins).unwrap() {
+                            continue;
+                        }
+                        skips += 1;
+                        let exact_skip = specular_skips(m, &exact, &Q::from_float(ks).unwrap(), sh);
+                        assert!(
+                            exact_skip != Ok(false),
+                            "{m}: s = {sh}, K_s = {ks:e}, {fs:?}"
+                        );
+                        assert!(
+                            float_margin_holds(&top, squared, margins.allowance, margins.u, ks, sh),
+                            "{m}: s = {sh}, K_s = {ks:e}, margins {margins:?}, {fs:?}"
+                        );
+                    }
+                }
+            }
+        }
+    }
+    // Both sides of the threshold are reached: the test skips some, not all.
+    assert!(
+        decided > tiered(100, 2000) && skips > tiered(20, 400) && skips < decided / 2,
+        "{skips} of {decided}"
+    );
+}
+
+/// The float form's bad input is a typed error, never a skip: a `K_s` outside
+/// `[0, 1]` or not a number, infinite inputs, `n = 0`, a zero edge normal, a
+/// non-finite margin, a method with no test.
+#[test]
+fn float_skip_errors_are_typed() {
+    let fs = FloatSpan {
+        na: [0.0, 0.0, 1.0],
+        nb: [1.0, 0.0, 0.0],
+        h: [0.0, 0.0, 1.0],
+        n: 4,
+    };
+    let m = Margins {
+        allowance: 1e-6,
+        u: 2f64.powi(-24),
+    };
+    let skip =
+        |fs: &FloatSpan, ks: f64, sh: u32, m: Margins| float_skips(Method::Phong, fs, ks, sh, m);
+    assert_eq!(skip(&fs, 1.0, 0, m), Err(SkipError::Shininess(0)));
+    for ks in [-0.5, 1.5, f64::NAN, f64::INFINITY] {
+        assert!(
+            matches!(skip(&fs, ks, 8, m), Err(SkipError::FloatInput(_))),
+            "{ks}"
+        );
+    }
+    let bad_margins = Margins {
+        allowance: f64::NAN,
+        ..m
+    };
+    assert!(matches!(
+        skip(&fs, 1.0, 8, bad_margins),
+        Err(SkipError::FloatInput(_))
+    ));
+    for bad in [
+        FloatSpan { n: 0, ..fs },
+        FloatSpan {
+            n: (1 << 24) + 1,
+            ..fs
+        },
+        FloatSpan {
+            h: [f64::INFINITY, 0.0, 0.0],
+            ..fs
+        },
+    ] {
+        assert!(
+            matches!(skip(&bad, 1.0, 8, m), Err(SkipError::FloatInput(_))),
+            "{bad:?}"
+        );
+    }
+    let zero = FloatSpan { nb: [0.0; 3], ..fs };
+    assert_eq!(skip(&zero, 1.0, 8, m), Err(SkipError::NormalVanishes));
+    assert!(matches!(
+        float_skips(Method::Angular, &fs, 1.0, 8, m),
+        Err(SkipError::Unsupported(_))
+    ));
+    // Opposite normals: q vanishes inside; the float form does not skip (never a wrong
+    // skip), even where every end is dark.
+    let opposite = FloatSpan {
+        na: [0.0, 0.0, 1.0],
+        nb: [0.0, 0.0, -1.0],
+        h: [1.0, 0.0, 0.0],
+        n: 4,
+    };
+    assert_eq!(skip(&opposite, 1.0, 8, m), Ok(false));
 }

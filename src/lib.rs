@@ -21,6 +21,7 @@
 //! | specular `(N·H)^s` | [`specular`] | eq. 1, §6.1 |
 //! | 8-bit levels | [`quantize`] | §6 |
 //! | skipping the specular pass | [`skip`] | §7.1, question a |
+//! | corrected Euler on `(N·H)²` | [`squared_corrected_euler`] | §7.1, question b |
 //!
 //! The methods of the paper's related work — Bishop & Weimer, Seiler, Kuijk & Blake,
 //! Mortensen's vertex angles, Ouyang & Maynard — are in [`related`]; low-precision
@@ -99,6 +100,7 @@ pub mod skip;
 pub mod span;
 pub mod span_report;
 pub mod specular;
+pub mod squared_corrected_euler;
 #[cfg(feature = "harness")]
 pub mod studies;
 pub mod symmetric_phong;

@@ -24,5 +24,8 @@ mod related;
 /// The specular skip test (`skip::*`).
 #[path = "../skip.rs"]
 mod skip;
+/// The squared method (`squared_corrected_euler`).
+#[path = "../squared.rs"]
+mod squared;
 #[path = "../testkit.rs"]
 mod testkit;

@@ -1,0 +1,283 @@
+//! The squared method (`phong_approx::squared_corrected_euler`, the paper's §7.1
+//! question b): corrected Euler's construction on `g = (N·H)²/(N·N)`, checked exactly
+//! in rationals against values computed here from the inputs — the ends, the
+//! derivative (as `2·f·f′ = 2pL/q²`, from Skip.v's `L`, not from the code's formula),
+//! the closed form, the unit-normal relation to corrected Euler, the specular powers —
+//! on unit and non-unit edge normals. Theorems: `proofs/Squared.v`.
+
+use super::common::*;
+use num_traits::{One, Zero};
+use phong_approx::specular::power;
+use phong_approx::squared_corrected_euler::SquaredSpan;
+use phong_approx::{Scalar, Span, SpanError, Vec3};
+use proptest::strategy::{Strategy, ValueTree};
+
+/// `N_a`, `N_b`, `H` and `n`.
+type Inputs = (Vec3<Q>, Vec3<Q>, Vec3<Q>, u32);
+
+/// The inputs tried: the edge, targeted and seeded random unit spans (n ≤ 16; 256 in
+/// the extensive tier), and each again with its edge normals scaled by 3 and 1/2 (not
+/// unit: the method takes any length).
+fn inputs() -> Vec<Inputs> {
+    let mut spans: Vec<Span<Q>> = edge_cases()
+        .iter()
+        .chain(&targeted_cases())
+        .filter(|c| c.n <= tiered(16, 256))
+        .filter_map(Case::span)
+        .collect();
+    let mut runner = proptest::test_runner::TestRunner::deterministic();
+    for _ in 0..tiered(24, 400) {
+        spans.extend(arb_case().new_tree(&mut runner).unwrap().current().span());
+    }
+    let mut out = Vec::new();
+    for s in spans {
+        out.push((s.na.clone(), s.nb.clone(), s.l.clone(), s.n));
+        out.push((s.na.scale(&q(3, 1)), s.nb.scale(&q(1, 2)), s.l.clone(), s.n));
+    }
+    out
+}
+
+/// `p(t)`, `q(t)` and Skip.v's `L(t)` of the inputs, computed here.
+struct Poly {
+    a: Q,
+    b: Q,
+    c: Q,
+    d: Q,
+    e: Q,
+}
+
+impl Poly {
+    fn of(na: &Vec3<Q>, nb: &Vec3<Q>, h: &Vec3<Q>, n: u32) -> Poly {
+        let k = nb.sub(na).div(&q(n.into(), 1));
+        Poly {
+            a: k.dot(h),
+            b: na.dot(h),
+            c: k.dot(&k),
+            d: q(2, 1) * k.dot(na),
+            e: na.dot(na),
+        }
+    }
+    fn p(&self, t: &Q) -> Q {
+        &self.b + &self.a * t
+    }
+    fn q(&self, t: &Q) -> Q {
+        &self.e + &self.d * t + &self.c * t * t
+    }
+    fn g(&self, t: &Q) -> Q {
+        let p = self.p(t);
+        &p * &p / self.q(t)
+    }
+    /// `g′ = 2·f·f′ = 2·p·L/q²` (`f′ = L/q^{3/2}`, proofs/Skip.v `f_derive`).
+    fn dg(&self, t: &Q) -> Q {
+        let l = (&self.a * &self.e - &self.b * &self.d / q(2, 1))
+            + t * (&self.a * &self.d / q(2, 1) - &self.b * &self.c);
+        let qt = self.q(t);
+        q(2, 1) * self.p(t) * l / (&qt * &qt)
+    }
+}
+
+fn run(s: &SquaredSpan<Q>) -> Vec<Q> {
+    let mut out = vec![Q::zero(); s.n as usize + 1];
+    s.shade(&mut out).unwrap();
+    out
+}
+
+/// `sq_derivative` (proofs/Squared.v): the set-up's end slopes are `g′` at `0` and `n`,
+/// where `g′` is computed here as `2·p·L/q²`.
+#[test]
+fn sq_derivative() {
+    for (na, nb, h, n) in inputs() {
+        let s = SquaredSpan::new(&na, &nb, &h, n).unwrap();
+        let poly = Poly::of(&na, &nb, &h, n);
+        assert_eq!(s.dg_a, poly.dg(&Q::zero()), "{na:?} {nb:?} {h:?} {n}");
+        assert_eq!(s.dg_b, poly.dg(&q(n.into(), 1)), "{na:?} {nb:?} {h:?} {n}");
+    }
+}
+
+/// `sq_starts_at_ga` (proofs/Squared.v): the recurrence's first value is
+/// `(N_a·H)²/(N_a·N_a)`, for edge normals of any length.
+#[test]
+fn sq_starts_at_ga() {
+    for (na, nb, h, n) in inputs() {
+        let out = run(&SquaredSpan::new(&na, &nb, &h, n).unwrap());
+        let pa = na.dot(&h);
+        assert_eq!(out[0], &pa * &pa / na.dot(&na));
+    }
+}
+
+/// `sq_ends_at_gb` (proofs/Squared.v): the recurrence's last value, `n` additions
+/// later, is `(N_b·H)²/(N_b·N_b)` exactly.
+#[test]
+fn sq_ends_at_gb() {
+    for (na, nb, h, n) in inputs() {
+        let out = run(&SquaredSpan::new(&na, &nb, &h, n).unwrap());
+        let pb = nb.dot(&h);
+        assert_eq!(out[n as usize], &pb * &pb / nb.dot(&nb), "n = {n}");
+    }
+}
+
+/// `sq_closed_form` (proofs/Squared.v): `g_i = g_a + i·t_0 + i(i−1)/2·ds` at every
+/// pixel of the recurrence.
+#[test]
+fn sq_closed_form() {
+    for (na, nb, h, n) in inputs() {
+        let s = SquaredSpan::new(&na, &nb, &h, n).unwrap();
+        for (i, v) in run(&s).iter().enumerate() {
+            let i = q(i as i64, 1);
+            let want = &s.g_a + &i * &s.t0 + &i * (&i - Q::one()) / q(2, 1) * &s.ds;
+            assert_eq!(*v, want);
+        }
+    }
+}
+
+/// `sq_unit_setup` (proofs/Squared.v): with unit edge normals the end slopes are
+/// `2·p_a·di_a` and `2·p_b·di_b` — twice `p` times corrected Euler's (the span's
+/// eqs. 10–11).
+#[test]
+fn sq_unit_setup() {
+    for (na, nb, h, n) in inputs() {
+        let Ok(span) = Span::new(na, nb, h, n) else {
+            continue; // the scaled, non-unit copies
+        };
+        let s = SquaredSpan::of(&span).unwrap();
+        assert_eq!(s.dg_a, q(2, 1) * &span.p_a * &span.di_a);
+        assert_eq!(s.dg_b, q(2, 1) * &span.p_b * &span.di_b);
+    }
+}
+
+/// `sq_specular_even` (proofs/Squared.v): for even `s` the specular base is `g^{s/2}`
+/// with no root: exactly Phong's `(p/√q)^s = (p²/q)^{s/2}` where `g` is exact (the
+/// ends), `0` where `p ≤ 0`.
+#[test]
+fn sq_specular_even() {
+    for (na, nb, h, n) in inputs() {
+        let s = SquaredSpan::new(&na, &nb, &h, n).unwrap();
+        let poly = Poly::of(&na, &nb, &h, n);
+        for sh in [2, 8, 32] {
+            let mut out = vec![Q::zero(); n as usize + 1];
+            s.specular(sh, &mut out).unwrap();
+            for t in [0, n] {
+                let tq = q(t.into(), 1);
+                let want = if poly.p(&tq) > Q::zero() {
+                    power(&poly.g(&tq), sh / 2)
+                } else {
+                    Q::zero()
+                };
+                assert_eq!(out[t as usize], want, "s = {sh}, pixel {t}");
+            }
+            // Where p ≤ 0 (its own recurrence) the base is 0.
+            for (i, v) in out.iter().enumerate() {
+                if poly.p(&q(i as i64, 1)) <= Q::zero() {
+                    assert!(v.is_zero());
+                }
+            }
+        }
+    }
+}
+
+/// `sq_specular_odd` (proofs/Squared.v): for odd `s` the base is `g^{(s−1)/2}·√g`, one
+/// root per pixel: at the ends, Phong's `(p/√q)^s`, compared in `f64` from the exact
+/// `g` (the root of the nearest `f64` of `g`; both sides within a few ulps, checked
+/// against `10⁻¹²` relative).
+#[test]
+fn sq_specular_odd() {
+    use num_traits::ToPrimitive;
+    for (na, nb, h, n) in inputs() {
+        let s = SquaredSpan::new(&na, &nb, &h, n).unwrap();
+        let poly = Poly::of(&na, &nb, &h, n);
+        for sh in [1, 9, 33] {
+            let mut out = vec![Q::zero(); n as usize + 1];
+            s.specular(sh, &mut out).unwrap();
+            for t in [0, n] {
+                let tq = q(t.into(), 1);
+                let f = |x: Q| ToPrimitive::to_f64(&x).unwrap();
+                let (p, qq) = (f(poly.p(&tq)), f(poly.q(&tq)));
+                let want = if p > 0.0 {
+                    (p / qq.sqrt()).powi(sh as i32)
+                } else {
+                    0.0
+                };
+                let got = f(out[t as usize].clone());
+                assert!(
+                    (got - want).abs() <= 1e-12 * want.abs() + 1e-300,
+                    "s = {sh}, pixel {t}: {got} against {want}"
+                );
+            }
+        }
+    }
+}
+
+/// `sq_nonneg_value` (proofs/Squared.v): `g ≥ 0` where it is exact and `√g = |p|/√q`
+/// (the diffuse use, one root per pixel): at the ends, in rationals (`g_a·E = p_a²`
+/// exactly).
+#[test]
+fn sq_nonneg_value() {
+    for (na, nb, h, n) in inputs() {
+        let s = SquaredSpan::new(&na, &nb, &h, n).unwrap();
+        assert!(s.g_a >= Q::zero() && s.g_b >= Q::zero());
+        let (pa, pb) = (na.dot(&h), nb.dot(&h));
+        assert_eq!(&s.g_a * na.dot(&na), &pa * &pa);
+        assert_eq!(&s.g_b * nb.dot(&nb), &pb * &pb);
+    }
+}
+
+/// The method is generic: in `f32` and `f64` its set-up and loop run on the same
+/// inputs and stay finite; in rationals it is exact (above); `SquaredSpan::of` of a
+/// unit span is `SquaredSpan::new` of its inputs.
+#[test]
+fn the_squared_method_runs_in_every_scalar() {
+    for (na, nb, h, n) in inputs() {
+        let exact = SquaredSpan::new(&na, &nb, &h, n).unwrap();
+        let cast = |v: &Vec3<Q>| v.cast::<f64>().unwrap();
+        let f = SquaredSpan::new(&cast(&na), &cast(&nb), &cast(&h), n).unwrap();
+        let mut out = vec![0f64; n as usize + 1];
+        f.specular(8, &mut out).unwrap();
+        assert!(out.iter().all(|v| v.is_finite()));
+        let c32 = |v: &Vec3<Q>| v.cast::<f32>().unwrap();
+        let f32s = SquaredSpan::new(&c32(&na), &c32(&nb), &c32(&h), n).unwrap();
+        let mut out = vec![0f32; n as usize + 1];
+        f32s.shade(&mut out).unwrap();
+        assert!(out.iter().all(|v| v.is_finite()));
+        assert!(Scalar::is_finite(&exact.t0));
+    }
+}
+
+/// Bad input is a typed error: a zero or non-finite edge normal, `n = 0` or above the
+/// cap, an output of the wrong length.
+#[test]
+fn squared_errors_are_typed() {
+    let v = |x: i64, y: i64, z: i64| Vec3::new(q(x, 1), q(y, 1), q(z, 1));
+    let (up, side) = (v(0, 0, 1), v(1, 0, 0));
+    assert!(matches!(
+        SquaredSpan::new(&v(0, 0, 0), &up, &up, 4),
+        Err(SpanError::ZeroVector { .. })
+    ));
+    assert!(matches!(
+        SquaredSpan::new(&up, &v(0, 0, 0), &up, 4),
+        Err(SpanError::ZeroVector { .. })
+    ));
+    assert!(matches!(
+        SquaredSpan::new(&up, &side, &up, 0),
+        Err(SpanError::ZeroSteps)
+    ));
+    assert!(matches!(
+        SquaredSpan::new(&up, &side, &up, (1 << 24) + 1),
+        Err(SpanError::TooManySteps { .. })
+    ));
+    let nan = Vec3::new(f64::NAN, 0.0, 1.0);
+    assert!(matches!(
+        SquaredSpan::new(
+            &nan,
+            &Vec3::new(0.0, 0.0, 1.0),
+            &Vec3::new(0.0, 0.0, 1.0),
+            4
+        ),
+        Err(SpanError::NonFinite { .. })
+    ));
+    let s = SquaredSpan::new(&up, &side, &up, 4).unwrap();
+    let mut short = vec![Q::zero(); 4];
+    assert!(matches!(
+        s.shade(&mut short),
+        Err(SpanError::OutputLength { .. })
+    ));
+}

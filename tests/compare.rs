@@ -93,7 +93,8 @@ fn one_frame_relations() {
 /// and in the spans Phong's test skips no `f32` run of Phong, Duff or symmetric Phong
 /// has a specular level above 0 — nor corrected Euler's run in those its cheap test
 /// skips — on this frame (the exact values' levels are 0 by `phong_skip_levels`; this
-/// checks the `f32` runs against the exact decision).
+/// checks the `f32` runs against the exact decision); the float form with its `ieee`
+/// margins skips nearly as much, and no `f32` level above 0 either.
 #[test]
 fn one_frame_skip_study() {
     use phong_approx::studies::compare::SKIP_SHININESS;
@@ -112,6 +113,13 @@ fn one_frame_skip_study() {
         last = c.skipped;
         assert_eq!(c.changed, 0, "{c:?}");
         assert_eq!(c.changed_cheap, 0, "{c:?}");
+        // The float form skips only what the exact test skips, nearly all of it, and
+        // no f32 run has a level above 0 where it skips.
+        assert!(
+            c.skipped_float <= c.skipped && 100 * c.skipped_float >= 95 * c.skipped,
+            "{c:?}"
+        );
+        assert_eq!(c.changed_float, 0, "{c:?}");
         assert!(c.combined_changed <= c.combined_pixels);
     }
     // At s = 128 most spans of a torus have no highlight.

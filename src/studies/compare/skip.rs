@@ -8,8 +8,9 @@
 //! whether the `f32` runs agree, pixel by pixel.
 
 use super::{index, level, Shader, PICTURE_LOOK};
+use crate::skip::float::{float_skips, FloatSpan, Margins};
 use crate::skip::Candidates;
-use crate::{BigRational, Method, Span, Vec3};
+use crate::{BigRational, Format, Method, Span, Vec3};
 
 /// The shininess values of the skip table (the issue's 1, 8, 32 and 128).
 pub const SKIP_SHININESS: [u32; 4] = [1, 8, 32, 128];
@@ -31,6 +32,12 @@ pub struct SkipCount {
     /// Pixels of skipped spans where an `f32` run of Phong, Duff or symmetric Phong
     /// has a specular level above 0 (each method's pixel counted).
     pub changed: u64,
+    /// Spans the float form ([`crate::skip::float`]) skips for Phong's values, with the
+    /// largest `binary32` `ieee` allowance of Phong, Duff and symmetric Phong.
+    pub skipped_float: u64,
+    /// Pixels of those spans where an `f32` run of Phong, Duff or symmetric Phong has
+    /// a specular level above 0.
+    pub changed_float: u64,
     /// Spans corrected Euler's cheap test (from `p_a`, `t_0`, `ds`) skips.
     pub skipped_cheap: u64,
     /// Pixels of those spans where the `f32` corrected Euler run's level is above 0.
@@ -54,6 +61,8 @@ impl SkipCount {
         self.skipped += o.skipped;
         self.skipped_pixels += o.skipped_pixels;
         self.changed += o.changed;
+        self.skipped_float += o.skipped_float;
+        self.changed_float += o.changed_float;
         self.skipped_cheap += o.skipped_cheap;
         self.changed_cheap += o.changed_cheap;
         self.cheap_wrong_for_phong += o.cheap_wrong_for_phong;
@@ -93,6 +102,24 @@ pub(super) fn count_row(
         .as_ref()
         .map(|ex| Candidates::of(Method::CorrectedEuler, ex));
     let one = BigRational::from_integer(1.into());
+    // The float form: its inputs the f32 values, its allowance the largest ieee bound
+    // of the three methods with Phong's values.
+    let fs = FloatSpan {
+        na: [span.na.x, span.na.y, span.na.z].map(f64::from),
+        nb: [span.nb.x, span.nb.y, span.nb.z].map(f64::from),
+        h: [span.l.x, span.l.y, span.l.z].map(f64::from),
+        n: span.n,
+    };
+    let margins = exact.as_ref().and_then(|ex| {
+        PHONG_VALUED
+            .iter()
+            .map(|&m| Margins::ieee(m, ex, Format::Binary32))
+            .try_fold(0f64, |e, m| m.map(|m| e.max(m.allowance)))
+            .map(|allowance| Margins {
+                allowance,
+                u: Format::Binary32.u(),
+            })
+    });
     let (ka, kd, ks) = PICTURE_LOOK;
     let ks_q = BigRational::from_float(ks).expect("finite");
     let col = |m: Method| index(Shader::Span(m));
@@ -114,6 +141,10 @@ pub(super) fn count_row(
             count.skipped += 1;
             count.skipped_pixels += len as u64;
             count.changed += PHONG_VALUED.iter().map(|&m| nonzero(m)).sum::<u64>();
+        }
+        if margins.is_some_and(|m| float_skips(Method::Phong, &fs, 1.0, s, m) == Ok(true)) {
+            count.skipped_float += 1;
+            count.changed_float += PHONG_VALUED.iter().map(|&m| nonzero(m)).sum::<u64>();
         }
         if cheap.skips(&one, s) == Ok(true) {
             count.skipped_cheap += 1;
@@ -144,8 +175,9 @@ pub fn table(tori: &[super::CompareResult]) -> String {
          pixels above level 0 in them; corrected Euler's cheap test (from p_a, t0, ds) and the f32 corrected \
          Euler and Phong pixels above level 0 in the spans it skips; and, at the pictures' K_a = 0.08, \
          K_d = 0.75, K_s = 0.5, the pixels of skipped spans whose combined level changes when the specular \
-         term is dropped.\n\n\
-         | torus | s | spans | skipped (Phong's test) | f32 levels above 0 in them | skipped (cheap test) | f32 corrected Euler levels above 0 in them | f32 Phong levels above 0 in them | combined levels changed |\n|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
+         term is dropped. The float form (`skip::float`, `proofs/SkipFloat.v`) decides in f64 with the \
+         largest binary32 ieee allowance of the three methods with Phong's values.\n\n\
+         | torus | s | spans | skipped (Phong's test) | f32 levels above 0 in them | skipped (float form) | f32 levels above 0 in them | skipped (cheap test) | f32 corrected Euler levels above 0 in them | f32 Phong levels above 0 in them | combined levels changed |\n|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n",
     );
     let pct = |a: u64, b: u64| {
         if b == 0 {
@@ -158,10 +190,12 @@ pub fn table(tori: &[super::CompareResult]) -> String {
         let polygons = t.polygons;
         for (c, sh) in t.stats.skip.iter().zip(SKIP_SHININESS) {
             s += &format!(
-                "| {polygons} | {sh} | {} | {} | {} | {} | {} | {} | {} of {} pixels |\n",
+                "| {polygons} | {sh} | {} | {} | {} | {} | {} | {} | {} | {} | {} of {} pixels |\n",
                 c.spans,
                 pct(c.skipped, c.spans),
                 c.changed,
+                pct(c.skipped_float, c.spans),
+                c.changed_float,
                 pct(c.skipped_cheap, c.spans),
                 c.changed_cheap,
                 c.cheap_wrong_for_phong,

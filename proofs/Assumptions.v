@@ -8,6 +8,7 @@ From PhongApprox Require Import Span Duff Euler Derivative Symmetry Adaptive Ang
 From PhongApprox Require Import ClosedForms Angle FastSetup Related Float Graph ShaderSqrt.
 From PhongApprox Require Import PhongValue PhongCountD PhongCount PhongNormalize Profiles.
 From PhongApprox Require Import AdaptiveDelta DuffCount Fixed Composed Skip Squared.
+From PhongApprox Require Import SkipFloat.
 
 (** Span.v *)
 Check eq_2_p_is_linear.
@@ -386,3 +387,9 @@ Check sq_specular_odd.
 Print Assumptions sq_specular_odd.
 Check sq_nonneg_value.
 Print Assumptions sq_nonneg_value.
+
+(** SkipFloat.v *)
+Check float_skip_sound.
+Print Assumptions float_skip_sound.
+Check float_quadratic_skip_sound.
+Print Assumptions float_quadratic_skip_sound.

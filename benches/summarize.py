@@ -164,3 +164,16 @@ if os.path.isdir(base):
         col = LEVELS_OF.get(k, "")
         mean, mx = (f"{lv[col][0]:.3f}", str(lv[col][1])) if col in lv else ("", "")
         print(f"| {k} | " + " | ".join(cells) + f" | {rg} | {rs} | {mean} | {mx} | {col} |")
+
+base = os.path.join(root, "specular_span_f32")
+if os.path.isdir(base):
+    print("\n### The specular span, f32, s = 32 (benches/specular.rs): ns per span, set-up included\n")
+    rows = sorted(k for k in os.listdir(base) if k != "report")
+    ns = sorted({int(n) for k in rows for n in os.listdir(os.path.join(base, k)) if n.isdigit()})
+    print("| row | " + " | ".join(f"n = {n}" for n in ns) + " | " + " | ".join(f"÷ corrected Euler then power (n = {n})" for n in ns) + " |")
+    print("|---|" + "---:|" * (2 * len(ns)))
+    ref = {n: est(os.path.join(base, "corrected_euler_then_power", str(n))) for n in ns}
+    for k in rows:
+        t = {n: est(os.path.join(base, k, str(n))) for n in ns if os.path.isdir(os.path.join(base, k, str(n)))}
+        print(f"| {k} | " + " | ".join(f"{t[n]:.0f}" if n in t else "" for n in ns) + " | "
+              + " | ".join(f"{t[n] / ref[n]:.2f}" if n in t else "" for n in ns) + " |")

@@ -124,6 +124,14 @@ fn one_frame_skip_study() {
     }
     // At s = 128 most spans of a torus have no highlight.
     assert!(2 * st.skip[3].skipped > st.spans, "{:?}", st.skip[3]);
+    // The squared method's study counts the same pixels at every shininess.
+    let px = st.squared[0].pixels;
+    assert!(px > st.spans, "{:?}", st.squared);
+    for c in &st.squared {
+        assert_eq!(c.pixels, px);
+        assert!(c.differ.iter().all(|&d| d <= px), "{c:?}");
+    }
+    println!("{:?}", st.squared);
 }
 
 /// The longest span is the last length before the first error above one level.

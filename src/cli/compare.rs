@@ -141,7 +141,7 @@ pub fn run(a: &CompareArgs) -> Result<(), CliError> {
     }
     out.commit()?;
     outln!(
-        "\nWrote comparison.md, table2_extended.csv, precision.csv, longest_span.csv, grid.png and the highlight figures to {}",
+        "\nWrote comparison.md, table2_extended.csv, precision.csv, longest_span.csv, grid.png, the highlight figures and skip_map.png to {}",
         a.out.display()
     )?;
     Ok(())

@@ -46,9 +46,11 @@ pub use crate::raster::shader::Shader;
 
 mod rows;
 mod skip;
+mod squared;
 pub use rows::{runs_in, Direction, RowKernels};
 pub(crate) use rows::{shade_row, RowAt, RowInfo, TriangleSetup};
 pub use skip::{table as skip_table, SkipCount, SKIP_SHININESS};
+pub use squared::{table as squared_table, SquaredCount, SQUARED_METHODS, SQUARED_SHININESS};
 
 /// Every column of the comparison, the reference first: every span method of the
 /// catalogue ([`Method::ALL`], in its order), each followed by the polygon methods it
@@ -93,6 +95,9 @@ pub struct CompareStats {
     pub specular_delta: Vec<DeltaCount>,
     /// Per shininess of [`SKIP_SHININESS`]: the specular skip test (§7.1, question a).
     pub skip: Vec<SkipCount>,
+    /// Per shininess of [`SQUARED_SHININESS`], on the skip study's frames: corrected
+    /// Euler on `(N·H)²` against Phong (§7.1, question b).
+    pub squared: Vec<SquaredCount>,
     /// Rows dropped because some method could not shade them in this precision.
     pub dropped_rows: u64,
     /// Visible pixels.
@@ -120,6 +125,7 @@ impl CompareStats {
             specular: vec![vec![Deviation::default(); cols]; SHININESS.len()],
             specular_delta: vec![DeltaCount::default(); SHININESS.len()],
             skip: vec![SkipCount::default(); SKIP_SHININESS.len()],
+            squared: vec![SquaredCount::default(); SQUARED_SHININESS.len()],
             ..Default::default()
         }
     }
@@ -143,6 +149,9 @@ impl CompareStats {
             a.corrected_but_same += b.corrected_but_same;
         }
         for (a, b) in self.skip.iter_mut().zip(&o.skip) {
+            a.merge(b);
+        }
+        for (a, b) in self.squared.iter_mut().zip(&o.squared) {
             a.merge(b);
         }
         self.spans += o.spans;
@@ -194,6 +203,12 @@ pub struct CompareFrame {
     /// Per shader, per pixel: the picture level (only with
     /// [`CompareOptions::pictures`]; the reference is [`Shader::PhongPixel`]'s).
     pub picture: Vec<Vec<Option<u8>>>,
+    /// Per pixel, where the frame was drawn with [`CompareOptions::pictures`] and
+    /// [`CompareOptions::skip_study`]: from which shininess of [`SKIP_SHININESS`] on
+    /// Phong's exact skip test skips the pixel's span (`k + 1` for
+    /// `SKIP_SHININESS[k]`; `0` where it skips at none), `None` where no span was
+    /// decided (the background, a one-pixel row, an undecided span).
+    pub skip_map: Vec<Option<u8>>,
     /// The statistics.
     pub stats: CompareStats,
 }
@@ -235,6 +250,11 @@ pub fn render_compare(mesh: &Mesh, scene: &Scene, f: u32, opts: CompareOptions) 
         } else {
             Vec::new()
         },
+        skip_map: if opts.pictures && opts.skip_study {
+            vec![None; npix]
+        } else {
+            Vec::new()
+        },
         stats: st,
         out32: vec![Vec::new(); cols],
         out64: vec![Vec::new(); cols],
@@ -253,6 +273,7 @@ pub fn render_compare(mesh: &Mesh, scene: &Scene, f: u32, opts: CompareOptions) 
         width: w,
         height: h,
         picture: shading.picture,
+        skip_map: shading.skip_map,
         stats,
     }
 }
@@ -278,6 +299,8 @@ pub(crate) fn triangle_inputs(poly: &Polygon) -> TriangleInputs {
 struct CompareRow {
     levels: Vec<RowLevels>,
     picture: Vec<Vec<u8>>,
+    /// The row's code of [`CompareFrame::skip_map`].
+    skip: Option<u8>,
 }
 
 /// A triangle's centroid and its set-ups in `f32` and `f64`.
@@ -295,6 +318,7 @@ struct Comparison {
     /// Per channel (diffuse, then specular per shininess), per column, per pixel.
     levels: Vec<Vec<Vec<Option<u8>>>>,
     picture: Vec<Vec<Option<u8>>>,
+    skip_map: Vec<Option<u8>>,
     stats: CompareStats,
     out32: Vec<Vec<f32>>,
     out64: Vec<Vec<f64>>,
@@ -396,6 +420,7 @@ impl Shading for Comparison {
         let (out32, out64, spec32, spec64) = (&self.out32, &self.out64, &self.spec32, &self.spec64);
         let powers = &self.powers;
         let stats = &mut self.stats;
+        let mut skip_code = None;
         if n >= 1 {
             stats.spans += 1;
             stats.adaptive_gouraud += u64::from(d32.choice == Choice::Gouraud);
@@ -417,7 +442,8 @@ impl Shading for Comparison {
                 }
             }
             if let (true, Some(span)) = (self.opts.skip_study, &h32.span) {
-                skip::count_row(span, out32, spec32, &mut stats.skip);
+                skip_code = skip::count_row(span, out32, spec32, &mut stats.skip);
+                squared::count_row(span, spec32, &mut stats.squared);
             }
         }
         let mut picture = Vec::new();
@@ -440,7 +466,11 @@ impl Shading for Comparison {
                 );
             }
         }
-        Some(CompareRow { levels, picture })
+        Some(CompareRow {
+            levels,
+            picture,
+            skip: skip_code,
+        })
     }
 
     fn store(&mut self, r: &CompareRow, j: usize, pixel: usize) {
@@ -451,6 +481,9 @@ impl Shading for Comparison {
         }
         for (c, p) in r.picture.iter().enumerate() {
             self.picture[c][pixel] = Some(p[j]);
+        }
+        if let (Some(code), Some(m)) = (r.skip, self.skip_map.get_mut(pixel)) {
+            *m = Some(code);
         }
     }
 }

@@ -26,7 +26,7 @@ use std::fmt::Write as _;
 mod pictures;
 #[cfg(test)]
 use pictures::grid_legend;
-pub use pictures::{grid, picture_names, pictures};
+pub use pictures::{grid, picture_names, pictures, skip_figure, SKIP_MAP};
 
 mod tables;
 pub use tables::{precision_csv, spans_csv, table2_csv};
@@ -224,6 +224,7 @@ pub fn report_md(exp: &Experiment, pframes: u32, r: &Measured, secs: f64) -> Str
         .collect();
     s.push_str(&markdown(&head, &vec![Right; head.len()], &rows));
     let _ = writeln!(s, "\n{}", crate::studies::compare::skip_table(&r.tori));
+    let _ = writeln!(s, "\n{}", crate::studies::compare::squared_table(&r.tori));
     let _ = writeln!(
         s,
         "\n## Precision: the 800-polygon torus, {pframes} frames, every drawn pixel, mean / max deviation from \
@@ -367,6 +368,7 @@ mod tests {
                         SHININESS.len()
                     ],
                     skip: vec![Default::default(); 4],
+                    squared: vec![Default::default(); 3],
                     dropped_rows: 0,
                     pixels: 400,
                     frames: 1,
@@ -535,7 +537,8 @@ mod tests {
                 "fig4_corrected_euler_s50.png",
                 "fig5_phong_s50.png",
                 "fig4_corrected_euler_s200.png",
-                "fig5_phong_s200.png"
+                "fig5_phong_s200.png",
+                "skip_map.png"
             ]
         );
     }
@@ -549,6 +552,7 @@ mod tests {
             picture: (0..COLUMNS.len())
                 .map(|c| (0..w * h).map(|i| (i >= w).then_some(c as u8)).collect())
                 .collect(),
+            skip_map: Vec::new(),
             stats: CompareStats::default(),
         }
     }

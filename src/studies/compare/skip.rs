@@ -88,13 +88,16 @@ fn spec_level(v: f32, s: u32) -> u8 {
 
 /// Counts one row: `span` its half-vector span in `f32`, `diffuse` and `spec` the
 /// comparison's `f32` values per column (`N·L` and `N·H`), into `counts` (one per
-/// [`SKIP_SHININESS`]).
+/// [`SKIP_SHININESS`]). Returns the row's code of the skip map
+/// ([`super::CompareFrame::skip_map`]): `k + 1` for the first `SKIP_SHININESS[k]` at
+/// which Phong's exact test skips the span, `0` for none, `None` if undecided.
 pub(super) fn count_row(
     span: &Span<f32>,
     diffuse: &[Vec<f32>],
     spec: &[Vec<f32>],
     counts: &mut [SkipCount],
-) {
+) -> Option<u8> {
+    let mut code = None;
     let exact = exact(span);
     // The candidates once per span; the decisions per shininess and K_s.
     let phong = exact.as_ref().map(Candidates::phong);
@@ -124,7 +127,7 @@ pub(super) fn count_row(
     let ks_q = BigRational::from_float(ks).expect("finite");
     let col = |m: Method| index(Shader::Span(m));
     let len = span.n as usize + 1;
-    for (count, &s) in counts.iter_mut().zip(&SKIP_SHININESS) {
+    for (k, (count, &s)) in counts.iter_mut().zip(&SKIP_SHININESS).enumerate() {
         count.spans += 1;
         let (Some(Ok(phong)), Some(Ok(cheap))) = (&phong, &cheap) else {
             count.undecided += 1;
@@ -137,7 +140,11 @@ pub(super) fn count_row(
                 .filter(|&&v| spec_level(v, s) != 0)
                 .count() as u64
         };
+        code.get_or_insert(0);
         if phong.skips(&one, s) == Ok(true) {
+            if code == Some(0) {
+                code = Some(k as u8 + 1);
+            }
             count.skipped += 1;
             count.skipped_pixels += len as u64;
             count.changed += PHONG_VALUED.iter().map(|&m| nonzero(m)).sum::<u64>();
@@ -163,6 +170,7 @@ pub(super) fn count_row(
                 .count() as u64;
         }
     }
+    code
 }
 
 /// The skip section of the report: per torus and shininess, the spans skipped by

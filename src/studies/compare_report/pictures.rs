@@ -1,6 +1,7 @@
 //! The comparison's pictures: each torus's methods side by side in a labelled grid.
 
 use super::*;
+use crate::studies::compare::SKIP_SHININESS;
 
 /// The highlight figures [`pictures`] writes besides [`GRID`]: Figures 4 and 5
 /// (corrected Euler and Phong) at every shininess of [`SHININESS`].
@@ -10,7 +11,74 @@ pub fn picture_names() -> Vec<String> {
         .flat_map(|sv| {
             ["fig4_corrected_euler", "fig5_phong"].map(|name| format!("{name}_s{sv}.png"))
         })
+        .chain([SKIP_MAP.to_string()])
         .collect()
+}
+
+/// The map of skipped specular spans ([`skip_figure`]).
+pub const SKIP_MAP: &str = "skip_map.png";
+
+/// The skip map's colour of code `c` ([`CompareFrame::skip_map`]): warm where the
+/// specular pass must run at a high shininess, cool where it is skipped early.
+fn skip_colour(c: u8) -> image::Rgb<u8> {
+    const COLOURS: [[u8; 3]; 5] = [
+        [255, 214, 64], // shaded even at the largest shininess
+        [40, 70, 160],  // skipped from s = 1 on
+        [110, 80, 170], // from s = 8
+        [200, 70, 120], // from s = 32
+        [235, 120, 50], // from s = 128
+    ];
+    image::Rgb(COLOURS[usize::from(c).min(4)])
+}
+
+/// The labelled map of a frame's specular spans: each pixel coloured by the smallest
+/// shininess of [`SKIP_SHININESS`] from which Phong's exact test skips its span
+/// (`K_s = 1`), drawn at twice the frame's size; a legend of the five colours below,
+/// `title` above.
+pub fn skip_figure(frame: &CompareFrame, title: &[String]) -> RgbImage {
+    let (fw, fh) = (frame.width, frame.height);
+    let mut map = RgbImage::from_pixel(fw, fh, BACKGROUND);
+    for (idx, c) in frame.skip_map.iter().enumerate().take((fw * fh) as usize) {
+        if let Some(c) = c {
+            map.put_pixel(idx as u32 % fw, idx as u32 / fw, skip_colour(*c));
+        }
+    }
+    let (w, h) = (2 * fw, 2 * fh);
+    let map = image::imageops::resize(&map, w, h, image::imageops::FilterType::Nearest);
+    let mut labels = vec![format!(
+        "shaded at every s up to {}",
+        SKIP_SHININESS[SKIP_SHININESS.len() - 1]
+    )];
+    labels.extend(
+        SKIP_SHININESS
+            .iter()
+            .map(|s| format!("skipped from s = {s}")),
+    );
+    labels.push("dark: no span decided (a row of one pixel)".to_string());
+    let s = fitting_scale(w, &labels, |_| 0).min(2);
+    let line = text::text_height(s) + 2 * s;
+    let sw = 3 * text::ADVANCE * s;
+    let mut legend = RgbImage::from_pixel(w, 8 * s + line * labels.len() as u32, BACKGROUND);
+    for (k, label) in labels.iter().enumerate() {
+        let y = 4 * s + k as u32 * line;
+        let code = if k == 0 { 0 } else { k as u8 };
+        for yy in (y..y + text::text_height(s)).filter(|_| k < 5) {
+            for xx in 4 * s..(4 * s + sw).min(w) {
+                legend.put_pixel(xx, yy, skip_colour(code));
+            }
+        }
+        let room = w.saturating_sub(sw + 12 * s);
+        text::draw_text(
+            &mut legend,
+            i64::from(sw + 8 * s),
+            i64::from(y),
+            &text::fit(label, room, s),
+            INK,
+            s,
+        );
+    }
+    let top = text_strip(w, title, fitting_scale(w, title, |_| 0));
+    stack(&[&top, &map, &legend])
 }
 
 /// The labelled grid of `frame`: a title (`title`'s lines), then every shader of
@@ -98,10 +166,15 @@ pub fn pictures(exp: &Experiment, f: u32) -> Vec<(String, RgbImage)> {
             CompareOptions {
                 pictures: true,
                 shininess: k,
-                skip_study: false,
+                skip_study: *sv == 50,
             },
         );
         if *sv == 50 {
+            let title = [
+                format!("Specular spans skipped by Phong's exact test: 800-polygon torus, frame {f}, K_s = 1"),
+                "Colour: the smallest shininess s from which a span's specular pass is skipped (no pixel of it reaches level 1)".to_string(),
+            ];
+            out.push((SKIP_MAP.to_string(), skip_figure(&frame, &title)));
             let title = [
                 format!(
                     "Every method on the 800-polygon torus: frame {f}, {}×{} pixels, diffuse + specular (N·H)^{sv}",
@@ -123,4 +196,43 @@ pub fn pictures(exp: &Experiment, f: u32) -> Vec<(String, RgbImage)> {
         }
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The skip map colours each decided pixel by its code and leaves the rest the
+    /// background; the legend has a line per colour.
+    #[test]
+    fn the_skip_map_colours_each_code_and_has_a_legend() {
+        let (w, h) = (200u32, 20u32);
+        let frame = CompareFrame {
+            width: w,
+            height: h,
+            picture: Vec::new(),
+            skip_map: (0..w * h)
+                .map(|i| (i % 7 < 5).then_some((i % 7) as u8))
+                .collect(),
+            stats: crate::studies::compare::CompareStats::default(),
+        };
+        let title = ["title".to_string()];
+        let img = skip_figure(&frame, &title);
+        let top = text_strip(2 * w, &title, fitting_scale(2 * w, &title, |_| 0)).height();
+        for (x, want) in [
+            (0, Some(0)),
+            (3, Some(3)),
+            (4, Some(4)),
+            (5, None),
+            (6, None),
+        ] {
+            // Twice the size: pixel x of the frame is 2x and 2x + 1.
+            let got = *img.get_pixel(2 * x + 1, top + 1);
+            assert_eq!(got, want.map_or(BACKGROUND, skip_colour), "pixel {x}");
+        }
+        let colours: std::collections::HashSet<_> = (0..5).map(skip_colour).collect();
+        assert_eq!(colours.len(), 5);
+        assert_eq!(img.width(), 2 * w);
+        assert!(img.height() > top + 2 * h + 6 * text::text_height(1));
+    }
 }

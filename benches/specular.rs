@@ -7,7 +7,9 @@
 //!   skip saves: the specular pass of corrected Euler on `N·H` with the power;
 //! - **the squared method** (question b): `squared_corrected_euler` (root-free set-up,
 //!   two additions, `g^{s/2}`) against corrected Euler on `N·H` then the power, and
-//!   Duff then the power — each with its own set-up from the span's inputs.
+//!   Duff then the power — each with its own set-up from the span's inputs; and on
+//!   edge normals that are not unit (`_raw`, `_normalizing`: as interpolated along a
+//!   polygon's edges), where corrected Euler must normalize them first.
 //!
 //! Spans of n = 8 (the paper's polygon size, where the set-up decides) and n = 512
 //! (the inner loop). `cargo bench --bench specular`, then `python3
@@ -70,6 +72,40 @@ fn specular(c: &mut Criterion) {
                 })
             });
         }
+        // As a scan converter hands them over: edge normals interpolated along the
+        // polygon's edges, not unit. Corrected Euler normalizes them first (two roots,
+        // two divisions); the squared method takes them as they are.
+        let (ra, rb) = (na.map(|c| 0.9 * c), nb.map(|c| 1.1 * c));
+        g.bench_with_input(
+            BenchmarkId::new("corrected_euler_normalizing_then_power", n),
+            &n,
+            |b, &n| {
+                b.iter(|| {
+                    let unit = |v: [f32; 3]| {
+                        let l = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+                        v.map(|c| c / l)
+                    };
+                    let (a, bb) = (unit(black_box(ra)), unit(black_box(rb)));
+                    method_then_power(Method::CorrectedEuler, a, bb, black_box(h), n, &mut out)
+                })
+            },
+        );
+        g.bench_with_input(
+            BenchmarkId::new("squared_corrected_euler_raw", n),
+            &n,
+            |b, &n| {
+                b.iter(|| {
+                    let s = SquaredSpan::new(
+                        &v3(black_box(ra)),
+                        &v3(black_box(rb)),
+                        &v3(black_box(h)),
+                        n,
+                    )
+                    .expect("non-zero normals");
+                    s.specular(S, &mut out).expect("length")
+                })
+            },
+        );
         g.bench_with_input(
             BenchmarkId::new("squared_corrected_euler", n),
             &n,

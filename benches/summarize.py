@@ -176,4 +176,4 @@ if os.path.isdir(base):
     for k in rows:
         t = {n: est(os.path.join(base, k, str(n))) for n in ns if os.path.isdir(os.path.join(base, k, str(n)))}
         print(f"| {k} | " + " | ".join(f"{t[n]:.0f}" if n in t else "" for n in ns) + " | "
-              + " | ".join(f"{t[n] / ref[n]:.2f}" if n in t else "" for n in ns) + " |")
+              + " | ".join((f"{t[n] / ref[n]:.0f}" if t[n] / ref[n] >= 10 else f"{t[n] / ref[n]:.2f}") if n in t else "" for n in ns) + " |")

@@ -117,6 +117,50 @@ Lemma L_root A B C D E x :
   L A B C D E x = (A * D / 2 - B * C) * (x - tstar A B C D E).
 Proof. intros Hm. unfold L, tstar. field. intros H. apply Hm. lra. Qed.
 
+(** Every f(t), t ∈ [0, n], is at most f at 0, at n or at the root t* of L
+    strictly inside (where A·D/2 − B·C ≠ 0). *)
+Lemma f_cands A B C D E n t :
+  (forall x, 0 <= x <= n -> 0 < q C D E x) -> 0 <= t <= n ->
+  f A B C D E t <= f A B C D E 0 \/ f A B C D E t <= f A B C D E n \/
+  (A * D / 2 - B * C <> 0 /\ 0 < tstar A B C D E < n /\
+   f A B C D E t <= f A B C D E (tstar A B C D E)).
+Proof.
+  intros Hq Ht.
+  assert (Hsub : forall a b, 0 <= a -> b <= n -> forall x, a <= x <= b -> 0 < q C D E x)
+    by (intros a b Ha Hb x Hx; apply Hq; lra).
+  (* the ends, by the monotonicity on [t, n] or on [0, t] *)
+  assert (Up : (forall x, t <= x <= n -> 0 <= L A B C D E x) ->
+               f A B C D E t <= f A B C D E n)
+    by (intros HL; apply f_up; [lra | apply Hsub; lra | exact HL]).
+  assert (Down : (forall x, 0 <= x <= t -> L A B C D E x <= 0) ->
+                 f A B C D E t <= f A B C D E 0)
+    by (intros HL; apply f_down; [lra | apply Hsub; lra | exact HL]).
+  set (m := A * D / 2 - B * C) in *.
+  destruct (Req_dec m 0) as [Hm | Hm].
+  - (* L is constant *)
+    assert (HLc : forall x, L A B C D E x = A * E - B * D / 2)
+      by (intros x; unfold L; fold m; rewrite Hm; ring).
+    destruct (Rle_dec 0 (A * E - B * D / 2)) as [Hc | Hc].
+    + right; left. apply Up. intros x _. rewrite HLc. exact Hc.
+    + left. apply Down. intros x _. rewrite HLc. lra.
+  - set (ts := tstar A B C D E) in *.
+    assert (HL : forall x, L A B C D E x = m * (x - ts)) by (intros x; apply L_root, Hm).
+    destruct (Rlt_dec 0 m) as [Hmp | Hmn].
+    + (* L < 0 before t*, > 0 after: f has no interior maximum *)
+      destruct (Rle_dec ts t) as [Hts | Hts].
+      * right; left. apply Up. intros x Hx. rewrite HL. nra.
+      * left. apply Down. intros x Hx. rewrite HL. nra.
+    + destruct (Rle_dec ts 0) as [Hts0 | Hts0].
+      { left. apply Down. intros x Hx. rewrite HL. nra. }
+      destruct (Rle_dec n ts) as [Htsn | Htsn].
+      { right; left. apply Up. intros x Hx. rewrite HL. nra. }
+      (* L > 0 before t*, < 0 after: f is largest at t* *)
+      right; right. split; [exact Hm | split; [lra |]].
+      destruct (Rle_dec t ts) as [Htt | Htt].
+      * apply f_up; [lra | apply Hsub; lra |]. intros x Hx. rewrite HL. nra.
+      * apply f_down; [lra | apply Hsub; lra |]. intros x Hx. rewrite HL. nra.
+Qed.
+
 (** Every f(t), t ∈ [0, n], is at most f at a candidate that the decision
     tests. *)
 Lemma phong_dominated A B C D E n Ks s t :
@@ -125,44 +169,10 @@ Lemma phong_dominated A B C D E n Ks s t :
   exists c, 0 <= c <= n /\ ok A B C D E Ks s c /\ f A B C D E t <= f A B C D E c.
 Proof.
   intros Hq [H0 [Hn Hs]] Ht.
-  assert (Hsub : forall a b, 0 <= a -> b <= n -> forall x, a <= x <= b -> 0 < q C D E x)
-    by (intros a b Ha Hb x Hx; apply Hq; lra).
-  (* the end candidates, by the monotonicity on [t, n] or on [0, t] *)
-  assert (Up : (forall x, t <= x <= n -> 0 <= L A B C D E x) ->
-               exists c, 0 <= c <= n /\ ok A B C D E Ks s c /\
-                         f A B C D E t <= f A B C D E c).
-  { intros HL. exists n. split; [lra | split; [exact Hn |]].
-    apply f_up; [lra | apply Hsub; lra | exact HL]. }
-  assert (Down : (forall x, 0 <= x <= t -> L A B C D E x <= 0) ->
-                 exists c, 0 <= c <= n /\ ok A B C D E Ks s c /\
-                           f A B C D E t <= f A B C D E c).
-  { intros HL. exists 0. split; [lra | split; [exact H0 |]].
-    apply f_down; [lra | apply Hsub; lra | exact HL]. }
-  set (m := A * D / 2 - B * C) in *.
-  destruct (Req_dec m 0) as [Hm | Hm].
-  - (* L is constant *)
-    assert (HLc : forall x, L A B C D E x = A * E - B * D / 2)
-      by (intros x; unfold L; fold m; rewrite Hm; ring).
-    destruct (Rle_dec 0 (A * E - B * D / 2)) as [Hc | Hc].
-    + apply Up. intros x _. rewrite HLc. exact Hc.
-    + apply Down. intros x _. rewrite HLc. lra.
-  - set (ts := tstar A B C D E) in *.
-    assert (HL : forall x, L A B C D E x = m * (x - ts)) by (intros x; apply L_root, Hm).
-    destruct (Rlt_dec 0 m) as [Hmp | Hmn].
-    + (* L < 0 before t*, > 0 after: f has no interior maximum *)
-      destruct (Rle_dec ts t) as [Hts | Hts].
-      * apply Up. intros x Hx. rewrite HL. nra.
-      * apply Down. intros x Hx. rewrite HL. nra.
-    + assert (Hmn' : m < 0) by lra.
-      destruct (Rle_dec ts 0) as [Hts0 | Hts0].
-      { apply Down. intros x Hx. rewrite HL. nra. }
-      destruct (Rle_dec n ts) as [Htsn | Htsn].
-      { apply Up. intros x Hx. rewrite HL. nra. }
-      (* L > 0 before t*, < 0 after: f is largest at t* *)
-      exists ts. split; [lra | split; [apply Hs; split; [exact Hm | lra] |]].
-      destruct (Rle_dec t ts) as [Htt | Htt].
-      * apply f_up; [lra | apply Hsub; lra |]. intros x Hx. rewrite HL. nra.
-      * apply f_down; [lra | apply Hsub; lra |]. intros x Hx. rewrite HL. nra.
+  destruct (f_cands A B C D E n t Hq Ht) as [H | [H | (Hm & Hts & H)]].
+  - exists 0. split; [lra | split; [exact H0 | exact H]].
+  - exists n. split; [lra | split; [exact Hn | exact H]].
+  - exists (tstar A B C D E). split; [lra | split; [apply Hs; split; assumption | exact H]].
 Qed.
 
 (** At a candidate c that passes, every positive y ≤ f(c) has 255·Ks·y^s < 1:
@@ -242,15 +252,16 @@ Definition skip_quadratic (pa s0 ds n Ks : R) (s : nat) : Prop :=
   okv pa s0 ds Ks s 0 /\ okv pa s0 ds Ks s n /\
   (ds < 0 /\ 0 < tv s0 ds < n -> okv pa s0 ds Ks s (tv s0 ds)).
 
-(** Every v(t), t ∈ [0, n], is at most v at a tested candidate: for ds < 0,
-    v(t) = v(t_v) + ds/2·(t − t_v)², v(t) − v(0) = ds/2·t·(t − 2 t_v) and
-    v(t) − v(n) = ds/2·(t − n)·(t + n − 2 t_v); for ds ≥ 0, v is convex:
-    (n − t)·v(0) + t·v(n) − n·v(t) = ds/2·n·t·(n − t) ≥ 0. *)
-Lemma quadratic_dominated pa s0 ds n Ks s t :
-  skip_quadratic pa s0 ds n Ks s -> 0 <= t <= n ->
-  exists c, 0 <= c <= n /\ okv pa s0 ds Ks s c /\ v pa s0 ds t <= v pa s0 ds c.
+(** Every v(t), t ∈ [0, n], is at most v at 0, at n or, for ds < 0, at the
+    vertex t_v strictly inside: for ds < 0, v(t) = v(t_v) + ds/2·(t − t_v)²,
+    v(t) − v(0) = ds/2·t·(t − 2 t_v) and v(t) − v(n) = ds/2·(t − n)·(t + n − 2 t_v);
+    for ds ≥ 0, v is convex: (n − t)·v(0) + t·v(n) − n·v(t) = ds/2·n·t·(n − t) ≥ 0. *)
+Lemma v_cands pa s0 ds n t :
+  0 <= t <= n ->
+  v pa s0 ds t <= v pa s0 ds 0 \/ v pa s0 ds t <= v pa s0 ds n \/
+  (ds < 0 /\ 0 < tv s0 ds < n /\ v pa s0 ds t <= v pa s0 ds (tv s0 ds)).
 Proof.
-  intros [H0 [Hn Hv]] Ht.
+  intros Ht.
   destruct (Rlt_dec ds 0) as [Hds | Hds].
   - set (w := tv s0 ds) in *.
     assert (E0 : v pa s0 ds t - v pa s0 ds 0 = ds / 2 * t * (t - 2 * w))
@@ -260,12 +271,10 @@ Proof.
     assert (Ew : v pa s0 ds t - v pa s0 ds w = ds / 2 * (t - w) ^ 2)
       by (unfold w, tv, v; field; lra).
     destruct (Rle_dec w 0) as [Hw0 | Hw0].
-    { exists 0. split; [lra | split; [exact H0 |]].
-      assert (0 <= t * (t - 2 * w)) by nra. nra. }
+    { left. assert (0 <= t * (t - 2 * w)) by nra. nra. }
     destruct (Rle_dec n w) as [Hwn | Hwn].
-    { exists n. split; [lra | split; [exact Hn |]].
-      assert (0 <= (t - n) * (t + n - 2 * w)) by nra. nra. }
-    exists w. split; [lra | split; [apply Hv; lra |]].
+    { right; left. assert (0 <= (t - n) * (t + n - 2 * w)) by nra. nra. }
+    right; right. split; [exact Hds | split; [lra |]].
     assert (0 <= (t - w) ^ 2) by apply pow2_ge_0.
     assert (ds / 2 * (t - w) ^ 2 <= 0) by nra. lra.
   - assert (Hc : (n - t) * v pa s0 ds 0 + t * v pa s0 ds n - n * v pa s0 ds t
@@ -274,15 +283,24 @@ Proof.
     { assert (0 <= n * t * (n - t)) by (apply Rmult_le_pos; [apply Rmult_le_pos |]; lra).
       assert (0 <= ds / 2) by lra. nra. }
     destruct (Req_dec n 0) as [Hn0 | Hn0].
-    { exists 0. split; [lra | split; [exact H0 |]].
-      replace t with 0 by lra. lra. }
+    { left. replace t with 0 by lra. lra. }
     destruct (Rle_dec (v pa s0 ds 0) (v pa s0 ds n)) as [Hle | Hle].
-    + exists n. split; [lra | split; [exact Hn |]].
-      assert (n * v pa s0 ds t <= n * v pa s0 ds n) by nra.
+    + right; left. assert (n * v pa s0 ds t <= n * v pa s0 ds n) by nra.
       apply (Rmult_le_reg_l n); lra.
-    + exists 0. split; [lra | split; [exact H0 |]].
-      assert (n * v pa s0 ds t <= n * v pa s0 ds 0) by nra.
+    + left. assert (n * v pa s0 ds t <= n * v pa s0 ds 0) by nra.
       apply (Rmult_le_reg_l n); lra.
+Qed.
+
+(** Every v(t), t ∈ [0, n], is at most v at a tested candidate. *)
+Lemma quadratic_dominated pa s0 ds n Ks s t :
+  skip_quadratic pa s0 ds n Ks s -> 0 <= t <= n ->
+  exists c, 0 <= c <= n /\ okv pa s0 ds Ks s c /\ v pa s0 ds t <= v pa s0 ds c.
+Proof.
+  intros [H0 [Hn Hv]] Ht.
+  destruct (v_cands pa s0 ds n t Ht) as [H | [H | (Hds & Htv & H)]].
+  - exists 0. split; [lra | split; [exact H0 | exact H]].
+  - exists n. split; [lra | split; [exact Hn | exact H]].
+  - exists (tv s0 ds). split; [lra | split; [apply Hv; split; assumption | exact H]].
 Qed.
 
 Theorem quadratic_skip_sound : forall pa s0 ds n Ks s,

@@ -21,12 +21,13 @@
     - [phong_max] (Phong, Duff, symmetric Phong): the bound F of
       f(u) = p(u)/√q(u) on the segment N(u) = N_a + u (N_b − N_a), u ∈ [0, 1]
       ([seg_f]); [phong_max_sound]: f(u) <= F at every u ∈ [0, 1]. The largest f
-      is at 0, at 1 or at the root −L₀/L₁ of L ([f_cands]); where L₁'s interval
-      excludes 0, L₁ ≠ 0, so q = |N|² > 0 everywhere ([seg_q_pos]) and the root's
-      interval holds the root; elsewhere [0, 1] itself is a candidate.
+      is at 0, at 1 or at the root −L₀/L₁ of L (Skip.v's [f_cands]); where L₁'s
+      interval excludes 0, L₁ ≠ 0, so q = |N|² > 0 everywhere ([seg_q_pos]) and the
+      root's interval holds the root; elsewhere [0, 1] itself is a candidate.
     - [quadratic_max] (corrected Euler, Euler, Gouraud): the bound of
       v(t) = p_a + t s_0 + t (t − 1)/2 ds on [0, n] with the exact set-up values
-      [setup]; [quadratic_max_sound].
+      [setup], from the candidates 0, n and t_v (Skip.v's [v_cands]);
+      [quadratic_max_sound].
     - [below_one]: 255·K_s·(F + e)^s·(1 + u)^(2s+2) < 1 evaluated upward, the
       powers by repeated squaring ([pow_up]); [below_one_sound].
 
@@ -341,46 +342,6 @@ Proof.
   subst w0 w1 w2. rewrite EL. ring.
 Qed.
 
-(** Every f(t), t ∈ [0, 1], is at most f at 0, at 1 or at the root t* of L inside
-    (Skip.v's [phong_dominated] at n = 1, naming the candidate). *)
-Lemma f_cands A B C D E t :
-  (forall x, 0 <= x <= 1 -> 0 < q C D E x) -> 0 <= t <= 1 ->
-  f A B C D E t <= f A B C D E 0 \/ f A B C D E t <= f A B C D E 1 \/
-  (A * D / 2 - B * C <> 0 /\ 0 <= tstar A B C D E <= 1 /\
-   f A B C D E t <= f A B C D E (tstar A B C D E)).
-Proof.
-  intros Hq Ht.
-  assert (Hsub : forall a b, 0 <= a -> b <= 1 -> forall x, a <= x <= b -> 0 < q C D E x)
-    by (intros a b Ha Hb x Hx; apply Hq; lra).
-  assert (Up : (forall x, t <= x <= 1 -> 0 <= L A B C D E x) ->
-               f A B C D E t <= f A B C D E 1)
-    by (intros HL; apply f_up; [lra | apply Hsub; lra | exact HL]).
-  assert (Down : (forall x, 0 <= x <= t -> L A B C D E x <= 0) ->
-                 f A B C D E t <= f A B C D E 0)
-    by (intros HL; apply f_down; [lra | apply Hsub; lra | exact HL]).
-  set (m := A * D / 2 - B * C) in *.
-  destruct (Req_dec m 0) as [Hm | Hm].
-  - assert (HLc : forall x, L A B C D E x = A * E - B * D / 2)
-      by (intros x; unfold L; fold m; rewrite Hm; ring).
-    destruct (Rle_dec 0 (A * E - B * D / 2)) as [Hc | Hc].
-    + right; left. apply Up. intros x _. rewrite HLc. exact Hc.
-    + left. apply Down. intros x _. rewrite HLc. lra.
-  - set (ts := tstar A B C D E) in *.
-    assert (HL : forall x, L A B C D E x = m * (x - ts)) by (intros x; apply L_root, Hm).
-    destruct (Rlt_dec 0 m) as [Hmp | Hmn].
-    + destruct (Rle_dec ts t) as [Hts | Hts].
-      * right; left. apply Up. intros x Hx. rewrite HL. nra.
-      * left. apply Down. intros x Hx. rewrite HL. nra.
-    + destruct (Rle_dec ts 0) as [Hts0 | Hts0].
-      { left. apply Down. intros x Hx. rewrite HL. nra. }
-      destruct (Rle_dec 1 ts) as [Hts1 | Hts1].
-      { right; left. apply Up. intros x Hx. rewrite HL. nra. }
-      right; right. split; [exact Hm | split; [lra |]].
-      destruct (Rle_dec t ts) as [Htt | Htt].
-      * apply f_up; [lra | apply Hsub; lra |]. intros x Hx. rewrite HL. nra.
-      * apply f_down; [lra | apply Hsub; lra |]. intros x Hx. rewrite HL. nra.
-Qed.
-
 (** ** The quadratic recurrences: exact set-up *)
 
 Inductive Valued := Gouraud | Euler | CorrectedEuler.
@@ -411,43 +372,6 @@ Definition setup (w : Valued) (na nb l : V3 R) (n : R) : R * R * R :=
       let pn := pa + n * dia + tri n * ds in
       (pa, dia - (pn - pb) / n, ds)
   end.
-
-(** Every v(t), t ∈ [0, n], is at most v at 0, at n or at the vertex t_v when
-    ds < 0 (Skip.v's [quadratic_dominated], naming the candidate). *)
-Lemma v_cands pa s0 ds n t :
-  0 <= t <= n ->
-  v pa s0 ds t <= v pa s0 ds 0 \/ v pa s0 ds t <= v pa s0 ds n \/
-  (ds < 0 /\ 0 <= tv s0 ds <= n /\ v pa s0 ds t <= v pa s0 ds (tv s0 ds)).
-Proof.
-  intros Ht.
-  destruct (Rlt_dec ds 0) as [Hds | Hds].
-  - set (w := tv s0 ds) in *.
-    assert (E0 : v pa s0 ds t - v pa s0 ds 0 = ds / 2 * t * (t - 2 * w))
-      by (unfold w, tv, v; field; lra).
-    assert (En : v pa s0 ds t - v pa s0 ds n = ds / 2 * (t - n) * (t + n - 2 * w))
-      by (unfold w, tv, v; field; lra).
-    assert (Ew : v pa s0 ds t - v pa s0 ds w = ds / 2 * (t - w) ^ 2)
-      by (unfold w, tv, v; field; lra).
-    destruct (Rle_dec w 0) as [Hw0 | Hw0].
-    { left. assert (0 <= t * (t - 2 * w)) by nra. nra. }
-    destruct (Rle_dec n w) as [Hwn | Hwn].
-    { right; left. assert (0 <= (t - n) * (t + n - 2 * w)) by nra. nra. }
-    right; right. split; [exact Hds | split; [lra |]].
-    assert (0 <= (t - w) ^ 2) by apply pow2_ge_0.
-    assert (ds / 2 * (t - w) ^ 2 <= 0) by nra. lra.
-  - assert (Hc : (n - t) * v pa s0 ds 0 + t * v pa s0 ds n - n * v pa s0 ds t
-                 = ds / 2 * n * t * (n - t)) by (unfold v; field).
-    assert (Hpos : 0 <= ds / 2 * n * t * (n - t)).
-    { assert (0 <= n * t * (n - t)) by (apply Rmult_le_pos; [apply Rmult_le_pos |]; lra).
-      assert (0 <= ds / 2) by lra. nra. }
-    destruct (Req_dec n 0) as [Hn0 | Hn0].
-    { left. replace t with 0 by lra. lra. }
-    destruct (Rle_dec (v pa s0 ds 0) (v pa s0 ds n)) as [Hle | Hle].
-    + right; left. assert (n * v pa s0 ds t <= n * v pa s0 ds n) by nra.
-      apply (Rmult_le_reg_l n); lra.
-    + left. assert (n * v pa s0 ds t <= n * v pa s0 ds 0) by nra.
-      apply (Rmult_le_reg_l n); lra.
-Qed.
 
 (** ** The decisions, for any enclosing steps *)
 
@@ -572,15 +496,16 @@ Proof.
     assert (HL1 : A * D / 2 - B * C <> 0) by exact (excl0_mem l1 _ EL Hl1).
     assert (Hq : forall x, 0 < q C D E x) by (intros x; apply (seg_q_pos na nb h x HL1)).
     split; [apply Hq |].
-    destruct (f_cands A B C D E u (fun x _ => Hq x) Hu) as [H0 | [H1 | (_ & Hts & Hle)]].
+    destruct (f_cands A B C D E 1 u (fun x _ => Hq x) Hu) as [H0 | [H1 | (_ & Hts & Hle)]].
     + apply Rle_trans with (1 := H0), (proj2 (Hcand _ Hin0 0 (mem_pt 0))).
     + apply Rle_trans with (1 := H1), (proj2 (Hcand _ Hin1 1 (mem_pt 1))).
-    + assert (Hr : mem (tstar A B C D E) (idiv (isub (ipt 0) l0) l1)).
+    + assert (Hts' : 0 <= tstar A B C D E <= 1) by lra.
+      assert (Hr : mem (tstar A B C D E) (idiv (isub (ipt 0) l0) l1)).
       { replace (tstar A B C D E) with ((0 - (A * E - B * D * / 2)) / (A * D * / 2 - B * C))
           by (unfold tstar, Rdiv; ring).
         apply mem_div; [apply mem_sub; [apply mem_pt | exact Hl0] | exact Hl1 |].
         apply excl0_true, EL. }
-      destruct (mem_meet _ 0 1 _ Hr Hts) as [r [Hm Hmr]].
+      destruct (mem_meet _ 0 1 _ Hr Hts') as [r [Hm Hmr]].
       assert (Hinr : In r (phong_cands dn up l0 l1))
         by (unfold phong_cands; rewrite EL, Hm; right; right; left; reflexivity).
       apply Rle_trans with (1 := Hle), (proj2 (Hcand r Hinr _ Hmr)).
@@ -736,16 +661,17 @@ Proof.
     apply Rle_trans with (1 := H).
   - apply (Hc 0 (ipt 0)); [unfold quad_cands; left; reflexivity | apply mem_pt].
   - apply (Hc n (ipt n)); [unfold quad_cands; right; left; reflexivity | apply mem_pt].
-  - destruct (Rltb (hi DS) 0) eqn:E1.
+  - assert (Htv' : 0 <= tv s0 ds <= n) by lra.
+    destruct (Rltb (hi DS) 0) eqn:E1.
     + pose proof (Rltb_true _ _ E1) as E1'.
       assert (Hm : mem (tv s0 ds) (isub (ipt (/ 2)) (idiv S0 DS)))
         by (apply mem_sub; [apply mem_pt | apply mem_div; [exact Hs | exact Hd | right; exact E1']]).
-      destruct (mem_meet _ 0 (hi (ipt n)) _ Hm Htv) as [T [HT HmT]].
+      destruct (mem_meet _ 0 (hi (ipt n)) _ Hm Htv') as [T [HT HmT]].
       apply (Hc _ T); [| exact HmT].
       unfold quad_cands; cbv zeta. rewrite E1, HT. right; right; left; reflexivity.
     + assert (E2 : Rltb (lo DS) 0 = true)
         by (unfold Rltb; destruct (Rlt_dec (lo DS) 0); [reflexivity | destruct Hd; lra]).
-      apply (Hc _ (mkI 0 n)); [| exact Htv].
+      apply (Hc _ (mkI 0 n)); [| exact Htv'].
       unfold quad_cands; cbv zeta. rewrite E1, E2. right; right; left; reflexivity.
 Qed.
 

@@ -104,6 +104,20 @@ pub struct Span<T> {
     pub dp: T,
 }
 
+/// `n` in `1..=MAX_STEPS`, or the error that names it.
+pub(crate) fn check_steps(n: u32) -> Result<(), SpanError> {
+    if n == 0 {
+        return Err(SpanError::ZeroSteps);
+    }
+    if n > MAX_STEPS {
+        return Err(SpanError::TooManySteps {
+            max: MAX_STEPS,
+            got: n,
+        });
+    }
+    Ok(())
+}
+
 fn check_vector<T: Scalar>(v: &Vec3<T>, input: Input, tol: &T) -> Result<(), SpanError> {
     for (component, c) in v.components().into_iter().enumerate() {
         if !c.is_finite() {
@@ -190,15 +204,7 @@ impl<T: Scalar> Span<T> {
         check_vector(&na, Input::Na, tol)?;
         check_vector(&nb, Input::Nb, tol)?;
         check_vector(&l, Input::L, tol)?;
-        if n == 0 {
-            return Err(SpanError::ZeroSteps);
-        }
-        if n > MAX_STEPS {
-            return Err(SpanError::TooManySteps {
-                max: MAX_STEPS,
-                got: n,
-            });
-        }
+        check_steps(n)?;
         Ok(Self::setup(na, nb, l, n))
     }
 

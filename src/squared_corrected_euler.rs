@@ -28,7 +28,6 @@
 
 use crate::error::{Input, SpanError};
 use crate::scalar::{Real, Scalar};
-use crate::span::MAX_STEPS;
 use crate::vector::Vec3;
 
 /// The set-up of one span of the squared method, in the paper's notation with `g` for
@@ -75,7 +74,7 @@ impl<T: Scalar> SquaredSpan<T> {
     ///
     /// # Errors
     /// [`SpanError`] naming an input that is not finite or is zero (`H` may be zero:
-    /// then `g = 0`), or `n` outside `1..=MAX_STEPS`.
+    /// then `g = 0`), or `n` outside `1..=`[`crate::span::MAX_STEPS`].
     pub fn new(na: &Vec3<T>, nb: &Vec3<T>, h: &Vec3<T>, n: u32) -> Result<Self, SpanError> {
         check(na, Input::Na)?;
         check(nb, Input::Nb)?;
@@ -87,15 +86,7 @@ impl<T: Scalar> SquaredSpan<T> {
                 });
             }
         }
-        if n == 0 {
-            return Err(SpanError::ZeroSteps);
-        }
-        if n > MAX_STEPS {
-            return Err(SpanError::TooManySteps {
-                max: MAX_STEPS,
-                got: n,
-            });
-        }
+        crate::span::check_steps(n)?;
         let two = T::one() + T::one();
         let n_s = T::from_i64(i64::from(n));
         let k = nb.sub(na).div(&n_s);

@@ -74,7 +74,7 @@ impl<T: Scalar> SquaredSpan<T> {
     ///
     /// # Errors
     /// [`SpanError`] naming an input that is not finite or is zero (`H` may be zero:
-    /// then `g = 0`), or `n` outside `1..=`[`crate::span::MAX_STEPS`].
+    /// then `g = 0`), or `n` outside 1 to [`crate::span::MAX_STEPS`].
     pub fn new(na: &Vec3<T>, nb: &Vec3<T>, h: &Vec3<T>, n: u32) -> Result<Self, SpanError> {
         check(na, Input::Na)?;
         check(nb, Input::Nb)?;

@@ -148,7 +148,7 @@ fn cli_mpfr_agrees_with_exact() {
 /// its values agree with the exact rational run to 2^-200. Each operation errs by at
 /// most 2^-256 relative; the set-up's 40-odd operations and the loop's 2n ≤ 128
 /// additions act on magnitudes below 2^16 (unit inputs, `n ≤ 64` for these spans:
-/// `|g'| ≤ 4`, `|ds|`, `|ε|`, `|t_0|` and the values below `n²·4`), so the error stays
+/// `|g'| ≤ 8` (`2·|p|·|di|`, `|di| ≤ |A| + |D|/2 ≤ 4`), `|ds|`, `|ε|`, `|t_0|` and the values below `n²·4`), so the error stays
 /// below `2^-256·2^16·2^8`.
 #[test]
 fn the_squared_method_in_mpfr_agrees_with_exact() {

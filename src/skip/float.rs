@@ -44,19 +44,22 @@ struct I {
 }
 
 /// The interval of a result whose endpoints' candidates are `xs` (each rounded to
-/// nearest), each stepped one float outward; `None` where one is not finite.
+/// nearest), each stepped one float outward; `None` where one is not finite. (The
+/// smallest is stepped down once: `pred` is monotone, so `pred(min x) = min pred(x)`,
+/// the model of `proofs/SkipFloat.v`; likewise `succ` of the largest.)
 fn hull(xs: &[f64]) -> Option<I> {
-    let mut out = I {
-        lo: f64::INFINITY,
-        hi: f64::NEG_INFINITY,
-    };
+    let (mut lo, mut hi) = (f64::INFINITY, f64::NEG_INFINITY);
     for &x in xs {
         if !x.is_finite() {
             return None;
         }
-        out.lo = out.lo.min(x.next_down());
-        out.hi = out.hi.max(x.next_up());
+        lo = lo.min(x);
+        hi = hi.max(x);
     }
+    let out = I {
+        lo: lo.next_down(),
+        hi: hi.next_up(),
+    };
     (out.lo.is_finite() && out.hi.is_finite()).then_some(out)
 }
 

@@ -386,6 +386,27 @@ fn float_margin_holds(x: &Q, squared: bool, e: f64, u: f64, ks: f64, sh: u32) ->
     Q::from_integer(255.into()) * q(ks) * power(&(x + q(e)), sh) * m < Q::one()
 }
 
+/// The largest exact value of `m` over the pixels of `exact`, and whether it is
+/// Phong's squared (`max(0, p)²/q`, for the methods whose values are Phong's) or the
+/// method's own value.
+fn largest(m: Method, exact: &Span<Q>) -> (Q, bool) {
+    let squared = m.is_phong_valued();
+    let values: Vec<Q> = if squared {
+        (0..=exact.n)
+            .map(|i| {
+                let p = exact.p_at(i).max(Q::zero());
+                &p * &p / exact.q_at(i)
+            })
+            .collect()
+    } else {
+        m.values(exact).unwrap()
+    };
+    let top = values
+        .iter()
+        .fold(Q::zero(), |a, x| if *x > a { x.clone() } else { a });
+    (top, squared)
+}
+
 /// Where the float form skips a span for one of `methods`, every pixel's exact value
 /// `x` of the method on the float inputs satisfies
 /// `255·K_s·(max(0, x) + e)^s·(1 + u)^{2s+2} < 1` for the `ieee` allowance `e` in
@@ -403,24 +424,7 @@ fn float_form_against_rationals(methods: &[Method]) -> (u32, u32, u32) {
             let Some(margins) = Margins::ieee(m, &exact, Format::Binary32) else {
                 continue;
             };
-            let squared = m.is_phong_valued();
-            let values: Vec<Q> = if squared {
-                (0..=s.n)
-                    .map(|i| {
-                        let p = exact.p_at(i);
-                        if p > Q::zero() {
-                            &p * &p / exact.q_at(i)
-                        } else {
-                            Q::zero()
-                        }
-                    })
-                    .collect()
-            } else {
-                m.values(&exact).unwrap()
-            };
-            let top = values
-                .iter()
-                .fold(Q::zero(), |a, x| if *x > a { x.clone() } else { a });
+            let (top, squared) = largest(m, &exact);
             for sh in shininess() {
                 for ks in ks_floats() {
                     let zero = Margins {
@@ -494,20 +498,7 @@ fn the_float_form_is_sound_at_the_threshold() {
             continue;
         };
         for m in [Method::Phong, Method::CorrectedEuler, Method::Gouraud] {
-            let squared = m == Method::Phong;
-            let values: Vec<Q> = if squared {
-                (0..=s.n)
-                    .map(|i| {
-                        let p = exact.p_at(i).max(Q::zero());
-                        &p * &p / exact.q_at(i)
-                    })
-                    .collect()
-            } else {
-                m.values(&exact).unwrap()
-            };
-            let top = values
-                .iter()
-                .fold(Q::zero(), |a, x| if *x > a { x.clone() } else { a });
+            let (top, squared) = largest(m, &exact);
             let top_f = top.to_f64().unwrap();
             let top_f = if squared { top_f.sqrt() } else { top_f };
             let Some(ieee) = Margins::ieee(m, &exact, Format::Binary32) else {

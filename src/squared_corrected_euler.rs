@@ -157,15 +157,19 @@ impl<T: Scalar> SquaredSpan<T> {
         T: Real,
     {
         self.shade(out)?;
+        // The exponent's parity is the span's, not the pixel's: decided once.
+        let (half, odd) = (shininess / 2, !shininess.is_multiple_of(2));
         let mut p = self.b.clone();
         for g in out.iter_mut() {
-            let lit = p > T::zero() && *g > T::zero();
-            *g = if !lit {
-                T::zero()
-            } else if shininess.is_multiple_of(2) {
-                crate::specular::power(g, shininess / 2)
+            *g = if p > T::zero() && *g > T::zero() {
+                let even = crate::specular::power(g, half);
+                if odd {
+                    even * g.sqrt()
+                } else {
+                    even
+                }
             } else {
-                crate::specular::power(g, shininess / 2) * g.sqrt()
+                T::zero()
             };
             p.add_assign_ref(&self.a);
         }

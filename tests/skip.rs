@@ -82,17 +82,7 @@ fn between(n: u32) -> Vec<Q> {
 /// The spans the tests decide on: the edge and targeted spans (n ≤ 16; 1024 in the
 /// extensive tier) and seeded random ones.
 fn spans() -> Vec<Span<Q>> {
-    let mut spans: Vec<Span<Q>> = edge_cases()
-        .iter()
-        .chain(&targeted_cases())
-        .filter(|c| c.n <= tiered(16, 1024))
-        .filter_map(Case::span)
-        .collect();
-    let mut runner = proptest::test_runner::TestRunner::deterministic();
-    for _ in 0..tiered(16, 512) {
-        spans.extend(arb_case().new_tree(&mut runner).unwrap().current().span());
-    }
-    spans
+    sample_spans(tiered(16, 1024), tiered(16, 512))
 }
 
 /// `f(span, s, K_s)` for every span of [`spans`], shininess and `K_s`.

@@ -10,7 +10,6 @@ use num_traits::{One, Zero};
 use phong_approx::specular::power;
 use phong_approx::squared_corrected_euler::SquaredSpan;
 use phong_approx::{Scalar, Span, SpanError, Vec3};
-use proptest::strategy::{Strategy, ValueTree};
 
 /// `N_a`, `N_b`, `H` and `n`.
 type Inputs = (Vec3<Q>, Vec3<Q>, Vec3<Q>, u32);
@@ -19,16 +18,7 @@ type Inputs = (Vec3<Q>, Vec3<Q>, Vec3<Q>, u32);
 /// the extensive tier), and each again with its edge normals scaled by 3 and 1/2 (not
 /// unit: the method takes any length).
 fn inputs() -> Vec<Inputs> {
-    let mut spans: Vec<Span<Q>> = edge_cases()
-        .iter()
-        .chain(&targeted_cases())
-        .filter(|c| c.n <= tiered(16, 256))
-        .filter_map(Case::span)
-        .collect();
-    let mut runner = proptest::test_runner::TestRunner::deterministic();
-    for _ in 0..tiered(24, 400) {
-        spans.extend(arb_case().new_tree(&mut runner).unwrap().current().span());
-    }
+    let spans = sample_spans(tiered(16, 256), tiered(24, 400));
     let mut out = Vec::new();
     for s in spans {
         out.push((s.na.clone(), s.nb.clone(), s.l.clone(), s.n));

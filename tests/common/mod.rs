@@ -320,6 +320,24 @@ pub fn qi(i: u32) -> Q {
 /// has the same sign), `n = 2^k − 1`, `2^k` and `2^k + 1` (slopes just above, at and
 /// below a power of two), light along `N_a` or along the span, and the reproducer of
 /// the bound that was once false (`N_b = (192, 0, −9215)/9217`, `n = 4095`).
+/// The edge and targeted spans of at most `max_n` steps, then `random` seeded random
+/// ones ([`arb_case`], the same every run): a fixed sample for tests that decide
+/// every span exactly.
+pub fn sample_spans(max_n: u32, random: usize) -> Vec<Span<Q>> {
+    let mut spans: Vec<Span<Q>> = edge_cases()
+        .iter()
+        .chain(&targeted_cases())
+        .filter(|c| c.n <= max_n)
+        .filter_map(Case::span)
+        .collect();
+    let mut runner = TestRunner::deterministic();
+    for _ in 0..random {
+        use proptest::strategy::ValueTree;
+        spans.extend(arb_case().new_tree(&mut runner).unwrap().current().span());
+    }
+    spans
+}
+
 pub fn targeted_cases() -> Vec<Case> {
     let up = Stereo(0, 0, 1);
     let mut v = vec![Case {

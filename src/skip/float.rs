@@ -25,12 +25,16 @@
 //!   per-pixel error bound on the span, [`Margins::ieee`]) and the format's unit
 //!   roundoff `u`: the test passes when `255·K_s·(F + e)^s·(1 + u)^{2s+2} < 1`, all in
 //!   upward rounding. The last factor covers the implementation's own evaluation of
-//!   `255·K_s·v^s` — any evaluation within that relative error (`s − 1` rounded
-//!   products for the power, or a `pow` within 2 ulps, then `K_s` and `255`).
+//!   `255·K_s·v^s` — any evaluation within that relative error: `s − 1` rounded
+//!   products for the power, or (for `s ≥ 2`) a `pow` within 2 ulps, then `K_s` and
+//!   `255`, each rounding within `1 + u` while no result underflows.
 //!
-//! So a skip guarantees, at every pixel and for every value `v` within `e` of the
-//! method's exact value there, that `255·K_s·max(0, v)^s·(1 + u)^{2s+2} < 1`: the
-//! implementation's specular level is 0.
+//! What is proved (`float_skip_sound`): a skip guarantees, at every real point of the
+//! span and for every value `v` within `e` of the method's exact value there, that
+//! `255·K_s·max(0, v)^s·(1 + u)^{2s+2} < 1`. That `e` covers every `ieee`
+//! implementation is `check`'s bound (its own theorems); that the factor covers the
+//! implementation's power is the derivation above, not part of the theorem. Together:
+//! the implementation's specular level is 0.
 
 use super::{SkipError, MAX_SHININESS};
 use crate::reference::radical::Valued;

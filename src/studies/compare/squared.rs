@@ -111,7 +111,8 @@ pub fn table(tori: &[super::CompareResult]) -> String {
          Every span of every fourth frame (`SKIP_EVERY`), K_s = 1: the specular level of each f32 run — \
          the squared method (`squared_corrected_euler`, g^(s/2), no root), corrected Euler on N·H then \
          the power, Duff then the power — against Phong's value of the same span (p/√q on the f32 \
-         inputs, in f64): the pixels whose level differs, and the largest difference in levels.\n\n\
+         inputs, in f64; its level decided in f64, so a pixel within f64 rounding of a level boundary may count \
+         either way): the pixels whose level differs, and the largest difference in levels.\n\n\
          | torus | s | pixels |",
     );
     for m in SQUARED_METHODS {

@@ -387,6 +387,12 @@ Check sq_specular_odd.
 Print Assumptions sq_specular_odd.
 Check sq_nonneg_value.
 Print Assumptions sq_nonneg_value.
+Check sq_root_holder.
+Print Assumptions sq_root_holder.
+Check sq_root_lipschitz.
+Print Assumptions sq_root_lipschitz.
+Check sq_signed_value_error.
+Print Assumptions sq_signed_value_error.
 
 (** SkipFloat.v *)
 Check float_skip_sound.

@@ -22,7 +22,14 @@
     - [sq_specular_even], [sq_specular_odd]: the specular power of f from g:
       f^(2m) = g^m, and f^(2m+1) = g^m √g where p ≥ 0;
     - [sq_nonneg_value]: g ≥ 0 where q > 0, and √g = |p|/√q (the diffuse
-      term |N·L|/|N| per pixel is √g).
+      term |N·L|/|N| per pixel is √g);
+    - [sq_root_holder], [sq_root_lipschitz], [sq_signed_value_error]: the
+      error of the signed root sign(p)·√max(0, g), to bound a float
+      implementation's value sign(p̃)·fl(√max(0, g̃)) against the exact value:
+      |√max(0,x) − √max(0,y)| ≤ √|x − y| (Hölder) and ≤ |x − y|/√y for y > 0
+      (Lipschitz), turning the errors of g and p from the operation graphs
+      (Graph.v's [graph_sound]) and the root's rounding k·√x + eta into a
+      bound on the value, tight when the error of p is below |p|.
 
     Code: src/squared_corrected_euler.rs. *)
 
@@ -147,4 +154,121 @@ Proof.
   - apply pow2_ge_0.
   - rewrite <- Rsqr_pow2, sqrt_Rsqr_abs, Rabs_div by lra.
     rewrite (Rabs_pos_eq (sqrt _)) by lra. reflexivity.
+Qed.
+
+(** The root of max(0, x): the float code's √max(0, g̃). *)
+Definition sqp (x : R) : R := sqrt (Rmax 0 x).
+(** The sign of p times r: r, −r or 0. *)
+Definition sgnv (p r : R) : R := if Rlt_dec 0 p then r else if Rlt_dec p 0 then - r else 0.
+
+(** max(0, ·) is 1-Lipschitz. *)
+Lemma sq_rmax_lip : forall x y : R, Rabs (Rmax 0 x - Rmax 0 y) <= Rabs (x - y).
+Proof.
+  intros x y. apply Rabs_le.
+  pose proof (Rle_abs (x - y)). pose proof (Rle_abs (- (x - y))).
+  rewrite Rabs_Ropp in *.
+  unfold Rmax; destruct (Rle_dec 0 x), (Rle_dec 0 y); split; lra.
+Qed.
+
+(** √a − √b ≤ √(a − b) for 0 ≤ b ≤ a. *)
+Lemma sq_sqrt_diff : forall a b : R, 0 <= b <= a ->
+  sqrt a - sqrt b <= sqrt (a - b).
+Proof.
+  intros a b [Hb Hab].
+  assert (Ha : 0 <= a) by lra.
+  pose proof (sqrt_le_1_alt b a Hab).
+  pose proof (sqrt_pos b). pose proof (sqrt_sqrt a Ha). pose proof (sqrt_sqrt b Hb).
+  apply Rsqr_incr_0_var; [| apply sqrt_pos].
+  unfold Rsqr. rewrite sqrt_sqrt by lra. nra.
+Qed.
+
+(* Note: Any x, y. *)
+(** The root of max(0, ·) is 1/2-Hölder: |√max(0,x) − √max(0,y)| ≤ √|x − y|. *)
+Theorem sq_root_holder : forall x y : R, Rabs (sqp x - sqp y) <= sqrt (Rabs (x - y)).
+Proof.
+  intros x y. unfold sqp.
+  pose proof (sq_rmax_lip x y) as Hl.
+  assert (Hx : 0 <= Rmax 0 x) by apply Rmax_l.
+  assert (Hy : 0 <= Rmax 0 y) by apply Rmax_l.
+  destruct (Rle_dec (Rmax 0 y) (Rmax 0 x)) as [Hle | Hle].
+  - pose proof (sqrt_le_1_alt _ _ Hle).
+    rewrite Rabs_pos_eq by lra.
+    eapply Rle_trans; [apply sq_sqrt_diff; lra |].
+    apply sqrt_le_1_alt. rewrite Rabs_pos_eq in Hl by lra. exact Hl.
+  - assert (Hle' : Rmax 0 x <= Rmax 0 y) by lra.
+    pose proof (sqrt_le_1_alt _ _ Hle').
+    rewrite Rabs_minus_sym, Rabs_pos_eq by lra.
+    eapply Rle_trans; [apply sq_sqrt_diff; lra |].
+    apply sqrt_le_1_alt. rewrite Rabs_minus_sym, Rabs_pos_eq in Hl by lra. exact Hl.
+Qed.
+
+(* Note: Any x, y > 0. *)
+(** Away from 0 it is Lipschitz: |√max(0,x) − √y| ≤ |x − y|/√y. *)
+Theorem sq_root_lipschitz : forall x y : R, 0 < y -> Rabs (sqp x - sqp y) <= Rabs (x - y) / sqrt y.
+Proof.
+  intros x y Hy. unfold sqp.
+  pose proof (sq_rmax_lip x y).
+  rewrite (Rmax_right 0 y) in * by lra.
+  set (a := Rmax 0 x) in *.
+  assert (Ha : 0 <= a) by apply Rmax_l.
+  pose proof (sqrt_lt_R0 y Hy). pose proof (sqrt_pos a).
+  pose proof (sqrt_sqrt a Ha). pose proof (sqrt_sqrt y (Rlt_le _ _ Hy)).
+  assert (He : sqrt a - sqrt y = (a - y) / (sqrt a + sqrt y)).
+  { replace (a - y) with ((sqrt a - sqrt y) * (sqrt a + sqrt y)) by nra.
+    field. lra. }
+  rewrite He, Rabs_div, (Rabs_pos_eq (sqrt a + sqrt y)) by lra.
+  apply Rle_trans with (Rabs (a - y) / sqrt y).
+  - unfold Rdiv. apply Rmult_le_compat_l; [apply Rabs_pos |].
+    apply Rinv_le_contravar; lra.
+  - unfold Rdiv. apply Rmult_le_compat_r; [| exact H].
+    left. apply Rinv_0_lt_compat. lra.
+Qed.
+
+(* Note: Any g, g̃, p, p̃ with |g̃ − g| ≤ e, |p̃ − p| ≤ ep,
+   |√max(0,g̃) − √max(0,g)| ≤ R (e.g. √e, or e/√g for g > 0, from the two
+   theorems above), a root r̃ within k·√max(0,g̃) + eta of √max(0,g̃), k ≥ 0. *)
+(** The signed value's error: R + k (√max(0,g) + R) + eta when ep < |p| (p̃
+    has p's sign), and (1 + k)(√max(0,g) + R) + √max(0,g) + eta always. *)
+Theorem sq_signed_value_error : forall (g gt p pt e ep R k eta rt : R),
+  Rabs (gt - g) <= e -> Rabs (pt - p) <= ep ->
+  Rabs (sqp gt - sqp g) <= R ->
+  Rabs (rt - sqp gt) <= k * sqp gt + eta -> 0 <= k ->
+  (ep < Rabs p -> Rabs (sgnv pt rt - sgnv p (sqp g)) <= R + k * (sqp g + R) + eta) /\
+  Rabs (sgnv pt rt - sgnv p (sqp g)) <= (1 + k) * (sqp g + R) + sqp g + eta.
+Proof.
+  intros g gt p pt e ep R k eta rt _ Hp HR Hr Hk.
+  assert (Hs : 0 <= sqp g) by apply sqrt_pos.
+  assert (Hst : 0 <= sqp gt) by apply sqrt_pos.
+  assert (Hgt : sqp gt <= sqp g + R) by
+    (pose proof (Rle_abs (sqp gt - sqp g)); lra).
+  assert (HkR : k * sqp gt <= k * (sqp g + R)) by (apply Rmult_le_compat_l; lra).
+  assert (Hrt : Rabs rt <= (1 + k) * (sqp g + R) + eta).
+  { pose proof (Rabs_triang_inv rt (sqp gt)). rewrite (Rabs_pos_eq (sqp gt)) in * by lra.
+    lra. }
+  assert (Hd : Rabs (rt - sqp g) <= R + k * (sqp g + R) + eta).
+  { replace (rt - sqp g) with ((rt - sqp gt) + (sqp gt - sqp g)) by ring.
+    pose proof (Rabs_triang (rt - sqp gt) (sqp gt - sqp g)). lra. }
+  split.
+  - intros Hep. unfold sgnv.
+    pose proof (Rle_abs (pt - p)). pose proof (Rle_abs (- (pt - p))).
+    rewrite Rabs_Ropp in *.
+    destruct (Rle_dec 0 p) as [Hp0 | Hp0].
+    + rewrite Rabs_pos_eq in Hep by lra.
+      destruct (Rlt_dec 0 pt); [| lra]. destruct (Rlt_dec 0 p); [exact Hd | lra].
+    + rewrite Rabs_left in Hep by lra.
+      destruct (Rlt_dec 0 pt); [lra |]. destruct (Rlt_dec pt 0); [| lra].
+      destruct (Rlt_dec 0 p); [lra |]. destruct (Rlt_dec p 0); [| lra].
+      replace (- rt - - sqp g) with (- (rt - sqp g)) by ring.
+      rewrite Rabs_Ropp. exact Hd.
+  - assert (H1 : Rabs (sgnv pt rt) <= Rabs rt).
+    { unfold sgnv. destruct (Rlt_dec 0 pt); [lra |].
+      destruct (Rlt_dec pt 0); [rewrite Rabs_Ropp; lra |].
+      rewrite Rabs_R0. apply Rabs_pos. }
+    assert (H2 : Rabs (sgnv p (sqp g)) <= sqp g).
+    { unfold sgnv. destruct (Rlt_dec 0 p).
+      - rewrite Rabs_pos_eq by lra. lra.
+      - destruct (Rlt_dec p 0); [rewrite Rabs_Ropp, Rabs_pos_eq by lra; lra |].
+        rewrite Rabs_R0. lra. }
+    pose proof (Rabs_triang (sgnv pt rt) (- sgnv p (sqp g))).
+    rewrite Rabs_Ropp in *. unfold Rminus. lra.
 Qed.

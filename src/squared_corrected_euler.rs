@@ -56,6 +56,40 @@ pub struct SquaredSpan<T> {
     pub t0: T,
 }
 
+/// The catalogue's value of the squared method on `span` (its `l` the light or the
+/// half vector): `v_i = sign(p_i)·√max(0, g_i)`, with `g_i` from
+/// [`SquaredSpan::shade`] (two additions per pixel) and `p_i` from its own
+/// recurrence `p_{i+1} = p_i + A`, `p_0 = B` (a third); `0` where `p_i = 0`. At the
+/// ends of a span of unit edge normals it is `p_a` and `p_b`, Phong's values
+/// (`sq_starts_at_ga`, `sq_ends_at_gb`, `sq_nonneg_value`). Its specular value
+/// `max(0, v_i)^s` is `g_i^{s/2}` where `p_i > 0` ([`SquaredSpan::specular`] computes
+/// it without the root for even `s`). One square root per pixel: the cost a
+/// diffuse use has (module documentation).
+///
+/// # Errors
+/// As [`SquaredSpan::of`]; [`SpanError::OutputLength`] if `out.len() ≠ n + 1`;
+/// [`SpanError::NotFiniteValue`] where a float value overflows.
+pub fn shade<T: Real>(span: &crate::Span<T>, out: &mut [T]) -> Result<(), SpanError> {
+    span.check_output(out)?;
+    let sq = SquaredSpan::of(span)?;
+    sq.shade(out)?;
+    let mut p = sq.b.clone();
+    for v in out.iter_mut() {
+        *v = if *v > T::zero() && p != T::zero() {
+            let r = v.sqrt();
+            if p > T::zero() {
+                r
+            } else {
+                T::zero() - r
+            }
+        } else {
+            T::zero()
+        };
+        p.add_assign_ref(&sq.a);
+    }
+    span.check_finite(out)
+}
+
 fn check<T: Scalar>(v: &Vec3<T>, input: Input) -> Result<(), SpanError> {
     for (component, c) in v.components().into_iter().enumerate() {
         if !c.is_finite() {

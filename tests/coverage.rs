@@ -195,6 +195,7 @@ fn every_bound_kind_is_used_by_a_row() {
     let float = |b: &FloatBound| match b {
         FloatBound::Proved(_) => "float Proved",
         FloatBound::Composed { .. } => "float Composed",
+        FloatBound::Graphs { .. } => "float Graphs",
         FloatBound::None(_) => "float None",
     };
     let form = |f: &DerivedForm| match f {
@@ -212,6 +213,7 @@ fn every_bound_kind_is_used_by_a_row() {
     let all = [
         "float Proved",
         "float Composed",
+        "float Graphs",
         "float None",
         "form PerPixel",
         "form Ratio",
@@ -224,6 +226,7 @@ fn every_bound_kind_is_used_by_a_row() {
         // Every variant of `tolerance::profile::Status` is some method's label.
         "status Proved",
         "status PerPixel",
+        "status Graphs",
     ];
     let mut used = BTreeSet::new();
     for m in Method::ALL {
@@ -250,6 +253,11 @@ fn every_bound_kind_is_used_by_a_row() {
                     assert!(!graphs.is_empty(), "{m} under {p}");
                     assert!(!t.is_empty(), "{m} under {p}");
                     used.insert("status PerPixel");
+                }
+                Some(Status::Graphs(t, graphs)) => {
+                    assert!(!graphs.is_empty(), "{m} under {p}");
+                    assert!(!t.is_empty(), "{m} under {p}");
+                    used.insert("status Graphs");
                 }
                 None => {}
             }

@@ -19,6 +19,11 @@ use crate::BigRational;
 /// writes them beside the sets; embedded at build (tested: `tests/conformance/`).
 pub const SHA256SUMS: &str = include_str!("../../vectors/SHA256SUMS");
 
+/// The digests of the sets published before (format 1.2.0,
+/// `vectors/SHA256SUMS-1.2.0`): still trusted, so a file a user took from an earlier
+/// release is judged as it was (it has no expectations of the methods added since).
+pub const PREVIOUS_SHA256SUMS: &str = include_str!("../../vectors/SHA256SUMS-1.2.0");
+
 /// The published sets and their digests, `(set, SHA-256)`, read from [`SHA256SUMS`].
 pub fn published() -> impl Iterator<Item = (&'static str, &'static str)> {
     SHA256SUMS.lines().filter_map(|line| {
@@ -66,9 +71,15 @@ pub fn sha256_hex(bytes: &[u8]) -> String {
         .collect()
 }
 
-/// The published set whose file has this digest, if any.
+/// The published set whose file has this digest, if any: of the current sets
+/// ([`SHA256SUMS`]) or of an earlier format ([`PREVIOUS_SHA256SUMS`]).
 pub fn published_set(digest: &str) -> Option<&'static str> {
+    let previous = PREVIOUS_SHA256SUMS.lines().filter_map(|line| {
+        let (digest, file) = line.split_once("  ")?;
+        Some((file.strip_suffix(".json")?, digest))
+    });
     published()
+        .chain(previous)
         .find(|(_, d)| d.eq_ignore_ascii_case(digest))
         .map(|(s, _)| s)
 }

@@ -30,7 +30,7 @@ pub use twins::{inputs_csv, to_csv};
 pub const MAX_CASE_STEPS: u32 = 65_536;
 
 /// Version of the vector format (semantic: a major change breaks readers).
-pub const FORMAT_VERSION: &str = "1.2.0";
+pub const FORMAT_VERSION: &str = "1.3.0";
 
 /// Significant digits of the expected values.
 pub const DIGITS: usize = 30;

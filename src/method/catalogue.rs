@@ -121,6 +121,11 @@ pub enum Bound {
     /// A bound that reads the whole span (`sin Ω`): the related methods', each its
     /// own derivation ([`crate::tolerance::related`]).
     WholeSpan(WholeSpan),
+    /// The `ieee` bound of the method's operation graphs on the case's own inputs
+    /// (this crate's run is one `ieee` implementation: round to nearest, its own
+    /// order): no formula in `n` and `q_min`, so only with the span's shape, and
+    /// `n ≤ 4096` (`crate::tolerance::graphs::MAX_GRAPH_STEPS`).
+    Graphs,
 }
 
 /// Which whole-span derivation bounds a related method (`docs/float.md` §16).

@@ -172,6 +172,17 @@ const ANGLE_PROFILES: ProfileBounds = ProfileBounds {
     fixed: NO_FIXED,
     graphs: &[],
 };
+// The squared method (docs/float.md §19.4): its graph alone under `ieee` and
+// `shader`, the value's root and sign composed by `sq_signed_value_error`.
+const SQUARED_PROFILES: ProfileBounds = ProfileBounds {
+    reference: None,
+    float: FloatBound::Graphs {
+        theorem: "sq_signed_value_error",
+        section: "docs/float.md §19.4",
+    },
+    fixed: NO_FIXED,
+    graphs: &["recurrence"],
+};
 const RELATED_PROFILES: ProfileBounds = ProfileBounds {
     reference: None,
     float: FloatBound::None("their bounds follow this crate's own evaluation (docs/float.md §16)"),
@@ -326,6 +337,28 @@ methods! {
             picks: Some([Method::Gouraud, Method::CorrectedEuler]),
             closed_form: None,
             profiles: ADAPTIVE_PROFILES,
+        },
+    }
+    /// [`crate::squared_corrected_euler`]: corrected Euler on `g = (N·L)²/|N|²`, the
+    /// paper's open question (§7.1, b); the value `sign(p)·√max(0, g)`.
+    SquaredCorrectedEuler {
+        run: real |span, _prep, out| crate::squared_corrected_euler::shade(span, out).map(|()| None),
+        info: {
+            name: "squared-corrected-euler",
+            label: "squared corrected Euler",
+            source: HBB,
+            equations: "§7.1 (b), eqs. 15–17 on g",
+            module: "squared_corrected_euler",
+            phong_pixels: Ends,
+            reconstructed: false,
+            family: Paper,
+            exact_cost: 16,
+            range: Diffuse,
+            float_section: "§19.4",
+            bound: Bound::Graphs,
+            picks: None,
+            closed_form: None,
+            profiles: SQUARED_PROFILES,
         },
     }
     /// [`crate::angular`]: cosine of the linearly interpolated angle (second source).

@@ -42,6 +42,17 @@ pub enum FloatBound {
         /// Its form: [`DerivedForm::Ratio`] or [`DerivedForm::HalfRatio`].
         form: DerivedForm,
     },
+    /// Per pixel from the method's operation graphs alone (`proofs/Graph.v`,
+    /// `graph_sound`, on the case's own inputs), the value's last step composed by a
+    /// theorem: no formula in `n` and `q_min`, so a case the graphs do not bound (a
+    /// span past `tolerance::graphs::MAX_GRAPH_STEPS`, a divisor that may vanish) has
+    /// no bound.
+    Graphs {
+        /// The composing theorem (`sq_signed_value_error`).
+        theorem: &'static str,
+        /// The section that derives the composition (`docs/float.md §19.4`).
+        section: &'static str,
+    },
     /// No bound: why.
     None(&'static str),
 }

@@ -92,6 +92,10 @@ pub(super) fn error_bound_status(
             Profile::Reference => match (r.method.info().profiles.reference, format) {
                 (Some([b32, _]), Format::Binary32) if r.n <= 4096 => Status::Proved(b32),
                 (Some([_, b64]), Format::Binary64) if r.n <= 4096 => Status::Proved(b64),
+                // The `ieee` graphs' bound (this crate's run is an `ieee` one).
+                _ if r.method.info().bound == crate::method::Bound::Graphs => {
+                    status(r.method, Profile::Ieee, format)?
+                }
                 _ => {
                     return Some(format!(
                         "derived (docs/float.md {})",

@@ -7,9 +7,11 @@
 //! (an implementation computes one of them); each graph's bound is `graph_sound`'s
 //! (`proofs/Graph.v`). Inputs: `N_a` (0–2), `N_b` (3–5), `L` (6–8).
 
-use super::graph::{evaluate, Bounds, Graph, GraphError, Id, Model};
+use super::graph::{evaluate, Graph, GraphError, Id, Model};
 use super::profile::Form;
 use crate::Method;
+
+mod squared;
 
 /// One form of a method: its graph and the node of each pixel's value.
 #[derive(Clone, Debug)]
@@ -25,6 +27,10 @@ pub struct MethodGraph {
     /// The set-up's nodes by the paper's names (`A`, `B`, `C`, `D`, `E`, `p_a`, `p_b`,
     /// `dq_b`, `di_a`, `ds`, `t0`, `dp`): what a test plants a bug in.
     pub setup: Vec<(&'static str, Id)>,
+    /// The squared method's `p_i` nodes, `i = 0..=n`: its value is then
+    /// `sign(p_i)·√max(0, g_i)` with `g_i` the pixel's node, composed outside the
+    /// graph ([`pixel_bounds`], `sq_signed_value_error`); `None` for the others.
+    pub signs: Option<Vec<Id>>,
 }
 
 /// The set-up's nodes, in the paper's names.
@@ -47,6 +53,9 @@ struct Setup {
     t0: Id,
     dp: Id,
 }
+
+/// A form's pixels' nodes (per way) and, for the squared method, its signs' nodes.
+type Built = (Vec<Vec<Id>>, Option<Vec<Id>>);
 
 /// The paper's set-up (`Span::new`'s formulas and order): every division by `n` either
 /// way, the halvings of `p_a` and `p_b` in the class `Half`, `p_n`'s three terms in any
@@ -237,10 +246,10 @@ pub fn for_each_graph<E>(
     model: &Model,
     mut f: impl FnMut(MethodGraph) -> Result<(), E>,
 ) -> Result<Option<()>, E> {
-    let mut add = |name: &str, build: &dyn Fn(&mut Graph, &Setup) -> Vec<Vec<Id>>| {
+    let make = |name: &str, build: &dyn Fn(&mut Graph, &Setup) -> Built| {
         let mut g = Graph::new();
         let s = setup(&mut g, n);
-        let pixels = build(&mut g, &s);
+        let (pixels, signs) = build(&mut g, &s);
         let setup = vec![
             ("A", s.a),
             ("B", s.b),
@@ -255,12 +264,16 @@ pub fn for_each_graph<E>(
             ("t0", s.t0),
             ("dp", s.dp),
         ];
-        f(MethodGraph {
+        MethodGraph {
             name: name.to_string(),
             graph: g,
             pixels,
             setup,
-        })
+            signs,
+        }
+    };
+    let mut add = |name: &str, build: &dyn Fn(&mut Graph, &Setup) -> Vec<Vec<Id>>| {
+        f(make(name, &|g, s| (build(g, s), None)))
     };
     // The forms' names are the catalogue's (`Info::profiles.graphs`), in its order.
     let names = method.info().profiles.graphs;
@@ -296,6 +309,13 @@ pub fn for_each_graph<E>(
             for &pq in names {
                 add(pq, &|g, s| phong(g, model, s, n, pq))?;
             }
+        }
+        Method::SquaredCorrectedEuler if form == Form::Any => {
+            drop(add);
+            f(make(names[0], &|g, s| {
+                let (values, signs) = squared::squared(g, s, n);
+                (vec![values], Some(signs))
+            }))?;
         }
         _ => return Ok(None),
     }
@@ -429,10 +449,16 @@ pub fn pixel_bounds(
     }
     let mut worst = vec![0f64; n as usize + 1];
     let found = for_each_graph(method, form, n, model, |f| {
-        let Bounds { err, .. } = evaluate(&f.graph, inputs, model)?;
+        let b = evaluate(&f.graph, inputs, model)?;
         for way in &f.pixels {
-            for (w, &p) in worst.iter_mut().zip(way) {
-                *w = w.max(err[p]);
+            for (i, (w, &p)) in worst.iter_mut().zip(way).enumerate() {
+                let e = match &f.signs {
+                    // The squared method's value, composed from `g_i` and `p_i`.
+                    Some(signs) => squared::signed_root(&b, p, signs[i], model)
+                        .ok_or(GraphError::Overflow { node: p })?,
+                    None => b.err[p],
+                };
+                *w = w.max(e);
             }
         }
         Ok(())

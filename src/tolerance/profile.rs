@@ -191,6 +191,10 @@ pub enum Status {
     /// `tolerance::graphs`, `proofs/Graph.v`'s `graph_sound`): the `ieee` and `shader`
     /// bounds of the methods whose catalogue row has graphs.
     PerPixel(&'static str, &'static [&'static str]),
+    /// The bound of the method's operation graphs alone (their names), per pixel,
+    /// composed with the value's last step by a theorem (its name): the squared
+    /// method's `sign(p)·√max(0, g)` (`sq_signed_value_error`).
+    Graphs(&'static str, &'static [&'static str]),
 }
 
 impl Status {
@@ -203,13 +207,18 @@ impl Status {
                 if graphs.len() == 1 { "graph" } else { "graphs" },
                 graphs.join(", ")
             ),
+            Status::Graphs(t, graphs) => format!(
+                "proved (graph_sound on the {} {}, composed by {t})",
+                if graphs.len() == 1 { "graph" } else { "graphs" },
+                graphs.join(", ")
+            ),
         }
     }
 
     /// The theorem named first.
     pub fn theorem(&self) -> &'static str {
         match *self {
-            Status::Proved(t) | Status::PerPixel(t, _) => t,
+            Status::Proved(t) | Status::PerPixel(t, _) | Status::Graphs(t, _) => t,
         }
     }
 }
@@ -255,6 +264,10 @@ pub fn status(method: crate::Method, profile: Profile, format: Format) -> Option
         FloatBound::Composed { theorems, .. } => {
             arith(profile, format).map(|_| per_pixel(theorems[0]))
         }
+        // The graphs alone, where the profile has a model.
+        FloatBound::Graphs { theorem, .. } => (!row.graphs.is_empty())
+            .then(|| arith(profile, format).map(|_| Status::Graphs(theorem, row.graphs)))
+            .flatten(),
         FloatBound::None(_) => None,
     }
 }
@@ -337,7 +350,8 @@ fn bound_with(
     status(method, profile, format)?;
     match method.info().profiles.float {
         FloatBound::Proved(_) => proved_bound_in(method, profile, form, n, format),
-        FloatBound::None(_) => None,
+        // No formula in n and q_min: per case only (`tolerance::graphs`).
+        FloatBound::Graphs { .. } | FloatBound::None(_) => None,
         FloatBound::Composed { form, .. } => {
             let a = arith(profile, format)?;
             match form {

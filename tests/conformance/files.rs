@@ -261,3 +261,59 @@ fn published_digests_are_those_of_the_committed_files() {
         "ba7816bf8f01cfea414140de5dae2223b00361a396177a9cb410ff61f20015ad"
     );
 }
+
+/// The sets of format 1.2.0 stay trusted (`vectors/SHA256SUMS-1.2.0`), and format
+/// 1.3.0 only added the squared method: the committed files with its expectations and
+/// its name taken out of their text, and the old version, are the 1.2.0 files byte
+/// for byte (their digests), so no other expectation changed. (On the text: a file
+/// read and written again may print a `q_min` one digit differently.)
+#[test]
+fn the_1_2_0_sets_are_the_current_ones_without_the_squared_method() {
+    use phong_approx::conformance::integrity::{published_set, sha256_hex, PREVIOUS_SHA256SUMS};
+    let previous: Vec<(&str, &str)> = PREVIOUS_SHA256SUMS
+        .lines()
+        .filter_map(|l| l.split_once("  "))
+        .collect();
+    assert_eq!(previous.len(), SETS.len());
+    for (digest, file) in previous {
+        let set = file.strip_suffix(".json").unwrap();
+        assert_eq!(published_set(digest), Some(set), "{file} is still trusted");
+        let text = std::fs::read_to_string(root().join(format!("vectors/{file}"))).unwrap();
+        let mut old = String::new();
+        let mut skip_to: Option<String> = None;
+        let (mut blocks, mut names) = (0, 0);
+        for line in text.lines() {
+            if let Some(end) = &skip_to {
+                if line == format!("{end},") || line == *end {
+                    skip_to = None;
+                }
+                continue;
+            }
+            let trimmed = line.trim_start();
+            let indent = &line[..line.len() - trimmed.len()];
+            if trimmed == "\"squared-corrected-euler\": {" {
+                skip_to = Some(format!("{indent}}}"));
+                blocks += 1;
+                continue;
+            }
+            if trimmed == "\"squared-corrected-euler\"," {
+                names += 1;
+                continue;
+            }
+            if trimmed == "\"version\": \"1.3.0\"," {
+                old += &format!("{indent}\"version\": \"1.2.0\",\n");
+                continue;
+            }
+            old += line;
+            old += "\n";
+        }
+        let cases = committed(set).cases.len();
+        let speculars = committed(set)
+            .cases
+            .iter()
+            .filter(|c| c.specular.is_some())
+            .count();
+        assert_eq!((names, blocks), (1, cases + speculars), "{set}");
+        assert_eq!(sha256_hex(old.as_bytes()), digest, "{set}");
+    }
+}

@@ -64,6 +64,14 @@ fn markdown(st: &Status) -> String {
                 graphs.join(", ")
             )
         }
+        Status::Graphs(t, graphs) => {
+            let graphs: Vec<String> = graphs.iter().map(|g| format!("`{g}`")).collect();
+            format!(
+                "proved (`graph_sound` on the {} {}, composed by `{t}`)",
+                if graphs.len() == 1 { "graph" } else { "graphs" },
+                graphs.join(", ")
+            )
+        }
     }
 }
 
@@ -82,7 +90,12 @@ pub fn formula(method: crate::Method, profile: Profile, format: Format) -> Optio
             None => format!("from n and q_min ({section})"),
         });
     }
+    if let FloatBound::Graphs { section, .. } = method.info().profiles.float {
+        status(method, profile, format)?;
+        return Some(format!("per pixel from the case's own inputs ({section})"));
+    }
     match status(method, profile, format)? {
+        Status::Graphs(..) => None,
         Status::Proved(_) | Status::PerPixel(..) => {
             let mut forms: Vec<String> = proved(method, profile, format)?
                 .iter()
@@ -120,7 +133,11 @@ pub fn ieee_table() -> String {
             continue;
         };
         let at = |n: u32, q: f64, format: Format| {
-            profile_bound(m, Profile::Ieee, n, q, format).map_or("none".to_string(), |b| {
+            let none = match status(m, Profile::Ieee, format) {
+                Some(Status::Graphs(..)) => "per case",
+                _ => "none",
+            };
+            profile_bound(m, Profile::Ieee, n, q, format).map_or(none.to_string(), |b| {
                 // In units of u, rounded up to 4 significant digits.
                 let x = b / format.u();
                 let d = (3 - x.log10().floor() as i32).max(0) as usize;

@@ -191,7 +191,7 @@ pub fn reference_bound(
         }
         // The related methods (§16).
         Bound::WholeSpan(form) => related::of(form, shape?, u),
-        // The squared method (§19.4): its `ieee` graphs on the case.
+        // The squared method (§19.7): its `ieee` graphs on the case.
         Bound::Graphs => {
             let format = [crate::Format::Binary32, crate::Format::Binary64]
                 .into_iter()

@@ -6,7 +6,7 @@
 //! on unit and non-unit edge normals. Theorems: `proofs/Squared.v`.
 
 use super::common::*;
-use num_traits::{One, Zero};
+use num_traits::{One, Signed, Zero};
 use phong_approx::specular::power;
 use phong_approx::squared_corrected_euler::SquaredSpan;
 use phong_approx::{Scalar, Span, SpanError, Vec3};
@@ -270,4 +270,100 @@ fn squared_errors_are_typed() {
         s.shade(&mut short),
         Err(SpanError::OutputLength { .. })
     ));
+}
+
+/// Rationals whose roots are known: `(x, √max(0, x))` for `x = ±r²`, `r` small
+/// fractions (seeded, deterministic), and 0.
+fn rooted() -> Vec<(Q, Q)> {
+    let mut seed = 0x9e37_79b9_u64;
+    let mut next = |m: u64| {
+        seed = seed.wrapping_mul(6_364_136_223_846_793_005).wrapping_add(1);
+        (seed >> 33) % m
+    };
+    let mut out = vec![(Q::zero(), Q::zero())];
+    for _ in 0..60 {
+        let r = q(next(40) as i64, 1 + next(12) as i64);
+        let x = &r * &r;
+        if next(4) == 0 {
+            out.push((-x, Q::zero()));
+        } else {
+            out.push((x, r));
+        }
+    }
+    out
+}
+
+/// `|a| ≤ √b` for rationals, exactly (`a² ≤ b`).
+fn within_root(a: &Q, b: &Q) -> bool {
+    a * a <= *b
+}
+
+/// `sq_root_holder` (proofs/Squared.v): `|√max(0, x) − √max(0, y)| ≤ √|x − y|`, exactly
+/// on rationals with known roots (squared: `(√x⁺ − √y⁺)² ≤ |x − y|`).
+#[test]
+fn sq_root_holder() {
+    let xs = rooted();
+    for (x, rx) in &xs {
+        for (y, ry) in &xs {
+            let d = (x - y).abs();
+            assert!(within_root(&(rx - ry), &d), "x = {x}, y = {y}");
+        }
+    }
+}
+
+/// `sq_root_lipschitz` (proofs/Squared.v): for `y > 0`,
+/// `|√max(0, x) − √y| ≤ |x − y|/√y`, exactly (times `√y`, which is known).
+#[test]
+fn sq_root_lipschitz() {
+    let xs = rooted();
+    for (x, rx) in &xs {
+        for (y, ry) in xs.iter().filter(|(y, _)| *y > Q::zero()) {
+            assert!((rx - ry).abs() * ry <= (x - y).abs(), "x = {x}, y = {y}");
+        }
+    }
+}
+
+/// `sgnv p r` of proofs/Squared.v: `r` where `p > 0`, `−r` where `p < 0`, else 0.
+fn sgnv(p: &Q, r: &Q) -> Q {
+    if *p > Q::zero() {
+        r.clone()
+    } else if *p < Q::zero() {
+        -r.clone()
+    } else {
+        Q::zero()
+    }
+}
+
+/// `sq_signed_value_error` (proofs/Squared.v): a computed value `sgnv(p̃, r̃)` against
+/// the exact `sgnv(p, √max(0, g))`, with `e`, `e_p` the errors of `g̃`, `p̃`, `R` the
+/// root's error and `r̃` within `k·√max(0, g̃) + η` of `√max(0, g̃)`: both
+/// conclusions, exactly, over rooted `g`, `g̃`, signs of `p` and `p̃` on either side of
+/// zero and the root's rounding at its extremes.
+#[test]
+fn sq_signed_value_error() {
+    let xs = rooted();
+    let (k, eta) = (q(1, 64), q(1, 1000));
+    let ps = [q(-3, 10), q(-1, 100), Q::zero(), q(1, 100), q(2, 5)];
+    for (g, rg) in xs.iter().step_by(3) {
+        for (gt, rgt) in xs.iter().step_by(5) {
+            let r = (rgt - rg).abs();
+            for rt in [
+                rgt.clone(),
+                rgt * (Q::one() + &k) + &eta,
+                rgt * (Q::one() - &k) - &eta,
+            ] {
+                for p in &ps {
+                    for pt in &ps {
+                        let ep = (pt - p).abs();
+                        let err = (sgnv(pt, &rt) - sgnv(p, rg)).abs();
+                        if ep < p.abs() {
+                            assert!(err <= &r + &k * (rg + &r) + &eta, "kept sign");
+                        }
+                        let all = (Q::one() + &k) * (rg + &r) + rg + &eta;
+                        assert!(err <= all, "g = {g}, g̃ = {gt}, p = {p}, p̃ = {pt}");
+                    }
+                }
+            }
+        }
+    }
 }

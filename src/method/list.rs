@@ -172,13 +172,13 @@ const ANGLE_PROFILES: ProfileBounds = ProfileBounds {
     fixed: NO_FIXED,
     graphs: &[],
 };
-// The squared method (docs/float.md §19.4): its graph alone under `ieee` and
+// The squared method (docs/float.md §19.7): its graph alone under `ieee` and
 // `shader`, the value's root and sign composed by `sq_signed_value_error`.
 const SQUARED_PROFILES: ProfileBounds = ProfileBounds {
     reference: None,
     float: FloatBound::Graphs {
         theorem: "sq_signed_value_error",
-        section: "docs/float.md §19.4",
+        section: "docs/float.md §19.7",
     },
     fixed: NO_FIXED,
     graphs: &["recurrence"],
@@ -354,7 +354,7 @@ methods! {
             family: Paper,
             exact_cost: 16,
             range: Diffuse,
-            float_section: "§19.4",
+            float_section: "§19.7",
             bound: Bound::Graphs,
             picks: None,
             closed_form: None,

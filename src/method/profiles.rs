@@ -50,7 +50,7 @@ pub enum FloatBound {
     Graphs {
         /// The composing theorem (`sq_signed_value_error`).
         theorem: &'static str,
-        /// The section that derives the composition (`docs/float.md §19.4`).
+        /// The section that derives the composition (`docs/float.md §19.7`).
         section: &'static str,
     },
     /// No bound: why.

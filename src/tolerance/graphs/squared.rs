@@ -1,4 +1,4 @@
-//! The squared method's graph and its value's last step (`docs/float.md` §19.4): the
+//! The squared method's graph and its value's last step (`docs/float.md` §19.7): the
 //! set-up of [`crate::squared_corrected_euler::SquaredSpan::new`] in its order (each
 //! dot product in any order, `/n` either way), `g += t; t += ds` from `g_a`, and
 //! `p += A` from `B`; the value `sign(p̃)·√max(0, g̃)` is composed from the graph's
@@ -46,7 +46,7 @@ pub(super) fn squared(g: &mut Graph, s: &Setup, n: u32) -> (Vec<Id>, Vec<Id>) {
 /// computed `max(0, g̃)`): `|fl(√x) − √x| ≤ k·√x + η`. One square root: `k = κ·u`. As
 /// `1/inverseSqrt(x)` (the model's `sqrt_is_recip_rsqrt`): `inverseSqrt` within
 /// `κ_r·u/√x + η`, `η·√x ≤ 3η` for `x ≤ 9`, then the division's `κ_d·u`, so
-/// `k = (κ_d·u + κ_r·u + 3η)/(1 − κ_r·u − 3η)` (docs/float.md §19.4); both with the
+/// `k = (κ_d·u + κ_r·u + 3η)/(1 − κ_r·u − 3η)` (docs/float.md §19.7); both with the
 /// last operation's `η`.
 fn root_rounding(model: &Model) -> (f64, f64) {
     let up = f64::next_up;

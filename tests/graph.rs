@@ -101,7 +101,7 @@ fn exact(method: Method, c: Option<&Case>, s: &Span<Q>) -> Vec<Q> {
 
 /// `graph_sound` (`proofs/Graph.v`): every native `ieee` implementation of this binary
 /// (Gouraud, corrected Euler and Euler as recurrences and closed forms, Duff, Phong's
-/// three forms; three orders of the dot products, fused or not, `/n` either way), in
+/// three forms, the squared method; three orders of the dot products, fused or not, `/n` either way), in
 /// `f32` and `f64`, is within the graphs' bound at every pixel of the profile spans and
 /// of every published case up to n = 64 (256 in the extensive tier); and the
 /// software GPUs under `shader`.
@@ -139,7 +139,7 @@ fn graph_sound() {
             native_runs!(f64, Binary64);
         }
         for &g in &GPUS[..tiered(1, 4)] {
-            let gpu_imps: [(Method, &GpuRun); 5] = [
+            let gpu_imps: [(Method, &GpuRun); 7] = [
                 (Method::Gouraud, &|g, s| {
                     gpu_recurrence(Method::Gouraud, g, Division::Reciprocal, s)
                 }),
@@ -152,6 +152,12 @@ fn graph_sound() {
                 }),
                 (Method::Phong, &|g, s| {
                     gpu_duff_or_phong(g, s, true, Division::Once)
+                }),
+                (Method::SquaredCorrectedEuler, &|g, s| {
+                    gpu_squared(g, s, Division::Once)
+                }),
+                (Method::SquaredCorrectedEuler, &|g, s| {
+                    gpu_squared(g, s, Division::Reciprocal)
                 }),
             ];
             for (m, imp) in gpu_imps {
@@ -509,7 +515,8 @@ fn graph_certificates_satisfy_the_theorems_rules() {
 
 /// The catalogue's `graphs` fact is what `tolerance::graphs` writes: a method has
 /// operation graphs exactly where its row names them, under those names, so its label
-/// names `graph_sound` and its graphs (`tolerance::profile::Status::PerPixel`) exactly
+/// names `graph_sound` and its graphs (`tolerance::profile::Status::PerPixel`, or
+/// `Status::Graphs` where they are its only bound) exactly
 /// where `check` applies them.
 #[test]
 fn the_catalogue_names_the_methods_with_graphs() {
@@ -537,7 +544,7 @@ fn the_catalogue_names_the_methods_with_graphs() {
         for profile in [Profile::Ieee, Profile::Shader] {
             if let Some(st) = status(method, profile, Format::Binary32) {
                 assert_eq!(
-                    matches!(st, Status::PerPixel(_, g) if g == names),
+                    matches!(st, Status::PerPixel(_, g) | Status::Graphs(_, g) if g == names),
                     has,
                     "{method} {profile}"
                 );

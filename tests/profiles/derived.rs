@@ -511,3 +511,50 @@ fn the_gpu_square_root_is_within_the_profile() {
 }
 
 // ------------------------------------------- the crate's fast kernels under ieee
+
+/// The squared method on the GPU model: its set-up (`SquaredSpan::new`'s order, every
+/// division 2.5 ulps, `/n` as `how` says, products fused where `g` fuses), the loops
+/// `g += t; t += ds` and `p += A`, then `sign(p)·√max(0, g)` with the shader's root
+/// (`1/inverseSqrt`).
+pub(crate) fn gpu_squared(g: Gpu, s: &Span<Q>, how: Division) -> Vec<Q> {
+    let vec = |x: &phong_approx::Vec3<Q>| [g.input(&x.x), g.input(&x.y), g.input(&x.z)];
+    let (na, nb, l) = (vec(&s.na), vec(&s.nb), vec(&s.l));
+    let (nf, two) = (qi(s.n), q(2, 1));
+    let k = [0, 1, 2].map(|j| g.over(how, &g.sub(&nb[j], &na[j]), &nf, false));
+    let a = g.dot(&k, &l);
+    let b = g.dot(&na, &l);
+    let c = g.dot(&k, &k);
+    let d = g.mul(&two, &g.dot(&k, &na));
+    let e = g.dot(&na, &na);
+    let pb = g.dot(&nb, &l);
+    let qb = g.dot(&nb, &nb);
+    let dqb = g.add(&g.mul(&g.mul(&two, &nf), &c), &d);
+    let ga = g.div(&g.mul(&b, &b), &e);
+    let gb = g.div(&g.mul(&pb, &pb), &qb);
+    let slope = |p: &Q, qq: &Q, dq: &Q| {
+        let two_aq = g.mul(&g.mul(&two, &a), qq);
+        let inner = g.fms(p, dq, &two_aq);
+        g.div(&g.mul(p, &inner), &g.mul(qq, qq))
+    };
+    let (dga, dgb) = (slope(&b, &e, &d), slope(&pb, &qb, &dqb));
+    let ds = g.over(how, &g.sub(&dgb, &dga), &nf, false);
+    let tri = qi(s.n) * qi(s.n.saturating_sub(1)) / q(2, 1);
+    let gn = g.add(&g.add(&ga, &g.mul(&nf, &dga)), &g.mul(&tri, &ds));
+    let t0 = g.sub(&dga, &g.over(how, &g.sub(&gn, &gb), &nf, false));
+    let (mut gv, mut t, mut p) = (ga, t0, b);
+    let mut out = Vec::with_capacity(s.n as usize + 1);
+    for _ in 0..=s.n {
+        let r = g.sqrt(&gv);
+        out.push(if p.is_positive() {
+            r
+        } else if p.is_negative() {
+            -r
+        } else {
+            Q::zero()
+        });
+        gv = g.add(&gv, &t);
+        t = g.add(&t, &ds);
+        p = g.add(&p, &a);
+    }
+    out
+}

@@ -43,7 +43,7 @@ pub(crate) fn spans() -> Vec<(Case, Span<Q>)> {
 
 /// A native float type for the `ieee` variants.
 pub(crate) trait Native:
-    Copy + std::ops::Add<Output = Self> + std::ops::Sub<Output = Self>
+    Copy + PartialOrd + std::ops::Add<Output = Self> + std::ops::Sub<Output = Self>
 {
     fn of(x: &Q) -> Self;
     fn q(self) -> Q;
@@ -475,4 +475,63 @@ fn profile_ieee_euler_closed_binary64_large() {
         Method::Euler,
         true,
     );
+}
+
+/// The squared method (`squared_corrected_euler`) as a native implementation: its
+/// set-up in the variant's orders (fused where a product feeds an addition), the loops
+/// `g += t; t += ds` and `p += A`, then `sign(p)·√max(0, g)` with one rounded root.
+pub(crate) fn squared<T: Native>(v: Variant, s: &Span<Q>) -> Vec<Q> {
+    let vec = |x: &phong_approx::Vec3<Q>| [T::of(&x.x), T::of(&x.y), T::of(&x.z)];
+    let (na, nb, l) = (vec(&s.na), vec(&s.nb), vec(&s.l));
+    let (zero, two) = (T::from_u32(0), T::from_u32(2));
+    let nf = T::from_u32(s.n);
+    let inv = T::from_u32(1).div(nf);
+    let over_n = |x: T| if v.reciprocal { x.mul(inv) } else { x.div(nf) };
+    let k = [0, 1, 2].map(|j| over_n(nb[j] - na[j]));
+    let a = dot(v.dot, k, l);
+    let b = dot(v.dot, na, l);
+    let c = dot(v.dot, k, k);
+    let d = two.mul(dot(v.dot, k, na));
+    let e = dot(v.dot, na, na);
+    let pb = dot(v.dot, nb, l);
+    let qb = dot(v.dot, nb, nb);
+    let dqb = two.mul(nf).mul(c) + d;
+    let ga = b.mul(b).div(e);
+    let gb = pb.mul(pb).div(qb);
+    // g′ = p·(2A·q − p·q′)/(q·q); fused: fma(−p, q′, 2A·q).
+    let slope = |p: T, q: T, dq: T| {
+        let two_aq = two.mul(a).mul(q);
+        let inner = if v.fused {
+            (zero - p).fma(dq, two_aq)
+        } else {
+            two_aq - p.mul(dq)
+        };
+        p.mul(inner).div(q.mul(q))
+    };
+    let (dga, dgb) = (slope(b, e, d), slope(pb, qb, dqb));
+    let ds = over_n(dgb - dga);
+    let tri = T::from_u32(s.n).mul(T::from_u32(s.n - 1)).div(two);
+    let gn = if v.fused {
+        tri.fma(ds, nf.fma(dga, ga))
+    } else {
+        ga + (nf.mul(dga) + tri.mul(ds))
+    };
+    let t0 = dga - over_n(gn - gb);
+    let (mut g, mut t, mut p) = (ga, t0, b);
+    let mut out = Vec::with_capacity(s.n as usize + 1);
+    for _ in 0..=s.n {
+        let r = if g > zero { g.sqrt() } else { zero };
+        let value = if p > zero {
+            r
+        } else if p < zero {
+            zero - r
+        } else {
+            zero
+        };
+        out.push(value.q());
+        g = g + t;
+        t = t + ds;
+        p = p + a;
+    }
+    out
 }

@@ -193,12 +193,18 @@ pub(crate) fn implementations<T: Native + 'static>() -> Vec<Imp<T>> {
             |v, s| phong::<T>(PhongForm::NormalizeThenDot, v, s),
             P,
         ),
+        (
+            Method::SquaredCorrectedEuler,
+            "g += t; t += ds; sign(p)·√g",
+            squared::<T>,
+            P,
+        ),
     ]
 }
 
 /// Every implementation of this file — Gouraud, corrected Euler (recurrence and closed
 /// form), Euler (recurrence and closed form), Duff, Phong (Horner, per-pixel normal,
-/// normalize-then-dot), each in three variants (orders, `mul_add`, reciprocals) —
+/// normalize-then-dot), the squared method, each in three variants (orders, `mul_add`, reciprocals) —
 /// passes `check` under `ieee` on every published set, in `f32` and `f64`, through
 /// the test kit (the path a user's `cargo test` takes).
 #[test]
@@ -223,7 +229,7 @@ fn correct_variants_pass_the_published_sets_under_ieee() {
             }
         }
     }
-    assert_eq!(runs, 3 * 3 * 9 * 2);
+    assert_eq!(runs, 3 * 3 * 10 * 2);
 }
 
 /// The software GPUs pass `check` under `shader` on every published set: Gouraud,

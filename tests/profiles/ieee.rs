@@ -481,6 +481,22 @@ fn profile_ieee_euler_closed_binary64_large() {
 /// set-up in the variant's orders (fused where a product feeds an addition), the loops
 /// `g += t; t += ds` and `p += A`, then `sign(p)·√max(0, g)` with one rounded root.
 pub(crate) fn squared<T: Native>(v: Variant, s: &Span<Q>) -> Vec<Q> {
+    squared_with::<T>(v, s, None)
+}
+
+/// A bug planted in [`squared`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum SquaredBug {
+    /// The value's sign ignored: `√max(0, g)` everywhere.
+    NoSign,
+    /// Plain Euler on `g`: `t_0 = g′_a`, `ε` dropped.
+    NoCorrection,
+    /// `A` biased by a relative `10^-5`.
+    BiasedA,
+}
+
+/// [`squared`] with a bug planted, or none.
+pub(crate) fn squared_with<T: Native>(v: Variant, s: &Span<Q>, bug: Option<SquaredBug>) -> Vec<Q> {
     let vec = |x: &phong_approx::Vec3<Q>| [T::of(&x.x), T::of(&x.y), T::of(&x.z)];
     let (na, nb, l) = (vec(&s.na), vec(&s.nb), vec(&s.l));
     let (zero, two) = (T::from_u32(0), T::from_u32(2));
@@ -488,7 +504,10 @@ pub(crate) fn squared<T: Native>(v: Variant, s: &Span<Q>) -> Vec<Q> {
     let inv = T::from_u32(1).div(nf);
     let over_n = |x: T| if v.reciprocal { x.mul(inv) } else { x.div(nf) };
     let k = [0, 1, 2].map(|j| over_n(nb[j] - na[j]));
-    let a = dot(v.dot, k, l);
+    let mut a = dot(v.dot, k, l);
+    if bug == Some(SquaredBug::BiasedA) {
+        a = a.mul(T::of(&q(100_001, 100_000)));
+    }
     let b = dot(v.dot, na, l);
     let c = dot(v.dot, k, k);
     let d = two.mul(dot(v.dot, k, na));
@@ -516,12 +535,16 @@ pub(crate) fn squared<T: Native>(v: Variant, s: &Span<Q>) -> Vec<Q> {
     } else {
         ga + (nf.mul(dga) + tri.mul(ds))
     };
-    let t0 = dga - over_n(gn - gb);
+    let t0 = if bug == Some(SquaredBug::NoCorrection) {
+        dga
+    } else {
+        dga - over_n(gn - gb)
+    };
     let (mut g, mut t, mut p) = (ga, t0, b);
     let mut out = Vec::with_capacity(s.n as usize + 1);
     for _ in 0..=s.n {
         let r = if g > zero { g.sqrt() } else { zero };
-        let value = if p > zero {
+        let value = if p > zero || bug == Some(SquaredBug::NoSign) {
             r
         } else if p < zero {
             zero - r

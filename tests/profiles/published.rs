@@ -401,3 +401,29 @@ fn specular_bound_holds() {
     assert!(checked > 500 && above_one >= 5, "{checked} {above_one}");
     eprintln!("specular: {checked} runs, {above_one} spans above 1, worst {worst:.3} of the bound");
 }
+
+/// Bugs planted in the squared method's native `f32` implementation fail a published
+/// set under `ieee` (so its graph bound can fail): the sign ignored, plain Euler on `g`
+/// (no correction), `A` biased by `10^-5`; the same code without the bug passes
+/// (`correct_variants_pass_the_published_sets_under_ieee`).
+#[test]
+fn planted_squared_bugs_fail_a_published_set() {
+    for bug in [
+        SquaredBug::NoSign,
+        SquaredBug::NoCorrection,
+        SquaredBug::BiasedA,
+    ] {
+        let failed: Vec<&str> = phong_approx::testkit::SETS
+            .into_iter()
+            .filter(|set| {
+                let spans = published_spans(set);
+                let r = published_f32(set, Method::SquaredCorrectedEuler, Profile::Ieee, |id| {
+                    squared_with::<f32>(VARIANTS[0], &spans[id], Some(bug))
+                });
+                !r.is_ok()
+            })
+            .collect();
+        println!("{bug:?}: fails {failed:?}");
+        assert!(!failed.is_empty(), "{bug:?} passes every published set");
+    }
+}

@@ -64,7 +64,7 @@ macro_rules! kernel {
 }
 
 /// Every kernel of `harness/gpu/`: the correct ones, then the planted bugs.
-pub const KERNELS: [Kernel; 15] = [
+pub const KERNELS: [Kernel; 17] = [
     kernel!(
         "gouraud.wgsl",
         Gouraud,
@@ -146,6 +146,14 @@ pub const KERNELS: [Kernel; 15] = [
         adaptive
     ),
     kernel!(
+        "squared_corrected_euler.wgsl",
+        SquaredCorrectedEuler,
+        Wgsl,
+        "recurrence on g, then sign(p)·√max(0, g), one invocation per span",
+        false,
+        squared_corrected_euler
+    ),
+    kernel!(
         "gouraud.comp",
         Gouraud,
         Glsl,
@@ -184,6 +192,14 @@ pub const KERNELS: [Kernel; 15] = [
         "planted bug: dq_b = 2nC − D",
         true,
         corrected_euler_dq_sign
+    ),
+    kernel!(
+        "mutants/squared_no_sign.wgsl",
+        SquaredCorrectedEuler,
+        Wgsl,
+        "planted bug: the value's sign dropped",
+        true,
+        squared_no_sign
     ),
 ];
 
@@ -406,4 +422,50 @@ fn adaptive(s: &Inputs<'_, f32>) -> Vec<f32> {
             v
         })
         .collect()
+}
+
+/// squared_corrected_euler.wgsl (and its mutant without the sign), operation by
+/// operation.
+fn squared(s: &Inputs<'_, f32>, signed: bool) -> Vec<f32> {
+    let nf = s.n as f32;
+    let k = div(sub(s.nb, s.na), nf);
+    let a = dot(k, s.l);
+    let b = dot(s.na, s.l);
+    let c = dot(k, k);
+    let d = 2.0 * dot(k, s.na);
+    let e = dot(s.na, s.na);
+    let pb = dot(s.nb, s.l);
+    let qb = dot(s.nb, s.nb);
+    let dqb = 2.0 * nf * c + d;
+    let ga = b * b / e;
+    let gb = pb * pb / qb;
+    let dga = b * (2.0 * a * e - b * d) / (e * e);
+    let dgb = pb * (2.0 * a * qb - pb * dqb) / (qb * qb);
+    let ds = (dgb - dga) / nf;
+    let eps = ga + nf * dga + tri(s.n) * ds - gb;
+    let t0 = dga - eps / nf;
+    let (mut g, mut t, mut p) = (ga, t0, b);
+    (0..=s.n)
+        .map(|_| {
+            let mut v = if g > 0.0 { g.sqrt() } else { 0.0 };
+            if signed && p < 0.0 {
+                v = -v;
+            }
+            if signed && p == 0.0 {
+                v = 0.0;
+            }
+            g += t;
+            t += ds;
+            p += a;
+            v
+        })
+        .collect()
+}
+
+fn squared_corrected_euler(s: &Inputs<'_, f32>) -> Vec<f32> {
+    squared(s, true)
+}
+
+fn squared_no_sign(s: &Inputs<'_, f32>) -> Vec<f32> {
+    squared(s, false)
 }

@@ -503,8 +503,8 @@ mod on_device {
         }
         assert_eq!(
             out.matches("**fail**").count(),
-            4,
-            "the two planted bugs, twice: {out}"
+            6,
+            "the three planted bugs, twice: {out}"
         );
         // docs/conformance.md's table is this run's wherever the adapter is the one it
         // names (other drivers may round otherwise).

@@ -5,7 +5,8 @@
 #
 #   harness/c/ci.sh [CHECKER]     (default: $PHONG_APPROX_BIN, else target/release/phong-approx)
 #
-# 1. Builds methods.c (gouraud, euler, corrected-euler, phong, duff in float and
+# 1. Builds methods.c (gouraud, euler, corrected-euler, phong, duff and
+#    squared-corrected-euler in float and
 #    double, against phong_kit.h) twice — plain, and with fused multiply-adds
 #    (-ffp-contract=fast, with -mfma on x86-64, where GCC fuses only when FMA
 #    instructions are enabled) — with -Wall -Wextra -Werror.
@@ -17,8 +18,10 @@
 # 3. For f32 and f64, every published set and every method: the plain build under
 #    the reference profile and the default ieee profile, the fused build under ieee
 #    (each method has an ieee bound: proved for gouraud, euler and corrected-euler,
-#    derived for phong and duff); the same for the specular part of the sets that
-#    have one. The fused f32 build must differ from the plain one somewhere.
+#    composed from proved theorems for phong and duff, from its operation graph for
+#    the squared method); the same for the specular part of the sets that have one.
+#    The fused f32 build must differ from the plain one somewhere. A build with a
+#    planted bug (the squared method's sign dropped) must fail a set.
 # 4. The user's route: run.sh on example_corrected_euler.c must pass (and declared
 #    --form recurrence too, but not --form closed), and on a copy
 #    with the first step corrected by ε/(n+1) instead of ε/n (made here, in a
@@ -41,7 +44,7 @@ bin=${1:-${PHONG_APPROX_BIN:-$here/../../target/release/phong-approx}}
 bin=$(cd "$(dirname "$bin")" && pwd)/$(basename "$bin")
 vectors=${PHONG_KIT_VECTORS:-$here/../../vectors}
 sets=(typical edge paper)
-methods=(gouraud euler corrected-euler phong duff)
+methods=(gouraud euler corrected-euler phong duff squared-corrected-euler)
 
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
@@ -175,7 +178,24 @@ if [ "$differ" -eq 0 ]; then
   echo "the fused build gave the same f32 results as the plain one: no FMA was used" >&2
   exit 1
 fi
-echo "  methods.c: every set and method passes in f32 and f64; the fused build differs on $differ of 15 f32 and $differ64 of 15 f64 set-method pairs"
+pairs=$(( ${#methods[@]} * ${#sets[@]} ))
+echo "  methods.c: every set and method passes in f32 and f64; the fused build differs on $differ of $pairs f32 and $differ64 of $pairs f64 set-method pairs"
+# A planted bug: the squared method without its value's sign fails a set.
+cc -O2 -std=c99 -ffp-contract=off -DPK_PLANT_SQUARED_NO_SIGN "${warn[@]}" -o "$tmp/planted" \
+  "$here/methods.c" "$here/phong_kit.c" -lm
+failed=0
+for set in "${sets[@]}"; do
+  "$tmp/planted" squared-corrected-euler "$vectors/$set-inputs.csv" > "$tmp/planted.csv"
+  if ! "$bin" check --vectors "$vectors/$set.json" --results "$tmp/planted.csv" \
+      --method squared-corrected-euler --precision f32 > /dev/null 2>&1; then
+    failed=$((failed + 1))
+  fi
+done
+if [ "$failed" -eq 0 ]; then
+  echo "ci.sh: the squared method without its sign passed every set" >&2
+  exit 1
+fi
+echo "  methods.c: the squared method without its sign fails $failed of ${#sets[@]} sets"
 
 # 4. The user's route, as the README gives it.
 CFLAGS="${warn[*]}" bash "$here/run.sh" "$here/example_corrected_euler.c" "$bin" --method corrected-euler

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT OR Apache-2.0 */
-/* This repository's own C implementations of five of the paper's methods, written
+/* This repository's own C implementations of six of the paper's methods, written
  * against phong_kit.h as a user would, in float and in double: what CI runs
  * (harness/c/ci.sh) on every published set.
  *
@@ -7,7 +7,7 @@
  *   ./methods corrected-euler [--precision f32|f64] [--specular] SET-inputs.csv > R.csv
  *   ./methods inputs SET-inputs.csv
  *
- * Methods: gouraud, euler, corrected-euler, phong, duff (the arithmetic of
+ * Methods: gouraud, euler, corrected-euler, phong, duff, squared-corrected-euler (the arithmetic of
  * methods_body.h, the paper's equations in the order of src/). `inputs` prints
  * every input of every case as the kit read it, as `case,component,precision,hex`
  * rows (C99 %a), for ci.sh to compare with the vector file's f32 and f64 forms.
@@ -19,9 +19,9 @@
 
 #include "phong_kit.h"
 
-enum { GOURAUD, EULER, CORRECTED_EULER, PHONG, DUFF, INPUTS };
+enum { GOURAUD, EULER, CORRECTED_EULER, PHONG, DUFF, SQUARED, INPUTS };
 static const char *const method_names[] = {"gouraud", "euler", "corrected-euler", "phong",
-                                           "duff", "inputs"};
+                                           "duff", "squared-corrected-euler", "inputs"};
 
 #define PK_PASTE2(a, b) a##_##b
 #define PK_PASTE(a, b) PK_PASTE2(a, b)
@@ -111,7 +111,8 @@ int main(int argc, char **argv) {
     for (int m = 0; argc >= 2 && m <= INPUTS; m++)
         if (!strcmp(argv[1], method_names[m])) method = m;
     if (method < 0 || (method == INPUTS && argc != 3)) {
-        fprintf(stderr, "usage: methods gouraud|euler|corrected-euler|phong|duff "
+        fprintf(stderr, "usage: methods gouraud|euler|corrected-euler|phong|duff|"
+                        "squared-corrected-euler "
                         "[--precision f32|f64] [--specular] [SET-inputs.csv]\n"
                         "       methods inputs SET-inputs.csv\n");
         return PK_BAD_INPUT;

@@ -1,5 +1,5 @@
 /* SPDX-License-Identifier: MIT OR Apache-2.0 */
-/* The five methods of methods.c in one floating type. methods.c includes this file
+/* The six methods of methods.c in one floating type. methods.c includes this file
  * twice: with REAL float, SQRT sqrtf, POW powf and SUF f32, and with REAL double,
  * SQRT sqrt, POW pow and SUF f64. Each PK_SUF(name) becomes name_f32 or name_f64. */
 #define PK_SUF(name) PK_PASTE(name, SUF)
@@ -52,6 +52,30 @@ static int PK_SUF(shade)(const PK_SUF(pk_case) *c, REAL *out, void *user) {
             REAL N[3];
             for (int j = 0; j < 3; j++) N[j] = c->na[j] + (REAL)i * k[j];
             out[i] = PK_SUF(dot)(N, l) / SQRT(PK_SUF(dot)(N, N));
+        }
+    } else if (method == SQUARED) {
+        /* §7.1 (b): corrected Euler (eqs. 15-17) on g = p^2/q, no square root in the
+         * set-up, then the value sign(p) sqrt(max(0, g)) with p by its own recurrence. */
+        REAL k[3], nf = (REAL)n, two = (REAL)2;
+        for (int j = 0; j < 3; j++) k[j] = (c->nb[j] - c->na[j]) / nf;
+        REAL A = PK_SUF(dot)(k, l), B = PK_SUF(dot)(c->na, l), C = PK_SUF(dot)(k, k);
+        REAL D = two * PK_SUF(dot)(k, c->na), E = PK_SUF(dot)(c->na, c->na);
+        REAL pb = PK_SUF(dot)(c->nb, l), qb = PK_SUF(dot)(c->nb, c->nb);
+        REAL dqb = two * nf * C + D;
+        REAL ga = B * B / E, gb = pb * pb / qb;
+        REAL dga = B * (two * A * E - B * D) / (E * E);
+        REAL dgb = pb * (two * A * qb - pb * dqb) / (qb * qb);
+        REAL ds = (dgb - dga) / nf;
+        REAL eps = ga + nf * dga + (REAL)((double)n * (double)(n - 1) / 2) * ds - gb;
+        REAL g = ga, t = dga - eps / nf, p = B;
+        for (long i = 0; i <= n; i++) {
+            REAL v = g > 0 ? SQRT(g) : 0;
+#ifndef PK_PLANT_SQUARED_NO_SIGN /* ci.sh's planted bug: the sign dropped */
+            if (p < 0) v = -v;
+            else if (p == 0) v = 0;
+#endif
+            out[i] = v;
+            g += t; t += ds; p += A;
         }
     } else { /* duff: eqs. 5-7, forward differences of p and q */
         REAL p = s.pa, q = s.E, dq = s.C + s.D;

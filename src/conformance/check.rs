@@ -255,9 +255,31 @@ fn case_bound(j: &Judging, method: Method, specular: bool) -> Option<f64> {
             profile: crate::tolerance::profile::Profile::Reference,
             format,
             ..
-        } => match shape.filter(|_| !specular) {
-            Some(shape) => crate::tolerance::span_bound(method, shape, format.u()),
-            None => crate::tolerance::bound(method, c.n, q_min, format.u()),
+        } => match shape {
+            // A bound from the case's own inputs (the squared method's, its `ieee`
+            // graphs': docs/float.md §19.7) takes the light the case shades, `H` for
+            // the specular part.
+            Some(shape) if method.info().bound == crate::method::Bound::Graphs => {
+                let light = match (&c.specular, specular) {
+                    (_, false) => None,
+                    (Some(sp), true) => Some(
+                        super::vectors::exact_input(&sp.h)
+                            .map(|h| [&h.x, &h.y, &h.z].map(crate::tolerance::graph::interval))?,
+                    ),
+                    (None, true) => return None,
+                };
+                crate::tolerance::graphs::profile_pixel_bounds(
+                    method,
+                    crate::tolerance::profile::Profile::Ieee,
+                    crate::tolerance::profile::Form::Any,
+                    shape,
+                    light,
+                    format,
+                )
+                .map(|b| b.into_iter().fold(0f64, f64::max))
+            }
+            Some(shape) if !specular => crate::tolerance::span_bound(method, shape, format.u()),
+            _ => crate::tolerance::bound(method, c.n, q_min, format.u()),
         },
         // The case's exact span gives Phong's derived bound its |N_b − N_a|.
         Tolerance::Profile {

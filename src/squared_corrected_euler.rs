@@ -182,7 +182,10 @@ impl<T: Scalar> SquaredSpan<T> {
 
     /// Fills `out[i]` with the specular base `max(0, N·H/|N|)^s` from `g_i`: `0` where
     /// `p_i = B + i·A ≤ 0` (its own recurrence) or `g_i ≤ 0`, else `g_i^{s/2}` for even
-    /// `s` (no root) and `g_i^{(s−1)/2}·√g_i` for odd `s` (one root per pixel).
+    /// `s` (no root) and `g_i^{(s−1)/2}·√g_i` for odd `s` (one root per pixel); `1`
+    /// everywhere for `s = 0` (as [`crate::specular::power`]: `max(0, v)^0 = 1`).
+    /// Wherever `p_i ≠ 0` this is `max(0, v_i)^s` of the catalogue's value
+    /// ([`shade`]).
     ///
     /// # Errors
     /// [`SpanError::OutputLength`] if `out.len() ≠ n + 1`.
@@ -191,6 +194,11 @@ impl<T: Scalar> SquaredSpan<T> {
         T: Real,
     {
         self.shade(out)?;
+        // `max(0, v)^0 = 1` everywhere, as `specular::power` has it.
+        if shininess == 0 {
+            out.fill(T::one());
+            return Ok(());
+        }
         // The exponent's parity is the span's, not the pixel's: decided once.
         let (half, odd) = (shininess / 2, !shininess.is_multiple_of(2));
         let mut p = self.b.clone();

@@ -367,3 +367,36 @@ fn sq_signed_value_error() {
         }
     }
 }
+
+/// The catalogue's value (`Method::SquaredCorrectedEuler`, `sign(p)·√max(0, g)`) and
+/// the specular path (`SquaredSpan::specular`, `g^{s/2}` with no root for even `s`)
+/// agree: `max(0, v_i)^s` is the specular value at every pixel, `s = 0` included (1
+/// everywhere), in `f64` within a relative `10^-12` (both round; the exact claim is
+/// `sq_specular_even`, `sq_specular_odd`).
+#[test]
+fn the_catalogue_value_and_the_specular_path_agree() {
+    let mut spans = 0;
+    for (na, nb, h, n) in inputs() {
+        let Ok(exact) = Span::new(na, nb, h, n) else {
+            continue; // the scaled, non-unit copies
+        };
+        let span = exact.cast::<f64>().unwrap();
+        let v = phong_approx::Method::SquaredCorrectedEuler
+            .values(&span)
+            .unwrap();
+        let sq = SquaredSpan::of(&span).unwrap();
+        for s in [0, 1, 2, 7, 32] {
+            let mut spec = vec![0f64; n as usize + 1];
+            sq.specular(s, &mut spec).unwrap();
+            for (i, (x, y)) in v.iter().zip(&spec).enumerate() {
+                let want = power(x, s);
+                assert!(
+                    (want - y).abs() <= 1e-12 * want.abs().max(1e-300) + 1e-300,
+                    "s = {s}, pixel {i}: {want:e} against {y:e}"
+                );
+            }
+        }
+        spans += 1;
+    }
+    assert!(spans > 10, "{spans}");
+}

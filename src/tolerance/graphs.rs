@@ -311,7 +311,6 @@ pub fn for_each_graph<E>(
             }
         }
         Method::SquaredCorrectedEuler if form == Form::Any => {
-            drop(add);
             f(make(names[0], &|g, s| {
                 let (values, signs) = squared::squared(g, s, n);
                 (vec![values], Some(signs))

@@ -54,24 +54,22 @@ pub fn status_table() -> String {
 /// A status's label in Markdown: [`Status::label`] with the theorem's and the graphs'
 /// names as code.
 fn markdown(st: &Status) -> String {
+    // "the graph `a`" or "the graphs `a`, `b`".
+    let named = |graphs: &[&str]| {
+        let names: Vec<String> = graphs.iter().map(|g| format!("`{g}`")).collect();
+        let noun = if names.len() == 1 { "graph" } else { "graphs" };
+        format!("the {noun} {}", names.join(", "))
+    };
     match st {
         Status::Proved(t) => format!("proved (`{t}`)"),
-        Status::PerPixel(t, graphs) => {
-            let graphs: Vec<String> = graphs.iter().map(|g| format!("`{g}`")).collect();
-            format!(
-                "proved (`{t}`; per pixel the smaller with `graph_sound` on the {} {})",
-                if graphs.len() == 1 { "graph" } else { "graphs" },
-                graphs.join(", ")
-            )
-        }
-        Status::Graphs(t, graphs) => {
-            let graphs: Vec<String> = graphs.iter().map(|g| format!("`{g}`")).collect();
-            format!(
-                "proved (`graph_sound` on the {} {}, composed by `{t}`)",
-                if graphs.len() == 1 { "graph" } else { "graphs" },
-                graphs.join(", ")
-            )
-        }
+        Status::PerPixel(t, graphs) => format!(
+            "proved (`{t}`; per pixel the smaller with `graph_sound` on {})",
+            named(graphs)
+        ),
+        Status::Graphs(t, graphs) => format!(
+            "proved (`graph_sound` on {}, composed by `{t}`)",
+            named(graphs)
+        ),
     }
 }
 

@@ -47,15 +47,22 @@ pub(super) fn squared(g: &mut Graph, s: &Setup, n: u32) -> (Vec<Id>, Vec<Id>) {
 /// `1/inverseSqrt(x)` (the model's `sqrt_is_recip_rsqrt`): `inverseSqrt` within
 /// `κ_r·u/√x + η`, `η·√x ≤ 3η` for `x ≤ 9`, then the division's `κ_d·u`, so
 /// `k = (κ_d·u + κ_r·u + 3η)/(1 − κ_r·u − 3η)` (docs/float.md §19.7); both with the
-/// last operation's `η`.
+/// last operation's `η`, and, where the model flushes (`η > 0`), `√` of the format's
+/// smallest normal: a root whose operand below it is read as 0 is off by at most that.
 fn root_rounding(model: &Model) -> (f64, f64) {
     let up = f64::next_up;
+    let flushed = if model.eta > 0.0 {
+        up(model.format.min_normal().sqrt())
+    } else {
+        0.0
+    };
+    let eta = up(model.eta + flushed);
     if model.sqrt_is_recip_rsqrt {
         let r = up(up(model.rsqrt * model.u) + up(3.0 * model.eta));
         let num = up(up(up(model.div * model.u) + r));
-        (up(num / (1.0 - r).next_down()), model.eta)
+        (up(num / (1.0 - r).next_down()), eta)
     } else {
-        (up(model.sqrt * model.u), model.eta)
+        (up(model.sqrt * model.u), eta)
     }
 }
 

@@ -247,6 +247,14 @@ pub enum GraphError {
         /// The node.
         node: Id,
     },
+    /// The squared method's value, composed outside its graph, needs `|g̃| ≤ 9` for
+    /// the root's rounding (`docs/float.md` §19.7), which the node's interval and
+    /// error do not show.
+    #[error("node {node}: the squared value may exceed 9, past the root's derived rounding")]
+    SquaredOutOfRange {
+        /// The `g_i` node.
+        node: Id,
+    },
     /// An input index with no interval, or an interval that is not one.
     #[error("node {node}: input {input} has no valid interval")]
     Input {

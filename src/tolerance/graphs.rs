@@ -454,7 +454,7 @@ pub fn pixel_bounds(
                 let e = match &f.signs {
                     // The squared method's value, composed from `g_i` and `p_i`.
                     Some(signs) => squared::signed_root(&b, p, signs[i], model)
-                        .ok_or(GraphError::Overflow { node: p })?,
+                        .ok_or(GraphError::SquaredOutOfRange { node: p })?,
                     None => b.err[p],
                 };
                 *w = w.max(e);

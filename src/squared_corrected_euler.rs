@@ -70,9 +70,8 @@ pub struct SquaredSpan<T> {
 /// As [`SquaredSpan::of`]; [`SpanError::OutputLength`] if `out.len() ≠ n + 1`;
 /// [`SpanError::NotFiniteValue`] where a float value overflows.
 pub fn shade<T: Real>(span: &crate::Span<T>, out: &mut [T]) -> Result<(), SpanError> {
-    span.check_output(out)?;
     let sq = SquaredSpan::of(span)?;
-    sq.shade(out)?;
+    sq.shade(out)?; // checks `out`'s length
     let mut p = sq.b.clone();
     for v in out.iter_mut() {
         *v = if *v > T::zero() && p != T::zero() {

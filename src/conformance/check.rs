@@ -260,13 +260,10 @@ fn case_bound(j: &Judging, method: Method, specular: bool) -> Option<f64> {
             // graphs': docs/float.md §19.7) takes the light the case shades, `H` for
             // the specular part.
             Some(shape) if method.info().bound == crate::method::Bound::Graphs => {
-                let light = match (&c.specular, specular) {
-                    (_, false) => None,
-                    (Some(sp), true) => Some(
-                        super::vectors::exact_input(&sp.h)
-                            .map(|h| [&h.x, &h.y, &h.z].map(crate::tolerance::graph::interval))?,
-                    ),
-                    (None, true) => return None,
+                let light = if specular {
+                    Some(half_vector(c)?)
+                } else {
+                    None
                 };
                 crate::tolerance::graphs::profile_pixel_bounds(
                     method,
@@ -292,6 +289,13 @@ fn case_bound(j: &Judging, method: Method, specular: bool) -> Option<f64> {
         },
         _ => None,
     }
+}
+
+/// The case's exact half vector `H` as the graphs' three input intervals, if it has
+/// a specular part whose `H` is exact.
+fn half_vector(c: &Case) -> Option<[(f64, f64); 3]> {
+    let h = super::vectors::exact_input(&c.specular.as_ref()?.h)?;
+    Some([&h.x, &h.y, &h.z].map(crate::tolerance::graph::interval))
 }
 
 /// The adaptive scheme where its test is too close to call: when `|255·δ|` (the
@@ -410,11 +414,7 @@ fn case_report(
             },
             Some(shape),
         ) if method.picks().is_none() && !(specular && profile == Profile::Shader) => {
-            let light = match (&c.specular, specular) {
-                (Some(sp), true) => super::vectors::exact_input(&sp.h)
-                    .map(|h| [&h.x, &h.y, &h.z].map(crate::tolerance::graph::interval)),
-                _ => None,
-            };
+            let light = specular.then(|| half_vector(c)).flatten();
             (light.is_some() || !specular)
                 .then(|| {
                     crate::tolerance::graphs::profile_pixel_bounds(

@@ -544,7 +544,7 @@ fn the_catalogue_names_the_methods_with_graphs() {
         for profile in [Profile::Ieee, Profile::Shader] {
             if let Some(st) = status(method, profile, Format::Binary32) {
                 assert_eq!(
-                    matches!(st, Status::PerPixel(_, g) | Status::Graphs(_, g) if g == names),
+                    matches!(st, Status::PerPixel(_, g) | Status::Graphs(_, g, _) if g == names),
                     has,
                     "{method} {profile}"
                 );

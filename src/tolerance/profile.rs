@@ -193,8 +193,10 @@ pub enum Status {
     PerPixel(&'static str, &'static [&'static str]),
     /// The bound of the method's operation graphs alone (their names), per pixel,
     /// composed with the value's last step by a theorem (its name): the squared
-    /// method's `sign(p)·√max(0, g)` (`sq_signed_value_error`).
-    Graphs(&'static str, &'static [&'static str]),
+    /// method's `sign(p)·√max(0, g)` (`sq_signed_value_error`); the third field names
+    /// a step of the composition that is derived, not proved, where there is one
+    /// (under `shader`, the rounding of a root taken as `1/inverseSqrt`).
+    Graphs(&'static str, &'static [&'static str], Option<&'static str>),
 }
 
 impl Status {
@@ -207,8 +209,9 @@ impl Status {
                 if graphs.len() == 1 { "graph" } else { "graphs" },
                 graphs.join(", ")
             ),
-            Status::Graphs(t, graphs) => format!(
-                "proved (graph_sound on the {} {}, composed by {t})",
+            Status::Graphs(t, graphs, derived) => format!(
+                "proved{} (graph_sound on the {} {}, composed by {t})",
+                derived.map_or(String::new(), |d| format!(" but for {d}, derived")),
                 if graphs.len() == 1 { "graph" } else { "graphs" },
                 graphs.join(", ")
             ),
@@ -218,7 +221,7 @@ impl Status {
     /// The theorem named first.
     pub fn theorem(&self) -> &'static str {
         match *self {
-            Status::Proved(t) | Status::PerPixel(t, _) | Status::Graphs(t, _) => t,
+            Status::Proved(t) | Status::PerPixel(t, _) | Status::Graphs(t, ..) => t,
         }
     }
 }
@@ -266,7 +269,13 @@ pub fn status(method: crate::Method, profile: Profile, format: Format) -> Option
         }
         // The graphs alone, where the profile has a model.
         FloatBound::Graphs { theorem, .. } => (!row.graphs.is_empty())
-            .then(|| arith(profile, format).map(|_| Status::Graphs(theorem, row.graphs)))
+            .then(|| {
+                // Under `shader` the root is `1/inverseSqrt`, whose rounding the
+                // composition takes from a written derivation (docs/float.md §19.7).
+                let derived = (profile == Profile::Shader)
+                    .then_some("the root's rounding as 1/inverseSqrt (docs/float.md §19.7)");
+                arith(profile, format).map(|_| Status::Graphs(theorem, row.graphs, derived))
+            })
             .flatten(),
         FloatBound::None(_) => None,
     }

@@ -393,6 +393,8 @@ Check sq_root_lipschitz.
 Print Assumptions sq_root_lipschitz.
 Check sq_signed_value_error.
 Print Assumptions sq_signed_value_error.
+Check sq_shader_root_rounding.
+Print Assumptions sq_shader_root_rounding.
 
 (** SkipFloat.v *)
 Check float_skip_sound.

@@ -29,7 +29,12 @@
       |√max(0,x) − √max(0,y)| ≤ √|x − y| (Hölder) and ≤ |x − y|/√y for y > 0
       (Lipschitz), turning the errors of g and p from the operation graphs
       (Graph.v's [graph_sound]) and the root's rounding k·√x + eta into a
-      bound on the value, tight when the error of p is below |p|.
+      bound on the value, tight when the error of p is below |p|;
+    - [sq_shader_root_rounding]: the root computed as 1/inverseSqrt(x), x the
+      computed max(0, g) ≤ 9, under a float model with relative error k·u and
+      absolute term eta per operation: writing r = (1 + ρ)/√x,
+      |ρ| ≤ kr·u + 3·eta =: a < 1, so |v − √x| ≤ (kd·u + a)/(1 − a)·√x
+      + eta' + √xmin, the last term for a flushed operand x < xmin read as 0.
 
     Code: src/squared_corrected_euler.rs. *)
 
@@ -271,4 +276,63 @@ Proof.
         rewrite Rabs_R0. lra. }
     pose proof (Rabs_triang (sgnv pt rt) (- sgnv p (sqp g))).
     rewrite Rabs_Ropp in *. unfold Rminus. lra.
+Qed.
+
+(* Note: Any u, kr, kd, eta, eta', xmin >= 0 with kr u + 3 eta < 1, x = the
+   computed max(0, g) in [0, 9], r within kr u/√x + eta of 1/√x and v within
+   kd u |1/r| + eta' of 1/r; or, where subnormals are flushed, x < xmin read
+   as 0 and v = 0.  (x = 0 with xmin = 0 fits neither case.) *)
+(** The root as 1/inverseSqrt(x): with a = kr u + 3 eta,
+    |v − √x| <= (kd u + a)/(1 − a) √x + eta' + √xmin. *)
+Theorem sq_shader_root_rounding : forall (u kr kd eta eta' xmin x r v : R),
+  0 <= u -> 0 <= kr -> 0 <= kd -> 0 <= eta -> 0 <= eta' -> 0 <= xmin ->
+  kr * u + 3 * eta < 1 ->
+  0 <= x <= 9 ->
+  ((x < xmin /\ v = 0) \/
+   (0 < x /\
+    Rabs (r - / sqrt x) <= kr * u * / sqrt x + eta /\
+    Rabs (v - / r) <= kd * u * Rabs (/ r) + eta')) ->
+  Rabs (v - sqrt x) <=
+    (kd * u + kr * u + 3 * eta) / (1 - kr * u - 3 * eta) * sqrt x + (eta' + sqrt xmin).
+Proof.
+  intros u kr kd eta eta' xmin x r v Hu Hkr Hkd He He' Hm Ha Hx H.
+  pose proof (sqrt_pos x) as Hs0. pose proof (sqrt_pos xmin) as Hm0.
+  unfold Rdiv. set (z := / (1 - kr * u - 3 * eta)).
+  assert (Hz : 0 < z) by (apply Rinv_0_lt_compat; lra).
+  assert (Hk : 0 <= kd * u + kr * u + 3 * eta) by nra.
+  assert (Hb : 0 <= (kd * u + kr * u + 3 * eta) * z * sqrt x).
+  { apply Rmult_le_pos; [apply Rmult_le_pos |]; lra. }
+  destruct H as [[Hlt Hv] | [Hx0 [Hr Hv]]].
+  - (* flushed: |0 - √x| = √x <= √xmin *)
+    subst v. rewrite Rminus_0_l, Rabs_Ropp, Rabs_pos_eq by lra.
+    pose proof (sqrt_le_1_alt x xmin (Rlt_le _ _ Hlt)). lra.
+  - (* r = (1 + e)/√x with |e| <= kr u + eta √x <= kr u + 3 eta < 1 *)
+    assert (Hs : 0 < sqrt x) by (apply sqrt_lt_R0; lra).
+    assert (Hs3 : sqrt x <= 3) by (pose proof (sqrt_sqrt x (proj1 Hx)); nra).
+    set (s := sqrt x) in *.
+    set (e := r * s - 1).
+    assert (He1 : Rabs e <= kr * u + 3 * eta).
+    { replace e with (s * (r - / s)) by (unfold e; field; lra).
+      rewrite Rabs_mult, (Rabs_pos_eq s) by lra.
+      apply Rle_trans with (s * (kr * u * / s + eta)); [apply Rmult_le_compat_l; lra |].
+      replace (s * (kr * u * / s + eta)) with (kr * u + eta * s) by (field; lra). nra. }
+    assert (He2 : 1 - kr * u - 3 * eta <= 1 + e) by
+      (pose proof (Rle_abs (- e)); rewrite Rabs_Ropp in *; lra).
+    set (w := / (1 + e)).
+    assert (Hw : 0 < w) by (apply Rinv_0_lt_compat; lra).
+    assert (Hw1 : w * (1 + e) = 1) by (apply Rinv_l; lra).
+    assert (Hwz : w <= z) by (apply Rinv_le_contravar; lra).
+    assert (Hrs : r * s = 1 + e) by (unfold e; ring).
+    assert (Hr0 : 0 < r) by nra.
+    assert (Hir : / r = s * w) by (unfold w; rewrite <- Hrs; field; lra).
+    rewrite Hir in Hv. rewrite (Rabs_pos_eq (s * w)) in Hv by (apply Rmult_le_pos; lra).
+    (* |/r - √x| = √x |e| w *)
+    assert (Hd : Rabs (/ r - s) = s * Rabs e * w).
+    { rewrite Hir. replace (s * w - s) with (s * w * (- e)) by nra.
+      rewrite !Rabs_mult, Rabs_Ropp, (Rabs_pos_eq s), (Rabs_pos_eq w) by lra. ring. }
+    assert (Hm1 : (kd * u + Rabs e) * w <= (kd * u + kr * u + 3 * eta) * z).
+    { apply Rmult_le_compat; try lra. pose proof (Rabs_pos e). nra. }
+    apply Rmult_le_compat_l with (r := s) in Hm1; [| lra].
+    replace (v - s) with ((v - / r) + (/ r - s)) by ring.
+    pose proof (Rabs_triang (v - / r) (/ r - s)). rewrite Hd, Hir in *. lra.
 Qed.

@@ -25,7 +25,9 @@
 use crate::span::Span;
 
 mod rsqrt;
+mod squared;
 pub use rsqrt::{phong_rsqrt_coefficients, phong_rsqrt_f32};
+pub use squared::FastSquared;
 
 /// The set-up of a span for the fast kernels.
 #[derive(Clone, Copy, Debug, PartialEq)]

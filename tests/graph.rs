@@ -138,6 +138,42 @@ fn graph_sound() {
         if extensive() {
             native_runs!(f64, Binary64);
         }
+        // The squared method's fast kernel (`fast::FastSquared`) on every vector path
+        // this CPU has.
+        macro_rules! fast_squared {
+            ($t:ty, $f:ident) => {
+                let m = Method::SquaredCorrectedEuler;
+                if let Some(b) = graph_bound(m, Profile::Ieee, Format::$f, s) {
+                    let want = exact(m, c.as_ref(), s);
+                    let vec = |x: &phong_approx::Vec3<Q>| {
+                        [x.x.clone(), x.y.clone(), x.z.clone()].map(|x| <$t as Native>::of(&x))
+                    };
+                    let fast = phong_approx::fast::FastSquared::<$t>::new(
+                        vec(&s.na),
+                        vec(&s.nb),
+                        vec(&s.l),
+                        s.n,
+                    );
+                    let chosen = phong_approx::simd::path();
+                    for path in phong_approx::simd::Path::supported_paths() {
+                        phong_approx::simd::force(path).unwrap();
+                        let mut out = vec![0.0 as $t; s.n as usize + 1];
+                        fast.shade(&mut out);
+                        let got: Vec<Q> = out.iter().map(|x| x.q()).collect();
+                        let what = format!("FastSquared {} ({path}): {s}", stringify!($t));
+                        let r = over(&what, &got, &want, &b);
+                        let w = worst
+                            .entry(format!("ieee {} FastSquared", stringify!($t)))
+                            .or_default();
+                        *w = w.max(r);
+                        runs += 1;
+                    }
+                    phong_approx::simd::force(chosen).unwrap();
+                }
+            };
+        }
+        fast_squared!(f32, Binary32);
+        fast_squared!(f64, Binary64);
         for &g in &GPUS[..tiered(1, 4)] {
             let gpu_imps: [(Method, &GpuRun); 7] = [
                 (Method::Gouraud, &|g, s| {

@@ -368,6 +368,50 @@ fn sq_signed_value_error() {
     }
 }
 
+/// `sq_shader_root_rounding` (proofs/Squared.v): a root taken as `1/inverseSqrt(x)`,
+/// `r̃` within `κ_r·u/√x + η` of `1/√x` and `ṽ` within `κ_d·u·|1/r̃| + η′` of `1/r̃`,
+/// is within `(κ_d·u + a)/(1 − a)·√x + η′ + √x_min` of `√x` (`a = κ_r·u + 3η`), and a
+/// flushed operand `x < x_min` read as 0 within the same: exactly, over rooted
+/// `x ∈ (0, 9]` with `r̃` and `ṽ` at their extremes, where `√x = 3` meets the bound
+/// with equality (so a smaller `k` fails here).
+#[test]
+fn sq_shader_root_rounding() {
+    // `u` large, so that the extremes are far apart; `κ`s of the shader model.
+    let (u, kr, kd) = (q(1, 1000), q(4, 1), q(5, 1));
+    let (eta, eta2, root_min) = (q(1, 10_000), q(1, 20_000), q(1, 1000));
+    let xmin = &root_min * &root_min;
+    let a = &kr * &u + q(3, 1) * &eta;
+    let k = (&kd * &u + &a) / (Q::one() - &a);
+    let mut tight = false;
+    let roots = [
+        q(1, 2000),
+        q(1, 1000),
+        q(1, 7),
+        q(1, 2),
+        Q::one(),
+        q(5, 3),
+        q(3, 1),
+    ];
+    for s in &roots {
+        let bound = &k * s + &eta2 + &root_min;
+        for s1 in [-1, 0, 1] {
+            let rt = Q::one() / s + q(s1, 1) * (&kr * &u / s + &eta);
+            for s2 in [-1, 0, 1] {
+                let inv = Q::one() / &rt;
+                let v = &inv + q(s2, 1) * (&kd * &u * inv.abs() + &eta2);
+                let err = (&v - s).abs();
+                assert!(err <= bound, "√x = {s}, r̃ = {rt}, ṽ = {v}: {err} > {bound}");
+                tight |= err == &bound - &root_min;
+            }
+        }
+        // The flushed case: an operand below x_min read as 0.
+        if s * s < xmin {
+            assert!(s.clone() <= bound, "flushed √x = {s}");
+        }
+    }
+    assert!(tight, "no extreme met the bound");
+}
+
 /// The catalogue's value (`Method::SquaredCorrectedEuler`, `sign(p)·√max(0, g)`) and
 /// the specular path (`SquaredSpan::specular`, `g^{s/2}` with no root for even `s`)
 /// agree: `max(0, v_i)^s` is the specular value at every pixel, `s = 0` included (1
@@ -399,4 +443,69 @@ fn the_catalogue_value_and_the_specular_path_agree() {
         spans += 1;
     }
     assert!(spans > 10, "{spans}");
+}
+
+/// The fast kernel (`phong_approx::fast::FastSquared`) is the generic run's
+/// operations in its order: the same set-up, the same value
+/// (`Method::SquaredCorrectedEuler`) and the same specular `g^{s/2}`
+/// (`SquaredSpan::specular`) to the bit, in `f32` and `f64`, on every vector path
+/// this CPU has, for unit and non-unit edge normals. (Its error against the exact
+/// value: `graph_sound`, `tests/graph.rs`.)
+#[test]
+fn the_fast_kernel_gives_the_generic_run_s_bits_on_every_path() {
+    use phong_approx::fast::FastSquared;
+    use phong_approx::simd::{self, Path};
+    let chosen = simd::path();
+    let mut checked = 0;
+    macro_rules! run {
+        ($t:ty) => {
+            for (na, nb, h, n) in inputs() {
+                let conv = |v: &Vec3<Q>| v.components().map(|x| <$t as Scalar>::from_rational(x));
+                let (a3, b3, h3) = (conv(&na), conv(&nb), conv(&h));
+                let vec = |x: [$t; 3]| Vec3::new(x[0], x[1], x[2]);
+                let Ok(sq) = SquaredSpan::<$t>::new(&vec(a3), &vec(b3), &vec(h3), n) else {
+                    continue;
+                };
+                let fast = FastSquared::<$t>::new(a3, b3, h3, n);
+                let bits = |x: &$t| x.to_bits();
+                assert_eq!(
+                    [fast.a, fast.b, fast.g_a, fast.ds, fast.t0].map(|x| x.to_bits()),
+                    [&sq.a, &sq.b, &sq.g_a, &sq.ds, &sq.t0].map(bits),
+                    "set-up of {na:?} {nb:?} {h:?} n = {n}"
+                );
+                let unit = Span::new(vec(a3), vec(b3), vec(h3), n).ok();
+                for path in Path::supported_paths() {
+                    simd::force(path).unwrap();
+                    let len = n as usize + 1;
+                    if let Some(span) = &unit {
+                        let want = phong_approx::Method::SquaredCorrectedEuler
+                            .values(span)
+                            .unwrap();
+                        let mut got = vec![0.0 as $t; len];
+                        fast.shade(&mut got);
+                        assert_eq!(
+                            got.iter().map(bits).collect::<Vec<_>>(),
+                            want.iter().map(bits).collect::<Vec<_>>(),
+                            "value on {path}, n = {n}"
+                        );
+                    }
+                    for s in [0, 1, 2, 7, 32, 128] {
+                        let (mut want, mut got) = (vec![0.0 as $t; len], vec![0.0 as $t; len]);
+                        sq.specular(s, &mut want).unwrap();
+                        fast.specular(s, &mut got);
+                        assert_eq!(
+                            got.iter().map(bits).collect::<Vec<_>>(),
+                            want.iter().map(bits).collect::<Vec<_>>(),
+                            "specular s = {s} on {path}, n = {n}"
+                        );
+                    }
+                    checked += 1;
+                }
+            }
+        };
+    }
+    run!(f32);
+    run!(f64);
+    simd::force(chosen).unwrap();
+    assert!(checked > 50, "{checked}");
 }

@@ -173,11 +173,13 @@ const ANGLE_PROFILES: ProfileBounds = ProfileBounds {
     graphs: &[],
 };
 // The squared method (docs/float.md §19.7): its graph alone under `ieee` and
-// `shader`, the value's root and sign composed by `sq_signed_value_error`.
+// `shader`, the value's root and sign composed by `sq_signed_value_error`, the root
+// taken as `1/inverseSqrt` under `shader` rounded as `sq_shader_root_rounding` says.
 const SQUARED_PROFILES: ProfileBounds = ProfileBounds {
     reference: None,
     float: FloatBound::Graphs {
         theorem: "sq_signed_value_error",
+        shader_root: "sq_shader_root_rounding",
         section: "docs/float.md §19.7",
     },
     fixed: NO_FIXED,

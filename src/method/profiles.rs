@@ -50,6 +50,9 @@ pub enum FloatBound {
     Graphs {
         /// The composing theorem (`sq_signed_value_error`).
         theorem: &'static str,
+        /// The theorem of the root's rounding where a profile takes a square root as
+        /// `1/inverseSqrt` (`shader`: `sq_shader_root_rounding`).
+        shader_root: &'static str,
         /// The section that derives the composition (`docs/float.md §19.7`).
         section: &'static str,
     },

@@ -194,8 +194,8 @@ pub enum Status {
     /// The bound of the method's operation graphs alone (their names), per pixel,
     /// composed with the value's last step by a theorem (its name): the squared
     /// method's `sign(p)·√max(0, g)` (`sq_signed_value_error`); the third field names
-    /// a step of the composition that is derived, not proved, where there is one
-    /// (under `shader`, the rounding of a root taken as `1/inverseSqrt`).
+    /// a second composing theorem where the profile needs one (under `shader`, the
+    /// rounding of a root taken as `1/inverseSqrt`: `sq_shader_root_rounding`).
     Graphs(&'static str, &'static [&'static str], Option<&'static str>),
 }
 
@@ -209,11 +209,11 @@ impl Status {
                 if graphs.len() == 1 { "graph" } else { "graphs" },
                 graphs.join(", ")
             ),
-            Status::Graphs(t, graphs, derived) => format!(
-                "proved{} (graph_sound on the {} {}, composed by {t})",
-                derived.map_or(String::new(), |d| format!(" but for {d}, derived")),
+            Status::Graphs(t, graphs, also) => format!(
+                "proved (graph_sound on the {} {}, composed by {t}{})",
                 if graphs.len() == 1 { "graph" } else { "graphs" },
-                graphs.join(", ")
+                graphs.join(", "),
+                also.map_or(String::new(), |a| format!(" and {a}"))
             ),
         }
     }
@@ -268,13 +268,16 @@ pub fn status(method: crate::Method, profile: Profile, format: Format) -> Option
             arith(profile, format).map(|_| per_pixel(theorems[0]))
         }
         // The graphs alone, where the profile has a model.
-        FloatBound::Graphs { theorem, .. } => (!row.graphs.is_empty())
+        FloatBound::Graphs {
+            theorem,
+            shader_root,
+            ..
+        } => (!row.graphs.is_empty())
             .then(|| {
-                // Under `shader` the root is `1/inverseSqrt`, whose rounding the
-                // composition takes from a written derivation (docs/float.md §19.7).
-                let derived = (profile == Profile::Shader)
-                    .then_some("the root's rounding as 1/inverseSqrt (docs/float.md §19.7)");
-                arith(profile, format).map(|_| Status::Graphs(theorem, row.graphs, derived))
+                // Under `shader` the root is `1/inverseSqrt`, whose rounding has its
+                // own theorem (docs/float.md §19.7).
+                let also = (profile == Profile::Shader).then_some(shader_root);
+                arith(profile, format).map(|_| Status::Graphs(theorem, row.graphs, also))
             })
             .flatten(),
         FloatBound::None(_) => None,

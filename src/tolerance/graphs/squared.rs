@@ -46,9 +46,10 @@ pub(super) fn squared(g: &mut Graph, s: &Setup, n: u32) -> (Vec<Id>, Vec<Id>) {
 /// computed `max(0, g̃)`): `|fl(√x) − √x| ≤ k·√x + η`. One square root: `k = κ·u`. As
 /// `1/inverseSqrt(x)` (the model's `sqrt_is_recip_rsqrt`): `inverseSqrt` within
 /// `κ_r·u/√x + η`, `η·√x ≤ 3η` for `x ≤ 9`, then the division's `κ_d·u`, so
-/// `k = (κ_d·u + κ_r·u + 3η)/(1 − κ_r·u − 3η)` (docs/float.md §19.7); both with the
-/// last operation's `η`, and, where the model flushes (`η > 0`), `√` of the format's
-/// smallest normal: a root whose operand below it is read as 0 is off by at most that.
+/// `k = (κ_d·u + κ_r·u + 3η)/(1 − κ_r·u − 3η)` (`sq_shader_root_rounding`,
+/// docs/float.md §19.7); both with the last operation's `η`, and, where the model
+/// flushes (`η > 0`), `√` of the format's smallest normal: a root whose operand below
+/// it is read as 0 is off by at most that (the same theorem's other case).
 fn root_rounding(model: &Model) -> (f64, f64) {
     let up = f64::next_up;
     let flushed = if model.eta > 0.0 {

@@ -66,10 +66,10 @@ fn markdown(st: &Status) -> String {
             "proved (`{t}`; per pixel the smaller with `graph_sound` on {})",
             named(graphs)
         ),
-        Status::Graphs(t, graphs, derived) => format!(
-            "proved{} (`graph_sound` on {}, composed by `{t}`)",
-            derived.map_or(String::new(), |d| format!(" but for {d}, derived")),
-            named(graphs)
+        Status::Graphs(t, graphs, also) => format!(
+            "proved (`graph_sound` on {}, composed by `{t}`{})",
+            named(graphs),
+            also.map_or(String::new(), |a| format!(" and `{a}`"))
         ),
     }
 }

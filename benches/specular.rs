@@ -12,10 +12,15 @@
 //!   polygon's edges), where corrected Euler must normalize them first.
 //!
 //! Spans of n = 8 (the paper's polygon size, where the set-up decides) and n = 512
-//! (the inner loop). `cargo bench --bench specular`, then `python3
+//! (the inner loop). Then the fast kernels on each vector path this CPU has
+//! (`phong_approx::simd`, forced in turn; ids `KERNEL/PATH`): `fast::FastSquared`'s
+//! specular pass against `fast::FastSpan`'s corrected Euler then the power, on unit and
+//! on non-unit edge normals. `cargo bench --bench specular`, then `python3
 //! benches/summarize.py` for the table of `docs/performance.md`.
 
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use phong_approx::fast::{FastSpan, FastSquared};
+use phong_approx::simd::{self, Path};
 use phong_approx::skip::float::{float_skips, FloatSpan, Margins};
 use phong_approx::skip::Candidates;
 use phong_approx::specular::power;
@@ -163,5 +168,109 @@ fn specular(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, specular);
+/// `max(0, v)^S` at every pixel on `path` (five squarings: `S = 32`), the loop
+/// compiled for the path's vector width.
+fn power_pass(path: Path, out: &mut [f32]) {
+    debug_assert_eq!(
+        path,
+        simd::path(),
+        "the path being measured is the forced one"
+    );
+    simd::dispatch(|_| {
+        for v in out.iter_mut() {
+            let mut x = v.max(0.0);
+            for _ in 0..5 {
+                x *= x;
+            }
+            *v = x;
+        }
+    })
+}
+
+/// Edge normals of unit length, divided by it.
+fn normalized(v: [f32; 3]) -> [f32; 3] {
+    let l = (v[0] * v[0] + v[1] * v[1] + v[2] * v[2]).sqrt();
+    v.map(|c| c / l)
+}
+
+fn specular_paths(c: &mut Criterion) {
+    assert_eq!(S, 32, "power_pass squares five times");
+    let (na, nb, h) = inputs();
+    let (ra, rb) = (na.map(|c| 0.9 * c), nb.map(|c| 1.1 * c));
+    let mut g = c.benchmark_group("specular_paths_f32");
+    g.warm_up_time(Duration::from_millis(300))
+        .measurement_time(Duration::from_millis(900))
+        .sample_size(30);
+    let chosen = simd::path();
+    for path in Path::supported_paths() {
+        simd::force(path).expect("a supported path");
+        for n in [8u32, 512] {
+            g.throughput(Throughput::Elements(u64::from(n) + 1));
+            let mut out = vec![0f32; n as usize + 1];
+            g.bench_with_input(
+                BenchmarkId::new(format!("corrected_euler_fast_then_power/{path}"), n),
+                &n,
+                |b, &n| {
+                    b.iter(|| {
+                        let s = FastSpan::<f32>::new(black_box(na), black_box(nb), black_box(h), n);
+                        s.corrected_euler(&mut out);
+                        power_pass(path, &mut out);
+                    })
+                },
+            );
+            g.bench_with_input(
+                BenchmarkId::new(
+                    format!("corrected_euler_fast_normalizing_then_power/{path}"),
+                    n,
+                ),
+                &n,
+                |b, &n| {
+                    b.iter(|| {
+                        let (a, bb) = (normalized(black_box(ra)), normalized(black_box(rb)));
+                        let s = FastSpan::<f32>::new(a, bb, black_box(h), n);
+                        s.corrected_euler(&mut out);
+                        power_pass(path, &mut out);
+                    })
+                },
+            );
+            for (name, a, bb) in [("squared_fast", na, nb), ("squared_fast_raw", ra, rb)] {
+                g.bench_with_input(
+                    BenchmarkId::new(format!("{name}/{path}"), n),
+                    &n,
+                    |b, &n| {
+                        b.iter(|| {
+                            let s = FastSquared::<f32>::new(
+                                black_box(a),
+                                black_box(bb),
+                                black_box(h),
+                                n,
+                            );
+                            s.specular(S, &mut out);
+                        })
+                    },
+                );
+            }
+            g.bench_with_input(
+                BenchmarkId::new(format!("squared_fast_set_up/{path}"), n),
+                &n,
+                |b, &n| {
+                    b.iter(|| {
+                        FastSquared::<f32>::new(black_box(ra), black_box(rb), black_box(h), n)
+                    })
+                },
+            );
+            g.bench_with_input(
+                BenchmarkId::new(format!("corrected_euler_fast_set_up/{path}"), n),
+                &n,
+                |b, &n| {
+                    b.iter(|| FastSpan::<f32>::new(black_box(na), black_box(nb), black_box(h), n))
+                },
+            );
+        }
+    }
+    simd::force(chosen).expect("the path chosen before");
+    g.finish();
+}
+
+criterion_group!(benches, specular, specular_paths);
 criterion_main!(benches);

@@ -482,6 +482,7 @@ fn copy_short<F: Copy>(dst: &mut [F], src: &[F]) {
 pub(crate) trait Kernels: Sized {
     fn quad(p0: Self, t: Self, ds: Self, out: &mut [Self]);
     fn each(out: &mut [Self], f: impl Fn(Self) -> Self);
+    fn map(out: &mut [Self], f: impl Fn(Self, Self) -> Self);
     fn phong5(c: [Self; 5], out: &mut [Self]);
 }
 
@@ -498,6 +499,10 @@ macro_rules! kernels_for {
                 #[inline(always)]
                 fn each(out: &mut [$f], f: impl Fn($f) -> $f) {
                     each_x(out, f)
+                }
+                #[inline(always)]
+                fn map(out: &mut [$f], f: impl Fn($f, $f) -> $f) {
+                    crate::simd::dispatch(|_| chunked(out, |o, x| *o = f(*o, x)))
                 }
                 #[inline(always)]
                 fn phong5(c: [$f; 5], out: &mut [$f]) {
@@ -520,6 +525,13 @@ fn quadratic<F: Kernels>(p0: F, t: F, ds: F, out: &mut [F]) {
 #[inline(always)]
 pub(crate) fn each_index<F: Kernels>(out: &mut [F], f: impl Fn(F) -> F) {
     F::each(out, f)
+}
+
+/// `out[i] = f(out[i], i)` with `i` as a float, eight pixels at a time on the chosen
+/// vector path.
+#[inline(always)]
+pub(crate) fn map_index<F: Kernels>(out: &mut [F], f: impl Fn(F, F) -> F) {
+    F::map(out, f)
 }
 
 /// `out[i] = (A i + B)/√(C i² + D i + E)` for the coefficients `[A, B, C, D, E]`

@@ -215,6 +215,70 @@ fn graph_sound() {
     assert!(runs > 1000, "{runs}");
 }
 
+/// The squared method's fast kernel (`fast::FastSquared`) on rows long enough for its
+/// lanes (`fast::STEPPED_FROM` pixels and more: the graph `lanes`) and just short of
+/// them (`closed`), in `f32` and `f64` on every vector path: within the graphs' `ieee`
+/// bound at every pixel (`graph_sound`; `graph_sound` above takes rows up to n = 64).
+#[test]
+fn the_squared_fast_kernel_is_within_the_graph_bound_on_long_rows() {
+    let z = Stereo(0, 0, 1);
+    let shapes = [
+        (z, Stereo(1, 0, 3), Stereo(2, 1, 5)),
+        (Stereo(1, 2, 3), Stereo(-3, 1, 4), Stereo(1, 1, 2)),
+        (z, Stereo(7, 3, 2), Stereo(3, -1, 5)),
+    ];
+    let from = phong_approx::fast::STEPPED_FROM as u32;
+    let mut ns = vec![from - 2, from - 1, from, from + 37];
+    if extensive() {
+        ns.extend([1000, 4096]);
+    }
+    let m = Method::SquaredCorrectedEuler;
+    let chosen = phong_approx::simd::path();
+    let mut worst = 0f64;
+    let mut runs = 0;
+    for n in ns {
+        for &(na, nb, l) in &shapes {
+            let c = Case {
+                why: "squared fast kernel, long rows",
+                na,
+                nb,
+                l,
+                n,
+            };
+            let Some(s) = c.span() else { continue };
+            let want = exact(m, Some(&c), &s);
+            macro_rules! run {
+                ($t:ty, $f:ident) => {
+                    let b = graph_bound(m, Profile::Ieee, Format::$f, &s).expect("a bound");
+                    let vec = |x: &phong_approx::Vec3<Q>| {
+                        [&x.x, &x.y, &x.z].map(|x| <$t as Native>::of(x))
+                    };
+                    let fast = phong_approx::fast::FastSquared::<$t>::new(
+                        vec(&s.na),
+                        vec(&s.nb),
+                        vec(&s.l),
+                        n,
+                    );
+                    for path in phong_approx::simd::Path::supported_paths() {
+                        phong_approx::simd::force(path).unwrap();
+                        let mut out = vec![0.0 as $t; n as usize + 1];
+                        fast.shade(&mut out);
+                        let got: Vec<Q> = out.iter().map(|x| x.q()).collect();
+                        let what = format!("FastSquared {} ({path}), n = {n}: {s}", stringify!($t));
+                        worst = worst.max(over(&what, &got, &want, &b));
+                        runs += 1;
+                    }
+                };
+            }
+            run!(f32, Binary32);
+            run!(f64, Binary64);
+        }
+    }
+    phong_approx::simd::force(chosen).unwrap();
+    println!("FastSquared on long rows: worst error {worst:.3} of the graph bound");
+    assert!(runs >= 24, "{runs}");
+}
+
 /// How the graphs' bounds compare with the profiles' formulas on the published sets
 /// (printed; asserts only that the graphs' are never above the formulas' by more than
 /// the 2^-20 of their rounding).

@@ -1,20 +1,20 @@
-//! The squared method's fast `f32`/`f64` kernel: the operations of
-//! [`crate::squared_corrected_euler::SquaredSpan`] in its order — so the same bits,
-//! and the same operation graph and bound (`docs/float.md` §19.7) — with the root, the
-//! sign and the specular power taken in a second pass that vectorizes.
+//! The squared method's fast `f32`/`f64` kernel: the set-up of
+//! [`crate::squared_corrected_euler::SquaredSpan::new`] by its operations in its order
+//! (the same bits), then `g_i` by corrected Euler's kernel on `g = p²/q`
+//! ([`super::FastSpan::corrected_euler`]'s loop: the closed form
+//! `g_a + i·(t_0 + (i − 1)·(ds/2))` on a row shorter than [`super::STEPPED_FROM`], the
+//! recurrence in [`super::LANES`] lanes on a longer one), then at every pixel on its
+//! own `p_i = B + i·A` and the value `sign(p_i)·√max(0, g_i)`, or for the specular
+//! term `g_i^{s/2}` by the repeated squaring of [`crate::specular::power`] in a pass
+//! of eight-pixel chunks; every loop on the chosen vector path ([`crate::simd`]).
 //!
-//! The first pass is the recurrence itself: `g += t; t += ds` (eqs. 16–17 on
-//! `g = p²/q`) and `p += A`, two additions a pixel and a third for the sign, a chain
-//! from one pixel to the next. It stores `sign(p)·g` where `g > 0` and `p ≠ 0`, else
-//! 0. The second pass takes, pixel by pixel and independently, `sign(y)·√|y|` (the
-//! value `sign(p)·√max(0, g)`) or the specular `g^{s/2}` by the repeated squaring of
-//! [`crate::specular::power`], in eight-pixel chunks on the chosen vector path
-//! ([`crate::simd`]). The closed form `g_a + i·t_0 + i(i − 1)/2·ds` would vectorize
-//! the first pass too, but its rounding is not the recurrence's: no graph of the
-//! method bounds it, so no kernel here takes it.
+//! These are the operations of the method's operation graphs `closed` and `lanes`
+//! (`tolerance::graphs`, `docs/float.md` §19.7), so its `ieee` bound covers the
+//! kernel; [`SquaredSpan`]'s recurrence pixel after pixel is the graph `recurrence`.
 //!
-//! Tested: `tests/squared.rs` (the same bits as [`SquaredSpan`] on every path, and
-//! within the graph's bound at every pixel). Measured: `benches/paths.rs`.
+//! Tested: `tests/squared.rs` (the set-up's bits, the values against the recurrence,
+//! the same bits on every path) and `tests/graph.rs` (`graph_sound`: within the bound
+//! at every pixel). Measured: `benches/specular.rs`.
 //!
 //! [`SquaredSpan`]: crate::squared_corrected_euler::SquaredSpan
 
@@ -81,49 +81,39 @@ macro_rules! squared_impl {
                 }
             }
 
-            /// The first pass: `out[i] = y(g_i, p_i)` by the recurrences
-            /// `g += t; t += ds` and `p += A`.
+            /// `out[i] = y(g_i, p_i)`: `g_i` by corrected Euler's kernel
+            /// ([`super::FastSpan::corrected_euler`]'s loop: the closed form on a
+            /// short row, the recurrence in lanes on a long one), then `p_i` by its
+            /// closed form, every pixel on its own.
             #[inline(always)]
-            fn walk(&self, out: &mut [$f], y: impl Fn($f, $f) -> $f) {
-                let (mut g, mut t, mut p) = (self.g_a, self.t0, self.b);
-                for o in out.iter_mut() {
-                    *o = y(g, p);
-                    g += t;
-                    t += self.ds;
-                    p += self.a;
-                }
+            fn each(&self, out: &mut [$f], y: impl Fn($f, $f) -> $f) {
+                let (a, b) = (self.a, self.b);
+                super::quadratic(self.g_a, self.t0, self.ds, out);
+                super::map_index(out, |g, x| y(g, b + x * a))
             }
 
             /// The value `sign(p_i)·√max(0, g_i)` at `i = 0..out.len()` (0 where
-            /// `p_i = 0`): [`crate::squared_corrected_euler::shade`]'s bits.
+            /// `p_i = 0`), [`crate::squared_corrected_euler::shade`]'s value.
             pub fn shade(&self, out: &mut [$f]) {
-                self.walk(out, |g, p| {
+                self.each(out, |g, p| {
                     if g > 0.0 && p != 0.0 {
-                        if p > 0.0 {
-                            g
-                        } else {
-                            -g
-                        }
+                        g.sqrt().copysign(p)
                     } else {
                         0.0
-                    }
-                });
-                crate::simd::dispatch(|_| {
-                    for o in out.iter_mut() {
-                        *o = o.abs().sqrt().copysign(*o);
                     }
                 })
             }
 
             /// The specular term `max(0, v_i)^shininess = g_i^{s/2}` where `p_i > 0`
-            /// (else 0; 1 everywhere for `s = 0`):
-            /// [`crate::squared_corrected_euler::SquaredSpan::specular`]'s bits.
+            /// (else 0; 1 everywhere for `s = 0`), as
+            /// [`crate::squared_corrected_euler::SquaredSpan::specular`] computes it
+            /// from its `g_i`.
             pub fn specular(&self, shininess: u32, out: &mut [$f]) {
                 if shininess == 0 {
                     out.fill(1.0);
                     return;
                 }
-                self.walk(out, |g, p| if p > 0.0 && g > 0.0 { g } else { 0.0 });
+                self.each(out, |g, p| if p > 0.0 && g > 0.0 { g } else { 0.0 });
                 let (half, odd) = (shininess / 2, !shininess.is_multiple_of(2));
                 crate::simd::dispatch(|_| {
                     let mut chunks = out.chunks_exact_mut(8);

@@ -183,7 +183,7 @@ const SQUARED_PROFILES: ProfileBounds = ProfileBounds {
         section: "docs/float.md §19.7",
     },
     fixed: NO_FIXED,
-    graphs: &["recurrence"],
+    graphs: &["recurrence", "closed", "lanes"],
 };
 const RELATED_PROFILES: ProfileBounds = ProfileBounds {
     reference: None,

@@ -12,6 +12,7 @@ use super::profile::Form;
 use crate::Method;
 
 mod squared;
+use squared::Walk;
 
 /// One form of a method: its graph and the node of each pixel's value.
 #[derive(Clone, Debug)]
@@ -311,10 +312,13 @@ pub fn for_each_graph<E>(
             }
         }
         Method::SquaredCorrectedEuler if form == Form::Any => {
-            f(make(names[0], &|g, s| {
-                let (values, signs) = squared::squared(g, s, n);
-                (vec![values], Some(signs))
-            }))?;
+            let walks = [Walk::Recurrence, Walk::Closed, Walk::Lanes];
+            for (name, walk) in names.iter().zip(walks) {
+                f(make(name, &|g, s| {
+                    let (values, signs) = squared::squared(g, s, n, walk);
+                    (vec![values], Some(signs))
+                }))?;
+            }
         }
         _ => return Ok(None),
     }

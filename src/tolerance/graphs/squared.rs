@@ -1,15 +1,44 @@
-//! The squared method's graph and its value's last step (`docs/float.md` §19.7): the
+//! The squared method's graphs and its value's last step (`docs/float.md` §19.7): the
 //! set-up of [`crate::squared_corrected_euler::SquaredSpan::new`] in its order (each
-//! dot product in any order, `/n` either way), `g += t; t += ds` from `g_a`, and
-//! `p += A` from `B`; the value `sign(p̃)·√max(0, g̃)` is composed from the graph's
+//! dot product in any order, `/n` either way), then `g_i` and `p_i` in one of three
+//! ways ([`Walk`]): the recurrences `g += t; t += ds` from `g_a` and `p += A` from `B`
+//! (`recurrence`, [`crate::squared_corrected_euler`]); or the fast kernel's
+//! ([`crate::fast::FastSquared`]), `p_i = B + i·A` with `g_i` by the closed form
+//! `g_a + i·(t_0 + (i − 1)·(ds/2))` (`closed`, its rows shorter than
+//! [`crate::fast::STEPPED_FROM`]) or by the recurrence in [`crate::fast::LANES`] lanes
+//! (`lanes`, its longer rows); the value `sign(p̃)·√max(0, g̃)` is composed from the graph's
 //! bounds on `g_i` and `p_i` by `sq_signed_value_error` (`proofs/Squared.v`), not by
 //! a node: its root may be of zero and its sign may flip.
 
 use super::super::graph::{Bounds, Graph, Id, Model};
 use super::{recurrence, Setup};
 
-/// The pixels' `g_i` and `p_i` nodes of the squared method on `n` steps.
-pub(super) fn squared(g: &mut Graph, s: &Setup, n: u32) -> (Vec<Id>, Vec<Id>) {
+/// How an implementation walks `g_i` and `p_i` from the set-up.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) enum Walk {
+    /// `g += t; t += ds` and `p += A`, pixel after pixel.
+    Recurrence,
+    /// `g_i = g_a + i·(t_0 + (i − 1)·(ds/2))`, `p_i = B + i·A`, each pixel on its own.
+    Closed,
+    /// `g` by the recurrence in [`crate::fast::LANES`] lanes (lane `j` from the closed
+    /// form at `j`, stepping `L·(t_0 + ds·(j + (L − 1)/2))` then `L²·ds`, `L` the
+    /// lanes), `p_i = B + i·A`.
+    Lanes,
+}
+
+/// The closed form `g_a + x·(t_0 + (x − 1)·h)` at the exact index `x`, `h = ds/2`.
+fn closed_at(g: &mut Graph, x: f64, g_a: Id, t0: Id, h: Id) -> Id {
+    let c = g.cst(x - 1.0);
+    let m = g.mul(c, h);
+    let slope = g.add(t0, m);
+    let xc = g.cst(x);
+    let step = g.mul(xc, slope);
+    g.add(g_a, step)
+}
+
+/// The pixels' `g_i` and `p_i` nodes of the squared method on `n` steps, walked as
+/// `walk` says.
+pub(super) fn squared(g: &mut Graph, s: &Setup, n: u32, walk: Walk) -> (Vec<Id>, Vec<Id>) {
     let two = g.cst(2.0);
     let q_b = g.dot(s.nb, s.nb);
     let bb = g.mul(s.b, s.b);
@@ -37,8 +66,50 @@ pub(super) fn squared(g: &mut Graph, s: &Setup, n: u32) -> (Vec<Id>, Vec<Id>) {
     let eps = g.sub(g_n, g_b);
     let d_eps = g.div_either(eps, s.n);
     let t0 = g.sub(dg_a, d_eps);
-    let values = recurrence(g, n, g_a, t0, Some(ds));
-    let signs = recurrence(g, n, s.b, s.a, None);
+    if walk == Walk::Recurrence {
+        let values = recurrence(g, n, g_a, t0, Some(ds));
+        let signs = recurrence(g, n, s.b, s.a, None);
+        return (values, signs);
+    }
+    let signs = (0..=n)
+        .map(|i| {
+            let ic = g.cst(f64::from(i));
+            let step = g.mul(ic, s.a);
+            g.add(s.b, step)
+        })
+        .collect();
+    let h = g.half(ds);
+    let values = if walk == Walk::Closed {
+        (0..=n)
+            .map(|i| closed_at(g, f64::from(i), g_a, t0, h))
+            .collect()
+    } else {
+        let lanes = crate::fast::LANES as u32;
+        let l = f64::from(lanes);
+        let ll = g.cst(l * l);
+        let dsl = g.mul(ll, ds);
+        let lc = g.cst(l);
+        let mut values = vec![g_a; n as usize + 1];
+        for j in 0..lanes.min(n + 1) {
+            let x = f64::from(j);
+            let mut v = closed_at(g, x, g_a, t0, h);
+            let c = g.cst(x + (l - 1.0) * 0.5);
+            let m = g.mul(ds, c);
+            let slope = g.add(t0, m);
+            let mut t = g.mul(lc, slope);
+            let mut i = j;
+            loop {
+                values[i as usize] = v;
+                i += lanes;
+                if i > n {
+                    break;
+                }
+                v = g.add(v, t);
+                t = g.add(t, dsl);
+            }
+        }
+        values
+    };
     (values, signs)
 }
 

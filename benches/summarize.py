@@ -177,3 +177,23 @@ if os.path.isdir(base):
         t = {n: est(os.path.join(base, k, str(n))) for n in ns if os.path.isdir(os.path.join(base, k, str(n)))}
         print(f"| {k} | " + " | ".join(f"{t[n]:.0f}" if n in t else "" for n in ns) + " | "
               + " | ".join((f"{t[n] / ref[n]:.0f}" if t[n] / ref[n] >= 10 else f"{t[n] / ref[n]:.2f}") if n in t else "" for n in ns) + " |")
+
+base = os.path.join(root, "specular_paths_f32")
+if os.path.isdir(base):
+    print("\n### The fast kernels' specular span per vector path, f32, s = 32 (benches/specular.rs): ns per span, set-up included\n")
+    paths = ["baseline", "avx2", "avx512"]
+    found = []
+    for d in sorted(os.listdir(base)):
+        for p in paths:
+            if d.endswith("_" + p):
+                found.append((d[: -len(p) - 1], p, d))
+    ns = sorted({int(n) for _, _, d in found for n in os.listdir(os.path.join(base, d)) if n.isdigit()})
+    print("| row | path | " + " | ".join(f"n = {n}" for n in ns) + " | "
+          + " | ".join(f"÷ corrected Euler then power (n = {n})" for n in ns) + " |")
+    print("|---|---|" + "---:|" * (2 * len(ns)))
+    order = {p: i for i, p in enumerate(paths)}
+    for k, p, d in sorted(found, key=lambda r: (r[0], order[r[1]])):
+        ref = {n: est(os.path.join(base, f"corrected_euler_fast_then_power_{p}", str(n))) for n in ns}
+        t = {n: est(os.path.join(base, d, str(n))) for n in ns if os.path.isdir(os.path.join(base, d, str(n)))}
+        print(f"| {k} | {p} | " + " | ".join(f"{t[n]:.0f}" if n in t else "" for n in ns) + " | "
+              + " | ".join(f"{t[n] / ref[n]:.2f}" if n in t else "" for n in ns) + " |")

@@ -395,6 +395,8 @@ Check sq_signed_value_error.
 Print Assumptions sq_signed_value_error.
 Check sq_shader_root_rounding.
 Print Assumptions sq_shader_root_rounding.
+Check sq_skip_sound.
+Print Assumptions sq_skip_sound.
 
 (** SkipFloat.v *)
 Check float_skip_sound.

@@ -34,7 +34,12 @@
       computed max(0, g) ≤ 9, under a float model with relative error k·u and
       absolute term eta per operation: writing r = (1 + ρ)/√x,
       |ρ| ≤ kr·u + 3·eta =: a < 1, so |v − √x| ≤ (kd·u + a)/(1 − a)·√x
-      + eta' + √xmin, the last term for a flushed operand x < xmin read as 0.
+      + eta' + √xmin, the last term for a flushed operand x < xmin read as 0;
+    - [sq_skip_sound]: the skip test: its specular term is
+      √max(0, g(t))^s, g the quadratic [v] of Skip.v on the span, and
+      [skip_quadratic] on g with 255·Ks² in place of Ks (checking
+      (255·Ks)²·g(c)^s < 1 at the candidates c) gives
+      255·Ks·√max(0, g(t))^s < 1 for every t ∈ [0, n].
 
     Code: src/squared_corrected_euler.rs. *)
 
@@ -335,4 +340,27 @@ Proof.
     apply Rmult_le_compat_l with (r := s) in Hm1; [| lra].
     replace (v - s) with ((v - / r) + (/ r - s)) by ring.
     pose proof (Rabs_triang (v - / r) (/ r - s)). rewrite Hd, Hir in *. lra.
+Qed.
+
+(** The skip test of the squared method: its specular term is
+    max(0, v)^s = √max(0, g)^s with g the quadratic [v] of Skip.v, and the
+    test runs [skip_quadratic] on g with 255·Ks² in place of Ks, i.e. checks
+    (255·Ks)²·g(c)^s < 1 at the candidates c; then 255·Ks·√max(0, g(t))^s < 1
+    on the whole span. *)
+Theorem sq_skip_sound : forall ga t0 ds n Ks s,
+  0 <= n -> 0 <= Ks -> (1 <= s)%nat ->
+  skip_quadratic ga t0 ds n (255 * Ks ^ 2) s ->
+  forall t, 0 <= t <= n -> 255 * Ks * sqrt (Rmax 0 (v ga t0 ds t)) ^ s < 1.
+Proof.
+  intros ga t0 ds n Ks s Hn HK Hs Hskip t Ht.
+  assert (HK2 : 0 <= 255 * Ks ^ 2) by nra.
+  pose proof (quadratic_skip_sound ga t0 ds n _ s Hn HK2 Hs Hskip t Ht) as H.
+  set (M := Rmax 0 (v ga t0 ds t)) in *.
+  assert (HM : 0 <= M) by apply Rmax_l.
+  assert (Hx : (sqrt M ^ s) ^ 2 = M ^ s).
+  { rewrite <- pow_mult, Nat.mul_comm, pow_mult, <- Rsqr_pow2, Rsqr_sqrt; lra. }
+  pose proof (pow_le _ s (sqrt_pos M)) as H0.
+  set (x := sqrt M ^ s) in *.
+  assert (Hy : (255 * Ks * x) ^ 2 < 1) by (rewrite Rpow_mult_distr, Hx; nra).
+  assert (0 <= 255 * Ks * x) by (apply Rmult_le_pos; lra). nra.
 Qed.

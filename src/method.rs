@@ -33,7 +33,7 @@ pub use list::Method;
 
 pub use catalogue::{
     Bound, DerivedForm, Family, FixedBound, FloatBound, Info, Needs, PhongPixels, ProfileBounds,
-    Proved, ValueRange, WholeSpan,
+    Proved, Roots, ValueRange, WholeSpan,
 };
 
 /// The table size of the second source's byte angles.
@@ -207,7 +207,8 @@ impl Method {
 
     /// The exact 8-bit levels of `values`, the method's exact run on `span`, scaled
     /// by `kd ≥ 0`: for Phong-valued methods decided from `kd·p_i` and `q_i` in
-    /// rationals (no square root); for field-only methods `level(kd·v)` of the exact
+    /// rationals (no square root), and so for a method whose value is a root of its
+    /// exact run's rationals ([`Info::roots`]); for field-only methods `level(kd·v)` of the exact
     /// value; otherwise decided within the run's error ([`Method::exact_bits`]), and
     /// `None` at a pixel whose value is within that error of a level boundary (or
     /// missing from `values`: a Phong-valued method needs none, so its exact run, with
@@ -233,13 +234,15 @@ impl Method {
         bits: Option<i64>,
     ) -> Vec<Option<u8>> {
         let phong = self.info().phong_pixels;
+        let roots = self.info().roots.pairs(span);
         let e = bits.map(|b| {
             kd.clone()
                 * BigRational::new(1.into(), num_bigint::BigInt::from(1) << b.max(0) as usize)
         });
         (0..=span.n)
             .map(|i| {
-                if let Some((p, q)) = phong.exact_at(span, i) {
+                let pair = phong.exact_at(span, i);
+                if let Some((p, q)) = pair.or_else(|| roots.as_ref()?.get(i as usize).cloned()) {
                     return phong_level_exact(&(p * kd.clone()), &q);
                 }
                 let v = values.get(i as usize)?;
@@ -256,8 +259,8 @@ impl Method {
 
     /// The exact 8-bit levels of `max(0, v)^s` (the specular term) for the method's
     /// exact run `values` on `span` (with `L` the half vector): decided in rationals
-    /// where the value is known ([`PhongPixels::exact_at`]: `ℓ ≤ 255·(p/√q)^s` iff
-    /// `ℓ²·q^s ≤ 255²·p^{2s}` for `p > 0`) or exact, else within `s` times the run's
+    /// where the value is known ([`PhongPixels::exact_at`], [`Info::roots`]:
+    /// `ℓ ≤ 255·(p/√q)^s` iff `ℓ²·q^s ≤ 255²·p^{2s}` for `p > 0`) or exact, else within `s` times the run's
     /// error (`|d(v^s)/dv| ≤ s` on `[0, 1]`, and `(1 + e)^{s−1} < 1.01` for the
     /// errors here), `None` where that straddles a level boundary.
     pub fn exact_power_levels(
@@ -268,6 +271,7 @@ impl Method {
     ) -> Vec<Option<u8>> {
         use num_traits::{Pow, Signed};
         let phong = self.info().phong_pixels;
+        let roots = self.info().roots.pairs(span);
         let e = self.exact_bits(span).map(|b| {
             BigRational::new(
                 (101 * i64::from(s)).into(),
@@ -279,7 +283,8 @@ impl Method {
             .iter()
             .enumerate()
             .map(|(i, v)| {
-                if let Some((p, q)) = phong.exact_at(span, i as u32) {
+                let pair = phong.exact_at(span, i as u32);
+                if let Some((p, q)) = pair.or_else(|| roots.as_ref()?.get(i).cloned()) {
                     if s == 0 {
                         return Some(255);
                     }

@@ -218,7 +218,9 @@ impl Candidates {
     /// The candidates of `method` on `span`: Phong's for the methods whose exact values
     /// are Phong's at every pixel ([`Method::is_phong_valued`]), the quadratic's for
     /// those whose closed form is one (the catalogue's `closed_form`: Gouraud's line,
-    /// Euler's and corrected Euler's quadratics).
+    /// Euler's and corrected Euler's quadratics), and for the squared method
+    /// ([`crate::method::Roots::SignedRootOfG`]) the quadratic `g`'s, compared as
+    /// squares: its specular term is `g^{s/2}` (`sq_skip_sound`).
     ///
     /// # Errors
     /// [`SkipError::NormalVanishes`] (Phong's), [`SkipError::Unsupported`] for the
@@ -227,6 +229,12 @@ impl Candidates {
         let quadratic = |s0: &BigRational, ds: &BigRational| {
             Ok(Candidates::quadratic(&span.p_a, s0, ds, span.n))
         };
+        if method.info().roots == crate::method::Roots::SignedRootOfG {
+            let sq = crate::squared_corrected_euler::SquaredSpan::of(span)
+                .map_err(|_| SkipError::NormalVanishes)?;
+            let g = Candidates::quadratic(&sq.g_a, &sq.t0, &sq.ds, span.n);
+            return Ok(Candidates { squared: true, ..g });
+        }
         match method.info().closed_form {
             Some(Valued::Gouraud) => quadratic(&((&span.p_b - &span.p_a) / &span.n_s), &q(0)),
             Some(Valued::Euler) => quadratic(&span.di_a, &span.ds),
@@ -240,7 +248,8 @@ impl Candidates {
     /// Whether `K_s·max(0, v)^s` is below one level at every real `t ∈ [0, n]`:
     /// `(255·K_s)²·(p²/q)^s < 1` at each of Phong's positive candidates
     /// (`phong_skip_sound`, whose `ok` is `(255·K_s)²·p^{2s} < q^s`), `255·K_s·v^s < 1` at
-    /// each of the quadratic's (`quadratic_skip_sound`).
+    /// each of the quadratic's (`quadratic_skip_sound`), `(255·K_s)²·g^s < 1` at each of
+    /// the squared method's (`sq_skip_sound`).
     ///
     /// # Errors
     /// [`SkipError`]: a shininess outside `1..=MAX_SHININESS` or a negative `K_s`.

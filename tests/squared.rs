@@ -528,3 +528,123 @@ fn the_fast_kernel_is_the_generic_run_in_closed_form_on_every_path() {
     simd::force(chosen).unwrap();
     assert!(checked > 50, "{checked}");
 }
+
+/// The squared method's exact levels (`Method::exact_levels`, `exact_power_levels`)
+/// are decided in rationals at every pixel (`method::Roots::SignedRootOfG`), not
+/// within the root's 2^-256: with `K_d` chosen so that `K_d·v_i` lies within about
+/// 2^-300 of a level boundary at an inner pixel, every level is decided and equals the
+/// largest `ℓ` with `ℓ² ≤ 255²·K_d²·g_i` (`p_i > 0`), computed here from `g_i` of the
+/// closed form (`sq_closed_form`) and `p_i = B + i·A`; the specular levels likewise
+/// from `ℓ² ≤ 255²·g_i^s`.
+#[test]
+fn the_levels_are_decided_exactly_at_a_boundary() {
+    use num_bigint::BigInt;
+    use phong_approx::Method;
+    let level = |x: &Q| -> u8 {
+        // The largest ℓ ≤ 255 with ℓ² ≤ x (x = 255²·v², v ≥ 0).
+        (0..=255u32)
+            .rev()
+            .find(|&l| Q::from_integer((l * l).into()) <= *x)
+            .unwrap() as u8
+    };
+    let mut near = 0;
+    for (na, nb, h, n) in inputs() {
+        let Ok(span) = Span::new(na, nb, h, n) else {
+            continue;
+        };
+        if n < 2 || near == tiered(12, 1000) {
+            continue;
+        }
+        let sq = SquaredSpan::of(&span).unwrap();
+        let g_at = |i: u32| {
+            let i = q(i.into(), 1);
+            &sq.g_a + &i * &sq.t0 + &i * (&i - Q::one()) / q(2, 1) * &sq.ds
+        };
+        let p_at = |i: u32| &sq.b + q(i.into(), 1) * &sq.a;
+        let i = n / 2;
+        let (g, p) = (g_at(i), p_at(i));
+        if !(g.is_positive() && p.is_positive()) {
+            continue;
+        }
+        // r ≈ √g within 2^-300, then K_d = 100/(255·r): K_d·√g_i = (100/255)(1 + δ).
+        let scale = BigInt::from(1) << 300usize;
+        let (num, den) = (g.numer().clone(), g.denom().clone());
+        let r = Q::new((num * &den * &scale * &scale).sqrt(), den * &scale);
+        let kd = q(100, 255) / r;
+        let values = Method::SquaredCorrectedEuler.values(&span).unwrap();
+        let got = Method::SquaredCorrectedEuler.exact_levels(&span, &values, &kd);
+        let big = Q::from_integer((255 * 255).into());
+        for (j, lv) in got.iter().enumerate() {
+            let (g, p) = (g_at(j as u32), p_at(j as u32));
+            let want = if g.is_positive() && p.is_positive() {
+                level(&(&big * &kd * &kd * &g))
+            } else {
+                0
+            };
+            assert_eq!(*lv, Some(want), "pixel {j} of {span}");
+        }
+        for s in [1, 2, 7] {
+            let spec = Method::SquaredCorrectedEuler.exact_power_levels(&span, &values, s);
+            for (j, lv) in spec.iter().enumerate() {
+                let (g, p) = (g_at(j as u32), p_at(j as u32));
+                let want = if g.is_positive() && p.is_positive() {
+                    level(&(&big * num_traits::Pow::pow(&g, s)))
+                } else {
+                    0
+                };
+                assert_eq!(*lv, Some(want), "s = {s}, pixel {j} of {span}");
+            }
+        }
+        near += 1;
+    }
+    assert!(near >= 12, "{near}");
+}
+
+/// `sq_skip_sound` (proofs/Squared.v): where the skip test of the squared method
+/// (`skip::specular_skips`, its quadratic `g`'s candidates compared as squares) says
+/// skip, the specular term `255·K_s·max(0, v)^s = 255·K_s·g^{s/2}` (`p > 0`) is below
+/// one level at every pixel and half-pixel, exactly: `(255·K_s)²·g(t)^s < 1`, with
+/// `g(t)` from the closed form computed here. Both answers occur.
+#[test]
+fn sq_skip_sound() {
+    use phong_approx::skip::specular_skips;
+    use phong_approx::Method;
+    let (mut skipped, mut shaded) = (0, 0);
+    for (na, nb, h, n) in inputs() {
+        let Ok(span) = Span::new(na, nb, h, n) else {
+            continue;
+        };
+        let sq = SquaredSpan::of(&span).unwrap();
+        let g = |t: &Q| &sq.g_a + t * &sq.t0 + t * (t - Q::one()) / q(2, 1) * &sq.ds;
+        let p = |t: &Q| &sq.b + t * &sq.a;
+        for ks in [Q::one(), q(1, 2), q(1, 10)] {
+            for s in [1, 2, 8, 32, 128] {
+                if !specular_skips(Method::SquaredCorrectedEuler, &span, &ks, s).unwrap() {
+                    shaded += 1;
+                    continue;
+                }
+                skipped += 1;
+                let k2 = q(255, 1) * &ks * q(255, 1) * &ks;
+                for j in 0..=2 * n {
+                    let t = q(j.into(), 2);
+                    let (gt, pt) = (g(&t), p(&t));
+                    if gt.is_positive() && pt.is_positive() {
+                        // A float filter far from 1 (its relative error is below
+                        // 2^-40 here), else the exact comparison.
+                        let f = (&k2 * Q::one()).to_f64() * gt.to_f64().powi(s as i32);
+                        if f > 0.5 {
+                            assert!(
+                                &k2 * power(&gt, s) < Q::one(),
+                                "t = {t}, K_s = {ks}, s = {s}: {span}"
+                            );
+                        }
+                    }
+                }
+            }
+        }
+    }
+    assert!(
+        skipped > 10 && shaded > 10,
+        "{skipped} skipped, {shaded} shaded"
+    );
+}

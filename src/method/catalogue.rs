@@ -43,6 +43,10 @@ pub struct Info {
     /// 8-bit level there is decided from `p_i` and `q_i` in rationals
     /// ([`phong_level_exact`](crate::reference::level::phong_level_exact)) however close it is to a level boundary.
     pub phong_pixels: PhongPixels,
+    /// Where its exact value is a root of a rational of its exact run at every pixel
+    /// (the squared method's `sign(p_i)·√max(0, g_i)`), so that its exact 8-bit level
+    /// is decided in rationals everywhere, as at [`Info::phong_pixels`].
+    pub roots: Roots,
     /// Whether part of the method is a reconstruction from an incomplete description
     /// (`docs/comparison.md`).
     pub reconstructed: bool,
@@ -202,6 +206,54 @@ pub enum PhongPixels {
     Table,
     /// None known.
     None,
+}
+
+/// A method whose exact value at every pixel is a root of a rational of its exact
+/// run: its levels, diffuse and specular, are decided from `(p, q)` with the value
+/// `p/√q` ([`Roots::pairs`]), as Phong's are, however close to a level boundary.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Roots {
+    /// The squared method's `sign(p_i)·√max(0, g_i)`, `g_i` and `p_i` its exact
+    /// recurrences (`sq_closed_form`, exact in rationals): `p/√q` with
+    /// `(p, q) = (sign(p_i)·g_i, g_i)` where `g_i > 0`, else `(0, 1)`.
+    SignedRootOfG,
+    /// None: the value is the exact run's rational, or known to its precision only.
+    None,
+}
+
+impl Roots {
+    /// `(p, q)` at every pixel of `span`, `q > 0`, with the method's exact value
+    /// `p/√q`; `None` for [`Roots::None`] or a span the method refuses.
+    pub fn pairs(&self, span: &Span<BigRational>) -> Option<Vec<(BigRational, BigRational)>> {
+        use num_traits::{One, Signed, Zero};
+        match self {
+            Roots::None => None,
+            Roots::SignedRootOfG => {
+                let sq = crate::squared_corrected_euler::SquaredSpan::of(span).ok()?;
+                let mut g = vec![BigRational::zero(); span.n as usize + 1];
+                sq.shade(&mut g).ok()?;
+                let mut p = sq.b.clone();
+                let pairs = g
+                    .into_iter()
+                    .map(|g| {
+                        let pair = if g.is_positive() && !p.is_zero() {
+                            let signed = if p.is_positive() {
+                                g.clone()
+                            } else {
+                                -g.clone()
+                            };
+                            (signed, g)
+                        } else {
+                            (BigRational::zero(), BigRational::one())
+                        };
+                        p += &sq.a;
+                        pair
+                    })
+                    .collect();
+                Some(pairs)
+            }
+        }
+    }
 }
 
 impl PhongPixels {

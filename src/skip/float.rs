@@ -21,6 +21,8 @@
 //!   `v(t) = p_a + t·s_0 + t(t − 1)/2·ds` with `p_a`, `s_0`, `ds` from the span's
 //!   set-up formulas (eqs. 10–17) in intervals; candidates `0`, `n`, and the vertex
 //!   `1/2 − s_0/ds` where `ds < 0` (all of `[0, n]` where `ds`'s sign is unknown).
+//! - The squared method has no float form here ([`SkipError::Unsupported`]): its exact
+//!   test ([`super::Candidates::of`], `sq_skip_sound`) decides in rationals.
 //! - At each candidate's bound `F`, with the allowance `e` (the method's proved
 //!   per-pixel error bound on the span, [`Margins::ieee`]) and the format's unit
 //!   roundoff `u`: the test passes when `255·K_s·(F + e)^s·(1 + u)^{2s+2} < 1`, all in

@@ -5,6 +5,7 @@
 //! - `phong-approx compare`: every method of the paper and its related work, diffuse
 //!   and specular, in five precisions, with pictures (`docs/comparison.md`).
 //! - `phong-approx vectors` / `check`: the conformance kit.
+//! - `phong-approx skip`: whether a span's specular pass may be skipped (§7.1, a).
 //! - `phong-approx setup`: each case's set-up rounded to fixed point, for a hardware
 //!   span unit (`harness/hdl/`).
 //! - `phong-approx gpu-check`: a compute kernel run on a GPU adapter and judged as
@@ -44,6 +45,10 @@ enum Command {
     /// Check an implementation's results against a vector file (exit 0 pass, 1 fail).
     #[command(allow_negative_numbers = true)]
     Check(cli::check::CheckArgs),
+    /// Decide whether a span's specular pass may be skipped (the paper's §7.1 question):
+    /// the exact test and the float form with its margins.
+    #[command(allow_negative_numbers = true)]
+    Skip(cli::skip::SkipArgs),
     /// Print each case's set-up rounded to a fixed-point format M.F: the inputs of a
     /// hardware span unit (harness/hdl, docs/conformance.md "Hardware span units").
     Setup(cli::setup::SetupArgs),
@@ -96,6 +101,7 @@ fn main() -> ExitCode {
         Command::Vectors(args) => cli::vectors::run(&args),
         Command::Check(args) => cli::check::run(&args),
         Command::Setup(args) => cli::setup::run(&args),
+        Command::Skip(args) => cli::skip::run(&args),
         Command::GpuCheck(args) => cli::gpu::run(&args),
     };
     match result {

@@ -642,3 +642,77 @@ fn setup_rounds_each_cases_set_up_to_nearest() {
         );
     }
 }
+
+/// `phong-approx skip`: the exact and float decisions on a span whose highlight is far
+/// (skip: checked here, `(255·K_s)²·p_i^{2s} < q_i^s` at every pixel and half-pixel
+/// from `p` and `q` computed here) and on one whose first pixel is lit (shade:
+/// `255·K_s·p_a^s ≥ 1`); the squared method's float form says it has none; bad input
+/// is one line and exit 2.
+#[test]
+fn skip_decides_and_refuses_bad_input() {
+    let common = ["--steps", "8", "--ks", "1/2", "--shininess", "32"];
+    let run = |m: &str, h: &str| {
+        let mut a = vec!["skip", "--method", m, "--na", "0,0,1", "--nb", "3/5,0,4/5"];
+        a.extend(["--half-vector", h]);
+        a.extend(common);
+        run_json(&a)
+    };
+    // H = (0, 3/5, 4/5): N·H/|N| is at most 4/5 on the span, and 127.5·(4/5)^32 < 1.
+    let far = run("phong", "0,3/5,4/5");
+    assert_eq!(far["exact"]["skips"], Value::Bool(true), "{far}");
+    assert_eq!(far["float"]["skips"], Value::Bool(true), "{far}");
+    let (na, nb, h) = (
+        [q(0, 1), q(0, 1), q(1, 1)],
+        [q(3, 5), q(0, 1), q(4, 5)],
+        [q(0, 1), q(3, 5), q(4, 5)],
+    );
+    let k2 = q(255, 2) * q(255, 2);
+    for j in 0..=16 {
+        let t = q(j, 16);
+        let nt: Vec<Q> = (0..3).map(|c| &na[c] + &t * (&nb[c] - &na[c])).collect();
+        let p: Q = (0..3).map(|c| &nt[c] * &h[c]).sum();
+        let qq: Q = (0..3).map(|c| &nt[c] * &nt[c]).sum();
+        assert!(
+            &k2 * num_traits::Pow::pow(&p, 64u32) < num_traits::Pow::pow(&qq, 32u32),
+            "t = {t}"
+        );
+    }
+    let lit = run("corrected-euler", "0,0,1");
+    assert_eq!(lit["exact"]["skips"], Value::Bool(false), "{lit}");
+    assert_eq!(lit["float"]["skips"], Value::Bool(false), "{lit}");
+    let sq = run("squared-corrected-euler", "0,3/5,4/5");
+    assert_eq!(sq["exact"]["skips"], Value::Bool(true), "{sq}");
+    assert!(
+        sq["float"]["refused"].as_str().unwrap().contains("no test"),
+        "{sq}"
+    );
+    for (args, flag) in [
+        (vec!["--method", "angular"], "--method"),
+        (vec!["--ks", "2"], "--ks"),
+        (vec!["--shininess", "0"], "--shininess"),
+        (vec!["--shininess", "1025"], "--shininess"),
+        (vec!["--na", "0,0,0"], "span"),
+        (vec!["--nb", "0,0,-1"], "span"),
+    ] {
+        let mut a = vec![
+            "skip",
+            "--method",
+            "phong",
+            "--na",
+            "0,0,1",
+            "--nb",
+            "3/5,0,4/5",
+            "--half-vector",
+            "0,0,1",
+        ];
+        a.extend(common);
+        // The flag's value replaced by the bad one.
+        let at = a.iter().position(|x| *x == args[0]).unwrap();
+        a[at + 1] = args[1];
+        let out = bin().args(&a).output().unwrap();
+        let err = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{a:?}: {err}");
+        assert_eq!(err.lines().count(), 1, "{a:?}: {err}");
+        assert!(err.contains(flag), "{a:?}: {err}");
+    }
+}

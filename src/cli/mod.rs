@@ -51,6 +51,7 @@ pub mod gpu;
 pub mod output;
 pub mod reproduce;
 pub mod setup;
+pub mod skip;
 pub mod span;
 pub mod torus;
 pub mod vectors;

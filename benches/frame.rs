@@ -8,9 +8,11 @@
 //! 32 on every row (`specular_corrected_euler`), and the same where the float skip test
 //! (`skip::float::float_skips`, margins from corrected Euler's `ieee` bound at the
 //! frame's longest row) does not skip the row first (`specular_corrected_euler_skip`).
+//! One more (question b): the squared method's fast kernel on the rows' edge normals as
+//! interpolated, not normalized, `g^{s/2}` with no root (`specular_squared`).
 
 use criterion::{black_box, criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
-use phong_approx::fast::{phong_rsqrt_f32, FastSpan};
+use phong_approx::fast::{phong_rsqrt_f32, FastSpan, FastSquared};
 use phong_approx::profile::Profile;
 use phong_approx::quantize::level;
 use phong_approx::raster::frame::{draw, polygons, Polygon, Shading, Split};
@@ -35,6 +37,7 @@ enum Mode {
     Setup,
     Kernel(Kernel),
     Specular { skip: bool },
+    SquaredSpecular,
 }
 
 /// The specular exponent of the specular rows.
@@ -63,6 +66,10 @@ fn frame(mesh: &Mesh, scene: &Scene, f: u32, mode: Mode) -> u64 {
                 Mode::Kernel(k) => Some(k),
                 Mode::Specular { skip } => {
                     specular_row(row, n, self.h, skip.then_some(self.margins), &mut self.span);
+                    return Some(());
+                }
+                Mode::SquaredSpecular => {
+                    squared_row(row, n, self.h, &mut self.span);
                     return Some(());
                 }
             };
@@ -142,11 +149,25 @@ fn specular_row(row: &Row, n: u32, h: [f32; 3], margins: Option<Margins>, out: &
     }
 }
 
+/// One row's specular pass by the squared method's fast kernel, on the edge normals
+/// as the scan conversion interpolates them (no normalization, no root for `s = 32`).
+fn squared_row(row: &Row, n: u32, h: [f32; 3], out: &mut [f32]) {
+    let out = &mut out[..n as usize + 1];
+    let (na, nb) = (row.left.normal.to_array(), row.right.normal.to_array());
+    if n == 0 {
+        let p = na[0] * h[0] + na[1] * h[1] + na[2] * h[2];
+        let g = p * p / (na[0] * na[0] + na[1] * na[1] + na[2] * na[2]);
+        out[0] = if p > 0.0 { power(&g, SHININESS / 2) } else { 0.0 };
+        return;
+    }
+    FastSquared::<f32>::new(na, nb, h, n).specular(SHININESS, out);
+}
+
 fn frames(c: &mut Criterion) {
     let exp = Experiment::default();
     let scene = exp.scene();
     let mesh = exp.mesh(40, 20);
-    let kernels: [(&str, Mode); 11] = [
+    let kernels: [(&str, Mode); 12] = [
         ("profile_scan_depth", Mode::ScanDepth),
         ("profile_setup", Mode::Setup),
         ("gouraud_fast", Mode::Kernel(FastSpan::<f32>::gouraud)),
@@ -170,6 +191,7 @@ fn frames(c: &mut Criterion) {
             "specular_corrected_euler_skip",
             Mode::Specular { skip: true },
         ),
+        ("specular_squared", Mode::SquaredSpecular),
     ];
     let mut g = c.benchmark_group("frame_torus800_225");
     g.warm_up_time(Duration::from_millis(500))

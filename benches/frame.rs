@@ -157,7 +157,11 @@ fn squared_row(row: &Row, n: u32, h: [f32; 3], out: &mut [f32]) {
     if n == 0 {
         let p = na[0] * h[0] + na[1] * h[1] + na[2] * h[2];
         let g = p * p / (na[0] * na[0] + na[1] * na[1] + na[2] * na[2]);
-        out[0] = if p > 0.0 { power(&g, SHININESS / 2) } else { 0.0 };
+        out[0] = if p > 0.0 {
+            power(&g, SHININESS / 2)
+        } else {
+            0.0
+        };
         return;
     }
     FastSquared::<f32>::new(na, nb, h, n).specular(SHININESS, out);

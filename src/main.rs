@@ -48,7 +48,7 @@ enum Command {
     /// Decide whether a span's specular pass may be skipped (the paper's §7.1 question):
     /// the exact test and the float form with its margins.
     #[command(allow_negative_numbers = true)]
-    Skip(cli::skip::SkipArgs),
+    Skip(Box<cli::skip::SkipArgs>),
     /// Print each case's set-up rounded to a fixed-point format M.F: the inputs of a
     /// hardware span unit (harness/hdl, docs/conformance.md "Hardware span units").
     Setup(cli::setup::SetupArgs),

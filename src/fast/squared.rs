@@ -153,8 +153,8 @@ where
         }
         e >>= 1;
         if e > 0 {
-            for j in 0..W {
-                base[j] = base[j] * base[j];
+            for b in &mut base {
+                *b = *b * *b;
             }
         }
     }

@@ -403,3 +403,5 @@ Check float_skip_sound.
 Print Assumptions float_skip_sound.
 Check float_quadratic_skip_sound.
 Print Assumptions float_quadratic_skip_sound.
+Check float_squared_skip_sound.
+Print Assumptions float_squared_skip_sound.

@@ -28,13 +28,21 @@
       v(t) = p_a + t s_0 + t (t − 1)/2 ds on [0, n] with the exact set-up values
       [setup], from the candidates 0, n and t_v (Skip.v's [v_cands]);
       [quadratic_max_sound].
+    - [squared_max] (the squared method, value sign(p)·√max(0, g)): g's set-up
+      (SquaredSpan::new's formulas) in intervals ([isqsetup], [None] where a
+      divisor's interval holds 0) from the exact values [sqsetup_exact], the
+      bound G of its quadratic g(t) = g_a + t t_0 + t (t − 1)/2 ds on [0, n] by
+      [quad_top], then the root rounded up, [up (sqrt G)] (0 where G <= 0);
+      [squared_max_sound]: √max(0, g(t)) <= F at every t ∈ [0, n].
     - [below_one]: 255·K_s·(F + e)^s·(1 + u)^(2s+2) < 1 evaluated upward, the
       powers by repeated squaring ([pow_up]); [below_one_sound].
 
     The theorems [float_skip_sound] and [float_quadratic_skip_sound] are the two
     decisions at binary64: where the code skips, every value within e of the
     method's exact value at any point of the span has
-    255·K_s·max(0, v)^s·(1 + u)^(2s+2) < 1. *)
+    255·K_s·max(0, v)^s·(1 + u)^(2s+2) < 1. [float_squared_skip_sound] is the
+    squared method's: every value at most √max(0, g) + e (so every value within
+    e of sign(p)·√max(0, g)) has the same. *)
 
 From Coq Require Import Reals Lra Lia Psatz List.
 From Flocq Require Import Core.
@@ -373,6 +381,31 @@ Definition setup (w : Valued) (na nb l : V3 R) (n : R) : R * R * R :=
       (pa, dia - (pn - pb) / n, ds)
   end.
 
+(** ** The squared method: exact set-up *)
+
+(** The exact (g_a, t_0, ds) of [SquaredSpan::new]'s formulas, operation for
+    operation as [isqsetup]: k = (N_b − N_a)/n, A = k·L, B = N_a·L, C = k·k,
+    D = 2 (k·N_a), E = N_a·N_a, p_b = N_b·L, q_b = N_b·N_b, dq_b = 2 n C + D;
+    g = p²/q at each end, g' = p (2 A q − p q')/(q q) at each end,
+    ds = (dg_b − dg_a)/n, g_n = g_a + n dg_a + tri(n) ds, t_0 = dg_a − (g_n − g_b)/n. *)
+Definition sqsetup_exact (na nb l : V3 R) (n : R) : R * R * R :=
+  let k := vdiv3 (vsub3 nb na) n in
+  let a := dot3 k l in
+  let b := dot3 na l in
+  let c := dot3 k k in
+  let d := 2 * dot3 k na in
+  let e := dot3 na na in
+  let pb := dot3 nb l in
+  let qb := dot3 nb nb in
+  let dqb := 2 * n * c + d in
+  let ga := b * b / e in
+  let gb := pb * pb / qb in
+  let dga := b * (2 * a * e - b * d) / (e * e) in
+  let dgb := pb * (2 * a * qb - pb * dqb) / (qb * qb) in
+  let ds := (dgb - dga) / n in
+  let gn := ga + n * dga + tri n * ds in
+  (ga, dga - (gn - gb) / n, ds).
+
 (** ** The decisions, for any enclosing steps *)
 
 Section Decision.
@@ -687,6 +720,141 @@ Proof.
   apply quad_top_sound; assumption.
 Qed.
 
+(** *** The squared method *)
+
+(** The closure [slope] of [squared_max]: g' = p·(2A·q − p·q')/(q·q) as
+    ((P·((2·A)·Q − P·DQ)) / (Q·Q)). *)
+Definition islope (A P Q DQ : Ivl) : Ivl :=
+  idiv (imul P (isub (imul (imul (ipt 2) A) Q) (imul P DQ))) (imul Q Q).
+
+(** The set-up of [squared_max] in intervals, [None] where a divisor's interval
+    (E, q_b, E·E, q_b·q_b, in the Rust's order) holds 0. *)
+Definition isqsetup (na nb l : V3 R) (n : R) : option (Ivl * Ivl * Ivl) :=
+  let NA := vpt na in
+  let NB := vpt nb in
+  let H := vpt l in
+  let N := ipt n in
+  let two := ipt 2 in
+  let k := ivdiv (ivsub NB NA) N in
+  let a := idot k H in
+  let b := idot NA H in
+  let c := idot k k in
+  let d := imul two (idot k NA) in
+  let e := idot NA NA in
+  let pb := idot NB H in
+  let qb := idot NB NB in
+  let dqb := iadd (imul (imul two N) c) d in
+  if negb (excl0 e) then None else
+  let ga := idiv (imul b b) e in
+  if negb (excl0 qb) then None else
+  let gb := idiv (imul pb pb) qb in
+  if negb (excl0 (imul e e)) then None else
+  let dga := islope a b e d in
+  if negb (excl0 (imul qb qb)) then None else
+  let dgb := islope a pb qb dqb in
+  let ds := idiv (isub dgb dga) N in
+  let gn := iadd (iadd ga (imul N dga)) (imul (ipt (tri n)) ds) in
+  Some (ga, isub dga (idiv (isub gn gb) N), ds).
+
+(** [squared_max]: G = [quad_top] of the set-up; the bound is next_up of the
+    root rounded to nearest, [up (sqrt G)], where G > 0, else 0. *)
+Definition squared_max (na nb l : V3 R) (n : R) : option R :=
+  match isqsetup na nb l n with
+  | None => None
+  | Some (GA, T0, DS) =>
+      let G := quad_top GA T0 DS n in
+      Some (if Rltb 0 G then up (sqrt G) else 0)
+  end.
+
+Lemma mem_slope a p q dq A P Q DQ :
+  mem a A -> mem p P -> mem q Q -> mem dq DQ -> excl0 (imul Q Q) = true ->
+  mem (p * (2 * a * q - p * dq) / (q * q)) (islope A P Q DQ).
+Proof.
+  intros Ha Hp Hq Hdq H0. unfold islope.
+  assert (Hqq : mem (q * q) (imul Q Q)) by (apply mem_mul; assumption).
+  apply mem_div; [| exact Hqq | apply excl0_true, H0].
+  apply mem_mul; [exact Hp |]. apply mem_sub; [| apply mem_mul; assumption].
+  repeat apply mem_mul; try assumption. apply mem_pt.
+Qed.
+
+Lemma isqsetup_sound na nb l n ga t0 ds GA T0 DS :
+  0 < n -> sqsetup_exact na nb l n = (ga, t0, ds) ->
+  isqsetup na nb l n = Some (GA, T0, DS) ->
+  mem ga GA /\ mem t0 T0 /\ mem ds DS.
+Proof.
+  intros Hn Hs HS. unfold sqsetup_exact in Hs. unfold isqsetup in HS. cbv zeta in Hs, HS.
+  assert (HN : 0 < lo (ipt n) \/ hi (ipt n) < 0) by (left; exact Hn).
+  assert (Hk : memv (vdiv3 (vsub3 nb na) n) (ivdiv (ivsub (vpt nb) (vpt na)) (ipt n)))
+    by (apply mem_vdiv; [apply mem_vsub; apply memv_pt | apply mem_pt | exact HN]).
+  set (k := vdiv3 (vsub3 nb na) n) in *.
+  set (K := ivdiv (ivsub (vpt nb) (vpt na)) (ipt n)) in *.
+  assert (Ha : mem (dot3 k l) (idot K (vpt l))) by (apply mem_dot; [exact Hk | apply memv_pt]).
+  assert (Hb : mem (dot3 na l) (idot (vpt na) (vpt l))) by (apply mem_dot; apply memv_pt).
+  assert (Hc : mem (dot3 k k) (idot K K)) by (apply mem_dot; exact Hk).
+  assert (Hd : mem (2 * dot3 k na) (imul (ipt 2) (idot K (vpt na))))
+    by (apply mem_mul; [apply mem_pt | apply mem_dot; [exact Hk | apply memv_pt]]).
+  assert (He : mem (dot3 na na) (idot (vpt na) (vpt na))) by (apply mem_dot; apply memv_pt).
+  assert (Hpb : mem (dot3 nb l) (idot (vpt nb) (vpt l))) by (apply mem_dot; apply memv_pt).
+  assert (Hqb : mem (dot3 nb nb) (idot (vpt nb) (vpt nb))) by (apply mem_dot; apply memv_pt).
+  set (a := dot3 k l) in *. set (b := dot3 na l) in *. set (c := dot3 k k) in *.
+  set (d := 2 * dot3 k na) in *. set (e := dot3 na na) in *.
+  set (pb := dot3 nb l) in *. set (qb := dot3 nb nb) in *.
+  set (Ai := idot K (vpt l)) in *. set (Bi := idot (vpt na) (vpt l)) in *.
+  set (Ci := idot K K) in *. set (Di := imul (ipt 2) (idot K (vpt na))) in *.
+  set (Ei := idot (vpt na) (vpt na)) in *. set (PBi := idot (vpt nb) (vpt l)) in *.
+  set (QBi := idot (vpt nb) (vpt nb)) in *.
+  assert (Hdqb : mem (2 * n * c + d) (iadd (imul (imul (ipt 2) (ipt n)) Ci) Di))
+    by (apply mem_add; [repeat apply mem_mul; try apply mem_pt; exact Hc | exact Hd]).
+  set (DQBi := iadd (imul (imul (ipt 2) (ipt n)) Ci) Di) in *.
+  destruct (excl0 Ei) eqn:E1; [| discriminate].
+  destruct (excl0 QBi) eqn:E2; [| discriminate].
+  destruct (excl0 (imul Ei Ei)) eqn:E3; [| discriminate].
+  destruct (excl0 (imul QBi QBi)) eqn:E4; [| discriminate].
+  cbn [negb] in HS.
+  assert (Hga : mem (b * b / e) (idiv (imul Bi Bi) Ei))
+    by (apply mem_div; [apply mem_mul; assumption | exact He | apply excl0_true, E1]).
+  assert (Hgb : mem (pb * pb / qb) (idiv (imul PBi PBi) QBi))
+    by (apply mem_div; [apply mem_mul; assumption | exact Hqb | apply excl0_true, E2]).
+  assert (Hdga : mem (b * (2 * a * e - b * d) / (e * e)) (islope Ai Bi Ei Di))
+    by (apply mem_slope; assumption).
+  assert (Hdgb : mem (pb * (2 * a * qb - pb * (2 * n * c + d)) / (qb * qb))
+                   (islope Ai PBi QBi DQBi))
+    by (apply mem_slope; assumption).
+  set (ga' := b * b / e) in *. set (gb' := pb * pb / qb) in *.
+  set (dga := b * (2 * a * e - b * d) / (e * e)) in *.
+  set (dgb := pb * (2 * a * qb - pb * (2 * n * c + d)) / (qb * qb)) in *.
+  assert (Hds : mem ((dgb - dga) / n) (idiv (isub (islope Ai PBi QBi DQBi) (islope Ai Bi Ei Di)) (ipt n)))
+    by (apply mem_div; [apply mem_sub; assumption | apply mem_pt | exact HN]).
+  injection Hs as <- <- <-. injection HS as <- <- <-.
+  split; [exact Hga | split; [| exact Hds]].
+  apply mem_sub; [exact Hdga |]. apply mem_div; [| apply mem_pt | exact HN].
+  apply mem_sub; [| exact Hgb]. apply mem_add; [apply mem_add |].
+  - exact Hga.
+  - apply mem_mul; [apply mem_pt | exact Hdga].
+  - apply mem_mul; [apply mem_pt | exact Hds].
+Qed.
+
+(** [squared_max] bounds √max(0, g) on [0, n], g = v at the exact set-up values. *)
+Lemma squared_max_sound na nb l n ga t0 ds F :
+  0 < n -> sqsetup_exact na nb l n = (ga, t0, ds) -> squared_max na nb l n = Some F ->
+  0 <= F /\ forall t, 0 <= t <= n -> sqrt (Rmax 0 (v ga t0 ds t)) <= F.
+Proof.
+  intros Hn Hs HF. unfold squared_max in HF.
+  destruct (isqsetup na nb l n) as [[[GA T0] DS] |] eqn:HS; [| discriminate].
+  destruct (isqsetup_sound na nb l n ga t0 ds GA T0 DS Hn Hs HS) as (H1 & H2 & H3).
+  destruct (quad_top_sound ga t0 ds GA T0 DS n Hn H1 H2 H3) as [HG Hall].
+  set (G := quad_top GA T0 DS n) in *. cbv zeta in HF.
+  destruct (Rltb 0 G) eqn:EG; injection HF as <-.
+  - pose proof (Hup (sqrt G)) as Hr. pose proof (sqrt_pos G).
+    split; [lra |]. intros t Ht.
+    apply Rle_trans with (sqrt G); [| exact Hr].
+    apply sqrt_le_1_alt. apply Rmax_lub; [exact HG | apply Hall, Ht].
+  - apply Rltb_false in EG.
+    split; [lra |]. intros t Ht.
+    replace (Rmax 0 (v ga t0 ds t)) with 0; [rewrite sqrt_0; lra |].
+    symmetry. apply Rle_antisym; [apply Rmax_lub; [lra | specialize (Hall t Ht); lra] | apply Rmax_l].
+Qed.
+
 End Decision.
 
 (** ** [below_one]: the final inequality in upward rounding *)
@@ -813,6 +981,26 @@ Proof.
     [apply Hall, Ht | exact Hx].
 Qed.
 
+Lemma squared_skip_sound_gen (dn up : R -> R) :
+  (forall x, dn x <= x) -> (forall x, x <= up x) ->
+  forall na nb l n ks e uu F s ga t0 ds,
+  0 < n -> sqsetup_exact na nb l n = (ga, t0, ds) ->
+  squared_max dn up na nb l n = Some F -> below_one up F e ks uu s ->
+  0 <= ks -> 0 <= e -> 0 <= uu ->
+  forall t x, 0 <= t <= n -> x <= sqrt (Rmax 0 (v ga t0 ds t)) + e ->
+  255 * ks * Rmax 0 x ^ s * (1 + uu) ^ (2 * s + 2) < 1.
+Proof.
+  intros Hdn Hup na nb l n ks e uu F s ga t0 ds Hn Hs HF Hb Hk He Hu t x Ht Hx.
+  destruct (squared_max_sound dn up Hdn Hup na nb l n ga t0 ds F Hn Hs HF) as [HF0 Hall].
+  pose proof (Hall t Ht) as Hg.
+  (* x is within e of min(x, F) <= F *)
+  apply (below_one_sound up Hup F e ks uu s HF0 Hk He Hu Hb (Rmin x F) x);
+    [apply Rmin_r |].
+  unfold Rmin. destruct (Rle_dec x F).
+  - rewrite Rminus_diag_eq, Rabs_R0 by reflexivity. exact He.
+  - rewrite Rabs_right by lra. lra.
+Qed.
+
 (** ** binary64 *)
 
 Definition fexp64 : Z -> Z := FLT_exp (-1074) 53.
@@ -858,4 +1046,17 @@ Theorem float_quadratic_skip_sound : forall (rnd : R -> Z), Valid_rnd rnd ->
   255 * ks * Rmax 0 x ^ s * (1 + uu) ^ (2 * s + 2) < 1.
 Proof.
   intros rnd Hr. apply quadratic_skip_sound_gen; [apply dn64_le | apply up64_ge]; exact Hr.
+Qed.
+
+(** The squared decision at binary64: every value at most e above √max(0, g). *)
+Theorem float_squared_skip_sound : forall (rnd : R -> Z), Valid_rnd rnd ->
+  forall (na nb l : V3 R) (n ks e uu F : R) (s : nat) (ga t0 ds : R),
+  0 < n -> sqsetup_exact na nb l n = (ga, t0, ds) ->
+  squared_max (dn64 rnd) (up64 rnd) na nb l n = Some F ->
+  below_one (up64 rnd) F e ks uu s ->
+  0 <= ks -> 0 <= e -> 0 <= uu ->
+  forall t x, 0 <= t <= n -> x <= sqrt (Rmax 0 (v ga t0 ds t)) + e ->
+  255 * ks * Rmax 0 x ^ s * (1 + uu) ^ (2 * s + 2) < 1.
+Proof.
+  intros rnd Hr. apply squared_skip_sound_gen; [apply dn64_le | apply up64_ge]; exact Hr.
 Qed.

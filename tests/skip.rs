@@ -377,9 +377,19 @@ fn float_margin_holds(x: &Q, squared: bool, e: f64, u: f64, ks: f64, sh: u32) ->
 }
 
 /// The largest exact value of `m` over the pixels of `exact`, and whether it is
-/// Phong's squared (`max(0, p)²/q`, for the methods whose values are Phong's) or the
-/// method's own value.
+/// Phong's squared (`max(0, p)²/q`, for the methods whose values are Phong's; for the
+/// squared method `max(0, g)`, whose root is at least its value `sign(p)·√max(0, g)`)
+/// or the method's own value.
 fn largest(m: Method, exact: &Span<Q>) -> (Q, bool) {
+    if m == Method::SquaredCorrectedEuler {
+        let sq = phong_approx::squared_corrected_euler::SquaredSpan::of(exact).unwrap();
+        let mut g = vec![Q::zero(); exact.n as usize + 1];
+        sq.shade(&mut g).unwrap();
+        let top = g
+            .into_iter()
+            .fold(Q::zero(), |a, x| if x > a { x } else { a });
+        return (top, true);
+    }
     let squared = m.is_phong_valued();
     let values: Vec<Q> = if squared {
         (0..=exact.n)
@@ -461,6 +471,13 @@ fn float_quadratic_skip_sound() {
     assert_float_form(&[Method::CorrectedEuler, Method::Euler, Method::Gouraud]);
 }
 
+/// `float_squared_skip_sound` (proofs/SkipFloat.v): the same for the squared method,
+/// `g`'s set-up in intervals and the root of its quadratic's largest value.
+#[test]
+fn float_squared_skip_sound() {
+    assert_float_form(&[Method::SquaredCorrectedEuler]);
+}
+
 /// [`float_form_against_rationals`] on `methods`, which must skip (the test would pass
 /// vacuously otherwise) and make 99 % of the exact test's skips.
 fn assert_float_form(methods: &[Method]) {
@@ -487,7 +504,12 @@ fn the_float_form_is_sound_at_the_threshold() {
         let Some((fs, exact)) = rounded(&s) else {
             continue;
         };
-        for m in [Method::Phong, Method::CorrectedEuler, Method::Gouraud] {
+        for m in [
+            Method::Phong,
+            Method::CorrectedEuler,
+            Method::Gouraud,
+            Method::SquaredCorrectedEuler,
+        ] {
             let (top, squared) = largest(m, &exact);
             let top_f = top.to_f64().unwrap();
             let top_f = if squared { top_f.sqrt() } else { top_f };

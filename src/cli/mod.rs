@@ -126,6 +126,37 @@ pub fn whole(s: &str, lo: u32, hi: u32, what: &str) -> Result<u32, BadValue> {
     Ok(v as u32)
 }
 
+/// Parses a vector `X,Y,Z` of decimals or fractions, exactly. The value parser of
+/// every vector argument.
+///
+/// # Errors
+/// What [`phong_approx::parse::parse_vec3`] refuses, in words.
+pub fn vector(s: &str) -> Result<phong_approx::Vec3<phong_approx::BigRational>, BadValue> {
+    phong_approx::parse::parse_vec3(s).map_err(|e| BadValue(e.to_string()))
+}
+
+/// Parses a decimal or fraction, exactly, within `lo..=hi`; `why` is the message
+/// where it is not. The value parser of every coefficient (`K_d`, `K_s`).
+///
+/// # Errors
+/// Not a number, or `why`.
+pub fn coefficient(
+    s: &str,
+    lo: i64,
+    hi: i64,
+    why: &str,
+) -> Result<phong_approx::BigRational, BadValue> {
+    let x = phong_approx::parse::parse_rational(s).map_err(|e| e.to_string())?;
+    let (lo, hi) = (
+        phong_approx::BigRational::from_integer(lo.into()),
+        phong_approx::BigRational::from_integer(hi.into()),
+    );
+    if x < lo || x > hi {
+        return Err(why.into());
+    }
+    Ok(x)
+}
+
 /// `v` for `arg` if it is within `lo..=hi` (a bound another argument sets), in
 /// [`whole`]'s words otherwise.
 ///

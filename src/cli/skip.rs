@@ -7,7 +7,6 @@
 use super::BadValue;
 use super::CliError;
 use clap::{Args, ValueEnum};
-use phong_approx::parse::{parse_rational, parse_vec3};
 use phong_approx::skip::float::{float_skips, FloatSpan, Margins};
 use phong_approx::skip::{specular_skips, SkipError, MAX_SHININESS};
 use phong_approx::{BigRational, Format, Method, Span, Vec3};
@@ -22,13 +21,13 @@ pub struct SkipArgs {
     pub method: Method,
     /// Normal at the left edge, N_a: three decimals or fractions, e.g. 0.6,0,0.8; unit
     /// to within 2^-20 (the span is decided as given).
-    #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true, value_parser = vector)]
+    #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true, value_parser = super::vector)]
     pub na: Vec3<BigRational>,
     /// Normal at the right edge, N_b.
-    #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true, value_parser = vector)]
+    #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true, value_parser = super::vector)]
     pub nb: Vec3<BigRational>,
     /// The half vector H of the specular term (the span's light for it).
-    #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true, value_parser = vector)]
+    #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true, value_parser = super::vector)]
     pub half_vector: Vec3<BigRational>,
     /// Number of steps n ≥ 1 (at most 2^24); the span has n + 1 pixels.
     #[arg(long, value_name = "N", allow_hyphen_values = true,
@@ -58,20 +57,13 @@ pub enum Precision {
     F64,
 }
 
-fn vector(s: &str) -> Result<Vec3<BigRational>, BadValue> {
-    parse_vec3(s).map_err(|e| BadValue(e.to_string()))
-}
-
 fn ks(s: &str) -> Result<BigRational, BadValue> {
-    let ks = parse_rational(s).map_err(|e| e.to_string())?;
-    let (zero, one) = (
-        BigRational::from_integer(0.into()),
-        BigRational::from_integer(1.into()),
-    );
-    if ks < zero || ks > one {
-        return Err("K_s must be between 0 and 1 (a specular reflectance)".into());
-    }
-    Ok(ks)
+    super::coefficient(
+        s,
+        0,
+        1,
+        "K_s must be between 0 and 1 (a specular reflectance)",
+    )
 }
 
 /// One form's answer.

@@ -5,7 +5,6 @@
 use super::BadValue;
 use super::CliError;
 use clap::{Args, ValueEnum};
-use phong_approx::parse::{parse_rational, parse_vec3};
 use phong_approx::span_report::{
     span_report, Arithmetic, Field, Remedy, ReportError, Request, SpanReport,
 };
@@ -18,13 +17,13 @@ pub struct SpanArgs {
     #[arg(long, value_name = "NAME", help = super::methods_help(), value_parser = |s: &str| s.parse::<Method>())]
     pub method: Method,
     /// Unit normal at the left edge, N_a: three decimals or fractions, e.g. 0.6,0,0.8.
-    #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true, value_parser = vector)]
+    #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true, value_parser = super::vector)]
     pub na: Vec3<BigRational>,
     /// Unit normal at the right edge, N_b.
-    #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true, value_parser = vector)]
+    #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true, value_parser = super::vector)]
     pub nb: Vec3<BigRational>,
     /// Unit light vector L (or half vector H).
-    #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true, value_parser = vector)]
+    #[arg(long, value_name = "X,Y,Z", allow_hyphen_values = true, value_parser = super::vector)]
     pub light: Vec3<BigRational>,
     /// Number of steps n ≥ 1 (at most 2^24); the span has n + 1 pixels.
     #[arg(long, value_name = "N", allow_hyphen_values = true,
@@ -85,22 +84,13 @@ pub enum Format {
     Table,
 }
 
-fn vector(s: &str) -> Result<Vec3<BigRational>, BadValue> {
-    parse_vec3(s).map_err(|e| BadValue(e.to_string()))
-}
-
 fn kd(s: &str) -> Result<BigRational, BadValue> {
-    let kd = parse_rational(s).map_err(|e| e.to_string())?;
-    let (zero, most) = (
-        BigRational::from_integer(0.into()),
-        BigRational::from_integer(1000.into()),
-    );
-    if kd < zero || kd > most {
-        return Err(
-            "K_d must be between 0 and 1000 (a diffuse reflectance, usually at most 1)".into(),
-        );
-    }
-    Ok(kd)
+    super::coefficient(
+        s,
+        0,
+        1000,
+        "K_d must be between 0 and 1000 (a diffuse reflectance, usually at most 1)",
+    )
 }
 
 /// A [`ReportError`] as the command's: its field as the flag that sets it, its remedy

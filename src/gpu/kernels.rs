@@ -425,26 +425,12 @@ fn adaptive(s: &Inputs<'_, f32>) -> Vec<f32> {
 }
 
 /// squared_corrected_euler.wgsl (and its mutant without the sign), operation by
-/// operation.
+/// operation: its set-up is `SquaredSpan::new`'s order, as
+/// [`crate::fast::FastSquared::new`] computes it, then the recurrences.
 fn squared(s: &Inputs<'_, f32>, signed: bool) -> Vec<f32> {
-    let nf = s.n as f32;
-    let k = div(sub(s.nb, s.na), nf);
-    let a = dot(k, s.l);
-    let b = dot(s.na, s.l);
-    let c = dot(k, k);
-    let d = 2.0 * dot(k, s.na);
-    let e = dot(s.na, s.na);
-    let pb = dot(s.nb, s.l);
-    let qb = dot(s.nb, s.nb);
-    let dqb = 2.0 * nf * c + d;
-    let ga = b * b / e;
-    let gb = pb * pb / qb;
-    let dga = b * (2.0 * a * e - b * d) / (e * e);
-    let dgb = pb * (2.0 * a * qb - pb * dqb) / (qb * qb);
-    let ds = (dgb - dga) / nf;
-    let eps = ga + nf * dga + tri(s.n) * ds - gb;
-    let t0 = dga - eps / nf;
-    let (mut g, mut t, mut p) = (ga, t0, b);
+    let fs = crate::fast::FastSquared::<f32>::new(s.na, s.nb, s.l, s.n);
+    let (a, ds) = (fs.a, fs.ds);
+    let (mut g, mut t, mut p) = (fs.g_a, fs.t0, fs.b);
     (0..=s.n)
         .map(|_| {
             let mut v = if g > 0.0 { g.sqrt() } else { 0.0 };

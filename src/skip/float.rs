@@ -10,7 +10,8 @@
 //! is not finite ends the test with "do not skip", which is always sound; while every
 //! result is finite the float operations are Flocq's rounding of the real ones.
 //!
-//! The decision (`proofs/SkipFloat.v`: `float_skip_sound`, `float_quadratic_skip_sound`):
+//! The decision (`proofs/SkipFloat.v`: `float_skip_sound`, `float_quadratic_skip_sound`,
+//! `float_squared_skip_sound`):
 //! - **Phong's values** (Phong, Duff, symmetric Phong), `f(u) = p(u)/√q(u)` on the
 //!   segment `N(u) = N_a + u·(N_b − N_a)`, `u ∈ [0, 1]` (the same values as `t = u·n`):
 //!   `p = B + u·A'`, `q = E + u·D' + u²·C'`, `f′ ∝ L(u) = L₀ + u·L₁`. The candidates are
@@ -21,8 +22,10 @@
 //!   `v(t) = p_a + t·s_0 + t(t − 1)/2·ds` with `p_a`, `s_0`, `ds` from the span's
 //!   set-up formulas (eqs. 10–17) in intervals; candidates `0`, `n`, and the vertex
 //!   `1/2 − s_0/ds` where `ds < 0` (all of `[0, n]` where `ds`'s sign is unknown).
-//! - The squared method has no float form here ([`SkipError::Unsupported`]): its exact
-//!   test ([`super::Candidates::of`], `sq_skip_sound`) decides in rationals.
+//! - **The squared method**, `sign(p)·√max(0, g)` with `g` its quadratic
+//!   `g_a + t·t_0 + t(t − 1)/2·ds`: `g`'s set-up (`SquaredSpan::new`'s formulas) in
+//!   intervals, the quadratic's candidates as above, and the root of the largest
+//!   rounded up: the value is at most that at every point.
 //! - At each candidate's bound `F`, with the allowance `e` (the method's proved
 //!   per-pixel error bound on the span, [`Margins::ieee`]) and the format's unit
 //!   roundoff `u`: the test passes when `255·K_s·(F + e)^s·(1 + u)^{2s+2} < 1`, all in
@@ -209,7 +212,7 @@ fn phong_max(s: &FloatSpan) -> Option<f64> {
 fn quadratic_max(s: &FloatSpan, valued: Valued) -> Option<f64> {
     let (na, nb, l) = (vec(s.na)?, vec(s.nb)?, vec(s.h)?);
     let n = I::pt(f64::from(s.n))?;
-    let (half, two) = (I::pt(0.5)?, I::pt(2.0)?);
+    let two = I::pt(2.0)?;
     // The set-up of `Span::setup`, operation for operation (eqs. 2–3, 10–17).
     let k = {
         let d = vsub(nb, na)?;
@@ -236,6 +239,15 @@ fn quadratic_max(s: &FloatSpan, valued: Valued) -> Option<f64> {
         }
         _ => return None,
     };
+    quad_top(p_a, s0, ds, n)
+}
+
+/// The upper bound (from 0) of `v(t) = p_a + t·s_0 + t(t − 1)/2·ds` over `[0, n]`
+/// for every `p_a`, `s_0`, `ds` in the intervals: `v`'s upper end at the candidates
+/// `0`, `n` and the vertex `1/2 − s_0/ds` met with `[0, n]` where `ds < 0` (all of
+/// `[0, n]` where `ds`'s sign is unknown).
+fn quad_top(p_a: I, s0: I, ds: I, n: I) -> Option<f64> {
+    let half = I::pt(0.5)?;
     let mut candidates = vec![I::pt(0.0)?, n];
     if ds.hi < 0.0 {
         if let Some(t) = half.sub(s0.div(ds)?)?.meet(0.0, n.hi) {
@@ -251,6 +263,47 @@ fn quadratic_max(s: &FloatSpan, valued: Valued) -> Option<f64> {
         best = best.max(v.hi);
     }
     Some(best)
+}
+
+/// The upper bound of the squared method's `√max(0, g)` over `[0, n]` (its value
+/// `sign(p)·√max(0, g)` is at most that): `g`'s set-up
+/// ([`crate::squared_corrected_euler::SquaredSpan::new`]'s formulas) in intervals,
+/// the largest of its quadratic at the candidates ([`quad_top`]), then its root
+/// rounded up. `None` where a divisor's interval holds 0 or a result is not finite.
+fn squared_max(s: &FloatSpan) -> Option<f64> {
+    let (na, nb, h) = (vec(s.na)?, vec(s.nb)?, vec(s.h)?);
+    let n = I::pt(f64::from(s.n))?;
+    let two = I::pt(2.0)?;
+    let k = {
+        let d = vsub(nb, na)?;
+        [d[0].div(n)?, d[1].div(n)?, d[2].div(n)?]
+    };
+    let a = I::dot(k, h)?;
+    let b = I::dot(na, h)?;
+    let c = I::dot(k, k)?;
+    let d = two.mul(I::dot(k, na)?)?;
+    let e = I::dot(na, na)?;
+    let p_b = I::dot(nb, h)?;
+    let q_b = I::dot(nb, nb)?;
+    let dq_b = two.mul(n)?.mul(c)?.add(d)?;
+    let g_a = b.mul(b)?.div(e)?;
+    let g_b = p_b.mul(p_b)?.div(q_b)?;
+    // g′ = p·(2A·q − p·q′)/(q·q) at each end.
+    let slope = |p: I, q: I, dq: I| -> Option<I> {
+        let inner = two.mul(a)?.mul(q)?.sub(p.mul(dq)?)?;
+        p.mul(inner)?.div(q.mul(q)?)
+    };
+    let dg_a = slope(b, e, d)?;
+    let dg_b = slope(p_b, q_b, dq_b)?;
+    let ds = dg_b.sub(dg_a)?.div(n)?;
+    let m = u64::from(s.n);
+    let tri = I::pt((m * (m - 1) / 2) as f64)?;
+    let g_n = g_a.add(n.mul(dg_a)?)?.add(tri.mul(ds)?)?;
+    let t0 = dg_a.sub(g_n.sub(g_b)?.div(n)?)?;
+    let top = quad_top(g_a, t0, ds, n)?;
+    // The root rounded to nearest, then one float up: at least √top.
+    let root = if top > 0.0 { top.sqrt().next_up() } else { 0.0 };
+    root.is_finite().then_some(root)
 }
 
 /// `255·K_s·(F + e)^s·(1 + u)^{2s+2} < 1` in upward rounding (`F, e, K_s ≥ 0`).
@@ -327,6 +380,7 @@ pub fn float_skips(
         }
         Some(Valued::Phong) => phong_max(span),
         None if method.is_phong_valued() => phong_max(span),
+        None if method.info().roots == crate::method::Roots::SignedRootOfG => squared_max(span),
         _ => return Err(SkipError::Unsupported(method)),
     };
     Ok(max.is_some_and(|f| below_one(f, margins, ks, shininess)))

@@ -210,20 +210,17 @@ fn phong_max(s: &FloatSpan) -> Option<f64> {
 
 /// The upper bound of the quadratic recurrence's `v` over `[0, n]` (positive part).
 fn quadratic_max(s: &FloatSpan, valued: Valued) -> Option<f64> {
-    let (na, nb, l) = (vec(s.na)?, vec(s.nb)?, vec(s.h)?);
-    let n = I::pt(f64::from(s.n))?;
-    let two = I::pt(2.0)?;
     // The set-up of `Span::setup`, operation for operation (eqs. 2–3, 10–17).
-    let k = {
-        let d = vsub(nb, na)?;
-        [d[0].div(n)?, d[1].div(n)?, d[2].div(n)?]
-    };
-    let a = I::dot(k, l)?;
-    let p_a = I::dot(na, l)?;
-    let c = I::dot(k, k)?;
-    let d = two.mul(I::dot(k, na)?)?;
-    let p_b = I::dot(nb, l)?;
-    let dq_b = two.mul(n)?.mul(c)?.add(d)?;
+    let Polys {
+        n,
+        two,
+        a,
+        b: p_a,
+        d,
+        p_b,
+        dq_b,
+        ..
+    } = Polys::of(s)?;
     let di_a = a.sub(p_a.div(two)?.mul(d)?)?;
     let di_b = a.sub(p_b.div(two)?.mul(dq_b)?)?;
     let ds = di_b.sub(di_a)?.div(n)?;
@@ -240,6 +237,47 @@ fn quadratic_max(s: &FloatSpan, valued: Valued) -> Option<f64> {
         _ => return None,
     };
     quad_top(p_a, s0, ds, n)
+}
+
+/// `n`, `2` and the polynomials' coefficients of a span in intervals (eqs. 2–3):
+/// `k = (N_b − N_a)/n`, `A = k·H`, `B = N_a·H`, `C = k·k`, `D = 2·k·N_a`,
+/// `E = N_a·N_a`, `p_b = N_b·H`, `q_b = N_b·N_b`, `q′_b = 2n·C + D`, the first steps
+/// of both set-ups ([`quadratic_max`], [`squared_max`]).
+struct Polys {
+    n: I,
+    two: I,
+    a: I,
+    b: I,
+    d: I,
+    e: I,
+    p_b: I,
+    q_b: I,
+    dq_b: I,
+}
+
+impl Polys {
+    fn of(s: &FloatSpan) -> Option<Polys> {
+        let (na, nb, h) = (vec(s.na)?, vec(s.nb)?, vec(s.h)?);
+        let n = I::pt(f64::from(s.n))?;
+        let two = I::pt(2.0)?;
+        let k = {
+            let d = vsub(nb, na)?;
+            [d[0].div(n)?, d[1].div(n)?, d[2].div(n)?]
+        };
+        let c = I::dot(k, k)?;
+        let d = two.mul(I::dot(k, na)?)?;
+        Some(Polys {
+            n,
+            two,
+            a: I::dot(k, h)?,
+            b: I::dot(na, h)?,
+            d,
+            e: I::dot(na, na)?,
+            p_b: I::dot(nb, h)?,
+            q_b: I::dot(nb, nb)?,
+            dq_b: two.mul(n)?.mul(c)?.add(d)?,
+        })
+    }
 }
 
 /// The upper bound (from 0) of `v(t) = p_a + t·s_0 + t(t − 1)/2·ds` over `[0, n]`
@@ -271,21 +309,17 @@ fn quad_top(p_a: I, s0: I, ds: I, n: I) -> Option<f64> {
 /// the largest of its quadratic at the candidates ([`quad_top`]), then its root
 /// rounded up. `None` where a divisor's interval holds 0 or a result is not finite.
 fn squared_max(s: &FloatSpan) -> Option<f64> {
-    let (na, nb, h) = (vec(s.na)?, vec(s.nb)?, vec(s.h)?);
-    let n = I::pt(f64::from(s.n))?;
-    let two = I::pt(2.0)?;
-    let k = {
-        let d = vsub(nb, na)?;
-        [d[0].div(n)?, d[1].div(n)?, d[2].div(n)?]
-    };
-    let a = I::dot(k, h)?;
-    let b = I::dot(na, h)?;
-    let c = I::dot(k, k)?;
-    let d = two.mul(I::dot(k, na)?)?;
-    let e = I::dot(na, na)?;
-    let p_b = I::dot(nb, h)?;
-    let q_b = I::dot(nb, nb)?;
-    let dq_b = two.mul(n)?.mul(c)?.add(d)?;
+    let Polys {
+        n,
+        two,
+        a,
+        b,
+        d,
+        e,
+        p_b,
+        q_b,
+        dq_b,
+    } = Polys::of(s)?;
     let g_a = b.mul(b)?.div(e)?;
     let g_b = p_b.mul(p_b)?.div(q_b)?;
     // g′ = p·(2A·q − p·q′)/(q·q) at each end.

@@ -682,6 +682,33 @@ fn skip_decides_and_refuses_bad_input() {
     let sq = run("squared-corrected-euler", "0,3/5,4/5");
     assert_eq!(sq["exact"]["skips"], Value::Bool(true), "{sq}");
     assert_eq!(sq["float"]["skips"], Value::Bool(true), "{sq}");
+    // The float form decides on the inputs rounded to binary64 and says when that
+    // changed them (3/5 is not a binary64 number; 0 and 1 are).
+    assert_eq!(far["float_inputs_rounded"], Value::Bool(true), "{far}");
+    let dyadic = run_json(&[
+        "skip",
+        "--method",
+        "phong",
+        "--na",
+        "0,0,1",
+        "--nb",
+        "0,0,1",
+        "--half-vector",
+        "0,0,1",
+        "--steps",
+        "8",
+        "--ks",
+        "1/2",
+        "--shininess",
+        "32",
+    ]);
+    assert_eq!(
+        dyadic["float_inputs_rounded"],
+        Value::Bool(false),
+        "{dyadic}"
+    );
+    assert_eq!(dyadic["exact"]["skips"], Value::Bool(false), "{dyadic}");
+    assert_eq!(dyadic["float"]["skips"], Value::Bool(false), "{dyadic}");
     for (args, flag) in [
         (vec!["--method", "angular"], "--method"),
         (vec!["--ks", "2"], "--ks"),

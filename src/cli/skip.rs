@@ -84,8 +84,12 @@ struct SkipReport {
     shininess: u32,
     /// The exact test, in rationals, of the method's exact values on the span.
     exact: Decision,
-    /// The float form in `f64` with the margins of every `ieee` implementation.
+    /// The float form in `f64` with the margins of every `ieee` implementation, on the
+    /// inputs rounded to `f64`.
     float: Decision,
+    /// Whether rounding the inputs to `f64` changed them (the float form then decides
+    /// for the rounded span, as a renderer holding floats has it).
+    float_inputs_rounded: bool,
     /// The `ieee` allowance the float form takes (`check`'s bound on the span).
     allowance: Option<f64>,
     /// What a skip guarantees.
@@ -125,7 +129,9 @@ pub fn run(a: &SkipArgs) -> Result<(), CliError> {
         Precision::F32 => Format::Binary32,
         Precision::F64 => Format::Binary64,
     };
-    let margins = Margins::ieee(method, &span, format);
+    // The float form decides on `f64` inputs: the given ones rounded to nearest (a
+    // renderer's), with the margins of that span, so that its answer is proved for
+    // exactly what it reads (`rounded` says whether that differs from the given span).
     let to = |v: &Vec3<BigRational>| {
         v.components()
             .map(|c| num_traits::ToPrimitive::to_f64(c).unwrap_or(f64::NAN))
@@ -136,7 +142,29 @@ pub fn run(a: &SkipArgs) -> Result<(), CliError> {
         h: to(&a.half_vector),
         n: a.steps,
     };
-    let ks = num_traits::ToPrimitive::to_f64(&a.ks).unwrap_or(f64::NAN);
+    let back = |v: [f64; 3]| -> Option<Vec3<BigRational>> {
+        let [x, y, z] = v.map(BigRational::from_float);
+        Some(Vec3::new(x?, y?, z?))
+    };
+    let float_span = match (back(fs.na), back(fs.nb), back(fs.h)) {
+        (Some(na), Some(nb), Some(h)) => Span::with_tolerance(na, nb, h, a.steps, &tol).ok(),
+        _ => None,
+    };
+    let rounded = float_span
+        .as_ref()
+        .is_some_and(|f| f.na != span.na || f.nb != span.nb || f.l != span.l);
+    let margins = float_span
+        .as_ref()
+        .and_then(|f| Margins::ieee(method, f, format));
+    // K_s as an f64 at least the given one (the test grows with it).
+    let ks =
+        num_traits::ToPrimitive::to_f64(&a.ks).map_or(
+            f64::NAN,
+            |f| match BigRational::from_float(f) {
+                Some(q) if q < a.ks => f.next_up(),
+                _ => f,
+            },
+        );
     let float = match margins {
         None => Decision {
             skips: None,
@@ -166,6 +194,7 @@ pub fn run(a: &SkipArgs) -> Result<(), CliError> {
         shininess: a.shininess,
         exact,
         float,
+        float_inputs_rounded: rounded,
         allowance: margins.map(|m| m.allowance),
         guarantee: GUARANTEE,
     };
@@ -186,7 +215,12 @@ pub fn run(a: &SkipArgs) -> Result<(), CliError> {
                 report.shininess
             )?;
             outln!("exact: {}", said(&report.exact))?;
-            outln!("float ({format}): {}", said(&report.float))?;
+            let note = if report.float_inputs_rounded {
+                ", on the inputs rounded to binary64"
+            } else {
+                ""
+            };
+            outln!("float ({format}{note}): {}", said(&report.float))?;
             outln!("{GUARANTEE}")
         }
     }

@@ -275,7 +275,14 @@ fn the_squared_fast_kernel_is_within_the_graph_bound_on_long_rows() {
         }
     }
     phong_approx::simd::force(chosen).unwrap();
-    println!("FastSquared on long rows: worst error {worst:.3} of the graph bound");
+    let paths: Vec<&str> = phong_approx::simd::Path::supported_paths()
+        .iter()
+        .map(|p| p.name())
+        .collect();
+    println!(
+        "FastSquared on long rows, vector paths {}: worst error {worst:.3} of the graph bound",
+        paths.join(", ")
+    );
     assert!(runs >= 24, "{runs}");
 }
 

@@ -84,7 +84,6 @@ Proof.
     pose proof (theta_rng mr (INR (S j)) ltac:(lra) HJr) as Ht.
     pose proof (Hab _ Ht) as G2.
     pose proof (abs_near _ _ _ G1) as G3.
-    assert (mr * (w * (1001 / 1000) + eta) = 1001 / 1000 * (mr * w) + mr * eta) by ring.
     lra. }
   specialize (G HG i Hi). rewrite HP0 in G.
   pose proof (Gen i Hi) as G4.
@@ -93,24 +92,42 @@ Proof.
   eapply Rle_trans; [apply Rabs_triang|].
   assert (Hir : 0 <= INR i <= mr) by (rewrite Hmr; split; [apply pos_INR | apply le_INR; exact Hi]).
   assert (INR i * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra).
-  assert (INR i * (w * (1001 / 1000) + eta) = 1001 / 1000 * INR i * w + INR i * eta) by ring.
   lra.
 Qed.
 
 (** ** The loop of q *)
 
+(** The slope at 0, |m fc + 2 m e| <= 4 + cC + 2 cD, and |m^2 fc| <= 4 + cC. *)
+Lemma dq_f0 : forall mr fc e c dd cC cD, 1 <= mr -> 0 <= c <= 4 ->
+  Rabs (mr * mr * fc - c) <= cC -> Rabs (mr * e - dd) <= cD ->
+  (forall z, 0 <= z <= 2 -> Rabs (c * z + 2 * dd) <= 4) ->
+  Rabs (mr * fc + 2 * (mr * e)) <= 4 + cC + 2 * cD /\ Rabs (mr * mr * fc) <= 4 + cC.
+Proof.
+  intros mr fc e c dd cC cD Hm Hc HC HD Hz.
+  assert (Hinv : 0 <= / mr <= 1).
+  { split; [left; apply Rinv_0_lt_compat; lra|].
+    rewrite <- Rinv_1. apply Rinv_le_contravar; lra. }
+  split; [| pose proof (abs_near _ _ _ HC); rewrite (Rabs_pos_eq c) in * by lra; lra].
+  replace (mr * fc + 2 * (mr * e))
+    with ((c * / mr + 2 * dd) + / mr * (mr * mr * fc - c) + 2 * (mr * e - dd)) by (field; lra).
+  eapply Rle_trans; [apply tri3|].
+  pose proof (Hz (/ mr) ltac:(lra)).
+  pose proof (hc_scale (/ mr) (mr * mr * fc - c) Hinv).
+  rewrite (Rabs_mult 2 (mr * e - dd)), (Rabs_pos_eq 2) by lra. lra.
+Qed.
+
 (** The ideal value of q_J on the computed E^, dq_0, d2q: E^ + J dq_0 + J(J-1)/2 d2q. *)
-Lemma dq_ideal : forall (v w eta mr fc e fe c dd ee cC cD cE g0 h : R) (J : nat),
-  small_ok v eta -> 0 <= w <= v -> 1 <= mr <= 16777216 -> INR J <= mr ->
+Lemma dq_ideal : forall (v eta mr fc e fe c dd ee cC cD cE g0 h : R) (J : nat),
+  small_ok v eta -> 1 <= mr <= 16777216 -> INR J <= mr ->
   Rabs (mr * mr * fc - c) <= cC -> Rabs (mr * e - dd) <= cD -> Rabs (fe - ee) <= cE ->
   0 <= cC <= / 50000 -> 0 <= cD <= / 100000 -> 0 <= cE ->
   0 <= c <= 4 -> (forall z, 0 <= z <= 2 -> Rabs (c * z + 2 * dd) <= 4) ->
-  ap1 w eta g0 (fc + 2 * e) -> ap1 w eta h (fc + fc) ->
+  ap1 v eta g0 (fc + 2 * e) -> ap1 v eta h (fc + fc) ->
   Rabs (fe + INR J * g0 + INR J * (INR J - 1) / 2 * h
         - (ee + 2 * (INR J / mr) * dd + (INR J / mr) * (INR J / mr) * c))
-    <= cE + cC + 2 * cD + 80001 / 10000 * w + / 10000000000 * v.
+    <= cE + cC + 2 * cD + 80001 / 10000 * v + / 10000000000 * v.
 Proof.
-  intros v w eta mr fc e fe c dd ee cC cD cE g0 h J Hv Hw Hm HJ HC HD HE HcC HcD HcE Hc Hz
+  intros v eta mr fc e fe c dd ee cC cD cE g0 h J Hv Hm HJ HC HD HE HcC HcD HcE Hc Hz
     Hg0 Hh.
   unfold ap1 in Hg0, Hh.
   small_facts Hv.
@@ -121,52 +138,22 @@ Proof.
     rewrite S_INR. pose proof (pos_INR J'). nra. }
   pose proof (theta_rng mr Jr ltac:(lra) ltac:(lra)) as Ht.
   set (t := Jr / mr) in *.
-  assert (Hinv : 0 <= / mr <= 1).
-  { split; [left; apply Rinv_0_lt_compat; lra|].
-    rewrite <- Rinv_1. apply Rinv_le_contravar; lra. }
-  (* |m fc + 2 m e| <= 4 + cC + 2 cD *)
-  assert (F0 : Rabs (mr * fc + 2 * (mr * e)) <= 4 + cC + 2 * cD).
-  { replace (mr * fc + 2 * (mr * e))
-      with ((c * / mr + 2 * dd) + / mr * (mr * mr * fc - c) + 2 * (mr * e - dd))
-      by (field; lra).
-    eapply Rle_trans; [apply tri3|].
-    pose proof (Hz (/ mr) ltac:(lra)).
-    pose proof (hc_scale (/ mr) (mr * mr * fc - c) Hinv).
-    rewrite (Rabs_mult 2 (mr * e - dd)), (Rabs_pos_eq 2) by lra. lra. }
+  destruct (dq_f0 mr fc e c dd cC cD ltac:(lra) Hc HC HD Hz) as [F0 F2].
   assert (F1 : Rabs (Jr * (fc + 2 * e)) <= 4 + cC + 2 * cD).
   { replace (Jr * (fc + 2 * e)) with (t * (mr * fc + 2 * (mr * e))) by (unfold t; field; lra).
     eapply Rle_trans; [apply hc_scale; exact Ht | exact F0]. }
-  assert (F2 : Rabs (mr * mr * fc) <= 4 + cC).
-  { pose proof (abs_near _ _ _ HC). rewrite (Rabs_pos_eq c) in * by lra. lra. }
   assert (Hmm : 1 <= mr * mr) by nra.
   assert (F3 : Rabs (Jr * (Jr - 1) * fc) <= 4 + cC).
   { pose proof (theta_rng (mr * mr) (Jr * (Jr - 1)) Hmm ltac:(split; nra)) as Ht2.
     replace (Jr * (Jr - 1) * fc) with (Jr * (Jr - 1) / (mr * mr) * (mr * mr * fc))
       by (field; lra).
     eapply Rle_trans; [apply hc_scale; exact Ht2 | exact F2]. }
-  assert (E1 : Rabs (Jr * (g0 - (fc + 2 * e))) <= w * (4 + cC + 2 * cD) + Jr * eta).
-  { rewrite Rabs_mult, (Rabs_pos_eq Jr) by lra.
-    assert (Jr * Rabs (g0 - (fc + 2 * e)) <= Jr * (w * Rabs (fc + 2 * e) + eta))
-      by (apply Rmult_le_compat_l; lra).
-    assert (Jr * (w * Rabs (fc + 2 * e) + eta) = w * Rabs (Jr * (fc + 2 * e)) + Jr * eta)
-      by (rewrite Rabs_mult, (Rabs_pos_eq Jr) by lra; ring).
-    assert (w * Rabs (Jr * (fc + 2 * e)) <= w * (4 + cC + 2 * cD))
-      by (apply Rmult_le_compat_l; lra).
-    lra. }
+  assert (E1 : Rabs (Jr * (g0 - (fc + 2 * e))) <= v * (4 + cC + 2 * cD) + Jr * eta)
+    by (apply ap_lam; [lra | lra | exact Hg0 | exact F1]).
   assert (E2 : Rabs (Jr * (Jr - 1) / 2 * (h - (fc + fc)))
-               <= w * (4 + cC) + Jr * (Jr - 1) / 2 * eta).
-  { rewrite Rabs_mult, (Rabs_pos_eq (Jr * (Jr - 1) / 2)) by lra.
-    assert (Jr * (Jr - 1) / 2 * Rabs (h - (fc + fc))
-            <= Jr * (Jr - 1) / 2 * (w * Rabs (fc + fc) + eta))
-      by (apply Rmult_le_compat_l; lra).
-    assert (Jr * (Jr - 1) / 2 * (w * Rabs (fc + fc) + eta)
-            = w * Rabs (Jr * (Jr - 1) * fc) + Jr * (Jr - 1) / 2 * eta).
-    { replace (fc + fc) with (2 * fc) by ring.
-      rewrite (Rabs_mult (Jr * (Jr - 1)) fc), (Rabs_pos_eq (Jr * (Jr - 1))) by lra.
-      rewrite (Rabs_mult 2 fc), (Rabs_pos_eq 2) by lra. field. }
-    assert (w * Rabs (Jr * (Jr - 1) * fc) <= w * (4 + cC))
-      by (apply Rmult_le_compat_l; lra).
-    lra. }
+               <= v * (4 + cC) + Jr * (Jr - 1) / 2 * eta).
+  { apply ap_lam; [lra | lra | exact Hh |].
+    replace (Jr * (Jr - 1) / 2 * (fc + fc)) with (Jr * (Jr - 1) * fc) by field. exact F3. }
   assert (Htt : 0 <= t * t <= 1) by (split; nra).
   assert (E3 : Rabs (t * t * (mr * mr * fc - c)) <= cC)
     by (eapply Rle_trans; [apply hc_scale; exact Htt | exact HC]).
@@ -182,7 +169,7 @@ Proof.
   assert (Jq : Jr * (Jr - 1) / 2 <= 281474976710656) by nra.
   assert (Je2 : Jr * (Jr - 1) / 2 * eta <= 281474976710656 * eta)
     by (apply Rmult_le_compat_r; lra).
-  assert (Wc : w * (2 * cC + 2 * cD) <= w * / 10000) by (apply Rmult_le_compat_l; lra).
+  assert (Wc : v * (2 * cC + 2 * cD) <= v * / 10000) by (apply Rmult_le_compat_l; lra).
   lra.
 Qed.
 
@@ -193,11 +180,11 @@ Lemma dq_loop : forall (v w eta mr fc e fe c dd ee cC cD cE h : R) (m i : nat)
   0 <= cC <= / 50000 -> 0 <= cD <= / 100000 -> 0 <= cE <= / 100000 ->
   0 <= c <= 4 -> (forall z, 0 <= z <= 2 -> Rabs (c * z + 2 * dd) <= 4) ->
   (forall t, 0 <= t <= 1 -> Rabs (ee + 2 * t * dd + t * t * c) <= 1) ->
-  ap1 w eta (G O) (fc + 2 * e) -> ap1 w eta h (fc + fc) -> Q O = fe ->
+  ap1 v eta (G O) (fc + 2 * e) -> ap1 v eta h (fc + fc) -> Q O = fe ->
   (forall j, (j < m)%nat -> ap1 w eta (Q (S j)) (Q j + G j) /\ ap1 w eta (G (S j)) (G j + h)) ->
   (i <= m)%nat ->
   Rabs (Q i - (ee + 2 * (INR i / mr) * dd + (INR i / mr) * (INR i / mr) * c))
-    <= cE + cC + 2 * cD + 80001 / 10000 * w + 3004 / 1000 * INR i * w + / 1000000000 * v.
+    <= cE + cC + 2 * cD + 80001 / 10000 * v + 3004 / 1000 * INR i * w + / 1000000000 * v.
 Proof.
   intros v w eta mr fc e fe c dd ee cC cD cE h m i Q G Hv Hw Hmr Hm Hmw HC HD HE HcC HcD HcE
     Hc Hz Hq Hg0 Hh HQ0 Hst Hi.
@@ -210,20 +197,7 @@ Proof.
   assert (Me : mr * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra).
   assert (Hmm : mr * mr <= 281474976710656) by nra.
   assert (Mme : mr * mr * eta <= 281474976710656 * eta) by (apply Rmult_le_compat_r; lra).
-  assert (Wm0 : 0 <= mr * w) by (apply Rmult_le_pos; lra).
-  assert (F2 : Rabs (mr * mr * fc) <= 4 + cC).
-  { pose proof (abs_near _ _ _ HC). rewrite (Rabs_pos_eq c) in * by lra. lra. }
-  assert (Hinv : 0 <= / mr <= 1).
-  { split; [left; apply Rinv_0_lt_compat; lra|].
-    rewrite <- Rinv_1. apply Rinv_le_contravar; lra. }
-  assert (F0 : Rabs (mr * fc + 2 * (mr * e)) <= 4 + cC + 2 * cD).
-  { replace (mr * fc + 2 * (mr * e))
-      with ((c * / mr + 2 * dd) + / mr * (mr * mr * fc - c) + 2 * (mr * e - dd))
-      by (field; lra).
-    eapply Rle_trans; [apply tri3|].
-    pose proof (Hz (/ mr) ltac:(lra)).
-    pose proof (hc_scale (/ mr) (mr * mr * fc - c) Hinv).
-    rewrite (Rabs_mult 2 (mr * e - dd)), (Rabs_pos_eq 2) by lra. lra. }
+  destruct (dq_f0 mr fc e c dd cC cD ltac:(lra) Hc HC HD Hz) as [F0 F2].
   destruct (cseq_err w eta Q G h m Ms Mp ltac:(lra) ltac:(lra) HMs ltac:(unfold Mp; lra) Hst)
     with (i := i) as [_ HQi]; [| | exact Hi |].
   - (* the slopes dq_J, 1 <= J <= m - 1 *)
@@ -238,29 +212,16 @@ Proof.
       - apply Rmult_le_pos; [lra | left; apply Rinv_0_lt_compat; lra].
       - apply (Rmult_le_reg_r mr); [lra|].
         rewrite Rmult_assoc, Rinv_l by lra. lra. }
-    assert (T1 : Rabs (mr * (g0 - (fc + 2 * e))) <= w * (4 + cC + 2 * cD) + mr * eta).
-    { rewrite Rabs_mult, (Rabs_pos_eq mr) by lra.
-      assert (mr * Rabs (g0 - (fc + 2 * e)) <= mr * (w * Rabs (fc + 2 * e) + eta))
-        by (apply Rmult_le_compat_l; [lra | exact Hg0]).
-      assert (mr * (w * Rabs (fc + 2 * e) + eta) = w * Rabs (mr * fc + 2 * (mr * e)) + mr * eta).
-      { replace (mr * fc + 2 * (mr * e)) with (mr * (fc + 2 * e)) by ring.
-        rewrite Rabs_mult, (Rabs_pos_eq mr) by lra. ring. }
-      assert (w * Rabs (mr * fc + 2 * (mr * e)) <= w * (4 + cC + 2 * cD))
-        by (apply Rmult_le_compat_l; lra).
-      lra. }
-    assert (T2 : Rabs (mr * Jr * (h - (fc + fc))) <= 2 * w * (4 + cC) + mr * mr * eta).
-    { rewrite Rabs_mult, (Rabs_pos_eq (mr * Jr)) by nra.
-      assert (mr * Jr * Rabs (h - (fc + fc)) <= mr * Jr * (w * Rabs (fc + fc) + eta))
-        by (apply Rmult_le_compat_l; [nra | exact Hh]).
-      assert (Ht : 0 <= Jr / mr <= 1) by (apply theta_rng; [lra | split; lra]).
-      assert (mr * Jr * (w * Rabs (fc + fc) + eta)
-              = 2 * w * (Jr / mr * Rabs (mr * mr * fc)) + mr * Jr * eta).
-      { replace (fc + fc) with (2 * fc) by ring.
-        rewrite !Rabs_mult, (Rabs_pos_eq 2), (Rabs_pos_eq mr) by lra. field; lra. }
-      assert (Jr / mr * Rabs (mr * mr * fc) <= 1 * (4 + cC))
-        by (apply Rmult_le_compat; try apply Rabs_pos; lra).
-      assert (2 * w * (Jr / mr * Rabs (mr * mr * fc)) <= 2 * w * (1 * (4 + cC)))
-        by (apply Rmult_le_compat_l; lra).
+    assert (T1 : Rabs (mr * (g0 - (fc + 2 * e))) <= v * (4 + cC + 2 * cD) + mr * eta).
+    { apply ap_lam; [lra | lra | exact Hg0 |].
+      replace (mr * (fc + 2 * e)) with (mr * fc + 2 * (mr * e)) by ring. exact F0. }
+    assert (T2 : Rabs (mr * Jr * (h - (fc + fc))) <= 2 * v * (4 + cC) + mr * mr * eta).
+    { assert (Ht : 0 <= Jr / mr <= 1) by (apply theta_rng; [lra | split; lra]).
+      assert (B : Rabs (mr * Jr * (fc + fc)) <= 2 * (4 + cC)).
+      { replace (mr * Jr * (fc + fc)) with (2 * (Jr / mr * (mr * mr * fc))) by (field; lra).
+        rewrite Rabs_mult, (Rabs_pos_eq 2) by lra.
+        pose proof (hc_scale _ (mr * mr * fc) Ht). lra. }
+      pose proof (ap_lam v eta (mr * Jr) _ _ _ ltac:(lra) ltac:(nra) Hh B).
       assert (mr * Jr * eta <= mr * mr * eta)
         by (apply Rmult_le_compat_r; [lra|]; apply Rmult_le_compat_l; lra).
       lra. }
@@ -274,31 +235,30 @@ Proof.
                  = mr * (g0 - (fc + 2 * e)) + mr * Jr * (h - (fc + fc)) + (c * z + 2 * dd)
                    + z * (mr * mr * fc - c) + 2 * (mr * e - dd)) by (unfold z; field; lra).
     assert (X : Rabs (mr * (g0 + Jr * h))
-                <= 4 + w * (12 + 3 * cC + 2 * cD) + 2 * cC + 2 * cD + mr * eta + mr * mr * eta).
+                <= 4 + v * (12 + 3 * cC + 2 * cD) + 2 * cC + 2 * cD + mr * eta + mr * mr * eta).
     { rewrite Eq. eapply Rle_trans; [apply tri5|]. lra. }
     assert (EA : Rabs (g0 + Jr * h) = Rabs (mr * (g0 + Jr * h)) / mr).
     { rewrite Rabs_mult, (Rabs_pos_eq mr) by lra. field; lra. }
     rewrite EA. unfold Ms. apply div_helper; [lra|].
     assert (mr * (w * (40025 / 10000 / mr) + eta) * mr = 40025 / 10000 * (mr * w) + mr * mr * eta)
       by (field; lra).
-    assert (w * (3 * cC + 2 * cD) <= w * / 10000) by (apply Rmult_le_compat_l; lra).
+    assert (v * (3 * cC + 2 * cD) <= v * / 10000) by (apply Rmult_le_compat_l; lra).
     lra.
   - (* the values q_J, 1 <= J <= m *)
     intros j Hj. fold g0. rewrite HQ0, <- Hmr.
     assert (HJ : INR (S j) <= mr) by (rewrite Hmr; apply le_INR; lia).
-    pose proof (dq_ideal v w eta mr fc e fe c dd ee cC cD cE g0 h (S j) Hv Hw Hm HJ HC HD HE
+    pose proof (dq_ideal v eta mr fc e fe c dd ee cC cD cE g0 h (S j) Hv Hm HJ HC HD HE
                   HcC HcD ltac:(lra) Hc Hz Hg0 Hh) as G1.
     assert (Ht : 0 <= INR (S j) / mr <= 1) by (apply theta_rng; [lra | split; [apply pos_INR | lra]]).
     pose proof (Hq _ Ht) as G2.
     pose proof (abs_near _ _ _ G1) as G3.
     assert (mr * mr / 2 * (w * Ms + eta) = 40025 / 20000 * (mr * w) + mr * mr * eta / 2)
       by (unfold Ms; field; lra).
-    assert (mr * (w * Mp + eta) = 1002 / 1000 * (mr * w) + mr * eta) by (unfold Mp; ring).
     unfold Mp in *. lra.
   - (* the end *)
     fold g0 in HQi. rewrite HQ0 in HQi.
     assert (Hir : 0 <= INR i <= mr) by (rewrite Hmr; split; [apply pos_INR | apply le_INR; exact Hi]).
-    pose proof (dq_ideal v w eta mr fc e fe c dd ee cC cD cE g0 h i Hv Hw Hm ltac:(lra) HC HD HE
+    pose proof (dq_ideal v eta mr fc e fe c dd ee cC cD cE g0 h i Hv Hm ltac:(lra) HC HD HE
                   HcC HcD ltac:(lra) Hc Hz Hg0 Hh) as G1.
     assert (J1 : 0 <= INR i * (INR i - 1)).
     { destruct i as [| i']; [cbn [INR]; lra|].
@@ -349,7 +309,7 @@ Qed.
 (** ** Duff's method with unit v (inputs, set-up additions and products),
     d (the division) and w (the additions of dq_0, d2q and the loop) *)
 
-Lemma duff_core : forall (v d w eta : R) (s : span) (na nb l kk : vec)
+Lemma duff_core : forall (v d eta w : R) (s : span) (na nb l kk : vec)
   (tx ty tz fa fb fc e fe h : R) (P Q G : nat -> R),
   small_ok v eta -> small_ok d eta -> 0 <= w <= v ->
   is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
@@ -360,7 +320,7 @@ Lemma duff_core : forall (v d w eta : R) (s : span) (na nb l kk : vec)
   ap1 v eta tz (vz nb - vz na) -> ap1 d eta (vz kk) (tz / INR (n s)) ->
   fdot_rel v v eta kk l fa -> fdot_rel v v eta na l fb -> fdot_rel v v eta kk kk fc ->
   fdot_rel v v eta kk na e -> fdot_rel v v eta na na fe ->
-  P O = fb -> Q O = fe -> ap1 w eta (G O) (fc + 2 * e) -> ap1 w eta h (fc + fc) ->
+  P O = fb -> Q O = fe -> ap1 v eta (G O) (fc + 2 * e) -> ap1 v eta h (fc + fc) ->
   (forall j, (j < n s)%nat ->
      ap1 w eta (P (S j)) (P j + fa) /\ ap1 w eta (Q (S j)) (Q j + G j) /\
      ap1 w eta (G (S j)) (G j + h)) ->
@@ -368,14 +328,13 @@ Lemma duff_core : forall (v d w eta : R) (s : span) (na nb l kk : vec)
   Rabs (P i - p s (INR i)) <= 1702 / 100 * v + 202 / 100 * d + 1001 / 1000 * INR i * w /\
   Rabs (Q i - q s (INR i)) <= 6505 / 100 * v + 1204 / 100 * d + 3004 / 1000 * INR i * w.
 Proof.
-  intros v d w eta s na nb l kk tx ty tz fa fb fc e fe h P Q G Hv Hd Hw Ha Hb Hl
+  intros v d eta w s na nb l kk tx ty tz fa fb fc e fe h P Q G Hv Hd Hw Ha Hb Hl
     Hn1 Hn2 Hnw Ina Inb Inl Htx Hkx Hty Hky Htz Hkz Hfa Hfb Hfc Hfe0 Hfe HP0 HQ0 Hg0 Hh Hst
     i Hi.
   v_facts Hv. v_facts Hd.
   assert (Hn0 : (n s <> 0)%nat) by lia.
   assert (Hm : 1 <= INR (n s) <= 16777216) by (split; [apply (le_INR 1); exact Hn1 | exact Hn2]).
   assert (Hii : 0 <= INR i <= INR (n s)) by (split; [apply pos_INR | apply le_INR; exact Hi]).
-  assert (Iw : 0 <= INR i * w) by (apply Rmult_le_pos; lra).
   destruct (hc_sizes s Ha Hb Hl) as [Sa [Sd Sc]].
   pose proof (K_a v d eta Hv Hd s Ha Hb Hl Hn1 Hn2 na nb l kk fa Ina Inb Inl
                 tx ty tz Htx Hkx Hty Hky Htz Hkz Hfa) as CA.
@@ -424,47 +383,6 @@ Definition duff_ok (M : fmodel) (m : nat) (na l kk : vec) (P Q G : nat -> R) : P
     fdot_ok M kk l fa /\ fdot_ok M na l fb /\ fdot_ok M kk kk fc /\
     fdot_ok M kk na e /\ fdot_ok M na na fe /\ duff_run M m fa fb fc e fe P Q G.
 
-Lemma duff_model : forall (M : fmodel) (K K1 kd : R), model_ok M K ->
-  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 ->
-  1 <= kd -> kd * m_u M <= / 2097152 ->
-  forall (s : span) (na nb l kk : vec) (P Q G : nat -> R) (tx ty tz : R),
-  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
-  (1 <= n s)%nat -> INR (n s) <= 16777216 -> INR (n s) * (k_add M * m_u M) <= / 2048 ->
-  vap M na (Na s) -> vap M nb (Nb s) -> vap M l (L s) ->
-  ap_add M tx (vx nb - vx na) -> ap1 (kd * m_u M) (m_eta M) (vx kk) (tx / INR (n s)) ->
-  ap_add M ty (vy nb - vy na) -> ap1 (kd * m_u M) (m_eta M) (vy kk) (ty / INR (n s)) ->
-  ap_add M tz (vz nb - vz na) -> ap1 (kd * m_u M) (m_eta M) (vz kk) (tz / INR (n s)) ->
-  duff_ok M (n s) na l kk P Q G ->
-  forall i, (i <= n s)%nat ->
-  Rabs (P i - p s (INR i)) <= (1702 / 100 * K1 + 202 / 100 * kd
-                               + 1001 / 1000 * INR i * k_add M) * m_u M /\
-  Rabs (Q i - q s (INR i)) <= (6505 / 100 * K1 + 1204 / 100 * kd
-                               + 3004 / 1000 * INR i * k_add M) * m_u M.
-Proof.
-  intros M K K1 kd HM HK1 Hin Hadd Hmul Hkd1 Hkd2 s na nb l kk P Q G tx ty tz
-    Ha Hb Hl Hn1 Hn2 Hnw Ina Inb Inl Htx Hkx Hty Hky Htz Hkz
-    (fa & fb & fc & e & fe & Hfa & Hfb & Hfc & Hfe0 & Hfe & HP0 & HQ0 & Hg0 & h & Hh & Hst)
-    i Hi.
-  pose proof (model_u M K HM) as Hu.
-  pose proof HM as (_ & _ & _ & _ & [Ka0 _] & _).
-  pose proof (hm_small M K K1 HM HK1) as Hv.
-  pose proof (hm_small_d M K kd HM Hkd1 Hkd2) as Hd.
-  assert (Hw : 0 <= k_add M * m_u M <= K1 * m_u M).
-  { split; [apply Rmult_le_pos; lra | apply Rmult_le_compat_r; lra]. }
-  destruct (duff_core (K1 * m_u M) (kd * m_u M) (k_add M * m_u M) (m_eta M) s na nb l kk
-              tx ty tz fa fb fc e fe h P Q G Hv Hd Hw Ha Hb Hl Hn1 Hn2 Hnw
-              (hm_vap M K1 _ _ Hu Hin Ina) (hm_vap M K1 _ _ Hu Hin Inb)
-              (hm_vap M K1 _ _ Hu Hin Inl)
-              (hm_ap M _ K1 _ _ Hu Hadd Htx) Hkx (hm_ap M _ K1 _ _ Hu Hadd Hty) Hky
-              (hm_ap M _ K1 _ _ Hu Hadd Htz) Hkz
-              (hm_fdot M K1 _ _ _ Hu Hadd Hmul Hfa) (hm_fdot M K1 _ _ _ Hu Hadd Hmul Hfb)
-              (hm_fdot M K1 _ _ _ Hu Hadd Hmul Hfc) (hm_fdot M K1 _ _ _ Hu Hadd Hmul Hfe0)
-              (hm_fdot M K1 _ _ _ Hu Hadd Hmul Hfe) HP0 HQ0 Hg0 Hh Hst i Hi) as [R1 R2].
-  split.
-  - eapply Rle_trans; [exact R1|]. right. ring.
-  - eapply Rle_trans; [exact R2|]. right. ring.
-Qed.
-
 (** Duff, k_j = (Nb_j - Na_j) / n with one division: for every i <= n,
     |p^_i - p_i| <= (17.02 K1 + 2.02 k_div + 1.001 i k_add) u,
     |q^_i - q_i| <= (65.05 K1 + 12.04 k_div + 3.004 i k_add) u,
@@ -485,7 +403,7 @@ Theorem duff_div_generic : forall (M : fmodel) (K K1 : R), model_ok M K ->
                                + 1001 / 1000 * INR i * k_add M) * m_u M /\
   Rabs (Q i - q s (INR i)) <= (6505 / 100 * K1 + 1204 / 100 * k_div M
                                + 3004 / 1000 * INR i * k_add M) * m_u M.
-Proof. kd_inst duff_model. Qed.
+Proof. intros; unfold duff_ok, duff_run in *; kd_model duff_core. Qed.
 
 (** The same with k_j = (Nb_j - Na_j) * r, r = 1/n a rounded division:
     k_div is replaced by kd = (1 + 2^-20) k_mul + k_div + 2^-36, kd u <= 2^-21. *)
@@ -507,7 +425,7 @@ Theorem duff_recip_generic : forall (M : fmodel) (K K1 : R), model_ok M K ->
   Rabs (Q i - q s (INR i)) <= (6505 / 100 * K1
       + 1204 / 100 * ((1 + / 1048576) * k_mul M + k_div M + / 68719476736)
       + 3004 / 1000 * INR i * k_add M) * m_u M.
-Proof. kd_inst duff_model. Qed.
+Proof. intros; unfold duff_ok, duff_run in *; kd_model duff_core. Qed.
 
 (** ** Symmetric Phong: q walked to h = floor(n/2), reused as q(n - i) = q(i) *)
 
@@ -523,7 +441,6 @@ Ltac sym_inst lem :=
       unfold is_unit in Ha, Hb; rewrite Ha, Hb; reflexivity
     | split; [eapply proj1 | rewrite <- Eq; eapply proj2]; eapply lem; eassumption ]
   end.
-
 
 (** Symmetric Phong (src/symmetric_phong.rs), k_j = (Nb_j - Na_j) / n with one
     division: p is walked as in Duff; q is walked by Duff's recurrence only to

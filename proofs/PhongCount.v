@@ -34,72 +34,8 @@ From Coq Require Import Reals Lra Lia.
 From PhongApprox Require Import Span FloatModel Float FloatModelK Profiles PhongCountD.
 Open Scope R_scope.
 
-(** ** Horner's closed form with unit v (inputs, additions, products) and d (the division) *)
-
-Lemma horner_core : forall (v d eta : R) (s : span) (na nb l kk : vec)
-  (tx ty tz fa fb fc e fe : R) (i : nat) (x ph y1 y2 y3 qh : R),
-  small_ok v eta -> small_ok d eta ->
-  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
-  (1 <= n s)%nat -> INR (n s) <= 16777216 -> (i <= n s)%nat ->
-  vap1 v eta na (Na s) -> vap1 v eta nb (Nb s) -> vap1 v eta l (L s) ->
-  ap1 v eta tx (vx nb - vx na) -> ap1 d eta (vx kk) (tx / INR (n s)) ->
-  ap1 v eta ty (vy nb - vy na) -> ap1 d eta (vy kk) (ty / INR (n s)) ->
-  ap1 v eta tz (vz nb - vz na) -> ap1 d eta (vz kk) (tz / INR (n s)) ->
-  fdot_rel v v eta kk l fa -> fdot_rel v v eta na l fb -> fdot_rel v v eta kk kk fc ->
-  fdot_rel v v eta kk na e -> fdot_rel v v eta na na fe ->
-  ap1 v eta x (fa * INR i) -> ap1 v eta ph (x + fb) ->
-  ap1 v eta y1 (fc * INR i) -> ap1 v eta y2 (y1 + 2 * e) -> ap1 v eta y3 (y2 * INR i) ->
-  ap1 v eta qh (y3 + fe) ->
-  Rabs (ph - p s (INR i)) <= 2003 / 100 * v + 202 / 100 * d /\
-  Rabs (qh - q s (INR i)) <= 7811 / 100 * v + 1204 / 100 * d.
-Proof.
-  intros v d eta s na nb l kk tx ty tz fa fb fc e fe i x ph y1 y2 y3 qh Hv Hd Ha Hb Hl
-    Hn1 Hn2 Hi Ina Inb Inl Htx Hkx Hty Hky Htz Hkz Hfa Hfb Hfc Hfe0 Hfe Hx Hph Hy1 Hy2 Hy3 Hqh.
-  v_facts Hv. v_facts Hd.
-  assert (Hn0 : (n s <> 0)%nat) by lia.
-  assert (Hm : 1 <= INR (n s) <= 16777216) by (split; [apply (le_INR 1); exact Hn1 | exact Hn2]).
-  assert (Hii : 0 <= INR i <= INR (n s)) by (split; [apply pos_INR | apply le_INR; exact Hi]).
-  pose proof (theta_rng (INR (n s)) (INR i) ltac:(lra) Hii) as Ht.
-  destruct (hc_sizes s Ha Hb Hl) as [Sa [Sd Sc]].
-  pose proof (K_a v d eta Hv Hd s Ha Hb Hl Hn1 Hn2 na nb l kk fa Ina Inb Inl
-                tx ty tz Htx Hkx Hty Hky Htz Hkz Hfa) as CA.
-  pose proof (K_pa v d eta Hv Hd s Ha Hb Hl na l fb Ina Inl Hfb) as CB.
-  pose proof (K_c v d eta Hv Hd s Ha Hb Hl Hn1 Hn2 na nb kk fc Ina Inb
-                tx ty tz Htx Hkx Hty Hky Htz Hkz Hfc) as CC.
-  pose proof (K_d0 v d eta Hv Hd s Ha Hb Hl Hn1 Hn2 na nb kk Ina Inb
-                tx ty tz Htx Hkx Hty Hky Htz Hkz e Hfe0) as CD.
-  pose proof (K_pa v d eta Hv Hd (mkSpan (Na s) (Nb s) (Na s) (n s)) Ha Hb Ha na na fe
-                Ina Ina Hfe) as CE.
-  unfold pa in CE; cbn [Na Nb L] in CE.
-  split.
-  - rewrite hc_p_form by exact Hn0.
-    eapply Rle_trans.
-    + eapply (hp_abs_d v eta (INR (n s)) (INR i) fa fb _ _ _ _ _ _ 2); try eassumption; try lra.
-      apply hc_p_le1; assumption.
-    + lra.
-  - rewrite hc_q_form by exact Hn0.
-    eapply Rle_trans.
-    + eapply (hq_abs_d v eta (INR (n s)) (INR i) fc e fe _ _ _ _ _ _ _ _ _ _ 4 2);
-        try eassumption; try lra.
-      apply hc_q_le1; assumption.
-    + lra.
-Qed.
-
-(** The core with the model's operations, for any division unit d. *)
-Lemma horner_model : forall (M : fmodel) (K K1 kd : R), model_ok M K ->
-  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 ->
-  1 <= kd -> kd * m_u M <= / 2097152 ->
-  forall (s : span) (na nb l kk : vec) (i : nat) (ph qh : R) (tx ty tz : R),
-  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
-  (1 <= n s)%nat -> INR (n s) <= 16777216 -> (i <= n s)%nat ->
-  vap M na (Na s) -> vap M nb (Nb s) -> vap M l (L s) ->
-  ap_add M tx (vx nb - vx na) -> ap1 (kd * m_u M) (m_eta M) (vx kk) (tx / INR (n s)) ->
-  ap_add M ty (vy nb - vy na) -> ap1 (kd * m_u M) (m_eta M) (vy kk) (ty / INR (n s)) ->
-  ap_add M tz (vz nb - vz na) -> ap1 (kd * m_u M) (m_eta M) (vz kk) (tz / INR (n s)) ->
-  horner_ok M i na l kk ph qh ->
-  Rabs (ph - p s (INR i)) <= (2003 / 100 * K1 + 202 / 100 * kd) * m_u M /\
-  Rabs (qh - q s (INR i)) <= (7811 / 100 * K1 + 1204 / 100 * kd) * m_u M.
-Proof. hm_model horner_core; right; ring. Qed.
+(** ** Horner's closed form ([PhongCountD.horner_core]: unit v for inputs, additions,
+    products and d for the division) *)
 
 (** Phong, Horner's closed form, k_j = (Nb_j - Na_j) / n with one division:
     |p^ - p_i| <= (20.03 K1 + 2.02 k_div) u, |q^ - q_i| <= (78.11 K1 + 12.04 k_div) u,
@@ -116,7 +52,7 @@ Theorem phong_horner_div_generic : forall (M : fmodel) (K K1 : R), model_ok M K 
   horner_ok M i na l kk ph qh ->
   Rabs (ph - p s (INR i)) <= (2003 / 100 * K1 + 202 / 100 * k_div M) * m_u M /\
   Rabs (qh - q s (INR i)) <= (7811 / 100 * K1 + 1204 / 100 * k_div M) * m_u M.
-Proof. kd_inst horner_model. Qed.
+Proof. kd_model horner_core. Qed.
 
 (** The same with k_j = (Nb_j - Na_j) * r, r = 1/n a rounded division:
     k_div is replaced by kd = (1 + 2^-20) k_mul + k_div + 2^-36, kd u <= 2^-21. *)
@@ -135,13 +71,9 @@ Theorem phong_horner_recip_generic : forall (M : fmodel) (K K1 : R), model_ok M 
       + 202 / 100 * ((1 + / 1048576) * k_mul M + k_div M + / 68719476736)) * m_u M /\
   Rabs (qh - q s (INR i)) <= (7811 / 100 * K1
       + 1204 / 100 * ((1 + / 1048576) * k_mul M + k_div M + / 68719476736)) * m_u M.
-Proof. kd_inst horner_model. Qed.
+Proof. kd_model horner_core. Qed.
 
 (** ** The per-pixel normal and the lerp: PhongCountD.v at dd = 2 *)
-
-Lemma conj_weaken : forall x y a b a' b' : R,
-  x <= a /\ y <= b -> a <= a' -> b <= b' -> x <= a' /\ y <= b'.
-Proof. intros x y a b a' b' [H1 H2] H3 H4. split; lra. Qed.
 
 (** [T] is the PhongCountD.v bound; dd = 2 >= |Nb - Na| for unit Na, Nb. *)
 Ltac from_dist T :=
@@ -149,7 +81,7 @@ Ltac from_dist T :=
   match goal with HM : model_ok ?M ?K, Ha : is_unit (Na ?s), Hb : is_unit (Nb ?s) |- _ =>
     pose proof (diff_sq _ _ Ha Hb); pose proof (model_u M K HM);
     pose proof HM as (_ & _ & _ & _ & _ & ? & ? & _ & _) end;
-  eapply conj_weaken; [eapply T with (dd := 2); try eassumption; lra | |];
+  eapply conj_le; [eapply T with (dd := 2); try eassumption; lra | |];
   apply Rmult_le_compat_r; lra.
 
 (** Phong, per-pixel normal N_i = na + i k, k_j = (Nb_j - Na_j) / n with one division:

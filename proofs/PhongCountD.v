@@ -19,7 +19,8 @@
     The checker takes the minimum of these bounds and the d-free ones.
     The relations ([horner_ok], [pixel_ok], [lerp_ok], [krecip_ok], ...) and
     the steps shared with PhongCount.v, DuffCount.v and PhongNormalize.v come
-    first; PhongCount.v's per-pixel and lerp bounds are these at dd = 2. *)
+    first; PhongCount.v's per-pixel and lerp bounds are these at dd = 2, and
+    its Horner core is [horner_core] here. *)
 
 From Coq Require Import Reals Lra Lia.
 From PhongApprox Require Import Span FloatModel Float FloatModelK Profiles.
@@ -31,6 +32,22 @@ Lemma hc_scale : forall t X, 0 <= t <= 1 -> Rabs (t * X) <= Rabs X.
 Proof.
   intros t X Ht. rewrite Rabs_mult, Rabs_pos_eq by lra.
   pose proof (Rabs_pos X). nra.
+Qed.
+
+Lemma dot_sq0 : forall a, 0 <= dot a a.
+Proof. intros a. unfold dot. repeat apply Rplus_le_le_0_compat; apply Rle_0_sqr. Qed.
+
+Lemma abs3 : forall X, 0 <= Rabs (vx X) /\ 0 <= Rabs (vy X) /\ 0 <= Rabs (vz X).
+Proof. intros X. repeat split; apply Rabs_pos. Qed.
+
+(** One rounding y of x scaled by lam >= 0: |lam (y - x)| <= v B + lam eta for |lam x| <= B. *)
+Lemma ap_lam : forall v eta lam y x B, 0 <= v -> 0 <= lam -> ap1 v eta y x ->
+  Rabs (lam * x) <= B -> Rabs (lam * (y - x)) <= v * B + lam * eta.
+Proof.
+  intros v eta lam y x B Hv Hl H HB. unfold ap1 in H.
+  rewrite Rabs_mult, Rabs_pos_eq in * by lra.
+  assert (lam * Rabs (y - x) <= lam * (v * Rabs x + eta)) by (apply Rmult_le_compat_l; lra).
+  assert (v * (lam * Rabs x) <= v * B) by (apply Rmult_le_compat_l; lra). lra.
 Qed.
 
 (** ** The exact p_i, q_i and their sizes *)
@@ -92,11 +109,7 @@ Proof.
   intros s Ha Hb Hl. split; [|split].
   - eapply Rle_trans; [apply dot_abs | apply diff_pair; assumption].
   - eapply Rle_trans; [apply dot_abs | apply diff_pair; assumption].
-  - pose proof (diff_sq _ _ Ha Hb).
-    assert (0 <= dot (vsub (Nb s) (Na s)) (vsub (Nb s) (Na s))).
-    { unfold dot. pose proof (Rle_0_sqr (vx (vsub (Nb s) (Na s)))).
-      pose proof (Rle_0_sqr (vy (vsub (Nb s) (Na s)))).
-      pose proof (Rle_0_sqr (vz (vsub (Nb s) (Na s)))). unfold Rsqr in *. lra. }
+  - pose proof (diff_sq _ _ Ha Hb). pose proof (dot_sq0 (vsub (Nb s) (Na s))).
     rewrite Rabs_pos_eq; lra.
 Qed.
 
@@ -109,7 +122,6 @@ Lemma recip_ap1 : forall (u eta kd km m x r y : R),
   ap1 (((1 + / 1048576) * km + kd + / 68719476736) * u) eta y (x / m).
 Proof.
   intros u eta kd km m x r y Hu He He2 Hkd Hkdu Hkm Hm Hr Hy. unfold ap1 in *.
-  assert (Im : 0 < / m) by (apply Rinv_0_lt_compat; lra).
   assert (Im2 : / 16777216 <= / m) by (apply Rinv_le_contravar; lra).
   replace (1 / m) with (/ m) in Hr by (field; lra).
   rewrite (Rabs_pos_eq (/ m)) in Hr by lra.
@@ -119,9 +131,7 @@ Proof.
     { assert (/ 68719476736 * u * / 16777216 <= / 68719476736 * u * / m)
         by (apply Rmult_le_compat_l; nra). lra. }
     unfold dd. lra. }
-  assert (Hdd : 0 <= dd <= / 1048576).
-  { unfold dd. split; [nra|].
-    lra. }
+  assert (Hdd : 0 <= dd <= / 1048576) by (unfold dd; split; [nra | lra]).
   assert (X1 : Rabs (x * r - x / m) <= dd * Rabs (x / m)).
   { replace (x * r - x / m) with (x * (r - / m)) by (field; lra).
     replace (x / m) with (x * / m) by (field; lra).
@@ -136,7 +146,6 @@ Proof.
   { apply Rmult_le_compat_l; [nra|]. apply Rmult_le_compat_r; [apply Rabs_pos | lra]. }
   replace (y - x / m) with ((y - x * r) + (x * r - x / m)) by ring.
   eapply Rle_trans; [apply Rabs_triang|].
-  pose proof (Rabs_pos (x / m)).
   assert (E : ((1 + / 1048576) * km + kd + / 68719476736) * u * Rabs (x / m)
               = km * u * Rabs (x / m) + km * u * (/ 1048576 * Rabs (x / m))
                 + dd * Rabs (x / m)) by (unfold dd; ring).
@@ -158,16 +167,6 @@ Definition horner_ok (M : fmodel) (i : nat) (na l kk : vec) (ph qh : R) : Prop :
     (exists y1 y2 y3, ap_mul M y1 (fc * INR i) /\ ap_add M y2 (y1 + 2 * e) /\
                       ap_mul M y3 (y2 * INR i) /\ ap_add M qh (y3 + fe)).
 
-Lemma hm_small : forall M K K1, model_ok M K -> 1 <= K1 <= K -> small_ok (K1 * m_u M) (m_eta M).
-Proof.
-  intros M K K1 HM HK. pose proof HM as (H1 & H2 & H3 & _ & _ & _ & _ & H8 & H9).
-  repeat split; try lra.
-  - apply Rmult_lt_0_compat; lra.
-  - assert (K1 * m_u M <= K * m_u M) by (apply Rmult_le_compat_r; lra). lra.
-  - assert (m_u M <= K1 * m_u M) by (rewrite <- (Rmult_1_l (m_u M)) at 1;
-      apply Rmult_le_compat_r; lra). lra.
-Qed.
-
 Lemma hm_small_d : forall M K kd, model_ok M K -> 1 <= kd -> kd * m_u M <= / 2097152 ->
   small_ok (kd * m_u M) (m_eta M).
 Proof.
@@ -176,6 +175,13 @@ Proof.
   - apply Rmult_lt_0_compat; lra.
   - assert (m_u M <= kd * m_u M) by (rewrite <- (Rmult_1_l (m_u M)) at 1;
       apply Rmult_le_compat_r; lra). lra.
+Qed.
+
+Lemma hm_small : forall M K K1, model_ok M K -> 1 <= K1 <= K -> small_ok (K1 * m_u M) (m_eta M).
+Proof.
+  intros M K K1 HM HK. pose proof HM as (H1 & _ & _ & _ & _ & _ & _ & _ & H9).
+  apply (hm_small_d M K K1 HM); [lra |].
+  assert (K1 * m_u M <= K * m_u M) by (apply Rmult_le_compat_r; lra). lra.
 Qed.
 
 Lemma hm_ap : forall M k K1 y x, 0 < m_u M -> k <= K1 ->
@@ -261,7 +267,6 @@ Definition pixel_ok (M : fmodel) (i : nat) (na l kk : vec) (ph qh : R) : Prop :=
   exists nh, ncomp_ok M i (vx nh) (vx na) (vx kk) /\ ncomp_ok M i (vy nh) (vy na) (vy kk) /\
     ncomp_ok M i (vz nh) (vz na) (vz kk) /\ fdot_ok M nh l ph /\ fdot_ok M nh nh qh.
 
-
 (** The lerp with the model's operations: t^ within ap1 (kd u) of i/n, then
     w = 1 - t^ (a subtraction), (w na_j) + (t^ nb_j), each product rounded or fused. *)
 Definition lcomp_ok (M : fmodel) (th nj naj nbj : R) : Prop :=
@@ -274,29 +279,31 @@ Definition lerp_ok (M : fmodel) (th : R) (na nb l : vec) (ph qh : R) : Prop :=
 
 (** ** Cauchy-Schwarz on absolute values *)
 
+Lemma nd_sq_le : forall x y, 0 <= x -> 0 <= y -> x * x <= y * y -> x <= y.
+Proof. intros x y Hx Hy H. nra. Qed.
+
+(** Cauchy-Schwarz with absolute values. *)
+Lemma nd_cs : forall a b : vec,
+  (Rabs (vx a) * Rabs (vx b) + Rabs (vy a) * Rabs (vy b) + Rabs (vz a) * Rabs (vz b))
+  * (Rabs (vx a) * Rabs (vx b) + Rabs (vy a) * Rabs (vy b) + Rabs (vz a) * Rabs (vz b))
+  <= dot a a * dot b b.
+Proof.
+  intros a b. unfold dot.
+  rewrite <- (abs_sq (vx a)), <- (abs_sq (vy a)), <- (abs_sq (vz a)),
+          <- (abs_sq (vx b)), <- (abs_sq (vy b)), <- (abs_sq (vz b)).
+  set (x1 := Rabs (vx a)). set (x2 := Rabs (vy a)). set (x3 := Rabs (vz a)).
+  set (y1 := Rabs (vx b)). set (y2 := Rabs (vy b)). set (y3 := Rabs (vz b)).
+  pose proof (Rle_0_sqr (x1 * y2 - x2 * y1)). pose proof (Rle_0_sqr (x1 * y3 - x3 * y1)).
+  pose proof (Rle_0_sqr (x2 * y3 - x3 * y2)). unfold Rsqr in *. nra.
+Qed.
+
 Lemma cs_abs : forall (a b : vec) (A : R), 0 <= A -> dot a a <= A * A -> dot b b <= 1 ->
   Rabs (vx a) * Rabs (vx b) + Rabs (vy a) * Rabs (vy b) + Rabs (vz a) * Rabs (vz b) <= A.
 Proof.
-  intros a b A HA Ha Hb. unfold dot in Ha, Hb.
-  rewrite <- (abs_sq (vx a)), <- (abs_sq (vy a)), <- (abs_sq (vz a)) in Ha.
-  rewrite <- (abs_sq (vx b)), <- (abs_sq (vy b)), <- (abs_sq (vz b)) in Hb.
-  set (x1 := Rabs (vx a)) in *. set (x2 := Rabs (vy a)) in *. set (x3 := Rabs (vz a)) in *.
-  set (y1 := Rabs (vx b)) in *. set (y2 := Rabs (vy b)) in *. set (y3 := Rabs (vz b)) in *.
-  assert (0 <= x1) by apply Rabs_pos. assert (0 <= x2) by apply Rabs_pos.
-  assert (0 <= x3) by apply Rabs_pos. assert (0 <= y1) by apply Rabs_pos.
-  assert (0 <= y2) by apply Rabs_pos. assert (0 <= y3) by apply Rabs_pos.
-  set (S := x1 * y1 + x2 * y2 + x3 * y3).
-  assert (S0 : 0 <= S) by (unfold S; nra).
-  assert (L : S * S <= (x1 * x1 + x2 * x2 + x3 * x3) * (y1 * y1 + y2 * y2 + y3 * y3)).
-  { unfold S. pose proof (Rle_0_sqr (x1 * y2 - x2 * y1)).
-    pose proof (Rle_0_sqr (x1 * y3 - x3 * y1)). pose proof (Rle_0_sqr (x2 * y3 - x3 * y2)).
-    unfold Rsqr in *. nra. }
-  assert (X0 : 0 <= x1 * x1 + x2 * x2 + x3 * x3) by nra.
-  assert (S2 : S * S <= A * A).
-  { eapply Rle_trans; [exact L|].
-    replace (A * A) with ((A * A) * 1) by ring.
-    apply Rmult_le_compat; nra. }
-  nra.
+  intros a b A HA Ha Hb. pose proof (dot_sq0 a). pose proof (dot_sq0 b).
+  apply nd_sq_le; [repeat apply Rplus_le_le_0_compat; apply Rmult_le_pos; apply Rabs_pos | lra |].
+  eapply Rle_trans; [apply nd_cs|]. replace (A * A) with (A * A * 1) by ring.
+  apply Rmult_le_compat; lra.
 Qed.
 
 Lemma mix_le : forall t a b, 0 <= t <= 1 -> a <= 1 -> b <= 1 -> (1 - t) * a + t * b <= 1.
@@ -363,7 +370,6 @@ Lemma pd_comp : forall v d eta m i a0 b0 ra rb tt kj z nj,
 Proof.
   intros v d eta m i a0 b0 ra rb tt kj z nj Hv Hd Hm Hi Ha0 Hb0 Hra Hrb Htt Hkj Hz Hnj.
   small_facts Hv. v_facts Hd.
-  pose proof (Rabs_pos a0). pose proof (Rabs_pos b0).
   pose proof (theta_rng m i ltac:(lra) Hi) as Ht.
   set (t := i / m) in *.
   destruct (mix_in v eta t a0 b0 ra rb Hv Ht Ha0 Hb0 Hra Hrb) as (HM & AB & Nn & R1).
@@ -384,16 +390,9 @@ Proof.
   (* the division, times i *)
   assert (Dm : Rabs (i * kj - t * tt) <= d * Rabs tt + m * eta).
   { replace (i * kj - t * tt) with (i * (kj - tt / m)) by (rewrite HI; field; lra).
-    rewrite Rabs_mult, (Rabs_pos_eq i) by lra.
-    assert (Em : Rabs (tt / m) = Rabs tt / m).
-    { unfold Rdiv. rewrite Rabs_mult, (Rabs_pos_eq (/ m)); [reflexivity|].
-      left. apply Rinv_0_lt_compat. lra. }
-    rewrite Em in Hkj.
-    assert (i * Rabs (kj - tt / m) <= i * (d * (Rabs tt / m) + eta))
-      by (apply Rmult_le_compat_l; lra).
-    assert (i * (d * (Rabs tt / m)) = t * (d * Rabs tt)) by (unfold t; field; lra).
-    assert (t * (d * Rabs tt) <= 1 * (d * Rabs tt))
-      by (apply Rmult_le_compat_r; [apply Rmult_le_pos; [lra | apply Rabs_pos] | lra]).
+    assert (B : Rabs (i * (tt / m)) <= Rabs tt).
+    { replace (i * (tt / m)) with (t * tt) by (rewrite HI; field; lra). apply hc_scale, Ht. }
+    pose proof (ap_lam d eta i _ _ _ ltac:(lra) ltac:(lra) Hkj B).
     assert (i * eta <= m * eta) by (apply Rmult_le_compat_r; lra). lra. }
   assert (DT : d * Rabs tt <= d * (Rabs D + / 262144)) by (apply Rmult_le_compat_l; lra).
   assert (Ik : Rabs (i * kj) <= Rabs D + / 131072).
@@ -423,7 +422,6 @@ Proof.
   eapply Rle_trans; [apply (mix_out v eta _ _ _ _ _ (/ 65536) ltac:(lra) Hnj Nn E1); lra|].
   assert (0 <= v * Rabs D) by (apply Rmult_le_pos; lra).
   assert (0 <= d * Rabs D) by (apply Rmult_le_pos; lra).
-  assert (0 <= v * Mj) by (apply Rmult_le_pos; lra).
   fold Mj. lra.
 Qed.
 
@@ -438,14 +436,14 @@ Qed.
 Lemma ld_comp : forall v d eta m i a0 b0 ra rb th w y1 y2 nj,
   small_ok v eta -> small_ok d eta -> 1 <= m <= 16777216 -> 0 <= i <= m ->
   Rabs a0 <= 1 -> Rabs b0 <= 1 ->
-  ap1 v eta ra a0 -> ap1 v eta rb b0 -> ap1 d eta th (i / m) -> ap1 v eta w (1 - th) ->
-  ap1 v eta y1 (w * ra) -> ap1 v eta y2 (th * rb) -> ap1 v eta nj (y1 + y2) ->
+  ap1 v eta nj (y1 + y2) -> ap1 v eta y1 (w * ra) -> ap1 v eta y2 (th * rb) ->
+  ap1 v eta w (1 - th) -> ap1 d eta th (i / m) -> ap1 v eta ra a0 -> ap1 v eta rb b0 ->
   Rabs (nj - (a0 + i / m * (b0 - a0))) <=
     v * (4 * ((1 - i / m) * Rabs a0 + i / m * Rabs b0) + 0 * Rabs (b0 - a0) + / 32768)
     + d * (0 * ((1 - i / m) * Rabs a0 + i / m * Rabs b0) + 1001 / 1000 * Rabs (b0 - a0)
            + / 32768).
 Proof.
-  intros v d eta m i a0 b0 ra rb th w y1 y2 nj Hv Hd Hm Hi Ha0 Hb0 Hra Hrb Hth Hw Hy1 Hy2 Hnj.
+  intros v d eta m i a0 b0 ra rb th w y1 y2 nj Hv Hd Hm Hi Ha0 Hb0 Hnj Hy1 Hy2 Hw Hth Hra Hrb.
   small_facts Hv. v_facts Hd.
   pose proof (Rabs_pos a0). pose proof (Rabs_pos b0).
   pose proof (theta_rng m i ltac:(lra) Hi) as Ht.
@@ -460,24 +458,14 @@ Proof.
   assert (A1 : v * Rabs a0 <= v) by (pose proof (Rmult_le_compat_l v _ _ ltac:(lra) Ha0); lra).
   assert (B1 : v * Rabs b0 <= v) by (pose proof (Rmult_le_compat_l v _ _ ltac:(lra) Hb0); lra).
   assert (E1 : eta * Rabs a0 <= eta) by (pose proof (Rmult_le_compat_l eta _ _ ltac:(lra) Ha0); lra).
-  assert (E2 : eta * Rabs b0 <= eta) by (pose proof (Rmult_le_compat_l eta _ _ ltac:(lra) Hb0); lra).
   assert (P1 : 0 <= v * t) by (apply Rmult_le_pos; lra).
   assert (P2 : v * t <= v) by (pose proof (Rmult_le_compat_l v t 1 ltac:(lra) ltac:(lra)); lra).
   assert (P3 : d * t <= d) by (pose proof (Rmult_le_compat_l d t 1 ltac:(lra) ltac:(lra)); lra).
-  assert (P4 : 0 <= d * t) by (apply Rmult_le_pos; lra).
   assert (P5 : d * t * Rabs D <= d * Rabs D)
     by (apply Rmult_le_compat_r; [apply Rabs_pos | lra]).
-  assert (P6 : 0 <= v * t * Rabs a0) by (apply Rmult_le_pos; lra).
-  assert (P7 : 0 <= v * t * Rabs b0) by (apply Rmult_le_pos; lra).
-  assert (P8 : 0 <= v * Rabs a0) by (apply Rmult_le_pos; lra).
-  assert (P9 : 0 <= v * Rabs b0) by (apply Rmult_le_pos; lra).
   assert (P10 : 0 <= d * Rabs D) by (apply Rmult_le_pos; lra).
   assert (P11 : eta * Rabs D <= eta * 2) by (apply Rmult_le_compat_l; lra).
   assert (P12 : d * Rabs D <= / 2097152 * 2) by (apply Rmult_le_compat; lra).
-  assert (P13 : v * t * Rabs b0 <= v * Rabs b0)
-    by (apply Rmult_le_compat_r; [apply Rabs_pos | lra]).
-  assert (P14 : v * t * Rabs a0 <= v * Rabs a0)
-    by (apply Rmult_le_compat_r; [apply Rabs_pos | lra]).
   (* t^ and 1 - t^ *)
   assert (Tau : Rabs (th - t) <= d * t + eta) by lra.
   assert (W1 : Rabs (1 - th) <= (1 - t) + d * t + eta).
@@ -520,7 +508,6 @@ Proof.
                   + / 65536 * v + / 262144 * d + 8 * eta).
   { rewrite EN. eapply Rle_trans; [apply tri5|]. lra. }
   assert (VM : v * Mj <= v) by (pose proof (Rmult_le_compat_l v _ _ ltac:(lra) (proj2 HM)); lra).
-  assert (0 <= v * Mj) by (apply Rmult_le_pos; lra).
   assert (V1 : v * ((1 - t) * Rabs a0) <= v * Mj).
   { apply Rmult_le_compat_l; [lra|]. unfold Mj.
     pose proof (Rmult_le_pos t (Rabs b0) ltac:(lra) ltac:(lra)). lra. }
@@ -532,6 +519,13 @@ Proof.
 Qed.
 
 (** ** The dot products of a computed normal within the mixture weights *)
+
+(** The weights of a read-in unit vector and of none. *)
+Lemma wb16_in : forall X, is_unit X -> wb16 (Float.wIn X) /\ wb16 vzero.
+Proof.
+  intros X HX. destruct (unit_bounded _ HX) as [X1 [X2 X3]]. pose proof (abs3 X).
+  unfold wb16, Float.wIn, vzero; cbn [vx vy vz]. repeat split; lra.
+Qed.
 
 Lemma wM_sum : forall (a b X : vec) (t c1 c2 dd : R), 0 <= t <= 1 -> 0 <= c1 -> 0 <= c2 ->
   Rabs (vx a) * Rabs (vx X) + Rabs (vy a) * Rabs (vy X) + Rabs (vz a) * Rabs (vz X) <= 1 ->
@@ -553,7 +547,6 @@ Proof.
   assert (M1 : c1 * ((1 - t) * SA + t * SB) <= c1 * 1)
     by (apply Rmult_le_compat_l; [lra | apply mix_le; lra]).
   assert (M2 : c2 * SD <= c2 * dd) by (apply Rmult_le_compat_l; lra).
-  pose proof (Rabs_pos (vx X)). pose proof (Rabs_pos (vy X)). pose proof (Rabs_pos (vz X)).
   unfold SA, SB, SD in *. lra.
 Qed.
 
@@ -600,14 +593,7 @@ Proof.
   destruct NB as [N1 [N2 N3]].
   pose proof (wM_wb16 _ _ t c1 c2 Ht Hc1 Hc2 (unit_bounded _ Ha) (unit_bounded _ Hb)) as Wv.
   pose proof (wM_wb16 _ _ t 0 c3 Ht ltac:(lra) Hc3 (unit_bounded _ Ha) (unit_bounded _ Hb)) as Wd.
-  assert (W0 : wb16 vzero) by (unfold wb16, vzero; cbn [vx vy vz]; repeat split; lra).
-  assert (WL : wb16 (Float.wIn (L s))).
-  { unfold wb16, Float.wIn; cbn [vx vy vz].
-    pose proof (Rabs_pos (vx (L s))). pose proof (Rabs_pos (vy (L s))).
-    pose proof (Rabs_pos (vz (L s))). repeat split; lra. }
-  pose proof (Rabs_pos (vx (L s))). pose proof (Rabs_pos (vy (L s))).
-  pose proof (Rabs_pos (vz (L s))). pose proof (Rabs_pos (vx (nrm s t))).
-  pose proof (Rabs_pos (vy (nrm s t))). pose proof (Rabs_pos (vz (nrm s t))).
+  destruct (wb16_in _ Hl) as [WL W0].
   assert (NB1 : vbounded (nrm s t) 1) by (repeat split; assumption).
   (* the weighted sums against L and against N *)
   pose proof (wM_sum _ _ _ t c1 c2 dd Ht ltac:(lra) ltac:(lra) AL BL DL (unit_bounded _ Hl)) as SL1.
@@ -700,16 +686,9 @@ Proof.
   assert (VC : v * (C2 + cC) <= / 2097152 * (4 + / 1000)) by (apply Rmult_le_compat; lra).
   assert (F1 : Rabs (m * y1 - t * (m * m * fC)) <= v * (C2 + cC) + m * eta).
   { replace (m * y1 - t * (m * m * fC)) with (m * (y1 - fC * i)) by (rewrite Ei; ring).
-    rewrite Rabs_mult, (Rabs_pos_eq m) by lra.
-    assert (G : m * Rabs (fC * i) <= C2 + cC).
-    { replace (m * Rabs (fC * i)) with (Rabs (t * (m * m * fC)))
-        by (rewrite Ei, !Rabs_mult, (Rabs_pos_eq m), (Rabs_pos_eq t) by lra; ring).
-      eapply Rle_trans; [apply hc_scale; exact Ht|]. pose proof (abs_near _ _ _ HC). lra. }
-    assert (m * Rabs (y1 - fC * i) <= m * (v * Rabs (fC * i) + eta))
-      by (apply Rmult_le_compat_l; lra).
-    assert (v * (m * Rabs (fC * i)) <= v * (C2 + cC)) by (apply Rmult_le_compat_l; lra).
-    assert (m * (v * Rabs (fC * i) + eta) = v * (m * Rabs (fC * i)) + m * eta) by ring.
-    lra. }
+    apply ap_lam; [lra | lra | exact H1 |].
+    replace (m * (fC * i)) with (t * (m * m * fC)) by (rewrite Ei; ring).
+    eapply Rle_trans; [apply hc_scale; exact Ht|]. pose proof (abs_near _ _ _ HC). lra. }
   assert (F0 : Rabs (t * (m * m * fC) - t * c) <= cC).
   { replace (t * (m * m * fC) - t * c) with (t * (m * m * fC - c)) by ring.
     eapply Rle_trans; [apply hc_scale; exact Ht|]. exact HC. }
@@ -723,15 +702,8 @@ Proof.
       by (rewrite Rabs_mult, (Rabs_pos_eq 2) by lra; lra).
     eapply Rle_trans; [apply tri5|]. unfold S2b. lra. }
   assert (F2 : Rabs (m * y2 - m * (y1 + 2 * e)) <= v * S2b + m * eta).
-  { rewrite <- Rmult_minus_distr_l, Rabs_mult, (Rabs_pos_eq m) by lra.
-    assert (m * Rabs (y2 - (y1 + 2 * e)) <= m * (v * Rabs (y1 + 2 * e) + eta))
-      by (apply Rmult_le_compat_l; lra).
-    assert (R1 : m * Rabs (y1 + 2 * e) = Rabs (m * y1 + 2 * (m * e)))
-      by (rewrite <- (Rabs_pos_eq m) at 1 by lra; rewrite <- Rabs_mult; f_equal; ring).
-    assert (v * (m * Rabs (y1 + 2 * e)) <= v * S2b)
-      by (apply Rmult_le_compat_l; lra).
-    assert (m * (v * Rabs (y1 + 2 * e) + eta) = v * (m * Rabs (y1 + 2 * e)) + m * eta) by ring.
-    lra. }
+  { rewrite <- Rmult_minus_distr_l. apply ap_lam; [lra | lra | exact H2 |].
+    replace (m * (y1 + 2 * e)) with (m * y1 + 2 * (m * e)) by ring. exact S2. }
   assert (S3 : Rabs (m * y2) <= S2b + / 100).
   { replace (m * y2) with ((m * y1 + 2 * (m * e)) + (m * y2 - m * (y1 + 2 * e))) by ring.
     eapply Rle_trans; [apply Rabs_triang|]. lra. }
@@ -780,7 +752,6 @@ Lemma hk_comp : forall v d eta m a0 b0 ra rb tt kj,
 Proof.
   intros v d eta m a0 b0 ra rb tt kj Hv Hd Hm Ha0 Hb0 Hra Hrb Htt Hkj.
   small_facts Hv. v_facts Hd.
-  pose proof (Rabs_pos a0). pose proof (Rabs_pos b0).
   set (D := b0 - a0) in *.
   pose proof (Rabs_pos D).
   assert (HD2 : Rabs D <= 2) by (unfold D; pose proof (absdiff b0 a0); lra).
@@ -800,14 +771,8 @@ Proof.
       by (apply Rmult_le_compat; lra). lra. }
   assert (Dm : Rabs (m * kj - tt) <= d * Rabs tt + m * eta).
   { replace (m * kj - tt) with (m * (kj - tt / m)) by (field; lra).
-    rewrite Rabs_mult, (Rabs_pos_eq m) by lra.
-    assert (Em : Rabs (tt / m) = Rabs tt / m).
-    { unfold Rdiv. rewrite Rabs_mult, (Rabs_pos_eq (/ m)); [reflexivity|].
-      left. apply Rinv_0_lt_compat. lra. }
-    rewrite Em in Hkj.
-    assert (m * Rabs (kj - tt / m) <= m * (d * (Rabs tt / m) + eta))
-      by (apply Rmult_le_compat_l; lra).
-    assert (m * (d * (Rabs tt / m)) = d * Rabs tt) by (field; lra). lra. }
+    apply ap_lam; [lra | lra | exact Hkj |].
+    replace (m * (tt / m)) with tt by (field; lra). lra. }
   assert (DT : d * Rabs tt <= d * (Rabs D + / 262144)) by (apply Rmult_le_compat_l; lra).
   replace (m * kj - D) with ((m * kj - tt) + (tt - (rb - ra)) + (rb - b0) - (ra - a0))
     by (unfold D; ring).
@@ -817,11 +782,6 @@ Proof.
   assert (0 <= d * Rabs D) by (apply Rmult_le_pos; lra).
   lra.
 Qed.
-
-Definition wKD (a b : vec) : vec :=
-  mkV (Rabs (vx a) + Rabs (vx b) + 1001 / 1000 * Rabs (vx b - vx a) + / 32768)
-      (Rabs (vy a) + Rabs (vy b) + 1001 / 1000 * Rabs (vy b - vy a) + / 32768)
-      (Rabs (vz a) + Rabs (vz b) + 1001 / 1000 * Rabs (vz b - vz a) + / 32768).
 
 Section HK.
 Context (v d eta dd : R) (Hv : small_ok v eta) (Hdv : small_ok d eta) (s : span)
@@ -835,28 +795,21 @@ Context (v d eta dd : R) (Hv : small_ok v eta) (Hdv : small_ok d eta) (s : span)
 
 Local Notation Dl := (vsub (Nb s) (Na s)).
 
+(** The weights of n k: |a_j| + |b_j| = 2 ((1 - 1/2) |a_j| + 1/2 |b_j|). *)
 Lemma hk_vec : vapprox 1 (INR (n s)) kk Dl
-  (vlin v d (wKD (Na s) (Nb s)) (wM (Na s) (Nb s) 0 0 (1001 / 1000))).
+  (vlin v d (wM (Na s) (Nb s) (1 / 2) 2 (1001 / 1000)) (wM (Na s) (Nb s) 0 0 (1001 / 1000))).
 Proof.
   assert (Hm : 1 <= INR (n s) <= 16777216) by (split; [apply (le_INR 1); exact Hn1 | exact Hn2]).
   destruct (unit_bounded _ Ha) as [A1 [A2 A3]].
   destruct (unit_bounded _ Hb) as [B1 [B2 B3]].
   destruct Ina as [I1 [I2 I3]]. destruct Inb as [J1 [J2 J3]].
-  unfold vapprox, vlin, wKD, wM, vsub; cbn [vx vy vz]. rewrite !Rmult_1_l.
+  unfold vapprox, vlin, wM, vsub; cbn [vx vy vz]. rewrite !Rmult_1_l.
   repeat split; (eapply Rle_trans; [eapply (hk_comp v d eta); eassumption | lra]).
 Qed.
 
-Lemma hk_wb : wb16 (wKD (Na s) (Nb s)) /\ wb16 (wM (Na s) (Nb s) 0 0 (1001 / 1000)).
-Proof.
-  split; [| apply wM_wb16; try lra; apply unit_bounded; assumption].
-  destruct (unit_bounded _ Ha) as [A1 [A2 A3]].
-  destruct (unit_bounded _ Hb) as [B1 [B2 B3]].
-  assert (G : forall x y, Rabs x <= 1 -> Rabs y <= 1 ->
-    0 <= Rabs x + Rabs y + 1001 / 1000 * Rabs (y - x) + / 32768 <= 16).
-  { intros x y Hx Hy. pose proof (Rabs_pos x). pose proof (Rabs_pos y).
-    pose proof (Rabs_pos (y - x)). pose proof (absdiff y x). lra. }
-  unfold wb16, wKD; cbn [vx vy vz]. repeat split; apply G; assumption.
-Qed.
+Lemma hk_wb : wb16 (wM (Na s) (Nb s) (1 / 2) 2 (1001 / 1000))
+  /\ wb16 (wM (Na s) (Nb s) 0 0 (1001 / 1000)).
+Proof. split; apply wM_wb16; try lra; apply unit_bounded; assumption. Qed.
 
 (** n (k.X) for a unit X read as xh: the set-ups A (X = L) and D/2 (X = Na). *)
 Lemma kx_dot : forall (xh X : vec) (y : R), is_unit X -> vap1 v eta xh X ->
@@ -867,23 +820,17 @@ Proof.
   intros xh X y HX IX Hy. destruct HDd as [Hdd HD].
   assert (Hm : 1 <= INR (n s) <= 16777216) by (split; [apply (le_INR 1); exact Hn1 | exact Hn2]).
   destruct hk_wb as [W1 W2].
-  assert (W0 : wb16 vzero) by (unfold wb16, vzero; cbn [vx vy vz]; repeat split; lra).
-  assert (WX : wb16 (Float.wIn X)).
-  { destruct (unit_bounded _ HX) as [X1 [X2 X3]]. unfold wb16, Float.wIn; cbn [vx vy vz].
-    pose proof (Rabs_pos (vx X)). pose proof (Rabs_pos (vy X)).
-    pose proof (Rabs_pos (vz X)). repeat split; lra. }
+  destruct (wb16_in _ HX) as [WX W0].
   pose proof (cs_abs _ _ dd ltac:(lra) HD (Req_le _ _ HX)) as DX.
   pose proof (unit_pair _ _ Ha HX) as AX. pose proof (unit_pair _ _ Hb HX) as BX.
   pose proof (diff_bounded _ _ Ha Hb) as [D1 [D2 D3]].
   destruct (unit_bounded _ HX) as [X1 [X2 X3]].
-  pose proof (Rabs_pos (vx X)). pose proof (Rabs_pos (vy X)). pose proof (Rabs_pos (vz X)).
-  pose proof (Rabs_pos (vx Dl)). pose proof (Rabs_pos (vy Dl)). pose proof (Rabs_pos (vz Dl)).
   pose proof (dot_w v d eta dd 16 (/ 100) (INR (n s)) 1 y (202 / 100 + 501 / 100 * dd)
     (2 / 100 + 101 / 100 * dd) kk xh Dl X _ _ _ _ Hv Hdv ltac:(lra) ltac:(lra) Hy ltac:(lra) ltac:(lra) ltac:(lra)
     hk_vec (K_in_vec v d eta Hv _ _ IX) (diff_bounded _ _ Ha Hb) (vb12 _ (unit_bounded _ HX))
     W1 W2 WX W0 DX ltac:(lra)) as HD2.
   rewrite Rmult_1_r in HD2. apply HD2.
-  - unfold wsum0, wKD, Float.wIn; unfold vsub in *; cbn [vx vy vz] in *. lra.
+  - unfold wsum0, wM, Float.wIn; unfold vsub in *; cbn [vx vy vz] in *. lra.
   - unfold wsum0, wM, vzero; unfold vsub in *; cbn [vx vy vz] in *. lra.
 Qed.
 
@@ -902,7 +849,6 @@ Proof.
                + Rabs (vz Dl) * Rabs (vz Dl) <= dd * dd).
   { rewrite !abs_sq. exact HD. }
   pose proof (diff_bounded _ _ Ha Hb) as [D1 [D2 D3]].
-  pose proof (Rabs_pos (vx Dl)). pose proof (Rabs_pos (vy Dl)). pose proof (Rabs_pos (vz Dl)).
   assert (dd * dd <= 4) by nra.
   assert (0 <= dd * dd) by nra.
   pose proof (dot_w v d eta (dd * dd) 16 (/ 100) (INR (n s)) (INR (n s)) y
@@ -911,7 +857,7 @@ Proof.
     hk_vec hk_vec (diff_bounded _ _ Ha Hb) (diff_bounded _ _ Ha Hb)
     W1 W2 W1 W2 DD ltac:(lra)) as HD2.
   apply HD2.
-  - unfold wsum0, wKD; unfold vsub in *; cbn [vx vy vz] in *. lra.
+  - unfold wsum0, wM; unfold vsub in *; cbn [vx vy vz] in *. lra.
   - unfold wsum0, wM; unfold vsub in *; cbn [vx vy vz] in *. lra.
 Qed.
 
@@ -927,23 +873,16 @@ Proof.
 Qed.
 
 (** The two dot products of a computed normal nh within the mixture weights
-    (c1, c2 for v; 1.001 for d) of N(i/n): [pd_tail] at p(i), q(i). *)
-Lemma nrm_core : forall (l nh : vec) (i : nat) (ph qh c1 c2 : R),
-  is_unit (L s) -> (i <= n s)%nat -> vap1 v eta l (L s) -> 0 <= c1 <= 4 -> 0 <= c2 <= 3 ->
-  vapprox 1 1 nh (nrm s (INR i / INR (n s)))
-    (vlin v d (wM (Na s) (Nb s) (INR i / INR (n s)) c1 c2)
-              (wM (Na s) (Nb s) (INR i / INR (n s)) 0 (1001 / 1000))) ->
-  fdot_rel v v eta nh l ph -> fdot_rel v v eta nh nh qh ->
-  Rabs (ph - p s (INR i)) <= (c1 + c2 * dd + 402 / 100) * v + (1001 / 1000 * dd + 2 / 100) * d /\
-  Rabs (qh - q s (INR i)) <= (2 * c1 + 2 * c2 * dd + 302 / 100) * v
-                             + (2 * (1001 / 1000) * dd + 2 / 100) * d.
-Proof.
-  intros l nh i ph qh c1 c2 Hl Hi Inl Hc1 Hc2 VN Hp Hq.
-  destruct HDd as [Hdd HD]. destruct (hk_pix i Hi) as (Hn0 & _ & _ & Ht).
-  rewrite pp_p_form, pp_q_form by exact Hn0.
-  exact (pd_tail v d eta s nh l _ ph qh dd c1 c2 (1001 / 1000) Hv Hdv Ha Hb Hl Ht (proj1 Hdd) HD
-           Hc1 Hc2 ltac:(lra) Inl VN Hp Hq).
-Qed.
+    (c1, c2 for v; 1.001 for d) of N(i/n): [pd_tail] at p(i), q(i), left: the
+    components of nh, with the sizes of the inputs. *)
+Local Ltac nrm_pre l nh i Hi :=
+  destruct (hk_pix i Hi) as (Hn0 & Hm & Hii & Ht); pose proof HDd as [[Hdd _] HD];
+  destruct (unit_bounded _ Ha) as [A1 [A2 A3]];
+  destruct (unit_bounded _ Hb) as [B1 [B2 B3]];
+  pose proof Ina as [Ia1 [Ia2 Ia3]]; pose proof Inb as [Ib1 [Ib2 Ib3]];
+  rewrite pp_p_form, pp_q_form by exact Hn0;
+  eapply (pd_tail v d eta s nh l); try eassumption; try lra;
+  unfold vapprox, vlin, wM, nrm, vadd, vscale, vsub; cbn [vx vy vz]; rewrite !Rmult_1_l.
 
 (** The per-pixel normal, the lerp and Horner's closed form on the section's
     set-up. *)
@@ -959,13 +898,7 @@ Lemma pd_core : forall (l nh : vec) (i : nat) (zx zy zz ph qh : R),
                              + (2 * (1001 / 1000) * dd + 2 / 100) * d.
 Proof.
   intros l nh i zx zy zz ph qh Hl Hi Inl Hzx Hnx Hzy Hny Hzz Hnz Hp Hq.
-  destruct (hk_pix i Hi) as (_ & Hm & Hii & _).
-  destruct (unit_bounded _ Ha) as [A1 [A2 A3]].
-  destruct (unit_bounded _ Hb) as [B1 [B2 B3]].
-  pose proof Ina as [Ia1 [Ia2 Ia3]]. pose proof Inb as [Ib1 [Ib2 Ib3]].
-  apply (nrm_core l nh); try assumption; try lra.
-  unfold vapprox, vlin, wM, nrm, vadd, vscale, vsub; cbn [vx vy vz]. rewrite !Rmult_1_l.
-  repeat split; eapply pd_comp; eassumption.
+  nrm_pre l nh i Hi. repeat split; eapply pd_comp; eassumption.
 Qed.
 
 Lemma ld_core : forall (l nh : vec) (i : nat) (th wx wy wz ax ay az bx by_ bz ph qh : R),
@@ -984,18 +917,20 @@ Lemma ld_core : forall (l nh : vec) (i : nat) (th wx wy wz ax ay az bx by_ bz ph
 Proof.
   intros l nh i th wx wy wz ax ay az bx by_ bz ph qh Hl Hi Inl Hth Hp Hq
     Hnx Hbx Hax Hwx Hny Hby Hay Hwy Hnz Hbz Haz Hwz.
-  destruct (hk_pix i Hi) as (_ & Hm & Hii & _).
-  destruct (unit_bounded _ Ha) as [A1 [A2 A3]].
-  destruct (unit_bounded _ Hb) as [B1 [B2 B3]].
-  pose proof Ina as [Ia1 [Ia2 Ia3]]. pose proof Inb as [Ib1 [Ib2 Ib3]].
-  apply (nrm_core l nh); try assumption; try lra.
-  unfold vapprox, vlin, wM, nrm, vadd, vscale, vsub; cbn [vx vy vz]. rewrite !Rmult_1_l.
-  repeat split.
-  - exact (ld_comp v d eta _ _ _ _ _ _ _ _ _ _ _ Hv Hdv Hm Hii A1 B1 Ia1 Ib1 Hth Hwx Hax Hbx Hnx).
-  - exact (ld_comp v d eta _ _ _ _ _ _ _ _ _ _ _ Hv Hdv Hm Hii A2 B2 Ia2 Ib2 Hth Hwy Hay Hby Hny).
-  - exact (ld_comp v d eta _ _ _ _ _ _ _ _ _ _ _ Hv Hdv Hm Hii A3 B3 Ia3 Ib3 Hth Hwz Haz Hbz Hnz).
+  nrm_pre l nh i Hi. repeat split; eapply ld_comp; eassumption.
 Qed.
 
+(** Horner's p^ and q^ ([hp_abs_d], [hq_abs_d]) with |D.L|, |D.Na| <= da and |D.D| <= c2. *)
+Local Ltac horner_fin da c2 :=
+  split;
+  [ rewrite hc_p_form by lia; eapply Rle_trans;
+    [ eapply hp_abs_d with (v := v) (m := INR (n s)) (Da := da); try eassumption; try lra;
+      apply hc_p_le1; assumption
+    | lra ]
+  | rewrite hc_q_form by lia; eapply Rle_trans;
+    [ eapply hq_abs_d with (v := v) (m := INR (n s)) (C2 := c2) (D1 := da); try eassumption;
+      try lra; apply hc_q_le1; assumption
+    | lra ] ].
 
 Lemma horner_core_d : forall (l : vec) (fa fb fc e fe : R) (i : nat) (x ph y1 y2 y3 qh : R),
   is_unit (L s) -> (i <= n s)%nat -> vap1 v eta l (L s) ->
@@ -1031,65 +966,51 @@ Proof.
     by (eapply Rle_trans; [apply dot_abs | apply cs_abs; [lra | exact HD | right; exact Hl]]).
   assert (SA : Rabs (dot (vsub (Nb s) (Na s)) (Na s)) <= dd)
     by (eapply Rle_trans; [apply dot_abs | apply cs_abs; [lra | exact HD | right; exact Ha]]).
-  assert (SC : Rabs (dot (vsub (Nb s) (Na s)) (vsub (Nb s) (Na s))) <= dd * dd).
-  { rewrite Rabs_pos_eq; [exact HD|]. unfold dot.
-    pose proof (Rle_0_sqr (vx (vsub (Nb s) (Na s)))).
-    pose proof (Rle_0_sqr (vy (vsub (Nb s) (Na s)))).
-    pose proof (Rle_0_sqr (vz (vsub (Nb s) (Na s)))). unfold Rsqr in *. lra. }
-  split.
-  - rewrite hc_p_form by exact Hn0.
-    eapply Rle_trans.
-    + eapply (hp_abs_d v eta (INR (n s)) (INR i) fa fb _ _ _ _ _ _ dd); try eassumption; try lra.
-      apply hc_p_le1; assumption.
-    + lra.
-  - rewrite hc_q_form by exact Hn0.
-    eapply Rle_trans.
-    + eapply (hq_abs_d v eta (INR (n s)) (INR i) fc e fe _ _ _ _ _ _ _ _ _ _ (dd * dd) dd);
-        try eassumption; try lra.
-      apply hc_q_le1; assumption.
-    + lra.
+  assert (SC : Rabs (dot (vsub (Nb s) (Na s)) (vsub (Nb s) (Na s))) <= dd * dd)
+    by (rewrite Rabs_pos_eq; [exact HD | apply dot_sq0]).
+  horner_fin dd (dd * dd).
 Qed.
 
+(** Horner's closed form with the dd-free set-up errors of Profiles.v (K_a,
+    K_pa, K_c, K_d0): the bounds of PhongCount.v. *)
+Lemma horner_core : forall (l : vec) (fa fb fc e fe : R) (i : nat) (x ph y1 y2 y3 qh : R),
+  is_unit (L s) -> (i <= n s)%nat -> vap1 v eta l (L s) ->
+  fdot_rel v v eta kk l fa -> fdot_rel v v eta na l fb -> fdot_rel v v eta kk kk fc ->
+  fdot_rel v v eta kk na e -> fdot_rel v v eta na na fe ->
+  ap1 v eta x (fa * INR i) -> ap1 v eta ph (x + fb) ->
+  ap1 v eta y1 (fc * INR i) -> ap1 v eta y2 (y1 + 2 * e) -> ap1 v eta y3 (y2 * INR i) ->
+  ap1 v eta qh (y3 + fe) ->
+  Rabs (ph - p s (INR i)) <= 2003 / 100 * v + 202 / 100 * d /\
+  Rabs (qh - q s (INR i)) <= 7811 / 100 * v + 1204 / 100 * d.
+Proof.
+  intros l fa fb fc e fe i x ph y1 y2 y3 qh Hl Hi Inl Hfa Hfb Hfc Hfe0 Hfe Hx Hph Hy1 Hy2 Hy3 Hqh.
+  v_facts Hv. v_facts Hdv. destruct (hk_pix i Hi) as (_ & Hm & Hii & Ht).
+  destruct (hc_sizes s Ha Hb Hl) as [Sa [Sd Sc]].
+  pose proof (K_a v d eta Hv Hdv s Ha Hb Hl Hn1 Hn2 na nb l kk fa Ina Inb Inl
+                tx ty tz Htx Hkx Hty Hky Htz Hkz Hfa) as CA.
+  pose proof (K_pa v d eta Hv Hdv s Ha Hb Hl na l fb Ina Inl Hfb) as CB.
+  pose proof (K_c v d eta Hv Hdv s Ha Hb Hl Hn1 Hn2 na nb kk fc Ina Inb
+                tx ty tz Htx Hkx Hty Hky Htz Hkz Hfc) as CC.
+  pose proof (K_d0 v d eta Hv Hdv s Ha Hb Hl Hn1 Hn2 na nb kk Ina Inb
+                tx ty tz Htx Hkx Hty Hky Htz Hkz e Hfe0) as CD.
+  pose proof (K_pa v d eta Hv Hdv (mkSpan (Na s) (Nb s) (Na s) (n s)) Ha Hb Ha na na fe
+                Ina Ina Hfe) as CE.
+  unfold pa in CE; cbn [Na Nb L] in CE.
+  horner_fin 2 4.
+Qed.
 
 End HK.
 
 (** ** With the model's operations *)
 
-Lemma dd_fin2 : forall (u K1 kd dd A0 A1 A2 B0 B1 B2 a0 a1 a2 b0 b1 b2 E : R),
-  0 < u -> 1 <= K1 -> 1 <= kd -> 0 <= dd -> A0 <= a0 -> A1 <= a1 -> A2 <= a2 ->
-  B0 <= b0 -> B1 <= b1 -> B2 <= b2 ->
-  E <= (A0 + A1 * dd + A2 * dd * dd) * (K1 * u) + (B0 + B1 * dd + B2 * dd * dd) * (kd * u) ->
-  E <= ((a0 + a1 * dd + a2 * dd * dd) * K1 + (b0 + b1 * dd + b2 * dd * dd) * kd) * u.
+(** A core's bound A v + B d at v = K1 u, d = kd u within (a K1 + b kd) u. *)
+Lemma lin_le : forall u K1 kd A B a b, 0 <= u -> 0 <= K1 -> 0 <= kd -> A <= a -> B <= b ->
+  A * (K1 * u) + B * (kd * u) <= (a * K1 + b * kd) * u.
 Proof.
-  intros u K1 kd dd A0 A1 A2 B0 B1 B2 a0 a1 a2 b0 b1 b2 E Hu HK Hk Hd H1 H2 H3 H4 H5 H6 HE.
-  eapply Rle_trans; [exact HE|].
-  assert (P1 : 0 <= K1 * u) by (apply Rmult_le_pos; lra).
-  assert (P2 : 0 <= kd * u) by (apply Rmult_le_pos; lra).
-  assert (D2 : 0 <= dd * dd) by (apply Rmult_le_pos; lra).
-  assert (Q1 : A0 + A1 * dd + A2 * dd * dd <= a0 + a1 * dd + a2 * dd * dd).
-  { assert (A1 * dd <= a1 * dd) by (apply Rmult_le_compat_r; lra).
-    assert (A2 * (dd * dd) <= a2 * (dd * dd)) by (apply Rmult_le_compat_r; lra). nra. }
-  assert (Q2 : B0 + B1 * dd + B2 * dd * dd <= b0 + b1 * dd + b2 * dd * dd).
-  { assert (B1 * dd <= b1 * dd) by (apply Rmult_le_compat_r; lra).
-    assert (B2 * (dd * dd) <= b2 * (dd * dd)) by (apply Rmult_le_compat_r; lra). nra. }
-  assert ((A0 + A1 * dd + A2 * dd * dd) * (K1 * u) <= (a0 + a1 * dd + a2 * dd * dd) * (K1 * u))
-    by (apply Rmult_le_compat_r; lra).
-  assert ((B0 + B1 * dd + B2 * dd * dd) * (kd * u) <= (b0 + b1 * dd + b2 * dd * dd) * (kd * u))
-    by (apply Rmult_le_compat_r; lra).
-  lra.
+  intros u K1 kd A B a b Hu HK Hk Ha Hb.
+  assert (0 <= (a - A) * K1 * u) by (repeat apply Rmult_le_pos; lra).
+  assert (0 <= (b - B) * kd * u) by (repeat apply Rmult_le_pos; lra). lra.
 Qed.
-
-Lemma dd_fin : forall (u K1 kd dd A0 A1 B0 B1 a0 a1 b0 b1 E : R),
-  0 < u -> 1 <= K1 -> 1 <= kd -> 0 <= dd -> A0 <= a0 -> A1 <= a1 -> B0 <= b0 -> B1 <= b1 ->
-  0 <= A1 -> 0 <= B1 ->
-  E <= (A0 + A1 * dd) * (K1 * u) + (B1 * dd + B0) * (kd * u) ->
-  E <= ((a0 + a1 * dd) * K1 + (b0 + b1 * dd) * kd) * u.
-Proof.
-  intros u K1 kd dd A0 A1 B0 B1 a0 a1 b0 b1 E Hu HK Hk Hd H1 H2 H3 H4 _ _ HE.
-  pose proof (dd_fin2 u K1 kd dd A0 A1 0 B0 B1 0 a0 a1 0 b0 b1 0 E Hu HK Hk Hd H1 H2
-                (Rle_refl 0) H3 H4 (Rle_refl 0) ltac:(lra)). lra.
-Qed.
-
 
 (** Every input, addition, product and dot product of the model within unit
     K1 u ([hm_vap], [hm_ap], [hm_fdot]). *)
@@ -1108,65 +1029,11 @@ Lemma conj_le : forall a b x y x' y' : R,
   a <= x' /\ b <= y' -> x' <= x -> y' <= y -> a <= x /\ b <= y.
 Proof. intros a b x y x' y' [H1 H2] H3 H4. split; lra. Qed.
 
-(** A model lemma from its [core] on units v = K1 u, d = kd u: the relations
-    taken apart, the operations lifted to unit K1 u; left: the two bounds of
-    [core] against the lemma's. *)
-Ltac hm_model core :=
-  intros; unfold horner_ok, pixel_ok, ncomp_ok, lerp_ok, lcomp_ok in *;
-  repeat match goal with
-  | H : exists _, _ |- _ => destruct H
-  | H : _ /\ _ |- _ => destruct H
-  end;
-  try match goal with H : Ddist _ ?dd |- _ => assert (0 <= dd <= 2) by apply (proj1 H) end;
-  match goal with
-  | HM : model_ok ?M ?K, Hin : k_in ?M <= ?K1, Hk : ?kd * m_u ?M <= / 2097152 |- _ =>
-      pose proof (hm_small M K K1 HM ltac:(split; assumption));
-      pose proof (hm_small_d M K kd HM ltac:(assumption) Hk);
-      hm_lift M K1;
-      eapply conj_le; [eapply (core (K1 * m_u M) (kd * m_u M) (m_eta M)); try eassumption | |]
-  end.
-
-Lemma pixel_model_d : forall (M : fmodel) (K K1 kd dd : R), model_ok M K ->
-  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 ->
-  1 <= kd -> kd * m_u M <= / 2097152 ->
-  forall (s : span) (na nb l kk : vec) (i : nat) (ph qh : R) (tx ty tz : R),
-  Ddist s dd -> is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
-  (1 <= n s)%nat -> INR (n s) <= 16777216 -> (i <= n s)%nat ->
-  vap M na (Na s) -> vap M nb (Nb s) -> vap M l (L s) ->
-  ap_add M tx (vx nb - vx na) -> ap1 (kd * m_u M) (m_eta M) (vx kk) (tx / INR (n s)) ->
-  ap_add M ty (vy nb - vy na) -> ap1 (kd * m_u M) (m_eta M) (vy kk) (ty / INR (n s)) ->
-  ap_add M tz (vz nb - vz na) -> ap1 (kd * m_u M) (m_eta M) (vz kk) (tz / INR (n s)) ->
-  pixel_ok M i na l kk ph qh ->
-  Rabs (ph - p s (INR i)) <= ((602 / 100 + 201 / 100 * dd) * K1
-                              + (2 / 100 + 101 / 100 * dd) * kd) * m_u M /\
-  Rabs (qh - q s (INR i)) <= ((702 / 100 + 401 / 100 * dd + 0 * dd * dd) * K1
-                              + (2 / 100 + 201 / 100 * dd + 0 * dd * dd) * kd) * m_u M.
+Lemma div_setup : forall (M : fmodel) (K : R), model_ok M K -> k_div M * m_u M <= / 2097152.
 Proof.
-  hm_model pd_core.
-  - eapply (dd_fin _ K1 kd dd (2 + 402 / 100) (2001 / 1000) (2 / 100) (1001 / 1000));
-      try lra; right; ring.
-  - eapply (dd_fin2 _ K1 kd dd (2 * 2 + 302 / 100) (2 * (2001 / 1000)) 0 (2 / 100)
-      (2 * (1001 / 1000)) 0); try lra; right; ring.
-Qed.
-
-Lemma lerp_model_d : forall (M : fmodel) (K K1 kd dd : R), model_ok M K ->
-  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 ->
-  1 <= kd -> kd * m_u M <= / 2097152 ->
-  forall (s : span) (na nb l : vec) (i : nat) (th ph qh : R),
-  Ddist s dd -> is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
-  (1 <= n s)%nat -> INR (n s) <= 16777216 -> (i <= n s)%nat ->
-  vap M na (Na s) -> vap M nb (Nb s) -> vap M l (L s) ->
-  ap1 (kd * m_u M) (m_eta M) th (INR i / INR (n s)) ->
-  lerp_ok M th na nb l ph qh ->
-  Rabs (ph - p s (INR i)) <= ((802 / 100 + 0 * dd) * K1
-                              + (2 / 100 + 101 / 100 * dd) * kd) * m_u M /\
-  Rabs (qh - q s (INR i)) <= ((1102 / 100 + 0 * dd + 0 * dd * dd) * K1
-                              + (2 / 100 + 201 / 100 * dd + 0 * dd * dd) * kd) * m_u M.
-Proof.
-  hm_model ld_core.
-  - eapply (dd_fin _ K1 kd dd (4 + 402 / 100) 0 (2 / 100) (1001 / 1000)); try lra; right; ring.
-  - eapply (dd_fin2 _ K1 kd dd (2 * 4 + 302 / 100) 0 0 (2 / 100)
-      (2 * (1001 / 1000)) 0); try lra; right; ring.
+  intros M K HM. pose proof HM as (_ & _ & _ & _ & _ & _ & [_ Hdk] & _ & H9).
+  assert (k_div M * m_u M <= K * m_u M)
+    by (apply Rmult_le_compat_r; [left; apply (model_u M K HM) | exact Hdk]). lra.
 Qed.
 
 (** The reciprocal's unit kd = (1 + 2^-20) k_mul + k_div + 2^-36 as in PhongCount.v. *)
@@ -1182,39 +1049,49 @@ Proof.
   assert (Hu : 0 < m_u M <= / 2097152).
   { split; [exact U1|]. assert (m_u M <= K * m_u M) by (rewrite <- (Rmult_1_l (m_u M)) at 1;
       apply Rmult_le_compat_r; lra). lra. }
-  assert (Hdu : k_div M * m_u M <= / 2097152).
-  { assert (k_div M * m_u M <= K * m_u M) by (apply Rmult_le_compat_r; lra). lra. }
+  pose proof (div_setup M K HM) as Hdu.
   split.
   - intros m x r y Hm Hr Hy. apply (recip_ap1 _ _ (k_div M) (k_mul M) _ _ r); assumption.
   - pose proof (Rmult_le_pos (1 + / 1048576) (k_mul M)); lra.
 Qed.
 
-Lemma div_setup : forall (M : fmodel) (K : R), model_ok M K -> k_div M * m_u M <= / 2097152.
-Proof.
-  intros M K HM. pose proof HM as (_ & _ & _ & _ & _ & _ & [_ Hdk] & _ & H9).
-  assert (k_div M * m_u M <= K * m_u M)
-    by (apply Rmult_le_compat_r; [left; apply (model_u M K HM) | exact Hdk]). lra.
-Qed.
-
-(** One instantiation of a model lemma [lem] (pixel_model_d, horner_model, ...)
-    for a theorem whose k_j are [kcomp_ok] (one division, kd = k_div) or
-    [krecip_ok] (reciprocal then product, kd from [recip_setup]). *)
-Ltac kd_inst lem :=
+(** A theorem from its [core] on units v = K1 u, d = kd u, its k_j (or t) by
+    [kcomp_ok] (one division, kd = k_div) or [krecip_ok] (reciprocal then
+    product, kd from [recip_setup]): the relations taken apart, the operations
+    lifted to unit K1 u ([hm_lift]), the bounds of [core] within the theorem's. *)
+Ltac kd_model core :=
   intros;
   match goal with HM : model_ok ?M ?K |- _ =>
     pose proof (div_setup M K HM); pose proof (model_u M K HM) end;
+  try match goal with H : 0 <= ?dd <= 2, H2 : dot (vsub (Nb ?s) (Na ?s)) _ <= ?dd * ?dd |- _ =>
+    assert (Ddist s dd) by (split; assumption) end;
+  unfold horner_ok, pixel_ok, ncomp_ok, lerp_ok, lcomp_ok, kcomp_ok, krecip_ok in *;
   repeat match goal with
-  | H : kcomp_ok _ _ _ _ _ |- _ => destruct H as (? & ? & ?)
-  | H : krecip_ok _ _ _ _ _ |- _ => destruct H as (? & ? & ? & ? & ?)
+  | H : exists _, _ |- _ => destruct H
+  | H : _ /\ _ |- _ => destruct H
   end;
   try match goal with
   | HM : model_ok ?M ?K, Hdiv : 1 <= k_div ?M,
     Hkd : ((1 + / 1048576) * k_mul ?M + k_div ?M + / 68719476736) * m_u ?M <= / 2097152 |- _ =>
-      destruct (recip_setup M K HM Hkd Hdiv) as [? ?]
+      let R := fresh "R" in destruct (recip_setup M K HM Hkd Hdiv) as [R ?];
+      repeat match goal with Hr : ap_div M ?r (1 / ?m), Hy : ap_mul M ?y (?x * ?r) |- _ =>
+        apply (R m x r y ltac:(split; [apply (le_INR 1) |]; assumption) Hr) in Hy end
   end;
-  eapply lem; try eassumption; try (split; assumption);
-  match goal with H : _ |- ap1 _ _ _ _ =>
-    eapply H; [split; [apply (le_INR 1) |]; assumption | | eassumption]; eassumption end.
+  let fin K1 kd :=
+    match goal with HM : model_ok ?M ?K |- _ =>
+      pose proof (hm_small M K K1 HM ltac:(split; assumption));
+      pose proof (hm_small_d M K kd HM ltac:(assumption) ltac:(assumption));
+      assert (0 <= k_add M * m_u M <= K1 * m_u M)
+        by (pose proof HM as (_ & _ & _ & _ & [? _] & _); split;
+            [apply Rmult_le_pos | apply Rmult_le_compat_r]; lra);
+      hm_lift M K1;
+      eapply conj_le; [eapply (core (K1 * m_u M) (kd * m_u M) (m_eta M)); eassumption | |];
+      first [right; ring | apply lin_le; lra]
+    end in
+  match goal with
+  | |- _ <= (_ * ?K1 + _ * ?kd) * _ /\ _ => fin K1 kd
+  | |- _ <= (_ * ?K1 + _ * ?kd + _) * _ /\ _ => fin K1 kd
+  end.
 
 (** Phong, per-pixel normal, one division, with the span's distance dd >= |Nb - Na|. *)
 Theorem phong_pixel_div_dist : forall (M : fmodel) (K K1 : R), model_ok M K ->
@@ -1232,7 +1109,7 @@ Theorem phong_pixel_div_dist : forall (M : fmodel) (K K1 : R), model_ok M K ->
                               + (2 / 100 + 101 / 100 * dd) * k_div M) * m_u M /\
   Rabs (qh - q s (INR i)) <= ((702 / 100 + 401 / 100 * dd + 0 * dd * dd) * K1
                               + (2 / 100 + 201 / 100 * dd + 0 * dd * dd) * k_div M) * m_u M.
-Proof. kd_inst pixel_model_d. Qed.
+Proof. kd_model pd_core. Qed.
 
 (** The same with k_j = (Nb_j - Na_j) * r, r = 1/n a rounded division. *)
 Theorem phong_pixel_recip_dist : forall (M : fmodel) (K K1 : R), model_ok M K ->
@@ -1253,7 +1130,7 @@ Theorem phong_pixel_recip_dist : forall (M : fmodel) (K K1 : R), model_ok M K ->
   Rabs (qh - q s (INR i)) <= ((702 / 100 + 401 / 100 * dd + 0 * dd * dd) * K1
       + (2 / 100 + 201 / 100 * dd + 0 * dd * dd)
         * ((1 + / 1048576) * k_mul M + k_div M + / 68719476736)) * m_u M.
-Proof. kd_inst pixel_model_d. Qed.
+Proof. kd_model pd_core. Qed.
 
 (** Phong, lerp, t = i/n one rounded division, with the span's distance. *)
 Theorem phong_lerp_div_dist : forall (M : fmodel) (K K1 : R), model_ok M K ->
@@ -1269,7 +1146,7 @@ Theorem phong_lerp_div_dist : forall (M : fmodel) (K K1 : R), model_ok M K ->
                               + (2 / 100 + 101 / 100 * dd) * k_div M) * m_u M /\
   Rabs (qh - q s (INR i)) <= ((1102 / 100 + 0 * dd + 0 * dd * dd) * K1
                               + (2 / 100 + 201 / 100 * dd + 0 * dd * dd) * k_div M) * m_u M.
-Proof. kd_inst lerp_model_d. Qed.
+Proof. kd_model ld_core. Qed.
 
 (** The same with t = i * r, r = 1/n a rounded division. *)
 Theorem phong_lerp_recip_dist : forall (M : fmodel) (K K1 : R), model_ok M K ->
@@ -1288,25 +1165,7 @@ Theorem phong_lerp_recip_dist : forall (M : fmodel) (K K1 : R), model_ok M K ->
   Rabs (qh - q s (INR i)) <= ((1102 / 100 + 0 * dd + 0 * dd * dd) * K1
       + (2 / 100 + 201 / 100 * dd + 0 * dd * dd)
         * ((1 + / 1048576) * k_mul M + k_div M + / 68719476736)) * m_u M.
-Proof. kd_inst lerp_model_d. Qed.
-
-
-Lemma horner_model_d : forall (M : fmodel) (K K1 kd dd : R), model_ok M K ->
-  1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 ->
-  1 <= kd -> kd * m_u M <= / 2097152 ->
-  forall (s : span) (na nb l kk : vec) (i : nat) (ph qh : R) (tx ty tz : R),
-  Ddist s dd -> is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
-  (1 <= n s)%nat -> INR (n s) <= 16777216 -> (i <= n s)%nat ->
-  vap M na (Na s) -> vap M nb (Nb s) -> vap M l (L s) ->
-  ap_add M tx (vx nb - vx na) -> ap1 (kd * m_u M) (m_eta M) (vx kk) (tx / INR (n s)) ->
-  ap_add M ty (vy nb - vy na) -> ap1 (kd * m_u M) (m_eta M) (vy kk) (ty / INR (n s)) ->
-  ap_add M tz (vz nb - vz na) -> ap1 (kd * m_u M) (m_eta M) (vz kk) (tz / INR (n s)) ->
-  horner_ok M i na l kk ph qh ->
-  Rabs (ph - p s (INR i)) <= ((804 / 100 + 601 / 100 * dd) * K1
-                              + (3 / 100 + 101 / 100 * dd) * kd) * m_u M /\
-  Rabs (qh - q s (INR i)) <= ((1013 / 100 + 1803 / 100 * dd + 801 / 100 * dd * dd) * K1
-                              + (7 / 100 + 202 / 100 * dd + 201 / 100 * dd * dd) * kd) * m_u M.
-Proof. hm_model horner_core_d; right; ring. Qed.
+Proof. kd_model ld_core. Qed.
 
 (** Phong, Horner's closed form, one division, with the span's distance dd >= |Nb - Na|. *)
 Theorem phong_horner_div_dist : forall (M : fmodel) (K K1 : R), model_ok M K ->
@@ -1325,7 +1184,7 @@ Theorem phong_horner_div_dist : forall (M : fmodel) (K K1 : R), model_ok M K ->
   Rabs (qh - q s (INR i)) <= ((1013 / 100 + 1803 / 100 * dd + 801 / 100 * dd * dd) * K1
                               + (7 / 100 + 202 / 100 * dd + 201 / 100 * dd * dd) * k_div M)
                              * m_u M.
-Proof. kd_inst horner_model_d. Qed.
+Proof. kd_model horner_core_d. Qed.
 
 (** The same with k_j = (Nb_j - Na_j) * r, r = 1/n a rounded division. *)
 Theorem phong_horner_recip_dist : forall (M : fmodel) (K K1 : R), model_ok M K ->
@@ -1346,4 +1205,4 @@ Theorem phong_horner_recip_dist : forall (M : fmodel) (K K1 : R), model_ok M K -
   Rabs (qh - q s (INR i)) <= ((1013 / 100 + 1803 / 100 * dd + 801 / 100 * dd * dd) * K1
       + (7 / 100 + 202 / 100 * dd + 201 / 100 * dd * dd)
         * ((1 + / 1048576) * k_mul M + k_div M + / 68719476736)) * m_u M.
-Proof. kd_inst horner_model_d. Qed.
+Proof. kd_model horner_core_d. Qed.

@@ -36,24 +36,6 @@ Open Scope R_scope.
 
 (** ** Helpers *)
 
-Lemma nd_sq_le : forall x y, 0 <= x -> 0 <= y -> x * x <= y * y -> x <= y.
-Proof. intros x y Hx Hy H. nra. Qed.
-
-(** Cauchy-Schwarz with absolute values. *)
-Lemma nd_cs : forall a b : vec,
-  (Rabs (vx a) * Rabs (vx b) + Rabs (vy a) * Rabs (vy b) + Rabs (vz a) * Rabs (vz b))
-  * (Rabs (vx a) * Rabs (vx b) + Rabs (vy a) * Rabs (vy b) + Rabs (vz a) * Rabs (vz b))
-  <= dot a a * dot b b.
-Proof.
-  intros a b. unfold dot.
-  rewrite <- (abs_sq (vx a)), <- (abs_sq (vy a)), <- (abs_sq (vz a)),
-          <- (abs_sq (vx b)), <- (abs_sq (vy b)), <- (abs_sq (vz b)).
-  set (x1 := Rabs (vx a)). set (x2 := Rabs (vy a)). set (x3 := Rabs (vz a)).
-  set (y1 := Rabs (vx b)). set (y2 := Rabs (vy b)). set (y3 := Rabs (vz b)).
-  pose proof (Rle_0_sqr (x1 * y2 - x2 * y1)). pose proof (Rle_0_sqr (x1 * y3 - x3 * y1)).
-  pose proof (Rle_0_sqr (x2 * y3 - x3 * y2)). unfold Rsqr in *. nra.
-Qed.
-
 (** One component of w = N^ r and its product with l_j. *)
 Lemma nd_comp : forall kw eta w n r l, 0 <= kw -> ap1 kw eta w (n * r) ->
   Rabs ((w - n * r) * l) <= kw * (Rabs r * (Rabs n * Rabs l)) + eta * Rabs l /\
@@ -153,18 +135,13 @@ Proof.
     by (apply Rmult_le_compat; lra).
   assert (X3 : eta * t <= 3 / 2048).
   { assert (eta * t <= t / 1024 * t) by (apply Rmult_le_compat_r; lra). nra. }
-  assert (X : Rabs r * t <= 1005 / 1000) by lra.
   assert (Y1 : (Rabs r * S) * (Rabs r * S) <= (Rabs r * Rabs r) * (A * B)).
   { replace ((Rabs r * S) * (Rabs r * S)) with ((Rabs r * Rabs r) * (S * S)) by ring.
     apply Rmult_le_compat_l; [nra|exact HSS]. }
   assert (Y2 : A * B <= (1009 / 1000 * qh) * (lam * lam)) by (apply Rmult_le_compat; lra).
-  assert (Y3 : (Rabs r * Rabs r) * (A * B) <= (Rabs r * Rabs r) * ((1009 / 1000 * qh) * (lam * lam)))
-    by (apply Rmult_le_compat_l; [nra|exact Y2]).
   assert (Y4 : (Rabs r * Rabs r) * ((1009 / 1000 * qh) * (lam * lam))
                = 1009 / 1000 * ((Rabs r * t) * (Rabs r * t)) * (lam * lam))
     by (rewrite <- Htq; ring).
-  assert (Y5 : (Rabs r * t) * (Rabs r * t) <= (1005 / 1000) * (1005 / 1000))
-    by (apply Rmult_le_compat; lra).
   assert (Y6 : 1009 / 1000 * ((Rabs r * t) * (Rabs r * t)) * (lam * lam)
                <= 1009 / 1000 * ((1005 / 1000) * (1005 / 1000)) * (lam * lam))
     by (apply Rmult_le_compat_r; nra).
@@ -193,13 +170,9 @@ Lemma nd_norm : forall um ua eta (nh : vec) qh,
 Proof.
   intros um ua eta nh qh Hum Hua He Hq Heq Hd.
   pose proof (fdot_err um ua eta nh nh qh Hum Hua He Hd) as F.
-  assert (A0 : 0 <= dot nh nh).
-  { unfold dot. pose proof (Rle_0_sqr (vx nh)). pose proof (Rle_0_sqr (vy nh)).
-    pose proof (Rle_0_sqr (vz nh)). unfold Rsqr in *. lra. }
-  assert (E : Rabs (vx nh * vx nh) + Rabs (vy nh * vy nh) + Rabs (vz nh * vz nh) = dot nh nh).
-  { unfold dot. rewrite !Rabs_pos_eq; [reflexivity| | |];
-    [pose proof (Rle_0_sqr (vz nh)) | pose proof (Rle_0_sqr (vy nh)) | pose proof (Rle_0_sqr (vx nh))];
-    unfold Rsqr in *; lra. }
+  pose proof (dot_sq0 nh) as A0.
+  assert (E : Rabs (vx nh * vx nh) + Rabs (vy nh * vy nh) + Rabs (vz nh * vz nh) = dot nh nh)
+    by (unfold dot; rewrite !Rabs_pos_eq by apply Rle_0_sqr; reflexivity).
   rewrite E in F.
   set (c2 := (um + 2 * ua) * (1 + / 524288)) in *.
   assert (Hc2 : c2 <= / 524288) by (unfold c2; nra).
@@ -257,14 +230,10 @@ Proof.
   assert (Het : 1024 * eta <= sqrt qh).
   { assert (sqrt (qmin - eq) <= sqrt qh) by (apply sqrt_le_1_alt; lra). lra. }
   destruct (nd_norm um ua eta nh qh Hum Hua He ltac:(lra) ltac:(lra) Hqh) as [HA0 HA].
-  assert (HB : 0 <= dot l l <= lam * lam).
-  { split; [|exact Hl]. unfold dot. pose proof (Rle_0_sqr (vx l)). pose proof (Rle_0_sqr (vy l)).
-    pose proof (Rle_0_sqr (vz l)). unfold Rsqr in *. lra. }
+  assert (HB : 0 <= dot l l <= lam * lam) by (split; [apply dot_sq0 | exact Hl]).
   set (S := Rabs (vx nh) * Rabs (vx l) + Rabs (vy nh) * Rabs (vy l) + Rabs (vz nh) * Rabs (vz l)).
-  assert (HS0 : 0 <= S).
-  { unfold S. pose proof (Rabs_pos (vx nh)). pose proof (Rabs_pos (vy nh)).
-    pose proof (Rabs_pos (vz nh)). pose proof (Rabs_pos (vx l)).
-    pose proof (Rabs_pos (vy l)). pose proof (Rabs_pos (vz l)). nra. }
+  assert (HS0 : 0 <= S)
+    by (unfold S; repeat apply Rplus_le_le_0_compat; apply Rmult_le_pos; apply Rabs_pos).
   assert (Hc : 0 <= ks * u + eta / sqrt (qmin - eq) <= / 512) by lra.
   assert (Hd : 0 <= kd * u <= / 1024) by lra.
   pose proof (nd_rho (sqrt qh) s r (dot nh nh) (dot l l) S lam (ks * u + eta / sqrt (qmin - eq))
@@ -324,10 +293,7 @@ Proof.
               = (1 + v) * (1 + v) * (a1 * a1 + a2 * a2 + a3 * a3)
                 + 2 * ((1 + v) * eta) * (a1 + a2 + a3) + 3 * (eta * eta)) by ring.
   rewrite HL in E.
-  assert (F : 2 * ((1 + v) * eta) * (a1 + a2 + a3) <= 2 * ((1 + v) * eta) * (7 / 4 * 1))
-    by (apply Rmult_le_compat_l; [apply Rmult_le_pos; [lra|apply Rmult_le_pos; lra]|lra]).
   assert (0 <= (1 + v) * eta) by (apply Rmult_le_pos; lra).
-  assert (0 <= eta * eta) by (apply Rmult_le_pos; lra).
   nra.
 Qed.
 

@@ -154,9 +154,10 @@ fn mpfr_bits(r: &Request, span: Option<&Span<BigRational>>, precision: u32, q_bi
         span.map_or(0, |s| r.method.exact_bits(s).map_or(0, |b| 250 - b))
     };
     let known = i64::from(precision) - 8 - 2 * n_bits - loss;
-    // A root of a recurrence's value (the squared method's `√max(0, g)`): an error
-    // `δ` of `g` moves the root by up to `√δ` (`sq_root_holder`), half the bits.
-    if r.method.info().bound == crate::method::Bound::Graphs {
+    // A root of a recurrence's value (the catalogue's `Roots::SignedRootOfG`: the
+    // squared method's `√max(0, g)`): an error `δ` of `g` moves the root by up to `√δ`
+    // (`sq_root_holder`), half the bits.
+    if r.method.info().roots == crate::method::Roots::SignedRootOfG {
         known / 2 - 1
     } else {
         known

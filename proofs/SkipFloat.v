@@ -609,6 +609,19 @@ Definition quad_top (PA S0 DS : Ivl) (n : R) : R :=
 Definition quadratic_max (w : Valued) (na nb l : V3 R) (n : R) : R :=
   let '(PA, S0, DS) := qsetup w na nb l n in quad_top PA S0 DS n.
 
+(** Corrected Euler's start t_0 = s_0 − (p_n − p_b)/n with p_n = p_a + n s_0 + tri(n) ds
+    (eq. 17), in intervals: shared by [qsetup] and [isqsetup]. *)
+Lemma mem_ce_t0 n pa s0 ds pb PA S0 DS PB :
+  0 < n -> mem pa PA -> mem s0 S0 -> mem ds DS -> mem pb PB ->
+  mem (s0 - (pa + n * s0 + tri n * ds - pb) / n)
+    (isub S0 (idiv (isub (iadd (iadd PA (imul (ipt n) S0)) (imul (ipt (tri n)) DS)) PB) (ipt n))).
+Proof.
+  intros Hn Hpa Hs0 Hds Hpb.
+  apply mem_sub; [exact Hs0 |]. apply mem_div; [| apply mem_pt | left; exact Hn].
+  apply mem_sub; [| exact Hpb].
+  repeat apply mem_add; try apply mem_mul; try apply mem_pt; assumption.
+Qed.
+
 Lemma qsetup_sound w na nb l n pa s0 ds PA S0 DS :
   0 < n -> setup w na nb l n = (pa, s0, ds) -> qsetup w na nb l n = (PA, S0, DS) ->
   mem pa PA /\ mem s0 S0 /\ mem ds DS.
@@ -649,12 +662,7 @@ Proof.
   - split; [exact Hpa | split; [| apply mem_pt]].
     apply mem_div; [apply mem_sub; assumption | apply mem_pt | exact HN].
   - split; [exact Hpa | split; assumption].
-  - split; [exact Hpa | split; [| exact Hds]].
-    apply mem_sub; [exact Hdia |]. apply mem_div; [| apply mem_pt | exact HN].
-    apply mem_sub; [| exact Hpb]. apply mem_add; [apply mem_add |].
-    + exact Hpa.
-    + apply mem_mul; [apply mem_pt | exact Hdia].
-    + apply mem_mul; [apply mem_pt | exact Hds].
+  - split; [exact Hpa | split; [apply mem_ce_t0; assumption | exact Hds]].
 Qed.
 
 Lemma fold_max_ge (g : Ivl -> R) cands b0 :
@@ -826,12 +834,7 @@ Proof.
   assert (Hds : mem ((dgb - dga) / n) (idiv (isub (islope Ai PBi QBi DQBi) (islope Ai Bi Ei Di)) (ipt n)))
     by (apply mem_div; [apply mem_sub; assumption | apply mem_pt | exact HN]).
   injection Hs as <- <- <-. injection HS as <- <- <-.
-  split; [exact Hga | split; [| exact Hds]].
-  apply mem_sub; [exact Hdga |]. apply mem_div; [| apply mem_pt | exact HN].
-  apply mem_sub; [| exact Hgb]. apply mem_add; [apply mem_add |].
-  - exact Hga.
-  - apply mem_mul; [apply mem_pt | exact Hdga].
-  - apply mem_mul; [apply mem_pt | exact Hds].
+  split; [exact Hga | split; [apply mem_ce_t0; assumption | exact Hds]].
 Qed.
 
 (** [squared_max] bounds √max(0, g) on [0, n], g = v at the exact set-up values. *)

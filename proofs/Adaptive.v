@@ -37,19 +37,22 @@ Proof.
   rewrite Rinv_0. ring.
 Qed.
 
+(** m' = m/2 + m mod 2 (here and in ClosedForms.v, AdaptiveDelta.v). *)
+Lemma m_step_half : forall m,
+  (m_step m = m / 2 + m mod 2 /\ m = 2 * (m / 2) + m mod 2 /\ m mod 2 < 2)%nat.
+Proof.
+  intros m. unfold m_step. pose proof (Nat.div_mod (m + 1) 2 ltac:(lia)).
+  pose proof (Nat.div_mod m 2 ltac:(lia)). pose proof (Nat.mod_upper_bound m 2 ltac:(lia)).
+  pose proof (Nat.mod_upper_bound (m + 1) 2 ltac:(lia)). lia.
+Qed.
+
 Lemma m_step_spec : forall m, (1 <= m)%nat ->
   exists r : nat, (r <= 1)%nat /\ INR m + 1 = 2 * INR (m_step m) + INR r
                   /\ (m_step m <= m)%nat.
 Proof.
-  intros m Hm. unfold m_step.
-  pose proof (Nat.div_mod (m + 1) 2 ltac:(lia)) as H.
-  pose proof (Nat.mod_upper_bound (m + 1) 2 ltac:(lia)) as Hr.
-  exists ((m + 1) mod 2)%nat. split; [lia |]. split.
-  - apply (f_equal INR) in H. rewrite !plus_INR, mult_INR in H.
-    replace (INR 1) with 1 in H by reflexivity.
-    replace (INR 2) with 2 in H by (simpl; ring).
-    lra.
-  - lia.
+  intros m Hm. destruct (m_step_half m) as (H1 & H2 & H3).
+  exists (1 - m mod 2)%nat. repeat split; [lia | | lia].
+  rewrite <- S_INR, <- INR_2, <- mult_INR, <- plus_INR. f_equal. lia.
 Qed.
 
 (** The discrete maximisation behind eq. 24: for 0 <= i <= n,
@@ -80,7 +83,7 @@ Theorem eq_23_m_is_half_n_minus_1 : forall s : span,
   ds s <> 0 -> (dp s - t0 s) / ds s = (INR (n s) - 1) / 2.
 Proof.
   intros s H. pose proof (ds_nonzero_n s H) as Hn.
-  assert (Hn' : INR (n s) <> 0) by (apply not_0_INR; lia).
+  pose proof (INR_n_neq_0 s Hn) as Hn'.
   rewrite (t0_closed_form s Hn). unfold dp. field. split; assumption.
 Qed.
 
@@ -97,15 +100,7 @@ Proof.
     rewrite minus_IZR, <- INR_IZR_INZ.
     assert (Hr' : r = 0%nat \/ r = 1%nat) by lia.
     destruct Hr' as [-> | ->]; simpl INR in Heq; split; lra.
-  - unfold m_step.
-    pose proof (Nat.div_mod m 2 ltac:(lia)) as H1.
-    pose proof (Nat.mod_upper_bound m 2 ltac:(lia)) as H2.
-    assert (H3 : (m mod 2 = 0 \/ m mod 2 = 1)%nat) by lia.
-    destruct H3 as [H3 | H3]; rewrite H3 in *.
-    + replace (m + 1)%nat with (1 + (m / 2) * 2)%nat by lia.
-      rewrite Nat.div_add by lia. simpl. lia.
-    + replace (m + 1)%nat with (0 + (m / 2 + 1) * 2)%nat by lia.
-      rewrite Nat.div_add by lia. simpl. lia.
+  - apply m_step_half.
 Qed.
 
 (* Note: Every i; n >= 1. *)
@@ -115,7 +110,7 @@ Theorem eq_24_gouraud_minus_corrected_euler : forall (s : span) (i : nat),
   (0 < n s)%nat ->
   gouraud s i - ceuler s i = ds s / 2 * INR i * (INR (n s) - INR i).
 Proof.
-  intros s i Hn. assert (Hn' : INR (n s) <> 0) by (apply not_0_INR; lia).
+  intros s i Hn. pose proof (INR_n_neq_0 s Hn) as Hn'.
   unfold gouraud. rewrite ceuler_closed_form, (t0_closed_form s Hn). unfold dp.
   field. exact Hn'.
 Qed.
@@ -146,18 +141,27 @@ Theorem eq_24_delta_is_max_difference : forall s : span,
 Proof.
   intros s Hn. destruct (eq_24_delta_closed_form s) as [H1 H2].
   split; [exact H1 |]. intros i Hi.
-  rewrite (H2 Hn), (eq_24_gouraud_minus_corrected_euler s i Hn).
   destruct (discrete_max (n s) i ltac:(lia) Hi) as [Hpos Hmax].
-  set (X := INR i * (INR (n s) - INR i)) in *.
-  set (M := INR (m_step (n s)) * (INR (n s) - INR (m_step (n s)))) in *.
-  replace (ds s / 2 * INR i * (INR (n s) - INR i)) with (ds s / 2 * X)
-    by (unfold X; ring).
-  replace (ds s / 2 * INR (m_step (n s)) * (INR (n s) - INR (m_step (n s))))
-    with (ds s / 2 * M) by (unfold M; ring).
-  rewrite !(Rabs_mult (ds s / 2)).
-  rewrite (Rabs_pos_eq X) by exact Hpos.
-  rewrite (Rabs_pos_eq M) by lra.
+  rewrite (H2 Hn), (eq_24_gouraud_minus_corrected_euler s i Hn), !Rmult_assoc,
+    !(Rabs_mult (ds s / 2)), (Rabs_pos_eq (INR i * _)), (Rabs_pos_eq (INR (m_step _) * _))
+    by lra.
   apply Rmult_le_compat_l; [apply Rabs_pos | exact Hmax].
+Qed.
+
+(** A quantiser [f] with levels 1 and 0 at 1/255 and 1/255 - 1/1000 refutes the
+    delta test (here and in ClosedForms.v). *)
+Lemma delta_test_refuted : forall f : R -> Z,
+  f (1 / 255) = 1%Z -> f (1 / 255 - 1 / 1000) = 0%Z ->
+  ~ (forall g c : R, Rabs (g - c) * 255 < 1 -> f g = f c)
+  /\ exists g c : R, Rabs (g - c) * 255 < 1 /\ f g <> f c.
+Proof.
+  intros f Hg Hc.
+  assert (Hd : Rabs (1 / 255 - (1 / 255 - 1 / 1000)) * 255 < 1).
+  { rewrite Rabs_pos_eq by lra. lra. }
+  split.
+  - intros H. specialize (H _ _ Hd). rewrite Hg, Hc in H. discriminate.
+  - exists (1 / 255), (1 / 255 - 1 / 1000). split; [exact Hd |].
+    rewrite Hg, Hc. discriminate.
 Qed.
 
 (* Note: FALSE in general: intensities 1/255 and 1/255 - 1/1000 are closer than 1/255
@@ -167,18 +171,7 @@ Qed.
 Theorem eq_24_delta_test_does_not_imply_same_levels :
   ~ (forall g c : R, Rabs (g - c) * 255 < 1 -> level g = level c)
   /\ exists g c : R, Rabs (g - c) * 255 < 1 /\ level g <> level c.
-Proof.
-  assert (Hg : level (1 / 255) = 1%Z).
-  { unfold level. apply Int_part_eq. simpl. split; lra. }
-  assert (Hc : level (1 / 255 - 1 / 1000) = 0%Z).
-  { unfold level. apply Int_part_eq. simpl. split; lra. }
-  assert (Hd : Rabs (1 / 255 - (1 / 255 - 1 / 1000)) * 255 < 1).
-  { rewrite Rabs_pos_eq by lra. lra. }
-  split.
-  - intros H. specialize (H _ _ Hd). rewrite Hg, Hc in H. discriminate.
-  - exists (1 / 255), (1 / 255 - 1 / 1000). split; [exact Hd |].
-    rewrite Hg, Hc. discriminate.
-Qed.
+Proof. apply delta_test_refuted; unfold level; apply Int_part_eq; simpl; split; lra. Qed.
 
 (** A concrete span: Na = (0, 3/5, 4/5), Nb = (0, 8/17, 15/17), L = (0,0,1), n = 2. *)
 Definition adaptive_span : span :=
@@ -191,16 +184,10 @@ Lemma adaptive_span_values :
   /\ gouraud s 1 = 143/170 /\ ceuler s 1 = 48763/57800 /\ delta s = -143/57800.
 Proof.
   cbv zeta.
-  assert (Hpa : pa adaptive_span = 4/5)
-    by (unfold pa, adaptive_span, dot; cbn [vx vy vz Na Nb L n]; field).
-  assert (Hpb : pb adaptive_span = 15/17)
-    by (unfold pb, adaptive_span, dot; cbn [vx vy vz Na Nb L n]; field).
-  assert (Hdia : dia adaptive_span = 39/850).
-  { unfold dia, dqa, A, D, k, pa, adaptive_span, dot, vscale, vsub.
-    cbn [vx vy vz Na Nb L n]. rewrite INR_2. field. }
-  assert (Hds : ds adaptive_span = -143/28900).
-  { unfold ds, dib, dia, dqb, dqa, A, C, D, k, pa, pb, adaptive_span, dot, vscale, vsub.
-    cbn [vx vy vz Na Nb L n]. rewrite INR_2. field. }
+  assert (Hpa : pa adaptive_span = 4/5) by span_val adaptive_span.
+  assert (Hpb : pb adaptive_span = 15/17) by span_val adaptive_span.
+  assert (Hdia : dia adaptive_span = 39/850) by span_val adaptive_span.
+  assert (Hds : ds adaptive_span = -143/28900) by span_val adaptive_span.
   assert (Hn : (0 < n adaptive_span)%nat) by (cbn; lia).
   assert (Ht0 : t0 adaptive_span = 2523/57800).
   { rewrite (t0_closed_form _ Hn), Hpa, Hpb, Hds. cbn [n adaptive_span].
@@ -234,10 +221,8 @@ Theorem eq_24_delta_test_fails_on_concrete_span :
 Proof.
   cbv zeta.
   destruct adaptive_span_values as [_ [_ [_ [_ [_ [HG [HC HD]]]]]]].
-  assert (Ha : is_unit (Na adaptive_span))
-    by (unfold is_unit, dot, adaptive_span; cbn [vx vy vz Na]; field).
-  assert (Hb : is_unit (Nb adaptive_span))
-    by (unfold is_unit, dot, adaptive_span; cbn [vx vy vz Nb]; field).
+  assert (Ha : is_unit (Na adaptive_span)) by span_val adaptive_span.
+  assert (Hb : is_unit (Nb adaptive_span)) by span_val adaptive_span.
   assert (Hn : (0 < n adaptive_span)%nat) by (cbn; lia).
   assert (Hd : Rabs (delta adaptive_span * 255 * 1) < 1).
   { rewrite HD. rewrite Rabs_left by lra. lra. }

@@ -80,6 +80,12 @@ Proof.
   lra.
 Qed.
 
+Lemma ad_sc : forall th x M E, 0 <= th <= M -> Rabs x <= E -> Rabs (th * x) <= M * E.
+Proof.
+  intros th x M E Hth Hx. rewrite Rabs_mult, (Rabs_pos_eq th) by lra.
+  apply Rmult_le_compat; try lra; apply Rabs_pos.
+Qed.
+
 (** j lo / (2 n^2) <= 1/8 for j + lo = n. *)
 Lemma ad_kk : forall nr j lo, 1 <= nr -> 0 <= j -> 0 <= lo -> j + lo = nr ->
   0 <= j * lo / (2 * (nr * nr)) <= 1 / 8.
@@ -115,23 +121,15 @@ Proof.
   assert (HD : dsx / 2 * j * lo = kk * (nr * nr * dsx)) by (unfold kk; field; nra).
   rewrite HX in C. rewrite HD.
   assert (Hds0 : 0 <= Eds) by (pose proof (Rabs_pos (nr * nr * dsh - nr * nr * dsx)); lra).
-  assert (B1 : Rabs (kk * (nr * nr * dsh)) <= 1 / 4 + Eds / 8).
-  { rewrite Rabs_mult, (Rabs_pos_eq kk) by lra.
-    assert (Rabs (nr * nr * dsh) <= 2 + Eds).
-    { replace (nr * nr * dsh) with (nr * nr * dsx + (nr * nr * dsh - nr * nr * dsx)) by ring.
-      eapply Rle_trans; [apply Rabs_triang|]. lra. }
-    assert (kk * Rabs (nr * nr * dsh) <= kk * (2 + Eds)) by (apply Rmult_le_compat_l; lra).
-    nra. }
-  assert (B2 : Rabs (kk * (nr * nr * dsh) - kk * (nr * nr * dsx)) <= Eds / 8).
-  { rewrite <- Rmult_minus_distr_l, Rabs_mult, (Rabs_pos_eq kk) by lra.
-    assert (kk * Rabs (nr * nr * dsh - nr * nr * dsx) <= kk * Eds) by (apply Rmult_le_compat_l; lra).
-    nra. }
+  pose proof (abs_near _ _ _ Hds).
+  assert (B1 : Rabs (kk * (nr * nr * dsh)) <= 1 / 8 * (2 + Eds)) by (apply ad_sc; lra).
+  assert (B2 : Rabs (kk * (nr * nr * dsh - nr * nr * dsx)) <= 1 / 8 * Eds) by (apply ad_sc; lra).
   assert (B3 : (1 + 2 * c3 + 2 * (c3 * c2)) * eta <= 562949986975745 * eta)
     by (apply Rmult_le_compat_r; lra).
   assert (B4 : 3004 / 1000 * v * Rabs (kk * (nr * nr * dsh)) <= 3004 / 1000 * v * (1 / 4 + Eds / 8))
     by (apply Rmult_le_compat_l; lra).
   replace (dh - kk * (nr * nr * dsx))
-    with ((dh - kk * (nr * nr * dsh)) + (kk * (nr * nr * dsh) - kk * (nr * nr * dsx))) by ring.
+    with ((dh - kk * (nr * nr * dsh)) + kk * (nr * nr * dsh - nr * nr * dsx)) by ring.
   eapply Rle_trans; [apply Rabs_triang|]. lra.
 Qed.
 
@@ -175,11 +173,7 @@ Proof.
     Hv He Hn Hj Hjj Hlo Hs Hpa Hpb Hdx Hpag Hpbg Hdp Hpac Hpbc HR Hds Aa Ab Ac Ae Adh.
   intros EG EC EGC MA MB MC E4 E4s.
   set (th := j / nr).
-  assert (Hth : 0 <= th <= 1).
-  { unfold th. split.
-    - unfold Rdiv. apply Rmult_le_pos; [lra | apply Rlt_le, Rinv_0_lt_compat; lra].
-    - apply (Rmult_le_reg_r nr); [lra|].
-      replace (j / nr * nr) with j by (field; lra). lra. }
+  assert (Hth : 0 <= th <= 1) by (apply theta_rng; lra).
   set (kk := j * lo / (2 * (nr * nr))).
   assert (Hk : 0 <= kk <= 1 / 8) by (apply ad_kk; lra).
   set (kc := (j * j - j) / (2 * (nr * nr))).
@@ -199,17 +193,11 @@ Proof.
   { replace (j * dph - th * (pb - pa))
       with (th * (nr * dph - (pbg - pag)) + th * (pbg - pb) + - (th * (pag - pa)))
       by (unfold th; field; lra).
-    eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_Ropp.
-    eapply Rle_trans; [apply Rplus_le_compat_r, Rabs_triang|].
-    rewrite !Rabs_mult, (Rabs_pos_eq th) by lra.
-    assert (th * Rabs (nr * dph - (pbg - pag)) <= 1 * Edp) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
-    assert (th * Rabs (pbg - pb) <= 1 * Epg) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
-    assert (th * Rabs (pag - pa) <= 1 * Epg) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
-    unfold EG. lra. }
-  assert (Hpd : Rabs (th * (pb - pa)) <= 2).
-  { rewrite Rabs_mult, (Rabs_pos_eq th) by lra.
-    assert (Rabs (pb - pa) <= 2) by (unfold Rminus; eapply Rle_trans; [apply Rabs_triang|]; rewrite Rabs_Ropp; lra).
-    assert (th * Rabs (pb - pa) <= 1 * 2) by (apply Rmult_le_compat; try lra; apply Rabs_pos). lra. }
+    eapply Rle_trans; [apply tri3|]. rewrite Rabs_Ropp.
+    pose proof (ad_sc th _ 1 _ Hth Hdp). pose proof (ad_sc th _ 1 _ Hth Hpbg).
+    pose proof (ad_sc th _ 1 _ Hth Hpag). unfold EG. lra. }
+  assert (Hpd : Rabs (th * (pb - pa)) <= 1 * 2)
+    by (apply ad_sc; [lra | pose proof (absdiff pb pa); lra]).
   assert (MAb : Rabs (j * dph) <= MA) by (pose proof (abs_near _ _ _ GA); unfold MA; lra).
   (* corrected Euler part *)
   set (Rr := nr * t0h - (pbc - pac - nr * (nr - 1) / 2 * dsh)) in HR.
@@ -217,44 +205,29 @@ Proof.
   { replace (j * t0h + (j * j - j) / 2 * dsh - (th * (pb - pa) - dsx / 2 * j * lo))
       with (th * Rr + th * (pbc - pb) + - (th * (pac - pa)) + - (kk * (nr * nr * dsh - nr * nr * dsx)))
       by (unfold th, Rr, kk; rewrite <- Hs; field; lra).
-    eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_Ropp.
-    eapply Rle_trans; [apply Rplus_le_compat_r, Rabs_triang|]. rewrite Rabs_Ropp.
-    eapply Rle_trans; [apply Rplus_le_compat_r, Rplus_le_compat_r, Rabs_triang|].
-    rewrite !Rabs_mult, (Rabs_pos_eq th), (Rabs_pos_eq kk) by lra.
-    assert (th * Rabs Rr <= 1 * ER) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
-    assert (th * Rabs (pbc - pb) <= 1 * Epc) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
-    assert (th * Rabs (pac - pa) <= 1 * Epc) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
-    assert (kk * Rabs (nr * nr * dsh - nr * nr * dsx) <= 1 / 8 * Eds)
-      by (apply Rmult_le_compat; try lra; apply Rabs_pos).
+    eapply Rle_trans; [apply tri4|]. rewrite !Rabs_Ropp.
+    pose proof (ad_sc th _ 1 _ Hth HR). pose proof (ad_sc th _ 1 _ Hth Hpbc).
+    pose proof (ad_sc th _ 1 _ Hth Hpac). pose proof (ad_sc kk _ (1 / 8) _ Hk Hds).
     unfold EC. lra. }
   assert (Hdsh : Rabs (nr * nr * dsh) <= 2 + Eds) by (pose proof (abs_near _ _ _ Hds); lra).
   assert (MBb : Rabs (j * t0h) <= MB).
   { assert (E1 : j * t0h = th * (nr * t0h)) by (unfold th; field; lra).
     assert (E2 : nr * (nr - 1) / 2 * dsh = (nr - 1) / (2 * nr) * (nr * nr * dsh)) by (field; lra).
     assert (H3 : 0 <= (nr - 1) / (2 * nr) <= 1 / 2).
-    { split.
-      - unfold Rdiv. apply Rmult_le_pos; [lra | apply Rlt_le, Rinv_0_lt_compat; lra].
-      - apply (Rmult_le_reg_r (2 * nr)); [lra|].
-        replace ((nr - 1) / (2 * nr) * (2 * nr)) with (nr - 1) by (field; lra). lra. }
-    assert (H4 : Rabs (nr * (nr - 1) / 2 * dsh) <= 1 + Eds / 2).
-    { rewrite E2, Rabs_mult, (Rabs_pos_eq ((nr - 1) / (2 * nr))) by lra.
-      assert ((nr - 1) / (2 * nr) * Rabs (nr * nr * dsh) <= 1 / 2 * (2 + Eds))
-        by (apply Rmult_le_compat; try lra; apply Rabs_pos). lra. }
+    { pose proof (theta_rng nr (nr - 1) ltac:(lra) ltac:(lra)).
+      replace ((nr - 1) / (2 * nr)) with ((nr - 1) / nr / 2) by (field; lra). lra. }
+    assert (H4 : Rabs (nr * (nr - 1) / 2 * dsh) <= 1 / 2 * (2 + Eds))
+      by (rewrite E2; apply ad_sc; lra).
     assert (H5 : Rabs (nr * t0h) <= MB).
-    { replace (nr * t0h) with (Rr + (pbc - pb) + - (pac - pa) + (pb - pa) - nr * (nr - 1) / 2 * dsh)
+    { replace (nr * t0h)
+        with (Rr + (pbc - pb) + - (pac - pa) + (pb - pa) + - (nr * (nr - 1) / 2 * dsh))
         by (unfold Rr; ring).
-      replace (Rr + (pbc - pb) + - (pac - pa) + (pb - pa) - nr * (nr - 1) / 2 * dsh)
-        with (Rr + (pbc - pb) + - (pac - pa) + (pb - pa) + - (nr * (nr - 1) / 2 * dsh)) by ring.
       eapply Rle_trans; [apply tri5|]. rewrite !Rabs_Ropp.
-      assert (Rabs (pb - pa) <= 2) by (unfold Rminus; eapply Rle_trans; [apply Rabs_triang|]; rewrite Rabs_Ropp; lra).
-      unfold MB. lra. }
-    rewrite E1, Rabs_mult, (Rabs_pos_eq th) by lra.
-    assert (th * Rabs (nr * t0h) <= 1 * MB) by (apply Rmult_le_compat; try lra; apply Rabs_pos). lra. }
+      pose proof (absdiff pb pa). unfold MB. lra. }
+    rewrite E1. pose proof (ad_sc th _ 1 _ Hth H5). lra. }
   assert (MCb : Rabs ((j * j - j) / 2 * dsh) <= MC).
   { replace ((j * j - j) / 2 * dsh) with (kc * (nr * nr * dsh)) by (unfold kc; field; lra).
-    rewrite Rabs_mult, (Rabs_pos_eq kc) by lra.
-    assert (kc * Rabs (nr * nr * dsh) <= 1 / 2 * (2 + Eds)) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
-    unfold MC. lra. }
+    pose proof (ad_sc kc _ (1 / 2) _ Hkc Hdsh). unfold MC. lra. }
   pose proof (ad_ap1_abs _ _ _ _ _ Hv Aa MAb) as Ra.
   pose proof (ad_ap1_abs _ _ _ _ _ Hv Ab MBb) as Rb.
   pose proof (ad_ap1_abs _ _ _ _ _ Hv Ac MCb) as Rc.
@@ -264,9 +237,7 @@ Proof.
   pose proof (ad_ap1_abs _ _ _ _ _ Hv Ae Sbc) as Re.
   assert (Hdl : Rabs (dsx / 2 * j * lo) <= 1 / 4).
   { replace (dsx / 2 * j * lo) with (kk * (nr * nr * dsx)) by (unfold kk; field; lra).
-    rewrite Rabs_mult, (Rabs_pos_eq kk) by lra.
-    assert (kk * Rabs (nr * nr * dsx) <= 1 / 8 * 2) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
-    lra. }
+    pose proof (ad_sc kk _ (1 / 8) _ Hk Hdx). lra. }
   assert (Fin : forall E, Rabs ((a - e) - dsx / 2 * j * lo) <= E ->
                 Rabs (dh - dsx / 2 * j * lo) <= E + v * (1 / 4 + E) + eta).
   { intros E F4. pose proof (abs_near _ _ _ F4) as Hae.
@@ -288,14 +259,9 @@ Proof.
     { replace (j * dph - (j * t0h + (j * j - j) / 2 * dsh) - dsx / 2 * j * lo)
         with (th * (nr * dph - (pbg - pag)) + - (th * Rr) + kk * (nr * nr * dsh - nr * nr * dsx))
         by (unfold th, Rr, kk; rewrite Sa, Sb; rewrite <- Hs; field; lra).
-      eapply Rle_trans; [apply Rabs_triang|].
-      eapply Rle_trans; [apply Rplus_le_compat_r, Rabs_triang|]. rewrite Rabs_Ropp.
-      rewrite !Rabs_mult, (Rabs_pos_eq th), (Rabs_pos_eq kk) by lra.
-      assert (th * Rabs (nr * dph - (pbg - pag)) <= 1 * Edp) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
-      assert (th * Rabs Rr <= 1 * ER) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
-      assert (kk * Rabs (nr * nr * dsh - nr * nr * dsx) <= 1 / 8 * Eds)
-        by (apply Rmult_le_compat; try lra; apply Rabs_pos).
-      unfold EGC. lra. }
+      eapply Rle_trans; [apply tri3|]. rewrite Rabs_Ropp.
+      pose proof (ad_sc th _ 1 _ Hth Hdp). pose proof (ad_sc th _ 1 _ Hth HR).
+      pose proof (ad_sc kk _ (1 / 8) _ Hk Hds). unfold EGC. lra. }
     assert (F4 : Rabs ((a - e) - dsx / 2 * j * lo) <= E4s).
     { replace ((a - e) - dsx / 2 * j * lo)
         with ((a - j * dph) + (j * dph - (j * t0h + (j * j - j) / 2 * dsh) - dsx / 2 * j * lo)
@@ -304,6 +270,11 @@ Proof.
       unfold E4s. lra. }
     exact (Fin E4s F4).
 Qed.
+
+(** An operation of factor k <= K1 is within the unit K1 u. *)
+Lemma ad_K1 : forall (M : fmodel) (k K1 y x : R), 0 < m_u M -> k <= K1 ->
+  approx k (m_u M) (m_eta M) y x -> ap1 (K1 * m_u M) (m_eta M) y x.
+Proof. intros M k K1 y x Hu Hk H. eapply ap1_mono; [|exact H]. apply Rmult_le_compat_r; lra. Qed.
 
 (** ** The set-up facts used (Profiles.v, sections Gouraud and CE) *)
 
@@ -336,20 +307,8 @@ Qed.
 Lemma ad_j_lo : forall m : nat, (1 <= m)%nat ->
   1 <= INR (m_step m) /\ 0 <= INR (m / 2) /\ INR (m_step m) + INR (m / 2) = INR m.
 Proof.
-  intros m Hm. unfold m_step.
-  assert (H : ((m + 1) / 2 + m / 2 = m)%nat /\ (1 <= (m + 1) / 2)%nat).
-  { pose proof (Nat.div_mod m 2 ltac:(lia)) as H1.
-    pose proof (Nat.mod_upper_bound m 2 ltac:(lia)) as H2.
-    assert (H3 : (m mod 2 = 0 \/ m mod 2 = 1)%nat) by lia.
-    destruct H3 as [H3 | H3]; rewrite H3 in H1.
-    - replace (m + 1)%nat with (1 + (m / 2) * 2)%nat by lia.
-      rewrite Nat.div_add by lia. change (1 / 2)%nat with 0%nat. lia.
-    - replace (m + 1)%nat with (0 + (m / 2 + 1) * 2)%nat by lia.
-      rewrite Nat.div_add by lia. change (0 / 2)%nat with 0%nat. lia. }
-  destruct H as [H1 H2]. split; [|split].
-  - apply (le_INR 1). exact H2.
-  - apply pos_INR.
-  - rewrite <- plus_INR, H1. reflexivity.
+  intros m Hm. destruct (m_step_half m) as (H1 & H2 & H3).
+  split; [|split]; [apply (le_INR 1); lia | apply pos_INR | rewrite <- plus_INR; f_equal; lia].
 Qed.
 
 Lemma ad_delta_exact : forall s : span, (1 <= n s)%nat ->
@@ -392,7 +351,9 @@ Definition fast_delta_err (M : fmodel) (K1 : R) : R :=
   let Eds := 9211 / 100 * (K1 * m_u M) + 1806 / 100 * (k_div M * m_u M) in
   Eds / 8 + 3004 / 1000 * (K1 * m_u M) * (1 / 4 + Eds / 8) + 562949986975745 * m_eta M.
 
-Definition eq24_delta_err (M : fmodel) (K1 : R) : R :=
+(** (ii): the exact part of the error is E0 = EG + EC, or EGC when the two
+    set-ups share the computed p_a, p_b ([shared], [eq24_shared_delta_err]). *)
+Definition eq24_err_of (M : fmodel) (K1 : R) (shared : bool) : R :=
   let u := m_u M in let eta := m_eta M in let v := K1 * u in let d := k_div M * u in
   let Epg := (2 * (k_in M * u) + k_mul M * u + 2 * (k_add M * u)) * (1 + / 131072) + 18 * eta in
   let Edp := (k_add M * u + k_div M * u) * (2 + / 65536) + 16777218 * eta in
@@ -400,13 +361,15 @@ Definition eq24_delta_err (M : fmodel) (K1 : R) : R :=
   let ER := 2004 / 100 * v + 501 / 100 * d in
   let Eds := 9211 / 100 * v + 1806 / 100 * d in
   let EG := Edp + 2 * Epg in
-  let EC := ER + 2 * Epc + Eds / 8 in
+  let E0 := if shared then Edp + ER + Eds / 8 else EG + (ER + 2 * Epc + Eds / 8) in
   let MA := 2 + EG in
   let MB := 3 + 2 * Epc + Eds / 2 + ER in
   let MC := 1 + Eds / 2 in
-  let E4 := EG + EC + (v * MA + eta) + (v * MB + eta) + (v * MC + eta)
+  let E4 := E0 + (v * MA + eta) + (v * MB + eta) + (v * MC + eta)
             + (v * (MB + MC + (v * MB + eta) + (v * MC + eta)) + eta) in
   E4 + v * (1 / 4 + E4) + eta.
+
+Definition eq24_delta_err (M : fmodel) (K1 : R) : R := eq24_err_of M K1 false.
 
 Lemma fast_delta_error : forall (M : fmodel) (K K1 : R), model_ok M K ->
   1 <= K1 <= K -> k_in M <= K1 -> k_add M <= K1 -> k_mul M <= K1 -> 1 <= k_div M ->
@@ -425,9 +388,8 @@ Proof.
   destruct (ad_j_lo (n s) Hn1) as (J1 & J2 & J3).
   rewrite HD. rewrite <- Hn2ds in Hds.
   assert (HKu : K1 * m_u M <= K * m_u M) by (apply Rmult_le_compat_r; lra).
-  assert (AK : forall y x, ap_mul M y x -> ap1 (K1 * m_u M) (m_eta M) y x).
-  { intros y x H. eapply ap1_mono; [|exact H]. apply Rmult_le_compat_r; lra. }
   assert (Hv0 : 0 <= K1 * m_u M) by (apply Rmult_le_pos; lra).
+  pose proof (fun y x => ad_K1 M _ K1 y x Hu Hm1) as AK.
   pose proof (ad_fast_err (K1 * m_u M) (m_eta M) (INR (n s)) (INR (m_step (n s))) (INR (n s / 2))
     (ds s) (fs_ds F) _ c1 c2 c3 y1 y2 dh ltac:(lra) He0 ltac:(lra) ltac:(lra) J2 J3
     H1 H2 H3 H3b H23 Hc Hds ltac:(rewrite Hn2ds; apply n2ds_le; assumption)
@@ -436,21 +398,7 @@ Proof.
 Qed.
 
 (** (ii) with the p_a, p_b of the two set-ups the same computed values. *)
-Definition eq24_shared_delta_err (M : fmodel) (K1 : R) : R :=
-  let u := m_u M in let eta := m_eta M in let v := K1 * u in let d := k_div M * u in
-  let Epg := (2 * (k_in M * u) + k_mul M * u + 2 * (k_add M * u)) * (1 + / 131072) + 18 * eta in
-  let Edp := (k_add M * u + k_div M * u) * (2 + / 65536) + 16777218 * eta in
-  let Epc := 5002 / 1000 * v + 1 / 1000 * d in
-  let ER := 2004 / 100 * v + 501 / 100 * d in
-  let Eds := 9211 / 100 * v + 1806 / 100 * d in
-  let EG := Edp + 2 * Epg in
-  let EGC := Edp + ER + Eds / 8 in
-  let MA := 2 + EG in
-  let MB := 3 + 2 * Epc + Eds / 2 + ER in
-  let MC := 1 + Eds / 2 in
-  let E4 := EGC + (v * MA + eta) + (v * MB + eta) + (v * MC + eta)
-            + (v * (MB + MC + (v * MB + eta) + (v * MC + eta)) + eta) in
-  E4 + v * (1 / 4 + E4) + eta.
+Definition eq24_shared_delta_err (M : fmodel) (K1 : R) : R := eq24_err_of M K1 true.
 
 (** ** Eq. 24 at either middle step
 
@@ -537,10 +485,8 @@ Proof.
   assert (Hnr : 1 <= INR (n s)) by (apply (le_INR 1) in Hn1; simpl in Hn1; lra).
   assert (HKu : K1 * m_u M <= K * m_u M) by (apply Rmult_le_compat_r; lra).
   assert (Hv0 : 0 <= K1 * m_u M) by (apply Rmult_le_pos; lra).
-  assert (AM : forall y x, ap_mul M y x -> ap1 (K1 * m_u M) (m_eta M) y x).
-  { intros y x H. eapply ap1_mono; [|exact H]. apply Rmult_le_compat_r; lra. }
-  assert (AA : forall y x, ap_add M y x -> ap1 (K1 * m_u M) (m_eta M) y x).
-  { intros y x H. eapply ap1_mono; [|exact H]. apply Rmult_le_compat_r; lra. }
+  pose proof (fun y x => ad_K1 M _ K1 y x Hu Hm1) as AM.
+  pose proof (fun y x => ad_K1 M _ K1 y x Hu Ha1) as AA.
   exact (ad_eq24_err (K1 * m_u M) (m_eta M) (INR (n s)) (INR j) (INR (n s - j))
     (pa s) (pb s) (ds s) (fs_pa FG) (fs_pb FG) (fs_dp FG) (fs_pa FC) (fs_pb FC) (fs_t0 FC) (fs_ds FC)
     a b c e dh _ _ _ _ _ Hv0 He0 ltac:(lra) J0 Jjj J2 J3
@@ -584,21 +530,13 @@ Proof.
     Ha Hb Hl Hn1 Hn2 HFG HFC Himpl Hx H2 Hgo Hce.
   pose proof HM as (Hu & He0 & He2 & Ki & Ka & Km & Kd & HK0 & HK2).
   assert (Hu1 : m_u M <= K * m_u M) by (rewrite <- (Rmult_1_l (m_u M)) at 1; apply Rmult_le_compat_r; lra).
-  destruct Himpl as [[Hi HE] | [(Hi & Hj & HE) | (Hi & Hj & Sa & Sb & HE)]].
-  - apply (adaptive_accepts_of_delta_error x (m_u M) bG bCE _ dh (fast_delta_err M K1) th2);
-      try assumption; try lra.
-    rewrite Rabs_minus_sym.
-    replace (gouraud s (m_step (n s)) - ceuler s (m_step (n s)) - dh)
-      with (- (dh - (gouraud s (m_step (n s)) - ceuler s (m_step (n s))))) by ring.
-    rewrite Rabs_Ropp.
-    exact (fast_delta_error M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1 s FC dh Ha Hb Hl Hn1 Hn2 HFC Hi).
-  - apply (adaptive_accepts_of_delta_error x (m_u M) bG bCE _ dh (eq24_delta_err M K1) th2);
-      try assumption; try lra.
-    exact (proj1 (eq24_delta_error_at M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1 s FG FC j dh Ha Hb Hl Hn1 Hn2 Hj
+  destruct Himpl as [[Hi HE] | [(Hi & Hj & HE) | (Hi & Hj & Sa & Sb & HE)]];
+    (eapply (adaptive_accepts_of_delta_error x (m_u M) bG bCE _ dh _ th2); try eassumption;
+     try lra).
+  - exact (fast_delta_error M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1 s FC dh Ha Hb Hl Hn1 Hn2 HFC Hi).
+  - exact (proj1 (eq24_delta_error_at M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1 s FG FC j dh Ha Hb Hl Hn1 Hn2 Hj
              HFG HFC Hi)).
-  - apply (adaptive_accepts_of_delta_error x (m_u M) bG bCE _ dh (eq24_shared_delta_err M K1) th2);
-      try assumption; try lra.
-    exact (proj2 (eq24_delta_error_at M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1 s FG FC j dh Ha Hb Hl Hn1 Hn2 Hj
+  - exact (proj2 (eq24_delta_error_at M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1 s FG FC j dh Ha Hb Hl Hn1 Hn2 Hj
              HFG HFC Hi) Sa Sb).
 Qed.
 
@@ -633,10 +571,7 @@ Proof.
     Ha Hb Hl Hn1 Hn2 HFG HFC Himpl Hx H2 Hgo Hce.
   apply (adaptive_acceptance_covers_computed_delta_generic_step M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1
            s FG FC (m_step (n s)) dh x bG bCE th2 G C out); try assumption.
-  destruct Himpl as [[Hi HE] | [[Hi HE] | (Hi & Sa & Sb & HE)]].
-  - left. split; assumption.
-  - right. left. split; [exact Hi | split; [left; reflexivity | exact HE]].
-  - right. right. split; [exact Hi | split; [left; reflexivity | repeat split; assumption]].
+  destruct Himpl as [H | [H | H]]; [left | right; left | right; right]; intuition.
 Qed.
 
 (** ** The ieee binary32 profile *)
@@ -647,9 +582,9 @@ Lemma delta_errs_ieee32 : fast_delta_err ieee32 1 <= 17 * bpow radix2 (-24)
   /\ eq24_shared_delta_err ieee32 1 <= 63 * bpow radix2 (-24).
 Proof.
   pose proof ieee32_ok as (Hu & He0 & He2 & _).
-  unfold fast_delta_err, eq24_delta_err, eq24_shared_delta_err, ieee32 in *;
+  unfold fast_delta_err, eq24_delta_err, eq24_shared_delta_err, eq24_err_of, ieee32 in *;
     cbn [m_u m_eta k_in k_add k_mul k_div] in *.
-  cbv zeta. rewrite u24 in *. repeat split; lra.
+  cbv beta zeta iota. rewrite u24 in *. repeat split; lra.
 Qed.
 
 (* Note: as [adaptive_acceptance_covers_computed_delta], eq. 24 (ii) evaluated
@@ -684,10 +619,7 @@ Proof.
   apply (adaptive_acceptance_covers_computed_delta_generic_step ieee32 _ 1 ieee32_ok)
     with (FG := FG) (FC := FC) (j := j) (dh := dh) (th2 := th2);
     unfold ieee32 in *; cbn [m_u k_in k_add k_mul k_div] in *; try assumption; try lra; try lia.
-  destruct Himpl as [[Hi HE] | [(Hi & Hj & HE) | (Hi & Hj & Sa & Sb & HE)]].
-  - left. split; [assumption | lra].
-  - right. left. split; [assumption | split; [assumption | lra]].
-  - right. right. repeat split; try assumption. lra.
+  destruct Himpl as [H | [H | H]]; [left | right; left | right; right]; intuition lra.
 Qed.
 
 (* Note: ieee profile, binary32 (round to nearest, division correctly rounded or
@@ -718,10 +650,7 @@ Proof.
   intros s FG FC dh x bG bCE th2 G C out Ha Hb Hl Hn HFG HFC Himpl Hx H2 Hgo Hce.
   apply (adaptive_acceptance_covers_computed_delta_step s FG FC (m_step (n s)) dh x bG bCE th2 G C out);
     try assumption.
-  destruct Himpl as [[Hi HE] | [[Hi HE] | (Hi & Sa & Sb & HE)]].
-  - left. split; assumption.
-  - right. left. split; [exact Hi | split; [left; reflexivity | exact HE]].
-  - right. right. split; [exact Hi | split; [left; reflexivity | repeat split; assumption]].
+  destruct Himpl as [H | [H | H]]; [left | right; left | right; right]; intuition.
 Qed.
 
 (* Note: u = 2^-24; b_G, b_CE at least the ieee binary32 profile bounds

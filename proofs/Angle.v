@@ -153,23 +153,13 @@ Proof.
     rewrite H, H0, H1. ring.
   - assert (Hs : 0 < sqrt (dot V V)) by (apply sqrt_lt_R0; lra).
     pose proof (sqrt_sqrt (dot V V) HV0) as Hss.
-    exists (vscale (/ sqrt (dot V V)) V). split.
-    + unfold is_unit. unfold dot, vscale in *; cbn [vx vy vz] in *.
-      replace (/ sqrt (vx V * vx V + vy V * vy V + vz V * vz V) * vx V *
-               (/ sqrt (vx V * vx V + vy V * vy V + vz V * vz V) * vx V) +
-               / sqrt (vx V * vx V + vy V * vy V + vz V * vz V) * vy V *
-               (/ sqrt (vx V * vx V + vy V * vy V + vz V * vz V) * vy V) +
-               / sqrt (vx V * vx V + vy V * vy V + vz V * vz V) * vz V *
-               (/ sqrt (vx V * vx V + vy V * vy V + vz V * vz V) * vz V))
-        with ((vx V * vx V + vy V * vy V + vz V * vz V)
-              / (sqrt (vx V * vx V + vy V * vy V + vz V * vz V)
-                 * sqrt (vx V * vx V + vy V * vy V + vz V * vz V)))
-        by (field; lra).
-      rewrite Hss. field. exact HV.
-    + rewrite <- comb_dot. fold V.
-      replace (dot V (vscale (/ sqrt (dot V V)) V)) with (dot V V / sqrt (dot V V))
-        by (unfold dot, vscale; cbn [vx vy vz]; unfold Rdiv; ring).
-      rewrite <- Hss at 1. field. lra.
+    exists (vscale (/ sqrt (dot V V)) V). unfold is_unit. rewrite <- comb_dot. fold V.
+    replace (dot (vscale (/ sqrt (dot V V)) V) (vscale (/ sqrt (dot V V)) V))
+      with (/ sqrt (dot V V) * / sqrt (dot V V) * dot V V)
+      by (unfold dot, vscale; cbn [vx vy vz]; ring).
+    replace (dot V (vscale (/ sqrt (dot V V)) V)) with (/ sqrt (dot V V) * dot V V)
+      by (unfold dot, vscale; cbn [vx vy vz]; ring).
+    set (r := sqrt (dot V V)) in *. clearbody r. rewrite <- Hss. split; field; lra.
 Qed.
 
 (** ** Step 1: the span methods in t *)
@@ -332,13 +322,9 @@ Proof.
   - rewrite ph_minus_g. apply err_le; assumption.
   - rewrite ph_minus_ce. apply err_le; assumption.
   - rewrite ph_minus_eu. apply err_le; assumption.
-  - destruct (err_attained (a_g c t) (b_g c t) Na Nb Ha Hb) as [L [Hl H]].
-    exists L. split; [exact Hl |]. rewrite ph_minus_g. exact H.
-  - destruct (err_attained (a_ce c t) (b_ce c t) Na Nb Ha Hb) as [L [Hl H]].
-    exists L. split; [exact Hl |]. rewrite ph_minus_ce. exact H.
-  - destruct (err_attained (a_eu c (/ INR m) t) (b_eu c (/ INR m) t) Na Nb Ha Hb)
-      as [L [Hl H]].
-    exists L. split; [exact Hl |]. rewrite ph_minus_eu. exact H.
+  - setoid_rewrite ph_minus_g. apply err_attained; assumption.
+  - setoid_rewrite ph_minus_ce. apply err_attained; assumption.
+  - setoid_rewrite ph_minus_eu. apply err_attained; assumption.
   - intros Ht Hc. pose proof (unit_dot_bounds Na Nb Ha Hb) as Hu. fold c in Hu.
     apply R_g_closed; [| lra | exact Ht].
     pose proof (q_range c t ltac:(lra) Ht). lra.
@@ -364,34 +350,19 @@ Lemma light_err_le : forall (s : span) (a b : R),
   Rabs (a * pa s + b * pb s) <= sqrt (qform (dot (Na s) (Nb s)) a b).
 Proof. intros. unfold pa, pb. apply err_le; assumption. Qed.
 
-Lemma span_err_g : forall (s : span) (i : nat),
+(** Ph - M in (a, b) form: Gouraud, corrected Euler, Euler. *)
+Lemma span_err : forall (s : span) (i : nat),
   is_unit (Na s) -> is_unit (Nb s) -> (0 < n s)%nat ->
   let c := dot (Na s) (Nb s) in let t := INR i / INR (n s) in
-  phong s (INR i) - gouraud s i = a_g c t * pa s + b_g c t * pb s.
+  phong s (INR i) - gouraud s i = a_g c t * pa s + b_g c t * pb s
+  /\ phong s (INR i) - ceuler s i = a_ce c t * pa s + b_ce c t * pb s
+  /\ phong s (INR i) - euler_span s i
+     = a_eu c (/ INR (n s)) t * pa s + b_eu c (/ INR (n s)) t * pb s.
 Proof.
   intros s i Ha Hb Hn c t.
-  rewrite (sec_7_phong_in_t s i Ha Hb Hn), (sec_7_gouraud_in_t s i Hn). apply ph_minus_g.
-Qed.
-
-Lemma span_err_ce : forall (s : span) (i : nat),
-  is_unit (Na s) -> is_unit (Nb s) -> (0 < n s)%nat ->
-  let c := dot (Na s) (Nb s) in let t := INR i / INR (n s) in
-  phong s (INR i) - ceuler s i = a_ce c t * pa s + b_ce c t * pb s.
-Proof.
-  intros s i Ha Hb Hn c t.
-  rewrite (sec_7_phong_in_t s i Ha Hb Hn), (sec_7_corrected_euler_in_t s i Ha Hb Hn).
-  apply ph_minus_ce.
-Qed.
-
-Lemma span_err_eu : forall (s : span) (i : nat),
-  is_unit (Na s) -> is_unit (Nb s) -> (0 < n s)%nat ->
-  let c := dot (Na s) (Nb s) in let t := INR i / INR (n s) in
-  phong s (INR i) - euler_span s i
-  = a_eu c (/ INR (n s)) t * pa s + b_eu c (/ INR (n s)) t * pb s.
-Proof.
-  intros s i Ha Hb Hn c t.
-  rewrite (sec_7_phong_in_t s i Ha Hb Hn), (sec_7_euler_in_t s i Ha Hb Hn).
-  apply ph_minus_eu.
+  rewrite (sec_7_phong_in_t s i Ha Hb Hn), (sec_7_gouraud_in_t s i Hn),
+    (sec_7_corrected_euler_in_t s i Ha Hb Hn), (sec_7_euler_in_t s i Ha Hb Hn).
+  split; [apply ph_minus_g | split; [apply ph_minus_ce | apply ph_minus_eu]].
 Qed.
 
 (** ** Gouraud *)
@@ -452,16 +423,15 @@ Proof.
     pose proof (unit_dot_bounds _ _ Ha Hb) as Hc.
     set (c := dot (Na s) (Nb s)) in *.
     assert (Hmain : Rabs (phong s (INR i) - gouraud s i) <= 1 - sqrt ((1 + c) / 2)).
-    { rewrite (span_err_g s i Ha Hb Hn).
+    { rewrite (proj1 (span_err s i Ha Hb Hn)).
       eapply Rle_trans; [apply light_err_le; assumption |].
       apply R_g_le; [exact Hc | apply pixel_t; assumption]. }
-    assert (T1 : 2 * (254 / 255) ^ 2 - 1 <= c -> 1 - sqrt ((1 + c) / 2) <= 1 / 255).
-    { intros H. apply half_angle_threshold; [lra |]. lra. }
-    assert (T2 : 2 * (509 / 510) ^ 2 - 1 <= c -> 1 - sqrt ((1 + c) / 2) <= 1 / 510).
-    { intros H. apply half_angle_threshold; [lra |]. lra. }
+    assert (T : forall B, 0 <= B <= 1 -> 2 * (1 - B) ^ 2 - 1 <= c ->
+                Rabs (phong s (INR i) - gouraud s i) <= B)
+      by (intros; eapply Rle_trans; [exact Hmain | apply half_angle_threshold; assumption]).
     assert (D1 : 2 * (254 / 255) ^ 2 - 1 <= cos (10.15 * PI / 180)) by iv.
     assert (D2 : 2 * (509 / 510) ^ 2 - 1 <= cos (7.17 * PI / 180)) by iv.
-    repeat split; intros; lra.
+    repeat split; intros; [exact Hmain | apply T; lra ..].
   - intros s m Ha Hb Hc Hm Hn HL.
     set (c := dot (Na s) (Nb s)) in *.
     assert (Hn0 : (0 < n s)%nat) by lia.
@@ -472,14 +442,11 @@ Proof.
     assert (Hh2sq : h2 * h2 = (1 + c) / 2) by (apply sqrt_sqrt; lra).
     assert (Hs2 : sqrt (2 * (1 + c)) = 2 * h2).
     { apply sqrt_lem_1; lra. }
-    assert (Hpa : pa s = h2).
-    { unfold pa. rewrite HL, dot_vscale_r, dot_vadd_r, Hs2.
-      unfold is_unit in Ha. rewrite Ha. fold c.
-      replace (1 + c) with (2 * (h2 * h2)) by lra. field. lra. }
-    assert (Hpb : pb s = h2).
-    { unfold pb. rewrite HL, dot_vscale_r, dot_vadd_r, Hs2.
-      unfold is_unit in Hb. rewrite Hb, dot_sym. fold c.
-      replace (c + 1) with (2 * (h2 * h2)) by lra. field. lra. }
+    assert (pa s = h2 /\ pb s = h2) as [Hpa Hpb].
+    { unfold pa, pb. rewrite HL, !dot_vscale_r, !dot_vadd_r, Hs2.
+      unfold is_unit in Ha, Hb. rewrite Ha, Hb, (dot_sym (Nb s)). fold c.
+      replace (1 + c) with (2 * (h2 * h2)) by lra. replace (c + 1) with (2 * (h2 * h2)) by lra.
+      split; field; lra. }
     split.
     + unfold is_unit. rewrite HL, Hs2.
       assert (E : forall a u v, dot (vscale a (vadd u v)) (vscale a (vadd u v))
@@ -504,7 +471,7 @@ Lemma ce_pixel_bound : forall (s : span) (i : nat) (K B : R),
   Rabs (phong s (INR i) - ceuler s i) <= B.
 Proof.
   intros s i K B Ha Hb Hl Hn Hi HB HK Hc HF.
-  rewrite (span_err_ce s i Ha Hb Hn).
+  rewrite (proj1 (proj2 (span_err s i Ha Hb Hn))).
   eapply Rle_trans; [apply light_err_le; assumption |].
   pose proof (pixel_t s i Hn Hi) as Ht. pose proof (unit_dot_bounds _ _ Ha Hb) as Hu.
   set (c := dot (Na s) (Nb s)) in *. set (t := INR i / INR (n s)) in *.
@@ -568,9 +535,6 @@ Proof.
 Qed.
 
 
-Lemma INR_const : forall m : nat, INR m = IZR (Z.of_nat m).
-Proof. exact INR_IZR_INZ. Qed.
-
 (** Sharpness: a concrete span Na = (1,0,0), Nb = (cos θ, sin θ, 0) with the extremal
     light of pixel i, where the error exceeds B. *)
 Lemma ce_sharp : forall (th B : R) (i m : nat),
@@ -596,7 +560,7 @@ Proof.
   repeat split; try assumption.
   assert (Ht : 0 <= t <= 1) by (apply (pixel_t (mkSpan Na0 Nb0 L0 m)); cbn [n]; assumption).
   pose proof (unit_dot_bounds _ _ Ha Hb) as Hu.
-  rewrite (span_err_ce (mkSpan Na0 Nb0 L0 m) i Ha Hb Hm). cbn [Na Nb L n].
+  rewrite (proj1 (proj2 (span_err (mkSpan Na0 Nb0 L0 m) i Ha Hb Hm))). cbn [Na Nb L n].
   rewrite Hc0. fold t. unfold pa, pb. cbn [Na Nb L].
   rewrite HL, Hc0, qform_ce_Fce by lra.
   rewrite Rabs_pos_eq by apply sqrt_pos.
@@ -628,14 +592,9 @@ Theorem sec_7_corrected_euler_one_level :
         /\ n s = 50%nat /\ dot (Na s) (Nb s) = cos (24.8 * PI / 180)
         /\ 1 / 510 < Rabs (phong s (INR 11) - ceuler s 11)).
 Proof.
-  split; [| split].
-  - intros s i Ha Hb Hl Hn Hi. split.
-    + ce_row 31.
-    + ce_row 24.6.
-  - apply ce_sharp; [lia | lia | lra | iv |].
-    rewrite !INR_const. cbn [Z.of_nat Pos.of_succ_nat Pos.succ]. unfold Fce. iv.
-  - apply ce_sharp; [lia | lia | lra | iv |].
-    rewrite !INR_const. cbn [Z.of_nat Pos.of_succ_nat Pos.succ]. unfold Fce. iv.
+  split; [intros s i Ha Hb Hl Hn Hi; split; [ce_row 31 | ce_row 24.6] |].
+  split; apply ce_sharp; [lia | lia | lra | iv | | lia | lia | lra | iv |];
+    rewrite !INR_IZR_INZ; cbn [Z.of_nat Pos.of_succ_nat Pos.succ]; unfold Fce; iv.
 Qed.
 
 (** ** Euler *)
@@ -677,12 +636,6 @@ Proof.
   - assert (Ht' : 1 / 4 <= t <= 1) by lra. iv2 t sg.
 Qed.
 
-Lemma div_nonneg : forall a b, 0 <= a -> 0 < b -> 0 <= a / b.
-Proof.
-  intros a b Ha Hb. unfold Rdiv. apply Rmult_le_pos; [exact Ha |].
-  left. apply Rinv_0_lt_compat. exact Hb.
-Qed.
-
 (** The Euler coefficients with r left abstract. *)
 Definition A_eu (c r h t : R) : R :=
   (1 - t) * (r - 1) - (1 - c) * (t * (1 - t)) / 2 - t * (1 - c) * (1 + h) / 2.
@@ -694,47 +647,33 @@ Proof. intros. unfold a_eu, a_ce, a_g, A_eu. ring. Qed.
 Lemma b_eu_r : forall c h t, b_eu c h t = B_eu c (rn c t) h t.
 Proof. intros. unfold b_eu, b_ce, b_g, B_eu. ring. Qed.
 
-(** k^2 - R_E^2 at h = 0 and h = 1, for 0 < t < 1, in the variables (t, σ). *)
-Lemma eu0_sigma : forall t sg, 0 < t < 1 -> 0 < sg <= 1 ->
-  1 - 2 * t <= sg -> 2 * t - 1 <= sg ->
-  let c := 1 - (1 - sg ^ 2) / (2 * (t * (1 - t))) in
-  qform c (A_eu c (/ sg) 0 t) (B_eu c (/ sg) 0 t) <= (1 - c) ^ 2.
+(** k^2 - R_E^2 at h = 0 and h = 1, for 0 < t < 1, in the variables (t, σ): it is
+    (1-σ)^2 (1+σ-2t) F / (16 σ t^2 d) with F >= 0, d > 0. *)
+Lemma eu_sigma_le : forall t sg F d Q K, 0 < t < 1 -> 0 < sg -> 2 * t - 1 <= sg ->
+  0 <= F -> 0 < d -> K - Q = (1 - sg) ^ 2 * ((1 + sg - 2 * t) * F) / (16 * sg * t ^ 2 * d) ->
+  Q <= K.
 Proof.
-  intros t sg Ht Hs H1 H2 c.
-  assert (E : (1 - c) ^ 2 - qform c (A_eu c (/ sg) 0 t) (B_eu c (/ sg) 0 t)
-              = (1 - sg) ^ 2 * ((1 + sg - 2 * t) * - P0 t sg)
-                / (16 * sg * t ^ 2 * (1 - t) ^ 3)).
-  { unfold c, qform, A_eu, B_eu, P0. field. repeat split; nra. }
-  pose proof (P0_neg t sg ltac:(lra) ltac:(lra) H1 H2).
-  assert (0 <= (1 - sg) ^ 2 * ((1 + sg - 2 * t) * - P0 t sg)
-               / (16 * sg * t ^ 2 * (1 - t) ^ 3)).
-  { apply div_nonneg.
+  intros t sg F d Q K Ht Hs H1 HF Hd E.
+  assert (0 < t ^ 2) by (apply pow_lt; lra).
+  assert (0 <= (1 - sg) ^ 2 * ((1 + sg - 2 * t) * F) / (16 * sg * t ^ 2 * d)).
+  { unfold Rdiv. apply Rmult_le_pos.
     - apply Rmult_le_pos; [apply pow2_ge_0 | apply Rmult_le_pos; lra].
-    - assert (0 < t ^ 2) by (apply pow_lt; lra).
-      assert (0 < (1 - t) ^ 3) by (apply pow_lt; lra).
-      apply Rmult_lt_0_compat; [| lra]. apply Rmult_lt_0_compat; [| lra]. lra. }
+    - left. apply Rinv_0_lt_compat. apply Rmult_lt_0_compat; [| lra].
+      apply Rmult_lt_0_compat; lra. }
   lra.
 Qed.
 
-Lemma eu1_sigma : forall t sg, 0 < t < 1 -> 0 < sg <= 1 ->
+Lemma eu_sigma : forall t sg hh, hh = 0 \/ hh = 1 -> 0 < t < 1 -> 0 < sg <= 1 ->
   1 - 2 * t <= sg -> 2 * t - 1 <= sg ->
   let c := 1 - (1 - sg ^ 2) / (2 * (t * (1 - t))) in
-  qform c (A_eu c (/ sg) 1 t) (B_eu c (/ sg) 1 t) <= (1 - c) ^ 2.
+  qform c (A_eu c (/ sg) hh t) (B_eu c (/ sg) hh t) <= (1 - c) ^ 2.
 Proof.
-  intros t sg Ht Hs H1 H2 c.
-  assert (E : (1 - c) ^ 2 - qform c (A_eu c (/ sg) 1 t) (B_eu c (/ sg) 1 t)
-              = (1 - sg) ^ 2 * ((1 + sg - 2 * t) * P1 t sg)
-                / (16 * sg * t ^ 2 * (1 - t) ^ 2)).
-  { unfold c, qform, A_eu, B_eu, P1. field. repeat split; nra. }
+  intros t sg hh Hh Ht Hs H1 H2 c.
+  pose proof (P0_neg t sg ltac:(lra) ltac:(lra) H1 H2).
   pose proof (P1_pos t sg ltac:(lra) ltac:(lra) H1 H2).
-  assert (0 <= (1 - sg) ^ 2 * ((1 + sg - 2 * t) * P1 t sg)
-               / (16 * sg * t ^ 2 * (1 - t) ^ 2)).
-  { apply div_nonneg.
-    - apply Rmult_le_pos; [apply pow2_ge_0 | apply Rmult_le_pos; lra].
-    - assert (0 < t ^ 2) by (apply pow_lt; lra).
-      assert (0 < (1 - t) ^ 2) by (apply pow_lt; lra).
-      apply Rmult_lt_0_compat; [| lra]. apply Rmult_lt_0_compat; [| lra]. lra. }
-  lra.
+  destruct Hh; subst hh; [apply (eu_sigma_le t sg (- P0 t sg) ((1 - t) ^ 3))
+    | apply (eu_sigma_le t sg (P1 t sg) ((1 - t) ^ 2))]; try lra; try (apply pow_lt; lra);
+    unfold c, qform, A_eu, B_eu, P0, P1; field; repeat split; nra.
 Qed.
 
 Lemma rn_edge : forall c t, t = 0 \/ t = 1 -> rn c t = 1.
@@ -778,10 +717,7 @@ Proof.
       set (sg := sqrt Q) in *. clearbody sg.
       assert (Hc' : c = 1 - (1 - sg ^ 2) / (2 * (t * (1 - t)))).
       { rewrite Hsg2. unfold Q. field. lra. }
-      clearbody Q. subst c.
-      destruct Hh; subst hh.
-      * apply eu0_sigma; lra.
-      * apply eu1_sigma; lra.
+      clearbody Q. subst c. apply eu_sigma; lra.
 Qed.
 
 (** R_E^2 is convex in h: V_h = V_0 - (t k h / 2)(Na + Nb). *)
@@ -847,7 +783,7 @@ Proof.
     { split; [left; apply Rinv_0_lt_compat; lra |].
       rewrite <- Rinv_1. apply Rinv_le_contravar; lra. }
     assert (Hmain : Rabs (phong s (INR i) - euler_span s i) <= 1 - dot (Na s) (Nb s)).
-    { rewrite (span_err_eu s i Ha Hb Hn).
+    { rewrite (proj2 (proj2 (span_err s i Ha Hb Hn))).
       eapply Rle_trans; [apply light_err_le; assumption |].
       apply R_eu_le; [exact Hc | exact Hh | apply pixel_t; assumption]. }
     assert (D1 : 254 / 255 <= cos (5.07 * PI / 180)) by iv.
@@ -855,7 +791,7 @@ Proof.
     repeat split; intros; lra.
   - intros s Ha Hb Hn HL.
     assert (Hn0 : (0 < n s)%nat) by lia.
-    rewrite (span_err_eu s 1 Ha Hb Hn0). rewrite Hn.
+    rewrite (proj2 (proj2 (span_err s 1 Ha Hb Hn0))). rewrite Hn.
     replace (INR 1 / INR 1) with 1 by (simpl; field).
     replace (/ INR 1) with 1 by (simpl; field).
     rewrite a_eu_r, b_eu_r, rn_edge by auto.

@@ -19,9 +19,6 @@ Lemma mortensen_phong_1 : phong mortensen_span 1 = 1.
 Proof.
   unfold phong, p, q, A, B, C, D, E, k, mortensen_span, dot, vscale, vsub.
   cbn [vx vy vz Na Nb L n]. rewrite INR_2.
-  replace (/ 2 * (-3 / 5 - 3 / 5) * (/ 2 * (-3 / 5 - 3 / 5)) +
-           / 2 * (0 - 0) * (/ 2 * (0 - 0)) +
-           / 2 * (4 / 5 - 4 / 5) * (/ 2 * (4 / 5 - 4 / 5))) with (9/25) by field.
   match goal with |- ?a / sqrt ?b = 1 =>
     replace b with ((4/5) * (4/5)) by field;
     replace a with (4/5) by field end.
@@ -39,21 +36,14 @@ Theorem mortensen_equal_angles_counterexample :
   /\ phong s 1 = 1 /\ phong s 1 <> angle_interp s 1.
 Proof.
   cbv zeta.
-  assert (Hpa : pa mortensen_span = 4/5)
-    by (unfold pa, mortensen_span, dot; cbn [vx vy vz Na L]; field).
-  assert (Hpb : pb mortensen_span = 4/5)
-    by (unfold pb, mortensen_span, dot; cbn [vx vy vz Nb L]; field).
+  assert (Hpa : pa mortensen_span = 4/5) by span_val mortensen_span.
+  assert (Hpb : pb mortensen_span = 4/5) by span_val mortensen_span.
   assert (Hai : forall i : nat, angle_interp mortensen_span i = 4/5).
   { intros i. unfold angle_interp. rewrite Hpa, Hpb.
     replace (acos (4/5) + INR i / INR (n mortensen_span) * (acos (4/5) - acos (4/5)))
       with (acos (4/5)) by ring.
     apply cos_acos. lra. }
-  repeat split.
-  - unfold is_unit, mortensen_span, dot. cbn [vx vy vz Na]. field.
-  - unfold is_unit, mortensen_span, dot. cbn [vx vy vz Nb]. field.
-  - exact Hpa.
-  - exact Hpb.
-  - exact Hai.
+  repeat split; try assumption; try span_val mortensen_span.
   - exact mortensen_phong_1.
   - rewrite mortensen_phong_1, Hai. lra.
 Qed.
@@ -69,16 +59,12 @@ Theorem mortensen_angle_not_linear :
   /\ acos (phong s 1) <> (acos (phong s 0) + acos (phong s 2)) / 2.
 Proof.
   cbv zeta.
-  assert (Ha : is_unit (Na mortensen_span))
-    by (unfold is_unit, mortensen_span, dot; cbn [vx vy vz Na]; field).
-  assert (Hb : is_unit (Nb mortensen_span))
-    by (unfold is_unit, mortensen_span, dot; cbn [vx vy vz Nb]; field).
+  assert (Ha : is_unit (Na mortensen_span)) by span_val mortensen_span.
+  assert (Hb : is_unit (Nb mortensen_span)) by span_val mortensen_span.
   assert (Hn : (0 < n mortensen_span)%nat) by (cbn; lia).
   destruct (eq_4_phong_exact_on_edges mortensen_span Hn Ha Hb) as [H0 H2].
-  assert (Hpa : pa mortensen_span = 4/5)
-    by (unfold pa, mortensen_span, dot; cbn [vx vy vz Na L]; field).
-  assert (Hpb : pb mortensen_span = 4/5)
-    by (unfold pb, mortensen_span, dot; cbn [vx vy vz Nb L]; field).
+  assert (Hpa : pa mortensen_span = 4/5) by span_val mortensen_span.
+  assert (Hpb : pb mortensen_span = 4/5) by span_val mortensen_span.
   cbn [n mortensen_span] in H2. rewrite INR_2 in H2.
   rewrite H0, H2, Hpa, Hpb, mortensen_phong_1, acos_1.
   pose proof (acos_bound_lt (4/5) ltac:(lra)) as Hpos.
@@ -97,10 +83,8 @@ Theorem mortensen_unequal_angles_counterexample :
   /\ phong s 1 <> angle_interp s 1.
 Proof.
   cbv zeta.
-  assert (Hpa : pa mortensen_span2 = 1)
-    by (unfold pa, mortensen_span2, dot; cbn [vx vy vz Na L]; field).
-  assert (Hpb : pb mortensen_span2 = 0)
-    by (unfold pb, mortensen_span2, dot; cbn [vx vy vz Nb L]; field).
+  assert (Hpa : pa mortensen_span2 = 1) by span_val mortensen_span2.
+  assert (Hpb : pb mortensen_span2 = 0) by span_val mortensen_span2.
   assert (Hai : angle_interp mortensen_span2 1 = sqrt 3 / 2).
   { unfold angle_interp. rewrite Hpa, Hpb, acos_1, acos_0.
     cbn [n mortensen_span2]. rewrite INR_3.
@@ -112,23 +96,13 @@ Proof.
     match goal with |- ?a / sqrt ?b = _ =>
       replace b with (5/9) by field; replace a with (2/3) by field end.
     reflexivity. }
-  repeat split.
-  - unfold is_unit, mortensen_span2, dot. cbn [vx vy vz Na]. field.
-  - unfold is_unit, mortensen_span2, dot. cbn [vx vy vz Nb]. field.
-  - exact Hpa.
-  - exact Hpb.
-  - exact Hai.
-  - exact Hph.
-  - rewrite Hph, Hai. intros Heq.
-    assert (Ha : 0 < sqrt (5/9)) by (apply sqrt_lt_R0; lra).
-    assert (Ha2 : sqrt (5/9) * sqrt (5/9) = 5/9) by (apply sqrt_sqrt; lra).
-    assert (Hb2 : sqrt 3 * sqrt 3 = 3) by (apply sqrt_sqrt; lra).
-    assert (Hab : sqrt (5/9) * sqrt 3 = 4/3).
-    { apply (f_equal (fun t => t * sqrt (5/9) * 2)) in Heq.
-      field_simplify in Heq; [| lra]. lra. }
-    assert (H2 : (sqrt (5/9) * sqrt 3) * (sqrt (5/9) * sqrt 3) = 5/3).
-    { replace ((sqrt (5/9) * sqrt 3) * (sqrt (5/9) * sqrt 3))
-        with ((sqrt (5/9) * sqrt (5/9)) * (sqrt 3 * sqrt 3)) by ring.
-      rewrite Ha2, Hb2. field. }
-    rewrite Hab in H2. lra.
+  repeat split; try assumption; [span_val mortensen_span2.. |].
+  rewrite Hph, Hai. intros Heq.
+  assert (Ha : 0 < sqrt (5/9)) by (apply sqrt_lt_R0; lra).
+  assert (Ha2 : sqrt (5/9) * sqrt (5/9) = 5/9) by (apply sqrt_sqrt; lra).
+  assert (Hb2 : sqrt 3 * sqrt 3 = 3) by (apply sqrt_sqrt; lra).
+  assert (Hab : sqrt (5/9) * sqrt 3 = 4/3).
+  { apply (f_equal (fun t => t * sqrt (5/9) * 2)) in Heq.
+    field_simplify in Heq; [| lra]. lra. }
+  nra.
 Qed.

@@ -60,19 +60,10 @@ Proof.
   - intros Hc. pose proof (one_minus_c_half_dist u v Hu Hv) as H.
     destruct u as [x1 y1 z1], v as [x2 y2 z2].
     unfold dot, vsub in H, Hc; cbn [vx vy vz] in H, Hc.
-    assert (Hs : (x1 - x2) ^ 2 + (y1 - y2) ^ 2 + (z1 - z2) ^ 2 = 0) by lra.
-    assert (Hx : (x1 - x2) ^ 2 = 0)
-      by (pose proof (pow2_ge_0 (x1 - x2)); pose proof (pow2_ge_0 (y1 - y2));
-          pose proof (pow2_ge_0 (z1 - z2)); lra).
-    assert (Hy : (y1 - y2) ^ 2 = 0)
-      by (pose proof (pow2_ge_0 (x1 - x2)); pose proof (pow2_ge_0 (y1 - y2));
-          pose proof (pow2_ge_0 (z1 - z2)); lra).
-    assert (Hz : (z1 - z2) ^ 2 = 0)
-      by (pose proof (pow2_ge_0 (x1 - x2)); pose proof (pow2_ge_0 (y1 - y2));
-          pose proof (pow2_ge_0 (z1 - z2)); lra).
-    simpl in Hx, Hy, Hz. rewrite Rmult_1_r in Hx, Hy, Hz.
-    apply Rsqr_0_uniq in Hx, Hy, Hz.
-    replace x2 with x1 by lra. replace y2 with y1 by lra. replace z2 with z1 by lra.
+    pose proof (Rle_0_sqr (x1 - x2)). pose proof (Rle_0_sqr (y1 - y2)).
+    pose proof (Rle_0_sqr (z1 - z2)).
+    assert (x1 = x2 /\ y1 = y2 /\ z1 = z2) as (-> & -> & ->)
+      by (repeat split; apply Rminus_diag_uniq, Rsqr_0_uniq; unfold Rsqr in *; lra).
     reflexivity.
   - intros Heq. rewrite <- Heq. exact Hu.
 Qed.
@@ -92,7 +83,7 @@ Lemma eps_unit : forall s, (0 < n s)%nat -> is_unit (Na s) -> is_unit (Nb s) ->
   eps s = (1 - dot (Na s) (Nb s))
           * ((pa s - pb s) / 2 + (pa s + pb s) / (2 * INR (n s))).
 Proof.
-  intros s Hn Ha Hb. assert (Hn' : INR (n s) <> 0) by (apply not_0_INR; lia).
+  intros s Hn Ha Hb. pose proof (INR_n_neq_0 s Hn) as Hn'.
   unfold eps, corr_eps. rewrite eq_14_euler_closed_form.
   rewrite (ds_unit s Ha Hb). unfold dia, dqa. rewrite A_pa_pb, (D_unit s Ha).
   field. exact Hn'.
@@ -140,9 +131,8 @@ Proof.
   intros na nb l m Ha Hb Hm. assert (Hm' : 0 < INR m) by (apply lt_0_INR; lia).
   rewrite (eps_rate na nb l m Ha Hb Hm).
   pose proof (one_minus_c_nonneg na nb Ha Hb) as Hc.
-  unfold Rdiv. rewrite Rabs_mult, Rabs_mult.
-  rewrite (Rabs_pos_eq (1 - dot na nb)) by exact Hc.
-  rewrite (Rabs_pos_eq (/ (2 * INR m))) by (apply Rlt_le, Rinv_0_lt_compat; lra).
+  unfold Rdiv. rewrite !Rabs_mult, (Rabs_pos_eq (1 - dot na nb)), (Rabs_pos_eq (/ _))
+    by (try apply Rlt_le, Rinv_0_lt_compat; lra).
   reflexivity.
 Qed.
 
@@ -211,36 +201,23 @@ Theorem eq_15_euler_misses_pb_general : forall s : span,
   /\ (dot (Na s) (Nb s) = 1 <-> Na s = Nb s).
 Proof.
   intros s Hn Ha Hb. split; [| exact (unit_c_one_iff_eq _ _ Ha Hb)].
-  assert (Hn' : INR (n s) <> 0) by (apply not_0_INR; lia).
-  assert (He : euler_span s (n s) - pb s
-               = (1 - dot (Na s) (Nb s))
-                 * (INR (n s) * (pa s - pb s) + (pa s + pb s)) / (2 * INR (n s))).
+  pose proof (INR_n_neq_0 s Hn) as Hn'.
+  assert (He : (1 - dot (Na s) (Nb s)) * (INR (n s) * (pa s - pb s) + (pa s + pb s))
+               = 2 * INR (n s) * (euler_span s (n s) - pb s)).
   { rewrite <- eps_is_euler_minus_pb, (eps_unit s Hn Ha Hb). field. exact Hn'. }
   split.
-  - intros H. assert (H0 : (1 - dot (Na s) (Nb s))
-                           * (INR (n s) * (pa s - pb s) + (pa s + pb s)) = 0).
-    { assert (Hz : (1 - dot (Na s) (Nb s))
-                   * (INR (n s) * (pa s - pb s) + (pa s + pb s)) / (2 * INR (n s)) = 0)
-        by lra.
-      unfold Rdiv in Hz. apply Rmult_integral in Hz. destruct Hz as [Hz | Hz];
-        [exact Hz | exfalso; apply Rinv_neq_0_compat in Hz; [exact Hz | lra]]. }
-    apply Rmult_integral in H0. destruct H0 as [H0 | H0]; [left; lra | right; exact H0].
-  - intros [H | H].
-    + rewrite H in He. unfold Rdiv in He. lra.
-    + rewrite H in He. unfold Rdiv in He. lra.
+  - intros H. replace (euler_span s (n s) - pb s) with 0 in He by lra. rewrite Rmult_0_r in He.
+    apply Rmult_integral in He. destruct He as [H0 | H0]; [left; lra | right; exact H0].
+  - intros H. assert (H0 : 2 * INR (n s) * (euler_span s (n s) - pb s) = 0)
+      by (rewrite <- He; destruct H as [-> | ->]; ring).
+    apply Rmult_integral in H0. destruct H0; lra.
 Qed.
 
 Lemma m_step_even : forall r, m_step (2 * r) = r.
-Proof.
-  intros r. unfold m_step. replace (2 * r + 1)%nat with (1 + r * 2)%nat by lia.
-  rewrite Nat.div_add by lia. reflexivity.
-Qed.
+Proof. intros r. destruct (m_step_half (2 * r)) as (H1 & H2 & H3). lia. Qed.
 
 Lemma m_step_odd : forall r, m_step (2 * r + 1) = S r.
-Proof.
-  intros r. unfold m_step. replace (2 * r + 1 + 1)%nat with (0 + (r + 1) * 2)%nat by lia.
-  rewrite Nat.div_add by lia. simpl. lia.
-Qed.
+Proof. intros r. destruct (m_step_half (2 * r + 1)) as (H1 & H2 & H3). lia. Qed.
 
 (* Note: Unit Na, Nb and n >= 1 (for n = 0, delta = 0). Even n: m' = n/2 and
    m'(n - m') = n^2/4; odd n: m' = (n+1)/2 and m'(n - m') = (n^2 - 1)/4. The span
@@ -283,6 +260,12 @@ Definition paper_step (s : span) : Z := (Int_part (m_real s) + 1)%Z.
 Definition paper_delta (s : span) : R :=
   let m := IZR (paper_step s) in m * dp s - (m * t0 s + (m ^ 2 - m) / 2 * ds s).
 
+Lemma paper_step_ds0 : forall s, ds s = 0 -> paper_step s = 1%Z.
+Proof.
+  intros s Hds. unfold paper_step, m_real. rewrite Hds. unfold Rdiv.
+  rewrite Rinv_0, Rmult_0_r, (Int_part_eq 0 0) by (simpl; lra). reflexivity.
+Qed.
+
 (* Note: First conjunct: every span with ds <> 0 (no unit normals needed; ds <> 0
    forces n >= 1). Second: ds = 0 with n >= 1, where the paper's m is undefined:
    then delta = 0 and corrected Euler IS Gouraud at every pixel; Coq's x/0 = 0 makes
@@ -302,15 +285,10 @@ Theorem eq_23_24_paper_step_gives_delta : forall s : span,
 Proof.
   intros s. split; [| split].
   3: { intros Hn0.
-       assert (Hds : ds s = 0) by (unfold ds; rewrite Hn0; simpl INR; unfold Rdiv;
-                                   rewrite Rinv_0; ring).
-       assert (Hdp : dp s = 0) by (unfold dp; rewrite Hn0; simpl INR; unfold Rdiv;
-                                   rewrite Rinv_0; ring).
-       assert (Ht0 : t0 s = dia s) by (unfold t0, corr_t0; rewrite Hn0; simpl INR;
-                                       unfold Rdiv; rewrite Rinv_0; ring).
-       assert (Hst : paper_step s = 1%Z).
-       { unfold paper_step, m_real. rewrite Hds. unfold Rdiv.
-         rewrite Rinv_0, Rmult_0_r, (Int_part_eq 0 0) by (simpl; lra). reflexivity. }
+       assert (ds s = 0 /\ dp s = 0 /\ t0 s = dia s) as (Hds & Hdp & Ht0)
+         by (unfold ds, dp, t0, corr_t0; rewrite Hn0; simpl INR; unfold Rdiv;
+             rewrite Rinv_0; repeat split; ring).
+       pose proof (paper_step_ds0 s Hds) as Hst.
        split; [exact Hds | split].
        - unfold delta; cbv zeta. rewrite Hn0. change (m_step 0) with 0%nat. change (INR 0) with 0. field.
        - unfold paper_delta; cbv zeta. rewrite Hst, Hdp, Ht0, Hds. simpl IZR. ring. }
@@ -328,9 +306,7 @@ Proof.
       rewrite Hds in H. lra. }
     assert (Hd : delta s = 0).
     { rewrite (proj1 (eq_24_delta_closed_form s)). rewrite HG. ring. }
-    assert (Hst : paper_step s = 1%Z).
-    { unfold paper_step, m_real. rewrite Hds. unfold Rdiv. rewrite Rinv_0, Rmult_0_r.
-      rewrite (Int_part_eq 0 0) by (simpl; lra). reflexivity. }
+    pose proof (paper_step_ds0 s Hds) as Hst.
     repeat split; try assumption.
     unfold paper_delta. rewrite Hst, Hd, Hds.
     pose proof (HG 1%nat) as H1. unfold gouraud in H1.
@@ -351,44 +327,22 @@ Proof. unfold level. apply Int_part_eq. simpl. lra. Qed.
 Lemma level_1 : level 1 = 255%Z.
 Proof. unfold level. apply Int_part_eq. simpl. lra. Qed.
 
-(** On [0, 1] the clamped quantiser is the unclamped one (including v = 1). *)
-Lemma clamped_level_is_level : forall v : R, 0 <= v <= 1 -> clamped_level v = level v.
-Proof.
-  intros v [H0 H1]. unfold clamped_level.
-  destruct (Rle_dec v 0) as [Hv | Hv].
-  - replace v with 0 by lra. symmetry. exact level_0.
-  - destruct (Rle_dec 1 v) as [Hw | Hw].
-    + replace v with 1 by lra. symmetry. exact level_1.
-    + reflexivity.
-Qed.
+Lemma clamp01_id : forall v : R, 0 <= v <= 1 -> clamp01 v = v.
+Proof. intros v Hv. unfold clamp01. rewrite Rmin_right, Rmax_right by lra. reflexivity. Qed.
 
 (** Everywhere, the clamped level is the level of the clamped value. *)
 Lemma clamped_level_clamp : forall v : R, clamped_level v = level (clamp01 v).
 Proof.
-  intros v. unfold clamp01.
-  destruct (Rle_dec v 0) as [Hv | Hv].
-  - rewrite Rmin_right by lra. rewrite Rmax_left by lra.
-    unfold clamped_level. destruct (Rle_dec v 0); [| lra]. symmetry. exact level_0.
-  - destruct (Rle_dec 1 v) as [Hw | Hw].
-    + rewrite Rmin_left by lra. rewrite Rmax_right by lra.
-      unfold clamped_level. destruct (Rle_dec v 0); [lra |].
-      destruct (Rle_dec 1 v); [| lra]. symmetry. exact level_1.
-    + rewrite Rmin_right by lra. rewrite Rmax_right by lra.
-      apply clamped_level_is_level. lra.
+  intros v. unfold clamp01, clamped_level.
+  destruct (Rle_dec v 0) as [Hv | Hv]; [| destruct (Rle_dec 1 v) as [Hw | Hw]].
+  - rewrite Rmin_right, Rmax_left by lra. symmetry. exact level_0.
+  - rewrite Rmin_left, Rmax_right by lra. symmetry. exact level_1.
+  - rewrite Rmin_right, Rmax_right by lra. reflexivity.
 Qed.
 
-Lemma clamp01_in : forall v : R, 0 <= clamp01 v <= 1.
-Proof.
-  intros v. unfold clamp01. split.
-  - apply Rmax_l.
-  - apply Rmax_lub; [lra | apply Rmin_l].
-Qed.
-
-Lemma clamp01_id : forall v : R, 0 <= v <= 1 -> clamp01 v = v.
-Proof.
-  intros v Hv. unfold clamp01. rewrite Rmin_right by lra. rewrite Rmax_right by lra.
-  reflexivity.
-Qed.
+(** On [0, 1] the clamped quantiser is the unclamped one (including v = 1). *)
+Lemma clamped_level_is_level : forall v : R, 0 <= v <= 1 -> clamped_level v = level v.
+Proof. intros v Hv. rewrite clamped_level_clamp, clamp01_id by exact Hv. reflexivity. Qed.
 
 Lemma level_diff_ge_1 : forall g c : R, Rabs (g - c) * 255 >= 1 -> level g <> level c.
 Proof. exact (proj1 eq_24_large_delta_implies_different_levels). Qed.
@@ -403,18 +357,8 @@ Theorem eq_24_delta_test_does_not_imply_same_clamped_levels :
   ~ (forall g c : R, Rabs (g - c) * 255 < 1 -> clamped_level g = clamped_level c)
   /\ exists g c : R, Rabs (g - c) * 255 < 1 /\ clamped_level g <> clamped_level c.
 Proof.
-  assert (Hg : clamped_level (1 / 255) = 1%Z).
-  { rewrite clamped_level_is_level by lra. unfold level. apply Int_part_eq.
-    simpl. split; lra. }
-  assert (Hc : clamped_level (1 / 255 - 1 / 1000) = 0%Z).
-  { rewrite clamped_level_is_level by lra. unfold level. apply Int_part_eq.
-    simpl. split; lra. }
-  assert (Hd : Rabs (1 / 255 - (1 / 255 - 1 / 1000)) * 255 < 1).
-  { rewrite Rabs_pos_eq by lra. lra. }
-  split.
-  - intros H. specialize (H _ _ Hd). rewrite Hg, Hc in H. discriminate.
-  - exists (1 / 255), (1 / 255 - 1 / 1000). split; [exact Hd |].
-    rewrite Hg, Hc. discriminate.
+  apply delta_test_refuted; rewrite clamped_level_is_level by lra; unfold level;
+    apply Int_part_eq; simpl; split; lra.
 Qed.
 
 (* Note: Span Na = (0,3/5,4/5), Nb = (0,8/17,15/17), L = (0,0,1), n = 2, K_d = 1
@@ -478,16 +422,10 @@ Proof.
   assert (Hunit : forall g c : R, 0 <= g <= 1 -> 0 <= c <= 1 ->
                   Rabs (g - c) * 255 >= 1 -> clamped_level g <> clamped_level c).
   { intros g c Hg Hc H. apply Hclamp. rewrite !clamp01_id by assumption. exact H. }
-  assert (L2 : clamped_level 2 = 255%Z).
-  { unfold clamped_level. destruct (Rle_dec 2 0); [lra |].
-    destruct (Rle_dec 1 2); [reflexivity | lra]. }
-  assert (L1 : clamped_level 1 = 255%Z).
-  { unfold clamped_level. destruct (Rle_dec 1 0); [lra |].
-    destruct (Rle_dec 1 1); [reflexivity | lra]. }
-  assert (Lm1 : clamped_level (-1) = 0%Z).
-  { unfold clamped_level. destruct (Rle_dec (-1) 0); [reflexivity | lra]. }
-  assert (L0 : clamped_level 0 = 0%Z).
-  { unfold clamped_level. destruct (Rle_dec 0 0); [reflexivity | lra]. }
+  assert (clamped_level 2 = 255%Z /\ clamped_level 1 = 255%Z /\ clamped_level (-1) = 0%Z
+          /\ clamped_level 0 = 0%Z) as (L2 & L1 & Lm1 & L0).
+  { unfold clamped_level. repeat split; repeat destruct (Rle_dec _ _);
+      try reflexivity; exfalso; lra. }
   assert (Lt : clamped_level (1 / 1000) = 0%Z).
   { rewrite clamped_level_is_level by lra. unfold level. apply Int_part_eq.
     simpl. lra. }
@@ -543,8 +481,7 @@ Lemma sym_index_le_half : forall s i, (i <= n s)%nat -> (sym_index s i <= n s / 
 Proof.
   intros s i Hi. unfold sym_index.
   destruct (Nat.leb_spec i (n s / 2)) as [H | H]; [exact H |].
-  pose proof (Nat.div_mod (n s) 2 ltac:(lia)) as Hd.
-  pose proof (Nat.mod_upper_bound (n s) 2 ltac:(lia)). lia.
+  destruct (m_step_half (n s)) as (_ & Hd & Hr). lia.
 Qed.
 
 (* Note: Only |Na| = |Nb| is needed (the crate's Span::new requires unit normals);

@@ -6,6 +6,10 @@ Require Import Reals Lra Lia.
 From PhongApprox Require Import Span.
 Open Scope R_scope.
 
+Lemma is_derive_eq : forall (f : R -> R) (x l l' : R),
+  is_derive f x l -> l = l' -> is_derive f x l'.
+Proof. intros f x l l' H <-. exact H. Qed.
+
 Lemma phong_derive_raw : forall s x, 0 < q s x ->
   is_derive (phong s) x
     ((A s * sqrt (q s x) - p s x * ((2 * C s * x + D s) / (2 * sqrt (q s x))))
@@ -28,11 +32,8 @@ Proof.
   intros s x Hq.
   assert (Hs : sqrt (q s x) <> 0) by (apply Rgt_not_eq, sqrt_lt_R0; exact Hq).
   assert (Hsq : sqrt (q s x) * sqrt (q s x) = q s x) by (apply sqrt_sqrt; lra).
-  assert (Heq : (A s * sqrt (q s x) - p s x * ((2 * C s * x + D s) / (2 * sqrt (q s x))))
-                  / (sqrt (q s x) * sqrt (q s x))
-                = / sqrt (q s x) * (A s - p s x / (2 * q s x) * (2 * C s * x + D s))).
-  { remember (sqrt (q s x)) as S. rewrite <- Hsq. field. exact Hs. }
-  rewrite <- Heq. apply phong_derive_raw. exact Hq.
+  eapply is_derive_eq; [apply phong_derive_raw; exact Hq |].
+  remember (sqrt (q s x)) as S. rewrite <- Hsq. field. exact Hs.
 Qed.
 
 (* Note: Any span. *)
@@ -50,9 +51,7 @@ Proof.
   { intros x. apply (is_derive_ext (fun t => C s * t ^ 2 + D s * t + E s));
       [reflexivity |].
     auto_derive; [exact I | ring]. }
-  assert (Hq' : forall x l, l = 2 * C s * x + D s -> is_derive (q s) x l).
-  { intros x l ->. apply Hq. }
-  split; [apply Hp | split; [apply Hp | split]]; apply Hq'; ring.
+  split; [apply Hp | split; [apply Hp | split]]; (eapply is_derive_eq; [apply Hq | ring]).
 Qed.
 
 (* Note: Needs unit Na, Nb and n >= 1. *)
@@ -63,19 +62,10 @@ Theorem eq_10_11_edge_derivatives : forall s : span,
   is_derive (phong s) 0 (dia s) /\ is_derive (phong s) (INR (n s)) (dib s).
 Proof.
   intros s Hn Ha Hb.
-  assert (Hn' : INR (n s) <> 0) by (apply not_0_INR; lia).
+  pose proof (INR_n_neq_0 s Hn) as Hn'.
   destruct (eq_10_q_is_one_on_edges s Ha Hb) as [H0 H1].
-  split.
-  - assert (Heq : / sqrt (q s 0) * (A s - p s 0 / (2 * q s 0) * (2 * C s * 0 + D s))
-                  = dia s).
-    { rewrite H0, sqrt_1. unfold dia, dqa, pa, p, B. field. }
-    rewrite <- Heq. apply eq_9_derivative. lra.
-  - assert (Heq : / sqrt (q s (INR (n s)))
-                  * (A s - p s (INR (n s)) / (2 * q s (INR (n s)))
-                           * (2 * C s * INR (n s) + D s))
-                  = dib s).
-    { rewrite H1, sqrt_1.
-      unfold dib, dqb, pb, p, A, B, C, D, k, dot, vscale, vsub. cbn [vx vy vz].
-      field. exact Hn'. }
-    rewrite <- Heq. apply eq_9_derivative. lra.
+  split; (eapply is_derive_eq; [apply eq_9_derivative; lra |]).
+  - rewrite H0, sqrt_1. unfold dia, dqa, pa, p, B. field.
+  - rewrite H1, sqrt_1. unfold dib, dqb, pb, p, A, B, C, D, k, dot, vscale, vsub.
+    cbn [vx vy vz]. field. exact Hn'.
 Qed.

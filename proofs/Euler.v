@@ -110,7 +110,7 @@ Proof. intros. apply eq_14_euler_closed_form. Qed.
 Lemma t0_closed_form : forall s, (0 < n s)%nat ->
   t0 s = (pb s - pa s) / INR (n s) - (INR (n s) - 1) / 2 * ds s.
 Proof.
-  intros s Hn. assert (Hm' : INR (n s) <> 0) by (apply not_0_INR; lia).
+  intros s Hn. pose proof (INR_n_neq_0 s Hn) as Hm'.
   unfold t0, corr_t0, corr_eps. rewrite eq_14_euler_closed_form. field. exact Hm'.
 Qed.
 
@@ -126,30 +126,15 @@ Theorem eq_15_euler_misses_pb :
   /\ eps s = 36/125 /\ euler_span s (n s) <> pb s.
 Proof.
   cbv zeta.
-  assert (Hpa : pa mortensen_span = 4/5)
-    by (unfold pa, mortensen_span, dot; cbn [vx vy vz Na L]; field).
-  assert (Hpb : pb mortensen_span = 4/5)
-    by (unfold pb, mortensen_span, dot; cbn [vx vy vz Nb L]; field).
-  assert (Hdia : dia mortensen_span = 36/125).
-  { unfold dia, dqa, A, D, k, pa, mortensen_span, dot, vscale, vsub.
-    cbn [vx vy vz Na Nb L n]. rewrite INR_2. field. }
-  assert (Hds : ds mortensen_span = -36/125).
-  { unfold ds, dib, dia, dqb, dqa, A, C, D, k, pa, pb, mortensen_span,
-      dot, vscale, vsub.
-    cbn [vx vy vz Na Nb L n]. rewrite INR_2. field. }
+  assert (Hpa : pa mortensen_span = 4/5) by span_val mortensen_span.
+  assert (Hpb : pb mortensen_span = 4/5) by span_val mortensen_span.
+  assert (Hdia : dia mortensen_span = 36/125) by span_val mortensen_span.
+  assert (Hds : ds mortensen_span = -36/125) by span_val mortensen_span.
   assert (He : euler_span mortensen_span (n mortensen_span) = 4/5 + 36/125).
   { rewrite eq_14_euler_end_value, Hpa, Hdia, Hds. cbn [n mortensen_span].
     rewrite INR_2. field. }
   assert (Heps : eps mortensen_span = 36/125).
   { unfold eps, corr_eps. fold (euler_span mortensen_span (n mortensen_span)).
     rewrite He, Hpb. field. }
-  repeat split.
-  - unfold is_unit, mortensen_span, dot. cbn [vx vy vz Na]. field.
-  - unfold is_unit, mortensen_span, dot. cbn [vx vy vz Nb]. field.
-  - exact Hdia.
-  - exact Hds.
-  - exact He.
-  - exact Hpb.
-  - exact Heps.
-  - rewrite He, Hpb. lra.
+  repeat split; try assumption; [span_val mortensen_span.. |]. rewrite He, Hpb. lra.
 Qed.

@@ -101,9 +101,7 @@ Proof.
                /\ dot Ub Ub = dot U U + 2 * m * dot U n1 + m ^ 2 * dot n1 n1).
   { unfold Ub. destruct U as [u1 u2 u3], n1 as [a1 a2 a3], Lv as [l1 l2 l3].
     unfold dot, vadd, vscale; cbn [vx vy vz]. repeat split; ring. }
-  destruct E1 as [E1 [E2 E3]]. split; [exact E1 |]. split; [exact E2 |].
-  split; [exact E3 |].
-  split.
+  destruct E1 as [E1 [E2 E3]]. do 3 (split; [assumption |]). split.
   - intros HU. split.
     + unfold is_unit. rewrite dot_vscale_l, dot_vscale_r. apply inv_sqrt_sq. exact HU.
     + rewrite dot_vscale_l. unfold Rdiv. ring.
@@ -164,11 +162,7 @@ Proof.
     rewrite !Rplus_0_r. reflexivity.
   - unfold steps. cbn [fold_left fold_right length].
     fold (steps n1 n2 Lv dxs (step n1 n2 Lv dx (state_at n1 n2 n3 Lv x0 y0))).
-    rewrite step_state_at, IH, S_INR.
-    replace (x0 + dx + fold_right Rplus 0 dxs) with (x0 + (dx + fold_right Rplus 0 dxs))
-      by ring.
-    replace (y0 + 1 + INR (length dxs)) with (y0 + (INR (length dxs) + 1)) by ring.
-    reflexivity.
+    rewrite step_state_at, IH, S_INR. f_equal; ring.
 Qed.
 
 (** ** One Newton step for the reciprocal square root *)

@@ -45,6 +45,18 @@ Proof.
   - rewrite S_INR. pose proof (pos_INR i). nra.
 Qed.
 
+(** |a x + b y + c z| <= h (a + b + c) for a, b, c >= 0 and |x|, |y|, |z| <= h. *)
+Lemma lin3_err : forall a b c x y z h, 0 <= a -> 0 <= b -> 0 <= c ->
+  Rabs x <= h -> Rabs y <= h -> Rabs z <= h -> Rabs (a * x + b * y + c * z) <= h * (a + b + c).
+Proof.
+  intros a b c x y z h Ha Hb Hc Hx Hy Hz.
+  eapply Rle_trans; [apply Rabs_triang |].
+  eapply Rle_trans; [apply Rplus_le_compat_r, Rabs_triang |].
+  rewrite !Rabs_mult, (Rabs_pos_eq a), (Rabs_pos_eq b), (Rabs_pos_eq c) by lra.
+  pose proof (Rmult_le_compat_l a _ _ Ha Hx). pose proof (Rmult_le_compat_l b _ _ Hb Hy).
+  pose proof (Rmult_le_compat_l c _ _ Hc Hz). lra.
+Qed.
+
 (** The corrected-Euler loop (any start slope, so plain Euler too) on set-up
     values each off by at most [h] stays within [h (1 + i + i(i-1)/2)] of the
     loop on the exact values, at pixel [i]. *)
@@ -58,17 +70,8 @@ Proof.
   rewrite !eq_14_euler_closed_form.
   replace (p0 + ep + INR i * (s0 + es) + (INR i ^ 2 - INR i) / 2 * (d + ed) -
            (p0 + INR i * s0 + (INR i ^ 2 - INR i) / 2 * d))
-    with (ep + INR i * es + (INR i ^ 2 - INR i) / 2 * ed) by ring.
-  pose proof (pos_INR i) as Hi. pose proof (tri_nonneg i) as Ht.
-  set (T := (INR i ^ 2 - INR i) / 2) in *.
-  eapply Rle_trans; [apply Rabs_triang |].
-  eapply Rle_trans; [apply Rplus_le_compat_r, Rabs_triang |].
-  rewrite !Rabs_mult, (Rabs_right (INR i)), (Rabs_right T) by lra.
-  apply Rle_trans with (h + INR i * h + T * h).
-  - apply Rplus_le_compat; [apply Rplus_le_compat |]; try assumption.
-    + apply Rmult_le_compat_l; assumption.
-    + apply Rmult_le_compat_l; assumption.
-  - lra.
+    with (1 * ep + INR i * es + (INR i ^ 2 - INR i) / 2 * ed) by ring.
+  apply lin3_err; try assumption; [lra | apply pos_INR | apply tri_nonneg].
 Qed.
 
 (** The Gouraud loop on a start value and slope each off by at most [h] stays
@@ -80,13 +83,10 @@ Theorem fixed_point_gouraud_error :
 Proof.
   intros g0 dg eg ed h i Hg Hd.
   rewrite !fence_closed_form.
-  replace (g0 + eg + INR i * (dg + ed) - (g0 + INR i * dg)) with (eg + INR i * ed) by ring.
-  pose proof (pos_INR i) as Hi.
-  eapply Rle_trans; [apply Rabs_triang |].
-  rewrite Rabs_mult, (Rabs_right (INR i)) by lra.
-  apply Rle_trans with (h + INR i * h).
-  - apply Rplus_le_compat; [assumption | apply Rmult_le_compat_l; assumption].
-  - lra.
+  replace (g0 + eg + INR i * (dg + ed) - (g0 + INR i * dg)) with (1 * eg + INR i * ed + 0 * 0)
+    by ring.
+  replace (h * (1 + INR i)) with (h * (1 + INR i + 0)) by ring. pose proof (Rabs_pos eg).
+  apply lin3_err; try assumption; try lra; [apply pos_INR | rewrite Rabs_R0; lra].
 Qed.
 
 (** The table of docs/float.md: with [f] fractional bits, [h = 2^-(f+1)], and
@@ -105,12 +105,8 @@ Proof.
   assert (Hpos : 0 <= 1 + INR i + (INR i ^ 2 - INR i) / 2) by (pose proof (tri_nonneg i); lra).
   apply Rle_trans with (/ F * ((INR n ^ 2 + INR n + 2) / 2)).
   - apply Rmult_le_compat_l; [left; apply Rinv_0_lt_compat; lra | lra].
-  - apply Rmult_le_reg_l with F; [lra |].
-    rewrite <- Rmult_assoc, Rinv_r by lra.
-    rewrite Rmult_1_l.
-    replace (F * / 510) with (F / 510) by (unfold Rdiv; ring).
-    apply Rmult_le_reg_l with 510; [lra |].
-    replace (510 * (F / 510)) with F by (field; lra). lra.
+  - replace (/ 510) with (/ F * (F / 510)) by (field; lra).
+    apply Rmult_le_compat_l; [left; apply Rinv_0_lt_compat |]; lra.
 Qed.
 
 
@@ -141,14 +137,9 @@ Proof.
   set (T := (INR k ^ 2 - INR k) / 2) in *.
   replace (INR k * (dp + e_dp) - INR k * (t0 + e_t0) - T * (ds + e_ds)
            - (INR k * dp - INR k * t0 - T * ds))
-    with (INR k * e_dp + (INR k * (- e_t0) + T * (- e_ds))) by ring.
-  rewrite <- (Rabs_Ropp e_t0), <- (Rabs_Ropp e_ds) in *.
-  eapply Rle_trans; [apply Rabs_triang |].
-  eapply Rle_trans; [apply Rplus_le_compat_l, Rabs_triang |].
-  rewrite !Rabs_mult, (Rabs_right (INR k)), (Rabs_right T) by lra.
-  apply Rle_trans with (INR k * h + (INR k * h + T * h)).
-  - repeat apply Rplus_le_compat; apply Rmult_le_compat_l; assumption.
-  - lra.
+    with (INR k * e_dp + INR k * (- e_t0) + T * (- e_ds)) by ring.
+  replace (h * (2 * INR k + T)) with (h * (INR k + INR k + T)) by ring.
+  apply lin3_err; rewrite ?Rabs_Ropp; assumption.
 Qed.
 
 (** The unit picks Gouraud iff [255 |dh| < 1] (K_d = 1), on its computed
@@ -210,8 +201,7 @@ Proof.
     eapply Rle_trans; [apply Rabs_triang |].
     rewrite (Rabs_pos_eq (t - sh)) by lra. lra. }
   assert (Hps : Rabs (p / s) <= 1).
-  { rewrite pv_div_abs by lra. unfold Rdiv. apply (Rmult_le_reg_r s); [lra |].
-    rewrite Rmult_assoc, Rinv_l, Rmult_1_r by lra. lra. }
+  { rewrite pv_div_abs by lra. apply pv_div_le_iff; lra. }
   (* the exact quotient of the computed operands *)
   assert (Hv : Rabs (ph / sh - p / s) <= (Ep + Eq / (2 * r) + 2 * h) / (r - 2 * h)).
   { replace (ph / sh - p / s) with ((ph - p + p / s * (s - sh)) / sh) by (field; lra).

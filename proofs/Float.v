@@ -156,6 +156,46 @@ Proof.
   pose proof (amgm2 (vz d) (vz w)). lra.
 Qed.
 
+(** Pure helpers for the combinations of the exact values and of the final bounds. *)
+Lemma theta_rng : forall m i, 1 <= m -> 0 <= i <= m -> 0 <= i / m <= 1.
+Proof.
+  intros m i Hm Hi. split.
+  - unfold Rdiv. apply Rmult_le_pos; [lra | apply Rlt_le, Rinv_0_lt_compat; lra].
+  - apply (Rmult_le_reg_r m); [lra|]. unfold Rdiv.
+    rewrite Rmult_assoc, Rinv_l by lra. lra.
+Qed.
+
+Lemma inr_rng : forall i m : nat, (i <= m)%nat -> 0 <= INR i <= INR m.
+Proof. intros i m H. split; [apply pos_INR | apply le_INR; exact H]. Qed.
+
+Lemma kappa_rng : forall m i, 1 <= m -> 0 <= i <= m ->
+  0 <= i * (m - i) / (2 * (m * m)) <= 1 / 8.
+Proof.
+  intros m i Hm Hi. split.
+  - unfold Rdiv. apply Rmult_le_pos; [nra | apply Rlt_le, Rinv_0_lt_compat; nra].
+  - apply (Rmult_le_reg_r (2 * (m * m))); [nra|]. unfold Rdiv.
+    rewrite Rmult_assoc, Rinv_l by nra.
+    pose proof (Rle_0_sqr (m - 2 * i)). unfold Rsqr in *. nra.
+Qed.
+
+Lemma comb_bound : forall th ka a b r d ea er ed,
+  0 <= th <= 1 -> 0 <= ka <= 1 / 8 ->
+  Rabs a <= ea -> Rabs b <= ea -> Rabs r <= er -> Rabs d <= ed ->
+  Rabs ((1 - th) * a + th * b + th * r - ka * d) <= ea + er + ed / 8.
+Proof.
+  intros th ka a b r d ea er ed Ht Hk Ha Hb Hr Hd.
+  replace ((1 - th) * a + th * b + th * r - ka * d)
+    with ((1 - th) * a + th * b + th * r + - (ka * d)) by ring.
+  eapply Rle_trans; [apply tri4|].
+  rewrite Rabs_Ropp, !Rabs_mult, (Rabs_pos_eq th), (Rabs_pos_eq (1 - th)), (Rabs_pos_eq ka)
+    by lra.
+  assert ((1 - th) * Rabs a <= (1 - th) * ea) by (apply Rmult_le_compat_l; lra).
+  assert (th * Rabs b <= th * ea) by (apply Rmult_le_compat_l; lra).
+  assert (th * Rabs r <= 1 * er) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
+  assert (ka * Rabs d <= 1 / 8 * ed) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
+  lra.
+Qed.
+
 (** ** The exact set-up, scaled by n (unit normals and light) *)
 
 Definition e_ndia (s : span) : R :=
@@ -257,46 +297,29 @@ Proof. pose proof n2ds_le'. lra. Qed.
 (** Exact magnitudes along the span. *)
 Lemma gouraud_le : forall i, (i <= n s)%nat -> Rabs (gouraud s i) <= 1.
 Proof.
-  intros i Hi. pose proof nr_ge1. pose proof pa_le. pose proof pb_le.
-  assert (Hi' : INR i <= INR (n s)) by (apply le_INR; exact Hi).
-  pose proof (pos_INR i).
+  intros i Hi. pose proof nr_ge1.
+  pose proof (inr_rng i (n s) Hi) as Hi'.
   set (th := INR i / INR (n s)).
-  assert (0 <= th <= 1).
-  { unfold th. split; [unfold Rdiv; apply Rmult_le_pos; [lra | apply Rlt_le, Rinv_0_lt_compat; lra]|].
-    apply (Rmult_le_reg_r (INR (n s))); [lra|]. unfold Rdiv.
-    rewrite Rmult_assoc, Rinv_l by lra. lra. }
-  replace (gouraud s i) with ((1 - th) * pa s + th * pb s)
+  replace (gouraud s i) with ((1 - th) * pa s + th * pb s + th * 0 - 0 * 0)
     by (unfold gouraud, dp, th; field; lra).
-  eapply Rle_trans; [apply Rabs_triang|].
-  rewrite !Rabs_mult, (Rabs_pos_eq (1 - th)), (Rabs_pos_eq th) by lra.
-  assert ((1 - th) * Rabs (pa s) <= (1 - th) * 1) by (apply Rmult_le_compat_l; lra).
-  assert (th * Rabs (pb s) <= th * 1) by (apply Rmult_le_compat_l; lra).
-  lra.
+  eapply Rle_trans; [apply (comb_bound _ _ _ _ _ _ 1 0 0); rewrite ?Rabs_R0;
+    try apply theta_rng; try apply pa_le; try apply pb_le; lra |]. lra.
 Qed.
 
 Lemma ceuler_le : forall i, (i <= n s)%nat -> Rabs (ceuler s i) <= 11925 / 10000.
 Proof.
   intros i Hi. pose proof nr_ge1. pose proof n2ds_le'.
-  assert (Hi' : INR i <= INR (n s)) by (apply le_INR; exact Hi).
-  pose proof (pos_INR i).
+  pose proof (inr_rng i (n s) Hi) as Hi'.
   assert (E := eq_24_gouraud_minus_corrected_euler s i ltac:(lia)).
   replace (ceuler s i) with (gouraud s i - ds s / 2 * INR i * (INR (n s) - INR i)) by lra.
-  rewrite ds_scaled.
+  rewrite ds_scaled. unfold gouraud, dp.
+  set (th := INR i / INR (n s)).
   set (kap := INR i * (INR (n s) - INR i) / (2 * (INR (n s) * INR (n s)))).
-  assert (0 <= kap <= 1 / 8).
-  { unfold kap. split.
-    - unfold Rdiv; apply Rmult_le_pos; [nra | apply Rlt_le, Rinv_0_lt_compat; nra].
-    - apply (Rmult_le_reg_r (2 * (INR (n s) * INR (n s)))); [nra|]. unfold Rdiv.
-      rewrite Rmult_assoc, Rinv_l by nra.
-      pose proof (Rle_0_sqr (INR (n s) - 2 * INR i)). unfold Rsqr in *. nra. }
-  replace (gouraud s i - e_n2ds s / (INR (n s) * INR (n s)) / 2 * INR i * (INR (n s) - INR i))
-    with (gouraud s i - kap * e_n2ds s) by (unfold kap; field; lra).
-  pose proof (gouraud_le i Hi).
-  unfold Rminus. eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_Ropp, Rabs_mult.
-  rewrite (Rabs_pos_eq kap) by lra.
-  assert (kap * Rabs (e_n2ds s) <= 1 / 8 * (154 / 100))
-    by (apply Rmult_le_compat; try lra; apply Rabs_pos).
-  lra.
+  replace (pa s + INR i * ((pb s - pa s) / INR (n s))
+           - e_n2ds s / (INR (n s) * INR (n s)) / 2 * INR i * (INR (n s) - INR i))
+    with ((1 - th) * pa s + th * pb s + th * 0 - kap * e_n2ds s) by (unfold th, kap; field; lra).
+  eapply Rle_trans; [apply (comb_bound _ _ _ _ _ _ 1 0 (154 / 100)); rewrite ?Rabs_R0;
+    try apply theta_rng; try apply kappa_rng; try apply pa_le; try apply pb_le; lra |]. lra.
 Qed.
 
 (** |n (t0 + j ds)| <= 2 for 0 <= j <= n - 1: n (t0 + j ds) = w . L with
@@ -311,11 +334,9 @@ Proof.
   rewrite (t0_closed_form s ltac:(lia)), ds_scaled.
   set (g := (2 * INR j - INR (n s) + 1) / (2 * INR (n s))).
   assert (Hg : Rabs g <= 1 / 2).
-  { apply Rabs_le. unfold g. split.
-    - apply (Rmult_le_reg_r (2 * INR (n s))); [lra|]. unfold Rdiv.
-      rewrite Rmult_assoc, Rinv_l by lra. lra.
-    - apply (Rmult_le_reg_r (2 * INR (n s))); [lra|]. unfold Rdiv.
-      rewrite Rmult_assoc, Rinv_l by lra. lra. }
+  { pose proof (theta_rng (INR (n s)) ((2 * INR j + 1) / 2) ltac:(lra) ltac:(lra)).
+    replace g with ((2 * INR j + 1) / 2 / INR (n s) - 1 / 2) by (unfold g; field; lra).
+    apply Rabs_le. lra. }
   replace (INR (n s) * ((pb s - pa s) / INR (n s)
              - (INR (n s) - 1) / 2 * (e_n2ds s / (INR (n s) * INR (n s)))
              + INR j * (e_n2ds s / (INR (n s) * INR (n s)))))
@@ -345,8 +366,6 @@ Proof.
   nra.
 Qed.
 
-End Exact.
-
 (** ** The float set-up, step by step *)
 
 (** Weights of the componentwise errors: inputs (|x_j| + 2^-30) and
@@ -360,43 +379,6 @@ Definition wK (a b : vec) : vec :=
 
 Lemma vb12 : forall v, vbounded v 1 -> vbounded v 2.
 Proof. intros v [A [B C]]. repeat split; lra. Qed.
-
-(** Pure helpers for the final combination. *)
-Lemma theta_rng : forall m i, 1 <= m -> 0 <= i <= m -> 0 <= i / m <= 1.
-Proof.
-  intros m i Hm Hi. split.
-  - unfold Rdiv. apply Rmult_le_pos; [lra | apply Rlt_le, Rinv_0_lt_compat; lra].
-  - apply (Rmult_le_reg_r m); [lra|]. unfold Rdiv.
-    rewrite Rmult_assoc, Rinv_l by lra. lra.
-Qed.
-
-Lemma kappa_rng : forall m i, 1 <= m -> 0 <= i <= m ->
-  0 <= i * (m - i) / (2 * (m * m)) <= 1 / 8.
-Proof.
-  intros m i Hm Hi. split.
-  - unfold Rdiv. apply Rmult_le_pos; [nra | apply Rlt_le, Rinv_0_lt_compat; nra].
-  - apply (Rmult_le_reg_r (2 * (m * m))); [nra|]. unfold Rdiv.
-    rewrite Rmult_assoc, Rinv_l by nra.
-    pose proof (Rle_0_sqr (m - 2 * i)). unfold Rsqr in *. nra.
-Qed.
-
-Lemma comb_bound : forall th ka a b r d ea er ed,
-  0 <= th <= 1 -> 0 <= ka <= 1 / 8 ->
-  Rabs a <= ea -> Rabs b <= ea -> Rabs r <= er -> Rabs d <= ed ->
-  Rabs ((1 - th) * a + th * b + th * r - ka * d) <= ea + er + ed / 8.
-Proof.
-  intros th ka a b r d ea er ed Ht Hk Ha Hb Hr Hd.
-  replace ((1 - th) * a + th * b + th * r - ka * d)
-    with ((1 - th) * a + th * b + th * r + - (ka * d)) by ring.
-  eapply Rle_trans; [apply tri4|].
-  rewrite Rabs_Ropp, !Rabs_mult, (Rabs_pos_eq th), (Rabs_pos_eq (1 - th)), (Rabs_pos_eq ka)
-    by lra.
-  assert ((1 - th) * Rabs a <= (1 - th) * ea) by (apply Rmult_le_compat_l; lra).
-  assert (th * Rabs b <= th * ea) by (apply Rmult_le_compat_l; lra).
-  assert (th * Rabs r <= 1 * er) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
-  assert (ka * Rabs d <= 1 / 8 * ed) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
-  lra.
-Qed.
 
 Lemma ce_identity : forall m i PA PB pa pb t d n2, m <> 0 ->
   PA + i * t + i * (i - 1) / 2 * d
@@ -462,9 +444,6 @@ Qed.
 (** The corrected Euler values and slopes on computed p_a, p_b (within Ea),
     t0 (n t0 within ER of p_b - p_a - n(n-1)/2 ds) and ds (n^2 ds within Eds),
     here and in Profiles.v. *)
-Section Near.
-Context (s : span) (Hua : is_unit (Na s)) (Hub : is_unit (Nb s)) (Hul : is_unit (L s))
-        (Hn1 : (1 <= n s)%nat).
 Context (fpa fpb ft0 fds Ea ER Eds : R) (Hpa : Rabs (fpa - pa s) <= Ea)
         (Hpb : Rabs (fpb - pb s) <= Ea)
         (HR : Rabs (INR (n s) * ft0 - (fpb - fpa - INR (n s) * (INR (n s) - 1) / 2 * fds)) <= ER)
@@ -474,9 +453,9 @@ Local Notation nr := (INR (n s)).
 Lemma ce_near : forall i, (i <= n s)%nat ->
   Rabs (fpa + INR i * ft0 + INR i * (INR i - 1) / 2 * fds - ceuler s i) <= Ea + ER + Eds / 8.
 Proof.
-  intros i Hi. pose proof (nr_ge1 s Hn1).
-  assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
-  rewrite ceuler_closed_form, (t0_closed_form s ltac:(lia)), (ds_scaled s ltac:(lia)).
+  intros i Hi. pose proof nr_ge1.
+  pose proof (inr_rng i (n s) Hi) as Hi'.
+  rewrite ceuler_closed_form, (t0_closed_form s ltac:(lia)), ds_scaled.
   rewrite (ce_identity nr (INR i) fpa fpb) by lra.
   replace (nr * (nr - 1) / 2 * fds) with ((nr - 1) / (2 * nr) * (nr * nr * fds)) in HR
     by (field; lra).
@@ -487,10 +466,10 @@ Qed.
 Lemma slope_near : forall J, (J < n s)%nat ->
   Rabs (nr * (ft0 + INR J * fds)) <= 2 + (ER + 2 * Ea + Eds).
 Proof.
-  intros J HJ. pose proof (nr_ge1 s Hn1).
-  assert (HJ' : 0 <= INR J <= nr) by (split; [apply pos_INR | apply le_INR; lia]).
-  pose proof (slope_le s Hua Hub Hul Hn1 J HJ) as G0.
-  rewrite (t0_closed_form s ltac:(lia)), (ds_scaled s ltac:(lia)) in G0.
+  intros J HJ. pose proof nr_ge1.
+  pose proof (inr_rng J (n s) ltac:(lia)) as HJ'.
+  pose proof (slope_le J HJ) as G0.
+  rewrite (t0_closed_form s ltac:(lia)), ds_scaled in G0.
   set (X := nr * ((pb s - pa s) / nr - (nr - 1) / 2 * (e_n2ds s / (nr * nr))
                   + INR J * (e_n2ds s / (nr * nr)))) in *.
   assert (E : nr * (ft0 + INR J * fds) - X =
@@ -511,7 +490,7 @@ Proof.
   pose proof (abs_near _ _ _ B). lra.
 Qed.
 
-End Near.
+End Exact.
 
 (** Gouraud's values p_a + i dp on computed p_a, p_b (within Ea) and dp
     (n dp within Edp of p_b - p_a), here and in Profiles.v. *)
@@ -521,7 +500,7 @@ Lemma g_near : forall (s : span) (fpa fpb fdp Ea Edp : R), (1 <= n s)%nat ->
   forall i, (i <= n s)%nat -> Rabs (fpa + INR i * fdp - gouraud s i) <= Ea + Edp.
 Proof.
   intros s fpa fpb fdp Ea Edp Hn1 P1 P2 P3 i Hi. pose proof (nr_ge1 s Hn1).
-  assert (Hi' : 0 <= INR i <= INR (n s)) by (split; [apply pos_INR | apply le_INR; exact Hi]).
+  pose proof (inr_rng i (n s) Hi) as Hi'.
   unfold gouraud, dp.
   replace (fpa + INR i * fdp - (pa s + INR i * ((pb s - pa s) / INR (n s))))
     with ((1 - INR i / INR (n s)) * (fpa - pa s) + INR i / INR (n s) * (fpb - pb s)
@@ -583,7 +562,7 @@ Proof.
   - intros j Hj. rewrite HP0, HQ0. destruct (Hid (S j) Hj) as [G0 G1].
     pose proof (abs_near _ _ _ G0) as G2. rewrite Ems2, Emp. lra.
   - rewrite HP0, HQ0 in HPi. destruct (Hid i Hi) as [G0 _].
-    assert (Hi' : 0 <= INR i <= INR m) by (split; [apply pos_INR | apply le_INR; exact Hi]).
+    pose proof (inr_rng i m Hi) as Hi'.
     replace (P i - ex i)
       with ((P i - (fpa + INR i * t + INR i * (INR i - 1) / 2 * fds))
             + (fpa + INR i * t + INR i * (INR i - 1) / 2 * fds - ex i)) by ring.
@@ -618,7 +597,7 @@ Proof.
   pose proof (FloatModelK.gseq_err ua eta G fdp m (10006 / 10000) Hua He0 ltac:(lra) HG) as L.
   rewrite HG0 in L.
   assert (Hne : INR m * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra).
-  assert (Hi' : 0 <= INR i <= INR m) by (split; [apply pos_INR | apply le_INR; exact Hi]).
+  pose proof (inr_rng i m Hi) as Hi'.
   specialize (L ltac:(intros j Hj; destruct (Hid (S j) Hj) as [G0 G1];
     pose proof (abs_near _ _ _ G0); lra) i Hi).
   destruct (Hid i Hi) as [G0 _].
@@ -640,12 +619,7 @@ Ltac unit_facts_of s Hua Hub Hul :=
   pose proof (unit_pair _ _ Hub Hua); pose proof (unit_abs_sq _ Hua);
   pose proof (diff_pair _ _ _ Hua Hub Hul); pose proof (diff_pair _ _ _ Hua Hub Hua);
   pose proof (diff_pair _ _ _ Hua Hub Hub); pose proof (diff_abs_sq _ _ Hua Hub);
-  pose proof (Rabs_pos (vx (Na s))); pose proof (Rabs_pos (vy (Na s)));
-  pose proof (Rabs_pos (vz (Na s))); pose proof (Rabs_pos (vx (Nb s)));
-  pose proof (Rabs_pos (vy (Nb s))); pose proof (Rabs_pos (vz (Nb s)));
-  pose proof (Rabs_pos (vx (L s))); pose proof (Rabs_pos (vy (L s)));
-  pose proof (Rabs_pos (vz (L s))); pose proof (Rabs_pos (vx (vsub (Nb s) (Na s))));
-  pose proof (Rabs_pos (vy (vsub (Nb s) (Na s)))); pose proof (Rabs_pos (vz (vsub (Nb s) (Na s)))).
+  abs_pos3 (Na s); abs_pos3 (Nb s); abs_pos3 (L s); abs_pos3 (vsub (Nb s) (Na s)).
 
 Section Chain.
 Context (rnd : R -> R) (u eta : R) (Hstd : std_model rnd u eta) (Hok : fmt_ok u eta).
@@ -665,16 +639,13 @@ Qed.
 Lemma wIn_bounded : forall v, vbounded v 1 -> wbounded (wIn v).
 Proof.
   intros v [A [B C]]. unfold wbounded, wIn; cbn [vx vy vz].
-  pose proof (Rabs_pos (vx v)). pose proof (Rabs_pos (vy v)). pose proof (Rabs_pos (vz v)).
-  repeat split; lra.
+  abs_pos3 v. repeat split; lra.
 Qed.
 
 Lemma wK_bounded : forall a b, vbounded a 1 -> vbounded b 1 -> wbounded (wK a b).
 Proof.
   intros a b [A1 [A2 A3]] [B1 [B2 B3]]. unfold wbounded, wK; cbn [vx vy vz].
-  pose proof (Rabs_pos (vx a)). pose proof (Rabs_pos (vy a)). pose proof (Rabs_pos (vz a)).
-  pose proof (Rabs_pos (vx b)). pose proof (Rabs_pos (vy b)). pose proof (Rabs_pos (vz b)).
-  repeat split; lra.
+  abs_pos3 a. abs_pos3 b. repeat split; lra.
 Qed.
 
 (** One component of n k: |n rnd (rnd (rnd b - rnd a) / n) - (b - a)| <= u (3.001 (|a|+|b|) + 2^-28). *)
@@ -713,8 +684,6 @@ Proof.
   { pose proof (u_u u eta Hok (Rabs (rb - ra)) (Rabs_pos _)). nra. }
   assert (G5 : u * u <= / 16777216 * u) by nra.
   replace (m * rnd (s1 / m) - (b - a))
-    with ((m * rnd (s1 / m) - s1) + (s1 - (rb - ra)) + (rb - b) - (ra - a)) by ring.
-  replace ((m * rnd (s1 / m) - s1) + (s1 - (rb - ra)) + (rb - b) - (ra - a))
     with ((m * rnd (s1 / m) - s1) + (s1 - (rb - ra)) + (rb - b) + - (ra - a)) by ring.
   eapply Rle_trans; [apply tri4|]. rewrite Rabs_Ropp. lra.
 Qed.
@@ -1086,28 +1055,6 @@ End Chain.
 
 (** ** The bounds *)
 
-(** For any format with the standard model and the size conditions
-    (prec >= 24, emin <= -prec - 59). *)
-Lemma float_corrected_euler_generic : forall (rnd : R -> R) (u eta : R),
-  std_model rnd u eta -> fmt_ok u eta ->
-  forall s : span, is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
-  (1 <= n s <= 4096)%nat -> forall i : nat, (i <= n s)%nat ->
-  Rabs (f_ceuler rnd s i - ceuler s i) <= (22 / 10 * INR (n s) + 42) * u.
-Proof.
-  intros rnd u eta Hstd Hok s Ha Hb Hl Hn i Hi.
-  apply (ce_final rnd u eta Hstd Hok s Ha Hb Hl ltac:(lia) ltac:(lia) i Hi).
-Qed.
-
-Lemma float_gouraud_generic : forall (rnd : R -> R) (u eta : R),
-  std_model rnd u eta -> fmt_ok u eta ->
-  forall s : span, is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
-  (1 <= n s <= 4096)%nat -> forall i : nat, (i <= n s)%nat ->
-  Rabs (f_gouraud rnd s i - gouraud s i) <= (1001 / 1000 * INR (n s) + 10) * u.
-Proof.
-  intros rnd u eta Hstd Hok s Ha Hb Hl Hn i Hi.
-  apply (g_final rnd u eta Hstd Hok s Ha Hb Hl ltac:(lia) ltac:(lia) i Hi).
-Qed.
-
 Lemma flt_prec_ok : forall emin prec : Z, (24 <= prec)%Z -> (emin <= - prec - 59)%Z ->
   std_model (fun x => round radix2 (FLT_exp emin prec) ZnearestE x)
             (bpow radix2 (- prec)) (bpow radix2 (emin - 1))
@@ -1116,6 +1063,12 @@ Proof.
   intros emin prec H1 H2. split; [apply flt_std_model; lia | apply flt_fmt_ok; assumption].
 Qed.
 
+(** A bound [gen] (for any format with the standard model and the size
+    conditions prec >= 24, emin <= -prec - 59) in the format FLT(emin, prec). *)
+Ltac flt_inst emin prec gen :=
+  intros; destruct (flt_prec_ok emin prec ltac:(lia) ltac:(lia)) as [F1 F2];
+  eapply gen; eassumption || lia.
+
 (* Note: binary32 (prec 24, emin -149), round to nearest even; u = 2^-24. *)
 (** Gouraud in binary32: |G_i(float) - G_i| <= (1.001 n + 10) u. *)
 Theorem float_gouraud_binary32 : forall s : span,
@@ -1123,10 +1076,7 @@ Theorem float_gouraud_binary32 : forall s : span,
   forall i : nat, (i <= n s)%nat ->
   Rabs (f_gouraud (fun x => round radix2 (FLT_exp (-149) 24) ZnearestE x) s i - gouraud s i)
   <= (1001 / 1000 * INR (n s) + 10) * bpow radix2 (-24).
-Proof.
-  intros. destruct (flt_prec_ok (-149) 24 ltac:(lia) ltac:(lia)) as [F1 F2].
-  eapply float_gouraud_generic; eassumption.
-Qed.
+Proof. flt_inst (-149)%Z 24%Z g_final. Qed.
 
 (* Note: binary64 (prec 53, emin -1074), round to nearest even; u = 2^-53. *)
 (** Gouraud in binary64: |G_i(float) - G_i| <= (1.001 n + 10) u. *)
@@ -1135,10 +1085,7 @@ Theorem float_gouraud_binary64 : forall s : span,
   forall i : nat, (i <= n s)%nat ->
   Rabs (f_gouraud (fun x => round radix2 (FLT_exp (-1074) 53) ZnearestE x) s i - gouraud s i)
   <= (1001 / 1000 * INR (n s) + 10) * bpow radix2 (-53).
-Proof.
-  intros. destruct (flt_prec_ok (-1074) 53 ltac:(lia) ltac:(lia)) as [F1 F2].
-  eapply float_gouraud_generic; eassumption.
-Qed.
+Proof. flt_inst (-1074)%Z 53%Z g_final. Qed.
 
 (* Note: binary32; the exact value is ceuler of Euler.v on the exact inputs. *)
 (** Corrected Euler (eqs. 16-17) in binary32: |P_i(float) - P_i| <= (2.2 n + 42) u. *)
@@ -1147,10 +1094,7 @@ Theorem float_corrected_euler_binary32 : forall s : span,
   forall i : nat, (i <= n s)%nat ->
   Rabs (f_ceuler (fun x => round radix2 (FLT_exp (-149) 24) ZnearestE x) s i - ceuler s i)
   <= (22 / 10 * INR (n s) + 42) * bpow radix2 (-24).
-Proof.
-  intros. destruct (flt_prec_ok (-149) 24 ltac:(lia) ltac:(lia)) as [F1 F2].
-  eapply float_corrected_euler_generic; eassumption.
-Qed.
+Proof. flt_inst (-149)%Z 24%Z ce_final. Qed.
 
 (* Note: binary64; the exact value is ceuler of Euler.v on the exact inputs. *)
 (** Corrected Euler (eqs. 16-17) in binary64: |P_i(float) - P_i| <= (2.2 n + 42) u. *)
@@ -1159,7 +1103,4 @@ Theorem float_corrected_euler_binary64 : forall s : span,
   forall i : nat, (i <= n s)%nat ->
   Rabs (f_ceuler (fun x => round radix2 (FLT_exp (-1074) 53) ZnearestE x) s i - ceuler s i)
   <= (22 / 10 * INR (n s) + 42) * bpow radix2 (-53).
-Proof.
-  intros. destruct (flt_prec_ok (-1074) 53 ltac:(lia) ltac:(lia)) as [F1 F2].
-  eapply float_corrected_euler_generic; eassumption.
-Qed.
+Proof. flt_inst (-1074)%Z 53%Z ce_final. Qed.

@@ -15,8 +15,8 @@
     The rest is a small forward-error library: rounding a scaled value,
     the three-term dot product [(x + y) + z] with rounded products, and
     the two float loops (corrected Euler, eqs. 16-17, and Gouraud), whose
-    bounds [floop_err], [gloop_err] are FloatModelK.v's relational loops at
-    one rounding function. *)
+    bounds are FloatModelK.v's relational loops [cseq_err], [gseq_err] at
+    one rounding function (Float.v). *)
 
 From Coq Require Import Reals Lra Lia.
 From Flocq Require Import Core Relative.
@@ -112,6 +112,10 @@ Definition wsum (a b wa wb : vec) : R :=
   + (Rabs (vy a) * vy wb + vy wa * Rabs (vy b) + 3 * (Rabs (vy a) * Rabs (vy b)))
   + (Rabs (vz a) * vz wb + vz wa * Rabs (vz b) + 3 * (Rabs (vz a) * Rabs (vz b))).
 
+(** 0 <= |v_j| for the three components of v (here and in Float.v). *)
+Ltac abs_pos3 v :=
+  pose proof (Rabs_pos (vx v)); pose proof (Rabs_pos (vy v)); pose proof (Rabs_pos (vz v)).
+
 (** Two small facts about approximations. *)
 Lemma abs_near : forall X Y e, Rabs (Y - X) <= e -> Rabs Y <= Rabs X + e.
 Proof.
@@ -138,6 +142,55 @@ Lemma tri6 : forall a b c d e f,
   Rabs (a + b + c + d + e + f) <= Rabs a + Rabs b + Rabs c + Rabs d + Rabs e + Rabs f.
 Proof. intros. eapply Rle_trans; [apply Rabs_triang|]. pose proof (tri5 a b c d e). lra. Qed.
 
+(** A three-term sum ((x1 + x2) + x3) with the terms rounded by um and the
+    additions by ua (here and in FloatModelK.v's [sum3_err]). *)
+Lemma sum_chain_abs : forall um ua eta x1 x2 x3 q1 q2 q3 r y,
+  0 <= um <= / 2097152 -> 0 <= ua <= / 2097152 -> 0 <= eta ->
+  Rabs (q1 - x1) <= um * Rabs x1 + eta -> Rabs (q2 - x2) <= um * Rabs x2 + eta ->
+  Rabs (q3 - x3) <= um * Rabs x3 + eta -> Rabs (r - (q1 + q2)) <= ua * Rabs (q1 + q2) + eta ->
+  Rabs (y - (r + q3)) <= ua * Rabs (r + q3) + eta ->
+  Rabs (y - (x1 + x2 + x3)) <=
+  (um + 2 * ua) * (1 + / 524288) * (Rabs x1 + Rabs x2 + Rabs x3) + 8 * eta.
+Proof.
+  intros um ua eta x1 x2 x3 q1 q2 q3 r y Hm Ha He H1 H2 H3 H4 H5.
+  pose proof (Rabs_pos x1). pose proof (Rabs_pos x2). pose proof (Rabs_pos x3).
+  assert (A12 : Rabs (q1 + q2) <= (1 + um) * (Rabs x1 + Rabs x2) + 2 * eta).
+  { replace (q1 + q2) with (x1 + x2 + (q1 - x1) + (q2 - x2)) by ring.
+    eapply Rle_trans; [apply tri4|]. lra. }
+  assert (P1 : ua * Rabs (q1 + q2) <= ua * ((1 + um) * (Rabs x1 + Rabs x2) + 2 * eta))
+    by (apply Rmult_le_compat_l; lra).
+  assert (P2 : ua * um * (Rabs x1 + Rabs x2) <= / 2097152 * (ua * (Rabs x1 + Rabs x2))).
+  { replace (ua * um * (Rabs x1 + Rabs x2)) with (um * (ua * (Rabs x1 + Rabs x2))) by ring.
+    apply Rmult_le_compat_r; [apply Rmult_le_pos|]; lra. }
+  assert (P3 : ua * eta <= / 2097152 * eta) by (apply Rmult_le_compat_r; lra).
+  assert (E1 : Rabs (r - (q1 + q2)) <= (1 + / 2097152) * (ua * (Rabs x1 + Rabs x2)) + 2 * eta)
+    by nra.
+  assert (P4 : ua * (Rabs x1 + Rabs x2) <= / 2097152 * (Rabs x1 + Rabs x2))
+    by (apply Rmult_le_compat_r; lra).
+  assert (P5 : um * Rabs x3 <= / 2097152 * Rabs x3) by (apply Rmult_le_compat_r; lra).
+  assert (P6 : um * Rabs x1 <= / 2097152 * Rabs x1) by (apply Rmult_le_compat_r; lra).
+  assert (P7 : um * Rabs x2 <= / 2097152 * Rabs x2) by (apply Rmult_le_compat_r; lra).
+  assert (A3 : Rabs (r + q3) <= (1 + / 524288) * (Rabs x1 + Rabs x2 + Rabs x3) + 5 * eta).
+  { replace (r + q3) with (x1 + x2 + (q1 - x1) + (q2 - x2) + (r - (q1 + q2)) + x3 + (q3 - x3))
+      by ring.
+    assert (T : forall a1 a2 a3 a4 a5 a6 a7 : R,
+      Rabs (a1 + a2 + a3 + a4 + a5 + a6 + a7) <=
+      Rabs a1 + Rabs a2 + Rabs a3 + Rabs a4 + Rabs a5 + Rabs a6 + Rabs a7).
+    { intros. repeat (eapply Rle_trans; [apply Rabs_triang | apply Rplus_le_compat_r]); lra. }
+    eapply Rle_trans; [apply T|]. lra. }
+  assert (P8 : ua * Rabs (r + q3) <= ua * ((1 + / 524288) * (Rabs x1 + Rabs x2 + Rabs x3) + 5 * eta))
+    by (apply Rmult_le_compat_l; lra).
+  assert (E2 : Rabs (y - (r + q3)) <= (1 + / 524288) * (ua * (Rabs x1 + Rabs x2 + Rabs x3)) + 2 * eta)
+    by nra.
+  replace (y - (x1 + x2 + x3)) with
+    ((y - (r + q3)) + (r - (q1 + q2)) + (q1 - x1) + (q2 - x2) + (q3 - x3)) by ring.
+  eapply Rle_trans; [apply tri5|].
+  assert (Q1 : 0 <= ua * Rabs x3) by (apply Rmult_le_pos; lra).
+  assert (Q2 : 0 <= ua * (Rabs x1 + Rabs x2)) by (apply Rmult_le_pos; lra).
+  assert (Q3 : 0 <= um * (Rabs x1 + Rabs x2 + Rabs x3)) by (apply Rmult_le_pos; lra).
+  lra.
+Qed.
+
 Lemma prod_err : forall X x Y y ex ey MY Mx,
   Rabs (X - x) <= ex -> Rabs (Y - y) <= ey -> Rabs Y <= MY -> Rabs x <= Mx ->
   Rabs (X * Y - x * y) <= ex * MY + Mx * ey.
@@ -150,44 +203,86 @@ Qed.
 
 (** ** Error lemmas *)
 
-(** The product of two approximations (unit v: u of the standard model,
-    or v of FloatModelK.v's section V). *)
-Lemma comp_prod_gen : forall v, 0 < v <= / 2097152 -> forall A a B b wa wb,
-  Rabs (A - a) <= v * wa -> Rabs (B - b) <= v * wb ->
-  Rabs a <= 2 -> Rabs b <= 2 -> 0 <= wa <= 8 -> 0 <= wb <= 8 ->
-  Rabs (A * B - a * b) <= v * (Rabs a * wb + wa * Rabs b) + 64 * (v * v)
-  /\ Rabs (A * B) <= Rabs a * Rabs b + 33 * v.
+(** The product of two approximations with absolute errors wa, wb <= W. *)
+Lemma comp_prod_abs : forall A a B b wa wb W,
+  Rabs (A - a) <= wa -> Rabs (B - b) <= wb ->
+  Rabs a <= 2 -> Rabs b <= 2 -> 0 <= wa <= W -> 0 <= wb <= W ->
+  Rabs (A * B - a * b) <= Rabs a * wb + wa * Rabs b + W * W
+  /\ Rabs (A * B) <= Rabs a * Rabs b + 4 * W + W * W.
 Proof.
-  intros v Hv A a B b wa wb HA HB Ha Hb Hwa Hwb.
+  intros A a B b wa wb W HA HB Ha Hb Hwa Hwb.
   assert (E : A * B - a * b = (A - a) * b + a * (B - b) + (A - a) * (B - b)) by ring.
-  assert (T1 : Rabs ((A - a) * b) <= v * wa * Rabs b).
+  assert (T1 : Rabs ((A - a) * b) <= wa * Rabs b).
   { rewrite Rabs_mult. apply Rmult_le_compat_r; [apply Rabs_pos | exact HA]. }
-  assert (T2 : Rabs (a * (B - b)) <= Rabs a * (v * wb)).
+  assert (T2 : Rabs (a * (B - b)) <= Rabs a * wb).
   { rewrite Rabs_mult. apply Rmult_le_compat_l; [apply Rabs_pos | exact HB]. }
-  assert (T3 : Rabs ((A - a) * (B - b)) <= (v * wa) * (v * wb)).
-  { rewrite Rabs_mult. apply Rmult_le_compat; try apply Rabs_pos; assumption. }
-  assert (T4 : (v * wa) * (v * wb) <= 64 * (v * v)).
-  { replace ((v * wa) * (v * wb)) with ((v * v) * (wa * wb)) by ring.
-    replace (64 * (v * v)) with ((v * v) * 64) by ring.
-    apply Rmult_le_compat_l; [nra|]. nra. }
-  assert (D : Rabs (A * B - a * b) <= v * (Rabs a * wb + wa * Rabs b) + 64 * (v * v)).
+  assert (T3 : Rabs ((A - a) * (B - b)) <= W * W).
+  { rewrite Rabs_mult. apply Rmult_le_compat; try apply Rabs_pos; lra. }
+  assert (D : Rabs (A * B - a * b) <= Rabs a * wb + wa * Rabs b + W * W).
   { rewrite E. eapply Rle_trans; [apply Rabs_triang|].
-    eapply Rle_trans; [apply Rplus_le_compat_r, Rabs_triang|]. nra. }
+    eapply Rle_trans; [apply Rplus_le_compat_r, Rabs_triang|]. lra. }
   split; [exact D|].
-  assert (M1 : v * (Rabs a * wb + wa * Rabs b) <= v * 32).
-  { apply Rmult_le_compat_l; [lra|].
-    assert (Rabs a * wb <= 2 * 8) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
-    assert (wa * Rabs b <= 8 * 2) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
-    lra. }
-  assert (M2 : v * v <= v / 2097152).
-  { assert (v * v <= / 2097152 * v) by (apply Rmult_le_compat_r; lra). lra. }
+  assert (Rabs a * wb <= 2 * W) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
+  assert (wa * Rabs b <= W * 2) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
   replace (A * B) with (a * b + (A * B - a * b)) by ring.
   eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_mult. lra.
 Qed.
 
+(** A computed dot product y within c sum |ah_j bh_j| + e of ah.bh, of the
+    scaled approximations lam ah, mu bh (lam mu <= Lm) of a, b with absolute
+    weights wa, wb at most W ([fdot_weighted_gen] below, FloatModelK.v's
+    [fdot_abs]). *)
+Lemma fdot_core : forall (c e Lm lam mu y W : R) (ah bh a b wa wb : vec),
+  0 <= c -> 0 <= e ->
+  Rabs (y - dot ah bh) <=
+    c * (Rabs (vx ah * vx bh) + Rabs (vy ah * vy bh) + Rabs (vz ah * vz bh)) + e ->
+  0 < lam -> 0 < mu -> lam * mu <= Lm ->
+  vapprox 1 lam ah a wa -> vapprox 1 mu bh b wb -> vbounded a 2 -> vbounded b 2 ->
+  0 <= vx wa <= W /\ 0 <= vy wa <= W /\ 0 <= vz wa <= W ->
+  0 <= vx wb <= W /\ 0 <= vy wb <= W /\ 0 <= vz wb <= W ->
+  Rabs (lam * mu * y - dot a b) <=
+    Rabs (vx a) * vx wb + vx wa * Rabs (vx b) + (Rabs (vy a) * vy wb + vy wa * Rabs (vy b))
+    + (Rabs (vz a) * vz wb + vz wa * Rabs (vz b)) + 3 * (W * W)
+    + c * (Rabs (vx a) * Rabs (vx b) + Rabs (vy a) * Rabs (vy b)
+           + Rabs (vz a) * Rabs (vz b) + 12 * W + 3 * (W * W)) + Lm * e.
+Proof.
+  intros c e Lm lam mu y W ah bh a b wa wb Hc He F Hl Hm Hlm [Ha1 [Ha2 Ha3]] [Hb1 [Hb2 Hb3]]
+    [Ma1 [Ma2 Ma3]] [Mb1 [Mb2 Mb3]] [Wa1 [Wa2 Wa3]] [Wb1 [Wb2 Wb3]].
+  rewrite Rmult_1_l in Ha1, Ha2, Ha3, Hb1, Hb2, Hb3.
+  destruct (comp_prod_abs _ _ _ _ _ _ W Ha1 Hb1 Ma1 Mb1 Wa1 Wb1) as [Px Qx].
+  destruct (comp_prod_abs _ _ _ _ _ _ W Ha2 Hb2 Ma2 Mb2 Wa2 Wb2) as [Py Qy].
+  destruct (comp_prod_abs _ _ _ _ _ _ W Ha3 Hb3 Ma3 Mb3 Wa3 Wb3) as [Pz Qz].
+  assert (E : lam * mu * y - dot a b =
+     lam * mu * (y - dot ah bh)
+     + ((lam * vx ah) * (mu * vx bh) - vx a * vx b)
+     + ((lam * vy ah) * (mu * vy bh) - vy a * vy b)
+     + ((lam * vz ah) * (mu * vz bh) - vz a * vz b)) by (unfold dot; ring).
+  rewrite E.
+  assert (G : Rabs (lam * mu * (y - dot ah bh)) <=
+     c * (Rabs ((lam * vx ah) * (mu * vx bh))
+        + Rabs ((lam * vy ah) * (mu * vy bh)) + Rabs ((lam * vz ah) * (mu * vz bh))) + Lm * e).
+  { rewrite Rabs_mult, (Rabs_pos_eq (lam * mu)) by nra.
+    assert (R1 : forall x z, Rabs ((lam * x) * (mu * z)) = lam * mu * Rabs (x * z)).
+    { intros. replace ((lam * x) * (mu * z)) with ((lam * mu) * (x * z)) by ring.
+      rewrite Rabs_mult, Rabs_pos_eq by nra. reflexivity. }
+    rewrite !R1.
+    assert (K : lam * mu * Rabs (y - dot ah bh) <=
+              lam * mu * (c * (Rabs (vx ah * vx bh)
+                + Rabs (vy ah * vy bh) + Rabs (vz ah * vz bh)) + e))
+      by (apply Rmult_le_compat_l; [nra | exact F]).
+    assert (K2 : lam * mu * e <= Lm * e) by (apply Rmult_le_compat_r; lra).
+    lra. }
+  assert (G2 : c * (Rabs ((lam * vx ah) * (mu * vx bh))
+        + Rabs ((lam * vy ah) * (mu * vy bh)) + Rabs ((lam * vz ah) * (mu * vz bh)))
+        <= c * (Rabs (vx a) * Rabs (vx b) + Rabs (vy a) * Rabs (vy b)
+                + Rabs (vz a) * Rabs (vz b) + 12 * W + 3 * (W * W)))
+    by (apply Rmult_le_compat_l; lra).
+  eapply Rle_trans; [apply tri4|]. lra.
+Qed.
+
 (** A computed dot product y within (3 + 2^-17) v sum |a_j b_j| + 13 eta of
-    a.b (the standard model's [fdot], or FloatModelK.v's [fdot_rel]), of the
-    scaled approximations lam ah, mu bh of a, b with weights wa, wb. *)
+    a.b (the standard model's [fdot]), of the scaled approximations lam ah,
+    mu bh of a, b with weights wa, wb. *)
 Lemma fdot_weighted_gen : forall (v eta lam mu y : R) (ah bh a b wa wb : vec),
   0 < v <= / 2097152 -> 0 <= eta -> eta * 1152921504606846976 <= v ->
   Rabs (y - dot ah bh) <=
@@ -198,54 +293,24 @@ Lemma fdot_weighted_gen : forall (v eta lam mu y : R) (ah bh a b wa wb : vec),
   vbounded a 2 -> vbounded b 2 -> wbounded wa -> wbounded wb ->
   Rabs (lam * mu * y - dot a b) <= v * (wsum a b wa wb + / 1000).
 Proof.
-  intros v eta lam mu y ah bh a b wa wb Hv He He2 F Hl Hm Hlm [Ha1 [Ha2 Ha3]] [Hb1 [Hb2 Hb3]]
-    [Ma1 [Ma2 Ma3]] [Mb1 [Mb2 Mb3]] [Wa1 [Wa2 Wa3]] [Wb1 [Wb2 Wb3]].
-  pose proof (comp_prod_gen v Hv) as comp_prod.
-  destruct (comp_prod _ _ _ _ _ _ Ha1 Hb1 Ma1 Mb1 Wa1 Wb1) as [Px Qx].
-  destruct (comp_prod _ _ _ _ _ _ Ha2 Hb2 Ma2 Mb2 Wa2 Wb2) as [Py Qy].
-  destruct (comp_prod _ _ _ _ _ _ Ha3 Hb3 Ma3 Mb3 Wa3 Wb3) as [Pz Qz].
-  assert (E : lam * mu * y - dot a b =
-     lam * mu * (y - dot ah bh)
-     + ((lam * vx ah) * (mu * vx bh) - vx a * vx b)
-     + ((lam * vy ah) * (mu * vy bh) - vy a * vy b)
-     + ((lam * vz ah) * (mu * vz bh) - vz a * vz b)) by (unfold dot; ring).
-  rewrite E.
-  assert (G : Rabs (lam * mu * (y - dot ah bh)) <=
-     (3 + / 131072) * v * (Rabs ((lam * vx ah) * (mu * vx bh))
-        + Rabs ((lam * vy ah) * (mu * vy bh)) + Rabs ((lam * vz ah) * (mu * vz bh)))
-     + 13 * (16777216 * eta)).
-  { rewrite Rabs_mult, (Rabs_pos_eq (lam * mu)) by nra.
-    assert (R1 : forall x z, Rabs ((lam * x) * (mu * z)) = lam * mu * Rabs (x * z)).
-    { intros. replace ((lam * x) * (mu * z)) with ((lam * mu) * (x * z)) by ring.
-      rewrite Rabs_mult, Rabs_pos_eq by nra. reflexivity. }
-    rewrite !R1.
-    assert (K : lam * mu * Rabs (y - dot ah bh) <=
-              lam * mu * ((3 + / 131072) * v * (Rabs (vx ah * vx bh)
-                + Rabs (vy ah * vy bh) + Rabs (vz ah * vz bh)) + 13 * eta))
-      by (apply Rmult_le_compat_l; [nra | exact F]).
-    assert (K2 : lam * mu * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra).
-    nra. }
-  set (S := Rabs (vx a) * Rabs (vx b) + Rabs (vy a) * Rabs (vy b) + Rabs (vz a) * Rabs (vz b)).
-  assert (HS0 : 0 <= S).
-  { unfold S. pose proof (Rabs_pos (vx a)). pose proof (Rabs_pos (vy a)).
-    pose proof (Rabs_pos (vz a)). pose proof (Rabs_pos (vx b)).
-    pose proof (Rabs_pos (vy b)). pose proof (Rabs_pos (vz b)). nra. }
-  assert (HS : S <= 12).
-  { unfold S.
-    assert (Rabs (vx a) * Rabs (vx b) <= 2 * 2) by (apply Rmult_le_compat; try apply Rabs_pos; lra).
-    assert (Rabs (vy a) * Rabs (vy b) <= 2 * 2) by (apply Rmult_le_compat; try apply Rabs_pos; lra).
-    assert (Rabs (vz a) * Rabs (vz b) <= 2 * 2) by (apply Rmult_le_compat; try apply Rabs_pos; lra).
-    lra. }
-  assert (G2 : (3 + / 131072) * v * (Rabs ((lam * vx ah) * (mu * vx bh))
-        + Rabs ((lam * vy ah) * (mu * vy bh)) + Rabs ((lam * vz ah) * (mu * vz bh)))
-        <= (3 + / 131072) * v * (S + 99 * v)).
-  { apply Rmult_le_compat_l; [lra|]. unfold S. lra. }
+  intros v eta lam mu y ah bh a b wa wb Hv He He2 F Hl Hm Hlm HA HB Ba Bb
+    [Wa1 [Wa2 Wa3]] [Wb1 [Wb2 Wb3]].
+  assert (VS : forall l h x w, vapprox v l h x w -> vapprox 1 l h x (vscale v w)).
+  { intros l h x w. unfold vapprox, vscale; cbn [vx vy vz]. rewrite !Rmult_1_l. auto. }
+  pose proof (fdot_core ((3 + / 131072) * v) (13 * eta) 16777216 lam mu y (8 * v) ah bh a b
+    _ _ ltac:(lra) ltac:(lra) F Hl Hm Hlm (VS _ _ _ _ HA) (VS _ _ _ _ HB) Ba Bb) as G.
+  unfold vscale in G; cbn [vx vy vz] in G.
+  specialize (G ltac:(repeat split; nra) ltac:(repeat split; nra)).
+  destruct Ba as [Ma1 [Ma2 Ma3]], Bb as [Mb1 [Mb2 Mb3]].
+  set (S := Rabs (vx a) * Rabs (vx b) + Rabs (vy a) * Rabs (vy b) + Rabs (vz a) * Rabs (vz b))
+    in G.
+  assert (HS : 0 <= S <= 12).
+  { abs_pos3 a. abs_pos3 b. unfold S. split; nra. }
   assert (G3 : v * S <= v * 12) by (apply Rmult_le_compat_l; lra).
   assert (G4 : v * v <= v / 2097152)
     by (assert (v * v <= / 2097152 * v) by (apply Rmult_le_compat_r; lra); lra).
-  assert (G5 : 0 <= v * S) by (apply Rmult_le_pos; lra).
-  unfold wsum. fold S.
-  eapply Rle_trans; [apply tri4|]. unfold S in *. lra.
+  assert (G5 : v * (v * v) <= v * v) by (rewrite <- (Rmult_1_l (v * v)) at 2; nra).
+  unfold wsum. unfold S in *. lra.
 Qed.
 
 Section Model.
@@ -297,67 +362,18 @@ Proof.
   eapply Rle_trans; [apply Rabs_triang|]. lra.
 Qed.
 
-(** Three-term dot product: |fdot a b - a.b| <= (3 + 2^-20) u sum |a_j b_j| + 13 eta. *)
+(** Three-term dot product: |fdot a b - a.b| <= (3 + 2^-17) u sum |a_j b_j| + 13 eta. *)
 Lemma fdot_round : forall a b : vec,
   Rabs (fdot rnd a b - dot a b) <=
-  (3 + / 1048576) * u * (Rabs (vx a * vx b) + Rabs (vy a * vy b) + Rabs (vz a * vz b))
+  (3 + / 131072) * u * (Rabs (vx a * vx b) + Rabs (vy a * vy b) + Rabs (vz a * vz b))
   + 13 * eta.
 Proof.
   intros a b. unfold fdot, dot.
-  set (x1 := vx a * vx b). set (x2 := vy a * vy b). set (x3 := vz a * vz b).
-  pose proof u_pos. pose proof u_small. pose proof eta_pos. pose proof eta_small.
-  set (T := Rabs x1 + Rabs x2 + Rabs x3).
-  pose proof (Hstd x1) as B1. pose proof (Hstd x2) as B2. pose proof (Hstd x3) as B3.
-  set (s := rnd (rnd x1 + rnd x2)).
-  pose proof (Hstd (rnd x1 + rnd x2)) as B4. fold s in B4.
-  pose proof (Hstd (s + rnd x3)) as B5.
-  assert (A4 : Rabs (rnd x1 + rnd x2) <= Rabs x1 + Rabs x2 + Rabs (rnd x1 - x1) + Rabs (rnd x2 - x2)).
-  { replace (rnd x1 + rnd x2) with (x1 + x2 + (rnd x1 - x1) + (rnd x2 - x2)) by ring.
-    repeat (eapply Rle_trans; [apply Rabs_triang | apply Rplus_le_compat_r]); lra. }
-  assert (A5 : Rabs (s + rnd x3) <= Rabs x1 + Rabs x2 + Rabs x3 + Rabs (rnd x1 - x1)
-                 + Rabs (rnd x2 - x2) + Rabs (rnd x3 - x3) + Rabs (s - (rnd x1 + rnd x2))).
-  { replace (s + rnd x3) with (x1 + x2 + x3 + (rnd x1 - x1) + (rnd x2 - x2)
-                                + (rnd x3 - x3) + (s - (rnd x1 + rnd x2))) by ring.
-    repeat (eapply Rle_trans; [apply Rabs_triang | apply Rplus_le_compat_r]); lra. }
-  assert (E : rnd (s + rnd x3) - (x1 + x2 + x3) =
-     (rnd (s + rnd x3) - (s + rnd x3)) + (s - (rnd x1 + rnd x2))
-     + (rnd x1 - x1) + (rnd x2 - x2) + (rnd x3 - x3)) by ring.
-  rewrite E.
-  eapply Rle_trans; [apply tri5|].
-  assert (Hx1 : 0 <= Rabs x1) by apply Rabs_pos.
-  assert (Hx2 : 0 <= Rabs x2) by apply Rabs_pos.
-  assert (Hx3 : 0 <= Rabs x3) by apply Rabs_pos.
-  assert (Hu1 : 0 <= u * Rabs x1) by (apply Rmult_le_pos; lra).
-  assert (Hu2 : 0 <= u * Rabs x2) by (apply Rmult_le_pos; lra).
-  assert (Hu3 : 0 <= u * Rabs x3) by (apply Rmult_le_pos; lra).
-  set (r1 := Rabs (rnd x1 - x1)) in *. set (r2 := Rabs (rnd x2 - x2)) in *.
-  set (r3 := Rabs (rnd x3 - x3)) in *. set (r4 := Rabs (s - (rnd x1 + rnd x2))) in *.
-  set (r5 := Rabs (rnd (s + rnd x3) - (s + rnd x3))) in *.
-  assert (C4 : r4 <= u * (Rabs x1 + Rabs x2 + r1 + r2) + eta).
-  { eapply Rle_trans; [exact B4|]. apply Rplus_le_compat_r, Rmult_le_compat_l; lra. }
-  assert (C5 : r5 <= u * (Rabs x1 + Rabs x2 + Rabs x3 + r1 + r2 + r3 + r4) + eta).
-  { eapply Rle_trans; [exact B5|]. apply Rplus_le_compat_r, Rmult_le_compat_l; lra. }
-  assert (F3 : u * eta <= eta) by (rewrite <- (Rmult_1_l eta) at 2; apply Rmult_le_compat_r; lra).
-  assert (D4 : r4 <= (u + u / 16777216) * (Rabs x1 + Rabs x2) + 3 * eta).
-  { assert (F1 : u * (r1 + r2) <= u * (u * (Rabs x1 + Rabs x2) + 2 * eta))
-      by (apply Rmult_le_compat_l; lra).
-    assert (F2 : u * (u * (Rabs x1 + Rabs x2)) <= / 16777216 * (u * (Rabs x1 + Rabs x2)))
-      by (apply Rmult_le_compat_r; [apply Rmult_le_pos|]; lra).
-    lra. }
-  assert (D5 : r5 <= (1 + 3 / 16777216) * (u * T) + 7 * eta).
-  { assert (F4 : u * (r1 + r2 + r3 + r4) <= u * (3 * (u * T) + 6 * eta)).
-    { apply Rmult_le_compat_l; [lra|]. unfold T.
-      assert (u / 16777216 <= u) by lra.
-      assert (u / 16777216 * (Rabs x1 + Rabs x2) <= u * (Rabs x1 + Rabs x2))
-        by (apply Rmult_le_compat_r; lra).
-      lra. }
-    assert (F5 : u * (u * T) <= / 16777216 * (u * T))
-      by (apply Rmult_le_compat_r; [apply Rmult_le_pos; unfold T|]; lra).
-    unfold T in *. lra. }
-  assert (F6 : 0 <= u * T) by (apply Rmult_le_pos; unfold T; lra).
-  unfold T in *. lra.
+  pose proof u_pos. pose proof u_small. pose proof eta_pos.
+  eapply Rle_trans; [eapply (sum_chain_abs u u eta); try apply Hstd; lra|].
+  pose proof (Rabs_pos (vx a * vx b)). pose proof (Rabs_pos (vy a * vy b)).
+  pose proof (Rabs_pos (vz a * vz b)). nra.
 Qed.
-
 
 Lemma u_u : forall z, 0 <= z -> u * (u * z) <= / 16777216 * (u * z).
 Proof.
@@ -376,10 +392,7 @@ Lemma fdot_weighted : forall (lam mu : R) (ah bh a b wa wb : vec),
 Proof.
   intros lam mu ah bh a b wa wb. pose proof u_pos. pose proof u_small.
   pose proof eta_pos. pose proof eta_small. pose proof (fdot_round ah bh).
-  pose proof (Rabs_pos (vx ah * vx bh)). pose proof (Rabs_pos (vy ah * vy bh)).
-  pose proof (Rabs_pos (vz ah * vz bh)).
-  apply (fdot_weighted_gen u eta); try lra. eapply Rle_trans; [eassumption|].
-  apply Rplus_le_compat_r, Rmult_le_compat_r; lra.
+  apply (fdot_weighted_gen u eta); lra.
 Qed.
 
 Lemma dot_inst : forall (lam mu : R) (ah bh a b wa wb : vec) (K : R),

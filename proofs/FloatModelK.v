@@ -41,9 +41,9 @@
     relation bounded by one unit v (every k u <= v), [fdot_abs] is the
     weighted dot-product lemma with absolute weights, and [gseq_err],
     [cseq_err] are the loops (Gouraud, corrected Euler) with a possibly
-    different rounding at every step ([gloop_err], [floop_err]: FloatModel.v's
-    loops as their instances).  The product and dot-product steps shared with
-    FloatModel.v are its [comp_prod_gen] and [fdot_weighted_gen]. *)
+    different rounding at every step (FloatModel.v's loops [gloop], [floop]
+    are their case w = u, as in Float.v).  The product and dot-product steps shared with
+    FloatModel.v are its [comp_prod_abs] and [fdot_core]. *)
 
 From Coq Require Import Reals Lra Lia.
 From Flocq Require Import Core Relative.
@@ -134,54 +134,7 @@ Qed.
 
 (** ** Three-term sums in any order *)
 
-(** One order, ((x1 + x2) + x3), with the products (or terms) rounded by um. *)
-Lemma sum_chain : forall um ua eta x1 x2 x3 q1 q2 q3 r y,
-  0 <= um <= / 2097152 -> 0 <= ua <= / 2097152 -> 0 <= eta ->
-  ap1 um eta q1 x1 -> ap1 um eta q2 x2 -> ap1 um eta q3 x3 ->
-  ap1 ua eta r (q1 + q2) -> ap1 ua eta y (r + q3) ->
-  Rabs (y - (x1 + x2 + x3)) <=
-  (um + 2 * ua) * (1 + / 524288) * (Rabs x1 + Rabs x2 + Rabs x3) + 8 * eta.
-Proof.
-  intros um ua eta x1 x2 x3 q1 q2 q3 r y Hm Ha He H1 H2 H3 H4 H5. unfold ap1 in *.
-  pose proof (Rabs_pos x1). pose proof (Rabs_pos x2). pose proof (Rabs_pos x3).
-  assert (A12 : Rabs (q1 + q2) <= (1 + um) * (Rabs x1 + Rabs x2) + 2 * eta).
-  { replace (q1 + q2) with (x1 + x2 + (q1 - x1) + (q2 - x2)) by ring.
-    eapply Rle_trans; [apply tri4|]. lra. }
-  assert (P1 : ua * Rabs (q1 + q2) <= ua * ((1 + um) * (Rabs x1 + Rabs x2) + 2 * eta))
-    by (apply Rmult_le_compat_l; lra).
-  assert (P2 : ua * um * (Rabs x1 + Rabs x2) <= / 2097152 * (ua * (Rabs x1 + Rabs x2))).
-  { replace (ua * um * (Rabs x1 + Rabs x2)) with (um * (ua * (Rabs x1 + Rabs x2))) by ring.
-    apply Rmult_le_compat_r; [apply Rmult_le_pos|]; lra. }
-  assert (P3 : ua * eta <= / 2097152 * eta) by (apply Rmult_le_compat_r; lra).
-  assert (E1 : Rabs (r - (q1 + q2)) <= (1 + / 2097152) * (ua * (Rabs x1 + Rabs x2)) + 2 * eta)
-    by nra.
-  assert (P4 : ua * (Rabs x1 + Rabs x2) <= / 2097152 * (Rabs x1 + Rabs x2))
-    by (apply Rmult_le_compat_r; lra).
-  assert (P5 : um * Rabs x3 <= / 2097152 * Rabs x3) by (apply Rmult_le_compat_r; lra).
-  assert (P6 : um * Rabs x1 <= / 2097152 * Rabs x1) by (apply Rmult_le_compat_r; lra).
-  assert (P7 : um * Rabs x2 <= / 2097152 * Rabs x2) by (apply Rmult_le_compat_r; lra).
-  assert (A3 : Rabs (r + q3) <= (1 + / 524288) * (Rabs x1 + Rabs x2 + Rabs x3) + 5 * eta).
-  { replace (r + q3) with (x1 + x2 + (q1 - x1) + (q2 - x2) + (r - (q1 + q2)) + x3 + (q3 - x3))
-      by ring.
-    assert (T : forall a1 a2 a3 a4 a5 a6 a7 : R,
-      Rabs (a1 + a2 + a3 + a4 + a5 + a6 + a7) <=
-      Rabs a1 + Rabs a2 + Rabs a3 + Rabs a4 + Rabs a5 + Rabs a6 + Rabs a7).
-    { intros. repeat (eapply Rle_trans; [apply Rabs_triang | apply Rplus_le_compat_r]); lra. }
-    eapply Rle_trans; [apply T|]. lra. }
-  assert (P8 : ua * Rabs (r + q3) <= ua * ((1 + / 524288) * (Rabs x1 + Rabs x2 + Rabs x3) + 5 * eta))
-    by (apply Rmult_le_compat_l; lra).
-  assert (E2 : Rabs (y - (r + q3)) <= (1 + / 524288) * (ua * (Rabs x1 + Rabs x2 + Rabs x3)) + 2 * eta)
-    by nra.
-  replace (y - (x1 + x2 + x3)) with
-    ((y - (r + q3)) + (r - (q1 + q2)) + (q1 - x1) + (q2 - x2) + (q3 - x3)) by ring.
-  eapply Rle_trans; [apply tri5|].
-  assert (Q1 : 0 <= ua * Rabs x3) by (apply Rmult_le_pos; lra).
-  assert (Q2 : 0 <= ua * (Rabs x1 + Rabs x2)) by (apply Rmult_le_pos; lra).
-  assert (Q3 : 0 <= um * (Rabs x1 + Rabs x2 + Rabs x3)) by (apply Rmult_le_pos; lra).
-  lra.
-Qed.
-
-(** Every order of a three-term sum. *)
+(** Every order of a three-term sum (one order: FloatModel.v's [sum_chain_abs]). *)
 Lemma sum3_err : forall um ua eta x1 x2 x3 q1 q2 q3 y,
   0 <= um <= / 2097152 -> 0 <= ua <= / 2097152 -> 0 <= eta ->
   ap1 um eta q1 x1 -> ap1 um eta q2 x2 -> ap1 um eta q3 x3 ->
@@ -190,13 +143,13 @@ Lemma sum3_err : forall um ua eta x1 x2 x3 q1 q2 q3 y,
   (um + 2 * ua) * (1 + / 524288) * (Rabs x1 + Rabs x2 + Rabs x3) + 8 * eta.
 Proof.
   intros um ua eta x1 x2 x3 q1 q2 q3 y Hm Ha He H1 H2 H3 [r [[H4 H5] | [[H4 H5] | [H4 H5]]]].
-  - eapply sum_chain; eassumption.
+  - eapply sum_chain_abs; eassumption.
   - replace (x1 + x2 + x3) with (x1 + x3 + x2) by ring.
     replace (Rabs x1 + Rabs x2 + Rabs x3) with (Rabs x1 + Rabs x3 + Rabs x2) by ring.
-    eapply sum_chain; eassumption.
+    eapply sum_chain_abs; eassumption.
   - replace (x1 + x2 + x3) with (x2 + x3 + x1) by ring.
     replace (Rabs x1 + Rabs x2 + Rabs x3) with (Rabs x2 + Rabs x3 + Rabs x1) by ring.
-    eapply sum_chain; eassumption.
+    eapply sum_chain_abs; eassumption.
 Qed.
 
 (** The dot-product lemma: every evaluation order, every fusion. *)
@@ -273,11 +226,9 @@ Lemma fdot_v : forall a b y, fdot_rel v v eta a b y ->
   (3 + / 131072) * v * (Rabs (vx a * vx b) + Rabs (vy a * vy b) + Rabs (vz a * vz b)) + 8 * eta.
 Proof.
   intros a b y H. pose proof v_pos. pose proof v_small. pose proof e_pos.
-  pose proof (fdot_err v v eta a b y ltac:(lra) ltac:(lra) ltac:(lra) H) as F.
-  eapply Rle_trans; [exact F|]. apply Rplus_le_compat_r.
-  apply Rmult_le_compat_r; [|lra].
+  eapply Rle_trans; [exact (fdot_err v v eta a b y ltac:(lra) ltac:(lra) ltac:(lra) H)|].
   pose proof (Rabs_pos (vx a * vx b)). pose proof (Rabs_pos (vy a * vy b)).
-  pose proof (Rabs_pos (vz a * vz b)). lra.
+  pose proof (Rabs_pos (vz a * vz b)). nra.
 Qed.
 
 End V.
@@ -297,30 +248,6 @@ Definition wsum0 (a b wa wb : vec) : R :=
 Definition wle (w : vec) (W : R) : Prop :=
   0 <= vx w <= W /\ 0 <= vy w <= W /\ 0 <= vz w <= W.
 
-Lemma comp_prod_abs : forall A a B b wa wb W,
-  Rabs (A - a) <= wa -> Rabs (B - b) <= wb ->
-  Rabs a <= 2 -> Rabs b <= 2 -> 0 <= wa <= W -> 0 <= wb <= W ->
-  Rabs (A * B - a * b) <= Rabs a * wb + wa * Rabs b + W * W
-  /\ Rabs (A * B) <= Rabs a * Rabs b + 4 * W + W * W.
-Proof.
-  intros A a B b wa wb W HA HB Ha Hb Hwa Hwb.
-  assert (E : A * B - a * b = (A - a) * b + a * (B - b) + (A - a) * (B - b)) by ring.
-  assert (T1 : Rabs ((A - a) * b) <= wa * Rabs b).
-  { rewrite Rabs_mult. apply Rmult_le_compat_r; [apply Rabs_pos | exact HA]. }
-  assert (T2 : Rabs (a * (B - b)) <= Rabs a * wb).
-  { rewrite Rabs_mult. apply Rmult_le_compat_l; [apply Rabs_pos | exact HB]. }
-  assert (T3 : Rabs ((A - a) * (B - b)) <= W * W).
-  { rewrite Rabs_mult. apply Rmult_le_compat; try apply Rabs_pos; lra. }
-  assert (D : Rabs (A * B - a * b) <= Rabs a * wb + wa * Rabs b + W * W).
-  { rewrite E. eapply Rle_trans; [apply Rabs_triang|].
-    eapply Rle_trans; [apply Rplus_le_compat_r, Rabs_triang|]. lra. }
-  split; [exact D|].
-  assert (Rabs a * wb <= 2 * W) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
-  assert (wa * Rabs b <= W * 2) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
-  replace (A * B) with (a * b + (A * B - a * b)) by ring.
-  eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_mult. lra.
-Qed.
-
 Section VA.
 Context (v eta : R) (Hv : small_ok v eta).
 
@@ -334,117 +261,17 @@ Lemma fdot_abs : forall (lam mu y W : R) (ah bh a b wa wb : vec),
                             + Rabs (vz a) * Rabs (vz b) + 12 * W + 3 * (W * W))
     + 8 * (281474976710656 * eta).
 Proof.
-  intros lam mu y W ah bh a b wa wb Hy Hl Hm Hlm [Ha1 [Ha2 Ha3]] [Hb1 [Hb2 Hb3]]
-    [Ma1 [Ma2 Ma3]] [Mb1 [Mb2 Mb3]] [Wa1 [Wa2 Wa3]] [Wb1 [Wb2 Wb3]].
-  rewrite Rmult_1_l in Ha1, Ha2, Ha3, Hb1, Hb2, Hb3.
-  small_facts Hv.
-  destruct (comp_prod_abs _ _ _ _ _ _ W Ha1 Hb1 Ma1 Mb1 Wa1 Wb1) as [Px Qx].
-  destruct (comp_prod_abs _ _ _ _ _ _ W Ha2 Hb2 Ma2 Mb2 Wa2 Wb2) as [Py Qy].
-  destruct (comp_prod_abs _ _ _ _ _ _ W Ha3 Hb3 Ma3 Mb3 Wa3 Wb3) as [Pz Qz].
-  pose proof (fdot_v v eta Hv ah bh y Hy) as F.
-  assert (E : lam * mu * y - dot a b =
-     lam * mu * (y - dot ah bh)
-     + ((lam * vx ah) * (mu * vx bh) - vx a * vx b)
-     + ((lam * vy ah) * (mu * vy bh) - vy a * vy b)
-     + ((lam * vz ah) * (mu * vz bh) - vz a * vz b)) by (unfold dot; ring).
-  rewrite E.
-  assert (G : Rabs (lam * mu * (y - dot ah bh)) <=
-     (3 + / 131072) * v * (Rabs ((lam * vx ah) * (mu * vx bh))
-        + Rabs ((lam * vy ah) * (mu * vy bh)) + Rabs ((lam * vz ah) * (mu * vz bh)))
-     + 8 * (281474976710656 * eta)).
-  { rewrite Rabs_mult, (Rabs_pos_eq (lam * mu)) by nra.
-    assert (R1 : forall x z, Rabs ((lam * x) * (mu * z)) = lam * mu * Rabs (x * z)).
-    { intros. replace ((lam * x) * (mu * z)) with ((lam * mu) * (x * z)) by ring.
-      rewrite Rabs_mult, Rabs_pos_eq by nra. reflexivity. }
-    rewrite !R1.
-    assert (K : lam * mu * Rabs (y - dot ah bh) <=
-              lam * mu * ((3 + / 131072) * v * (Rabs (vx ah * vx bh)
-                + Rabs (vy ah * vy bh) + Rabs (vz ah * vz bh)) + 8 * eta))
-      by (apply Rmult_le_compat_l; [nra | exact F]).
-    assert (K2 : lam * mu * eta <= 281474976710656 * eta) by (apply Rmult_le_compat_r; lra).
-    nra. }
-  assert (G2 : (3 + / 131072) * v * (Rabs ((lam * vx ah) * (mu * vx bh))
-        + Rabs ((lam * vy ah) * (mu * vy bh)) + Rabs ((lam * vz ah) * (mu * vz bh)))
-        <= (3 + / 131072) * v * (Rabs (vx a) * Rabs (vx b) + Rabs (vy a) * Rabs (vy b)
-                            + Rabs (vz a) * Rabs (vz b) + 12 * W + 3 * (W * W))).
-  { apply Rmult_le_compat_l; [lra|]. lra. }
-  unfold wsum0.
-  eapply Rle_trans; [apply tri4|]. lra.
+  intros lam mu y W ah bh a b wa wb Hy. small_facts Hv. intros.
+  eapply Rle_trans; [apply (fdot_core ((3 + / 131072) * v) (8 * eta) 281474976710656 lam mu y W
+    ah bh a b wa wb); try assumption; try lra; apply (fdot_v v eta Hv _ _ _ Hy)|].
+  unfold wsum0. lra.
 Qed.
 
 End VA.
 
 (** ** The loops, with a possibly different rounding at every step *)
 
-(** Corrected Euler: P_{j+1} within w|P_j + Q_j| + eta of P_j + Q_j, and
-    Q_{j+1} within w|Q_j + d| + eta of Q_j + d (as [floop_err] below). *)
-Lemma cseq_err : forall (w eta : R) (P Q : nat -> R) (d : R) (m : nat) (Ms Mp : R),
-  0 <= w -> 0 <= eta -> 0 <= Ms -> 0 <= Mp ->
-  (forall j, (j < m)%nat -> ap1 w eta (P (S j)) (P j + Q j) /\ ap1 w eta (Q (S j)) (Q j + d)) ->
-  (forall j, (S j < m)%nat ->
-     Rabs (Q O + INR (S j) * d) + INR m * (w * Ms + eta) <= Ms) ->
-  (forall j, (j < m)%nat ->
-     Rabs (P O + INR (S j) * Q O + INR (S j) * (INR (S j) - 1) / 2 * d)
-     + INR m * INR m / 2 * (w * Ms + eta) + INR m * (w * Mp + eta) <= Mp) ->
-  forall i, (i <= m)%nat ->
-  ((i < m)%nat -> Rabs (Q i - (Q O + INR i * d)) <= INR i * (w * Ms + eta))
-  /\ Rabs (P i - (P O + INR i * Q O + INR i * (INR i - 1) / 2 * d))
-     <= INR i * (INR i - 1) / 2 * (w * Ms + eta) + INR i * (w * Mp + eta).
-Proof.
-  intros w eta P Q d m Ms Mp Hw He HMs HMp Hstep HS HP i.
-  set (p0 := P O) in *. set (s0 := Q O) in *.
-  assert (Ems : 0 <= w * Ms + eta) by (pose proof (Rmult_le_pos w Ms); lra).
-  assert (Emp : 0 <= w * Mp + eta) by (pose proof (Rmult_le_pos w Mp); lra).
-  induction i as [| i IH]; intros Hi.
-  - cbn [INR]. unfold p0, s0. split; [intros _|]; rewrite Rabs_right; lra.
-  - destruct (IH ltac:(lia)) as [IS IP]. specialize (IS ltac:(lia)).
-    destruct (Hstep i ltac:(lia)) as [StP StS]. unfold ap1 in StP, StS.
-    set (Sh := Q i) in *. set (Ph := P i) in *.
-    specialize (HP i ltac:(lia)).
-    assert (Him : INR (S i) <= INR m) by (apply le_INR; lia).
-    assert (Hi0 : 0 <= INR i) by apply pos_INR.
-    assert (Him' : INR i <= INR m) by (apply le_INR; lia).
-    rewrite S_INR in *.
-    assert (AP : Rabs (Ph + Sh) <= Mp).
-    { replace (Ph + Sh) with ((p0 + (INR i + 1) * s0 + (INR i + 1) * (INR i + 1 - 1) / 2 * d)
-         + (Ph - (p0 + INR i * s0 + INR i * (INR i - 1) / 2 * d))
-         + (Sh - (s0 + INR i * d))) by field.
-      eapply Rle_trans; [apply Rabs_triang|].
-      eapply Rle_trans; [apply Rplus_le_compat_r, Rabs_triang|].
-      assert (INR i * (INR i - 1) / 2 + INR i <= INR m * INR m / 2) by nra.
-      assert ((INR i * (INR i - 1) / 2 + INR i) * (w * Ms + eta)
-                <= INR m * INR m / 2 * (w * Ms + eta)) by (apply Rmult_le_compat_r; lra).
-      assert (INR i * (w * Mp + eta) <= INR m * (w * Mp + eta))
-        by (apply Rmult_le_compat_r; lra).
-      lra. }
-    assert (RP : Rabs (P (S i) - (Ph + Sh)) <= w * Mp + eta).
-    { eapply Rle_trans; [apply StP|]. apply Rplus_le_compat_r, Rmult_le_compat_l; lra. }
-    split.
-    + intros Hlt. specialize (HS i Hlt). rewrite S_INR in HS.
-      assert (AS : Rabs (Sh + d) <= Ms).
-      { replace (Sh + d) with ((s0 + (INR i + 1) * d) + (Sh - (s0 + INR i * d))) by ring.
-        eapply Rle_trans; [apply Rabs_triang|].
-        assert (INR i * (w * Ms + eta) <= INR m * (w * Ms + eta))
-          by (apply Rmult_le_compat_r; lra).
-        lra. }
-      assert (RS : Rabs (Q (S i) - (Sh + d)) <= w * Ms + eta).
-      { eapply Rle_trans; [apply StS|]. apply Rplus_le_compat_r, Rmult_le_compat_l; lra. }
-      replace (Q (S i) - (s0 + (INR i + 1) * d))
-        with ((Q (S i) - (Sh + d)) + (Sh - (s0 + INR i * d))) by ring.
-      eapply Rle_trans; [apply Rabs_triang|]. lra.
-    + replace (P (S i) - (p0 + (INR i + 1) * s0 + (INR i + 1) * (INR i + 1 - 1) / 2 * d))
-        with ((P (S i) - (Ph + Sh))
-              + (Ph - (p0 + INR i * s0 + INR i * (INR i - 1) / 2 * d))
-              + (Sh - (s0 + INR i * d))) by field.
-      eapply Rle_trans; [apply Rabs_triang|].
-      eapply Rle_trans; [apply Rplus_le_compat_r, Rabs_triang|].
-      assert (E1 : (INR i + 1) * (INR i + 1 - 1) / 2 * (w * Ms + eta) + (INR i + 1) * (w * Mp + eta)
-               = INR i * (INR i - 1) / 2 * (w * Ms + eta) + INR i * (w * Mp + eta)
-                 + INR i * (w * Ms + eta) + (w * Mp + eta)) by field.
-      rewrite E1. lra.
-Qed.
-
-(** Gouraud: G_{j+1} within w|G_j + d| + eta of G_j + d (as [gloop_err] below). *)
+(** Gouraud: G_{j+1} within w|G_j + d| + eta of G_j + d (FloatModel.v's [gloop]). *)
 Lemma gseq_err : forall (w eta : R) (G : nat -> R) (d : R) (m : nat) (Mg : R),
   0 <= w -> 0 <= eta -> 0 <= Mg ->
   (forall j, (j < m)%nat -> ap1 w eta (G (S j)) (G j + d)) ->
@@ -476,41 +303,68 @@ Proof.
     eapply Rle_trans; [apply Rabs_triang|]. lra.
 Qed.
 
-(** FloatModel.v's loops (one rounding function in the standard model) are
-    the case w = u of [cseq_err] and [gseq_err]. *)
-(** The corrected-Euler loop against Euler on the same (computed) start
-    values: for i <= m, the slope is within i (u Ms + eta) and the value
-    within i(i-1)/2 (u Ms + eta) + i (u Mp + eta), provided Ms, Mp bound
-    the slopes and values of the loop (plus the accumulated error). *)
-Lemma floop_err : forall (rnd : R -> R) (u eta : R), std_model rnd u eta -> fmt_ok u eta ->
-  forall (p0 s0 d : R) (m : nat) (Ms Mp : R), 0 <= Ms -> 0 <= Mp ->
+(** Corrected Euler: P_{j+1} within w|P_j + Q_j| + eta of P_j + Q_j, and
+    Q_{j+1} within w|Q_j + d| + eta of Q_j + d (FloatModel.v's [floop]). *)
+Lemma cseq_err : forall (w eta : R) (P Q : nat -> R) (d : R) (m : nat) (Ms Mp : R),
+  0 <= w -> 0 <= eta -> 0 <= Ms -> 0 <= Mp ->
+  (forall j, (j < m)%nat -> ap1 w eta (P (S j)) (P j + Q j) /\ ap1 w eta (Q (S j)) (Q j + d)) ->
   (forall j, (S j < m)%nat ->
-     Rabs (s0 + INR (S j) * d) + INR m * (u * Ms + eta) <= Ms) ->
+     Rabs (Q O + INR (S j) * d) + INR m * (w * Ms + eta) <= Ms) ->
   (forall j, (j < m)%nat ->
-     Rabs (p0 + INR (S j) * s0 + INR (S j) * (INR (S j) - 1) / 2 * d)
-     + INR m * INR m / 2 * (u * Ms + eta) + INR m * (u * Mp + eta) <= Mp) ->
+     Rabs (P O + INR (S j) * Q O + INR (S j) * (INR (S j) - 1) / 2 * d)
+     + INR m * INR m / 2 * (w * Ms + eta) + INR m * (w * Mp + eta) <= Mp) ->
   forall i, (i <= m)%nat ->
-  ((i < m)%nat ->
-   Rabs (snd (floop rnd p0 s0 d i) - (s0 + INR i * d)) <= INR i * (u * Ms + eta))
-  /\ Rabs (fst (floop rnd p0 s0 d i) - (p0 + INR i * s0 + INR i * (INR i - 1) / 2 * d))
-     <= INR i * (INR i - 1) / 2 * (u * Ms + eta) + INR i * (u * Mp + eta).
+  ((i < m)%nat -> Rabs (Q i - (Q O + INR i * d)) <= INR i * (w * Ms + eta))
+  /\ Rabs (P i - (P O + INR i * Q O + INR i * (INR i - 1) / 2 * d))
+     <= INR i * (INR i - 1) / 2 * (w * Ms + eta) + INR i * (w * Mp + eta).
 Proof.
-  intros rnd u eta Hstd Hok p0 s0 d m Ms Mp HMs HMp H1 H2 i Hi.
-  destruct Hok as (Hu & _ & He & _).
-  apply (cseq_err u eta (fun j => fst (floop rnd p0 s0 d j)) (fun j => snd (floop rnd p0 s0 d j))
-           d m Ms Mp ltac:(lra) He HMs HMp); [| exact H1 | exact H2 | exact Hi].
-  intros j _. cbv beta. rewrite floop_S. cbn [fst snd]. unfold ap1. split; apply Hstd.
+  intros w eta P Q d m Ms Mp Hw He HMs HMp Hstep HS HP i Hi.
+  assert (Ems : 0 <= w * Ms + eta) by (pose proof (Rmult_le_pos w Ms); lra).
+  assert (Emp : 0 <= w * Mp + eta) by (pose proof (Rmult_le_pos w Mp); lra).
+  (* the slopes: the Gouraud loop on Q *)
+  assert (HQ : forall k, (k < m)%nat -> Rabs (Q k - (Q O + INR k * d)) <= INR k * (w * Ms + eta)).
+  { intros k Hk. apply (gseq_err w eta Q d (m - 1) Ms Hw He HMs); [| | lia].
+    - intros j Hj. apply Hstep. lia.
+    - intros j Hj. pose proof (HS j ltac:(lia)).
+      assert (INR (m - 1) * (w * Ms + eta) <= INR m * (w * Ms + eta))
+        by (apply Rmult_le_compat_r; [lra | apply le_INR; lia]).
+      lra. }
+  split; [exact (HQ i)|].
+  set (p0 := P O) in *. set (s0 := Q O) in *.
+  induction i as [| i IH].
+  - cbn [INR]. unfold p0. rewrite Rabs_right; lra.
+  - pose proof (IH ltac:(lia)) as IP. pose proof (HQ i ltac:(lia)) as IS.
+    destruct (Hstep i ltac:(lia)) as [StP _]. unfold ap1 in StP.
+    set (Sh := Q i) in *. set (Ph := P i) in *.
+    specialize (HP i ltac:(lia)).
+    assert (Him : INR (S i) <= INR m) by (apply le_INR; lia).
+    assert (Hi0 : 0 <= INR i) by apply pos_INR.
+    assert (Him' : INR i <= INR m) by (apply le_INR; lia).
+    rewrite S_INR in *.
+    assert (AP : Rabs (Ph + Sh) <= Mp).
+    { replace (Ph + Sh) with ((p0 + (INR i + 1) * s0 + (INR i + 1) * (INR i + 1 - 1) / 2 * d)
+         + (Ph - (p0 + INR i * s0 + INR i * (INR i - 1) / 2 * d))
+         + (Sh - (s0 + INR i * d))) by field.
+      eapply Rle_trans; [apply Rabs_triang|].
+      eapply Rle_trans; [apply Rplus_le_compat_r, Rabs_triang|].
+      assert (INR i * (INR i - 1) / 2 + INR i <= INR m * INR m / 2) by nra.
+      assert ((INR i * (INR i - 1) / 2 + INR i) * (w * Ms + eta)
+                <= INR m * INR m / 2 * (w * Ms + eta)) by (apply Rmult_le_compat_r; lra).
+      assert (INR i * (w * Mp + eta) <= INR m * (w * Mp + eta))
+        by (apply Rmult_le_compat_r; lra).
+      lra. }
+    assert (RP : Rabs (P (S i) - (Ph + Sh)) <= w * Mp + eta).
+    { eapply Rle_trans; [apply StP|]. apply Rplus_le_compat_r, Rmult_le_compat_l; lra. }
+    replace (P (S i) - (p0 + (INR i + 1) * s0 + (INR i + 1) * (INR i + 1 - 1) / 2 * d))
+      with ((P (S i) - (Ph + Sh))
+            + (Ph - (p0 + INR i * s0 + INR i * (INR i - 1) / 2 * d))
+            + (Sh - (s0 + INR i * d))) by field.
+    eapply Rle_trans; [apply Rabs_triang|].
+    eapply Rle_trans; [apply Rplus_le_compat_r, Rabs_triang|].
+    assert (E1 : (INR i + 1) * (INR i + 1 - 1) / 2 * (w * Ms + eta) + (INR i + 1) * (w * Mp + eta)
+             = INR i * (INR i - 1) / 2 * (w * Ms + eta) + INR i * (w * Mp + eta)
+               + INR i * (w * Ms + eta) + (w * Mp + eta)) by field.
+    rewrite E1. lra.
 Qed.
 
-(** The Gouraud loop against g0 + i d. *)
-Lemma gloop_err : forall (rnd : R -> R) (u eta : R), std_model rnd u eta -> fmt_ok u eta ->
-  forall (g0 d : R) (m : nat) (Mg : R), 0 <= Mg ->
-  (forall j, (j < m)%nat -> Rabs (g0 + INR (S j) * d) + INR m * (u * Mg + eta) <= Mg) ->
-  forall i, (i <= m)%nat ->
-  Rabs (gloop rnd g0 d i - (g0 + INR i * d)) <= INR i * (u * Mg + eta).
-Proof.
-  intros rnd u eta Hstd Hok g0 d m Mg HMg HG i Hi.
-  destruct Hok as (Hu & _ & He & _).
-  apply (gseq_err u eta (gloop rnd g0 d) d m Mg ltac:(lra) He HMg); [| exact HG | exact Hi].
-  intros j _. cbn [gloop]. unfold ap1. apply Hstd.
-Qed.
+

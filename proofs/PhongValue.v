@@ -44,6 +44,12 @@ Proof.
   - apply Rinv_le_contravar; lra.
 Qed.
 
+Lemma pv_div_le_iff : forall x y a, 0 < y -> x <= a * y -> x / y <= a.
+Proof.
+  intros x y a Hy H. unfold Rdiv. apply (Rmult_le_reg_r y); [lra|].
+  rewrite Rmult_assoc, Rinv_l, Rmult_1_r by lra. exact H.
+Qed.
+
 (** ** 1. The real-analysis step *)
 
 Theorem phong_value_real : forall p q ph qh qmin ep eq,
@@ -70,9 +76,7 @@ Proof.
   rewrite Rabs_mult, pv_div_abs, pv_div_abs, pv_div_abs by nra.
   assert (H1 : Rabs (ph - p) / t <= ep / a)
     by (apply pv_div_le; [split; [apply Rabs_pos|lra] | lra]).
-  assert (H3 : Rabs p / s <= 1).
-  { unfold Rdiv. apply (Rmult_le_reg_r s); [lra|].
-    rewrite Rmult_assoc, Rinv_l, Rmult_1_r by lra. lra. }
+  assert (H3 : Rabs p / s <= 1) by (apply pv_div_le_iff; lra).
   assert (H4 : Rabs (q - qh) / (t * (s + t)) <= eq / (a * (sm + a))).
   { apply pv_div_le; [split; [apply Rabs_pos|rewrite Rabs_minus_sym; lra] |].
     split; [nra|]. apply Rmult_le_compat; lra. }
@@ -84,12 +88,6 @@ Proof.
 Qed.
 
 (** ** 2. The value's own operations *)
-
-Lemma pv_div_le_iff : forall x y a, 0 < y -> x <= a * y -> x / y <= a.
-Proof.
-  intros x y a Hy H. unfold Rdiv. apply (Rmult_le_reg_r y); [lra|].
-  rewrite Rmult_assoc, Rinv_l, Rmult_1_r by lra. exact H.
-Qed.
 
 (** From the error of x = p^/sqrt q^ to the error of the value. *)
 Lemma pv_core : forall x v z B g E0,
@@ -188,26 +186,20 @@ Proof.
   assert (F1 : rho * (a + b * (1 + a)) + c * ic <= ic * (a + b + a * b + c)).
   { assert (rho * (a + b * (1 + a)) <= ic * (a + b * (1 + a))) by (apply Rmult_le_compat_r; nra). nra. }
   assert (F2 : ic * (a + b + a * b + c) <= (a + b + c) / (1 - (a + b + c))).
-  { unfold Rdiv. set (j := / (1 - (a + b + c))).
-    assert (Hj : j * (1 - (a + b + c)) = 1) by (unfold j; field; lra).
-    assert (Hj0 : 0 < j) by (unfold j; apply Rinv_0_lt_compat; lra).
-    (* (a+b+ab+c)(1-a-b-c) <= (a+b+c)(1-c) *)
+  { (* (a+b+ab+c)(1-a-b-c) <= (a+b+c)(1-c) *)
     assert (K : (a + b + a * b + c) * (1 - (a + b + c)) <= (a + b + c) * (1 - c)).
     { pose proof (Rmult_le_pos a a Ha Ha). pose proof (Rmult_le_pos b b Hb Hb).
       pose proof (Rmult_le_pos a b Ha Hb). pose proof (Rmult_le_pos c a Hc Ha).
       pose proof (Rmult_le_pos c b Hc Hb).
       assert (0 <= a * b * (a + b + c)) by (apply Rmult_le_pos; nra).
       nra. }
-    assert (K2 : ic * (a + b + a * b + c) * (1 - (a + b + c)) <= ic * ((a + b + c) * (1 - c))).
-    { rewrite Rmult_assoc. apply Rmult_le_compat_l; lra. }
-    assert (K3 : ic * (a + b + a * b + c) * (1 - (a + b + c)) * j <= ic * ((a + b + c) * (1 - c)) * j).
-    { apply Rmult_le_compat_r; lra. }
-    replace (ic * (a + b + a * b + c) * (1 - (a + b + c)) * j) with (ic * (a + b + a * b + c)) in K3
-      by (rewrite Rmult_assoc, (Rmult_comm (1 - _)), Hj; ring).
-    replace (ic * ((a + b + c) * (1 - c)) * j) with ((a + b + c) * j) in K3
-      by (replace (ic * ((a + b + c) * (1 - c)) * j) with ((ic * (1 - c)) * ((a + b + c) * j)) by ring;
-          rewrite Hic; ring).
-    exact K3. }
+    replace (ic * (a + b + a * b + c))
+      with ((a + b + a * b + c) * (1 - (a + b + c)) / ((1 - c) * (1 - (a + b + c))))
+      by (unfold ic; field; lra).
+    replace ((a + b + c) / (1 - (a + b + c)))
+      with ((a + b + c) * (1 - c) / ((1 - c) * (1 - (a + b + c)))) by (field; lra).
+    unfold Rdiv. apply Rmult_le_compat_r; [| exact K].
+    left. apply Rinv_0_lt_compat, Rmult_lt_0_compat; lra. }
   pose proof (Rabs_pos x).
   assert (Rabs x * (rho * (a + b * (1 + a)) + c * ic) <= Rabs x * ((a + b + c) / (1 - (a + b + c))))
     by (apply Rmult_le_compat_l; lra).

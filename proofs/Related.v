@@ -21,13 +21,6 @@ Open Scope R_scope.
 Definition quad2 (A B C D E F x y : R) : R :=
   A * x ^ 2 + B * x * y + C * y ^ 2 + D * x + E * y + F.
 
-Lemma quad2_forward_differences : forall (A B C D E F x0 y : R) (j : nat),
-  euler_p (quad2 A B C D E F x0 y) (A * (2 * x0 + 1) + B * y + D) (2 * A) j
-  = quad2 A B C D E F (x0 + INR j) y.
-Proof.
-  intros. rewrite eq_14_euler_closed_form. unfold quad2. field.
-Qed.
-
 (* Note: Any coefficients, any row y, any start x0, every pixel j. *)
 (** Bishop & Weimer: "two additions per pixel" along a scan line give the
     second-order Taylor polynomial exactly, starting from
@@ -37,7 +30,7 @@ Theorem bishop_weimer_forward_differences_are_exact :
   euler_p (quad2 T5 T4 T3 T2 T1 T0 x0 y) (T5 * (2 * x0 + 1) + T4 * y + T2)
     (2 * T5) j
   = quad2 T5 T4 T3 T2 T1 T0 (x0 + INR j) y.
-Proof. intros. apply quad2_forward_differences. Qed.
+Proof. intros. rewrite eq_14_euler_closed_form. unfold quad2. field. Qed.
 
 (* Note: Any coefficients, any row y, any start x0, every pixel j. *)
 (** Seiler: the six-point quadratic, written as [A x^2 + ... + F], is evaluated
@@ -46,7 +39,7 @@ Theorem seiler_forward_differences_are_exact :
   forall (A B C D E F x0 y : R) (j : nat),
   euler_p (quad2 A B C D E F x0 y) (A * (2 * x0 + 1) + B * y + D) (2 * A) j
   = quad2 A B C D E F (x0 + INR j) y.
-Proof. intros. apply quad2_forward_differences. Qed.
+Proof. intros. apply bishop_weimer_forward_differences_are_exact. Qed.
 
 (** ** Bishop & Weimer along one span *)
 
@@ -87,11 +80,8 @@ Proof.
       set (Q := C * x ^ 2 + D * x + 1) in *. set (S := sqrt Q) in *.
       rewrite <- Hsq. field. exact Hs.
   - unfold bw_df. rewrite H0, sqrt_1. field.
-  - unfold bw_df. auto_derive.
-    + simpl. replace (C * (0 * (0 * 1)) + D * 0 + 1) with 1 by ring.
-      rewrite sqrt_1. repeat split; lra.
-    + simpl. replace (C * (0 * (0 * 1)) + D * 0 + 1) with 1 by ring.
-      rewrite sqrt_1. field.
+  - unfold bw_df. auto_derive; simpl; replace (C * (0 * (0 * 1)) + D * 0 + 1) with 1 by ring;
+      rewrite sqrt_1; [repeat split; lra | field].
 Qed.
 
 (** ** Seiler's six-point quadratic *)

@@ -83,14 +83,8 @@ Proof. intros. unfold dot, vadd; cbn [vx vy vz]. ring. Qed.
 Lemma cauchy_schwarz_sq : forall u v, (dot u v) ^ 2 <= dot u u * dot v v.
 Proof.
   intros [x1 y1 z1] [x2 y2 z2]. unfold dot; cbn [vx vy vz].
-  assert (H : (x1 * x1 + y1 * y1 + z1 * z1) * (x2 * x2 + y2 * y2 + z2 * z2)
-              - (x1 * x2 + y1 * y2 + z1 * z2) ^ 2
-              = (x1 * y2 - y1 * x2) ^ 2 + (x1 * z2 - z1 * x2) ^ 2
-                + (y1 * z2 - z1 * y2) ^ 2) by ring.
-  assert (0 <= (x1 * y2 - y1 * x2) ^ 2) by apply pow2_ge_0.
-  assert (0 <= (x1 * z2 - z1 * x2) ^ 2) by apply pow2_ge_0.
-  assert (0 <= (y1 * z2 - z1 * y2) ^ 2) by apply pow2_ge_0.
-  lra.
+  pose proof (pow2_ge_0 (x1 * y2 - y1 * x2)). pose proof (pow2_ge_0 (x1 * z2 - z1 * x2)).
+  pose proof (pow2_ge_0 (y1 * z2 - z1 * y2)). lra.
 Qed.
 
 Lemma unit_dot_bounds : forall u v, is_unit u -> is_unit v -> -1 <= dot u v <= 1.
@@ -111,6 +105,11 @@ Qed.
     Na = (3/5, 0, 4/5), Nb = (-3/5, 0, 4/5), L = (0, 0, 1), n = 2. *)
 Definition mortensen_span : span :=
   mkSpan (mkV (3/5) 0 (4/5)) (mkV (-3/5) 0 (4/5)) (mkV 0 0 1) 2.
+
+(** A fact of the set-up (norms, p_a, p_b, di_a, ds) of a concrete span [sp], computed. *)
+Ltac span_val sp :=
+  unfold ds, dib, dia, dqb, dqa, A, C, D, k, is_unit, pa, pb, sp, dot, vscale, vsub;
+  cbn [vx vy vz Na Nb L n]; rewrite ?INR_2; field.
 
 (** ** Helper identities (no hypotheses) *)
 
@@ -185,8 +184,7 @@ Proof.
   intros s Hn Ha Hb. destruct (eq_10_q_is_one_on_edges s Ha Hb) as [H0 H1].
   unfold phong. rewrite H0, H1, sqrt_1. split.
   - unfold p, B, pa. field.
-  - assert (Hn' : INR (n s) <> 0) by (apply not_0_INR; lia).
-    unfold p, A, B, pb, k, dot, vscale, vsub; cbn [vx vy vz]. field. exact Hn'.
+  - unfold p, A, B, pb, k, dot, vscale, vsub; cbn [vx vy vz]. field. exact (INR_n_neq_0 s Hn).
 Qed.
 
 (* Note: Only |Na| = |Nb| is needed (unit Na, Nb suffice); any n. *)

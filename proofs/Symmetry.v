@@ -40,12 +40,7 @@ Theorem sec_4_dq_zero_at_middle : forall s : span,
   2 * C s * (INR (n s) / 2) + D s = 0
   /\ C s * (2 * ((INR (n s) - 1) / 2) + 1) + D s = 0.
 Proof.
-  intros s H. pose proof (Cn_plus_D_zero s H) as K. split.
-  - replace (2 * C s * (INR (n s) / 2) + D s) with (C s * INR (n s) + D s) by field.
-    exact K.
-  - replace (C s * (2 * ((INR (n s) - 1) / 2) + 1) + D s)
-      with (C s * INR (n s) + D s) by field.
-    exact K.
+  intros s H. pose proof (Cn_plus_D_zero s H) as K. split; rewrite <- K; field.
 Qed.
 
 (* Note: |Na| = |Nb|; q(x) = q(n/2) + C (x - n/2)^2 and C = k.k >= 0, so it is a minimum. *)
@@ -56,8 +51,7 @@ Theorem sec_4_q_minimum_at_middle : forall (s : span) (x : R),
   /\ q s (INR (n s) / 2) <= q s x.
 Proof.
   intros s x H. pose proof (Cn_plus_D_zero s H) as K.
-  assert (Hc : 0 <= C s).
-  { unfold C, dot. nra. }
+  assert (Hc : 0 <= C s) by (unfold C, dot; nra).
   assert (Hid : q s x = q s (INR (n s) / 2) + C s * (x - INR (n s) / 2) ^ 2).
   { unfold q. replace (D s) with (- (C s * INR (n s))) by lra. field. }
   split; [exact Hid |].

@@ -498,17 +498,26 @@ fn the_checkers_phong_and_adaptive_constants_are_the_theorems() {
         "fast_delta_err"
     );
     assert!(def("fast_delta_err").contains("562949986975745 * m_eta M"));
+    // `eq24_delta_err` and `eq24_shared_delta_err` are `eq24_err_of` with its `shared`
+    // switch off and on: one formula, whose constants are the checker's.
     assert_eq!(
-        all_fractions(&def("eq24_delta_err")),
+        all_fractions(&def("eq24_err_of")),
         [5.002, 0.001, 20.04, 5.01, 92.11, 18.06, 0.25],
-        "eq24_delta_err"
+        "eq24_err_of"
     );
-    let e = def("eq24_delta_err");
+    let e = def("eq24_err_of");
     for term in [
         "(1 + / 131072) + 18 * eta",
         "(2 + / 65536) + 16777218 * eta",
+        "if shared then Edp + ER + Eds / 8 else EG + (ER + 2 * Epc + Eds / 8)",
     ] {
-        assert!(e.contains(term), "eq24_delta_err: {term}");
+        assert!(e.contains(term), "eq24_err_of: {term}");
+    }
+    for (name, shared) in [("eq24_delta_err", "false"), ("eq24_shared_delta_err", "true")] {
+        assert!(
+            def(name).ends_with(&format!(":= eq24_err_of M K1 {shared}")),
+            "{name} is not eq24_err_of M K1 {shared}"
+        );
     }
 }
 

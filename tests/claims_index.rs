@@ -513,7 +513,10 @@ fn the_checkers_phong_and_adaptive_constants_are_the_theorems() {
     ] {
         assert!(e.contains(term), "eq24_err_of: {term}");
     }
-    for (name, shared) in [("eq24_delta_err", "false"), ("eq24_shared_delta_err", "true")] {
+    for (name, shared) in [
+        ("eq24_delta_err", "false"),
+        ("eq24_shared_delta_err", "true"),
+    ] {
         assert!(
             def(name).ends_with(&format!(":= eq24_err_of M K1 {shared}")),
             "{name} is not eq24_err_of M K1 {shared}"

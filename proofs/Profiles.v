@@ -245,24 +245,11 @@ Lemma comp_in : forall ui eta A a B b,
 Proof.
   intros ui eta A a B b Hu He He1 HA HB Ha Hb. unfold ap1 in *.
   pose proof (Rabs_pos a). pose proof (Rabs_pos b).
-  assert (E : A * B - a * b = (A - a) * b + a * (B - b) + (A - a) * (B - b)) by ring.
-  assert (T1 : Rabs ((A - a) * b) <= (ui * Rabs a + eta) * Rabs b).
-  { rewrite Rabs_mult. apply Rmult_le_compat_r; [apply Rabs_pos | exact HA]. }
-  assert (T2 : Rabs (a * (B - b)) <= Rabs a * (ui * Rabs b + eta)).
-  { rewrite Rabs_mult. apply Rmult_le_compat_l; [apply Rabs_pos | exact HB]. }
-  assert (T3 : Rabs ((A - a) * (B - b)) <= (ui * Rabs a + eta) * (ui * Rabs b + eta)).
-  { rewrite Rabs_mult. apply Rmult_le_compat; try apply Rabs_pos; assumption. }
-  assert (K1 : eta * Rabs b <= eta * 1) by (apply Rmult_le_compat_l; lra).
-  assert (K2 : eta * Rabs a <= eta * 1) by (apply Rmult_le_compat_l; lra).
-  assert (K3 : ui * eta * Rabs b <= ui * eta * 1)
-    by (apply Rmult_le_compat_l; [apply Rmult_le_pos|]; lra).
-  assert (K4 : ui * eta * Rabs a <= ui * eta * 1)
-    by (apply Rmult_le_compat_l; [apply Rmult_le_pos|]; lra).
-  assert (K5 : ui * eta <= / 2097152 * eta) by (apply Rmult_le_compat_r; lra).
-  assert (K6 : eta * eta <= eta * / 1152921504606846976) by (apply Rmult_le_compat_l; lra).
+  pose proof (Rabs_pos (A - a)). pose proof (Rabs_pos (B - b)).
   assert (D : Rabs (A * B - a * b) <= (2 * ui + ui * ui) * (Rabs a * Rabs b) + 3 * eta).
-  { rewrite E. eapply Rle_trans; [apply Rabs_triang|].
-    eapply Rle_trans; [apply Rplus_le_compat_r, Rabs_triang|]. lra. }
+  { replace (A * B - a * b) with ((A - a) * b + a * (B - b) + (A - a) * (B - b)) by ring.
+    eapply Rle_trans; [apply tri3|]. rewrite !Rabs_mult.
+    assert (0 <= ui * eta) by nra. nra. }
   split; [exact D|].
   replace (A * B) with (a * b + (A * B - a * b)) by ring.
   eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_mult. lra.
@@ -302,10 +289,6 @@ Proof.
   pose proof (unit_pair a b Hua Hub) as S1.
   set (S := Rabs (vx a) * Rabs (vx b) + Rabs (vy a) * Rabs (vy b) + Rabs (vz a) * Rabs (vz b))
     in *.
-  assert (S0 : 0 <= S).
-  { unfold S. pose proof (Rabs_pos (vx a)). pose proof (Rabs_pos (vy a)).
-    pose proof (Rabs_pos (vz a)). pose proof (Rabs_pos (vx b)).
-    pose proof (Rabs_pos (vy b)). pose proof (Rabs_pos (vz b)). nra. }
   destruct (dot_in ui eta A a B b Hi He He1 HA HB (unit_bounded a Hua) (unit_bounded b Hub))
     as [D1 D2]. fold S in D1, D2.
   pose proof (fdot_err um ua eta A B y Hm Ha He Hy) as F.
@@ -313,14 +296,9 @@ Proof.
   set (G := um + 2 * ua) in *.
   assert (G0 : 0 <= G <= 3 / 2097152) by (unfold G; lra).
   assert (U1 : ui * ui <= / 2097152 * ui) by (apply Rmult_le_compat_r; lra).
-  assert (U0 : 0 <= ui * ui) by (apply Rmult_le_pos; lra).
-  assert (X1 : (2 * ui + ui * ui) * S <= (2 * ui + ui * ui) * 1)
-    by (apply Rmult_le_compat_l; lra).
-  assert (X2 : T <= 1 + 3 / 2097152 + 9 * eta).
-  { assert ((1 + 2 * ui + ui * ui) * S <= (1 + 2 * ui + ui * ui) * 1)
-      by (apply Rmult_le_compat_l; lra). lra. }
-  assert (X3 : G * (1 + / 524288) * T <= G * (1 + / 524288) * (1 + 3 / 2097152 + 9 * eta))
-    by (apply Rmult_le_compat_l; [apply Rmult_le_pos|]; lra).
+  assert (X1 : (2 * ui + ui * ui) * S <= (2 * ui + ui * ui) * 1) by nra.
+  assert (X2 : T <= 1 + 3 / 2097152 + 9 * eta) by nra.
+  assert (X3 : G * (1 + / 524288) * T <= G * (1 + / 524288) * (1 + 3 / 2097152 + 9 * eta)) by nra.
   assert (X4 : G * eta <= 3 / 2097152 * eta) by (apply Rmult_le_compat_r; lra).
   replace (y - dot a b) with ((y - dot A B) + (dot A B - dot a b)) by ring.
   eapply Rle_trans; [apply Rabs_triang|].
@@ -340,47 +318,37 @@ Local Notation eta := (m_eta M).
 Local Notation nr := (INR (n s)).
 
 Lemma g_nr : 1 <= nr <= 16777216.
-Proof.
-  split; [apply (le_INR 1); exact Hn1 | exact Hn2].
-Qed.
+Proof. split; [apply (le_INR 1); exact Hn1 | exact Hn2]. Qed.
 
-Lemma g_units : forall k, 0 <= k <= K -> 0 <= k * u <= / 2097152.
-Proof. intros k Hk. destruct (model_unit M K k HM Hk) as [[A B] C]. lra. Qed.
-
-Lemma g_eta : 0 <= eta /\ eta * 1152921504606846976 <= u /\ u <= / 2097152.
+(** The units k u of the model (each at most 2^-21) and eta. *)
+Lemma g_units : 0 <= k_in M * u <= / 2097152 /\ 0 <= k_add M * u <= / 2097152 /\
+  0 <= k_mul M * u <= / 2097152 /\ 0 <= k_div M * u <= / 2097152 /\
+  0 <= eta /\ eta * 1152921504606846976 <= u /\ u <= / 2097152.
 Proof.
-  pose proof HM as (H1 & H2 & H3 & _ & _ & _ & _ & H8 & H9).
-  split; [lra | split; [lra|]].
+  pose proof HM as (H1 & H2 & H3 & Ki & Ka & Km & Kd & H8 & H9).
+  assert (G : forall k, 0 <= k <= K -> 0 <= k * u <= / 2097152)
+    by (intros k Hk; destruct (model_unit M K k HM Hk) as [[A B] C]; lra).
   assert (u <= K * u) by (rewrite <- (Rmult_1_l u) at 1; apply Rmult_le_compat_r; lra).
-  lra.
+  repeat split; try apply G; lra.
 Qed.
-
-Lemma vap_vap1 : forall vh w, vap M vh w -> vap1 (k_in M * u) eta vh w.
-Proof. intros vh w H. exact H. Qed.
 
 Lemma g_pa_pb :
   Rabs (fs_pa F - pa s) <= (2 * (k_in M * u) + k_mul M * u + 2 * (k_add M * u)) * (1 + / 131072) + 18 * eta
   /\ Rabs (fs_pb F - pb s) <= (2 * (k_in M * u) + k_mul M * u + 2 * (k_add M * u)) * (1 + / 131072) + 18 * eta.
 Proof.
-  pose proof HM as (_ & _ & _ & Ki & Ka & Km & Kd & _ & _).
   destruct HF as ((Ina & Inb & Inl) & Hpa & Hpb & _).
-  pose proof (g_units _ Ki). pose proof (g_units _ Ka). pose proof (g_units _ Km).
-  destruct g_eta as (E1 & E2 & E3).
-  split; eapply pa_err; try eassumption; try lra; apply vap_vap1; assumption.
+  destruct g_units as (Ui & Ua & Um & Ud & E1 & E2 & E3).
+  split; eapply pa_err; try eassumption; lra.
 Qed.
 
 Lemma g_dp : Rabs (nr * fs_dp F - (fs_pb F - fs_pa F))
              <= (k_add M * u + k_div M * u) * (2 + / 65536) + 16777218 * eta.
 Proof.
-  pose proof HM as (_ & _ & _ & Ki & Ka & Km & Kd & _ & _).
   destruct HF as (_ & _ & _ & w & Hw & Hdp).
-  pose proof (g_units _ Ki). pose proof (g_units _ Ka). pose proof (g_units _ Km).
-  pose proof (g_units _ Kd).
-  destruct g_eta as (E1 & E2 & E3). pose proof g_nr as Hn.
+  destruct g_units as (Ui & Ua & Um & Ud & E1 & E2 & E3). pose proof g_nr as Hn.
   destruct g_pa_pb as [P1 P2].
   pose proof (pa_le s Hua Hul). pose proof (pb_le s Hub Hul).
-  set (ui := k_in M * u) in *. set (um := k_mul M * u) in *. set (ua := k_add M * u) in *.
-  set (ud := k_div M * u) in *.
+  set (ua := k_add M * u) in *. set (ud := k_div M * u) in *.
   set (X := fs_pb F - fs_pa F).
   assert (BX : Rabs X <= 2 + / 131072).
   { unfold X. replace (fs_pb F - fs_pa F) with ((pb s - pa s) + (fs_pb F - pb s) + - (fs_pa F - pa s))
@@ -388,7 +356,6 @@ Proof.
     eapply Rle_trans; [apply tri3|]. rewrite Rabs_Ropp.
     pose proof (absdiff (pb s) (pa s)). lra. }
   unfold ap_add, ap_div, approx, ap1 in Hw, Hdp. fold ua ud X in Hw, Hdp.
-  assert (W1 : ua * Rabs X <= ua * (2 + / 131072)) by (apply Rmult_le_compat_l; lra).
   assert (BW : Rabs w <= (2 + / 131072) * (1 + / 2097152) + eta).
   { pose proof (abs_near _ _ _ Hw).
     assert (ua * Rabs X <= / 2097152 * (2 + / 131072)) by
@@ -400,8 +367,8 @@ Proof.
     - rewrite <- Rmult_plus_distr_l. apply Rmult_le_compat_l; lra.
     - unfold Rdiv. rewrite Rabs_mult, (Rabs_pos_eq (/ nr)) by (apply Rlt_le, Rinv_0_lt_compat; lra).
       field. lra. }
-  assert (W2 : ud * Rabs w <= ud * ((2 + / 131072) * (1 + / 2097152) + eta))
-    by (apply Rmult_le_compat_l; lra).
+  assert (W1 : ua * Rabs X <= ua * (2 + / 131072)) by (apply Rmult_le_compat_l; lra).
+  assert (W2 : ud * Rabs w <= ud * ((2 + / 131072) * (1 + / 2097152) + eta)) by nra.
   assert (W3 : ud * eta <= eta) by (rewrite <- (Rmult_1_l eta) at 2; apply Rmult_le_compat_r; lra).
   assert (W4 : nr * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra).
   replace (nr * fs_dp F - X) with ((nr * fs_dp F - w) + (w - X)) by ring.
@@ -417,17 +384,15 @@ Proof.
   pose proof (g_near s _ _ _ _ _ Hn1 P1 P2 g_dp i Hi). lra.
 Qed.
 
-Lemma g_final : forall G, gouraud_run M F (n s) G ->
+(** Any model with the size conditions, 1 <= n <= 2^24 and n k_add u <= 2^-11. *)
+Lemma profile_gouraud_generic : forall G, gouraud_run M F (n s) G ->
   nr * (k_add M * u) <= / 2048 ->
   forall i, (i <= n s)%nat ->
   Rabs (G i - gouraud s i) <=
   (10006 / 10000 * k_add M * nr + (20001 / 10000 * k_in M + 10001 / 10000 * k_mul M
    + 40001 / 10000 * k_add M + 20001 / 10000 * k_div M + / 1000000)) * u.
 Proof.
-  intros G [HG0 HG] Hnu i Hi.
-  pose proof HM as (_ & _ & _ & Ki & Ka & Km & Kd & _ & _).
-  pose proof (g_units _ Ki). pose proof (g_units _ Ka). pose proof (g_units _ Km).
-  pose proof (g_units _ Kd). destruct g_eta as (E1 & E2 & E3).
+  intros G [HG0 HG] Hnu i Hi. destruct g_units as (Ui & Ua & Um & Ud & E1 & E2 & E3).
   pose proof (gloop_near (n s) _ _ _ eta (k_add M * u) (gouraud s) G g_nr E1 ltac:(lra) Hnu
     (fun j Hj => conj (g_ideal j Hj) (gouraud_le s Hua Hub Hul Hn1 j Hj))) as L.
   specialize (L ltac:(lra) HG0 HG i Hi). lra.
@@ -462,21 +427,6 @@ Ltac profile_inst gen :=
     apply Rmult_le_compat_r; [apply bpow_ge_0 | lra] ].
 
 (** ** Gouraud: the generic bound and the profiles *)
-
-(** Any model with the size conditions, 1 <= n <= 2^24 and n k_add u <= 2^-11. *)
-Lemma profile_gouraud_generic : forall (M : fmodel) (K : R), model_ok M K ->
-  forall (s : span) (F : fsetup) (G : nat -> R),
-  is_unit (Na s) -> is_unit (Nb s) -> is_unit (L s) ->
-  (1 <= n s)%nat -> INR (n s) <= 16777216 -> INR (n s) * (k_add M * m_u M) <= / 2048 ->
-  gouraud_setup_ok M s F -> gouraud_run M F (n s) G ->
-  forall i, (i <= n s)%nat ->
-  Rabs (G i - gouraud s i) <=
-  (10006 / 10000 * k_add M * INR (n s) + (20001 / 10000 * k_in M + 10001 / 10000 * k_mul M
-   + 40001 / 10000 * k_add M + 20001 / 10000 * k_div M + / 1000000)) * m_u M.
-Proof.
-  intros M K HM s F G Ha Hb Hl Hn1 Hn2 Hnu HF HG i Hi.
-  exact (g_final M K HM s Ha Hb Hl Hn1 Hn2 F HF G HG Hnu i Hi).
-Qed.
 
 (* Note: ieee profile, binary32: round to nearest (k = 1), division correctly
    rounded or reciprocal then product (k = 2 + 2^-20), subnormals kept. *)
@@ -587,11 +537,9 @@ Proof.
             <= nr * Rabs (g - (t + hh)) + nr * Rabs (hh - X)).
     { rewrite <- Rmult_plus_distr_l. apply Rmult_le_compat_l; [lra | apply Rabs_triang]. }
     unfold E2. lra. }
-  assert (Ii : forall z, 0 <= z -> ii * z <= nr * z) by (intros z Hz; apply Rmult_le_compat_r; lra).
-  assert (IG : Rabs (ii * Gx) <= T + D / 2).
-  { rewrite Rabs_mult, (Rabs_pos_eq ii) by lra. pose proof (Ii (Rabs Gx) (Rabs_pos _)). lra. }
-  assert (IE : Rabs (ii * (g - Gx)) <= E2).
-  { rewrite Rabs_mult, (Rabs_pos_eq ii) by lra. pose proof (Ii (Rabs (g - Gx)) (Rabs_pos _)). lra. }
+  assert (Ii : forall z, Rabs (ii * z) <= nr * Rabs z) by (intros z; rewrite Rabs_mult,
+    (Rabs_pos_eq ii) by lra; apply Rmult_le_compat_r; [apply Rabs_pos | lra]).
+  pose proof (Ii Gx) as IG. pose proof (Ii (g - Gx)) as IE.
   assert (Bg : Rabs (ii * g) <= Sg).
   { replace (ii * g) with (ii * Gx + ii * (g - Gx)) by ring.
     eapply Rle_trans; [apply Rabs_triang|]. lra. }
@@ -642,31 +590,18 @@ Proof.
   rewrite E in F.
   set (S := Rabs (vx a0) * Rabs (vx b0) + Rabs (vy a0) * Rabs (vy b0) + Rabs (vz a0) * Rabs (vz b0))
     in *.
-  assert (S0 : 0 <= S).
-  { unfold S. pose proof (Rabs_pos (vx a0)). pose proof (Rabs_pos (vy a0)).
-    pose proof (Rabs_pos (vz a0)). pose proof (Rabs_pos (vx b0)).
-    pose proof (Rabs_pos (vy b0)). pose proof (Rabs_pos (vz b0)). nra. }
-  assert (V1 : v * (wsum0 a0 b0 wa1 wb1 + 3 * Sb + m) <= v * Cv)
-    by (apply Rmult_le_compat_l; lra).
+  assert (V1 : v * (wsum0 a0 b0 wa1 wb1 + 3 * Sb + m) <= v * Cv) by nra.
   assert (V2 : d * (wsum0 a0 b0 wa2 wb2 + m) <= d * Cd) by (apply Rmult_le_compat_l; lra).
   assert (F1 : v * S <= v * Sb) by (apply Rmult_le_compat_l; lra).
   assert (F2 : v * Sb <= v * 12) by (apply Rmult_le_compat_l; lra).
   set (e := v + d) in *.
   assert (G1 : e * e <= / 1048576 * e) by (apply Rmult_le_compat_r; unfold e; lra).
-  assert (G2 : W * e * (W * e) <= W * W / 1048576 * e).
-  { replace (W * e * (W * e)) with (W * W * (e * e)) by ring.
-    replace (W * W / 1048576 * e) with (W * W * (/ 1048576 * e)) by field.
-    apply Rmult_le_compat_l; [nra | exact G1]. }
-  assert (G3 : v * (W * e) <= W / 2097152 * e).
-  { replace (v * (W * e)) with (W * e * v) by ring.
-    replace (W / 2097152 * e) with (W * e * / 2097152) by field.
-    apply Rmult_le_compat_l; [unfold e; nra | lra]. }
-  assert (G4 : v * (W * e * (W * e)) <= / 2097152 * (W * W / 1048576 * e)).
-  { apply Rmult_le_compat; try lra. unfold e; nra. }
-  assert (G5 : m * e >= (W * W / 262144 + W / 32768 + / 10000) * e)
-    by (apply Rle_ge, Rmult_le_compat_r; unfold e; lra).
+  assert (0 <= W * W) by nra. assert (0 <= W * e) by (unfold e; nra).
+  assert (G2 : W * e * (W * e) <= W * W / 1048576 * e) by nra.
+  assert (G3 : v * (W * e) <= W / 2097152 * e) by nra.
+  assert (G4 : v * (W * e * (W * e)) <= / 2097152 * (W * W / 1048576 * e)) by nra.
+  assert (G5 : m * e >= (W * W / 262144 + W / 32768 + / 10000) * e) by nra.
   assert (0 <= W * W / 1048576 * e) by (unfold e; apply Rmult_le_pos; [nra | lra]).
-  assert (0 <= W / 2097152 * e) by (unfold e; apply Rmult_le_pos; lra).
   eapply Rle_trans; [exact F|]. unfold e in *. lra.
 Qed.
 
@@ -761,17 +696,11 @@ Proof.
   assert (R1 : Rabs (rb - ra) <= (1 + / 2097152) * sa + / 1125899906842624).
   { assert (v * / 1073741824 <= / 2097152 * / 1073741824) by (apply Rmult_le_compat_r; lra).
     unfold sa in *. lra. }
-  assert (P2 : v * Rabs (rb - ra) <= v * ((1 + / 2097152) * sa + / 1125899906842624))
-    by (apply Rmult_le_compat_l; lra).
+  assert (P2 : v * Rabs (rb - ra) <= v * ((1 + / 2097152) * sa + / 1125899906842624)) by nra.
   assert (T1 : Rabs t <= (1 + / 1048576) * sa + / 1099511627776).
   { pose proof (abs_near _ _ _ F3).
-    assert (v * Rabs (rb - ra) <= / 2097152 * Rabs (rb - ra))
-      by (apply Rmult_le_compat_r; [apply Rabs_pos | lra]).
-    assert (v * / 68719476736 <= / 2097152 * / 68719476736) by (apply Rmult_le_compat_r; lra).
     assert (0 <= sa <= 2) by (unfold sa; lra). lra. }
-  assert (P3 : d * Rabs t <= d * ((1 + / 1048576) * sa + / 1099511627776))
-    by (apply Rmult_le_compat_l; lra).
-  assert (P4 : v * sa <= / 2097152 * sa) by (apply Rmult_le_compat_r; unfold sa; lra).
+  assert (P3 : d * Rabs t <= d * ((1 + / 1048576) * sa + / 1099511627776)) by nra.
   assert (P5 : 0 <= v * sa) by (apply Rmult_le_pos; unfold sa; lra).
   assert (P6 : 0 <= d * sa) by (apply Rmult_le_pos; unfold sa; lra).
   replace (m * kj - (b0 - a0))
@@ -840,38 +769,32 @@ Proof. kdot (INR (n s)) 1 2 He. Qed.
 Lemma K_d : Rabs (nr * fd - 2 * dot Dl (Na s)) <= 2803 / 100 * v + 402 / 100 * d.
 Proof.
   basics. pose proof K_d0 as H0. pose proof (dl_dot_le s Hua Hub (Na s) Hua) as H1.
-  eapply Rle_trans.
-  { apply (ap_step v eta Hv nr fd (2 * e) (2 * (nr * e)) _ (2402 / 100 * v + 402 / 100 * d)
-             (4001 / 1000) Hd); [lra | ring | | ].
-    - rewrite <- Rmult_minus_distr_l, Rabs_mult, (Rabs_pos_eq 2) by lra. lra.
-    - rewrite Rabs_mult, (Rabs_pos_eq 2) by lra. lra. }
-  lra.
+  eapply Rle_trans; [apply (ap_step v eta Hv nr fd (2 * e) (2 * (nr * e)) _
+             (2402 / 100 * v + 402 / 100 * d) (4001 / 1000) Hd); [lra | ring | | ] | lra].
+  - rewrite <- Rmult_minus_distr_l, Rabs_mult, (Rabs_pos_eq 2) by lra. lra.
+  - rewrite Rabs_mult, (Rabs_pos_eq 2) by lra. lra.
 Qed.
 
 Lemma K_c2 : Rabs (nr * q - 2 * dot Dl Dl) <= 6405 / 100 * v + 1602 / 100 * d.
 Proof.
   basics. pose proof K_c as H0. pose proof (dl_dd s Hua Hub) as H1.
-  eapply Rle_trans.
-  { apply (ap_step v eta Hv nr q (2 * nr * fc) (2 * (nr * nr * fc)) _
-             (5604 / 100 * v + 1602 / 100 * d) (8001 / 1000) Hq); [lra | ring | | ].
-    - rewrite <- Rmult_minus_distr_l, Rabs_mult, (Rabs_pos_eq 2) by lra. lra.
-    - rewrite Rabs_mult, (Rabs_pos_eq 2), Rabs_pos_eq by lra. lra. }
-  lra.
+  eapply Rle_trans; [apply (ap_step v eta Hv nr q (2 * nr * fc) (2 * (nr * nr * fc)) _
+             (5604 / 100 * v + 1602 / 100 * d) (8001 / 1000) Hq); [lra | ring | | ] | lra].
+  - rewrite <- Rmult_minus_distr_l, Rabs_mult, (Rabs_pos_eq 2) by lra. lra.
+  - rewrite Rabs_mult, (Rabs_pos_eq 2), Rabs_pos_eq by lra. lra.
 Qed.
 
 Lemma K_qb : Rabs (nr * fdqb - 2 * dot Dl (Nb s)) <= 9609 / 100 * v + 2004 / 100 * d.
 Proof.
   basics. pose proof K_c2 as H0. pose proof K_d as H1.
   pose proof (dl_dot_le s Hua Hub (Nb s) Hub) as H2.
-  eapply Rle_trans.
-  { apply (ap_step v eta Hv nr fdqb (q + fd) (nr * q + nr * fd) _
-             (9208 / 100 * v + 2004 / 100 * d) (4001 / 1000) Hdqb); [lra | ring | | ].
-    - rewrite <- (dl_sum s).
-      replace (nr * q + nr * fd - 2 * (dot Dl Dl + dot Dl (Na s)))
-        with ((nr * q - 2 * dot Dl Dl) + (nr * fd - 2 * dot Dl (Na s))) by ring.
-      eapply Rle_trans; [apply Rabs_triang|]. lra.
-    - rewrite Rabs_mult, (Rabs_pos_eq 2) by lra. lra. }
-  lra.
+  eapply Rle_trans; [apply (ap_step v eta Hv nr fdqb (q + fd) (nr * q + nr * fd) _
+             (9208 / 100 * v + 2004 / 100 * d) (4001 / 1000) Hdqb); [lra | ring | | ] | lra].
+  - rewrite <- (dl_sum s).
+    replace (nr * q + nr * fd - 2 * (dot Dl Dl + dot Dl (Na s)))
+      with ((nr * q - 2 * dot Dl Dl) + (nr * fd - 2 * dot Dl (Na s))) by ring.
+    eapply Rle_trans; [apply Rabs_triang|]. lra.
+  - rewrite Rabs_mult, (Rabs_pos_eq 2) by lra. lra.
 Qed.
 
 Lemma K_h : forall (x X h : R), ap1 d eta h (X / 2) -> Rabs x <= 1 ->
@@ -884,8 +807,7 @@ Proof.
   rewrite Rmult_1_l in H. eapply Rle_trans; [apply H|lra].
   - replace (X / 2 - x / 2) with ((X - x) * / 2) by field.
     rewrite Rabs_mult, (Rabs_pos_eq (/ 2)) by lra. lra.
-  - replace (x / 2) with (x * / 2) by field.
-    rewrite Rabs_mult, (Rabs_pos_eq (/ 2)) by lra. lra.
+  - unfold Rdiv. rewrite Rabs_mult, (Rabs_pos_eq (/ 2)) by lra. lra.
 Qed.
 
 (** x = h F with h the halving of fP (within [K_h]) and n F within E of 2 X. *)
@@ -901,14 +823,12 @@ Proof.
   assert (H4 : Rabs (nr * F) <= 4001 / 1000).
   { pose proof (abs_near _ _ _ H0).
     assert (Rabs (2 * X) <= 4) by (rewrite Rabs_mult, (Rabs_pos_eq 2) by lra; lra). lra. }
-  assert (H5 : Rabs (P / 2) <= 1 / 2).
-  { replace (P / 2) with (P * / 2) by field.
-    rewrite Rabs_mult, (Rabs_pos_eq (/ 2)) by lra. lra. }
+  assert (H5 : Rabs (P / 2) <= 1 / 2)
+    by (unfold Rdiv; rewrite Rabs_mult, (Rabs_pos_eq (/ 2)) by lra; lra).
   pose proof (prod_err h (P / 2) (nr * F) (2 * X) _ _ _ _ H3 H0 H4 H5) as H6.
   replace (P / 2 * (2 * X)) with (P * X) in H6 by field.
-  assert (H7 : Rabs (P * X) <= 2).
-  { rewrite Rabs_mult. replace 2 with (1 * 2) by ring.
-    apply Rmult_le_compat; try apply Rabs_pos; assumption. }
+  assert (H7 : Rabs (P * X) <= 2)
+    by (rewrite Rabs_mult; pose proof (Rabs_pos P); pose proof (Rabs_pos X); nra).
   apply (ap_step v eta Hv nr x (h * F) (h * (nr * F)) _ _ (2001 / 1000) Hx);
     [lra | ring | exact H6 | lra].
 Qed.
@@ -961,27 +881,24 @@ Lemma K_w : Rabs (nr * w - e_n2ds s) <= 9211 / 100 * v + 1605 / 100 * d.
 Proof.
   basics. pose proof K_xa as H0. pose proof K_xb as H1. pose proof K_dia_r as H2.
   pose proof K_dib_r as H3. pose proof (n2ds_le s Hua Hub Hul) as H4.
-  eapply Rle_trans.
-  { apply (ap_step v eta Hv nr w (fdib - fdia) (nr * fdib - nr * fdia) _
-             (9010 / 100 * v + 1605 / 100 * d) (2001 / 1000) Hw); [lra | ring | | lra].
-    unfold e_n2ds, e_ndib, e_ndia.
-    replace (nr * fdib - nr * fdia
-             - (dot Dl (L s) - pb s * dot Dl (Nb s) - (dot Dl (L s) - pa s * dot Dl (Na s))))
-      with ((nr * fdib - (nr * fa - nr * x2))
-            + - (nr * fdia - (nr * fa - nr * x1))
-            + (nr * x1 - pa s * dot Dl (Na s))
-            + - (nr * x2 - pb s * dot Dl (Nb s))) by ring.
-    eapply Rle_trans; [apply tri4|]. rewrite !Rabs_Ropp. lra. }
-  lra.
+  eapply Rle_trans; [apply (ap_step v eta Hv nr w (fdib - fdia) (nr * fdib - nr * fdia) _
+             (9010 / 100 * v + 1605 / 100 * d) (2001 / 1000) Hw); [lra | ring | | lra] | lra].
+  unfold e_n2ds, e_ndib, e_ndia.
+  replace (nr * fdib - nr * fdia
+           - (dot Dl (L s) - pb s * dot Dl (Nb s) - (dot Dl (L s) - pa s * dot Dl (Na s))))
+    with ((nr * fdib - (nr * fa - nr * x2))
+          + - (nr * fdia - (nr * fa - nr * x1))
+          + (nr * x1 - pa s * dot Dl (Na s))
+          + - (nr * x2 - pb s * dot Dl (Nb s))) by ring.
+  eapply Rle_trans; [apply tri4|]. rewrite !Rabs_Ropp. lra.
 Qed.
 
 Lemma K_ds : Rabs (nr * nr * fds - e_n2ds s) <= 9211 / 100 * v + 1806 / 100 * d.
 Proof.
   basics. pose proof K_w as H0. pose proof (n2ds_le s Hua Hub Hul) as H1.
-  eapply Rle_trans.
-  { apply (ap_step d eta Hdv (nr * nr) fds (w / nr) (nr * w) _
-             (9211 / 100 * v + 1605 / 100 * d) (2001 / 1000) Hds); [nra | field; lra | exact H0 | lra]. }
-  lra.
+  eapply Rle_trans; [apply (ap_step d eta Hdv (nr * nr) fds (w / nr) (nr * w) _
+             (9211 / 100 * v + 1605 / 100 * d) (2001 / 1000) Hds);
+    [nra | field; lra | exact H0 | lra] | lra].
 Qed.
 
 Lemma K_Yb : Rabs (nr * (nr - 1) / 2 * fds) <= 1001 / 1000.
@@ -990,11 +907,10 @@ Proof. basics. exact (Yb_near nr _ _ _ ltac:(lra) K_ds (n2ds_le s Hua Hub Hul) l
 (** p_n = p_a + n di_a + n(n-1)/2 ds, the three terms summed in any order. *)
 Lemma K_rhon : Rabs (fpn - (fpa + nr * fdia + nr * (nr - 1) / 2 * fds)) <= 1202 / 100 * v.
 Proof.
-  basics. pose proof K_dia as G0. pose proof (ndia_le s Hua Hub Hul) as G1.
+  ebasics. pose proof K_dia as G0. pose proof (ndia_le s Hua Hub Hul) as G1.
   pose proof K_pa as G2. pose proof (pa_le s Hua Hul) as G3. pose proof K_Yb as G4.
-  pose proof (e_pos v eta Hv) as E0. pose proof (e_small v eta Hv) as E1.
   pose proof (sum3_err v v eta fpa (nr * fdia) (nr * (nr - 1) / 2 * fds) fpa q2 q3 fpn
-                ltac:(lra) ltac:(lra) E0 (ap1_exact v eta fpa ltac:(lra) E0) Hq2 Hq3 Hpn) as S.
+                ltac:(lra) ltac:(lra) He0 (ap1_exact v eta fpa ltac:(lra) He0) Hq2 Hq3 Hpn) as S.
   assert (B1 : Rabs (nr * fdia) <= 2001 / 1000) by (pose proof (abs_near _ _ _ G0); lra).
   assert (B2 : Rabs fpa <= 1001 / 1000) by (pose proof (abs_near _ _ _ G2); lra).
   assert (B3 : (v + 2 * v) * (1 + / 524288) * (Rabs fpa + Rabs (nr * fdia)
@@ -1027,10 +943,8 @@ Proof.
   assert (B : Rabs feps <= 5007 / 1000).
   { apply (Rle_trans _ _ _ (abs_near _ _ _ G1)).
     pose proof (absdiff fpn fpb). pose proof (abs_near _ _ _ G0). lra. }
-  eapply Rle_trans.
-  { apply (ap_step d eta Hdv nr fdeps (feps / nr) feps feps 0 (5007 / 1000) Hdeps);
-      [lra | field; lra | rewrite Rminus_diag_eq, Rabs_R0 by reflexivity; lra | lra]. }
-  lra.
+  eapply Rle_trans; [apply (ap_step d eta Hdv nr fdeps (feps / nr) feps feps 0 (5007 / 1000) Hdeps);
+      [lra | field; lra | rewrite Rminus_diag_eq, Rabs_R0 by reflexivity; lra | lra] | lra].
 Qed.
 
 Lemma K_R : Rabs (nr * ft0 - (fpb - fpa - nr * (nr - 1) / 2 * fds)) <= 2004 / 100 * v + 501 / 100 * d.
@@ -1106,19 +1020,18 @@ Proof. intros i Hi hh g m p Hh Hg Hm Hp. ce_closed v eta. Qed.
     The exact run is [euler_span s i] = p_a + i di_a + i(i-1)/2 ds. *)
 
 Lemma K_kap : forall i, (i <= n s)%nat ->
-  0 <= INR i * (INR i - 1) / (2 * (nr * nr)) <= 1 / 2.
+  0 <= INR i / nr <= 1 /\ 0 <= INR i * (INR i - 1) / (2 * (nr * nr)) <= 1 / 2.
 Proof.
   intros i Hi. basics.
-  assert (Hi' : INR i <= nr) by (apply le_INR; exact Hi).
+  assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
+  split; [apply theta_rng; lra|].
   assert (H0 : 0 <= INR i * (INR i - 1)).
-  { destruct i as [|i'].
-    - cbn [INR]. lra.
-    - assert (1 <= INR (S i')) by (apply (le_INR 1); lia). nra. }
+  { destruct i as [|i']; [cbn [INR]; lra|].
+    assert (1 <= INR (S i')) by (apply (le_INR 1); lia). nra. }
   split.
   - unfold Rdiv. apply Rmult_le_pos; [lra | apply Rlt_le, Rinv_0_lt_compat; nra].
   - apply (Rmult_le_reg_r (2 * (nr * nr))); [nra|]. unfold Rdiv.
     rewrite Rmult_assoc, Rinv_l by nra.
-    pose proof (pos_INR i).
     assert (INR i * INR i <= nr * nr) by (apply Rmult_le_compat; lra). nra.
 Qed.
 
@@ -1132,21 +1045,23 @@ Proof.
   field. lra.
 Qed.
 
+(** The combination a + th b + ka c of [K_eu_exact] (th in [0, 1], ka in [0, 1/2]). *)
+Lemma comb3 : forall th ka a b c ea eb ec, 0 <= th <= 1 -> 0 <= ka <= 1 / 2 ->
+  Rabs a <= ea -> Rabs b <= eb -> Rabs c <= ec -> Rabs (a + th * b + ka * c) <= ea + eb + ec / 2.
+Proof.
+  intros th ka a b c ea eb ec Th Ka Xa Xb Xc.
+  eapply Rle_trans; [apply tri3|]. rewrite !Rabs_mult, (Rabs_pos_eq th), (Rabs_pos_eq ka) by lra.
+  assert (th * Rabs b <= 1 * eb) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
+  assert (ka * Rabs c <= 1 / 2 * ec) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
+  lra.
+Qed.
+
 (** |p_i| <= 1 + 2 + 1.54/2 on the exact run. *)
 Lemma K_eu_le : forall i, (i <= n s)%nat -> Rabs (euler_span s i) <= 377 / 100.
 Proof.
-  intros i Hi. basics.
-  assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
-  pose proof (theta_rng nr (INR i) ltac:(lra) Hi') as Th. pose proof (K_kap i Hi) as Ka.
-  pose proof (pa_le s Hua Hul). pose proof (ndia_le s Hua Hub Hul).
-  pose proof (n2ds_le' s Hua Hub Hul).
-  rewrite (K_eu_exact i Hi).
-  set (th := INR i / nr) in *. set (ka := INR i * (INR i - 1) / (2 * (nr * nr))) in *.
-  eapply Rle_trans; [apply tri3|]. rewrite !Rabs_mult, (Rabs_pos_eq th), (Rabs_pos_eq ka) by lra.
-  assert (th * Rabs (e_ndia s) <= 1 * 2) by (apply Rmult_le_compat; try lra; apply Rabs_pos).
-  assert (ka * Rabs (e_n2ds s) <= 1 / 2 * (154 / 100))
-    by (apply Rmult_le_compat; try lra; apply Rabs_pos).
-  lra.
+  intros i Hi. destruct (K_kap i Hi) as [Th Ka]. rewrite (K_eu_exact i Hi).
+  pose proof (comb3 _ _ _ _ _ _ _ _ Th Ka (pa_le s Hua Hul) (ndia_le s Hua Hub Hul)
+                (n2ds_le' s Hua Hub Hul)). lra.
 Qed.
 
 (** The computed values on their exact recurrence: p_a, di_a, ds carried exactly. *)
@@ -1154,46 +1069,28 @@ Lemma K_eu_ideal : forall i, (i <= n s)%nat ->
   Rabs (fpa + INR i * fdia + INR i * (INR i - 1) / 2 * fds - euler_span s i)
   <= 9111 / 100 * v + 1507 / 100 * d.
 Proof.
-  intros i Hi. basics.
-  assert (Hi' : 0 <= INR i <= nr) by (split; [apply pos_INR | apply le_INR; exact Hi]).
-  pose proof (theta_rng nr (INR i) ltac:(lra) Hi') as Th. pose proof (K_kap i Hi) as Ka.
-  pose proof K_pa as G0. pose proof K_dia as G1. pose proof K_ds as G2.
-  rewrite (K_eu_exact i Hi).
+  intros i Hi. basics. destruct (K_kap i Hi) as [Th Ka]. rewrite (K_eu_exact i Hi).
   replace (fpa + INR i * fdia + INR i * (INR i - 1) / 2 * fds
            - (pa s + INR i / nr * e_ndia s + INR i * (INR i - 1) / (2 * (nr * nr)) * e_n2ds s))
     with ((fpa - pa s) + INR i / nr * (nr * fdia - e_ndia s)
           + INR i * (INR i - 1) / (2 * (nr * nr)) * (nr * nr * fds - e_n2ds s))
     by (field; lra).
-  set (th := INR i / nr) in *. set (ka := INR i * (INR i - 1) / (2 * (nr * nr))) in *.
-  eapply Rle_trans; [apply tri3|]. rewrite !Rabs_mult, (Rabs_pos_eq th), (Rabs_pos_eq ka) by lra.
-  assert (th * Rabs (nr * fdia - e_ndia s) <= 1 * (4005 / 100 * v + 603 / 100 * d))
-    by (apply Rmult_le_compat; try lra; apply Rabs_pos).
-  assert (ka * Rabs (nr * nr * fds - e_n2ds s) <= 1 / 2 * (9211 / 100 * v + 1806 / 100 * d))
-    by (apply Rmult_le_compat; try lra; apply Rabs_pos).
-  lra.
+  pose proof (comb3 _ _ _ _ _ _ _ _ Th Ka K_pa K_dia K_ds). lra.
 Qed.
 
 (** Computed slopes (ideal, on the computed di_a and ds): |n (di_a + J ds)| <= 2 + 1.54. *)
 Lemma K_eu_slope : forall J, (J <= n s)%nat ->
   Rabs (nr * (fdia + INR J * fds)) <= 354 / 100 + 200 * (v + d).
 Proof.
-  intros J HJ. basics.
-  assert (HJ' : 0 <= INR J <= nr) by (split; [apply pos_INR | apply le_INR; exact HJ]).
-  pose proof (theta_rng nr (INR J) ltac:(lra) HJ') as Th.
-  pose proof K_dia as G1. pose proof K_ds as G2.
+  intros J HJ. basics. destruct (K_kap J HJ) as [Th _].
+  pose proof (abs_near _ _ _ K_dia). pose proof (abs_near _ _ _ K_ds).
   pose proof (ndia_le s Hua Hub Hul). pose proof (n2ds_le' s Hua Hub Hul).
-  replace (nr * (fdia + INR J * fds))
-    with ((nr * fdia - e_ndia s) + INR J / nr * (nr * nr * fds - e_n2ds s)
-          + (e_ndia s + INR J / nr * e_n2ds s)) by (field; lra).
-  set (th := INR J / nr) in *.
-  eapply Rle_trans; [apply tri3|].
-  assert (Rabs (th * (nr * nr * fds - e_n2ds s)) <= 1 * (9211 / 100 * v + 1806 / 100 * d)).
-  { rewrite Rabs_mult, (Rabs_pos_eq th) by lra.
-    apply Rmult_le_compat; try lra; apply Rabs_pos. }
-  assert (Rabs (e_ndia s + th * e_n2ds s) <= 2 + 1 * (154 / 100)).
-  { eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_mult, (Rabs_pos_eq th) by lra.
-    assert (th * Rabs (e_n2ds s) <= 1 * (154 / 100))
-      by (apply Rmult_le_compat; try lra; apply Rabs_pos). lra. }
+  replace (nr * (fdia + INR J * fds)) with (nr * fdia + INR J / nr * (nr * nr * fds))
+    by (field; lra).
+  eapply Rle_trans; [apply Rabs_triang|].
+  rewrite (Rabs_mult (INR J / nr)), (Rabs_pos_eq (INR J / nr)) by lra.
+  assert (INR J / nr * Rabs (nr * nr * fds) <= 1 * (154 / 100 + (9211 / 100 * v + 1806 / 100 * d)))
+    by (apply Rmult_le_compat; try lra; apply Rabs_pos).
   lra.
 Qed.
 
@@ -1246,17 +1143,13 @@ Proof.
   assert (D2 : Rabs (nr * nr * fds) <= 2001 / 1000) by (pose proof (abs_near _ _ _ D0); lra).
   assert (Bds : Rabs fds <= 2001 / 1000).
   { rewrite Rabs_mult, (Rabs_pos_eq (nr * nr)) in D2 by nra.
-    assert (1 <= nr * nr) by nra.
-    assert (1 * Rabs fds <= nr * nr * Rabs fds)
-      by (apply Rmult_le_compat_r; [apply Rabs_pos | lra]).
-    lra. }
+    assert (1 <= nr * nr) by nra. nra. }
   set (a := (INR i - 1) / 2) in *. set (X := a * fds) in *.
   assert (AX : Rabs X = Rabs a * Rabs fds) by (unfold X; apply Rabs_mult).
-  pose proof (Rabs_pos X) as X0. pose proof (Rabs_pos fds) as F0. pose proof (Rabs_pos a) as A0.
-  assert (VD : v * d * Rabs X <= / 2097152 * d * Rabs X).
-  { apply Rmult_le_compat_r; [lra|]. apply Rmult_le_compat_r; lra. }
+  pose proof (Rabs_pos X) as X0. pose proof (Rabs_pos fds) as F0.
   assert (VX : 0 <= v * Rabs X) by (apply Rmult_le_pos; lra).
   assert (DX : 0 <= d * Rabs X) by (apply Rmult_le_pos; lra).
+  assert (VD : v * d * Rabs X <= / 2097152 * d * Rabs X) by nra.
   destruct H as [(c & Hcc & Hhh) | (y & Hyy & Hhh)]; unfold ap1 in *.
   - assert (E1 : Rabs ((c - a) * fds) <= d * Rabs X + eta * Rabs fds).
     { rewrite Rabs_mult, AX.
@@ -1321,16 +1214,13 @@ Proof.
   intros M K K1 HM HK1 Hi1 Ha1 Hm1 Hd1.
   pose proof HM as (Hu & He0 & He2 & Ki & Ka & Km & Kd & HK0 & HK2).
   set (u := m_u M) in *.
-  assert (Hsm : forall k, 1 <= k <= K -> small_ok (k * u) (m_eta M)).
-  { intros k Hk. assert (k * u <= K * u) by (apply Rmult_le_compat_r; lra).
-    assert (u <= k * u) by (rewrite <- (Rmult_1_l u) at 1; apply Rmult_le_compat_r; lra).
-    repeat split; lra. }
-  assert (AK : forall k y x, k <= K1 -> approx k u (m_eta M) y x -> ap1 (K1 * u) (m_eta M) y x).
-  { intros k y x Hk H. eapply ap1_mono; [|exact H]. apply Rmult_le_compat_r; lra. }
-  assert (Wa : k_add M * u <= K1 * u) by (apply Rmult_le_compat_r; lra).
-  assert (Wm : k_mul M * u <= K1 * u) by (apply Rmult_le_compat_r; lra).
+  assert (Hsm : forall k, 1 <= k <= K -> small_ok (k * u) (m_eta M))
+    by (intros k Hk; repeat split; nra).
+  assert (AK : forall k y x, k <= K1 -> approx k u (m_eta M) y x -> ap1 (K1 * u) (m_eta M) y x)
+    by (intros k y x Hk H; eapply ap1_mono; [|exact H]; nra).
+  assert (Wa : k_add M * u <= K1 * u) by nra. assert (Wm : k_mul M * u <= K1 * u) by nra.
   split; [apply Hsm; lra|]. split; [apply Hsm; lra|]. split; [exact Wa|].
-  split; [apply Rmult_le_pos; lra|]. split; [exact AK|].
+  split; [nra|]. split; [exact AK|].
   split; [intros a b y H; eapply fdot_mono; [exact Wm | exact Wa | exact H]|].
   intros vh w0 (A1 & A2 & A3). repeat split; (eapply AK; [| eassumption]); lra.
 Qed.
@@ -1393,6 +1283,21 @@ Context (M : fmodel) (K K1 : R) (HM : model_ok M K) (HK1 : 1 <= K1 <= K) (Hi1 : 
 Context (s : span) (Ha : is_unit (Na s)) (Hb : is_unit (Nb s)) (Hl : is_unit (L s))
         (Hn1 : (1 <= n s)%nat) (Hn2 : INR (n s) <= 16777216).
 
+(** A generic bound from the section CE lemma [lem] through [core] ([ce_core] or
+    [eu_core]): the loop ([loop_gen]) or a closed form, h exact or halved
+    ([closed_gen]); each operation's bound taken to the unit v = K1 u. *)
+Ltac loop_gen core lem :=
+  intros F P Q Hnu HF [HP0 [HQ0 Hst]] i Hi; core lem;
+  match goal with R0 : forall ua (P Q : nat -> R), _ |- _ =>
+    eapply Rle_trans; [exact (R0 (k_add M * m_u M) P Q ltac:(lra) Hnu HP0 HQ0 Hst i Hi)|]; lra end.
+Ltac closed_gen core lem :=
+  intros F HF i Hi h g m p Hh Hg Hm Hp;
+  try apply (half_ok_rel M K1 i (fs_ds F) h ltac:(pose proof (model_u M K HM); lra) Hm1) in Hh;
+  core lem; match goal with AK : forall k y x, k <= K1 -> approx k _ _ y x -> _,
+    R0 : forall i, (i <= n s)%nat -> _ |- _ =>
+    eapply Rle_trans; [apply (R0 i Hi h g m p); first [exact Hh | exact (AK _ _ _ Hm1 Hh)
+      | exact (AK _ _ _ Hm1 Hm) | exact (AK _ _ _ Ha1 Hg) | exact (AK _ _ _ Ha1 Hp)] | lra] end.
+
 (** Any model with the size conditions, 1 <= n <= 2^24 and n k_add u <= 2^-11;
     K1 >= 1 bounds k_in, k_add, k_mul (unit v = K1 u) and k_div >= 1 (unit
     d = k_div u): the loop contributes 2.2 k_add n u, the set-up
@@ -1404,9 +1309,7 @@ Lemma profile_corrected_euler_generic :
   Rabs (P i - ceuler s i) <=
   (22 / 10 * k_add M * INR (n s) + 366 / 10 * K1 + 73 / 10 * k_div M) * m_u M.
 Proof.
-  intros F P Q Hnu HF [HP0 [HQ0 Hst]] i Hi.
-  ce_core K_ce_final.
-  eapply Rle_trans; [exact (R0 (k_add M * m_u M) P Q ltac:(lra) Hnu HP0 HQ0 Hst i Hi)|]. lra.
+  loop_gen ce_core K_ce_final.
 Qed.
 
 (** Any model with the size conditions, 1 <= n <= 2^24 and n k_add u <= 2^-11;
@@ -1420,9 +1323,7 @@ Lemma profile_euler_generic :
   Rabs (P i - euler_span s i) <=
   (555 / 100 * k_add M * INR (n s) + 912 / 10 * K1 + 151 / 10 * k_div M) * m_u M.
 Proof.
-  intros F P Q Hnu HF [HP0 [HQ0 Hst]] i Hi.
-  eu_core K_eu_final.
-  eapply Rle_trans; [exact (R0 (k_add M * m_u M) P Q ltac:(lra) Hnu HP0 HQ0 Hst i Hi)|]. lra.
+  loop_gen eu_core K_eu_final.
 Qed.
 
 (** Euler's closed form p_i = p_a + i (di_a + (i-1)/2 ds) evaluated in the model
@@ -1434,10 +1335,7 @@ Lemma profile_euler_closed_generic : forall F : fsetup, eu_setup_ok M s F ->
   ap_mul M m (INR i * g) -> ap_add M p (fs_pa F + m) ->
   Rabs (p - euler_span s i) <= (1012 / 10 * K1 + 151 / 10 * k_div M) * m_u M.
 Proof.
-  intros F HF i Hi h g m p Hh Hg Hm Hp.
-  eu_core K_eu_closed.
-  eapply Rle_trans; [exact (R0 i Hi h g m p (AK _ _ _ Hm1 Hh) (AK _ _ _ Ha1 Hg) (AK _ _ _ Hm1 Hm)
-                              (AK _ _ _ Ha1 Hp))|]. lra.
+  closed_gen eu_core K_eu_closed.
 Qed.
 
 (** p_i = p_a + i (t0 + (i-1)/2 ds) evaluated in the model (h = (i-1)/2 ds,
@@ -1448,10 +1346,7 @@ Lemma profile_corrected_euler_closed_generic : forall F : fsetup, ce_setup_ok M 
   ap_mul M m (INR i * g) -> ap_add M p (fs_pa F + m) ->
   Rabs (p - ceuler s i) <= (45 * K1 + 73 / 10 * k_div M) * m_u M.
 Proof.
-  intros F HF i Hi h g m p Hh Hg Hm Hp.
-  ce_core K_closed.
-  eapply Rle_trans; [exact (R0 i Hi h g m p (AK _ _ _ Hm1 Hh) (AK _ _ _ Ha1 Hg) (AK _ _ _ Hm1 Hm)
-                              (AK _ _ _ Ha1 Hp))|]. lra.
+  closed_gen ce_core K_closed.
 Qed.
 
 (** As [profile_corrected_euler_closed_generic] and
@@ -1465,11 +1360,7 @@ Lemma profile_corrected_euler_closed_half_generic : forall F : fsetup, ce_setup_
   ap_mul M m (INR i * g) -> ap_add M p (fs_pa F + m) ->
   Rabs (p - ceuler s i) <= (45 * K1 + 83 / 10 * k_div M) * m_u M.
 Proof.
-  intros F HF i Hi h g m p Hh Hg Hm Hp.
-  pose proof (half_ok_rel M K1 i (fs_ds F) h ltac:(pose proof (model_u M K HM); lra) Hm1 Hh) as HH.
-  ce_core K_closed_h.
-  eapply Rle_trans;
-    [exact (R0 i Hi h g m p HH (AK _ _ _ Ha1 Hg) (AK _ _ _ Hm1 Hm) (AK _ _ _ Ha1 Hp))|]. lra.
+  closed_gen ce_core K_closed_h.
 Qed.
 
 Lemma profile_euler_closed_half_generic : forall F : fsetup, eu_setup_ok M s F ->
@@ -1478,11 +1369,7 @@ Lemma profile_euler_closed_half_generic : forall F : fsetup, eu_setup_ok M s F -
   ap_mul M m (INR i * g) -> ap_add M p (fs_pa F + m) ->
   Rabs (p - euler_span s i) <= (1012 / 10 * K1 + 1585 / 100 * k_div M) * m_u M.
 Proof.
-  intros F HF i Hi h g m p Hh Hg Hm Hp.
-  pose proof (half_ok_rel M K1 i (fs_ds F) h ltac:(pose proof (model_u M K HM); lra) Hm1 Hh) as HH.
-  eu_core K_eu_closed_h.
-  eapply Rle_trans;
-    [exact (R0 i Hi h g m p HH (AK _ _ _ Ha1 Hg) (AK _ _ _ Hm1 Hm) (AK _ _ _ Ha1 Hp))|]. lra.
+  closed_gen eu_core K_eu_closed_h.
 Qed.
 
 End Generic.
@@ -1798,6 +1685,23 @@ Proof.
   exact (rn_std_model emin prec choice Hp x).
 Qed.
 
+(** One ulp of the format is at most 2^(1-prec) |x| + 2^emin. *)
+Lemma ulp_le_rel : forall (emin prec : Z) (x : R), Prec_gt_0 prec ->
+  ulp radix2 (FLT_exp emin prec) x <= 2 * bpow radix2 (- prec) * Rabs x + bpow radix2 emin.
+Proof.
+  intros emin prec x HP.
+  assert (U0 : 0 < bpow radix2 (- prec)) by apply bpow_gt_0.
+  pose proof (Rabs_pos x). pose proof (bpow_ge_0 radix2 emin).
+  destruct (Rlt_or_le (Rabs x) (bpow radix2 (emin + prec - 1))) as [Hs | Hb].
+  - rewrite (ulp_FLT_small radix2 emin prec x).
+    + assert (0 <= 2 * bpow radix2 (- prec) * Rabs x) by nra. lra.
+    + eapply Rlt_le_trans; [exact Hs|]. apply bpow_le. lia.
+  - pose proof (ulp_FLT_le radix2 emin prec x Hb) as U.
+    replace (bpow radix2 (1 - prec)) with (2 * bpow radix2 (- prec)) in U
+      by (replace (1 - prec)%Z with (1 + - prec)%Z by ring; rewrite bpow_plus, bpow_1; reflexivity).
+    lra.
+Qed.
+
 (** Any rounding of the format (toward zero, up, down, to nearest, ...):
     error below one ulp, so k = 2, eta = 2^emin. *)
 Lemma faithful_covered : forall (emin prec : Z) (rnd : R -> Z), (0 < prec)%Z -> Valid_rnd rnd ->
@@ -1806,21 +1710,11 @@ Lemma faithful_covered : forall (emin prec : Z) (rnd : R -> Z), (0 < prec)%Z -> 
     (round radix2 (FLT_exp emin prec) rnd x) x.
 Proof.
   intros emin prec rnd Hp Hr x. unfold approx, ap1.
-  assert (HP : Prec_gt_0 prec) by exact Hp.
-  assert (U0 : 0 < bpow radix2 (- prec)) by apply bpow_gt_0.
-  assert (E0 : 0 < bpow radix2 emin) by apply bpow_gt_0.
-  pose proof (Rabs_pos x).
+  assert (HP : Prec_gt_0 prec) by exact Hp. pose proof (bpow_ge_0 radix2 emin).
   destruct (Req_dec x 0) as [H0 | H0].
   - subst x. rewrite round_0 by exact Hr. rewrite Rminus_0_r, Rabs_R0. lra.
-  - pose proof (error_lt_ulp radix2 (FLT_exp emin prec) rnd x H0) as E.
-    destruct (Rlt_or_le (Rabs x) (bpow radix2 (emin + prec - 1))) as [Hs | Hb].
-    + rewrite (ulp_FLT_small radix2 emin prec x) in E.
-      * assert (0 <= 2 * bpow radix2 (- prec) * Rabs x) by nra. lra.
-      * eapply Rlt_le_trans; [exact Hs|]. apply bpow_le. lia.
-    + pose proof (ulp_FLT_le radix2 emin prec x Hb) as U.
-      replace (bpow radix2 (1 - prec)) with (2 * bpow radix2 (- prec)) in U
-        by (replace (1 - prec)%Z with (1 + - prec)%Z by ring; rewrite bpow_plus, bpow_1; reflexivity).
-      lra.
+  - pose proof (error_lt_ulp radix2 (FLT_exp emin prec) rnd x H0).
+    pose proof (ulp_le_rel emin prec x HP). lra.
 Qed.
 
 (** Flushing a result below the smallest normal number 2^(emin+prec-1) to zero. *)
@@ -1860,7 +1754,6 @@ Lemma recip_mul_gen : forall (kr km u eta m x r y : R), 0 <= kr <= 5 -> 0 <= km 
   approx (kr + km + / 1048576) u eta y (x / m).
 Proof.
   intros kr km u eta m x r y Hkr Hkm Hu He He2 Hm Hr Hy. unfold approx, ap1 in *.
-  assert (Im : 0 < / m) by (apply Rinv_0_lt_compat; lra).
   assert (Im2 : / 16777216 <= / m) by (apply Rinv_le_contravar; lra).
   rewrite (Rabs_pos_eq (/ m)) in Hr by lra.
   set (d := (kr + / 68719476736) * u).
@@ -1870,16 +1763,11 @@ Proof.
     replace (x / m) with (x * / m) by (field; lra).
     rewrite !Rabs_mult, (Rabs_pos_eq (/ m)) by lra.
     replace (d * (Rabs x * / m)) with (Rabs x * (d * / m)) by ring.
-    apply Rmult_le_compat_l; [apply Rabs_pos|].
-    assert (eta <= / 68719476736 * u * / m).
-    { assert (/ 68719476736 * u * / 16777216 <= / 68719476736 * u * / m)
-        by (apply Rmult_le_compat_l; nra). lra. }
-    unfold d. nra. }
+    apply Rmult_le_compat_l; [apply Rabs_pos|]. unfold d. nra. }
   assert (X2 : Rabs (x * r) <= (1 + d) * Rabs (x / m)) by (pose proof (abs_near _ _ _ X1); lra).
   pose proof (Rabs_pos (x / m)) as X0. set (X := Rabs (x / m)) in *.
   assert (X3 : km * u * Rabs (x * r) <= km * u * ((1 + d) * X))
     by (apply Rmult_le_compat_l; nra).
-  assert (X4 : km * d <= 2 * / 3000000) by (apply Rmult_le_compat; lra).
   assert (X5 : (km * d) * (u * X) <= (2 * / 3000000) * (u * X))
     by (apply Rmult_le_compat_r; nra).
   replace (y - x / m) with ((y - x * r) + (x * r - x / m)) by ring.
@@ -1943,44 +1831,19 @@ Proof.
   pose proof (flush_covered (-149) 24 rnd ltac:(lia) Hr x) as H2.
   change (Z.opp 24) with (-24)%Z in H1, H2. change (-149 + 24 - 1)%Z with (-126)%Z in H2.
   assert (E : bpow radix2 (-149) <= bpow radix2 (-126)) by (apply bpow_le; lia).
-  assert (H1' : approx 2 (bpow radix2 (-24)) (bpow radix2 (-126))
-                  (round radix2 (FLT_exp (-149) 24) rnd x) x)
-    by (unfold approx, ap1 in *; lra).
   unfold ap_in, ap_add, ap_mul, shader32; cbn [m_u m_eta k_in k_add k_mul].
-  repeat split; assumption.
+  unfold approx, ap1 in *. repeat split; lra.
 Qed.
 
 Lemma shader32_div_covered : forall (x y : R),
   Rabs (y - x) <= 5 / 2 * ulp radix2 (FLT_exp (-149) 24) x -> ap_div shader32 y x.
 Proof.
   intros x y H. unfold ap_div, approx, ap1, shader32; cbn [m_u m_eta k_div].
-  assert (HP : Prec_gt_0 24) by (unfold Prec_gt_0; lia).
   assert (E : bpow radix2 (-149) <= / 4 * bpow radix2 (-126)).
   { replace (/ 4 * bpow radix2 (-126)) with (bpow radix2 (-128)) by (simpl; lra).
     apply bpow_le; lia. }
-  assert (U0 : 0 < bpow radix2 (-24)) by apply bpow_gt_0.
-  pose proof (Rabs_pos x).
-  assert (U : ulp radix2 (FLT_exp (-149) 24) x <= 2 * bpow radix2 (-24) * Rabs x + bpow radix2 (-149)).
-  { destruct (Rlt_or_le (Rabs x) (bpow radix2 (-149 + 24 - 1))) as [Hs | Hb].
-    - rewrite (ulp_FLT_small radix2 (-149) 24 x).
-      + assert (0 <= 2 * bpow radix2 (-24) * Rabs x) by nra. lra.
-      + eapply Rlt_le_trans; [exact Hs|]. apply bpow_le. lia.
-    - pose proof (ulp_FLT_le radix2 (-149) 24 x Hb) as U.
-      replace (bpow radix2 (1 - 24)) with (2 * bpow radix2 (-24)) in U by (simpl; lra).
-      pose proof (bpow_ge_0 radix2 (-149)). lra. }
-  pose proof (bpow_ge_0 radix2 (-126)). lra.
-Qed.
-
-(** Division by m (1 <= m <= 2^24: n or 2) as a reciprocal within 5u (2.5 ulp,
-    the specifications' bound on 1.0/x) followed by a product within 2u (any
-    rounding of the format): k = 7 + 2^-20. *)
-Lemma recip_mul_covered_5_2 : forall (u eta m x r y : R),
-  0 < u <= / 16777216 -> 0 <= eta -> eta * 1152921504606846976 <= u -> 1 <= m <= 16777216 ->
-  approx 5 u eta r (/ m) -> approx 2 u eta y (x * r) ->
-  approx (7 + / 1048576) u eta y (x / m).
-Proof.
-  intros. replace (7 + / 1048576) with (5 + 2 + / 1048576) by ring.
-  apply recip_mul_gen with (r := r); assumption || lra.
+  pose proof (ulp_le_rel (-149) 24 x ltac:(unfold Prec_gt_0; lia)).
+  change (- (24))%Z with (-24)%Z in *. pose proof (bpow_ge_0 radix2 (-126)). lra.
 Qed.
 
 (** So [shader32_recip] covers every operation of [shader32] (the same
@@ -2000,6 +1863,9 @@ Proof.
   apply Rmult_le_compat_r; [apply bpow_ge_0 | lra].
 Qed.
 
+(** Division by m (1 <= m <= 2^24: n or 2) as a reciprocal within 5u (2.5 ulp,
+    the specifications' bound on 1.0/x) followed by a product within 2u (any
+    rounding of the format): k = 7 + 2^-20 ([recip_mul_gen]). *)
 Lemma shader32_recip_mul_covered : forall (m x r y : R), 1 <= m <= 16777216 ->
   ap_div shader32 r (/ m) -> ap_mul shader32 y (x * r) -> ap_div shader32_recip y (x / m).
 Proof.
@@ -2007,8 +1873,8 @@ Proof.
   unfold ap_div, ap_mul, shader32, shader32_recip in *; cbn [m_u m_eta k_mul k_div] in *.
   pose proof (eta84 (-126) (-24) ltac:(lia)) as H5.
   pose proof (bpow_ge_0 radix2 (-126)) as H6.
-  rewrite u24 in *.
-  apply (recip_mul_covered_5_2 _ _ m x r y); try assumption; lra.
+  rewrite u24 in *. replace (7 + / 1048576) with (5 + 2 + / 1048576) by ring.
+  apply (recip_mul_gen _ _ _ _ m x r y); try assumption; lra.
 Qed.
 
 (** ** The adaptive scheme's acceptance set (docs/float.md §10)
@@ -2045,19 +1911,12 @@ Lemma acc_decision_far_below : forall x u E D Dh th2,
   x * Rabs D < 1 - (x * E + 4 * u) -> Rabs (x * Dh * (1 + th2)) < 1.
 Proof.
   intros x u E D Dh th2 Hx Hu HD H2 Hlt.
-  assert (HDh : Rabs Dh <= Rabs D + E).
-  { replace Dh with (D + (Dh - D)) by ring. eapply Rle_trans; [apply Rabs_triang|]. lra. }
-  assert (Ha2 : Rabs (1 + th2) <= 1 + 3 * u).
-  { eapply Rle_trans; [apply Rabs_triang|]. rewrite Rabs_R1. lra. }
+  pose proof (abs_near _ _ _ HD) as HDh. pose proof (Rabs_pos Dh).
+  pose proof (Rabs_triang 1 th2). rewrite Rabs_R1 in *.
   rewrite !Rabs_mult, (Rabs_pos_eq x) by lra.
-  assert (Hs : x * Rabs Dh <= x * Rabs D + x * E)
-    by (apply Rmult_le_compat_l with (r := x) in HDh; lra).
-  assert (Hk : 0 <= x * Rabs Dh) by (apply Rmult_le_pos; [lra | apply Rabs_pos]).
-  assert (Hp : 0 <= Rabs (1 + th2)) by apply Rabs_pos.
-  apply Rle_lt_trans with (x * Rabs Dh * (1 + 3 * u)).
-  { apply Rmult_le_compat_l; lra. }
-  apply Rlt_le_trans with ((1 - 4 * u) * (1 + 3 * u)).
-  { apply Rmult_lt_compat_r; lra. }
+  assert (x * Rabs Dh <= x * (Rabs D + E)) by (apply Rmult_le_compat_l; lra).
+  assert (x * Rabs Dh * Rabs (1 + th2) <= x * Rabs Dh * (1 + 3 * u))
+    by (apply Rmult_le_compat_l; nra).
   nra.
 Qed.
 
@@ -2066,15 +1925,11 @@ Lemma acc_decision_far_above : forall x u E D Dh th2,
   1 + (x * E + 4 * u) < x * Rabs D -> 1 <= Rabs (x * Dh * (1 + th2)).
 Proof.
   intros x u E D Dh th2 Hx Hu HD H2 Hgt.
-  assert (HDh : Rabs D - E <= Rabs Dh).
-  { pose proof (Rabs_triang_inv D Dh) as T. rewrite Rabs_minus_sym in T. lra. }
-  assert (Ha2 : 1 - 3 * u <= Rabs (1 + th2)).
-  { pose proof (Rabs_triang_inv 1 (- th2)) as T.
-    replace (1 - - th2) with (1 + th2) in T by ring.
-    rewrite Rabs_R1, Rabs_Ropp in T. lra. }
+  pose proof (Rabs_triang_inv D Dh) as T. rewrite Rabs_minus_sym in T.
+  pose proof (Rabs_triang_inv 1 (- th2)) as T2. rewrite Rabs_R1, Rabs_Ropp in T2.
+  replace (1 - - th2) with (1 + th2) in T2 by ring.
   rewrite !Rabs_mult, (Rabs_pos_eq x) by lra.
-  assert (Hm : x * Rabs D - x * E <= x * Rabs Dh)
-    by (apply Rmult_le_compat_l with (r := x) in HDh; lra).
+  assert (x * (Rabs D - E) <= x * Rabs Dh) by (apply Rmult_le_compat_l; lra).
   apply Rle_trans with ((1 + 4 * u) * (1 - 3 * u)); [nra|].
   apply Rmult_le_compat; lra.
 Qed.

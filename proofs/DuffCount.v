@@ -270,7 +270,10 @@ Proof.
                  = INR i * (INR i - 1) / mr * (40025 / 20000 * w)) by (unfold Ms; field; lra).
     assert (R3 : INR i * (INR i - 1) / mr * (40025 / 20000 * w) <= INR i * (40025 / 20000 * w))
       by (apply Rmult_le_compat_r; lra).
-    assert (R4 : INR i * (INR i - 1) / 2 <= 281474976710656) by nra.
+    assert (R4 : INR i * (INR i - 1) / 2 <= 281474976710656).
+    { replace (INR i * (INR i - 1)) with (INR i * INR i - INR i) by ring.
+      assert (INR i * INR i <= 16777216 * 16777216) by (apply Rmult_le_compat; lra).
+      lra. }
     assert (R5 : INR i * (INR i - 1) / 2 * eta <= 281474976710656 * eta)
       by (apply Rmult_le_compat_r; lra).
     assert (R6 : INR i * eta <= 16777216 * eta) by (apply Rmult_le_compat_r; lra).

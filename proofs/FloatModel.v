@@ -280,6 +280,11 @@ Proof.
   eapply Rle_trans; [apply tri4|]. lra.
 Qed.
 
+(** A weight in [0, 8] scaled by v > 0 (kept out of the large contexts, where [nra]
+    is slow). *)
+Lemma scale8 v x : 0 < v -> 0 <= x <= 8 -> 0 <= v * x <= 8 * v.
+Proof. intros Hv Hx. split; nra. Qed.
+
 (** A computed dot product y within (3 + 2^-17) v sum |a_j b_j| + 13 eta of
     a.b (the standard model's [fdot]), of the scaled approximations lam ah,
     mu bh of a, b with weights wa, wb. *)
@@ -300,7 +305,10 @@ Proof.
   pose proof (fdot_core ((3 + / 131072) * v) (13 * eta) 16777216 lam mu y (8 * v) ah bh a b
     _ _ ltac:(lra) ltac:(lra) F Hl Hm Hlm (VS _ _ _ _ HA) (VS _ _ _ _ HB) Ba Bb) as G.
   unfold vscale in G; cbn [vx vy vz] in G.
-  specialize (G ltac:(repeat split; nra) ltac:(repeat split; nra)).
+  pose proof (scale8 v _ (proj1 Hv) Wa1); pose proof (scale8 v _ (proj1 Hv) Wa2).
+  pose proof (scale8 v _ (proj1 Hv) Wa3); pose proof (scale8 v _ (proj1 Hv) Wb1).
+  pose proof (scale8 v _ (proj1 Hv) Wb2); pose proof (scale8 v _ (proj1 Hv) Wb3).
+  specialize (G ltac:(repeat split; lra) ltac:(repeat split; lra)).
   destruct Ba as [Ma1 [Ma2 Ma3]], Bb as [Mb1 [Mb2 Mb3]].
   set (S := Rabs (vx a) * Rabs (vx b) + Rabs (vy a) * Rabs (vy b) + Rabs (vz a) * Rabs (vz b))
     in G.

@@ -649,13 +649,14 @@ fn setup_rounds_each_cases_set_up_to_nearest() {
 /// `255·K_s·p_a^s ≥ 1`), the squared method's too; bad input is one line and exit 2.
 #[test]
 fn skip_decides_and_refuses_bad_input() {
-    let common = ["--steps", "8", "--ks", "1/2", "--shininess", "32"];
-    let run = |m: &str, h: &str| {
-        let mut a = vec!["skip", "--method", m, "--na", "0,0,1", "--nb", "3/5,0,4/5"];
+    // `skip` on N_a = z, N_b = `nb`, H = `h`, n = 8, K_s = 1/2, s = 32.
+    let skip_args = |m: &'static str, nb: &'static str, h: &'static str| {
+        let mut a = vec!["skip", "--method", m, "--na", "0,0,1", "--nb", nb];
         a.extend(["--half-vector", h]);
-        a.extend(common);
-        run_json(&a)
+        a.extend(["--steps", "8", "--ks", "1/2", "--shininess", "32"]);
+        a
     };
+    let run = |m: &'static str, h: &'static str| run_json(&skip_args(m, "3/5,0,4/5", h));
     // H = (0, 3/5, 4/5): N·H/|N| is at most 4/5 on the span, and 127.5·(4/5)^32 < 1.
     let far = run("phong", "0,3/5,4/5");
     assert_eq!(far["exact"]["skips"], Value::Bool(true), "{far}");
@@ -685,23 +686,7 @@ fn skip_decides_and_refuses_bad_input() {
     // The float form decides on the inputs rounded to binary64 and says when that
     // changed them (3/5 is not a binary64 number; 0 and 1 are).
     assert_eq!(far["float_inputs_rounded"], Value::Bool(true), "{far}");
-    let dyadic = run_json(&[
-        "skip",
-        "--method",
-        "phong",
-        "--na",
-        "0,0,1",
-        "--nb",
-        "0,0,1",
-        "--half-vector",
-        "0,0,1",
-        "--steps",
-        "8",
-        "--ks",
-        "1/2",
-        "--shininess",
-        "32",
-    ]);
+    let dyadic = run_json(&skip_args("phong", "0,0,1", "0,0,1"));
     assert_eq!(
         dyadic["float_inputs_rounded"],
         Value::Bool(false),
@@ -717,18 +702,7 @@ fn skip_decides_and_refuses_bad_input() {
         (vec!["--na", "0,0,0"], "span"),
         (vec!["--nb", "0,0,-1"], "span"),
     ] {
-        let mut a = vec![
-            "skip",
-            "--method",
-            "phong",
-            "--na",
-            "0,0,1",
-            "--nb",
-            "3/5,0,4/5",
-            "--half-vector",
-            "0,0,1",
-        ];
-        a.extend(common);
+        let mut a = skip_args("phong", "3/5,0,4/5", "0,0,1");
         // The flag's value replaced by the bad one.
         let at = a.iter().position(|x| *x == args[0]).unwrap();
         a[at + 1] = args[1];

@@ -193,6 +193,8 @@ Print Assumptions float_corrected_euler_binary64.
 (** Graph.v *)
 Check graph_sound.
 Print Assumptions graph_sound.
+Check graph_sound_read.
+Print Assumptions graph_sound_read.
 
 (** ShaderSqrt.v *)
 Check shader_sqrt_recip_rsqrt.

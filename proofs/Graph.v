@@ -777,3 +777,90 @@ Proof.
   apply (ulp_model_ap1 emin prec _ x 1 M Hx). rewrite Rmult_1_l.
   now apply faithful_ulp_model.
 Qed.
+
+(** A number the format holds is its own rounding, by any rounding: a node whose
+    exact result (on its computed operands) is such a number may take v = 0 and
+    eta = 0 (the evaluator's exact inputs and exact operations; the checker takes
+    only zero or normal results, which flushing does not move). *)
+Lemma exact_op_model : forall (emin prec : Z) (rnd : R -> Z), Valid_rnd rnd ->
+  forall x : R, generic_format radix2 (FLT_exp emin prec) x ->
+  ap1 0 0 (round radix2 (FLT_exp emin prec) rnd x) x.
+Proof.
+  intros emin prec rnd Hrnd x Hx. unfold ap1.
+  rewrite round_generic by assumption.
+  rewrite Rminus_diag_eq, Rabs_R0 by reflexivity. lra.
+Qed.
+
+(** ** Inputs read as known numbers
+
+    An implementation that rounds each input to nearest reads the exact input
+    X i as a number Xr i the checker knows (its nearest number of the format).
+    Its execution is then an execution of the graph on the exact inputs Xr,
+    each read exactly (v = 0, eta = 0, [exact_op_model]); a certificate on Xr
+    bounds its error from the exact values at Xr, and the intervals of a
+    certificate on X hold the exact values at X, so the error from those is at
+    most the first bound plus the distance between the two intervals. *)
+
+(** The exact values are an execution: every operation without error. *)
+Lemma sum_exec_exact : forall v eta, 0 <= v -> 0 <= eta ->
+  forall ts, ts <> [] -> sum_exec v eta ts (fold_right Rplus 0 ts).
+Proof.
+  intros v eta Hv He ts. induction ts as [|a ts IH]; intros Hne; [congruence|].
+  assert (Hz : forall z, ap1 v eta z z).
+  { intro z. unfold ap1. rewrite Rminus_diag_eq, Rabs_R0 by reflexivity.
+    pose proof (Rabs_pos z). nra. }
+  destruct ts as [|b ts].
+  - simpl. rewrite Rplus_0_r. constructor.
+  - apply (sum_split v eta (a :: b :: ts) [a] (b :: ts) a (fold_right Rplus 0 (b :: ts)));
+      [apply Permutation_refl | discriminate | discriminate | constructor | |].
+    + apply IH. discriminate.
+    + apply Hz.
+Qed.
+
+Lemma exact_exec : forall (g : nat -> node) (X x : nat -> R) j,
+  op_wf (nop (g j)) j -> 0 <= nv (g j) -> 0 <= neta (g j) ->
+  x j = exact_op X x (nop (g j)) -> exec_op X x (g j) (x j).
+Proof.
+  intros g X x j Hwf Hv He Hx.
+  assert (Hz : forall z, ap1 (nv (g j)) (neta (g j)) z z).
+  { intro z. unfold ap1. rewrite Rminus_diag_eq, Rabs_R0 by reflexivity.
+    pose proof (Rabs_pos z). nra. }
+  unfold exec_op. rewrite Hx.
+  destruct (nop (g j)); simpl; try apply Hz; try reflexivity.
+  - left. apply Hz.
+  - destruct Hwf as [Hne _].
+    apply sum_exec_exact; auto. destruct l; [congruence | discriminate].
+Qed.
+
+Theorem graph_sound_read :
+  forall (g gr : nat -> node) (N : nat) (X Xr : nat -> R)
+         (x xr y lo hi E S T lor hir Er Sr Tr : nat -> R),
+  (forall j, (j < N)%nat -> nop (gr j) = nop (g j)) ->
+  (forall j, (j < N)%nat -> op_wf (nop (g j)) j /\ 0 <= nv (g j) /\ 0 <= neta (g j)) ->
+  (forall j, (j < N)%nat -> 0 <= nv (gr j) /\ 0 <= neta (gr j)) ->
+  (forall j, (j < N)%nat -> x j = exact_op X x (nop (g j))) ->
+  (forall j, (j < N)%nat -> xr j = exact_op Xr xr (nop (g j))) ->
+  (forall j, (j < N)%nat -> exec_op Xr y (gr j) (y j)) ->
+  (forall j, (j < N)%nat -> iv_ok g X lo hi S j /\ err_ok g lo hi E S T j) ->
+  (forall j, (j < N)%nat -> iv_ok gr Xr lor hir Sr j /\ err_ok gr lor hir Er Sr Tr j) ->
+  forall j, (j < N)%nat -> Rabs (y j - x j) <= Er j + Rmax (hir j - lo j) (hi j - lor j).
+Proof.
+  intros g gr N X Xr x xr y lo hi E S T lor hir Er Sr Tr
+    Hop Hwf Hwr Hx Hxr Hy Hc Hcr j Hj.
+  assert (Hx0 : lo j <= x j <= hi j).
+  { apply (graph_sound g N X x x lo hi E S T Hwf Hx); auto.
+    intros k Hk. destruct (Hwf k Hk) as (Hw & Hv & He).
+    apply exact_exec; auto. }
+  assert (Hr : lor j <= xr j <= hir j /\ Rabs (y j - xr j) <= Er j).
+  { apply (graph_sound gr N Xr xr y lor hir Er Sr Tr); auto.
+    - intros k Hk. rewrite Hop by exact Hk.
+      destruct (Hwf k Hk) as (Hw & _). destruct (Hwr k Hk). auto.
+    - intros k Hk. rewrite Hop by exact Hk. auto. }
+  destruct Hr as [Hxr0 Hyr].
+  assert (Hd : Rabs (xr j - x j) <= Rmax (hir j - lo j) (hi j - lor j)).
+  { pose proof (Rmax_l (hir j - lo j) (hi j - lor j)).
+    pose proof (Rmax_r (hir j - lo j) (hi j - lor j)).
+    unfold Rabs. destruct (Rcase_abs (xr j - x j)); lra. }
+  pose proof (Rabs_triang (y j - xr j) (xr j - x j)).
+  replace (y j - xr j + (xr j - x j)) with (y j - x j) in * by ring. lra.
+Qed.

@@ -249,7 +249,7 @@ fn every_bound_kind_is_used_by_a_row() {
                     assert!(!t.is_empty(), "{m} under {p}");
                     used.insert("status Proved");
                 }
-                Some(Status::PerPixel(t, graphs)) => {
+                Some(Status::PerPixel(t, graphs, _)) => {
                     assert!(!graphs.is_empty(), "{m} under {p}");
                     assert!(!t.is_empty(), "{m} under {p}");
                     used.insert("status PerPixel");

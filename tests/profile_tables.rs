@@ -107,14 +107,16 @@ fn euler_is_proved_under_ieee() {
         status(Method::Euler, Profile::Ieee, F32),
         Some(Status::PerPixel(
             "profile_ieee_euler_binary32",
-            EULER_GRAPHS
+            EULER_GRAPHS,
+            Some("graph_sound_read")
         ))
     );
     assert_eq!(
         status(Method::Euler, Profile::Ieee, F64),
         Some(Status::PerPixel(
             "profile_ieee_euler_binary64_large",
-            EULER_GRAPHS
+            EULER_GRAPHS,
+            Some("graph_sound_read")
         ))
     );
     // `check` applies exactly the theorems' bound.
@@ -172,7 +174,7 @@ fn shader_bounds_are_the_largest_of_every_form() {
         let got: Vec<&str> = forms.iter().map(|f| f.theorem).collect();
         assert_eq!(got, names, "{m}");
         assert!(
-            matches!(status(m, Profile::Shader, F32), Some(Status::PerPixel(t, _)) if t == names[0]),
+            matches!(status(m, Profile::Shader, F32), Some(Status::PerPixel(t, _, None)) if t == names[0]),
             "{m}"
         );
         // The bound applied is never below any form's theorem, and is one of them.

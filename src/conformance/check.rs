@@ -52,6 +52,10 @@ pub struct CaseReport {
     /// The allowed absolute error, where the tolerance is one (a profile's bound, the
     /// reference bound, [`Tolerance::Abs`]).
     pub allowed_abs: Option<f64>,
+    /// The allowed absolute error at [`CaseReport::worst_pixel`]: its own where the
+    /// bounds are per pixel (else [`CaseReport::allowed_abs`]), so that
+    /// [`CaseReport::ratio`] is that pixel's error over it.
+    pub worst_allowed: Option<f64>,
     /// The tolerance applied (as an absolute value, or levels), or why there is none
     /// ([`CaseReport::unbounded`]'s reason, without advice).
     pub allowed: String,
@@ -452,6 +456,8 @@ fn case_report(
     let (mut max_levels, mut sum_levels, mut max_abs, mut max_ulps) = (0u32, 0u64, 0f64, 0f64);
     let (mut worst, mut worst_excess, mut pass) = (0usize, f64::NEG_INFINITY, true);
     let mut ratio = 0f64;
+    // The worst pixel's own allowance (per pixel where the bounds are).
+    let mut worst_allowed = allowed_abs;
     // Ulps are counted at the case's scale (Tolerance::Ulps).
     let scale = expected
         .iter()
@@ -494,33 +500,39 @@ fn case_report(
             .as_ref()
             .and_then(|b| b.get(i).copied())
             .or(allowed_abs);
-        let excess = match tol {
-            Tolerance::Levels(n) => f64::from(dl) - f64::from(n),
-            Tolerance::Ulps(n) => du - n,
-            _ => d - allowed_abs.unwrap_or(0.0),
+        // How much of its own tolerance this pixel uses (0/0, an exact value under a
+        // zero tolerance, uses none).
+        let used = match tol {
+            Tolerance::Levels(n) => f64::from(dl) / f64::from(n),
+            Tolerance::Ulps(n) => du / n,
+            _ => d / allowed_abs.unwrap_or(0.0),
         };
+        let used = if used.is_nan() { 0.0 } else { used };
         // Bounds and their comparison, decided exactly where f64 cannot decide them.
         let over = match (tol, allowed_abs) {
-            (Tolerance::Levels(_) | Tolerance::Ulps(_), _) | (_, None) => excess > 0.0,
+            (Tolerance::Levels(n), _) => dl > n,
+            (Tolerance::Ulps(n), _) => du > n,
+            (_, None) => d > 0.0,
             (_, Some(b)) => exceeds(g, e, ev, b),
         };
         if over || d.is_nan() || unbounded || implausible {
             pass = false;
         }
-        if excess > worst_excess {
-            worst_excess = excess;
+        // The worst pixel is the one over its own tolerance most, relative to it, so
+        // that the ratio reported is that pixel's.
+        if used > worst_excess {
+            worst_excess = used;
             worst = i;
-            ratio = ratio.max(match tol {
-                Tolerance::Levels(n) => f64::from(dl) / f64::from(n),
-                Tolerance::Ulps(n) => du / n,
-                _ => d / allowed_abs.unwrap_or(0.0),
-            });
+            ratio = used;
+            worst_allowed = allowed_abs;
         }
         if implausible || d.is_nan() {
             ratio = f64::INFINITY;
+            worst_excess = f64::INFINITY;
         }
     }
-    if unbounded {
+    // A list of the wrong length, or no bound: no finite ratio.
+    if unbounded || got.len() != exp.values.len() || exp.levels.len() != exp.values.len() {
         ratio = f64::INFINITY;
     }
     // 0/0 (an exact result under a zero tolerance) uses none of it.
@@ -590,6 +602,7 @@ fn case_report(
         worst_pixel: worst,
         ratio,
         allowed_abs,
+        worst_allowed,
         allowed,
         unbounded: why,
         pass,

@@ -155,7 +155,7 @@ impl Failure {
             expected: None,
             expected_level: None,
             got: None,
-            allowed: r.allowed_abs,
+            allowed: r.worst_allowed,
             ratio: r.ratio,
             ulps: None,
             levels: None,
@@ -419,8 +419,10 @@ impl fmt::Display for Report {
 
 /// The tolerance of `r` in words, with the test kit's advice where it has none.
 fn allowed_text(r: &crate::conformance::check::CaseReport) -> String {
-    r.unbounded.as_ref().map_or_else(
-        || r.allowed.clone(),
-        |u| u.with_advice(crate::conformance::check::Unbounded::kit_advice),
-    )
+    match (&r.unbounded, r.worst_allowed) {
+        (Some(u), _) => u.with_advice(crate::conformance::check::Unbounded::kit_advice),
+        // The worst pixel's own allowance, where it differs from the case's largest.
+        (None, Some(w)) if Some(w) != r.allowed_abs => format!("{w:.3e} at this pixel"),
+        (None, _) => r.allowed.clone(),
+    }
 }

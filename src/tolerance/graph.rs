@@ -19,6 +19,10 @@
 //! Tested: `tests/graph.rs` (the rules against exact rationals, executions that round
 //! each operation to either neighbouring float, and `graph_sound` by name).
 
+mod exact;
+use exact::exact_result;
+pub use exact::{inputs_of, interval, read_error, read_to_nearest};
+
 /// A node's index in its graph.
 pub type Id = usize;
 
@@ -195,6 +199,10 @@ pub struct Model {
     /// Whether a square root is `1/inverseSqrt` (the GPU specifications' `sqrt`):
     /// the method graphs then build it as a reciprocal square root and a division.
     pub sqrt_is_recip_rsqrt: bool,
+    /// Whether every implementation reads each input as its nearest number of the
+    /// format (`ieee`: round to nearest): the bound may then start from the inputs
+    /// as read ([`read_to_nearest`], `graph_sound_read` of `proofs/Graph.v`).
+    pub inputs_to_nearest: bool,
     /// The largest finite value of the format: a node whose interval reaches past it
     /// may overflow, and has no bound.
     pub max: f64,
@@ -263,32 +271,6 @@ pub enum GraphError {
         /// The input index.
         input: usize,
     },
-}
-
-/// An exact rational as an `f64` interval: `(x, x)` when `x` is an `f64`, else the
-/// two neighbours of its nearest `f64`.
-pub fn interval(x: &crate::BigRational) -> (f64, f64) {
-    use crate::Scalar;
-    let f = x.to_f64();
-    match crate::BigRational::from_float(f) {
-        Some(q) if q == *x => (f, f),
-        _ => (f.next_down(), f.next_up()),
-    }
-}
-
-/// `N_a`, `N_b`, `L` as the method graphs' nine input intervals.
-pub fn inputs_of(
-    na: &crate::Vec3<crate::BigRational>,
-    nb: &crate::Vec3<crate::BigRational>,
-    l: &crate::Vec3<crate::BigRational>,
-) -> [(f64, f64); 9] {
-    let mut out = [(0.0, 0.0); 9];
-    for (k, v) in [na, nb, l].into_iter().enumerate() {
-        for (c, x) in [&v.x, &v.y, &v.z].into_iter().enumerate() {
-            out[3 * k + c] = interval(x);
-        }
-    }
-    out
 }
 
 /// Each node's certificate: the interval of its exact value and its error bound.
@@ -401,15 +383,31 @@ pub fn evaluate(graph: &Graph, inputs: &[(f64, f64)], model: &Model) -> Result<B
             }
         };
         let mut node_v = (v, eta);
+        if let Some(r) = exact_result(&node.op, &lo, &hi, &err, model) {
+            // Operands known exactly and a result the format holds (normal, or zero):
+            // every rounding returns it (`exact_op_model`).
+            lo.push(r);
+            hi.push(r);
+            err.push(0.0);
+            (vj[j], etaj[j]) = (0.0, 0.0);
+            continue;
+        }
         let (l, h, e) = match &node.op {
             Op::In(i) => {
                 let &(l, h) = inputs
                     .get(*i)
                     .filter(|(l, h)| l.is_finite() && h.is_finite() && l <= h)
                     .ok_or(GraphError::Input { node: j, input: *i })?;
-                let (e, nv, ne) = best(0.0, mag(l, h));
-                node_v = (nv, ne);
-                (l, h, e)
+                if l == h && model.format.holds(l) {
+                    // A value the format holds is read exactly, by any rounding
+                    // (`exact_read_model`).
+                    node_v = (0.0, 0.0);
+                    (l, h, 0.0)
+                } else {
+                    let (e, nv, ne) = best(0.0, mag(l, h));
+                    node_v = (nv, ne);
+                    (l, h, e)
+                }
             }
             Op::Cst(c) => {
                 if !model.format.holds(*c) {
@@ -534,11 +532,20 @@ pub fn evaluate(graph: &Graph, inputs: &[(f64, f64)], model: &Model) -> Result<B
                     add_up(se, mul_up(up(w - 1.0), sm)),
                     mul_up(mul_up((k - 1) as f64, w), eta),
                 );
-                // The ulp model: every partial sum is at most sm + (k − 2)·η' ≤ 2·sm.
-                let ue = ulp_eta(mul_up(2.0, sm));
-                let partial = add_up(sm, mul_up((k.max(2) - 2) as f64, ue));
+                // The ulp model: every partial sum is at most sm + (k − 2)·η' ≤ M, with
+                // η' the rounding at M: the smallest such M of a few tries.
+                let extra = |mm: f64| add_up(sm, mul_up((k.max(2) - 2) as f64, ulp_eta(mm)));
+                let mut mm = sm;
+                for _ in 0..4 {
+                    if extra(mm) <= mm {
+                        break;
+                    }
+                    mm = extra(mm);
+                }
+                let ue = ulp_eta(mm);
+                let partial = extra(mm);
                 let abs = add_up(se, mul_up((k - 1) as f64, ue));
-                if partial <= 2.0 * sm && abs < e {
+                if partial <= mm && abs < e {
                     e = abs;
                     node_v = (0.0, ue);
                 }

@@ -7,7 +7,7 @@
 //! (an implementation computes one of them); each graph's bound is `graph_sound`'s
 //! (`proofs/Graph.v`). Inputs: `N_a` (0–2), `N_b` (3–5), `L` (6–8).
 
-use super::graph::{evaluate, Graph, GraphError, Id, Model};
+use super::graph::{evaluate, read_error, Graph, GraphError, Id, Model};
 use super::profile::Form;
 use crate::Method;
 
@@ -450,16 +450,30 @@ pub fn pixel_bounds(
     if n > MAX_GRAPH_STEPS {
         return Ok(None);
     }
+    // Under a model whose implementations read each input to nearest, the inputs as
+    // they are read (where each is one known number and some differs from the exact).
+    let read = model
+        .inputs_to_nearest
+        .then(|| super::graph::read_to_nearest(inputs, model.format))
+        .flatten()
+        .filter(|r| r[..] != inputs[..]);
     let mut worst = vec![0f64; n as usize + 1];
     let found = for_each_graph(method, form, n, model, |f| {
         let b = evaluate(&f.graph, inputs, model)?;
+        let from_read = read
+            .as_ref()
+            .and_then(|r| evaluate(&f.graph, r, model).ok());
         for way in &f.pixels {
             for (i, (w, &p)) in worst.iter_mut().zip(way).enumerate() {
                 let e = match &f.signs {
                     // The squared method's value, composed from `g_i` and `p_i`.
                     Some(signs) => squared::signed_root(&b, p, signs[i], model)
                         .ok_or(GraphError::SquaredOutOfRange { node: p })?,
-                    None => b.err[p],
+                    // The smaller of the bound from the exact inputs (`graph_sound`) and
+                    // the one from the inputs as read (`graph_sound_read`).
+                    None => from_read
+                        .as_ref()
+                        .map_or(b.err[p], |br| b.err[p].min(read_error(&b, br, p))),
                 };
                 *w = w.max(e);
             }
@@ -505,6 +519,7 @@ pub fn model(profile: super::profile::Profile, format: crate::Format) -> Option<
         sqrt: a.sqrt,
         rsqrt: if shader { 4.0 } else { a.sqrt },
         sqrt_is_recip_rsqrt: shader,
+        inputs_to_nearest: profile == super::profile::Profile::Ieee,
         max: format.max(),
         format,
     })

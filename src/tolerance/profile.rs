@@ -190,7 +190,9 @@ pub enum Status {
     /// the method's operation graphs (their names: the catalogue row's `graphs`;
     /// `tolerance::graphs`, `proofs/Graph.v`'s `graph_sound`): the `ieee` and `shader`
     /// bounds of the methods whose catalogue row has graphs.
-    PerPixel(&'static str, &'static [&'static str]),
+    /// The third field names the theorem that also bounds from the inputs as an
+    /// implementation that rounds to nearest reads them (`ieee`: `graph_sound_read`).
+    PerPixel(&'static str, &'static [&'static str], Option<&'static str>),
     /// The bound of the method's operation graphs alone (their names), per pixel,
     /// composed with the value's last step by a theorem (its name): the squared
     /// method's `sign(p)·√max(0, g)` (`sq_signed_value_error`); the third field names
@@ -204,8 +206,9 @@ impl Status {
     pub fn label(&self) -> String {
         match self {
             Status::Proved(t) => format!("proved ({t})"),
-            Status::PerPixel(t, graphs) => format!(
-                "proved ({t}; per pixel the smaller with graph_sound on the {} {})",
+            Status::PerPixel(t, graphs, read) => format!(
+                "proved ({t}; per pixel the smaller with graph_sound{} on the {} {})",
+                read.map_or(String::new(), |r| format!(" and {r}")),
                 if graphs.len() == 1 { "graph" } else { "graphs" },
                 graphs.join(", ")
             ),
@@ -221,7 +224,7 @@ impl Status {
     /// The theorem named first.
     pub fn theorem(&self) -> &'static str {
         match *self {
-            Status::Proved(t) | Status::PerPixel(t, _) | Status::Graphs(t, ..) => t,
+            Status::Proved(t) | Status::PerPixel(t, ..) | Status::Graphs(t, ..) => t,
         }
     }
 }
@@ -241,7 +244,9 @@ pub fn status(method: crate::Method, profile: Profile, format: Format) -> Option
     // The methods with operation graphs: per pixel, the smaller with theirs.
     let per_pixel = |t: &'static str| {
         if !row.graphs.is_empty() && arith(profile, format).is_some() {
-            Status::PerPixel(t, row.graphs)
+            // Under `ieee` every input is read to nearest (`graph_sound_read`).
+            let read = (profile == Profile::Ieee).then_some("graph_sound_read");
+            Status::PerPixel(t, row.graphs, read)
         } else {
             Status::Proved(t)
         }

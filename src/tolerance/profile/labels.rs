@@ -62,8 +62,9 @@ fn markdown(st: &Status) -> String {
     };
     match st {
         Status::Proved(t) => format!("proved (`{t}`)"),
-        Status::PerPixel(t, graphs) => format!(
-            "proved (`{t}`; per pixel the smaller with `graph_sound` on {})",
+        Status::PerPixel(t, graphs, read) => format!(
+            "proved (`{t}`; per pixel the smaller with `graph_sound`{} on {})",
+            read.map_or(String::new(), |r| format!(" and `{r}`")),
             named(graphs)
         ),
         Status::Graphs(t, graphs, also) => format!(

@@ -539,50 +539,9 @@ fn case_report(
     if ratio.is_nan() {
         ratio = 0.0;
     }
-    let why = match tol {
-        // The reference profile's bounds are the crate's own, derived.
-        Tolerance::Profile {
-            profile: Profile::Reference,
-            ..
-        } if unbounded => Some(Unbounded::NoDerivedBound),
-        Tolerance::Profile {
-            profile,
-            format,
-            form,
-        } if unbounded => {
-            use crate::tolerance::profile::Form;
-            let p = profile.to_string();
-            Some(if form != Form::Any && !Form::applies_to(method) {
-                Unbounded::FormNotToldApart {
-                    method: method.to_string(),
-                }
-            } else if specular && matches!(profile, Profile::Shader | Profile::Fixed { .. }) {
-                Unbounded::SpecularNotModelled { profile: p }
-            } else if crate::tolerance::profile::status(method, profile, format).is_none() {
-                Unbounded::NoBound {
-                    profile: p,
-                    method: method.to_string(),
-                }
-            } else if form == Form::Closed && matches!(profile, Profile::Fixed { .. }) {
-                Unbounded::FixedClosedForm { profile: p }
-            } else if let Some(frac_bits) = duff_q_min_too_small(j, method) {
-                Unbounded::FixedQMin {
-                    profile: p,
-                    frac_bits,
-                }
-            } else if let Profile::Fixed { int_bits, .. } = profile {
-                Unbounded::FixedOverflow {
-                    profile: p,
-                    limit: int_bits.saturating_sub(1),
-                    int_bits,
-                }
-            } else {
-                Unbounded::OutOfRange { profile: p }
-            })
-        }
-        _ if unbounded => Some(Unbounded::NoDerivedBound),
-        _ => None,
-    };
+    let why = unbounded.then(|| {
+        tolerance::why_unbounded(tol, method, specular, || duff_q_min_too_small(j, method))
+    });
     let allowed = match (&why, tol) {
         (Some(why), _) => why.to_string(),
         (None, Tolerance::Levels(n)) => format!("{n} levels"),

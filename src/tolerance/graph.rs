@@ -398,9 +398,12 @@ pub fn evaluate(graph: &Graph, inputs: &[(f64, f64)], model: &Model) -> Result<B
                     .get(*i)
                     .filter(|(l, h)| l.is_finite() && h.is_finite() && l <= h)
                     .ok_or(GraphError::Input { node: j, input: *i })?;
-                if l == h && model.format.holds(l) {
-                    // A value the format holds is read exactly, by any rounding
-                    // (`exact_read_model`).
+                if l == h
+                    && model.format.holds(l)
+                    && (l == 0.0 || l.abs() >= model.format.min_normal())
+                {
+                    // A value the format holds, zero or normal (flushing moves only
+                    // subnormals), is read exactly, by any rounding (`exact_op_model`).
                     node_v = (0.0, 0.0);
                     (l, h, 0.0)
                 } else {

@@ -262,3 +262,56 @@ pub(super) fn exceeds(g: f64, e: f64, ev: &str, b: f64) -> bool {
         * num_traits::Signed::abs(&eq);
     num_traits::Signed::abs(&(gq - eq)) > bq + decimal
 }
+
+/// Why a case under `tol` has no bound (it then fails): for a profile, the first of its
+/// reasons that holds (a declared form the method does not tell apart, a specular case
+/// the profile does not model, no bound for the method, a fixed-point closed form, a
+/// `q_min` too small for Duff's fixed-point unit — `fixed_q_min`, its fractional bits —,
+/// a fixed-point overflow, else a span out of the bounds' range); no derived bound
+/// otherwise (the reference profile's bounds are the crate's own, derived).
+pub(super) fn why_unbounded(
+    tol: Tolerance,
+    method: crate::Method,
+    specular: bool,
+    fixed_q_min: impl FnOnce() -> Option<u32>,
+) -> Unbounded {
+    use crate::tolerance::profile::{Form, Profile};
+    let Tolerance::Profile {
+        profile,
+        format,
+        form,
+    } = tol
+    else {
+        return Unbounded::NoDerivedBound;
+    };
+    let p = profile.to_string();
+    if profile == Profile::Reference {
+        Unbounded::NoDerivedBound
+    } else if form != Form::Any && !Form::applies_to(method) {
+        Unbounded::FormNotToldApart {
+            method: method.to_string(),
+        }
+    } else if specular && matches!(profile, Profile::Shader | Profile::Fixed { .. }) {
+        Unbounded::SpecularNotModelled { profile: p }
+    } else if crate::tolerance::profile::status(method, profile, format).is_none() {
+        Unbounded::NoBound {
+            profile: p,
+            method: method.to_string(),
+        }
+    } else if form == Form::Closed && matches!(profile, Profile::Fixed { .. }) {
+        Unbounded::FixedClosedForm { profile: p }
+    } else if let Some(frac_bits) = fixed_q_min() {
+        Unbounded::FixedQMin {
+            profile: p,
+            frac_bits,
+        }
+    } else if let Profile::Fixed { int_bits, .. } = profile {
+        Unbounded::FixedOverflow {
+            profile: p,
+            limit: int_bits.saturating_sub(1),
+            int_bits,
+        }
+    } else {
+        Unbounded::OutOfRange { profile: p }
+    }
+}

@@ -98,7 +98,11 @@ pub(super) fn exact_result(
         Op::Mul(a, b) => {
             let (x, y) = (known(a)?, known(b)?);
             let p = x * y;
-            (p.is_finite() && x.mul_add(y, -p) == 0.0 && held(p)).then_some(p)
+            // The residual x·y − p is exact in f64 (a fused multiply-add) unless it is
+            // below f64's subnormals, which |p| ≥ 2^-960 rules out.
+            let exact =
+                x == 0.0 || y == 0.0 || (p.abs() >= 2f64.powi(-960) && x.mul_add(y, -p) == 0.0);
+            (p.is_finite() && exact && held(p)).then_some(p)
         }
         Op::Sum(l) if l.len() <= 3 => {
             let t: Vec<f64> = l.iter().map(known).collect::<Option<_>>()?;

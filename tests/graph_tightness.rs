@@ -2,10 +2,11 @@
 //! can exist (docs/float.md §19.5): the methods' operation graphs executed in binary32,
 //! every operation rounded as a legal implementation rounds it — under `ieee` to
 //! nearest, with the order of each sum, the fusion of its products and the way of each
-//! division (`/b` or `·(1/b)`) chosen to push the error; under `shader` each addition,
-//! product and input to either neighbouring float, each division 2 ulps and each
+//! division (`/b` or `·(1/b)`) chosen to push the error; under `shader` each addition
+//! and product to either neighbouring float, each division 2 ulps and each
 //! `inverseSqrt` 2 ulps from the exact result (within the 2.5 and 2 ulps the
-//! specifications allow) and results below `2^-126` flushed to zero, each choice in
+//! specifications allow) and results below `2^-126` flushed to zero (both profiles
+//! read each input as its nearest float, as they start from), each choice in
 //! the direction that moves the target pixel the same way (the sign of its
 //! sensitivity, from the exact values). Every form of the method is run, for three
 //! target pixels and both directions; the case's ratio is the worst
@@ -118,7 +119,17 @@ fn execute(g: &Graph, x_in: &[f64; 9], adj: &[f64], sign: f64, shader: bool) -> 
     for (j, node) in g.nodes().iter().enumerate() {
         let push = sign * adj[j];
         y[j] = match &node.op {
-            Op::In(i) => pick(x_in[*i], j, 0),
+            Op::In(i) => {
+                // Both profiles read the nearest float of each input; under `shader` a
+                // subnormal one may be flushed to zero.
+                let v = f64::from(x_in[*i] as f32);
+                let dir = sign * adj[j].signum();
+                if shader && v != 0.0 && v.abs() < 2f64.powi(-126) && -v * dir > 0.0 {
+                    0.0
+                } else {
+                    v
+                }
+            }
             Op::Cst(c) => *c,
             Op::Add(a, b) | Op::Sub(a, b) => {
                 let sub = matches!(node.op, Op::Sub(..));

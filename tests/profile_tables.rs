@@ -174,7 +174,7 @@ fn shader_bounds_are_the_largest_of_every_form() {
         let got: Vec<&str> = forms.iter().map(|f| f.theorem).collect();
         assert_eq!(got, names, "{m}");
         assert!(
-            matches!(status(m, Profile::Shader, F32), Some(Status::PerPixel(t, _, None)) if t == names[0]),
+            matches!(status(m, Profile::Shader, F32), Some(Status::PerPixel(t, _, Some("graph_sound_read"))) if t == names[0]),
             "{m}"
         );
         // The bound applied is never below any form's theorem, and is one of them.

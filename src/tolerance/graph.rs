@@ -200,8 +200,9 @@ pub struct Model {
     /// the method graphs then build it as a reciprocal square root and a division.
     pub sqrt_is_recip_rsqrt: bool,
     /// Whether every implementation reads each input as its nearest number of the
-    /// format (`ieee`: round to nearest): the bound may then start from the inputs
-    /// as read ([`read_to_nearest`], `graph_sound_read` of `proofs/Graph.v`).
+    /// format (`ieee` and `shader`: both start from the nearest floats of the inputs):
+    /// the bound may then start from the inputs as read ([`read_to_nearest`],
+    /// `graph_sound_read` of `proofs/Graph.v`).
     pub inputs_to_nearest: bool,
     /// The largest finite value of the format: a node whose interval reaches past it
     /// may overflow, and has no bound.

@@ -191,7 +191,8 @@ pub enum Status {
     /// `tolerance::graphs`, `proofs/Graph.v`'s `graph_sound`): the `ieee` and `shader`
     /// bounds of the methods whose catalogue row has graphs.
     /// The third field names the theorem that also bounds from the inputs as an
-    /// implementation that rounds to nearest reads them (`ieee`: `graph_sound_read`).
+    /// implementation that rounds to nearest reads them (`ieee` and `shader`:
+    /// `graph_sound_read`).
     PerPixel(&'static str, &'static [&'static str], Option<&'static str>),
     /// The bound of the method's operation graphs alone (their names), per pixel,
     /// composed with the value's last step by a theorem (its name): the squared
@@ -244,8 +245,10 @@ pub fn status(method: crate::Method, profile: Profile, format: Format) -> Option
     // The methods with operation graphs: per pixel, the smaller with theirs.
     let per_pixel = |t: &'static str| {
         if !row.graphs.is_empty() && arith(profile, format).is_some() {
-            // Under `ieee` every input is read to nearest (`graph_sound_read`).
-            let read = (profile == Profile::Ieee).then_some("graph_sound_read");
+            // Under `ieee` and `shader` every input is read to nearest
+            // (`graph_sound_read`).
+            let read =
+                matches!(profile, Profile::Ieee | Profile::Shader).then_some("graph_sound_read");
             Status::PerPixel(t, row.graphs, read)
         } else {
             Status::Proved(t)

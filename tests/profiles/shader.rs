@@ -30,8 +30,19 @@ impl Gpu {
             y
         }
     }
+    /// An input: the nearest float, as the host hands it over (both profiles start
+    /// from the nearest floats of the inputs), flushed below `2^-126` when `flush`;
+    /// the model's adversary moves it as any operation.
     pub(crate) fn input(&self, x: &Q) -> Q {
-        self.r(x.clone())
+        if self.adv.is_some() {
+            return self.r(x.clone());
+        }
+        let y = round_dir(x, F, Dir::Nearest);
+        if self.flush && !y.is_zero() && y.abs() < common::emu::pow2(-126) {
+            Q::zero()
+        } else {
+            y
+        }
     }
     pub(crate) fn add(&self, a: &Q, b: &Q) -> Q {
         self.r(a + b)

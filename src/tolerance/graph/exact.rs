@@ -19,8 +19,8 @@ pub fn interval(x: &crate::BigRational) -> (f64, f64) {
 /// The inputs as an implementation that rounds each to nearest reads them, where
 /// that is one number for each: the intervals of the exact inputs (as
 /// [`inputs_of`] gives them) whose two ends round to the same number of the format,
-/// and no exact input halfway between two of its numbers (which a tie rule may round
-/// either way). Binary32: the interval's ends are `f64`s, so the nearest `f32` of the
+/// zero or normal (a flushing implementation reads a subnormal as 0), and no exact
+/// input halfway between two of its numbers (which a tie rule may round either way). Binary32: the interval's ends are `f64`s, so the nearest `f32` of the
 /// exact input and that of its nearest `f64` (reading through binary64 first) are
 /// both the ends' common one. Binary64: only inputs that are already `f64`s (each
 /// read exactly). `None` where some input's nearest number is not known this way.
@@ -36,9 +36,13 @@ pub fn read_to_nearest(inputs: &[(f64, f64)], format: crate::Format) -> Option<V
                         let other = if f < l { a.next_up() } else { a.next_down() };
                         f != l && (f64::from(other) - l).abs() == (f - l).abs()
                     };
-                    (a == b && a.is_finite() && !tie).then_some(f64::from(a))?
+                    // A subnormal is left out: a flushing implementation reads it as 0.
+                    let normal = a == 0.0 || a.abs() >= f32::MIN_POSITIVE;
+                    (a == b && a.is_finite() && normal && !tie).then_some(f64::from(a))?
                 }
-                crate::Format::Binary64 => (l == h).then_some(l)?,
+                crate::Format::Binary64 => {
+                    (l == h && (l == 0.0 || l.abs() >= f64::MIN_POSITIVE)).then_some(l)?
+                }
                 crate::Format::Binary16 => return None,
             };
             Some((x, x))

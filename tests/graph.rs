@@ -341,19 +341,19 @@ fn run_f32(g: &phong_approx::tolerance::graph::Graph, x: &[(f64, f64)]) -> Vec<f
     y
 }
 
-/// `graph_sound_read` (`proofs/Graph.v`): under `ieee` an implementation reads each
-/// input as its nearest binary32, which `read_to_nearest` gives (checked against the
+/// `graph_sound_read` (`proofs/Graph.v`): under `ieee` and `shader` an implementation
+/// reads each input as its nearest binary32, which `read_to_nearest` gives (checked against the
 /// exact input in rationals: strictly nearer than both neighbours); the method's exact
 /// value at those inputs (Phong's to 2^-256) lies in the certificate's interval on
 /// them, and its distance to the exact value at the exact inputs is within
 /// `read_error` less the error part; a binary32 run of each form from those inputs is
-/// within `read_error` at every pixel. On every published case up to n = 64 (256 in
-/// the extensive tier).
+/// within `read_error` at every pixel, under both profiles' models. On every published
+/// case up to n = 64 (256 in the extensive tier).
 #[test]
 fn graph_sound_read() {
     use phong_approx::tolerance::graph::{evaluate, read_error, read_to_nearest};
     use phong_approx::tolerance::graphs::method_graphs;
-    let m = model(Profile::Ieee, Format::Binary32).unwrap();
+    let models = [Profile::Ieee, Profile::Shader].map(|p| model(p, Format::Binary32).unwrap());
     let (mut checked, mut read_cases) = (0usize, 0usize);
     for set in phong_approx::testkit::SETS {
         for s in published_spans(set)
@@ -390,9 +390,14 @@ fn graph_sound_read() {
                 // The method's own algorithm at the inputs as read (symmetric Phong
                 // mirrors its left half's roots, which |N_a| ≠ |N_b| tells from Phong).
                 let at_read = method.values(&sr).unwrap();
-                for f in method_graphs(method, Form::Any, s.n, &m).unwrap() {
+                for (m, f) in models.iter().flat_map(|m| {
+                    method_graphs(method, Form::Any, s.n, m)
+                        .unwrap()
+                        .into_iter()
+                        .map(move |f| (m, f))
+                }) {
                     let (Ok(b), Ok(br)) =
-                        (evaluate(&f.graph, &ins, &m), evaluate(&f.graph, &read, &m))
+                        (evaluate(&f.graph, &ins, m), evaluate(&f.graph, &read, m))
                     else {
                         continue;
                     };
@@ -420,7 +425,7 @@ fn graph_sound_read() {
     }
     println!("{read_cases} cases read to nearest, {checked} pixels");
     assert!(
-        read_cases > tiered(20, 60) && checked > 10_000,
+        read_cases > tiered(20, 60) && checked > 20_000,
         "{read_cases} {checked}"
     );
 }
@@ -592,7 +597,7 @@ fn graph_certificates_satisfy_the_theorems_rules() {
         ];
         for &(profile, format) in &profiles[..tiered(2, 3)] {
             let m = model(profile, format).unwrap();
-            // The exact inputs, and (`ieee`) the inputs as read to nearest, whose
+            // The exact inputs, and the inputs as read to nearest, whose
             // certificate `graph_sound_read` takes with those as the exact inputs.
             let mut sets = vec![(inputs(s).to_vec(), x_in.clone())];
             if let Some(read) = m

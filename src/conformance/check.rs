@@ -454,7 +454,7 @@ fn case_report(
     };
     let unbounded = matches!(tol, Tolerance::Profile { .. }) && allowed_abs.is_none();
     let (mut max_levels, mut sum_levels, mut max_abs, mut max_ulps) = (0u32, 0u64, 0f64, 0f64);
-    let (mut worst, mut worst_excess, mut pass) = (0usize, f64::NEG_INFINITY, true);
+    let (mut worst, mut worst_used, mut pass) = (0usize, f64::NEG_INFINITY, true);
     let mut ratio = 0f64;
     // The worst pixel's own allowance (per pixel where the bounds are).
     let mut worst_allowed = allowed_abs;
@@ -480,7 +480,7 @@ fn case_report(
             if not_finite.is_none() {
                 not_finite = Some(i);
                 worst = i;
-                worst_excess = f64::INFINITY;
+                worst_used = f64::INFINITY;
                 ratio = f64::INFINITY;
             }
             continue;
@@ -520,15 +520,15 @@ fn case_report(
         }
         // The worst pixel is the one over its own tolerance most, relative to it, so
         // that the ratio reported is that pixel's.
-        if used > worst_excess {
-            worst_excess = used;
+        if used > worst_used {
+            worst_used = used;
             worst = i;
             ratio = used;
             worst_allowed = allowed_abs;
         }
         if implausible || d.is_nan() {
             ratio = f64::INFINITY;
-            worst_excess = f64::INFINITY;
+            worst_used = f64::INFINITY;
         }
     }
     // A list of the wrong length, or no bound: no finite ratio.

@@ -20,7 +20,7 @@
 //! each operation to either neighbouring float, and `graph_sound` by name).
 
 mod exact;
-use exact::exact_result;
+use exact::{exact_result, held_exactly};
 pub use exact::{inputs_of, interval, read_error, read_to_nearest};
 
 /// A node's index in its graph.
@@ -399,10 +399,7 @@ pub fn evaluate(graph: &Graph, inputs: &[(f64, f64)], model: &Model) -> Result<B
                     .get(*i)
                     .filter(|(l, h)| l.is_finite() && h.is_finite() && l <= h)
                     .ok_or(GraphError::Input { node: j, input: *i })?;
-                if l == h
-                    && model.format.holds(l)
-                    && (l == 0.0 || l.abs() >= model.format.min_normal())
-                {
+                if l == h && held_exactly(l, model.format) {
                     // A value the format holds, zero or normal (flushing moves only
                     // subnormals), is read exactly, by any rounding (`exact_op_model`).
                     node_v = (0.0, 0.0);

@@ -24,6 +24,10 @@ impl Gpu {
             return a.extreme(x, a.k_op);
         }
         let y = round_dir(&x, F, self.dir);
+        self.flushed(y)
+    }
+    /// `y`, or 0 where it is below `2^-126` and this GPU flushes.
+    fn flushed(&self, y: Q) -> Q {
         if self.flush && !y.is_zero() && y.abs() < common::emu::pow2(-126) {
             Q::zero()
         } else {
@@ -38,11 +42,7 @@ impl Gpu {
             return self.r(x.clone());
         }
         let y = round_dir(x, F, Dir::Nearest);
-        if self.flush && !y.is_zero() && y.abs() < common::emu::pow2(-126) {
-            Q::zero()
-        } else {
-            y
-        }
+        self.flushed(y)
     }
     pub(crate) fn add(&self, a: &Q, b: &Q) -> Q {
         self.r(a + b)

@@ -37,12 +37,10 @@ pub fn read_to_nearest(inputs: &[(f64, f64)], format: crate::Format) -> Option<V
                         f != l && (f64::from(other) - l).abs() == (f - l).abs()
                     };
                     // A subnormal is left out: a flushing implementation reads it as 0.
-                    let normal = a == 0.0 || a.abs() >= f32::MIN_POSITIVE;
-                    (a == b && a.is_finite() && normal && !tie).then_some(f64::from(a))?
+                    let x = f64::from(a);
+                    (a == b && held_exactly(x, format) && !tie).then_some(x)?
                 }
-                crate::Format::Binary64 => {
-                    (l == h && (l == 0.0 || l.abs() >= f64::MIN_POSITIVE)).then_some(l)?
-                }
+                crate::Format::Binary64 => (l == h && held_exactly(l, format)).then_some(l)?,
                 crate::Format::Binary16 => return None,
             };
             Some((x, x))
@@ -74,6 +72,12 @@ pub fn read_error(exact: &Bounds, read: &Bounds, p: Id) -> f64 {
     add_up(read.err[p], d.max(0.0))
 }
 
+/// Whether every rounding of `x` to `format` is `x` itself, flushing included: `x` is
+/// a number of the format, zero or normal (`exact_op_model`).
+pub(super) fn held_exactly(x: f64, format: crate::Format) -> bool {
+    (x == 0.0 || x.abs() >= format.min_normal()) && format.holds(x)
+}
+
 /// The exact result of an addition, subtraction, product or sum (any order) whose
 /// operands are known exactly (a point interval, no error), when every way of
 /// computing it is exact: each result (for a sum, each partial sum of every order) is
@@ -88,7 +92,7 @@ pub(super) fn exact_result(
     model: &Model,
 ) -> Option<f64> {
     let known = |a: &Id| (lo[*a] == hi[*a] && err[*a] == 0.0).then_some(lo[*a]);
-    let held = |r: f64| (r == 0.0 || r.abs() >= model.format.min_normal()) && model.format.holds(r);
+    let held = |r: f64| held_exactly(r, model.format);
     // `a + b` computed in f64 and checked exact (two-sum), then held by the format.
     let add = |a: f64, b: f64| {
         let s = a + b;

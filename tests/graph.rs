@@ -535,7 +535,7 @@ fn quake_rsqrt_duff_exceeds_the_graph_bound() {
 
 /// The rules of `proofs/Graph.v` this file checks, as the `.v` states them: the test
 /// below fails when one of them is no longer in the file.
-const GRAPH_V_RULES: [&str; 13] = [
+const GRAPH_V_RULES: [&str; 15] = [
     "let eta := neta (g j) in",
     "| In _ => v * m + eta <= E j",
     "| Add a b | Sub a b => E a + E b + v * (m + E a + E b) + eta <= E j",
@@ -549,6 +549,10 @@ const GRAPH_V_RULES: [&str; 13] = [
     "sumR E l + (w - 1) * sumR (fun i => mag (lo i) (hi i) + E i) l",
     "| Sqrt a => 0 < S j /\\ S j * S j <= lo a /\\ lo j <= S j /\\ 0 <= hi j /\\ hi a <= hi j * hi j",
     "| Rsqrt a => 0 < S j /\\ S j * S j <= lo a /\\ 0 < lo j /\\ lo j * lo j * hi a <= 1 /\\ 1 <= hi j * S j",
+    // `graph::read_error`: the read certificate's error plus the intervals' distance.
+    "Rabs (y j - x j) <= Er j + Rmax (hir j - lo j) (hi j - lor j)",
+    // The exact nodes and inputs (`graph::exact`): nv = 0, neta = 0.
+    "ap1 0 0 (round radix2 (FLT_exp emin prec) rnd x) x",
 ];
 
 /// The certificate the evaluator computes (`tolerance::graph::evaluate`, in `f64`

@@ -5,10 +5,10 @@
     on the standard library axioms of the real numbers. *)
 
 From PhongApprox Require Import Span Duff Euler Derivative Symmetry Adaptive Angular.
-From PhongApprox Require Import ClosedForms Angle FastSetup Related Float Graph ShaderSqrt.
-From PhongApprox Require Import PhongValue PhongCountD PhongCount PhongNormalize Profiles.
-From PhongApprox Require Import AdaptiveDelta DuffCount Fixed Composed Skip Squared.
-From PhongApprox Require Import SkipFloat.
+From PhongApprox Require Import ClosedForms Angle FastSetup Related Float Graph GraphAffine.
+From PhongApprox Require Import ShaderSqrt PhongValue PhongCountD PhongCount PhongNormalize.
+From PhongApprox Require Import Profiles AdaptiveDelta DuffCount Fixed Composed Skip.
+From PhongApprox Require Import Squared SkipFloat.
 
 (** Span.v *)
 Check eq_2_p_is_linear.
@@ -195,6 +195,12 @@ Check graph_sound.
 Print Assumptions graph_sound.
 Check graph_sound_read.
 Print Assumptions graph_sound_read.
+
+(** GraphAffine.v *)
+Check graph_sound_affine.
+Print Assumptions graph_sound_affine.
+Check graph_sound_affine_read.
+Print Assumptions graph_sound_affine_read.
 
 (** ShaderSqrt.v *)
 Check shader_sqrt_recip_rsqrt.

@@ -19,7 +19,7 @@ fn read(p: &str) -> String {
 
 /// Proof files whose theorems are tested and explained somewhere else than
 /// `tests/claims/` and `docs/derivations.md`: (file, test file, document).
-const GROUPS: [(&str, &str, &str); 17] = [
+const GROUPS: [(&str, &str, &str); 18] = [
     ("Related.v", "tests/related.rs", "docs/comparison.md"),
     ("Skip.v", "tests/skip.rs", "docs/derivations.md"),
     ("Squared.v", "tests/squared.rs", "docs/derivations.md"),
@@ -27,6 +27,7 @@ const GROUPS: [(&str, &str, &str); 17] = [
     ("Float.v", "tests/float_bounds.rs", "docs/float.md"),
     ("Fixed.v", "tests/lowp.rs", "docs/float.md"),
     ("Graph.v", "tests/graph.rs", "docs/float.md"),
+    ("GraphAffine.v", "tests/graph_affine.rs", "docs/float.md"),
     ("FastSetup.v", "tests/fast_rows.rs", "docs/float.md"),
     ("ShaderSqrt.v", "tests/profiles/shader.rs", "docs/float.md"),
     ("Composed.v", "tests/composed.rs", "docs/float.md"),

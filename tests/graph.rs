@@ -76,7 +76,7 @@ fn all_cases() -> Vec<(Option<Case>, Span<Q>)> {
 
 /// The exact values of `method` on `s`: Phong's (and Duff's, symmetric Phong's) to
 /// 2^-256, the others exactly.
-fn exact(method: Method, c: Option<&Case>, s: &Span<Q>) -> Vec<Q> {
+pub(super) fn exact(method: Method, c: Option<&Case>, s: &Span<Q>) -> Vec<Q> {
     // Phong's exact values (Duff's and symmetric Phong's too) once per span.
     thread_local! {
         static PHONG: std::cell::RefCell<Option<(String, Vec<Q>)>> = const { std::cell::RefCell::new(None) };
@@ -321,7 +321,7 @@ fn graph_bounds_against_the_formulas() {
 
 /// A binary32 run of `g` to nearest, in the graph's order (each sum left to right,
 /// each division one division), from the inputs `x`.
-fn run_f32(g: &phong_approx::tolerance::graph::Graph, x: &[(f64, f64)]) -> Vec<f32> {
+pub(super) fn run_f32(g: &phong_approx::tolerance::graph::Graph, x: &[(f64, f64)]) -> Vec<f32> {
     use phong_approx::tolerance::graph::Op;
     let mut y: Vec<f32> = Vec::with_capacity(g.nodes().len());
     for node in g.nodes() {

@@ -108,7 +108,7 @@ fn euler_is_proved_under_ieee() {
         Some(Status::PerPixel(
             "profile_ieee_euler_binary32",
             EULER_GRAPHS,
-            Some("graph_sound_read")
+            &phong_approx::tolerance::profile::GRAPH_THEOREMS_READ
         ))
     );
     assert_eq!(
@@ -116,7 +116,7 @@ fn euler_is_proved_under_ieee() {
         Some(Status::PerPixel(
             "profile_ieee_euler_binary64_large",
             EULER_GRAPHS,
-            Some("graph_sound_read")
+            &phong_approx::tolerance::profile::GRAPH_THEOREMS_READ
         ))
     );
     // `check` applies exactly the theorems' bound.
@@ -174,7 +174,7 @@ fn shader_bounds_are_the_largest_of_every_form() {
         let got: Vec<&str> = forms.iter().map(|f| f.theorem).collect();
         assert_eq!(got, names, "{m}");
         assert!(
-            matches!(status(m, Profile::Shader, F32), Some(Status::PerPixel(t, _, Some("graph_sound_read"))) if t == names[0]),
+            matches!(status(m, Profile::Shader, F32), Some(Status::PerPixel(t, _, also)) if t == names[0] && also == phong_approx::tolerance::profile::GRAPH_THEOREMS_READ),
             "{m}"
         );
         // The bound applied is never below any form's theorem, and is one of them.

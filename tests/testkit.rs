@@ -54,7 +54,7 @@ fn a_wrong_implementation_fails_with_a_message_that_helps() {
     println!("{text}");
     assert!(text.starts_with("corrected-euler in f32 judged by the ieee profile's bound: "));
     for needle in [
-        "  worst: edge/edge-003 pixel 1, 12 levels off, ",
+        "  worst: edge/edge-003 pixel 2, 24 levels off, ",
         "  per set: typical ",
         "N_a       = (",
         "(0x",
@@ -77,7 +77,7 @@ fn a_wrong_implementation_fails_with_a_message_that_helps() {
     // docs/float.md §19) —, never a mild one before a worse one.
     let f = r.failures();
     assert_eq!(f[0].case, "edge-003", "{text}");
-    assert_eq!(f[0].levels, Some(12));
+    assert_eq!(f[0].levels, Some(24));
     assert!(f[0].ratio > 1e4, "{}", f[0].ratio);
     assert!(f.windows(2).all(|w| w[0].ratio >= w[1].ratio), "{text}");
     let first_full = text.find("\n  edge/edge-003 (n = 2)").unwrap();
@@ -258,7 +258,7 @@ fn one_case_runs_by_id_and_an_unknown_id_is_a_failure() {
     assert_eq!(seen, ["edge-003"]);
     assert_eq!(r.cases(), 1);
     assert_eq!(r.failures().len(), 1);
-    assert_eq!(r.worst().unwrap().levels, Some(12));
+    assert_eq!(r.worst().unwrap().levels, Some(24));
     let r = Suite::set("paper")
         .case("edge-003")
         .check_f64(|s| vec![0.0; s.n as usize + 1]);

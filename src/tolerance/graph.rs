@@ -19,9 +19,11 @@
 //! Tested: `tests/graph.rs` (the rules against exact rationals, executions that round
 //! each operation to either neighbouring float, and `graph_sound` by name).
 
+mod affine;
 mod exact;
+pub use affine::{affine, Affine, KEPT};
 use exact::{exact_result, held_exactly};
-pub use exact::{inputs_of, interval, read_error, read_to_nearest};
+pub use exact::{inputs_of, interval, read_distance, read_error, read_to_nearest};
 
 /// A node's index in its graph.
 pub type Id = usize;

@@ -7,7 +7,7 @@
 //! (an implementation computes one of them); each graph's bound is `graph_sound`'s
 //! (`proofs/Graph.v`). Inputs: `N_a` (0–2), `N_b` (3–5), `L` (6–8).
 
-use super::graph::{evaluate, read_error, Graph, GraphError, Id, Model};
+use super::graph::{affine, evaluate, read_distance, read_error, Graph, GraphError, Id, Model};
 use super::profile::Form;
 use crate::Method;
 
@@ -463,17 +463,38 @@ pub fn pixel_bounds(
         let from_read = read
             .as_ref()
             .and_then(|r| evaluate(&f.graph, r, model).ok());
+        // The affine forms (`graph_sound_affine`, `graph_sound_affine_read`), where
+        // their conditions hold.
+        let (aff, aff_read) = if f.signs.is_none() {
+            (
+                affine(&f.graph, &b),
+                from_read.as_ref().and_then(|br| affine(&f.graph, br)),
+            )
+        } else {
+            (None, None)
+        };
         for way in &f.pixels {
             for (i, (w, &p)) in worst.iter_mut().zip(way).enumerate() {
                 let e = match &f.signs {
                     // The squared method's value, composed from `g_i` and `p_i`.
                     Some(signs) => squared::signed_root(&b, p, signs[i], model)
                         .ok_or(GraphError::SquaredOutOfRange { node: p })?,
-                    // The smaller of the bound from the exact inputs (`graph_sound`) and
-                    // the one from the inputs as read (`graph_sound_read`).
-                    None => from_read
-                        .as_ref()
-                        .map_or(b.err[p], |br| b.err[p].min(read_error(&b, br, p))),
+                    // The smallest of the bounds from the exact inputs (`graph_sound`,
+                    // `graph_sound_affine`) and from the inputs as read
+                    // (`graph_sound_read`, `graph_sound_affine_read`).
+                    None => {
+                        let mut e = b.err[p];
+                        if let Some(a) = &aff {
+                            e = e.min(a.err[p]);
+                        }
+                        if let Some(br) = &from_read {
+                            e = e.min(read_error(&b, br, p));
+                            if let Some(a) = &aff_read {
+                                e = e.min((a.err[p] + read_distance(&b, br, p)).next_up());
+                            }
+                        }
+                        e
+                    }
                 };
                 *w = w.max(e);
             }

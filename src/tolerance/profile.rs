@@ -180,6 +180,32 @@ pub fn proved_in(
     (!forms.is_empty()).then_some(forms)
 }
 
+/// The graph theorems applied besides `graph_sound` where the inputs are read to
+/// nearest (`Status::PerPixel`'s third field): the affine forms, and both bounds from
+/// the inputs as read.
+pub const GRAPH_THEOREMS_READ: [&str; 3] = [
+    "graph_sound_affine",
+    "graph_sound_read",
+    "graph_sound_affine_read",
+];
+
+/// `graph_sound` and `also`, in order.
+pub(crate) fn graph_theorems(also: &[&'static str]) -> Vec<&'static str> {
+    std::iter::once("graph_sound")
+        .chain(also.iter().copied())
+        .collect()
+}
+
+/// `a`, `a and b`, `a, b and c`.
+pub(crate) fn and_list(names: &[impl AsRef<str>]) -> String {
+    let n: Vec<&str> = names.iter().map(AsRef::as_ref).collect();
+    match n.split_last() {
+        None => String::new(),
+        Some((last, [])) => (*last).to_string(),
+        Some((last, rest)) => format!("{} and {last}", rest.join(", ")),
+    }
+}
+
 /// How a profile's bound for a method is known.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Status {
@@ -190,10 +216,15 @@ pub enum Status {
     /// the method's operation graphs (their names: the catalogue row's `graphs`;
     /// `tolerance::graphs`, `proofs/Graph.v`'s `graph_sound`): the `ieee` and `shader`
     /// bounds of the methods whose catalogue row has graphs.
-    /// The third field names the theorem that also bounds from the inputs as an
-    /// implementation that rounds to nearest reads them (`ieee` and `shader`:
-    /// `graph_sound_read`).
-    PerPixel(&'static str, &'static [&'static str], Option<&'static str>),
+    /// The third field names the graph theorems applied besides `graph_sound` (the
+    /// affine forms, `graph_sound_affine` of `proofs/GraphAffine.v`; and where an
+    /// implementation reads each input to nearest, `ieee` and `shader`, the bounds
+    /// from the inputs as read: `graph_sound_read`, `graph_sound_affine_read`).
+    PerPixel(
+        &'static str,
+        &'static [&'static str],
+        &'static [&'static str],
+    ),
     /// The bound of the method's operation graphs alone (their names), per pixel,
     /// composed with the value's last step by a theorem (its name): the squared
     /// method's `sign(p)·√max(0, g)` (`sq_signed_value_error`); the third field names
@@ -207,9 +238,9 @@ impl Status {
     pub fn label(&self) -> String {
         match self {
             Status::Proved(t) => format!("proved ({t})"),
-            Status::PerPixel(t, graphs, read) => format!(
-                "proved ({t}; per pixel the smaller with graph_sound{} on the {} {})",
-                read.map_or(String::new(), |r| format!(" and {r}")),
+            Status::PerPixel(t, graphs, also) => format!(
+                "proved ({t}; per pixel the smallest with {} on the {} {})",
+                and_list(&graph_theorems(also)),
                 if graphs.len() == 1 { "graph" } else { "graphs" },
                 graphs.join(", ")
             ),
@@ -246,10 +277,14 @@ pub fn status(method: crate::Method, profile: Profile, format: Format) -> Option
     let per_pixel = |t: &'static str| {
         if !row.graphs.is_empty() && arith(profile, format).is_some() {
             // Under `ieee` and `shader` every input is read to nearest
-            // (`graph_sound_read`).
-            let read =
-                matches!(profile, Profile::Ieee | Profile::Shader).then_some("graph_sound_read");
-            Status::PerPixel(t, row.graphs, read)
+            // (`graph_sound_read`, `graph_sound_affine_read`).
+            let also: &'static [&'static str] =
+                if matches!(profile, Profile::Ieee | Profile::Shader) {
+                    &GRAPH_THEOREMS_READ
+                } else {
+                    &GRAPH_THEOREMS_READ[..1]
+                };
+            Status::PerPixel(t, row.graphs, also)
         } else {
             Status::Proved(t)
         }

@@ -35,6 +35,9 @@ mod duff_count;
 /// The operation graphs' per-case bounds against every implementation here (`graph::*`).
 #[path = "../graph.rs"]
 pub(crate) mod graph;
+/// The affine error forms against `proofs/GraphAffine.v` (`graph_affine::*`).
+#[path = "../graph_affine.rs"]
+mod graph_affine;
 /// Bugs a few times larger than rounding fail the published sets (`graph_mutants::*`).
 #[path = "../graph_mutants.rs"]
 mod graph_mutants;

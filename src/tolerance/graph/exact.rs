@@ -68,8 +68,17 @@ pub fn inputs_of(
 /// the exact inputs `exact` was evaluated on — `read`'s error plus the distance
 /// between the two intervals of exact values, rounded up.
 pub fn read_error(exact: &Bounds, read: &Bounds, p: Id) -> f64 {
-    let d = up(read.hi[p] - exact.lo[p]).max(up(exact.hi[p] - read.lo[p]));
-    add_up(read.err[p], d.max(0.0))
+    add_up(read.err[p], read_distance(exact, read, p))
+}
+
+/// The distance term of `graph_sound_read` and `graph_sound_affine_read` at node `p`:
+/// how far the exact value at the inputs `read` was evaluated on may be from the
+/// exact value at the exact inputs, the largest gap between the two intervals,
+/// rounded up.
+pub fn read_distance(exact: &Bounds, read: &Bounds, p: Id) -> f64 {
+    up(read.hi[p] - exact.lo[p])
+        .max(up(exact.hi[p] - read.lo[p]))
+        .max(0.0)
 }
 
 /// Whether every rounding of `x` to `format` is `x` itself, flushing included: `x` is

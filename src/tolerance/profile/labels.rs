@@ -62,9 +62,14 @@ fn markdown(st: &Status) -> String {
     };
     match st {
         Status::Proved(t) => format!("proved (`{t}`)"),
-        Status::PerPixel(t, graphs, read) => format!(
-            "proved (`{t}`; per pixel the smaller with `graph_sound`{} on {})",
-            read.map_or(String::new(), |r| format!(" and `{r}`")),
+        Status::PerPixel(t, graphs, also) => format!(
+            "proved (`{t}`; per pixel the smallest with {} on {})",
+            super::and_list(
+                &super::graph_theorems(also)
+                    .iter()
+                    .map(|g| format!("`{g}`"))
+                    .collect::<Vec<_>>()
+            ),
             named(graphs)
         ),
         Status::Graphs(t, graphs, also) => format!(

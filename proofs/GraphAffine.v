@@ -100,7 +100,16 @@ Definition aff_ok (N : nat) (g : nat -> node) (lo hi E S T : nat -> R)
       (lo b = hi b /\ E b = 0 /\ R0 a / Rabs (lo b) + dev (fun k => fm M a k / lo b) <= R0 j)
       \/ (let lb := Rmin (Rabs (lo b)) (Rabs (hi b)) in
           F b < lb /\ opaque ((F a + mag (lo j) (hi j) * F b) / (lb - F b)))
-  | Sqrt a => opaque (F a / (S j + T j))
+      \/ (F b < Rmin (Rabs (lo b)) (Rabs (hi b)) /\
+          forall u q, / hi b <= u <= / lo b -> lo j <= q <= hi j ->
+            Rabs u * R0 a + Rabs (q * u) * R0 b
+            + (F a + Rabs q * F b) * F b * (u * u) / (1 - Rabs u * F b)
+            + dev (fun k => u * fm M a k - q * u * fm M b k) <= R0 j)
+  | Sqrt a =>
+      opaque (F a / (S j + T j))
+      \/ (forall s, S j <= s <= hi j ->
+            R0 a / (2 * s) + F a * F a / (2 * s * ((s + T j) * (s + T j)))
+            + dev (fun k => fm M a k / (2 * s)) <= R0 j)
   | Rsqrt a => opaque (F a / (2 * (S j * S j * S j)))
   | Sum l => sumR R0 l + dev (fun k => sumR (fun t => fm M t k) l) <= R0 j
   end.
@@ -303,6 +312,143 @@ Proof.
   unfold Rminus. lra.
 Qed.
 
+(** A division, linearly: u = 1/x_b and q = x_a/x_b range over the intervals the
+    certificate gives them, the second-order term over |x_b| (|x_b| - F b). *)
+Lemma div_lin : forall N (lo hi : nat -> R) M R0 e (d : nat -> R) j a b xa xb ya yb,
+  Forall (fun k => Rabs (d k) <= e k) (seq 0 N) ->
+  lo b <= xb <= hi b -> (0 < lo b \/ hi b < 0) -> lo j <= xa / xb <= hi j ->
+  Rabs (ya - xa - sumR (fun k => fm M a k * d k) (seq 0 N)) <= R0 a ->
+  Rabs (yb - xb - sumR (fun k => fm M b k * d k) (seq 0 N)) <= R0 b ->
+  Rabs (ya - xa) <= ferr N M R0 e a -> Rabs (yb - xb) <= ferr N M R0 e b ->
+  ferr N M R0 e b < Rmin (Rabs (lo b)) (Rabs (hi b)) ->
+  (forall u q, / hi b <= u <= / lo b -> lo j <= q <= hi j ->
+     Rabs u * R0 a + Rabs (q * u) * R0 b
+     + (ferr N M R0 e a + Rabs q * ferr N M R0 e b) * ferr N M R0 e b * (u * u)
+       / (1 - Rabs u * ferr N M R0 e b)
+     + sumR (fun k => Rabs (u * fm M a k - q * u * fm M b k - pm M j k) * e k) (seq 0 N)
+     <= R0 j) ->
+  Rabs (ya / yb - xa / xb - sumR (fun k => pm M j k * d k) (seq 0 N)) <= R0 j.
+Proof.
+  intros N lo hi M R0 e d j a b xa xb ya yb Hds Ib Hs Ij Ra Rb Fa Fb Hlt Hc.
+  set (Fa' := ferr N M R0 e a) in *. set (Fb' := ferr N M R0 e b) in *.
+  pose proof (div_lb _ _ _ Ib Hs) as Hlb.
+  set (X := Rabs xb) in *.
+  assert (HX : 0 < X) by (pose proof (Rabs_pos (yb - xb)); lra).
+  assert (Hxb : xb <> 0) by (intro Hz; unfold X in HX; rewrite Hz, Rabs_R0 in HX; lra).
+  assert (HY : X - Fb' <= Rabs yb).
+  { pose proof (Rabs_triang_inv xb yb). rewrite Rabs_minus_sym in Fb. unfold X. lra. }
+  assert (Hyb : yb <> 0) by (intro Hz; rewrite Hz, Rabs_R0 in HY; lra).
+  set (u := / xb). set (q := xa / xb).
+  assert (Hu : / hi b <= u <= / lo b) by (apply inv_between; auto).
+  specialize (Hc u q Hu Ij).
+  set (La := sumR (fun k => fm M a k * d k) (seq 0 N)) in *.
+  set (Lb := sumR (fun k => fm M b k * d k) (seq 0 N)) in *.
+  set (Lj := sumR (fun k => pm M j k * d k) (seq 0 N)) in *.
+  pose proof (lin_dev (fun k => u * fm M a k - q * u * fm M b k) (pm M j) d e _ Hds) as Hl.
+  rewrite lin_diff, (sumR_ext _ (fun k => (u * fm M a k + (- (q * u)) * fm M b k - 0) * d k))
+    in Hl by (intro; ring).
+  rewrite sumR_lin, sumR_zero in Hl. fold La Lb in Hl.
+  set (T2 := ((ya - xa) - q * (yb - xb)) * (yb - xb) / (xb * yb)).
+  assert (Hid : ya / yb - q - Lj
+                = u * (ya - xa - La) - q * u * (yb - xb - Lb)
+                  + (u * La + - (q * u) * Lb - 0 - Lj) - T2).
+  { unfold T2, u, q. field. split; assumption. }
+  rewrite Hid.
+  assert (HT : Rabs T2 <= (Fa' + Rabs q * Fb') * Fb' * (u * u) / (1 - Rabs u * Fb')).
+  { assert (Huu : u * u = / X * / X).
+    { unfold u, X. rewrite <- Rinv_mult, <- Rinv_mult. f_equal.
+      rewrite <- Rabs_mult. symmetry. apply Rabs_pos_eq. nra. }
+    assert (Hau : Rabs u = / X) by (unfold u, X; apply Rabs_inv).
+    rewrite Huu, Hau.
+    replace ((Fa' + Rabs q * Fb') * Fb' * (/ X * / X) / (1 - / X * Fb'))
+      with ((Fa' + Rabs q * Fb') * Fb' / (X * (X - Fb'))) by (field; lra).
+    unfold T2. unfold Rdiv. rewrite !Rabs_mult, Rabs_inv, Rabs_mult. fold X.
+    assert (Hn : Rabs (ya - xa - q * (yb - xb)) <= Fa' + Rabs q * Fb').
+    { pose proof (Rabs_triang (ya - xa) (- (q * (yb - xb)))). rewrite Rabs_Ropp, Rabs_mult in H.
+      assert (Rabs q * Rabs (yb - xb) <= Rabs q * Fb') by (apply Rmult_le_compat_l; auto using Rabs_pos).
+      unfold Rminus at 1. lra. }
+    assert (Hd : / (X * Rabs yb) <= / (X * (X - Fb'))).
+    { apply Rinv_le_contravar; [apply Rmult_lt_0_compat; lra | apply Rmult_le_compat_l; lra]. }
+    apply Rmult_le_compat; [apply Rmult_le_pos; apply Rabs_pos | left; apply Rinv_0_lt_compat;
+      apply Rmult_lt_0_compat; [lra | lra] | | exact Hd].
+    apply Rmult_le_compat; auto using Rabs_pos. }
+  assert (H1 : Rabs (u * (ya - xa - La)) <= Rabs u * R0 a)
+    by (rewrite Rabs_mult; apply Rmult_le_compat_l; auto using Rabs_pos).
+  assert (H2 : Rabs (q * u * (yb - xb - Lb)) <= Rabs (q * u) * R0 b)
+    by (rewrite Rabs_mult; apply Rmult_le_compat_l; auto using Rabs_pos).
+  pose proof (Rabs_triang (u * (ya - xa - La) - q * u * (yb - xb - Lb)
+                           + (u * La + - (q * u) * Lb - 0 - Lj)) (- T2)).
+  pose proof (Rabs_triang (u * (ya - xa - La) - q * u * (yb - xb - Lb))
+                          (u * La + - (q * u) * Lb - 0 - Lj)).
+  pose proof (Rabs_triang (u * (ya - xa - La)) (- (q * u * (yb - xb - Lb)))).
+  rewrite Rabs_Ropp in H, H3.
+  replace (u * (ya - xa - La) - q * u * (yb - xb - Lb) + (u * La + - (q * u) * Lb - 0 - Lj) + - T2)
+    with (u * (ya - xa - La) - q * u * (yb - xb - Lb) + (u * La + - (q * u) * Lb - 0 - Lj) - T2)
+    in H by ring.
+  replace (u * (ya - xa - La) + - (q * u * (yb - xb - Lb)))
+    with (u * (ya - xa - La) - q * u * (yb - xb - Lb)) in H3 by ring.
+  fold Lj in Hl. lra.
+Qed.
+
+(** A square root, linearly: s = sqrt x_a ranges over [S j, hi j]. *)
+Lemma sqrt_lin : forall N (hij : R) M R0 e (d : nat -> R) j a S T xa ya Fa,
+  Forall (fun k => Rabs (d k) <= e k) (seq 0 N) ->
+  0 < S -> S * S <= xa -> 0 <= T -> T * T <= ya -> 0 <= hij -> xa <= hij * hij ->
+  Rabs (ya - xa - sumR (fun k => fm M a k * d k) (seq 0 N)) <= R0 a ->
+  Rabs (ya - xa) <= Fa ->
+  (forall s, S <= s <= hij ->
+     R0 a / (2 * s) + Fa * Fa / (2 * s * ((s + T) * (s + T)))
+     + sumR (fun k => Rabs (fm M a k / (2 * s) - pm M j k) * e k) (seq 0 N) <= R0 j) ->
+  Rabs (sqrt ya - sqrt xa - sumR (fun k => pm M j k * d k) (seq 0 N)) <= R0 j.
+Proof.
+  intros N hij M R0 e d j a S T xa ya Fa Hds HS HSx HT HTy Hh Hxh Ra Fa'' Hc.
+  set (s := sqrt xa). set (t := sqrt ya).
+  assert (Hs : S <= s) by (apply sqrt_ge; auto).
+  assert (Hsh : s <= hij).
+  { unfold s. rewrite <- (sqrt_square hij) by exact Hh. apply sqrt_le_1_alt. exact Hxh. }
+  assert (Ht : T <= t).
+  { destruct (Req_dec T 0) as [Hz | Hz]; [rewrite Hz; apply sqrt_pos|].
+    apply sqrt_ge; [lra | exact HTy]. }
+  specialize (Hc s (conj Hs Hsh)).
+  assert (Hxa : 0 <= xa) by nra. assert (Hya : 0 <= ya) by nra.
+  assert (Hss : s * s = xa) by (apply sqrt_sqrt; exact Hxa).
+  assert (Htt : t * t = ya) by (apply sqrt_sqrt; exact Hya).
+  set (La := sumR (fun k => fm M a k * d k) (seq 0 N)) in *.
+  set (Lj := sumR (fun k => pm M j k * d k) (seq 0 N)) in *.
+  pose proof (lin_dev (fun k => fm M a k / (2 * s)) (pm M j) d e _ Hds) as Hl.
+  rewrite lin_diff, (sumR_ext _ (fun k => (/ (2 * s) * fm M a k + 0 * fm M a k - 0) * d k))
+    in Hl by (intro; unfold Rdiv; ring).
+  rewrite sumR_lin, sumR_zero in Hl. fold La Lj in Hl.
+  set (A := ya - xa) in *.
+  set (T2 := A * A / (2 * s * ((s + t) * (s + t)))).
+  assert (Hid : t - s - Lj = / (2 * s) * (A - La) + (/ (2 * s) * La + 0 * La - 0 - Lj) - T2).
+  { unfold T2, A. rewrite <- Hss, <- Htt. field. lra. }
+  rewrite Hid.
+  assert (HT2 : Rabs T2 <= Fa * Fa / (2 * s * ((s + T) * (s + T)))).
+  { assert (Hp1 : 0 < 2 * s * ((s + t) * (s + t))).
+    { apply Rmult_lt_0_compat; [lra|]. apply Rmult_lt_0_compat; lra. }
+    assert (Hp2 : 0 < 2 * s * ((s + T) * (s + T))).
+    { apply Rmult_lt_0_compat; [lra|]. apply Rmult_lt_0_compat; lra. }
+    assert (Hp3 : (s + T) * (s + T) <= (s + t) * (s + t))
+      by (apply Rmult_le_compat; lra).
+    unfold T2. unfold Rdiv. rewrite Rabs_mult, Rabs_inv.
+    rewrite (Rabs_pos_eq (2 * s * ((s + t) * (s + t)))) by lra.
+    assert (HA : Rabs (A * A) <= Fa * Fa)
+      by (rewrite Rabs_mult; pose proof (Rabs_pos A); apply Rmult_le_compat; lra).
+    apply Rmult_le_compat; [apply Rabs_pos | left; apply Rinv_0_lt_compat; lra | exact HA |].
+    apply Rinv_le_contravar; [lra|].
+    apply Rmult_le_compat_l; lra. }
+  assert (H1 : Rabs (/ (2 * s) * (A - La)) <= R0 a / (2 * s)).
+  { rewrite Rabs_mult, Rabs_inv, (Rabs_pos_eq (2 * s)) by lra. unfold Rdiv.
+    rewrite Rmult_comm. apply Rmult_le_compat_r; [left; apply Rinv_0_lt_compat; lra | exact Ra]. }
+  pose proof (Rabs_triang (/ (2 * s) * (A - La) + (/ (2 * s) * La + 0 * La - 0 - Lj)) (- T2)).
+  pose proof (Rabs_triang (/ (2 * s) * (A - La)) (/ (2 * s) * La + 0 * La - 0 - Lj)).
+  rewrite Rabs_Ropp in H.
+  replace (/ (2 * s) * (A - La) + (/ (2 * s) * La + 0 * La - 0 - Lj) + - T2)
+    with (/ (2 * s) * (A - La) + (/ (2 * s) * La + 0 * La - 0 - Lj) - T2) in H by ring.
+  lra.
+Qed.
+
 (** A division (either way: the remainder concerns y a / y b). *)
 Lemma div_affine : forall N (lo hi E : nat -> R) M R0 e (d : nat -> R) j a b xa xb ya yb,
   Forall (fun k => Rabs (d k) <= e k) (seq 0 N) ->
@@ -453,21 +599,32 @@ Proof.
   - (* Div *)
     destruct Hwf as [Ha Hb]. destruct (Hold a ltac:(lia)) as [Ia _].
     destruct (Hold b ltac:(lia)) as [Ib Eb]. destruct Hiv as (_ & Hs & Hiv).
-    apply (div_affine N lo hi E M R0 e d j a b); auto;
-      try apply (div_between (lo a) (hi a) (lo b) (hi b)); auto.
+    assert (Hq : lo j <= x a / x b <= hi j)
+      by (apply (div_between (lo a) (hi a) (lo b) (hi b)); auto).
+    destruct Haff as [H | [H | (Hlt & H)]].
+    + apply (div_affine N lo hi E M R0 e d j a b); auto.
+    + apply (div_affine N lo hi E M R0 e d j a b); auto.
+    + apply (div_lin N lo hi M R0 e d j a b); auto.
   - (* DivE *)
     destruct Hwf as [Ha Hb]. destruct (Hold a ltac:(lia)) as [Ia _].
     destruct (Hold b ltac:(lia)) as [Ib Eb]. destruct Hiv as (_ & Hs & Hiv).
-    apply (div_affine N lo hi E M R0 e d j a b); auto;
-      try apply (div_between (lo a) (hi a) (lo b) (hi b)); auto.
+    assert (Hq : lo j <= x a / x b <= hi j)
+      by (apply (div_between (lo a) (hi a) (lo b) (hi b)); auto).
+    destruct Haff as [H | [H | (Hlt & H)]].
+    + apply (div_affine N lo hi E M R0 e d j a b); auto.
+    + apply (div_affine N lo hi E M R0 e d j a b); auto.
+    + apply (div_lin N lo hi M R0 e d j a b); auto.
   - (* Sqrt *)
     pose proof (IH a Hwf) as Ra. destruct (Hold a ltac:(lia)) as [Ia Ea].
     pose proof (HF a Hwf) as Fa.
     destruct Hiv as (_ & HS & HSl & HL & HH & Hh). destruct Herr as (HE0 & HES & HT & HTl & _).
     assert (Hya : T j * T j <= y a).
     { pose proof (Rle_abs (- (y a - x a))) as Hh0. rewrite Rabs_Ropp in Hh0. lra. }
-    pose proof (sqrt_err (x a) (y a) _ (S j) (T j) HS ltac:(lra) HT Hya Fa) as Hs.
-    pose proof (opaque_step _ _ (pm M j) d e _ Hs Hds). lra.
+    destruct Haff as [Haff | Haff].
+    + pose proof (sqrt_err (x a) (y a) _ (S j) (T j) HS ltac:(lra) HT Hya Fa) as Hs.
+      pose proof (opaque_step _ _ (pm M j) d e _ Hs Hds). lra.
+    + apply (sqrt_lin N (hi j) M R0 e d j a (S j) (T j) (x a) (y a) (ferr N M R0 e a));
+        auto; lra.
   - (* Rsqrt *)
     pose proof (IH a Hwf) as Ra. destruct (Hold a ltac:(lia)) as [Ia Ea].
     pose proof (HF a Hwf) as Fa.

@@ -9,7 +9,9 @@ use phong_approx::tolerance::graphs::{method_graphs, model};
 
 /// The rules of `proofs/GraphAffine.v` that the certificate test checks, as the file
 /// states them (whitespace aside): an edit of one fails the test.
-const GRAPH_AFFINE_V_RULES: [&str; 16] = [
+const GRAPH_AFFINE_V_RULES: [&str; 18] = [
+    "forall u q, / hi b <= u <= / lo b -> lo j <= q <= hi j -> Rabs u * R0 a + Rabs (q * u) * R0 b + (F a + Rabs q * F b) * F b * (u * u) / (1 - Rabs u * F b) + dev (fun k => u * fm M a k - q * u * fm M b k) <= R0 j)",
+    "(forall s, S j <= s <= hi j -> R0 a / (2 * s) + F a * F a / (2 * s * ((s + T j) * (s + T j))) + dev (fun k => fm M a k / (2 * s)) <= R0 j)",
     "| _ => v < 1 /\\ v * (m + E j) + eta <= (1 - v) * e j",
     "v * (2 + v) * (m + E j) + (1 + v) * (mag (lo a) (hi a) + E a) * eta + eta <= (1 - v * (2 + v)) * e j",
     "(w - 1) * sumR (fun i => mag (lo i) (hi i) + E i) l + INR (k - 1) * w * eta <= e j",
@@ -155,10 +157,49 @@ fn check_rules(
                     && &rem[*a] / lo[*c].abs() + dev(&lin(&[(*a, one.clone() / &lo[*c])]), &pm, &e)
                         <= rem[j];
                 let lb = lo[*c].abs().min(hi[*c].abs());
-                exact_divisor
-                    || (ferr(*c) < lb && opaque((ferr(*a) + &m * ferr(*c)) / (&lb - ferr(*c))))
+                let (fa, fc) = (ferr(*a), ferr(*c));
+                // The linear rule: every term is convex in u and in q, so the largest
+                // over the box [1/hi_c, 1/lo_c] × [lo_j, hi_j] is at a corner.
+                let linear = fc < lb && {
+                    let us = [&one / &hi[*c], &one / &lo[*c]];
+                    let qs = [lo[j].clone(), hi[j].clone()];
+                    us.iter().all(|u| {
+                        qs.iter().all(|qq| {
+                            let lhs = u.abs() * &rem[*a]
+                                + (qq * u).abs() * &rem[*c]
+                                + (&fa + qq.abs() * &fc) * &fc * (u * u)
+                                    / (&one - u.abs() * &fc)
+                                + dev(&lin(&[(*a, u.clone()), (*c, -(qq * u))]), &pm, &e);
+                            lhs <= rem[j]
+                        })
+                    })
+                };
+                exact_divisor || (fc < lb && opaque((&fa + &m * &fc) / (&lb - &fc))) || linear
             }
-            Op::Sqrt(a) => opaque(ferr(*a) / (&s[j] + &t[j])),
+            Op::Sqrt(a) => {
+                // The linear rule: each term is monotone in s on [S_j, hi_j] (the
+                // coefficients' terms |α/(2s) − M|: α/(2s) is), so its largest is at an
+                // end; their sum is at most the sum of those.
+                let fa = ferr(*a);
+                let (lo_end, hi_end) = (
+                    lin(&[(*a, &one / (&two * &s[j]))]),
+                    lin(&[(*a, &one / (&two * &hi[j]))]),
+                );
+                let keys: std::collections::BTreeSet<usize> =
+                    lo_end.keys().chain(pm.keys()).copied().collect();
+                let get = |f: &Sparse, k: usize| f.get(&k).cloned().unwrap_or_else(Q::zero);
+                let d: Q = keys
+                    .into_iter()
+                    .map(|k| {
+                        let p = get(&pm, k);
+                        (get(&lo_end, k) - &p).abs().max((get(&hi_end, k) - &p).abs()) * &e[k]
+                    })
+                    .sum();
+                let st = &s[j] + &t[j];
+                let linear = &rem[*a] / (&two * &s[j]) + &fa * &fa / (&two * &s[j] * (&st * &st)) + d
+                    <= rem[j];
+                opaque(&fa / (&s[j] + &t[j])) || linear
+            }
             Op::Rsqrt(a) => opaque(ferr(*a) / (&two * (&s[j] * &s[j] * &s[j]))),
             Op::Sum(l) => {
                 let terms: Vec<(usize, Q)> = l.iter().map(|&i| (i, one.clone())).collect();

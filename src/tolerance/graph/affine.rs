@@ -141,6 +141,59 @@ fn local(graph: &Graph, b: &Bounds, j: Id) -> Option<f64> {
     })
 }
 
+/// `Σ_k |M_k|·e_k + R` of a candidate `(form, R)`.
+fn size(af: &Affine, c: &(Form, f64)) -> f64 {
+    add_up(form_size(af, &c.0), c.1)
+}
+
+/// A division `a/c` linearly (`div_lin` of the proof): `u = 1/x_c` in
+/// `[1/hi_c, 1/lo_c]`, `q = x_a/x_c` in the node's interval; every term at its largest
+/// over that box. `None` where `F_c` does not keep the divisor from zero.
+fn div_linear(af: &Affine, b: &Bounds, j: Id, a: Id, c: Id) -> Option<(Form, f64)> {
+    let (fa, fc) = (af.err[a], af.err[c]);
+    let lb = b.lo[c].abs().min(b.hi[c].abs());
+    if !(fc < lb) {
+        return None;
+    }
+    let u = (dn(1.0 / b.hi[c]), up(1.0 / b.lo[c]));
+    let corners = [b.lo[j] * u.0, b.lo[j] * u.1, b.hi[j] * u.0, b.hi[j] * u.1];
+    let qu = (
+        dn(corners.iter().copied().fold(f64::INFINITY, f64::min)),
+        up(corners.iter().copied().fold(f64::NEG_INFINITY, f64::max)),
+    );
+    let (um, qum, qm) = (mag(u.0, u.1), mag(qu.0, qu.1), mag(b.lo[j], b.hi[j]));
+    let den = dn(1.0 - mul_up(um, fc));
+    if !(den > 0.0) {
+        return None;
+    }
+    let second = div_up(
+        mul_up(mul_up(add_up(fa, mul_up(qm, fc)), fc), mul_up(um, um)),
+        den,
+    );
+    let (f, ch) = choose(af, combine(af, &[(a, u), (c, (-qu.1, -qu.0))]));
+    let r = add_up(
+        add_up(add_up(mul_up(um, af.rem[a]), mul_up(qum, af.rem[c])), second),
+        ch,
+    );
+    r.is_finite().then_some((f, r))
+}
+
+/// A square root of `a` linearly (`sqrt_lin` of the proof): `s = √x_a` in
+/// `[S_j, hi_j]`, every term at its largest there (at `s = S_j`).
+fn sqrt_linear(af: &Affine, b: &Bounds, j: Id, a: Id) -> Option<(Form, f64)> {
+    let (s, t, h) = (b.s[j], b.t[j], b.hi[j]);
+    if !(s > 0.0 && h >= s) {
+        return None;
+    }
+    let coef = (dn(1.0 / up(2.0 * h)), up(1.0 / dn(2.0 * s)));
+    let fa = af.err[a];
+    let st = dn(s + t);
+    let second = div_up(mul_up(fa, fa), dn(dn(2.0 * s) * dn(st * st)));
+    let (f, ch) = choose(af, combine(af, &[(a, coef)]));
+    let r = add_up(add_up(div_up(af.rem[a], dn(2.0 * s)), second), ch);
+    r.is_finite().then_some((f, r))
+}
+
 /// The affine certificate of `graph` on the running certificate `b` (which
 /// [`evaluate`](super::evaluate) computed on the same graph and inputs). `None` where
 /// a rule's condition fails (a divisor that the affine bound does not keep from zero,
@@ -195,10 +248,20 @@ pub fn affine(graph: &Graph, b: &Bounds) -> Option<Affine> {
                     }
                     let m = mag(b.lo[j], b.hi[j]);
                     let d = div_up(add_up(af.err[*a], mul_up(m, af.err[*c])), gap);
-                    (Form::new(), d)
+                    let opaque = (Form::new(), d);
+                    match div_linear(&af, b, j, *a, *c) {
+                        Some(lin) if size(&af, &lin) < size(&af, &opaque) => lin,
+                        _ => opaque,
+                    }
                 }
             }
-            Op::Sqrt(a) => (Form::new(), div_up(af.err[*a], dn(b.s[j] + b.t[j]))),
+            Op::Sqrt(a) => {
+                let opaque = (Form::new(), div_up(af.err[*a], dn(b.s[j] + b.t[j])));
+                match sqrt_linear(&af, b, j, *a) {
+                    Some(lin) if size(&af, &lin) < size(&af, &opaque) => lin,
+                    _ => opaque,
+                }
+            }
             Op::Rsqrt(a) => {
                 let s = b.s[j];
                 (Form::new(), div_up(af.err[*a], dn(2.0 * dn(dn(s * s) * s))))

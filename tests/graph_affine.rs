@@ -167,8 +167,7 @@ fn check_rules(
                         qs.iter().all(|qq| {
                             let lhs = u.abs() * &rem[*a]
                                 + (qq * u).abs() * &rem[*c]
-                                + (&fa + qq.abs() * &fc) * &fc * (u * u)
-                                    / (&one - u.abs() * &fc)
+                                + (&fa + qq.abs() * &fc) * &fc * (u * u) / (&one - u.abs() * &fc)
                                 + dev(&lin(&[(*a, u.clone()), (*c, -(qq * u))]), &pm, &e);
                             lhs <= rem[j]
                         })
@@ -192,12 +191,16 @@ fn check_rules(
                     .into_iter()
                     .map(|k| {
                         let p = get(&pm, k);
-                        (get(&lo_end, k) - &p).abs().max((get(&hi_end, k) - &p).abs()) * &e[k]
+                        (get(&lo_end, k) - &p)
+                            .abs()
+                            .max((get(&hi_end, k) - &p).abs())
+                            * &e[k]
                     })
                     .sum();
                 let st = &s[j] + &t[j];
-                let linear = &rem[*a] / (&two * &s[j]) + &fa * &fa / (&two * &s[j] * (&st * &st)) + d
-                    <= rem[j];
+                let linear =
+                    &rem[*a] / (&two * &s[j]) + &fa * &fa / (&two * &s[j] * (&st * &st)) + d
+                        <= rem[j];
                 opaque(&fa / (&s[j] + &t[j])) || linear
             }
             Op::Rsqrt(a) => opaque(ferr(*a) / (&two * (&s[j] * &s[j] * &s[j]))),

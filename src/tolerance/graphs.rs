@@ -465,13 +465,12 @@ pub fn pixel_bounds(
             .and_then(|r| evaluate(&f.graph, r, model).ok());
         // The affine forms (`graph_sound_affine`, `graph_sound_affine_read`), where
         // their conditions hold.
-        let (aff, aff_read) = if f.signs.is_none() {
-            (
+        let (aff, aff_read) = match &f.signs {
+            Some(_) => (None, None),
+            None => (
                 affine(&f.graph, &b),
                 from_read.as_ref().and_then(|br| affine(&f.graph, br)),
-            )
-        } else {
-            (None, None)
+            ),
         };
         for way in &f.pixels {
             for (i, (w, &p)) in worst.iter_mut().zip(way).enumerate() {

@@ -72,23 +72,31 @@ fn combine(af: &Affine, terms: &[(Id, (f64, f64))]) -> Vec<(Id, f64, f64)> {
 /// others dropped (`M = 0`, charging `|c|·e`). Returns the form and the charge.
 fn choose(af: &Affine, c: Vec<(Id, f64, f64)>) -> (Form, f64) {
     let weight = |&(k, l, h): &(Id, f64, f64)| mul_up(mag(l, h), af.e[k]);
-    let mut order: Vec<usize> = (0..c.len()).collect();
-    if c.len() > KEPT {
-        order.sort_by(|&i, &j| weight(&c[j]).total_cmp(&weight(&c[i])));
-    }
-    let mut keep = vec![false; c.len()];
-    for &i in order.iter().take(KEPT) {
-        keep[i] = true;
-    }
-    let (mut form, mut charge) = (Form::new(), 0.0);
-    for (i, &(k, l, h)) in c.iter().enumerate() {
-        if keep[i] {
+    // The KEPT-th largest weight: the entries above it are kept, and at it as many as
+    // fit.
+    let cut = if c.len() > KEPT {
+        let mut w: Vec<f64> = c.iter().map(weight).collect();
+        w.sort_by(|a, b| b.total_cmp(a));
+        w[KEPT - 1]
+    } else {
+        f64::NEG_INFINITY
+    };
+    let mut at_cut = c.iter().filter(|x| weight(x) > cut).count();
+    let (mut form, mut charge) = (Form::with_capacity(c.len().min(KEPT)), 0.0);
+    for x @ &(k, l, h) in &c {
+        let wx = weight(x);
+        let keep = wx > cut
+            || (wx == cut && at_cut < KEPT && {
+                at_cut += 1;
+                true
+            });
+        if keep {
             let m = 0.5 * l + 0.5 * h;
             let dev = up(h - m).max(up(m - l));
             charge = add_up(charge, mul_up(dev, af.e[k]));
             form.push((k, m));
         } else {
-            charge = add_up(charge, weight(&c[i]));
+            charge = add_up(charge, wx);
         }
     }
     (form, charge)
@@ -172,7 +180,10 @@ fn div_linear(af: &Affine, b: &Bounds, j: Id, a: Id, c: Id) -> Option<(Form, f64
     );
     let (f, ch) = choose(af, combine(af, &[(a, u), (c, (-qu.1, -qu.0))]));
     let r = add_up(
-        add_up(add_up(mul_up(um, af.rem[a]), mul_up(qum, af.rem[c])), second),
+        add_up(
+            add_up(mul_up(um, af.rem[a]), mul_up(qum, af.rem[c])),
+            second,
+        ),
         ch,
     );
     r.is_finite().then_some((f, r))

@@ -46,10 +46,13 @@
         lo j <= x j <= hi j   /\   |y j - x j| <= E j.
 
     The sum rule rests on [sum_exec_err]: a sum of k computed terms t_i in any
-    order, each addition with unit v, is within
-        ((1+v)^(k-1) - 1) sum |t_i| + (k-1) (1+v)^(k-1) eta
-    of the exact sum.  [sum3_rel_exec]: FloatModelK's three-term sums in any
-    order ([sum3_rel]) are instances of [sum_exec]. *)
+    order, each addition of two nonzero partial sums with unit v, and an addition of
+    a zero moving the other operand by ez at most (a float plus 0 is that float, or
+    0 where a subnormal is flushed), with nz of the terms nonzero, is within
+        ((1+v)^(nz-1) - 1) sum |t_i| + (nz-1) (1+v)^(nz-1) eta
+          + (k-1) (1+v)^(nz-1) ez
+    of the exact sum: at most nz - 1 of its additions round.  The rule counts as
+    nonzero every term not known to be zero ([live]). *)
 
 From Coq Require Import Reals Lra Lia List Permutation.
 From Flocq Require Import Core.
@@ -73,8 +76,10 @@ Inductive op : Type :=
 | Sum (l : list nat).   (* a sum of several nodes in ANY order: any binary tree of additions over any permutation *)
 
 (** A node: its operation, the unit v = kappa u of its rounding and its absolute term eta
-    (for Sum, of each of its additions). *)
-Record node := Node { nop : op; nv : R; neta : R }.
+    (for Sum, of each of its additions), and for Sum the most an addition of an exact
+    zero may move the other operand ([nez]: 0 where no flushing, the flush threshold
+    where a subnormal may be flushed to zero). *)
+Record node := Node { nop : op; nv : R; neta : R; nez : R }.
 
 (** Operands come before the node; a Sum has at least one term. *)
 Definition op_wf (o : op) (j : nat) : Prop :=
@@ -101,13 +106,23 @@ Definition exact_op (X x : nat -> R) (o : op) : R :=
   end.
 
 (** Sums in any order: any binary tree of additions over any permutation of the terms,
-    each addition within ap1 v eta of the exact sum of its (computed) operands. *)
-Inductive sum_exec (v eta : R) : list R -> R -> Prop :=
-| sum_one : forall t, sum_exec v eta [t] t
+    each addition of two nonzero partial sums within ap1 v eta of their exact sum, and
+    an addition of an exact zero returning the other operand — or 0 where that operand
+    is at most ez in magnitude (a subnormal flushed): a float plus 0 is that float,
+    [exact_op_model]. *)
+Inductive sum_exec (v eta ez : R) : list R -> R -> Prop :=
+| sum_one : forall t, sum_exec v eta ez [t] t
 | sum_split : forall l l1 l2 r1 r2 y,
     Permutation l (l1 ++ l2) -> l1 <> [] -> l2 <> [] ->
-    sum_exec v eta l1 r1 -> sum_exec v eta l2 r2 ->
-    ap1 v eta y (r1 + r2) -> sum_exec v eta l y.
+    sum_exec v eta ez l1 r1 -> sum_exec v eta ez l2 r2 ->
+    (r1 <> 0 -> r2 <> 0 -> ap1 v eta y (r1 + r2)) ->
+    (r1 = 0 -> y = r2 \/ (Rabs r2 <= ez /\ y = 0)) ->
+    (r2 = 0 -> y = r1 \/ (Rabs r1 <= ez /\ y = 0)) ->
+    sum_exec v eta ez l y.
+
+(** The number of nonzero values of a list. *)
+Definition nzc (ts : list R) : nat :=
+  length (filter (fun t => if Req_EM_T t 0 then false else true) ts).
 
 (** What an execution may compute at a node: within ap1 (nv node) (neta node) of the exact operation on the COMPUTED operands y.
     A fused multiply-add is covered: its product is exact, which ap1 allows for any v >= 0. *)
@@ -123,7 +138,7 @@ Definition exec_op (X y : nat -> R) (g : node) (yj : R) : Prop :=
   | DivE a b => ap1 v (neta g) yj (y a / y b) \/ (exists r, ap1 v (neta g) r (/ y b) /\ ap1 v (neta g) yj (y a * r))
   | Sqrt a => ap1 v (neta g) yj (sqrt (y a))
   | Rsqrt a => ap1 v (neta g) yj (/ sqrt (y a))
-  | Sum l => sum_exec v (neta g) (map y l) yj
+  | Sum l => sum_exec v (neta g) (nez g) (map y l) yj
   end.
 
 (** ** The certificate *)
@@ -152,6 +167,11 @@ Definition iv_ok (g : nat -> node) (X lo hi S : nat -> R) (j : nat) : Prop :=
   | Rsqrt a => 0 < S j /\ S j * S j <= lo a /\ 0 < lo j /\ lo j * lo j * hi a <= 1 /\ 1 <= hi j * S j
   | Sum l => lo j <= sumR lo l /\ sumR hi l <= hi j
   end.
+
+(** A term that may be nonzero: one whose interval is not [0, 0] with no error (such a
+    term is exactly 0 in every execution, and adding it rounds nothing). *)
+Definition live (lo hi E : nat -> R) (i : nat) : bool :=
+  if Req_EM_T (Rabs (lo i) + Rabs (hi i) + E i) 0 then false else true.
 
 (** The error rules: E j bounds |y j - x j| given the operands' bounds.
     For Rsqrt, [E a <= lo a - S j * S j] makes both the exact and the
@@ -190,9 +210,11 @@ Definition err_ok (g : nat -> node) (lo hi E S T : nat -> R) (j : nat) : Prop :=
       d + v * (m + d) + eta <= E j
   | Sum l =>
       let k := length l in
-      let w := (1 + v) ^ (k - 1) in
+      let m := (length (filter (live lo hi E) l) - 1)%nat in
+      let w := (1 + v) ^ m in
+      0 <= nez (g j) /\
       sumR E l + (w - 1) * sumR (fun i => mag (lo i) (hi i) + E i) l
-        + INR (k - 1) * w * eta <= E j
+        + INR m * w * eta + INR (k - 1) * w * nez (g j) <= E j
   end.
 
 (** ** Real-number lemmas *)
@@ -455,65 +477,191 @@ Qed.
 Lemma le_mul_ge1 : forall a w, 0 <= a -> 1 <= w -> a <= a * w.
 Proof. intros. nra. Qed.
 
-(** One addition joining two partial sums of n1 + 1 and n2 + 1 terms. *)
-Lemma sum_step : forall v eta (n1 n2 : nat) s1 s2 A1 A2 r1 r2 y,
-  0 <= v -> 0 <= eta -> Rabs s1 <= A1 -> Rabs s2 <= A2 ->
-  Rabs (r1 - s1) <= ((1 + v) ^ n1 - 1) * A1 + INR n1 * (1 + v) ^ n1 * eta ->
-  Rabs (r2 - s2) <= ((1 + v) ^ n2 - 1) * A2 + INR n2 * (1 + v) ^ n2 * eta ->
+(** One addition of two nonzero partial sums of n1 + 1 and n2 + 1 rounded additions'
+    worth, whose additions of a zero (z1, z2 of them) moved them by ez at most. *)
+Lemma sum_step : forall v eta ez (n1 n2 z1 z2 : nat) s1 s2 A1 A2 r1 r2 y,
+  0 <= v -> 0 <= eta -> 0 <= ez -> Rabs s1 <= A1 -> Rabs s2 <= A2 ->
+  Rabs (r1 - s1) <= ((1 + v) ^ n1 - 1) * A1 + INR n1 * (1 + v) ^ n1 * eta
+                    + INR z1 * (1 + v) ^ n1 * ez ->
+  Rabs (r2 - s2) <= ((1 + v) ^ n2 - 1) * A2 + INR n2 * (1 + v) ^ n2 * eta
+                    + INR z2 * (1 + v) ^ n2 * ez ->
   ap1 v eta y (r1 + r2) ->
   Rabs (y - (s1 + s2)) <= ((1 + v) ^ (n1 + n2 + 1) - 1) * (A1 + A2)
-                          + INR (n1 + n2 + 1) * (1 + v) ^ (n1 + n2 + 1) * eta.
+                          + INR (n1 + n2 + 1) * (1 + v) ^ (n1 + n2 + 1) * eta
+                          + INR (z1 + z2) * (1 + v) ^ (n1 + n2 + 1) * ez.
 Proof.
-  intros v eta n1 n2 s1 s2 A1 A2 r1 r2 y Hv He H1 H2 E1 E2 Hy. unfold ap1 in Hy.
+  intros v eta ez n1 n2 z1 z2 s1 s2 A1 A2 r1 r2 y Hv He Hz H1 H2 E1 E2 Hy. unfold ap1 in Hy.
   assert (Hw : (1 + v) ^ (n1 + n2 + 1) = (1 + v) ^ n1 * (1 + v) ^ n2 * (1 + v))
     by (rewrite !pow_add; ring).
   rewrite Hw, !plus_INR. simpl (INR 1).
   pose proof (pow_R1_Rle (1 + v) n1 ltac:(lra)) as W1.
   pose proof (pow_R1_Rle (1 + v) n2 ltac:(lra)) as W2.
   set (w1 := (1 + v) ^ n1) in *. set (w2 := (1 + v) ^ n2) in *.
+  set (W := w1 * w2 * (1 + v)).
   pose proof (pos_INR n1) as N1. pose proof (pos_INR n2) as N2.
+  pose proof (pos_INR z1) as Z1. pose proof (pos_INR z2) as Z2.
   pose proof (Rabs_pos s1). pose proof (Rabs_pos s2).
-  assert (Hr : Rabs (r1 + r2) <= w1 * A1 + w2 * A2 + (INR n1 * w1 + INR n2 * w2) * eta).
+  assert (F1 : (1 + v) * w1 <= W).
+  { unfold W. pose proof (le_mul_ge1 ((1 + v) * w1) w2 ltac:(nra) W2). lra. }
+  assert (F2 : (1 + v) * w2 <= W).
+  { unfold W. pose proof (le_mul_ge1 ((1 + v) * w2) w1 ltac:(nra) W1). lra. }
+  assert (F3 : 1 <= W) by (assert (1 <= (1 + v) * w1) by nra; lra).
+  set (D1 := Rabs (r1 - s1)) in *. set (D2 := Rabs (r2 - s2)) in *.
+  assert (Hr : Rabs (r1 + r2) <= A1 + A2 + D1 + D2).
   { replace (r1 + r2) with ((r1 - s1) + (r2 - s2) + (s1 + s2)) by ring.
     pose proof (Rabs_triang ((r1 - s1) + (r2 - s2)) (s1 + s2)).
-    pose proof (Rabs_triang (r1 - s1) (r2 - s2)). pose proof (Rabs_triang s1 s2). lra. }
-  assert (v * Rabs (r1 + r2) <= v * (w1 * A1 + w2 * A2 + (INR n1 * w1 + INR n2 * w2) * eta))
-    by (apply Rmult_le_compat_l; lra).
-  replace (y - (s1 + s2)) with ((y - (r1 + r2)) + (r1 - s1) + (r2 - s2)) by ring.
-  pose proof (Rabs_triang ((y - (r1 + r2)) + (r1 - s1)) (r2 - s2)).
-  pose proof (Rabs_triang (y - (r1 + r2)) (r1 - s1)).
-  pose proof (le_mul_ge1 ((1 + v) * w1 * A1) w2 ltac:(repeat apply Rmult_le_pos; lra) W2).
-  pose proof (le_mul_ge1 ((1 + v) * w2 * A2) w1 ltac:(repeat apply Rmult_le_pos; lra) W1).
-  pose proof (le_mul_ge1 ((1 + v) * INR n1 * w1 * eta) w2
-                ltac:(repeat apply Rmult_le_pos; lra) W2).
-  pose proof (le_mul_ge1 ((1 + v) * INR n2 * w2 * eta) w1
-                ltac:(repeat apply Rmult_le_pos; lra) W1).
-  assert (1 <= w1 * w2 * (1 + v)).
-  { pose proof (le_mul_ge1 w1 w2 ltac:(lra) W2).
-    pose proof (le_mul_ge1 (w1 * w2) (1 + v) ltac:(lra) ltac:(lra)). lra. }
-  pose proof (le_mul_ge1 eta (w1 * w2 * (1 + v)) He ltac:(lra)).
-  nra.
+    pose proof (Rabs_triang (r1 - s1) (r2 - s2)). pose proof (Rabs_triang s1 s2).
+    unfold D1, D2. lra. }
+  assert (T0 : Rabs (y - (s1 + s2)) <= v * (A1 + A2) + (1 + v) * (D1 + D2) + eta).
+  { replace (y - (s1 + s2)) with ((y - (r1 + r2)) + (r1 - s1) + (r2 - s2)) by ring.
+    pose proof (Rabs_triang ((y - (r1 + r2)) + (r1 - s1)) (r2 - s2)).
+    pose proof (Rabs_triang (y - (r1 + r2)) (r1 - s1)).
+    assert (v * Rabs (r1 + r2) <= v * (A1 + A2 + D1 + D2)) by (apply Rmult_le_compat_l; lra).
+    unfold D1, D2 in *. lra. }
+  assert (P1 : (1 + v) * D1 <= ((1 + v) * w1 - 1 - v) * A1 + INR n1 * ((1 + v) * w1) * eta
+                               + INR z1 * ((1 + v) * w1) * ez).
+  { assert ((1 + v) * D1 <= (1 + v) * ((w1 - 1) * A1 + INR n1 * w1 * eta + INR z1 * w1 * ez))
+      by (apply Rmult_le_compat_l; lra). nra. }
+  assert (P2 : (1 + v) * D2 <= ((1 + v) * w2 - 1 - v) * A2 + INR n2 * ((1 + v) * w2) * eta
+                               + INR z2 * ((1 + v) * w2) * ez).
+  { assert ((1 + v) * D2 <= (1 + v) * ((w2 - 1) * A2 + INR n2 * w2 * eta + INR z2 * w2 * ez))
+      by (apply Rmult_le_compat_l; lra). nra. }
+  assert (Q1 : ((1 + v) * w1 - 1) * A1 <= (W - 1) * A1) by (apply Rmult_le_compat_r; lra).
+  assert (Q2 : ((1 + v) * w2 - 1) * A2 <= (W - 1) * A2) by (apply Rmult_le_compat_r; lra).
+  assert (Q3 : INR n1 * ((1 + v) * w1) * eta <= INR n1 * W * eta)
+    by (apply Rmult_le_compat_r; [lra | apply Rmult_le_compat_l; lra]).
+  assert (Q4 : INR n2 * ((1 + v) * w2) * eta <= INR n2 * W * eta)
+    by (apply Rmult_le_compat_r; [lra | apply Rmult_le_compat_l; lra]).
+  assert (Q5 : INR z1 * ((1 + v) * w1) * ez <= INR z1 * W * ez)
+    by (apply Rmult_le_compat_r; [lra | apply Rmult_le_compat_l; lra]).
+  assert (Q6 : INR z2 * ((1 + v) * w2) * ez <= INR z2 * W * ez)
+    by (apply Rmult_le_compat_r; [lra | apply Rmult_le_compat_l; lra]).
+  assert (Q7 : eta <= 1 * W * eta) by nra.
+  unfold W in *. nra.
 Qed.
 
-(** The error of a sum of k >= 1 computed terms in any order. *)
-Lemma sum_exec_err : forall v eta, 0 <= v -> 0 <= eta -> forall ts y, sum_exec v eta ts y ->
-  (1 <= length ts)%nat /\
-  Rabs (y - fold_right Rplus 0 ts)
-    <= ((1 + v) ^ (length ts - 1) - 1) * fold_right Rplus 0 (map Rabs ts)
-       + INR (length ts - 1) * (1 + v) ^ (length ts - 1) * eta.
+Lemma nzc_app : forall l1 l2, nzc (l1 ++ l2) = (nzc l1 + nzc l2)%nat.
+Proof. intros. unfold nzc. rewrite filter_app, app_length. reflexivity. Qed.
+
+Lemma nzc_perm : forall l l', Permutation l l' -> nzc l = nzc l'.
 Proof.
-  intros v eta Hv He ts y H.
-  induction H as [t | l l1 l2 r1 r2 y Hp Hl1 Hl2 Hs1 [Hk1 IH1] Hs2 [Hk2 IH2] Hy].
-  - simpl. split; [lia|]. replace (t - (t + 0)) with 0 by ring. rewrite Rabs_R0.
-    pose proof (Rabs_pos t). simpl. lra.
+  induction 1; unfold nzc in *; simpl; repeat destruct Req_EM_T; simpl; lia.
+Qed.
+
+Lemma nzc_zero_sum : forall l, nzc l = 0%nat -> fold_right Rplus 0 l = 0.
+Proof.
+  induction l as [|a l IH]; simpl; intros H; [reflexivity|]. unfold nzc in H. simpl in H.
+  destruct (Req_EM_T a 0) as [Ha | Ha]; [| discriminate]. rewrite Ha, IH; [ring | exact H].
+Qed.
+
+Lemma nzc_le_length : forall l, (nzc l <= length l)%nat.
+Proof.
+  induction l as [|a l IH]; [reflexivity|]. unfold nzc in *. simpl.
+  destruct (Req_EM_T a 0); simpl; lia.
+Qed.
+
+(** The bound of a sum grows with its exponent. *)
+Lemma sum_bound_mono : forall v eta ez (m m' k : nat) A, 0 <= v -> 0 <= eta -> 0 <= ez ->
+  0 <= A -> (m <= m')%nat ->
+  ((1 + v) ^ m - 1) * A + INR m * (1 + v) ^ m * eta + INR k * (1 + v) ^ m * ez
+  <= ((1 + v) ^ m' - 1) * A + INR m * (1 + v) ^ m' * eta + INR k * (1 + v) ^ m' * ez.
+Proof.
+  intros v eta ez m m' k A Hv He Hz HA Hm.
+  assert (Hp : (1 + v) ^ m <= (1 + v) ^ m') by (apply Rle_pow; lra || lia).
+  pose proof (pos_INR m). pose proof (pos_INR k).
+  assert (((1 + v) ^ m - 1) * A <= ((1 + v) ^ m' - 1) * A) by (apply Rmult_le_compat_r; lra).
+  assert (INR m * (1 + v) ^ m * eta <= INR m * (1 + v) ^ m' * eta)
+    by (apply Rmult_le_compat_r; [lra | apply Rmult_le_compat_l; lra]).
+  assert (INR k * (1 + v) ^ m * ez <= INR k * (1 + v) ^ m' * ez)
+    by (apply Rmult_le_compat_r; [lra | apply Rmult_le_compat_l; lra]).
+  lra.
+Qed.
+
+(** The error of a sum of k >= 1 computed terms in any order: with nz of them nonzero,
+    at most nz - 1 of its additions round (an addition of a zero moves by ez at most). *)
+Lemma sum_exec_err : forall v eta ez, 0 <= v -> 0 <= eta -> 0 <= ez ->
+  forall ts y, sum_exec v eta ez ts y ->
+  (1 <= length ts)%nat /\ (nzc ts = 0%nat -> y = 0) /\
+  Rabs (y - fold_right Rplus 0 ts)
+    <= ((1 + v) ^ (nzc ts - 1) - 1) * fold_right Rplus 0 (map Rabs ts)
+       + INR (nzc ts - 1) * (1 + v) ^ (nzc ts - 1) * eta
+       + INR (length ts - 1) * (1 + v) ^ (nzc ts - 1) * ez.
+Proof.
+  intros v eta ez Hv He Hz ts y H.
+  induction H as [t | l l1 l2 r1 r2 y Hp Hl1 Hl2 Hs1 [Hk1 [Z1 IH1]] Hs2 [Hk2 [Z2 IH2]]
+                      Hnz H1z H2z].
+  - simpl. split; [lia|]. split.
+    + unfold nzc. simpl. destruct (Req_EM_T t 0); [auto | discriminate].
+    + replace (t - (t + 0)) with 0 by ring. rewrite Rabs_R0.
+      replace (nzc [t] - 1)%nat with 0%nat by (unfold nzc; simpl; destruct Req_EM_T; reflexivity).
+      simpl. pose proof (Rabs_pos t). lra.
   - assert (Hlen : length l = (length l1 + length l2)%nat)
       by (rewrite (Permutation_length Hp); apply app_length).
+    assert (Hn : nzc l = (nzc l1 + nzc l2)%nat) by (rewrite (nzc_perm _ _ Hp); apply nzc_app).
     rewrite (fold_perm _ _ Hp), (fold_perm _ _ (Permutation_map Rabs Hp)), map_app, !fold_app.
-    rewrite Hlen.
-    replace (length l1 + length l2 - 1)%nat
-      with ((length l1 - 1) + (length l2 - 1) + 1)%nat by lia.
+    rewrite Hlen, Hn.
+    set (S1 := fold_right Rplus 0 l1) in *. set (S2 := fold_right Rplus 0 l2) in *.
+    set (A1 := fold_right Rplus 0 (map Rabs l1)) in *.
+    set (A2 := fold_right Rplus 0 (map Rabs l2)) in *.
+    assert (HA1 : Rabs S1 <= A1) by apply fold_abs.
+    assert (HA2 : Rabs S2 <= A2) by apply fold_abs.
+    pose proof (Rabs_pos S1). pose proof (Rabs_pos S2).
+    set (n1 := nzc l1) in *. set (n2 := nzc l2) in *.
+    set (k1 := length l1) in *. set (k2 := length l2) in *.
     split; [lia|].
-    apply sum_step with r1 r2; auto using fold_abs.
+    (* The bound of each part, at the whole sum's exponent. *)
+    set (m := (n1 + n2 - 1)%nat).
+    pose proof (sum_bound_mono v eta ez (n1 - 1) m (k1 - 1) A1 Hv He Hz ltac:(lra) ltac:(lia))
+      as M1.
+    pose proof (sum_bound_mono v eta ez (n2 - 1) m (k2 - 1) A2 Hv He Hz ltac:(lra) ltac:(lia))
+      as M2.
+    set (W := (1 + v) ^ m) in *.
+    assert (HW : 1 <= W) by (apply pow_R1_Rle; lra).
+    assert (Hcount : (INR (n1 - 1) + INR (n2 - 1) <= INR m)).
+    { rewrite <- plus_INR. apply le_INR. unfold m. lia. }
+    assert (Hk : INR (k1 - 1) + INR (k2 - 1) + 1 <= INR (k1 + k2 - 1)).
+    { rewrite <- plus_INR. replace 1 with (INR 1) by reflexivity. rewrite <- plus_INR.
+      apply le_INR. lia. }
+    assert (Ec : (INR (n1 - 1) + INR (n2 - 1)) * W * eta <= INR m * W * eta)
+      by (apply Rmult_le_compat_r; [lra | apply Rmult_le_compat_r; lra]).
+    assert (Zc : (INR (k1 - 1) + INR (k2 - 1) + 1) * W * ez <= INR (k1 + k2 - 1) * W * ez)
+      by (apply Rmult_le_compat_r; [lra | apply Rmult_le_compat_r; lra]).
+    assert (EzW : ez <= W * ez) by nra.
+    (* One side zero: the addition moves the other by ez at most. *)
+    assert (Zero : forall ra rb Sa Sb Ba Bb ya,
+      ra = 0 -> (ya = rb \/ (Rabs rb <= ez /\ ya = 0)) ->
+      Rabs (ra - Sa) <= Ba -> Rabs (rb - Sb) <= Bb ->
+      Rabs (ya - (Sa + Sb)) <= Ba + Bb + ez).
+    { intros ra rb Sa Sb Ba Bb ya Hra Hya Ha Hb.
+      assert (Hy' : Rabs (ya - rb) <= ez).
+      { destruct Hya as [-> | [Hr ->]];
+          [rewrite Rminus_diag_eq, Rabs_R0 by reflexivity; lra
+          | rewrite Rminus_0_l, Rabs_Ropp; exact Hr]. }
+      rewrite Hra, Rminus_0_l, Rabs_Ropp in Ha.
+      replace (ya - (Sa + Sb)) with ((ya - rb) + (rb - Sb) + - Sa) by ring.
+      pose proof (Rabs_triang ((ya - rb) + (rb - Sb)) (- Sa)). rewrite Rabs_Ropp in H1.
+      pose proof (Rabs_triang (ya - rb) (rb - Sb)). lra. }
+    destruct (Req_EM_T r1 0) as [R1 | R1].
+    + split.
+      * intros Hn0. assert (n2 = 0%nat) by lia.
+        destruct (H1z R1) as [-> | [_ ->]]; [apply Z2; assumption | reflexivity].
+      * pose proof (Zero r1 r2 S1 S2 _ _ y R1 (H1z R1) IH1 IH2) as Hb. lra.
+    + destruct (Req_EM_T r2 0) as [R2 | R2].
+      * split.
+        -- intros Hn0. assert (n1 = 0%nat) by lia. exfalso. apply R1. apply Z1. assumption.
+        -- pose proof (Zero r2 r1 S2 S1 _ _ y R2 (H2z R2) IH2 IH1) as Hb.
+           rewrite Rplus_comm in Hb. lra.
+      * assert (P1 : n1 <> 0%nat) by (intro Hn0; apply R1, Z1, Hn0).
+        assert (P2 : n2 <> 0%nat) by (intro Hn0; apply R2, Z2, Hn0).
+        split; [intros Hn0; lia|].
+        pose proof (sum_step v eta ez (n1 - 1) (n2 - 1) (k1 - 1) (k2 - 1) S1 S2 A1 A2 r1 r2 y
+                      Hv He Hz HA1 HA2 IH1 IH2 (Hnz R1 R2)) as Hs.
+        replace (n1 - 1 + (n2 - 1) + 1)%nat with m in Hs by (unfold m; lia).
+        fold W in Hs.
+        assert (INR (k1 - 1 + (k2 - 1)) * W * ez <= INR (k1 + k2 - 1) * W * ez).
+        { apply Rmult_le_compat_r; [lra|]. apply Rmult_le_compat_r; [lra|].
+          apply le_INR. lia. }
+        lra.
 Qed.
 
 (** ** Lemmas on sums over node lists *)
@@ -537,31 +685,66 @@ Qed.
 
 (** ** The rules, one operation at a time *)
 
-Lemma case_sum : forall v eta (l : list nat) (x y lo hi E : nat -> R) yj L H Ej,
-  0 <= v -> 0 <= eta ->
+(** A term known to be zero (interval [0, 0], no error) computes 0: the computed terms
+    have at most as many nonzero values as there are live terms. *)
+Lemma nzc_live : forall (l : list nat) (x y lo hi E : nat -> R),
   Forall (fun i => lo i <= x i <= hi i /\ Rabs (y i - x i) <= E i) l ->
-  sum_exec v eta (map y l) yj -> L <= sumR lo l -> sumR hi l <= H ->
-  sumR E l + ((1 + v) ^ (length l - 1) - 1) * sumR (fun i => mag (lo i) (hi i) + E i) l
-    + INR (length l - 1) * (1 + v) ^ (length l - 1) * eta <= Ej ->
+  (nzc (map y l) <= length (filter (live lo hi E) l))%nat.
+Proof.
+  induction l as [|i l IH]; intros x y lo hi E HF; [unfold nzc; simpl; lia|].
+  apply Forall_cons_iff in HF. destruct HF as [[Hi Ei] HF'].
+  specialize (IH x y lo hi E HF').
+  unfold nzc in *. simpl. unfold live at 1.
+  destruct (Req_EM_T (Rabs (lo i) + Rabs (hi i) + E i) 0) as [Hz | Hz]; simpl.
+  - assert (Hy : y i = 0).
+    { pose proof (Rabs_pos (lo i)). pose proof (Rabs_pos (hi i)).
+      pose proof (Rabs_pos (y i - x i)).
+      pose proof (Rle_abs (lo i)). pose proof (Rle_abs (hi i)).
+      pose proof (Rle_abs (- lo i)). pose proof (Rle_abs (- hi i)). rewrite Rabs_Ropp in *.
+      pose proof (Rle_abs (y i - x i)). pose proof (Rle_abs (- (y i - x i))).
+      rewrite Rabs_Ropp in *. lra. }
+    destruct (Req_EM_T (y i) 0) as [_ | Hn]; [exact IH | contradiction].
+  - destruct (Req_EM_T (y i) 0); simpl; lia.
+Qed.
+
+Lemma case_sum : forall v eta ez (l : list nat) (x y lo hi E : nat -> R) yj L H Ej,
+  0 <= v -> 0 <= eta -> 0 <= ez ->
+  Forall (fun i => lo i <= x i <= hi i /\ Rabs (y i - x i) <= E i) l ->
+  sum_exec v eta ez (map y l) yj -> L <= sumR lo l -> sumR hi l <= H ->
+  sumR E l + ((1 + v) ^ (length (filter (live lo hi E) l) - 1) - 1)
+               * sumR (fun i => mag (lo i) (hi i) + E i) l
+    + INR (length (filter (live lo hi E) l) - 1)
+        * (1 + v) ^ (length (filter (live lo hi E) l) - 1) * eta
+    + INR (length l - 1) * (1 + v) ^ (length (filter (live lo hi E) l) - 1) * ez <= Ej ->
   L <= sumR x l <= H /\ Rabs (yj - sumR x l) <= Ej.
 Proof.
-  intros v eta l x y lo hi E yj L H Ej Hv He HF Hs HL HH HE. split.
+  intros v eta ez l x y lo hi E yj L H Ej Hv He Hz HF Hs HL HH HE. split.
   - assert (sumR lo l <= sumR x l) by (apply sumR_le; eapply Forall_impl; [|exact HF]; simpl; intros; lra).
     assert (sumR x l <= sumR hi l) by (apply sumR_le; eapply Forall_impl; [|exact HF]; simpl; intros; lra).
     lra.
-  - destruct (sum_exec_err v eta Hv He _ _ Hs) as [_ Herr].
+  - destruct (sum_exec_err v eta ez Hv He Hz _ _ Hs) as [_ [_ Herr]].
     rewrite map_length, map_map in Herr. change (fold_right Rplus 0 (map y l)) with (sumR y l) in Herr.
     change (fold_right Rplus 0 (map (fun i => Rabs (y i)) l))
       with (sumR (fun i => Rabs (y i)) l) in Herr.
+    pose proof (nzc_live l x y lo hi E HF) as Hn.
+    set (m := (length (filter (live lo hi E) l) - 1)%nat) in *.
+    set (m0 := (nzc (map y l) - 1)%nat) in *.
+    assert (Hm : (m0 <= m)%nat) by (unfold m0, m; lia).
     assert (Habs : sumR (fun i => Rabs (y i)) l <= sumR (fun i => mag (lo i) (hi i) + E i) l).
     { apply sumR_le. eapply Forall_impl; [|exact HF]. simpl. intros i [Hi Ei].
       pose proof (mag_ge _ _ _ Hi). pose proof (Rabs_triang_inv (y i) (x i)). lra. }
+    assert (Hpos : 0 <= sumR (fun i => Rabs (y i)) l).
+    { clear. unfold sumR. induction l as [|i l IH]; simpl; [lra|].
+      pose proof (Rabs_pos (y i)). lra. }
+    pose proof (sum_bound_mono v eta ez m0 m (length l - 1) _ Hv He Hz Hpos Hm) as Hmono.
+    pose proof (pow_R1_Rle (1 + v) m ltac:(lra)).
+    assert (((1 + v) ^ m - 1) * sumR (fun i => Rabs (y i)) l
+            <= ((1 + v) ^ m - 1) * sumR (fun i => mag (lo i) (hi i) + E i) l)
+      by (apply Rmult_le_compat_l; lra).
+    assert (INR m0 * (1 + v) ^ m * eta <= INR m * (1 + v) ^ m * eta)
+      by (apply Rmult_le_compat_r; [lra | apply Rmult_le_compat_r; [lra | apply le_INR; exact Hm]]).
     assert (Hd : Rabs (sumR y l - sumR x l) <= sumR E l)
       by (apply sumR_diff; eapply Forall_impl; [|exact HF]; simpl; tauto).
-    pose proof (pow_R1_Rle (1 + v) (length l - 1) ltac:(lra)).
-    assert (((1 + v) ^ (length l - 1) - 1) * sumR (fun i => Rabs (y i)) l
-            <= ((1 + v) ^ (length l - 1) - 1) * sumR (fun i => mag (lo i) (hi i) + E i) l)
-      by (apply Rmult_le_compat_l; lra).
     replace (yj - sumR x l) with ((yj - sumR y l) + (sumR y l - sumR x l)) by ring.
     pose proof (Rabs_triang (yj - sumR y l) (sumR y l - sumR x l)). lra.
 Qed.
@@ -577,7 +760,7 @@ Lemma node_sound : forall (g : nat -> node) (X : nat -> R) (x y lo hi E S T : na
   lo j <= x j <= hi j /\ Rabs (y j - x j) <= E j.
 Proof.
   intros g X x y lo hi E S T j IH. unfold exec_op, iv_ok, err_ok.
-  destruct (g j) as [o v eta]. cbn [nop nv neta].
+  destruct (g j) as [o v eta ez]. cbn [nop nv neta nez].
   destruct o as [i | c | a b | a b | a b | a b | a b | a | a | l];
     cbn [op_wf exact_op]; intros Hwf Hv He Hx Hy [Hlh Hiv] [HE0 Her]; rewrite Hx.
   - (* In *)
@@ -659,7 +842,8 @@ Proof.
   - (* Sum *)
     destruct Hwf as [_ Hl]. destruct Hiv as [HL HH].
     change (fold_right Rplus 0 (map x l)) with (sumR x l).
-    apply (case_sum v eta l x y lo hi E); auto.
+    destruct Her as [Hez Her].
+    apply (case_sum v eta ez l x y lo hi E); auto.
     eapply Forall_impl; [|exact Hl]. intros a Ha. exact (IH a Ha).
 Qed.
 
@@ -679,27 +863,6 @@ Proof.
     apply (node_sound g X x y lo hi E S T j); auto.
     intros a Ha. apply IHn; lia. }
   intros j Hj. exact (Hall (Nat.succ j) j (Nat.lt_succ_diag_r j) Hj).
-Qed.
-
-(** ** FloatModelK's three-term sums are sums in any order *)
-
-Lemma sum3_rel_exec : forall ua eta q1 q2 q3 y,
-  sum3_rel ua eta q1 q2 q3 y -> sum_exec ua eta [q1; q2; q3] y.
-Proof.
-  intros ua eta q1 q2 q3 y [r [[H1 H2] | [[H1 H2] | [H1 H2]]]].
-  - apply (sum_split ua eta _ [q1; q2] [q3] r q3);
-      [apply Permutation_refl | discriminate | discriminate | | constructor | exact H2].
-    apply (sum_split ua eta _ [q1] [q2] q1 q2);
-      [apply Permutation_refl | discriminate | discriminate | constructor .. | exact H1].
-  - apply (sum_split ua eta _ [q1; q3] [q2] r q2);
-      [apply perm_skip, perm_swap | discriminate | discriminate | | constructor | exact H2].
-    apply (sum_split ua eta _ [q1] [q3] q1 q3);
-      [apply Permutation_refl | discriminate | discriminate | constructor .. | exact H1].
-  - apply (sum_split ua eta _ [q2; q3] [q1] r q1);
-      [apply (Permutation_cons_append [q2; q3] q1) | discriminate | discriminate | |
-       constructor | exact H2].
-    apply (sum_split ua eta _ [q2] [q3] q2 q3);
-      [apply Permutation_refl | discriminate | discriminate | constructor .. | exact H1].
 Qed.
 
 (** ** The ulp model: why a node may take v = 0 and eta = k ulp(M)
@@ -802,19 +965,21 @@ Qed.
     most the first bound plus the distance between the two intervals. *)
 
 (** The exact values are an execution: every operation without error. *)
-Lemma sum_exec_exact : forall v eta, 0 <= v -> 0 <= eta ->
-  forall ts, ts <> [] -> sum_exec v eta ts (fold_right Rplus 0 ts).
+Lemma sum_exec_exact : forall v eta ez, 0 <= v -> 0 <= eta ->
+  forall ts, ts <> [] -> sum_exec v eta ez ts (fold_right Rplus 0 ts).
 Proof.
-  intros v eta Hv He ts. induction ts as [|a ts IH]; intros Hne; [congruence|].
+  intros v eta ez Hv He ts. induction ts as [|a ts IH]; intros Hne; [congruence|].
   assert (Hz : forall z, ap1 v eta z z).
   { intro z. unfold ap1. rewrite Rminus_diag_eq, Rabs_R0 by reflexivity.
     pose proof (Rabs_pos z). nra. }
   destruct ts as [|b ts].
   - simpl. rewrite Rplus_0_r. constructor.
-  - apply (sum_split v eta (a :: b :: ts) [a] (b :: ts) a (fold_right Rplus 0 (b :: ts)));
-      [apply Permutation_refl | discriminate | discriminate | constructor | |].
+  - apply (sum_split v eta ez (a :: b :: ts) [a] (b :: ts) a (fold_right Rplus 0 (b :: ts)));
+      [apply Permutation_refl | discriminate | discriminate | constructor | | | |].
     + apply IH. discriminate.
-    + apply Hz.
+    + intros _ _. apply Hz.
+    + intros Ha. left. simpl in *. lra.
+    + intros Hb. left. simpl in *. lra.
 Qed.
 
 Lemma exact_exec : forall (g : nat -> node) (X x : nat -> R) j,

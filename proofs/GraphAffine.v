@@ -76,8 +76,10 @@ Definition loc_ok (g : nat -> node) (lo hi E e : nat -> R) (j : nat) : Prop :=
         <= (1 - v * (2 + v)) * e j
   | Sum l =>
       let k := length l in
-      let w := (1 + v) ^ (k - 1) in
-      (w - 1) * sumR (fun i => mag (lo i) (hi i) + E i) l + INR (k - 1) * w * eta <= e j
+      let m := (length (filter (live lo hi E) l) - 1)%nat in
+      let w := (1 + v) ^ m in
+      (w - 1) * sumR (fun i => mag (lo i) (hi i) + E i) l + INR m * w * eta
+        + INR (k - 1) * w * nez (g j) <= e j
   | _ => v < 1 /\ v * (m + E j) + eta <= (1 - v) * e j
   end.
 
@@ -228,7 +230,7 @@ Proof.
   destruct (IH j (Nat.le_refl j)) as [Ij Ej].
   assert (HY : Rabs (y j) <= mag (lo j) (hi j) + E j).
   { pose proof (mag_ge _ _ _ Ij). pose proof (Rabs_triang_inv (y j) (x j)). lra. }
-  unfold exec_op, loc_ok, err_ok, iv_ok in *. destruct (g j) as [o v eta]. cbn [nop nv neta] in *.
+  unfold exec_op, loc_ok, err_ok, iv_ok in *. destruct (g j) as [o v eta ez]. cbn [nop nv neta nez] in *.
   destruct o as [i | c | a b | a b | a b | a b | a b | a | a | l]; cbn [exact_op] in *;
     cbv zeta in Hloc;
     try exact (loc_ap1 v eta _ _ _ _ Hv (proj1 Hloc) Hy HY (proj2 Hloc)).
@@ -256,20 +258,32 @@ Proof.
         assert ((1 - w) * D = D - w * D) by ring. lra. }
       apply Rmult_le_reg_l in H1; lra.
   - (* Sum *)
-    destruct (sum_exec_err v eta Hv He _ _ Hy) as [_ Herr'].
+    destruct Herr as [_ [Hez _]].
+    destruct (sum_exec_err v eta ez Hv He Hez _ _ Hy) as [_ [_ Herr']].
     rewrite map_length, map_map in Herr'.
     change (fold_right Rplus 0 (map y l)) with (sumR y l) in Herr'.
     change (fold_right Rplus 0 (map (fun i => Rabs (y i)) l))
       with (sumR (fun i => Rabs (y i)) l) in Herr'.
     destruct Hwf as [_ Hl].
+    assert (HF : Forall (fun i => lo i <= x i <= hi i /\ Rabs (y i - x i) <= E i) l).
+    { eapply Forall_impl; [|exact Hl]. intros i Hi. apply IH. simpl in Hi. apply Nat.lt_le_incl. exact Hi. }
+    pose proof (nzc_live l x y lo hi E HF) as Hn.
+    set (m := (length (filter (live lo hi E) l) - 1)%nat) in *.
+    set (m0 := (nzc (map y l) - 1)%nat) in *.
+    assert (Hm : (m0 <= m)%nat) by (unfold m0, m; lia).
     assert (Habs : sumR (fun i => Rabs (y i)) l <= sumR (fun i => mag (lo i) (hi i) + E i) l).
-    { apply sumR_le. eapply Forall_impl; [|exact Hl]. simpl. intros i Hi.
-      destruct (IH i ltac:(lia)) as [Ii Ei].
+    { apply sumR_le. eapply Forall_impl; [|exact HF]. simpl. intros i [Ii Ei].
       pose proof (mag_ge _ _ _ Ii). pose proof (Rabs_triang_inv (y i) (x i)). lra. }
-    pose proof (pow_R1_Rle (1 + v) (length l - 1) ltac:(lra)).
-    assert (((1 + v) ^ (length l - 1) - 1) * sumR (fun i => Rabs (y i)) l
-            <= ((1 + v) ^ (length l - 1) - 1) * sumR (fun i => mag (lo i) (hi i) + E i) l)
+    assert (Hpos : 0 <= sumR (fun i => Rabs (y i)) l).
+    { clear. unfold sumR. induction l as [|i l IH]; simpl; [lra|].
+      pose proof (Rabs_pos (y i)). lra. }
+    pose proof (sum_bound_mono v eta ez m0 m (length l - 1) _ Hv He Hez Hpos Hm) as Hmono.
+    pose proof (pow_R1_Rle (1 + v) m ltac:(lra)).
+    assert (((1 + v) ^ m - 1) * sumR (fun i => Rabs (y i)) l
+            <= ((1 + v) ^ m - 1) * sumR (fun i => mag (lo i) (hi i) + E i) l)
       by (apply Rmult_le_compat_l; lra).
+    assert (INR m0 * (1 + v) ^ m * eta <= INR m * (1 + v) ^ m * eta)
+      by (apply Rmult_le_compat_r; [lra | apply Rmult_le_compat_r; [lra | apply le_INR; exact Hm]]).
     change (fold_right Rplus 0 (map y l)) with (sumR y l). lra.
 Qed.
 

@@ -535,7 +535,9 @@ fn quake_rsqrt_duff_exceeds_the_graph_bound() {
 
 /// The rules of `proofs/Graph.v` this file checks, as the `.v` states them: the test
 /// below fails when one of them is no longer in the file.
-const GRAPH_V_RULES: [&str; 15] = [
+const GRAPH_V_RULES: [&str; 17] = [
+    "let m := (length (filter (live lo hi E) l) - 1)%nat in",
+    "+ INR m * w * eta + INR (k - 1) * w * nez (g j) <= E j",
     "let eta := neta (g j) in",
     "| In _ => v * m + eta <= E j",
     "| Add a b | Sub a b => E a + E b + v * (m + E a + E b) + eta <= E j",
@@ -764,17 +766,32 @@ fn graph_certificates_satisfy_the_theorems_rules() {
                                             <= e[j],
                                 ),
                                 Op::Sum(l) => {
+                                    // `live`: the terms not known to be 0; m = live − 1
+                                    // additions round, each addition of a zero moves by
+                                    // `nez` (the format's η) at most.
                                     let k = l.len();
+                                    let live = l
+                                        .iter()
+                                        .filter(|&&i| {
+                                            !(lo[i] == zero && hi[i] == zero && e[i] == zero)
+                                        })
+                                        .count();
+                                    let m_ = live.max(1) - 1;
                                     let mut w = one.clone();
-                                    for _ in 1..k {
+                                    for _ in 0..m_ {
                                         w *= &one + &v;
                                     }
+                                    // (An exact node's additions are all exact: nez = 0.)
+                                    assert_eq!(b.ez, m.eta, "nez is the format's η");
+                                    let exact_node = b.v[j] == 0.0 && b.eta[j] == 0.0;
+                                    let ez = if exact_node { Q::zero() } else { r(b.ez) };
                                     let se: Q = l.iter().map(|&i| e[i].clone()).sum();
                                     let sm: Q =
                                         l.iter().map(|&i| mag(&lo[i], &hi[i]) + &e[i]).sum();
                                     let bound = se
                                         + (&w - &one) * sm
-                                        + Q::from_integer((k as i64 - 1).into()) * &w * &eta;
+                                        + Q::from_integer((m_ as i64).into()) * &w * &eta
+                                        + Q::from_integer((k as i64 - 1).into()) * &w * &ez;
                                     let iv = lo[j] <= l.iter().map(|&i| lo[i].clone()).sum::<Q>()
                                         && l.iter().map(|&i| hi[i].clone()).sum::<Q>() <= hi[j];
                                     (iv, bound <= e[j])

@@ -14,7 +14,7 @@ const GRAPH_AFFINE_V_RULES: [&str; 18] = [
     "(forall s, S j <= s <= hi j -> R0 a / (2 * s) + F a * F a / (2 * s * ((s + T j) * (s + T j))) + dev (fun k => fm M a k / (2 * s)) <= R0 j)",
     "| _ => v < 1 /\\ v * (m + E j) + eta <= (1 - v) * e j",
     "v * (2 + v) * (m + E j) + (1 + v) * (mag (lo a) (hi a) + E a) * eta + eta <= (1 - v * (2 + v)) * e j",
-    "(w - 1) * sumR (fun i => mag (lo i) (hi i) + E i) l + INR (k - 1) * w * eta <= e j",
+    "(w - 1) * sumR (fun i => mag (lo i) (hi i) + E i) l + INR m * w * eta + INR (k - 1) * w * nez (g j) <= e j",
     "let dev c := sumR (fun k => Rabs (c k - pm M j k) * e k) (seq 0 N) in",
     "let opaque d := d + sumR (fun k => Rabs (pm M j k) * e k) (seq 0 N) <= R0 j in",
     "| In _ | Cst _ => opaque 0",
@@ -94,12 +94,20 @@ fn check_rules(
                         <= (&one - &w) * &e[j]
             }
             Op::Sum(l) => {
+                let live = l
+                    .iter()
+                    .filter(|&&i| !(lo[i] == zero && hi[i] == zero && big_e[i] == zero))
+                    .count();
+                let m_ = live.max(1) - 1;
                 let mut w = one.clone();
-                for _ in 1..l.len() {
+                for _ in 0..m_ {
                     w *= &one + &v;
                 }
                 let sm: Q = l.iter().map(|&i| mag(i) + &big_e[i]).sum();
-                (&w - &one) * sm + Q::from_integer((l.len() as i64 - 1).into()) * &w * &eta <= e[j]
+                (&w - &one) * sm
+                    + Q::from_integer((m_ as i64).into()) * &w * &eta
+                    + Q::from_integer((l.len() as i64 - 1).into()) * &w * q(b.ez)
+                    <= e[j]
             }
             _ => v < one && &v * &me + &eta <= (&one - &v) * &e[j],
         };

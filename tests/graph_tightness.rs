@@ -307,131 +307,11 @@ fn stats(method: Method, profile: Profile, spans: &[Span<Q>]) -> (f64, f64, f64,
     (short, worst, median, all.len())
 }
 
-/// Where the targets are not met, and why (docs/float.md §19.5): under `ieee` every
-/// operation rounds to nearest, so an implementation cannot choose its errors' signs —
-/// only the order of its sums, its fusions and its ways of dividing — and on the
-/// `paper` set's short spans (n = 2, 2, 10) the roundings of Duff's and symmetric
-/// Phong's twenty-odd operations per pixel do not align:
-/// [`the_ieee_exceptions_are_roundings_that_do_not_align`] measures it. Each exception
-/// keeps a floor, and fails once the target is met (it is then no exception):
-/// `(set, method, which statistic, floor)`, the statistic 0 for the largest ratio at
-/// n ≤ 64 and 2 for the median.
-const IEEE_EXCEPTIONS: [(&str, Method, usize, f64); 2] = [
-    ("paper", Method::Duff, 0, 0.22),
-    ("paper", Method::SymmetricPhong, 0, 0.22),
-];
-
-/// Half an ulp of binary32 at `|y|`, 0 where `y` is a binary32: what one rounding to
-/// nearest of a result near `y` can err by at most.
-fn half_ulp(y: f64) -> f64 {
-    if Format::Binary32.holds(y) {
-        0.0
-    } else {
-        Format::Binary32.ulp(y) / 2.0
-    }
-}
-
-/// The sum over the nodes of `g` of each one's largest rounding to nearest (half an ulp
-/// of its exact result; a three-term sum's two additions at its largest pair and its
-/// total; a division either way the larger way), each times the size of its effect on
-/// the target (`adj`): what the roundings would move the target by if they could all
-/// align — the first-order worst case of every bound built from per-operation errors.
-fn aligned(g: &Graph, mid: &[f64], adj: &[f64]) -> f64 {
-    let one = |j: usize| -> f64 {
-        match &g.nodes()[j].op {
-            Op::Cst(_) => 0.0,
-            Op::Sum(l) if l.len() == 3 => {
-                let t = [mid[l[0]], mid[l[1]], mid[l[2]]];
-                let pair = [t[0] + t[1], t[0] + t[2], t[1] + t[2]]
-                    .map(f64::abs)
-                    .into_iter()
-                    .fold(0f64, f64::max);
-                half_ulp(pair) + half_ulp(mid[j])
-            }
-            Op::Sum(l) => (l.len() - 1) as f64 * half_ulp(mid[j]),
-            // A halving is exact under `ieee`.
-            Op::DivE(_, b) if matches!(g.nodes()[*b].op, Op::Cst(c) if c == 2.0) => 0.0,
-            Op::DivE(a, b) => {
-                half_ulp(mid[j]).max(mid[*a].abs() * half_ulp(1.0 / mid[*b]) + half_ulp(mid[j]))
-            }
-            _ => half_ulp(mid[j]),
-        }
-    };
-    (0..g.nodes().len()).map(|j| adj[j].abs() * one(j)).sum()
-}
-
-/// Why [`IEEE_EXCEPTIONS`] stay below the target (docs/float.md §19.5): on each of their
-/// cases with n ≤ 64, at the pixel where the legal runs come nearest the bound, the
-/// roundings of those runs reach at most a third of [`aligned`] (each operation's
-/// largest rounding, with its sign, as if they could all align) — they do not align —,
-/// while the bound is within 1.35 times that sum (the running bound is near the
-/// per-operation worst case). Prints both ratios per case.
-#[test]
-fn the_ieee_exceptions_are_roundings_that_do_not_align() {
-    use phong_approx::tolerance::graph::read_to_nearest;
-    let m = model(Profile::Ieee, Format::Binary32).unwrap();
-    let mut seen = 0;
-    for &(set, method, _, _) in &IEEE_EXCEPTIONS {
-        for (id, s) in published_spans(set).into_iter().filter(|(_, s)| s.n <= 64) {
-            let shape = phong_approx::tolerance::Shape::of(&s);
-            let Some(bound) = profile_pixel_bounds(
-                method,
-                Profile::Ieee,
-                Form::Any,
-                &shape,
-                None,
-                Format::Binary32,
-            ) else {
-                continue;
-            };
-            let iv = inputs(&s);
-            let read = read_to_nearest(&iv, Format::Binary32).unwrap_or(iv.to_vec());
-            let x_in: [f64; 9] = iv.map(|(l, h)| (l + h) / 2.0);
-            let exact: Vec<f64> = method
-                .values(&s)
-                .unwrap()
-                .iter()
-                .map(|v| v.to_f64())
-                .collect();
-            let n = s.n as usize;
-            let (mut legal, mut sum) = (vec![0f64; n + 1], vec![0f64; n + 1]);
-            for f in method_graphs(method, Form::Any, s.n, &m).unwrap() {
-                let b = evaluate(&f.graph, &read, &m).unwrap();
-                let mid: Vec<f64> = b.lo.iter().zip(&b.hi).map(|(l, h)| (l + h) / 2.0).collect();
-                for pixels in &f.pixels {
-                    for (i, &p) in pixels.iter().enumerate() {
-                        let adj = sensitivities(&f.graph, &mid, p);
-                        sum[i] = sum[i].max(aligned(&f.graph, &mid, &adj));
-                        for sign in [1.0, -1.0] {
-                            let y = execute(&f.graph, &x_in, &adj, sign, false);
-                            legal[i] = legal[i].max((y[p] - exact[i]).abs());
-                        }
-                    }
-                }
-            }
-            let i = (0..=n)
-                .max_by(|&a, &c| (legal[a] / bound[a]).total_cmp(&(legal[c] / bound[c])))
-                .unwrap();
-            let (r, realised, over) = (legal[i] / bound[i], legal[i] / sum[i], bound[i] / sum[i]);
-            println!(
-                "{set} {method} {id} (n = {n}) pixel {i}: r {r:.3}, legal ÷ aligned {realised:.3}, bound ÷ aligned {over:.3}"
-            );
-            assert!(
-                realised <= 1.0 / 3.0 && over <= 1.35,
-                "{set} {method} {id}: {realised} {over}"
-            );
-            seen += 1;
-        }
-    }
-    assert!(seen >= 6, "{seen}");
-}
-
 /// The sharpness targets of docs/float.md §19.5 on the published sets: per method and
 /// profile, the worst legal error reaches at least 1/4 of the applied bound on some
 /// case with n ≤ 64, at least 1/10 on some case, and its median over the cases with
-/// a non-zero error is at least 1/10 of it — but for [`IEEE_EXCEPTIONS`], held to
-/// their floors. The default tier runs the `paper` set (spans up to n = 256), the
-/// extensive tier every set and prints the table.
+/// a non-zero error is at least 1/10 of it. The default tier runs the `paper` set
+/// (spans up to n = 256), the extensive tier every set and prints the table.
 #[test]
 fn legal_executions_reach_the_bounds() {
     let sets: &[&str] = if extensive() {
@@ -457,27 +337,10 @@ fn legal_executions_reach_the_bounds() {
                     "| {set} | {method} | {profile} | {cases} | {:.2} | {:.2} | {:.2} |",
                     short, worst, median
                 ));
-                let mut want = [0.25, 0.1, 0.1];
-                for &(s, m, k, floor) in &IEEE_EXCEPTIONS {
-                    if s == set && m == method && profile == Profile::Ieee {
-                        want[k] = floor;
-                    }
-                }
+                let want = [0.25, 0.1, 0.1];
                 let got = [short, worst, median];
                 if got.iter().zip(&want).any(|(g, w)| g < w) {
                     failures.push(format!("{set} {method} {profile}: {got:.3?} < {want:?}"));
-                }
-                // An exception whose statistic meets the target is no exception.
-                for &(s, m, k, _) in &IEEE_EXCEPTIONS {
-                    if s == set
-                        && m == method
-                        && profile == Profile::Ieee
-                        && got[k] >= [0.25, 0.1, 0.1][k]
-                    {
-                        failures.push(format!(
-                            "{set} {method}: {got:.3?} meets the target; drop the exception"
-                        ));
-                    }
                 }
             }
         }

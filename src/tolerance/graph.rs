@@ -298,6 +298,10 @@ pub struct Bounds {
     /// `κ/2` ulps of the largest result the operation can have, plus it, in the ulp
     /// model.
     pub eta: Vec<f64>,
+    /// `nez` of every sum that rounds: how far an addition of an exact zero may move
+    /// the other operand — the format's `η` (a subnormal flushed to zero; 0 would do
+    /// where nothing flushes, a float plus 0 being that float). An exact node's is 0.
+    pub ez: f64,
 }
 
 // Outward rounding: the operations of f64 round to nearest, so the neighbouring float
@@ -364,6 +368,7 @@ pub fn evaluate(graph: &Graph, inputs: &[(f64, f64)], model: &Model) -> Result<B
     let (mut sj, mut tj) = (vec![0.0; len], vec![0.0; len]);
     let (mut vj, mut etaj) = (vec![0.0; len], vec![0.0; len]);
     let eta = model.eta;
+    let ez = model.eta;
     for (j, node) in graph.nodes.iter().enumerate() {
         let v = mul_up(model.kappa(node.class), model.u);
         // The ulp model's η for a result of magnitude at most `mag`: κ/2 ulps of the
@@ -527,13 +532,25 @@ pub fn evaluate(graph: &Graph, inputs: &[(f64, f64)], model: &Model) -> Result<B
                     sm = add_up(sm, add_up(mag(lo[t], hi[t]), err[t]));
                 }
                 let k = terms.len();
+                // The terms that may be nonzero (`live`): a term known to be 0 adds
+                // without rounding, so only m = live − 1 of the additions round; each
+                // addition of a zero moves by `ez` at most (`sum_exec_err`).
+                let live = terms
+                    .iter()
+                    .filter(|&&t| !(lo[t] == 0.0 && hi[t] == 0.0 && err[t] == 0.0))
+                    .count();
+                let m = live.max(1) - 1;
                 let mut w = 1.0f64;
-                for _ in 1..k {
+                for _ in 0..m {
                     w = mul_up(w, add_up(1.0, v));
                 }
+                let zeros = mul_up(mul_up((k - 1) as f64, w), ez);
                 let mut e = add_up(
-                    add_up(se, mul_up(up(w - 1.0), sm)),
-                    mul_up(mul_up((k - 1) as f64, w), eta),
+                    add_up(
+                        add_up(se, mul_up(up(w - 1.0), sm)),
+                        mul_up(mul_up(m as f64, w), eta),
+                    ),
+                    zeros,
                 );
                 // The ulp model: every partial sum is at most sm + (k − 2)·η' ≤ M, with
                 // η' the rounding at M: the smallest such M of a few tries.
@@ -547,7 +564,7 @@ pub fn evaluate(graph: &Graph, inputs: &[(f64, f64)], model: &Model) -> Result<B
                 }
                 let ue = ulp_eta(mm);
                 let partial = extra(mm);
-                let abs = add_up(se, mul_up((k - 1) as f64, ue));
+                let abs = add_up(add_up(se, mul_up(m as f64, ue)), mul_up((k - 1) as f64, ez));
                 if partial <= mm && abs < e {
                     e = abs;
                     node_v = (0.0, ue);
@@ -571,5 +588,6 @@ pub fn evaluate(graph: &Graph, inputs: &[(f64, f64)], model: &Model) -> Result<B
         t: tj,
         v: vj,
         eta: etaj,
+        ez,
     })
 }

@@ -132,17 +132,24 @@ fn local(graph: &Graph, b: &Bounds, j: Id) -> Option<f64> {
             one(v)?.max(div_up(recip, den))
         }
         Op::Sum(l) => {
+            // As the running bound's sum rule: m = live − 1 rounded additions, each
+            // addition of a zero within `ez`.
             let k = l.len();
+            let live = l
+                .iter()
+                .filter(|&&t| !(b.lo[t] == 0.0 && b.hi[t] == 0.0 && b.err[t] == 0.0))
+                .count();
+            let m = live.max(1) - 1;
             let mut w = 1.0f64;
-            for _ in 1..k {
+            for _ in 0..m {
                 w = mul_up(w, add_up(1.0, v));
             }
             let sm = l.iter().fold(0.0, |s, &t| {
                 add_up(s, add_up(mag(b.lo[t], b.hi[t]), b.err[t]))
             });
             add_up(
-                mul_up(up(w - 1.0), sm),
-                mul_up(mul_up((k - 1) as f64, w), eta),
+                add_up(mul_up(up(w - 1.0), sm), mul_up(mul_up(m as f64, w), eta)),
+                mul_up(mul_up((k - 1) as f64, w), b.ez),
             )
         }
         _ => one(v)?,

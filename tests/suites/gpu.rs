@@ -179,7 +179,7 @@ mod on_device {
         let (out, err) = text(&o);
         assert_eq!(o.status.code(), Some(1), "{out}{err}");
         assert!(
-            err.contains("cases out of tolerance, worst: edge-001"),
+            err.contains("cases out of tolerance, worst: edge-003"),
             "{err}"
         );
         assert!(out.contains("FAIL"), "{out}");

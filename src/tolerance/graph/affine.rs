@@ -81,16 +81,14 @@ fn choose(af: &Affine, c: Vec<(Id, f64, f64)>) -> (Form, f64) {
     } else {
         f64::NEG_INFINITY
     };
-    let mut at_cut = c.iter().filter(|x| weight(x) > cut).count();
+    // How many entries at the cut still fit.
+    let mut room = KEPT.saturating_sub(c.iter().filter(|x| weight(x) > cut).count());
     let (mut form, mut charge) = (Form::with_capacity(c.len().min(KEPT)), 0.0);
     for x @ &(k, l, h) in &c {
         let wx = weight(x);
-        let keep = wx > cut
-            || (wx == cut && at_cut < KEPT && {
-                at_cut += 1;
-                true
-            });
-        if keep {
+        let at_cut = wx == cut && room > 0;
+        room -= usize::from(at_cut);
+        if wx > cut || at_cut {
             let m = 0.5 * l + 0.5 * h;
             let dev = up(h - m).max(up(m - l));
             charge = add_up(charge, mul_up(dev, af.e[k]));
@@ -167,7 +165,7 @@ fn size(af: &Affine, c: &(Form, f64)) -> f64 {
 fn div_linear(af: &Affine, b: &Bounds, j: Id, a: Id, c: Id) -> Option<(Form, f64)> {
     let (fa, fc) = (af.err[a], af.err[c]);
     let lb = b.lo[c].abs().min(b.hi[c].abs());
-    if !(fc < lb) {
+    if fc.is_nan() || fc >= lb {
         return None;
     }
     let u = (dn(1.0 / b.hi[c]), up(1.0 / b.lo[c]));
@@ -178,7 +176,7 @@ fn div_linear(af: &Affine, b: &Bounds, j: Id, a: Id, c: Id) -> Option<(Form, f64
     );
     let (um, qum, qm) = (mag(u.0, u.1), mag(qu.0, qu.1), mag(b.lo[j], b.hi[j]));
     let den = dn(1.0 - mul_up(um, fc));
-    if !(den > 0.0) {
+    if den.is_nan() || den <= 0.0 {
         return None;
     }
     let second = div_up(
@@ -200,7 +198,7 @@ fn div_linear(af: &Affine, b: &Bounds, j: Id, a: Id, c: Id) -> Option<(Form, f64
 /// `[S_j, hi_j]`, every term at its largest there (at `s = S_j`).
 fn sqrt_linear(af: &Affine, b: &Bounds, j: Id, a: Id) -> Option<(Form, f64)> {
     let (s, t, h) = (b.s[j], b.t[j], b.hi[j]);
-    if !(s > 0.0 && h >= s) {
+    if s.is_nan() || h.is_nan() || s <= 0.0 || h < s {
         return None;
     }
     let coef = (dn(1.0 / up(2.0 * h)), up(1.0 / dn(2.0 * s)));
@@ -261,7 +259,7 @@ pub fn affine(graph: &Graph, b: &Bounds) -> Option<Affine> {
                 } else {
                     let lb = b.lo[*c].abs().min(b.hi[*c].abs());
                     let gap = dn(lb - af.err[*c]);
-                    if !(gap > 0.0) {
+                    if gap.is_nan() || gap <= 0.0 {
                         return None;
                     }
                     let m = mag(b.lo[j], b.hi[j]);

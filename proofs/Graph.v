@@ -707,6 +707,44 @@ Proof.
   - destruct (Req_EM_T (y i) 0); simpl; lia.
 Qed.
 
+(** The rounding of a sum on its computed terms: only the live terms' additions round
+    (the sum rule's terms less the operands' errors; also GraphAffine.v's local error). *)
+Lemma sum_rounding : forall v eta ez (l : list nat) (x y lo hi E : nat -> R) yj,
+  0 <= v -> 0 <= eta -> 0 <= ez ->
+  Forall (fun i => lo i <= x i <= hi i /\ Rabs (y i - x i) <= E i) l ->
+  sum_exec v eta ez (map y l) yj ->
+  Rabs (yj - sumR y l)
+    <= ((1 + v) ^ (length (filter (live lo hi E) l) - 1) - 1)
+         * sumR (fun i => mag (lo i) (hi i) + E i) l
+       + INR (length (filter (live lo hi E) l) - 1)
+         * (1 + v) ^ (length (filter (live lo hi E) l) - 1) * eta
+       + INR (length l - 1) * (1 + v) ^ (length (filter (live lo hi E) l) - 1) * ez.
+Proof.
+  intros v eta ez l x y lo hi E yj Hv He Hz HF Hs.
+  destruct (sum_exec_err v eta ez Hv He Hz _ _ Hs) as [_ [_ Herr]].
+  rewrite map_length, map_map in Herr. change (fold_right Rplus 0 (map y l)) with (sumR y l) in Herr.
+  change (fold_right Rplus 0 (map (fun i => Rabs (y i)) l))
+    with (sumR (fun i => Rabs (y i)) l) in Herr.
+  pose proof (nzc_live l x y lo hi E HF) as Hn.
+  set (m := (length (filter (live lo hi E) l) - 1)%nat) in *.
+  set (m0 := (nzc (map y l) - 1)%nat) in *.
+  assert (Hm : (m0 <= m)%nat) by (unfold m0, m; lia).
+  assert (Habs : sumR (fun i => Rabs (y i)) l <= sumR (fun i => mag (lo i) (hi i) + E i) l).
+  { apply sumR_le. eapply Forall_impl; [|exact HF]. simpl. intros i [Hi Ei].
+    pose proof (mag_ge _ _ _ Hi). pose proof (Rabs_triang_inv (y i) (x i)). lra. }
+  assert (Hpos : 0 <= sumR (fun i => Rabs (y i)) l).
+  { clear. unfold sumR. induction l as [|i l IH]; simpl; [lra|].
+    pose proof (Rabs_pos (y i)). lra. }
+  pose proof (sum_bound_mono v eta ez m0 m (length l - 1) _ Hv He Hz Hpos Hm) as Hmono.
+  pose proof (pow_R1_Rle (1 + v) m ltac:(lra)).
+  assert (((1 + v) ^ m - 1) * sumR (fun i => Rabs (y i)) l
+          <= ((1 + v) ^ m - 1) * sumR (fun i => mag (lo i) (hi i) + E i) l)
+    by (apply Rmult_le_compat_l; lra).
+  assert (INR m0 * (1 + v) ^ m * eta <= INR m * (1 + v) ^ m * eta)
+    by (apply Rmult_le_compat_r; [lra | apply Rmult_le_compat_r; [lra | apply le_INR; exact Hm]]).
+  lra.
+Qed.
+
 Lemma case_sum : forall v eta ez (l : list nat) (x y lo hi E : nat -> R) yj L H Ej,
   0 <= v -> 0 <= eta -> 0 <= ez ->
   Forall (fun i => lo i <= x i <= hi i /\ Rabs (y i - x i) <= E i) l ->
@@ -722,27 +760,7 @@ Proof.
   - assert (sumR lo l <= sumR x l) by (apply sumR_le; eapply Forall_impl; [|exact HF]; simpl; intros; lra).
     assert (sumR x l <= sumR hi l) by (apply sumR_le; eapply Forall_impl; [|exact HF]; simpl; intros; lra).
     lra.
-  - destruct (sum_exec_err v eta ez Hv He Hz _ _ Hs) as [_ [_ Herr]].
-    rewrite map_length, map_map in Herr. change (fold_right Rplus 0 (map y l)) with (sumR y l) in Herr.
-    change (fold_right Rplus 0 (map (fun i => Rabs (y i)) l))
-      with (sumR (fun i => Rabs (y i)) l) in Herr.
-    pose proof (nzc_live l x y lo hi E HF) as Hn.
-    set (m := (length (filter (live lo hi E) l) - 1)%nat) in *.
-    set (m0 := (nzc (map y l) - 1)%nat) in *.
-    assert (Hm : (m0 <= m)%nat) by (unfold m0, m; lia).
-    assert (Habs : sumR (fun i => Rabs (y i)) l <= sumR (fun i => mag (lo i) (hi i) + E i) l).
-    { apply sumR_le. eapply Forall_impl; [|exact HF]. simpl. intros i [Hi Ei].
-      pose proof (mag_ge _ _ _ Hi). pose proof (Rabs_triang_inv (y i) (x i)). lra. }
-    assert (Hpos : 0 <= sumR (fun i => Rabs (y i)) l).
-    { clear. unfold sumR. induction l as [|i l IH]; simpl; [lra|].
-      pose proof (Rabs_pos (y i)). lra. }
-    pose proof (sum_bound_mono v eta ez m0 m (length l - 1) _ Hv He Hz Hpos Hm) as Hmono.
-    pose proof (pow_R1_Rle (1 + v) m ltac:(lra)).
-    assert (((1 + v) ^ m - 1) * sumR (fun i => Rabs (y i)) l
-            <= ((1 + v) ^ m - 1) * sumR (fun i => mag (lo i) (hi i) + E i) l)
-      by (apply Rmult_le_compat_l; lra).
-    assert (INR m0 * (1 + v) ^ m * eta <= INR m * (1 + v) ^ m * eta)
-      by (apply Rmult_le_compat_r; [lra | apply Rmult_le_compat_r; [lra | apply le_INR; exact Hm]]).
+  - pose proof (sum_rounding v eta ez l x y lo hi E yj Hv He Hz HF Hs) as Hr.
     assert (Hd : Rabs (sumR y l - sumR x l) <= sumR E l)
       by (apply sumR_diff; eapply Forall_impl; [|exact HF]; simpl; tauto).
     replace (yj - sumR x l) with ((yj - sumR y l) + (sumR y l - sumR x l)) by ring.
@@ -997,6 +1015,20 @@ Proof.
     apply sum_exec_exact; auto. destruct l; [congruence | discriminate].
 Qed.
 
+(** The triangle inequality from the exact value at the inputs as read (in
+    [lor, hir]) to the one at the exact inputs (in [lo, hi]). *)
+Lemma read_triangle : forall x xr y lo hi lor hir B,
+  lo <= x <= hi -> lor <= xr <= hir -> Rabs (y - xr) <= B ->
+  Rabs (y - x) <= B + Rmax (hir - lo) (hi - lor).
+Proof.
+  intros x xr y lo hi lor hir B Hx Hxr Hy.
+  assert (Hd : Rabs (xr - x) <= Rmax (hir - lo) (hi - lor)).
+  { pose proof (Rmax_l (hir - lo) (hi - lor)). pose proof (Rmax_r (hir - lo) (hi - lor)).
+    unfold Rabs. destruct (Rcase_abs (xr - x)); lra. }
+  pose proof (Rabs_triang (y - xr) (xr - x)).
+  replace (y - xr + (xr - x)) with (y - x) in * by ring. lra.
+Qed.
+
 Theorem graph_sound_read :
   forall (g gr : nat -> node) (N : nat) (X Xr : nat -> R)
          (x xr y lo hi E S T lor hir Er Sr Tr : nat -> R),
@@ -1021,11 +1053,5 @@ Proof.
     - intros k Hk. rewrite Hop by exact Hk.
       destruct (Hwf k Hk) as (Hw & _). destruct (Hwr k Hk). auto.
     - intros k Hk. rewrite Hop by exact Hk. auto. }
-  destruct Hr as [Hxr0 Hyr].
-  assert (Hd : Rabs (xr j - x j) <= Rmax (hir j - lo j) (hi j - lor j)).
-  { pose proof (Rmax_l (hir j - lo j) (hi j - lor j)).
-    pose proof (Rmax_r (hir j - lo j) (hi j - lor j)).
-    unfold Rabs. destruct (Rcase_abs (xr j - x j)); lra. }
-  pose proof (Rabs_triang (y j - xr j) (xr j - x j)).
-  replace (y j - xr j + (xr j - x j)) with (y j - x j) in * by ring. lra.
+  destruct Hr as [Hxr0 Hyr]. exact (read_triangle _ _ _ _ _ _ _ _ Hx0 Hxr0 Hyr).
 Qed.

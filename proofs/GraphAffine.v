@@ -259,31 +259,11 @@ Proof.
       apply Rmult_le_reg_l in H1; lra.
   - (* Sum *)
     destruct Herr as [_ [Hez _]].
-    destruct (sum_exec_err v eta ez Hv He Hez _ _ Hy) as [_ [_ Herr']].
-    rewrite map_length, map_map in Herr'.
-    change (fold_right Rplus 0 (map y l)) with (sumR y l) in Herr'.
-    change (fold_right Rplus 0 (map (fun i => Rabs (y i)) l))
-      with (sumR (fun i => Rabs (y i)) l) in Herr'.
     destruct Hwf as [_ Hl].
     assert (HF : Forall (fun i => lo i <= x i <= hi i /\ Rabs (y i - x i) <= E i) l).
-    { eapply Forall_impl; [|exact Hl]. intros i Hi. apply IH. simpl in Hi. apply Nat.lt_le_incl. exact Hi. }
-    pose proof (nzc_live l x y lo hi E HF) as Hn.
-    set (m := (length (filter (live lo hi E) l) - 1)%nat) in *.
-    set (m0 := (nzc (map y l) - 1)%nat) in *.
-    assert (Hm : (m0 <= m)%nat) by (unfold m0, m; lia).
-    assert (Habs : sumR (fun i => Rabs (y i)) l <= sumR (fun i => mag (lo i) (hi i) + E i) l).
-    { apply sumR_le. eapply Forall_impl; [|exact HF]. simpl. intros i [Ii Ei].
-      pose proof (mag_ge _ _ _ Ii). pose proof (Rabs_triang_inv (y i) (x i)). lra. }
-    assert (Hpos : 0 <= sumR (fun i => Rabs (y i)) l).
-    { clear. unfold sumR. induction l as [|i l IH]; simpl; [lra|].
-      pose proof (Rabs_pos (y i)). lra. }
-    pose proof (sum_bound_mono v eta ez m0 m (length l - 1) _ Hv He Hez Hpos Hm) as Hmono.
-    pose proof (pow_R1_Rle (1 + v) m ltac:(lra)).
-    assert (((1 + v) ^ m - 1) * sumR (fun i => Rabs (y i)) l
-            <= ((1 + v) ^ m - 1) * sumR (fun i => mag (lo i) (hi i) + E i) l)
-      by (apply Rmult_le_compat_l; lra).
-    assert (INR m0 * (1 + v) ^ m * eta <= INR m * (1 + v) ^ m * eta)
-      by (apply Rmult_le_compat_r; [lra | apply Rmult_le_compat_r; [lra | apply le_INR; exact Hm]]).
+    { eapply Forall_impl; [|exact Hl]. intros i Hi. apply IH. simpl in Hi.
+      apply Nat.lt_le_incl. exact Hi. }
+    pose proof (sum_rounding v eta ez l x y lo hi E (y j) Hv He Hez HF Hy) as Hr.
     change (fold_right Rplus 0 (map y l)) with (sumR y l). lra.
 Qed.
 
@@ -533,6 +513,14 @@ Proof.
   unfold iv_ok, err_ok, aff_ok in *. rewrite Hx.
   destruct (nop (g j)) as [i | c | a b | a b | a b | a b | a b | a | a | l] eqn:Hg;
     cbn [exact_op op_wf] in *; cbv zeta in Haff.
+  (* Div and DivE: the same remainder rules, on y a / y b. *)
+  6-7: destruct Hwf as [Ha Hb]; destruct (Hold a ltac:(lia)) as [Ia _];
+    destruct (Hold b ltac:(lia)) as [Ib Eb]; destruct Hiv as (_ & Hs & Hiv);
+    assert (Hq : lo j <= x a / x b <= hi j)
+      by (apply (div_between (lo a) (hi a) (lo b) (hi b)); auto);
+    destruct Haff as [H | [H | (Hlt & H)]];
+    [idtac | idtac | apply (div_lin N lo hi M R0 e d j a b); auto];
+    apply (div_affine N lo hi E M R0 e d j a b); auto.
   - (* In *) replace (X i - X i) with 0 by ring.
     pose proof (opaque_step 0 0 (pm M j) d e _ ltac:(rewrite Rabs_R0; lra) Hds). lra.
   - (* Cst *) replace (c - c) with 0 by ring.
@@ -610,24 +598,6 @@ Proof.
     pose proof (Rabs_triang (x b * (y a - x a - La) + x a * (y b - x b - Lb))
                             ((y a - x a) * (y b - x b))).
     pose proof (Rabs_triang (x b * (y a - x a - La)) (x a * (y b - x b - Lb))). lra.
-  - (* Div *)
-    destruct Hwf as [Ha Hb]. destruct (Hold a ltac:(lia)) as [Ia _].
-    destruct (Hold b ltac:(lia)) as [Ib Eb]. destruct Hiv as (_ & Hs & Hiv).
-    assert (Hq : lo j <= x a / x b <= hi j)
-      by (apply (div_between (lo a) (hi a) (lo b) (hi b)); auto).
-    destruct Haff as [H | [H | (Hlt & H)]].
-    + apply (div_affine N lo hi E M R0 e d j a b); auto.
-    + apply (div_affine N lo hi E M R0 e d j a b); auto.
-    + apply (div_lin N lo hi M R0 e d j a b); auto.
-  - (* DivE *)
-    destruct Hwf as [Ha Hb]. destruct (Hold a ltac:(lia)) as [Ia _].
-    destruct (Hold b ltac:(lia)) as [Ib Eb]. destruct Hiv as (_ & Hs & Hiv).
-    assert (Hq : lo j <= x a / x b <= hi j)
-      by (apply (div_between (lo a) (hi a) (lo b) (hi b)); auto).
-    destruct Haff as [H | [H | (Hlt & H)]].
-    + apply (div_affine N lo hi E M R0 e d j a b); auto.
-    + apply (div_affine N lo hi E M R0 e d j a b); auto.
-    + apply (div_lin N lo hi M R0 e d j a b); auto.
   - (* Sqrt *)
     pose proof (IH a Hwf) as Ra. destruct (Hold a ltac:(lia)) as [Ia Ea].
     pose proof (HF a Hwf) as Fa.
@@ -735,10 +705,5 @@ Proof.
     by (apply (graph_sound gr N Xr xr y lor hir Er Sr Tr); auto).
   pose proof (graph_sound_affine gr N Xr xr y lor hir Er Sr Tr e R0 M Hwf' Hxr' Hy Hcr Ha j Hj)
     as Hyr.
-  assert (Hd : Rabs (xr j - x j) <= Rmax (hir j - lo j) (hi j - lor j)).
-  { pose proof (Rmax_l (hir j - lo j) (hi j - lor j)).
-    pose proof (Rmax_r (hir j - lo j) (hi j - lor j)).
-    unfold Rabs. destruct (Rcase_abs (xr j - x j)); lra. }
-  pose proof (Rabs_triang (y j - xr j) (xr j - x j)).
-  replace (y j - xr j + (xr j - x j)) with (y j - x j) in * by ring. lra.
+  exact (read_triangle _ _ _ _ _ _ _ _ Hx0 Hxr0 Hyr).
 Qed.

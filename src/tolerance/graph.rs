@@ -322,6 +322,20 @@ fn div_up(a: f64, b: f64) -> f64 {
     up(a / b)
 }
 
+/// The shape of a sum's rule (`err_ok` of `proofs/Graph.v`, `loc_ok` of
+/// `GraphAffine.v`): its `k` terms, the `m = live − 1` additions that may round (a
+/// term known to be 0 — interval `[0, 0]`, no error — adds without rounding,
+/// `sum_exec_err`) and `w = (1 + v)^m`, rounded up.
+fn sum_shape(terms: &[Id], lo: &[f64], hi: &[f64], err: &[f64], v: f64) -> (usize, usize, f64) {
+    let live = terms
+        .iter()
+        .filter(|&&t| !(lo[t] == 0.0 && hi[t] == 0.0 && err[t] == 0.0))
+        .count();
+    let m = live.max(1) - 1;
+    let w = (0..m).fold(1.0, |w, _| mul_up(w, add_up(1.0, v)));
+    (terms.len(), m, w)
+}
+
 /// `mag lo hi = max(|lo|, |hi|)` (exact).
 fn mag(lo: f64, hi: f64) -> f64 {
     lo.abs().max(hi.abs())
@@ -531,19 +545,7 @@ pub fn evaluate(graph: &Graph, inputs: &[(f64, f64)], model: &Model) -> Result<B
                     se = add_up(se, err[t]);
                     sm = add_up(sm, add_up(mag(lo[t], hi[t]), err[t]));
                 }
-                let k = terms.len();
-                // The terms that may be nonzero (`live`): a term known to be 0 adds
-                // without rounding, so only m = live − 1 of the additions round; each
-                // addition of a zero moves by `ez` at most (`sum_exec_err`).
-                let live = terms
-                    .iter()
-                    .filter(|&&t| !(lo[t] == 0.0 && hi[t] == 0.0 && err[t] == 0.0))
-                    .count();
-                let m = live.max(1) - 1;
-                let mut w = 1.0f64;
-                for _ in 0..m {
-                    w = mul_up(w, add_up(1.0, v));
-                }
+                let (k, m, w) = sum_shape(terms, &lo, &hi, &err, v);
                 let zeros = mul_up(mul_up((k - 1) as f64, w), ez);
                 let mut e = add_up(
                     add_up(

@@ -11,7 +11,7 @@
 //! absolute value is taken. The rules are `loc_ok` and `aff_ok` of the proof; every
 //! quantity is rounded outward as in [`evaluate`](super::evaluate).
 
-use super::{add_up, dn, mag, mul_up, up, Bounds, Graph, Id, Op};
+use super::{add_up, corners, div_up, dn, mag, mul_up, sum_shape, up, Bounds, Graph, Id, Op};
 
 /// How many earlier roundings a node's form keeps: the largest `|M_jk|·e_k`; the
 /// others go to the remainder (a coefficient of 0 in `aff_ok`, whose whole term the
@@ -33,11 +33,6 @@ pub struct Affine {
     /// `Σ_k |M_jk|·e_k + e_j + R_j`, rounded up: the bound on `|computed − exact|`
     /// (`ferr` of the proof).
     pub err: Vec<f64>,
-}
-
-/// `a/b` rounded up, `b > 0`.
-fn div_up(a: f64, b: f64) -> f64 {
-    up(a / b)
 }
 
 /// The operands' full coefficients (`fm`: 1 on the operand itself), each scaled by
@@ -132,16 +127,7 @@ fn local(graph: &Graph, b: &Bounds, j: Id) -> Option<f64> {
         Op::Sum(l) => {
             // As the running bound's sum rule: m = live − 1 rounded additions, each
             // addition of a zero within `ez`.
-            let k = l.len();
-            let live = l
-                .iter()
-                .filter(|&&t| !(b.lo[t] == 0.0 && b.hi[t] == 0.0 && b.err[t] == 0.0))
-                .count();
-            let m = live.max(1) - 1;
-            let mut w = 1.0f64;
-            for _ in 0..m {
-                w = mul_up(w, add_up(1.0, v));
-            }
+            let (k, m, w) = sum_shape(l, &b.lo, &b.hi, &b.err, v);
             let sm = l.iter().fold(0.0, |s, &t| {
                 add_up(s, add_up(mag(b.lo[t], b.hi[t]), b.err[t]))
             });
@@ -169,11 +155,7 @@ fn div_linear(af: &Affine, b: &Bounds, j: Id, a: Id, c: Id) -> Option<(Form, f64
         return None;
     }
     let u = (dn(1.0 / b.hi[c]), up(1.0 / b.lo[c]));
-    let corners = [b.lo[j] * u.0, b.lo[j] * u.1, b.hi[j] * u.0, b.hi[j] * u.1];
-    let qu = (
-        dn(corners.iter().copied().fold(f64::INFINITY, f64::min)),
-        up(corners.iter().copied().fold(f64::NEG_INFINITY, f64::max)),
-    );
+    let qu = corners(|x, y| x * y, (b.lo[j], b.hi[j]), u);
     let (um, qum, qm) = (mag(u.0, u.1), mag(qu.0, qu.1), mag(b.lo[j], b.hi[j]));
     let den = dn(1.0 - mul_up(um, fc));
     if den.is_nan() || den <= 0.0 {
@@ -253,7 +235,6 @@ pub fn affine(graph: &Graph, b: &Bounds) -> Option<Affine> {
                 if x == b.hi[*c] && b.err[*c] == 0.0 && x != 0.0 {
                     // A divisor known exactly: linear.
                     let inv = (dn(1.0 / x), up(1.0 / x));
-                    let inv = (inv.0.min(inv.1), inv.0.max(inv.1));
                     let (f, ch) = choose(&af, combine(&af, &[(*a, inv)]));
                     (f, add_up(div_up(af.rem[*a], dn(x.abs())), ch))
                 } else {

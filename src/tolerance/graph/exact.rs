@@ -20,7 +20,8 @@ pub fn interval(x: &crate::BigRational) -> (f64, f64) {
 /// that is one number for each: the intervals of the exact inputs (as
 /// [`inputs_of`] gives them) whose two ends round to the same number of the format,
 /// zero or normal (a flushing implementation reads a subnormal as 0), and no exact
-/// input halfway between two of its numbers (which a tie rule may round either way). Binary32: the interval's ends are `f64`s, so the nearest `f32` of the
+/// input halfway between two of its numbers (which a tie rule may round either way).
+/// Binary32: the interval's ends are `f64`s, so the nearest `f32` of the
 /// exact input and that of its nearest `f64` (reading through binary64 first) are
 /// both the ends' common one. Binary64: only inputs that are already `f64`s (each
 /// read exactly). `None` where some input's nearest number is not known this way.
